@@ -1,0 +1,38 @@
+"""CLI commands on program text: `check` and `format`."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from ladderworks.core.il import parse_file, print_program
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    """Add `check` and `format`."""
+    check = subparsers.add_parser("check", help="check programs, print FILE:LINE:COL: CODE message")
+    check.add_argument("files", nargs="+", metavar="FILE")
+    check.set_defaults(handler=_check)
+    fmt = subparsers.add_parser("format", help="print a program in canonical form")
+    fmt.add_argument("file", metavar="FILE")
+    fmt.set_defaults(handler=_format)
+
+
+def _check(args: argparse.Namespace) -> int:
+    failed = False
+    for name in args.files:
+        result = parse_file(name)
+        for diagnostic in result.diagnostics:
+            print(diagnostic.located(name))
+        failed = failed or not result.ok
+    return 1 if failed else 0
+
+
+def _format(args: argparse.Namespace) -> int:
+    result = parse_file(args.file)
+    if not result.ok:
+        for diagnostic in result.diagnostics:
+            print(diagnostic.located(args.file), file=sys.stderr)
+        return 1
+    sys.stdout.write(print_program(result.program))
+    return 0

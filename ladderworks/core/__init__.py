@@ -1,0 +1,1 @@
+"""The Qt-free core: addresses, instructions, language, ladder model, compiler and engine."""

@@ -1,0 +1,113 @@
+"""Diagnostics: errors and warnings as data (code, arguments, position), with English texts."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import StrEnum
+
+
+class Severity(StrEnum):
+    """How bad a diagnostic is."""
+
+    ERROR = "error"
+    WARNING = "warning"
+
+
+# English message templates by code. The GUI holds the same templates behind tr() so they are
+# translated; tests check that every code here has a GUI text. Arguments fill the {names}.
+MESSAGES: dict[str, str] = {
+    # addresses
+    "bad-address": "'{text}' is not an address (expected e.g. X2.1 or R100)",
+    "unknown-area": "'{text}': unknown area '{area}' (use X, Y, F, G, R, A, D, T, C or K)",
+    "byte-range": "'{text}': byte number out of range for area {area} (0 to {last})",
+    "bit-range": "'{text}': bit number must be 0 to 7",
+    "bit-expected": "'{text}': a bit address is needed here (e.g. {text}.0)",
+    "byte-expected": "'{text}': a byte address is needed here, without a bit",
+    # the text format
+    "missing-start": "the ladder section must begin with %@3",
+    "missing-end": "the ladder section must end with a line '%'",
+    "unexpected-text": "unexpected text '{text}'",
+    "text-outside-section": "text outside any section: '{text}'",
+    "duplicate-section": "section %@{number} appears twice",
+    "bad-section": "unknown section %@{number} (FANUC sections are %@0 to %@5)",
+    "unknown-instruction": "unknown instruction '{name}'",
+    "missing-operand": "{name} needs an address",
+    "extra-operand": "{name} takes no operand, found '{text}'",
+    "param-count": "{name} needs {expected} parameters, found {found}",
+    "param-kind-number": "{name}: parameter {index} ({param}) must be a number, found '{text}'",
+    "param-kind-address": "{name}: parameter {index} ({param}) must be an address, found '{text}'",
+    "param-range": "{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}",
+    "param-choice": "{name}: parameter {index} ({param}) must be one of {choices}, found {value}",
+    "param-mask": "{name}: parameter {index} ({param}) must be up to 4 binary digits, found '{text}'",
+    "unknown-sub": "no functional instruction has the number SUB {number}",
+    "stray-parameter": "a parameter line '{text}' without a SUB instruction before it",
+    "bad-encoding": "the file is neither UTF-8 nor Turkish Windows (cp1254) text",
+    "syntax": "syntax error at '{text}'",
+    # the ladder grid (network decomposition)
+    "open-circuit": "open circuit: this element is not connected to the right side",
+    "not-connected": "element not connected to the left rail",
+    "coil-not-right": "a coil must be at the right end of the network",
+    "coil-on-rail": "a coil cannot sit straight on the left rail",
+    "bridge": "bridge circuit: a vertical link joins two branches in the middle",
+    "short-circuit": "short circuit: a wire bypasses the element",
+    "stack-depth": "the logic needs more than 8 stack levels (ST8)",
+    "reverse-flow": "power would flow right to left here; ladder flows left to right only",
+    "empty-network": "the network has no coil or function",
+    "box-inputs": "{name} needs its {count} control inputs connected",
+    # the compiler
+    "stack-underflow": "{name} with nothing pushed on the stack",
+    "write-input": "{name} writes to {address}, an input area",
+    "write-result-register": "{name} writes to {address}, part of the read-only R9000-R9005",
+    "jmp-without-jmpe": "JMP without a matching JMPE",
+    "jmpe-without-jmp": "JMPE without a JMP before it",
+    "com-without-come": "COM without a matching COME",
+    "come-without-com": "COME without a COM before it",
+    "no-logic": "{name} without a logic result before it (start with RD)",
+    "coil-twice": "coil {address} is written more than once",
+    "dangling-logic": "logic at the end of the program is not written to any coil",
+    "bad-binary": "not a LadderWorks binary: {reason}",
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Diagnostic:
+    """One error or warning with its position (1-based line/column; network/row/col if known)."""
+
+    code: str
+    args: dict[str, object] = field(default_factory=dict, hash=False)
+    line: int = 0
+    column: int = 0
+    severity: Severity = Severity.ERROR
+    network: int | None = None
+    cell: tuple[int, int] | None = None
+
+    @property
+    def is_error(self) -> bool:
+        """True for errors (not warnings)."""
+        return self.severity is Severity.ERROR
+
+    def message(self, templates: dict[str, str] | None = None) -> str:
+        """The message text, from `templates` (a translated table) or the English one."""
+        table = templates if templates is not None else MESSAGES
+        template = table.get(self.code) or MESSAGES.get(self.code) or self.code
+        try:
+            return template.format(**self.args)
+        except (KeyError, IndexError, ValueError):
+            return f"{template} {self.args}"
+
+    def located(self, filename: str) -> str:
+        """`FILE:LINE:COL: CODE message`, the CLI's format."""
+        return f"{filename}:{self.line}:{self.column}: {self.code} {self.message()}"
+
+
+class DiagnosticError(Exception):
+    """Raised where a caller wants an exception; carries the diagnostics."""
+
+    def __init__(self, diagnostics: list[Diagnostic]) -> None:
+        self.diagnostics = diagnostics
+        super().__init__("; ".join(d.message() for d in diagnostics[:3]))
+
+
+def has_errors(diagnostics: list[Diagnostic]) -> bool:
+    """True when any diagnostic is an error."""
+    return any(d.is_error for d in diagnostics)

@@ -1,0 +1,1 @@
+"""The PLC runtime: memory image, scan engine, timers, counters, functions, forcing, tracing."""

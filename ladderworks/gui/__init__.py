@@ -1,0 +1,1 @@
+"""The PySide6 application: the ladder console and its PLC docks."""
