@@ -38,7 +38,8 @@ MESSAGES: dict[str, str] = {
     "param-kind-address": "{name}: parameter {index} ({param}) must be an address, found '{text}'",
     "param-range": "{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}",
     "param-choice": "{name}: parameter {index} ({param}) must be one of {choices}, found {value}",
-    "param-mask": "{name}: parameter {index} ({param}) must be up to 4 binary digits, found '{text}'",
+    "param-mask":
+        "{name}: parameter {index} ({param}) must be up to 4 binary digits, found '{text}'",
     "unknown-sub": "no functional instruction has the number SUB {number}",
     "stray-parameter": "a parameter line '{text}' without a SUB instruction before it",
     "bad-encoding": "the file is neither UTF-8 nor Turkish Windows (cp1254) text",
