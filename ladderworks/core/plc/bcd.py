@@ -28,3 +28,8 @@ def int_to_bcd(value: int, digits: int) -> int | None:
         value //= 10
         shift += 4
     return raw
+
+
+def bcd_limit(width: int) -> int:
+    """The largest BCD value `width` bytes hold (99, 9999, 99999999)."""
+    return 10 ** (2 * width) - 1

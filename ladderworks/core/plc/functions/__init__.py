@@ -20,6 +20,12 @@ from ladderworks.core.address import Address, Area
 from ladderworks.core.plc.memory import Memory
 
 RESULT_REGISTER = Address(Area.R, 9000)
+REMAINDER_REGISTER = Address(Area.R, 9002)  # DIVB leaves its remainder here (R9002..)
+
+# Bits of R9000 after binary arithmetic, COMPB and DCNVB.
+FLAG_ZERO = 0x01  # R9000.0: the result is zero (COMPB: input = comparison)
+FLAG_NEGATIVE = 0x02  # R9000.1: the result is negative (COMPB: input < comparison)
+FLAG_OVERFLOW = 0x20  # R9000.5: overflow, or the operation could not be done
 
 
 @dataclass(slots=True)
@@ -49,3 +55,44 @@ def function(name: str) -> Callable[[FunctionImpl], FunctionImpl]:
         return impl
 
     return register
+
+
+def held_output(state: dict, rst: bool, act: bool) -> bool | None:
+    """W1 of an error-output instruction when it does not run, or None when it runs.
+
+    RST = 1 clears W1 (and takes priority: nothing else is done); ACT = 0 keeps the W1 of the
+    last execution. The value is kept in `state["w1"]`.
+    """
+    if rst:
+        state["w1"] = False
+        return False
+    if not act:
+        return bool(state.get("w1", False))
+    return None
+
+
+def output(state: dict, w1: bool) -> bool:
+    """Remember and return the W1 of this execution."""
+    state["w1"] = w1
+    return w1
+
+
+def load_all() -> dict[str, FunctionImpl]:
+    """Import every family module of this package (each registers itself); the registry."""
+    import importlib
+    import pkgutil
+
+    for info in sorted(pkgutil.iter_modules(__path__), key=lambda m: m.name):
+        importlib.import_module(f"{__name__}.{info.name}")
+    return REGISTRY
+
+
+def result_flags(value: int) -> int:
+    """R9000 bits for a result that was stored: zero and negative."""
+    return (FLAG_ZERO if value == 0 else 0) | (FLAG_NEGATIVE if value < 0 else 0)
+
+
+def signed_range(width: int) -> tuple[int, int]:
+    """The lowest and highest signed binary value of `width` bytes."""
+    half = 1 << (8 * width - 1)
+    return -half, half - 1

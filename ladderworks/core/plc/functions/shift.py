@@ -1,0 +1,38 @@
+"""Shift register: SFT shifts 16 bits one place per rising edge of ACT."""
+
+from __future__ import annotations
+
+from ladderworks.core.plc.functions import FunctionContext, function
+
+_TOP_BIT = 15
+_MASK16 = 0xFFFF
+
+
+def shift_word(data: int, right: bool, keep: bool) -> tuple[int, bool]:
+    """Shift 16 bits one place; `keep` (CONT) leaves every 1 in place too. (new data, bit out)."""
+    if right:
+        out = bool(data & 1)
+        shifted = data >> 1
+    else:
+        out = bool((data >> _TOP_BIT) & 1)
+        shifted = (data << 1) & _MASK16
+    if keep:
+        shifted |= data
+    return shifted, out
+
+
+@function("SFT")
+def sft(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
+    """One shift per ACT rising edge; W1 = the bit shifted out (held); RST = 1: W1 = 0."""
+    direction, cont, rst, act = inputs
+    rising = act and not state.get("act", False)
+    state["act"] = act
+    if rst:
+        state["w1"] = False
+        return False
+    if rising:
+        (address,) = params
+        data, out = shift_word(ctx.memory.read(address, 2), direction, cont)
+        ctx.memory.write(address, data, 2)
+        state["w1"] = out
+    return bool(state.get("w1", False))
