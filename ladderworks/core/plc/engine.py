@@ -1,0 +1,220 @@
+"""The scan engine: memory image, virtual clock, generated scan code, forces, power flow, trace."""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Iterable
+from typing import Any
+
+from ladderworks.core.address import Address, Area
+from ladderworks.core.compiler.binary import BinaryProgram, SourcePosition, decode
+from ladderworks.core.plc.codegen import GeneratedScan, generate
+from ladderworks.core.plc.forcing import ForceEntry, ForceTable
+from ladderworks.core.plc.functions import FunctionContext, load_all
+from ladderworks.core.plc.memory import Memory
+from ladderworks.core.plc.trace import DEFAULT_CAPACITY, TraceSampler
+
+DEFAULT_PERIOD_MS = 8  # FANUC level-1 period
+
+# Kept on a cold start (and across stop): keep relays, data table, timer and counter tables.
+RETAINED_AREAS: frozenset[Area] = frozenset({Area.K, Area.D, Area.T, Area.C})
+# Cleared on a cold start; X and F are the machine's and CNC's, never touched by the engine.
+CLEARED_AREAS: tuple[Area, ...] = (Area.Y, Area.G, Area.R, Area.A)
+
+# System relay R9091: .0 always 0, .1 always 1, .5 a 200 ms clock, .6 a 1 s clock.
+SYSTEM_RELAY = 9091
+
+
+class ScanEngine:
+    """Runs a compiled binary: one `scan()` is the program once, top to bottom.
+
+    Time is virtual: each scan happens at `now_ms`, then the clock moves on by `period_ms`.
+    Forces are written into memory before and after the logic; disabled ops, the monitored
+    mode and the trace take effect at the next scan boundary. Every public method takes
+    `lock`, so a runner thread and a GUI thread may share an engine.
+    """
+
+    def __init__(self, binary: bytes | BinaryProgram, *, period_ms: int = DEFAULT_PERIOD_MS,
+                 memory: Memory | None = None) -> None:
+        if period_ms <= 0:
+            raise ValueError("the scan period must be at least 1 ms")
+        self.program = binary if isinstance(binary, BinaryProgram) else decode(binary)
+        self.memory = memory if memory is not None else Memory()
+        self.period_ms = period_ms
+        self.now_ms = 0
+        self.scan_count = 0
+        self.lock = threading.RLock()
+        self.force_table = ForceTable()
+        self.trace: TraceSampler | None = None
+        self.power_flow = bytearray(len(self.program.ops))
+        self._monitored = False
+        self._registry = load_all()
+        self._states: list[dict[str, Any]] = [{} for _ in self.program.ops]
+        self._variants: dict[tuple[bool, frozenset[int]], GeneratedScan] = {}
+        self._ctx = FunctionContext(self.memory, 0, period_ms)
+        self._current = self._variant()
+
+    # -- the scan ------------------------------------------------------------------------
+
+    def _variant(self) -> GeneratedScan:
+        key = (self._monitored, self.force_table.disabled)
+        variant = self._variants.get(key)
+        if variant is None:
+            if len(self._variants) > 16:
+                self._variants.clear()
+            variant = generate(self.program.ops, self.memory.areas, self._registry,
+                               self._states, disabled=key[1], monitored=key[0])
+            self._variants[key] = variant
+        return variant
+
+    @property
+    def source(self) -> str:
+        """The Python source of the scan now in use (for the curious and for tests)."""
+        return self._current.source
+
+    def scan(self) -> None:
+        """One scan at `now_ms`, then advance the clock by one period."""
+        with self.lock:
+            now = self.now_ms
+            ctx = self._ctx
+            ctx.now_ms = now
+            ctx.scan_ms = self.period_ms
+            self._system_relays(now)
+            self.force_table.apply(self.memory)
+            self._current.scan(ctx, self.power_flow)
+            self.force_table.apply(self.memory)
+            if self.trace is not None:
+                self.trace.sample(self.memory, now)
+            self.scan_count += 1
+            self.now_ms = now + self.period_ms
+
+    def run_scans(self, count: int) -> None:
+        """Run `count` scans."""
+        for _ in range(count):
+            self.scan()
+
+    def step(self, ms: int) -> int:
+        """Advance the virtual clock by `ms`, scanning once per period; the scans run."""
+        with self.lock:
+            end = self.now_ms + ms
+            count = 0
+            while self.now_ms < end:
+                self.scan()
+                count += 1
+            return count
+
+    def _system_relays(self, now: int) -> None:
+        value = 0b10
+        if now % 200 < 104:
+            value |= 1 << 5
+        if now % 1000 < 504:
+            value |= 1 << 6
+        self.memory.areas[Area.R][SYSTEM_RELAY] = value
+
+    # -- start and stop ------------------------------------------------------------------
+
+    def stop(self) -> None:
+        """The safe state: every output Y is 0. Everything else is kept as it is."""
+        with self.lock:
+            self.memory.clear(Area.Y)
+
+    def cold_start(self) -> None:
+        """Clear Y, G, R and A and every timer/counter/edge state; K, D, T, C are kept."""
+        with self.lock:
+            self.memory.clear(*CLEARED_AREAS)
+            for state in self._states:
+                state.clear()
+            self.power_flow[:] = bytes(len(self.power_flow))
+
+    # -- monitoring ----------------------------------------------------------------------
+
+    @property
+    def monitored(self) -> bool:
+        """True when each scan records the power flow of every op in `power_flow`."""
+        return self._monitored
+
+    @monitored.setter
+    def monitored(self, on: bool) -> None:
+        with self.lock:
+            self._monitored = bool(on)
+            self._current = self._variant()
+
+    def power_flow_map(self) -> list[tuple[SourcePosition, bool]]:
+        """The last monitored scan's result of every op, with the op's source position."""
+        with self.lock:
+            return [(op.source, bool(flow))
+                    for op, flow in zip(self.program.ops, self.power_flow, strict=True)]
+
+    # -- forcing and disabling -----------------------------------------------------------
+
+    def force(self, address: Address, value: bool | int) -> None:
+        """Hold a bit at 0 or 1 (written before and after the logic of every scan)."""
+        with self.lock:
+            self.force_table.force(address, bool(value))
+
+    def release(self, address: Address) -> bool:
+        """Stop forcing a bit."""
+        with self.lock:
+            return self.force_table.release(address)
+
+    def op_index(self, op: int | SourcePosition | tuple[int, int]) -> int:
+        """An op index from an index, a SourcePosition or a (network, instruction) pair."""
+        if isinstance(op, int):
+            if not 0 <= op < len(self.program.ops):
+                raise IndexError(f"no op {op}")
+            return op
+        network, instruction = ((op.network, op.instruction)
+                                if isinstance(op, SourcePosition) else op)
+        for index, item in enumerate(self.program.ops):
+            if (item.source.network, item.source.instruction) == (network, instruction):
+                return index
+        raise IndexError(f"no op at network {network}, instruction {instruction}")
+
+    def disable(self, op: int | SourcePosition | tuple[int, int]) -> int:
+        """Disable an element (from the next scan); returns its op index."""
+        with self.lock:
+            index = self.op_index(op)
+            self.force_table.disable(index, self.program.ops[index].source.line)
+            self._current = self._variant()
+            return index
+
+    def enable(self, op: int | SourcePosition | tuple[int, int]) -> int:
+        """Enable a disabled element again; returns its op index."""
+        with self.lock:
+            index = self.op_index(op)
+            self.force_table.enable(index)
+            self._current = self._variant()
+            return index
+
+    def forces(self) -> list[ForceEntry]:
+        """Everything forced or disabled, in one list."""
+        with self.lock:
+            return self.force_table.entries()
+
+    def release_all(self) -> None:
+        """Release every force and enable every element."""
+        with self.lock:
+            self.force_table.clear()
+            self._current = self._variant()
+
+    # -- tracing and alarms --------------------------------------------------------------
+
+    def start_trace(self, addresses: Iterable[Address], period_ms: int,
+                    capacity: int = DEFAULT_CAPACITY) -> TraceSampler:
+        """Sample `addresses` every `period_ms` from the next scan on."""
+        with self.lock:
+            self.trace = TraceSampler(list(addresses), period_ms, capacity)
+            return self.trace
+
+    def stop_trace(self) -> TraceSampler | None:
+        """Stop sampling; returns the sampler (its samples can still be taken)."""
+        with self.lock:
+            trace, self.trace = self.trace, None
+            return trace
+
+    def active_alarms(self) -> list[int]:
+        """Numbers of the alarm bits that are on (A0.0 = 0, A0.1 = 1, ... A99.7 = 799)."""
+        with self.lock:
+            data = self.memory.areas[Area.A]
+            return [byte * 8 + bit for byte, value in enumerate(data) if value
+                    for bit in range(8) if value >> bit & 1]

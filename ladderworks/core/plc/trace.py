@@ -1,0 +1,70 @@
+"""The trace sampler: bits and bytes sampled inside the scan loop into a ring buffer."""
+
+from __future__ import annotations
+
+import threading
+from collections import deque
+from dataclasses import dataclass
+
+from ladderworks.core.address import Address
+from ladderworks.core.plc.memory import Memory
+
+DEFAULT_CAPACITY = 100_000
+
+
+@dataclass(frozen=True, slots=True)
+class TraceSample:
+    """Values of the traced addresses at one scan: `time_ms` of that scan, `seq` its number."""
+
+    seq: int
+    time_ms: int
+    values: tuple[int, ...]
+
+
+class TraceSampler:
+    """Samples `addresses` every `period_ms` of virtual time, at the end of a scan.
+
+    A bit address gives 0/1, a byte address its byte. The period is met at scan granularity:
+    a sample is taken by the first scan at or after each due time. Samples wait in a ring
+    buffer of `capacity` until `take()`; `dropped` counts samples the buffer had to overwrite.
+    """
+
+    def __init__(self, addresses: list[Address], period_ms: int,
+                 capacity: int = DEFAULT_CAPACITY) -> None:
+        if period_ms <= 0:
+            raise ValueError("the trace period must be at least 1 ms")
+        self.addresses = list(addresses)
+        self.period_ms = period_ms
+        self._buffer: deque[TraceSample] = deque(maxlen=capacity)
+        self._lock = threading.Lock()
+        self._next_ms: int | None = None
+        self._seq = 0
+        self.dropped = 0
+        self._readers = [(address.area, address.byte, address.bit) for address in addresses]
+
+    def sample(self, memory: Memory, now_ms: int) -> None:
+        """Called by the engine after each scan; records a sample when one is due."""
+        if self._next_ms is None:
+            self._next_ms = now_ms
+        if now_ms < self._next_ms:
+            return
+        while self._next_ms <= now_ms:
+            self._next_ms += self.period_ms
+        areas = memory.areas
+        values = tuple(areas[area][byte] if bit is None else areas[area][byte] >> bit & 1
+                       for area, byte, bit in self._readers)
+        with self._lock:
+            if len(self._buffer) == self._buffer.maxlen:
+                self.dropped += 1
+            self._buffer.append(TraceSample(self._seq, now_ms, values))
+            self._seq += 1
+
+    def take(self) -> list[TraceSample]:
+        """Every sample not taken yet, oldest first (the buffer is emptied)."""
+        with self._lock:
+            samples = list(self._buffer)
+            self._buffer.clear()
+        return samples
+
+    def __len__(self) -> int:
+        return len(self._buffer)
