@@ -55,6 +55,17 @@ MESSAGES: dict[str, str] = {
     "reverse-flow": "power would flow right to left here; ladder flows left to right only",
     "empty-network": "the network has no coil or function",
     "box-inputs": "{name} needs its {count} control inputs connected",
+    "no-address": "this element has no address yet",
+    "coil-branch": "coils hang on different points of the logic; join them to one point",
+    "box-output": "only coils may follow the output of {name}",
+    "box-params": "{name}: {problem}",
+    # ladder edits (refused edits; nothing was changed)
+    "edit-outside": "cell ({row}, {col}) is outside the grid",
+    "edit-coil-column": "only coils go in the coil column (cell ({row}, {col}))",
+    "edit-box-room": "{name} does not fit here: a box needs two contact columns",
+    "edit-no-element": "there is no suitable element at cell ({row}, {col})",
+    "edit-line": "a line must be horizontal or vertical",
+    "grid-text": "the clipboard does not hold ladder elements",
     # the compiler
     "stack-underflow": "{name} with nothing pushed on the stack",
     "write-input": "{name} writes to {address}, an input area",
@@ -67,6 +78,13 @@ MESSAGES: dict[str, str] = {
     "coil-twice": "coil {address} is written more than once",
     "dangling-logic": "logic at the end of the program is not written to any coil",
     "bad-binary": "not a LadderWorks binary: {reason}",
+    # the alarm message file (AlarmMsg.dat)
+    "alarm-line": "not an alarm message line: '{text}' (expected 'NNN text' or 'A00.0 text')",
+    "alarm-number": "alarm number {number} is out of range (000 to 799)",
+    "alarm-address": "'{text}' is not an alarm bit (A0.0 to A99.7)",
+    "alarm-duplicate": "message {number} appears again; the one on line {first} is used",
+    "alarm-empty": "message {number} has no text",
+    "not-implemented": "{name} is not implemented in the simulator yet",
 }
 
 
