@@ -84,12 +84,6 @@ MESSAGES: dict[str, str] = {
     "alarm-address": "'{text}' is not an alarm bit (A0.0 to A99.7)",
     "alarm-duplicate": "message {number} appears again; the one on line {first} is used",
     "alarm-empty": "message {number} has no text",
-    # the alarm message file (AlarmMsg.dat)
-    "alarm-line": "not an alarm message line: '{text}' (expected 'NNN text' or 'A00.0 text')",
-    "alarm-number": "alarm number {number} is out of range (000 to 799)",
-    "alarm-address": "'{text}' is not an alarm bit (A0.0 to A99.7)",
-    "alarm-duplicate": "message {number} appears again; the one on line {first} is used",
-    "alarm-empty": "message {number} has no text",
     "not-implemented": "{name} is not implemented in the simulator yet",
 }
 

@@ -1,0 +1,201 @@
+"""Grid text: a selection (or a whole network) as text for the clipboard and for saved drafts."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+
+from ladderworks.core.address import Address, AddressError, parse_address
+from ladderworks.core.il.program import ParamValue
+from ladderworks.core.instructions import lookup
+from ladderworks.core.ladder.edits import Edit, EditRefused, _change, _grow, _put
+from ladderworks.core.ladder.model import (
+    DEFAULT_COLUMNS,
+    MAX_COLUMNS,
+    MAX_ROWS,
+    WIRE,
+    Cell,
+    Coil,
+    Contact,
+    Element,
+    FunctionBox,
+    LadderNetwork,
+    Wire,
+)
+
+MAGIC = "LADDERWORKS-GRID 1"
+
+
+@dataclass(frozen=True, slots=True)
+class Selection:
+    """A rectangle of cells, rows `top`..`bottom` and columns `left`..`right` inclusive."""
+
+    top: int
+    left: int
+    bottom: int
+    right: int
+
+    @classmethod
+    def spanning(cls, a: Cell, b: Cell) -> Selection:
+        """The rectangle with corners `a` and `b` (any order)."""
+        return cls(min(a[0], b[0]), min(a[1], b[1]), max(a[0], b[0]), max(a[1], b[1]))
+
+    @classmethod
+    def whole(cls, network: LadderNetwork) -> Selection:
+        """Every cell of a network, coil column included."""
+        return cls(0, 0, network.rows - 1, network.columns)
+
+    def holds(self, cell: Cell) -> bool:
+        """True when the cell is inside."""
+        return self.top <= cell[0] <= self.bottom and self.left <= cell[1] <= self.right
+
+
+def _element_record(element: Element) -> dict[str, object]:
+    if isinstance(element, Wire):
+        return {"kind": "wire"}
+    if isinstance(element, FunctionBox):
+        record: dict[str, object] = {
+            "kind": "box", "name": element.name,
+            "params": [str(p) if isinstance(p, Address) else p for p in element.params],
+            "pins": list(element.pins), "height": element.height}
+    else:
+        record = {"kind": "contact" if isinstance(element, Contact) else "coil",
+                  "address": str(element.address) if element.address else None,
+                  "not": element.negated}
+    if element.comment:
+        record["comment"] = element.comment
+    if element.lead:
+        record["lead"] = list(element.lead)
+    return record
+
+
+def _parse_param(value: object) -> ParamValue:
+    if isinstance(value, bool) or not isinstance(value, int | str):
+        raise ValueError(value)
+    if isinstance(value, int):
+        return value
+    return parse_address(value)
+
+
+def _element_from(record: dict[str, object]) -> Element:
+    kind = record.get("kind")
+    comment = str(record.get("comment", ""))
+    lead = tuple(str(x) for x in record.get("lead", []))  # type: ignore[attr-defined]
+    if kind == "wire":
+        return WIRE
+    if kind == "box":
+        name = str(record["name"])
+        if lookup(name) is None:
+            raise ValueError(name)
+        params = tuple(_parse_param(p) for p in record.get("params", []))  # type: ignore[attr-defined]
+        pins = tuple(int(p) for p in record.get("pins", []))  # type: ignore[attr-defined]
+        height = int(record.get("height", 1))  # type: ignore[arg-type]
+        default = FunctionBox.new(name)
+        if len(pins) != len(default.pins) or any(p >= height for p in pins) or height < 1:
+            raise ValueError("pins")
+        return FunctionBox(default.name, params, comment, lead, pins, height)
+    if kind in ("contact", "coil"):
+        text = record.get("address")
+        address = parse_address(str(text), want_bit=True) if text else None
+        cls = Contact if kind == "contact" else Coil
+        return cls(address, bool(record.get("not", False)), comment, lead)
+    raise ValueError(kind)
+
+
+def copy_text(network: LadderNetwork, selection: Selection | None = None) -> str:
+    """The selected elements and links as text (the whole network when no selection)."""
+    whole = selection is None
+    sel = selection or Selection.whole(network)
+    head: dict[str, object] = {"columns": network.columns, "rows": sel.bottom - sel.top + 1,
+                               "width": sel.right - sel.left + 1}
+    if whole and network.comments:
+        head["comments"] = list(network.comments)
+    lines = [f"{MAGIC} {json.dumps(head, ensure_ascii=False)}"]
+    for (r, c), element in network.elements():
+        cells = network.footprint((r, c), element)
+        if not all(sel.holds(cell) for cell in cells):
+            continue
+        record = {"at": [r - sel.top, c - sel.left], **_element_record(element)}
+        if c == network.coil_column:
+            record["coil_column"] = True
+        lines.append(json.dumps(record, ensure_ascii=False))
+    for r, k in sorted(network.links):
+        if sel.top <= r < sel.bottom and sel.left <= k <= sel.right + 1:
+            lines.append(json.dumps({"link": [r - sel.top, k - sel.left]}))
+    return "\n".join(lines) + "\n"
+
+
+def _read(text: str) -> tuple[dict[str, object], list[dict[str, object]]]:
+    lines = [line for line in text.splitlines() if line.strip()]
+    if not lines or not lines[0].startswith(MAGIC):
+        raise EditRefused("grid-text")
+    try:
+        head = json.loads(lines[0][len(MAGIC):])
+        records = [json.loads(line) for line in lines[1:]]
+    except json.JSONDecodeError:
+        raise EditRefused("grid-text") from None
+    if not isinstance(head, dict) or not all(isinstance(r, dict) for r in records):
+        raise EditRefused("grid-text")
+    return head, records
+
+
+def network_from_text(text: str) -> LadderNetwork:
+    """A whole network from `copy_text` output; EditRefused('grid-text') if it is not one."""
+    head, records = _read(text)
+    try:
+        columns = int(head.get("columns", DEFAULT_COLUMNS))  # type: ignore[arg-type]
+        rows = int(head.get("rows", 1))  # type: ignore[arg-type]
+        if not (1 <= columns <= MAX_COLUMNS and 1 <= rows <= MAX_ROWS):
+            raise ValueError("size")
+        network = LadderNetwork(columns, rows,
+                                comments=[str(x) for x in head.get("comments", [])])  # type: ignore[attr-defined]
+        for record in records:
+            if "link" in record:
+                r, k = (int(x) for x in record["link"])  # type: ignore[attr-defined]
+                if not (0 <= r < rows - 1 and 0 <= k <= columns):
+                    raise ValueError("link")
+                network.links.add((r, k))
+                continue
+            r, c = (int(x) for x in record["at"])  # type: ignore[attr-defined]
+            _put(network, r, c, _element_from(record))
+    except (ValueError, KeyError, TypeError, AddressError, EditRefused):
+        raise EditRefused("grid-text") from None
+    return network
+
+
+def cut(network: LadderNetwork, selection: Selection) -> tuple[str, Edit]:
+    """Copy the selection as text and clear it; returns the text and the undo edit."""
+    text = copy_text(network, selection)
+    work = network.copy()
+    for anchor, element in list(work.elements()):
+        if all(selection.holds(cell) for cell in work.footprint(anchor, element)):
+            del work.cells[anchor]
+    work.links = {(r, k) for r, k in work.links
+                  if not (selection.top <= r < selection.bottom
+                          and selection.left <= k <= selection.right + 1)}
+    return text, _change(network, work)
+
+
+def paste(network: LadderNetwork, row: int, col: int, text: str) -> Edit:
+    """Paste clipboard text with its top-left at a cell (coils copied from the coil column go
+    to the coil column); what it covers is replaced. Returns the undo edit."""
+    _, records = _read(text)
+    work = network.copy()
+    try:
+        for record in records:
+            if "link" in record:
+                r, k = (int(x) for x in record["link"])  # type: ignore[attr-defined]
+                if col + k > work.columns:
+                    raise EditRefused("edit-outside", (row + r, col + k), row=row + r, col=col + k)
+                _grow(work, row + r + 1)
+                work.links.add((row + r, col + k))
+                continue
+            r, c = (int(x) for x in record["at"])  # type: ignore[attr-defined]
+            element = _element_from(record)
+            target = work.coil_column if record.get("coil_column") else col + c
+            if target > work.columns:
+                raise EditRefused("edit-outside", (row + r, target), row=row + r, col=target)
+            _put(work, row + r, target, element)
+    except (ValueError, KeyError, TypeError, AddressError):
+        raise EditRefused("grid-text") from None
+    return _change(network, work)

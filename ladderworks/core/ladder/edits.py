@@ -1,0 +1,332 @@
+"""Edit operations on a ladder network; each applies its change and returns the exact inverse."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from ladderworks.core.address import Address, AddressError, parse_address
+from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.il.program import ParamValue
+from ladderworks.core.ladder.model import (
+    MAX_ROWS,
+    WIRE,
+    Cell,
+    Coil,
+    Contact,
+    Element,
+    FunctionBox,
+    LadderNetwork,
+    NetworkState,
+    Wire,
+    flip,
+)
+
+
+class EditRefused(Exception):
+    """An edit that cannot be made; `diagnostic` says why (show it, nothing was changed)."""
+
+    def __init__(self, code: str, cell: Cell | None = None, **args: object) -> None:
+        self.diagnostic = Diagnostic(code, dict(args), cell=cell)
+        super().__init__(self.diagnostic.message())
+
+
+@dataclass(frozen=True, slots=True)
+class Edit:
+    """A recorded change: `apply(network)` sets the recorded drawing and returns its inverse.
+
+    Every operation below changes the network and returns the Edit that undoes it; applying
+    that gives back the Edit that redoes it, and so on (a GUI undo command keeps one of them).
+    """
+
+    state: NetworkState
+
+    def apply(self, network: LadderNetwork) -> Edit:
+        """Make the change; return the inverse edit."""
+        before = network.state()
+        network.restore(self.state)
+        return Edit(before)
+
+
+def _change(network: LadderNetwork, work: LadderNetwork) -> Edit:
+    """Move `network` to the drawing of `work`; return the undo edit."""
+    return Edit(work.state()).apply(network)
+
+
+def _check_cell(network: LadderNetwork, row: int, col: int) -> None:
+    if not (0 <= row < MAX_ROWS and 0 <= col <= network.columns):
+        raise EditRefused("edit-outside", (row, col), row=row, col=col)
+
+
+def _grow(work: LadderNetwork, last_row: int) -> None:
+    if last_row >= MAX_ROWS:
+        raise EditRefused("edit-outside", (last_row, 0), row=last_row, col=0)
+    work.rows = max(work.rows, last_row + 1)
+
+
+def _clear(work: LadderNetwork, cells: list[Cell]) -> None:
+    for cell in cells:
+        found = work.element_at(*cell)
+        if found is not None:
+            del work.cells[found[0]]
+
+
+def _put(work: LadderNetwork, row: int, col: int, element: Element) -> None:
+    """Place an element in `work` (replacing whatever it covers), with the grid rules."""
+    _check_cell(work, row, col)
+    if isinstance(element, Contact | Wire) and col >= work.columns:
+        raise EditRefused("edit-coil-column", (row, col), row=row, col=col)
+    if isinstance(element, FunctionBox) and col + element.width > work.columns:
+        raise EditRefused("edit-box-room", (row, col), name=element.name)
+    cells = work.footprint((row, col), element)
+    _grow(work, max(r for r, _ in cells))
+    _clear(work, cells)
+    work.cells[(row, col)] = element
+
+
+def place(network: LadderNetwork, row: int, col: int, element: Element) -> Edit:
+    """Put an element at a cell (replacing what is there); coils may go anywhere but are
+    diagnosed unless in the coil column; contacts and wires only in contact columns."""
+    work = network.copy()
+    _put(work, row, col, element)
+    return _change(network, work)
+
+
+def replace_element(network: LadderNetwork, row: int, col: int, element: Element) -> Edit:
+    """Replace the element covering a cell with another (same as `place` at its anchor)."""
+    found = network.element_at(row, col)
+    anchor = found[0] if found else (row, col)
+    work = network.copy()
+    if found:
+        del work.cells[anchor]
+    _put(work, anchor[0], anchor[1], element)
+    return _change(network, work)
+
+
+def delete(network: LadderNetwork, row: int, col: int) -> Edit:
+    """Remove the element covering a cell (a whole box)."""
+    found = network.element_at(row, col)
+    if found is None:
+        raise EditRefused("edit-no-element", (row, col), row=row, col=col)
+    work = network.copy()
+    del work.cells[found[0]]
+    return _change(network, work)
+
+
+def invert(network: LadderNetwork, row: int, col: int) -> Edit:
+    """The NOT tool: a normally open contact becomes normally closed (and back); same for coils."""
+    found = network.element_at(row, col)
+    if found is None or not isinstance(found[1], Contact | Coil):
+        raise EditRefused("edit-no-element", (row, col), row=row, col=col)
+    work = network.copy()
+    work.cells[found[0]] = flip(found[1])
+    return _change(network, work)
+
+
+def add_parallel(network: LadderNetwork, row: int, col: int,
+                 element: Contact | Coil | None = None) -> Edit:
+    """The OR tool: a contact (or coil) parallel to the one at the cell, on the row below.
+
+    A row is inserted below when the cell under it is taken. Vertical links join both ends
+    (for a coil: its left end only, the right rail joins the other)."""
+    found = network.element_at(row, col)
+    if found is None or not isinstance(found[1], Contact | Coil):
+        raise EditRefused("edit-no-element", (row, col), row=row, col=col)
+    (row, col), old = found
+    new = element if element is not None else (Contact() if isinstance(old, Contact) else Coil())
+    work = network.copy()
+    if row + 1 < work.rows and work.element_at(row + 1, col) is not None:
+        _insert_row(work, row + 1)
+    _put(work, row + 1, col, new)
+    work.links.add((row, col))
+    if isinstance(old, Contact):
+        work.links.add((row, col + 1))
+    return _change(network, work)
+
+
+def draw_line(network: LadderNetwork, start: Cell, end: Cell) -> Edit:
+    """The line tool between two grid nodes `(row, node)` (node k = left edge of column k).
+
+    Horizontal: wires in the empty cells between the nodes. Vertical: links between the rows.
+    """
+    (r1, k1), (r2, k2) = start, end
+    work = network.copy()
+    if r1 == r2:
+        lo, hi = sorted((k1, k2))
+        for col in range(lo, hi):
+            _check_cell(work, r1, col)
+            if col >= work.columns:
+                raise EditRefused("edit-coil-column", (r1, col), row=r1, col=col)
+            if work.element_at(r1, col) is None:
+                _grow(work, r1)
+                work.cells[(r1, col)] = WIRE
+    elif k1 == k2:
+        lo, hi = sorted((r1, r2))
+        _check_cell(work, hi, k1)
+        _grow(work, hi)
+        for r in range(lo, hi):
+            work.links.add((r, k1))
+    else:
+        raise EditRefused("edit-line", start)
+    return _change(network, work)
+
+
+def erase_line(network: LadderNetwork, start: Cell, end: Cell) -> Edit:
+    """Remove wires (horizontal) or links (vertical) between two nodes; elements stay."""
+    (r1, k1), (r2, k2) = start, end
+    work = network.copy()
+    if r1 == r2:
+        lo, hi = sorted((k1, k2))
+        for col in range(lo, hi):
+            if isinstance(work.cells.get((r1, col)), Wire):
+                del work.cells[(r1, col)]
+    elif k1 == k2:
+        lo, hi = sorted((r1, r2))
+        for r in range(lo, hi):
+            work.links.discard((r, k1))
+    else:
+        raise EditRefused("edit-line", start)
+    return _change(network, work)
+
+
+def _insert_row(work: LadderNetwork, at: int) -> None:
+    """Shift rows `at`.. down by one; boxes spanning the gap grow, links across it stretch."""
+    _grow(work, work.rows)
+    cells: dict[Cell, Element] = {}
+    for (r, c), element in work.cells.items():
+        if r >= at:
+            cells[(r + 1, c)] = element
+        elif isinstance(element, FunctionBox) and r + element.height > at:
+            pins = tuple(p + 1 if r + p >= at else p for p in element.pins)
+            cells[(r, c)] = replace(element, pins=pins, height=element.height + 1)
+        else:
+            cells[(r, c)] = element
+    links: set[Cell] = set()
+    for r, k in work.links:
+        if r >= at:
+            links.add((r + 1, k))
+        elif r == at - 1:
+            links.update({(r, k), (r + 1, k)})
+        else:
+            links.add((r, k))
+    work.cells = cells
+    work.links = links
+    work.rows += 1
+
+
+def insert_row(network: LadderNetwork, row: int, after: bool = False) -> Edit:
+    """Insert an empty row before (or after) `row`."""
+    work = network.copy()
+    _insert_row(work, row + 1 if after else row)
+    return _change(network, work)
+
+
+def delete_row(network: LadderNetwork, row: int) -> Edit:
+    """Delete a row with everything on it; rows below move up (a box on it loses that row)."""
+    if not 0 <= row < network.rows:
+        raise EditRefused("edit-outside", (row, 0), row=row, col=0)
+    work = network.copy()
+    cells: dict[Cell, Element] = {}
+    for (r, c), element in work.cells.items():
+        if isinstance(element, FunctionBox) and r <= row < r + element.height:
+            if element.height == 1 or any(r + p == row for p in element.pins):
+                continue  # the box loses a pin row: it goes
+            pins = tuple(p - 1 if r + p > row else p for p in element.pins)
+            element = replace(element, pins=pins, height=element.height - 1)
+            cells[(r - 1 if r > row else r, c)] = element
+        elif r == row:
+            continue
+        else:
+            cells[(r - 1 if r > row else r, c)] = element
+    links: set[Cell] = set()
+    for r, k in work.links:
+        if r == row or (r == row - 1 and (row, k) not in work.links):
+            continue
+        links.add((r - 1 if r > row else r, k))
+    work.cells = cells
+    work.links = links
+    work.rows = max(1, work.rows - 1)
+    return _change(network, work)
+
+
+def to_address(text: str | Address, cell: Cell | None = None, *, bit: bool = True) -> Address:
+    """Parse an address typed by the user; EditRefused carries the address diagnostic."""
+    if isinstance(text, Address):
+        return text
+    try:
+        return parse_address(text, want_bit=bit)
+    except AddressError as exc:
+        raise EditRefused(exc.code, cell, **exc.args_map) from None
+
+
+def set_address(network: LadderNetwork, row: int, col: int, address: str | Address) -> Edit:
+    """Set the address of the contact or coil at a cell (typed text is checked)."""
+    found = network.element_at(row, col)
+    if found is None or not isinstance(found[1], Contact | Coil):
+        raise EditRefused("edit-no-element", (row, col), row=row, col=col)
+    value = to_address(address, (row, col))
+    work = network.copy()
+    work.cells[found[0]] = replace(found[1], address=value)
+    return _change(network, work)
+
+
+def set_comment(network: LadderNetwork, row: int, col: int, text: str) -> Edit:
+    """Set the comment of the element at a cell (contact, coil or box)."""
+    found = network.element_at(row, col)
+    if found is None or isinstance(found[1], Wire):
+        raise EditRefused("edit-no-element", (row, col), row=row, col=col)
+    work = network.copy()
+    work.cells[found[0]] = replace(found[1], comment=text.strip())
+    return _change(network, work)
+
+
+def set_lead(network: LadderNetwork, row: int, col: int, lines: list[str]) -> Edit:
+    """Set the comment lines written just before an element's instruction."""
+    found = network.element_at(row, col)
+    if found is None or isinstance(found[1], Wire):
+        raise EditRefused("edit-no-element", (row, col), row=row, col=col)
+    work = network.copy()
+    work.cells[found[0]] = replace(found[1], lead=tuple(lines))
+    return _change(network, work)
+
+
+def set_network_comments(network: LadderNetwork, lines: list[str]) -> Edit:
+    """Set the comment lines above the network (the comment tool)."""
+    work = network.copy()
+    work.comments = list(lines)
+    return _change(network, work)
+
+
+def set_params(network: LadderNetwork, row: int, col: int,
+               params: tuple[ParamValue, ...] | list[str]) -> Edit:
+    """Set a function box's parameters: values, or texts checked like the instruction list."""
+    found = network.element_at(row, col)
+    if found is None or not isinstance(found[1], FunctionBox):
+        raise EditRefused("edit-no-element", (row, col), row=row, col=col)
+    box = found[1]
+    if params and all(isinstance(p, str) for p in params):
+        values, problems = function_params(box.name, [str(p) for p in params])
+        if values is None:
+            first = problems[0]
+            raise EditRefused(first.code, (row, col), **first.args)
+        params = values
+    work = network.copy()
+    work.cells[found[0]] = replace(box, params=tuple(params))  # type: ignore[arg-type]
+    return _change(network, work)
+
+
+def function_params(name: str, texts: list[str]) -> tuple[tuple[ParamValue, ...] | None,
+                                                           list[Diagnostic]]:
+    """Check parameter texts for a functional instruction exactly as the parser would."""
+    from ladderworks.core.il import parse
+
+    text = "%@3\n" + " ".join([name, *texts]) + "\n%\n"
+    result = parse(text)
+    if not result.ok:
+        return None, [d for d in result.diagnostics if d.is_error]
+    instructions = result.program.instructions()
+    return instructions[0].params, []
+
+
+def set_drawing(network: LadderNetwork, other: LadderNetwork) -> Edit:
+    """Replace the whole drawing with another network's (e.g. after converting text)."""
+    return _change(network, other)

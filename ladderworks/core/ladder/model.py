@@ -1,0 +1,237 @@
+"""The ladder grid: networks of cells between the rails with contacts, coils, wires, boxes."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field, replace
+
+from ladderworks.core.address import Address
+from ladderworks.core.il.program import Instruction, ParamValue
+from ladderworks.core.instructions import InstructionSpec, Kind, lookup
+
+# Grid limits (FANUC-like). A network has `columns` contact columns (0 .. columns-1) and one
+# coil column (index `columns`) at the right. New networks get DEFAULT_COLUMNS; a network laid
+# out from a long instruction list may be wider, up to MAX_COLUMNS. Rows grow as needed.
+DEFAULT_COLUMNS = 10
+MAX_COLUMNS = 32
+MAX_ROWS = 64
+PAGE_ROWS = 16  # rows a console page shows; networks may be taller (they scroll)
+BOX_WIDTH = 2  # a function box is two contact columns wide
+
+Cell = tuple[int, int]  # (row, column)
+
+
+@dataclass(frozen=True, slots=True)
+class Contact:
+    """A contact: normally open (RD/AND/OR) or normally closed (`negated`, the .NOT forms)."""
+
+    address: Address | None = None  # None while the user has not typed it yet
+    negated: bool = False
+    comment: str = ""  # the element's comment (trailing `// ...` of its instruction)
+    lead: tuple[str, ...] = ()  # comment lines written just before its instruction
+
+
+@dataclass(frozen=True, slots=True)
+class Coil:
+    """An output coil: WRT, or WRT.NOT when `negated`. Belongs in the coil column."""
+
+    address: Address | None = None
+    negated: bool = False
+    comment: str = ""
+    lead: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class Wire:
+    """A horizontal wire through one cell."""
+
+
+WIRE = Wire()
+
+
+@dataclass(frozen=True, slots=True)
+class FunctionBox:
+    """A functional instruction drawn as a box anchored at its top-left cell.
+
+    It is BOX_WIDTH columns wide and `height` rows high. Control input i (spec order, ACT last)
+    enters the box's left edge at row offset `pins[i]`; the W1 output (if the instruction has
+    one) leaves the right edge at the box's top row.
+    """
+
+    name: str
+    params: tuple[ParamValue, ...] = ()
+    comment: str = ""
+    lead: tuple[str, ...] = ()
+    pins: tuple[int, ...] = ()
+    height: int = 1
+
+    @classmethod
+    def new(cls, name: str, params: tuple[ParamValue, ...] = (), comment: str = "",
+            lead: tuple[str, ...] = ()) -> FunctionBox:
+        """A box with one row per control input (at least one row)."""
+        spec = lookup(name)
+        count = len(spec.inputs) if spec is not None else 0
+        return cls(name.upper(), params, comment, lead, tuple(range(count)), max(1, count))
+
+    @property
+    def spec(self) -> InstructionSpec:
+        """The instruction table row."""
+        spec = lookup(self.name)
+        assert spec is not None, self.name
+        return spec
+
+    @property
+    def inputs(self) -> tuple[str, ...]:
+        """Control input names, first to last (ACT last)."""
+        return self.spec.inputs
+
+    @property
+    def has_output(self) -> bool:
+        """True when the box has a W1 output on its right."""
+        return self.spec.w1
+
+    @property
+    def width(self) -> int:
+        """Columns the box covers."""
+        return BOX_WIDTH
+
+
+Element = Contact | Coil | Wire | FunctionBox
+
+
+def is_element(value: object) -> bool:
+    """True for anything a cell can hold."""
+    return isinstance(value, Contact | Coil | Wire | FunctionBox)
+
+
+@dataclass(eq=False, slots=True)
+class LadderNetwork:
+    """One network (rung): a grid of cells, vertical links, and comment lines above it.
+
+    `cells` maps an anchor cell to its element (a box is stored at its top-left cell only; use
+    `element_at` to find what covers any cell). `links` holds vertical links: `(row, node)` joins
+    node `node` of `row` with the same node of `row + 1`; node k is the left edge of column k,
+    node 0 is the left rail, node `columns` is the left edge of the coil column.
+
+    `listing` is set when the network is kept as instruction-list text because it cannot be
+    drawn faithfully (then the grid is empty). `source` is the original coding of a network read
+    from text: it is written back instead of the standard coding as long as the drawing still
+    means exactly the same logic (same standard coding), so unusual stack code round-trips.
+    """
+
+    columns: int = DEFAULT_COLUMNS
+    rows: int = 1
+    cells: dict[Cell, Element] = field(default_factory=dict)
+    links: set[Cell] = field(default_factory=set)
+    comments: list[str] = field(default_factory=list)
+    listing: tuple[Instruction, ...] | None = None
+    source: tuple[Instruction, ...] | None = None
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, LadderNetwork):
+            return NotImplemented
+        return self.state() == other.state()
+
+    @property
+    def coil_column(self) -> int:
+        """Index of the coil column (the rightmost)."""
+        return self.columns
+
+    def state(self) -> NetworkState:
+        """An immutable snapshot of the drawing (used by edits and comparisons)."""
+        return NetworkState(self.columns, self.rows, tuple(sorted(self.cells.items(),
+                                                                  key=lambda kv: kv[0])),
+                            frozenset(self.links), tuple(self.comments), self.listing)
+
+    def restore(self, state: NetworkState) -> None:
+        """Make the network equal to a snapshot."""
+        self.columns = state.columns
+        self.rows = state.rows
+        self.cells = dict(state.cells)
+        self.links = set(state.links)
+        self.comments = list(state.comments)
+        self.listing = state.listing
+
+    def copy(self) -> LadderNetwork:
+        """An independent copy (elements are immutable and shared)."""
+        return LadderNetwork(self.columns, self.rows, dict(self.cells), set(self.links),
+                             list(self.comments), self.listing, self.source)
+
+    def elements(self) -> Iterator[tuple[Cell, Element]]:
+        """Anchor cell and element, top to bottom then left to right."""
+        yield from sorted(self.cells.items(), key=lambda kv: kv[0])
+
+    def footprint(self, cell: Cell, element: Element) -> list[Cell]:
+        """Cells covered by `element` anchored at `cell`."""
+        row, col = cell
+        if isinstance(element, FunctionBox):
+            return [(row + r, col + c) for r in range(element.height)
+                    for c in range(element.width)]
+        return [cell]
+
+    def element_at(self, row: int, col: int) -> tuple[Cell, Element] | None:
+        """The element covering a cell and its anchor, or None."""
+        element = self.cells.get((row, col))
+        if element is not None:
+            return (row, col), element
+        for anchor, item in self.cells.items():
+            if isinstance(item, FunctionBox) and (row, col) in self.footprint(anchor, item):
+                return anchor, item
+        return None
+
+    def has_link(self, row: int, node: int) -> bool:
+        """True when a vertical link joins `row` and `row + 1` at node `node`."""
+        return (row, node) in self.links
+
+    def is_empty(self) -> bool:
+        """True when nothing is drawn (and nothing is kept as a listing)."""
+        return not self.cells and not self.links and self.listing is None
+
+    def row_is_empty(self, row: int) -> bool:
+        """True when no element covers the row and no link touches it."""
+        if any(self.element_at(row, c) for c in range(self.columns + 1)):
+            return False
+        return not any(r in (row, row - 1) for r, _ in self.links)
+
+    def with_element(self, cell: Cell, element: Element) -> LadderNetwork:
+        """A copy with one more element (a convenience for building networks in code)."""
+        net = self.copy()
+        net.cells[cell] = element
+        net.rows = max(net.rows, cell[0] + (element.height if isinstance(element, FunctionBox)
+                                           else 1))
+        return net
+
+
+@dataclass(frozen=True, slots=True)
+class NetworkState:
+    """Immutable snapshot of a LadderNetwork's drawing."""
+
+    columns: int
+    rows: int
+    cells: tuple[tuple[Cell, Element], ...]
+    links: frozenset[Cell]
+    comments: tuple[str, ...]
+    listing: tuple[Instruction, ...] | None
+
+
+@dataclass(eq=False, slots=True)
+class LadderDocument:
+    """A whole program as ladder: its networks plus the text parts that are not drawn."""
+
+    networks: list[LadderNetwork] = field(default_factory=list)
+    header: list[str] = field(default_factory=list)
+    trailer: list[str] = field(default_factory=list)
+    footer: list[str] = field(default_factory=list)
+    before: list = field(default_factory=list)  # il.Section objects kept verbatim
+    after: list = field(default_factory=list)
+
+
+def flip(element: Contact | Coil) -> Contact | Coil:
+    """The same element with NOT toggled."""
+    return replace(element, negated=not element.negated)
+
+
+def is_end(name: str) -> bool:
+    """True for END1 / END2 / END."""
+    spec = lookup(name)
+    return spec is not None and spec.kind is Kind.END
