@@ -247,3 +247,26 @@ def test_clear_and_wrong_length() -> None:
     assert [a.number for a in alarms.update(_area("A3.3"), 2)] == [27]
     with pytest.raises(ValueError):
         alarms.update(bytes(10), 3)
+
+
+# ------------------------------------------------------------------ ladderworks-cli alarms
+
+def test_cli_alarms_lists_the_sample(capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.cli import main
+
+    assert main(["alarms"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert len(lines) == 16
+    assert lines[0].startswith("000  A0.0  X EKSENİ HAREKET EDİYOR")
+    assert lines[8].startswith("008  A1.0  ")
+
+
+def test_cli_alarms_reports_bad_lines(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.cli import main
+
+    path = tmp_path / "AlarmMsg.dat"
+    path.write_text("000 ok\n900 no\n", encoding="utf-8")
+    assert main(["alarms", str(path)]) == 1
+    captured = capsys.readouterr()
+    assert captured.out == "000  A0.0  ok\n"
+    assert f"{path}:2:1: alarm-number" in captured.err

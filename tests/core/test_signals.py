@@ -204,3 +204,44 @@ def test_search_has_no_duplicates() -> None:
     for query in ("G8", "is", "F1", "e-stop"):
         found = [s.address for s in search(query)]
         assert len(found) == len(set(found))
+
+
+# ------------------------------------------------------------------ ladderworks-cli signals
+
+def test_cli_signals_spl(capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.cli import main
+
+    assert main(["signals", "SPL"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].startswith("F0.4  SPL  CYCLE STOP  PROGRAM DUR  0: PROGRAM BAŞLADI")
+
+
+def test_cli_signals_esp(capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.cli import main
+
+    assert main(["signals", "G8.4"]) == 0
+    out = capsys.readouterr().out
+    assert out.splitlines() == [out.rstrip("\n")]
+    assert out.startswith("G8.4  ESP")
+    assert "EMERGENCY STOP" in out and "ACİL DUR" in out
+
+
+def test_cli_signals_all_and_words(capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.cli import main
+
+    assert main(["signals"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert len(lines) == len(load_signals())
+    assert lines[0].startswith("F0.4 ")
+    assert lines[-1].startswith("Y3.7 ") and lines[-1].endswith("[DC-155-2/IO-3,4]")
+    assert main(["signals", "acil", "dur"]) == 0
+    assert [line.split()[0] for line in capsys.readouterr().out.splitlines()] == ["G8.4", "X0.0"]
+
+
+def test_cli_signals_no_match(capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.cli import main
+
+    assert main(["signals", "qqqq"]) == 1
+    captured = capsys.readouterr()
+    assert captured.out == ""
+    assert "no signal matches 'qqqq'" in captured.err
