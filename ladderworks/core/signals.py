@@ -159,9 +159,14 @@ def _words(text: str) -> list[str]:
     return _WORD_RE.findall(text)
 
 
-def _word_match(signal: Signal, query_words: list[str]) -> int:
+@cache
+def _search_index() -> tuple[tuple[Signal, str, tuple[str, ...]], ...]:
+    """Each signal with its folded name and the folded words of its texts."""
+    return tuple((s, fold(s.name), tuple(_words(s.text()))) for s in load_signals())
+
+
+def _word_match(signal_words: tuple[str, ...], query_words: list[str]) -> int:
     """2 when every query word is a whole word of the signal, 1 when only as word starts, 0."""
-    signal_words = _words(signal.text())
     if all(q in signal_words for q in query_words):
         return 2
     if all(any(w.startswith(q) for w in signal_words) for q in query_words):
@@ -186,11 +191,10 @@ def search(query: str) -> list[Signal]:
     groups: tuple[list[Signal], list[Signal], list[Signal]] = ([], [], [])
     groups[0].extend(_address_matches(text))
     seen = {signal.address for signal in groups[0]}
-    for signal in load_signals():
+    for signal, name, signal_words in _search_index():
         if signal.address in seen:
             continue
-        name = fold(signal.name)
-        words = _word_match(signal, query_words) if query_words else 0
+        words = _word_match(signal_words, query_words) if query_words else 0
         if name == folded:
             groups[0].append(signal)
         elif name.startswith(folded) or words == 2:
