@@ -5,15 +5,31 @@ from __future__ import annotations
 import sys
 from collections.abc import Sequence
 
-from PySide6.QtWidgets import QApplication, QMainWindow
+from PySide6.QtWidgets import QApplication
+
+from ladderworks.gui.main_window import MainWindow
+from ladderworks.gui.settings import Settings
+from ladderworks.gui.translation import UiLanguage, system_language
+
+
+def create_window(settings: Settings | None = None) -> MainWindow:
+    """The main window with the remembered (or the system's) UI language applied."""
+    settings = settings if settings is not None else Settings()
+    language = UiLanguage()
+    language.apply(settings.language() or system_language())
+    return MainWindow(settings, language)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Start the IDE and run the event loop."""
-    app = QApplication(list(argv) if argv is not None else sys.argv)
+    """Start the IDE (optionally opening the files named on the command line)."""
+    args = list(argv) if argv is not None else sys.argv
+    app = QApplication.instance() or QApplication(args)
     app.setApplicationName("LadderWorks")
-    window = QMainWindow()
-    window.setWindowTitle("LadderWorks")
-    window.resize(1200, 800)
+    app.setOrganizationName("LadderWorks")
+    window = create_window()
     window.show()
+    for name in args[1:]:
+        if not name.startswith("-"):
+            window.load(name)
+            break
     return app.exec()

@@ -1,0 +1,106 @@
+"""Where things are drawn: cell sizes, network heights and hit-testing of scene points."""
+
+from __future__ import annotations
+
+import bisect
+from dataclasses import dataclass
+
+from ladderworks.core.ladder.model import LadderNetwork
+
+CELL_W = 96.0
+CELL_H = 60.0
+COMMENT_H = 20.0
+LISTING_LINE_H = 18.0
+LEFT = 56.0  # room for the network number left of the left rail
+GAP = 14.0  # space between networks
+
+
+def network_height(network: LadderNetwork) -> float:
+    """Height of a network's drawing: comment lines plus its rows (or its kept listing)."""
+    comments = len(network.comments) * COMMENT_H
+    if network.listing is not None:
+        return comments + max(len(network.listing), 1) * LISTING_LINE_H + 8
+    return comments + network.rows * CELL_H + GAP
+
+
+def network_width(network: LadderNetwork) -> float:
+    """Width of a network's drawing, rails included."""
+    return LEFT + (network.columns + 1) * CELL_W + 8
+
+
+def grid_top(network: LadderNetwork) -> float:
+    """Y of the first row inside the network's item."""
+    return len(network.comments) * COMMENT_H
+
+
+def cell_origin(network: LadderNetwork, row: int, col: int) -> tuple[float, float]:
+    """Top-left corner of a cell inside the network's item."""
+    return LEFT + col * CELL_W, grid_top(network) + row * CELL_H
+
+
+def cell_centre(network: LadderNetwork, row: int, col: int) -> tuple[float, float]:
+    """Centre of a cell inside the network's item."""
+    x, y = cell_origin(network, row, col)
+    return x + CELL_W / 2, y + CELL_H / 2
+
+
+def node_point(network: LadderNetwork, row: int, node: int) -> tuple[float, float]:
+    """A grid node (left edge of column `node`, middle of `row`) inside the network's item."""
+    return LEFT + node * CELL_W, grid_top(network) + row * CELL_H + CELL_H / 2
+
+
+@dataclass(frozen=True, slots=True)
+class Hit:
+    """What a scene point falls on: a network, and a cell / node or a comment line in it."""
+
+    network: int
+    row: int = 0
+    col: int = 0
+    node: int = 0
+    comment_line: int | None = None  # index of the network comment line under the point
+
+
+class Layout:
+    """The vertical stacking of networks; maps scene points to cells."""
+
+    def __init__(self) -> None:
+        self.tops: list[float] = []
+        self.heights: list[float] = []
+
+    def rebuild(self, networks: list[LadderNetwork], start: int = 0) -> None:
+        """Recompute tops and heights from network `start` on."""
+        del self.tops[start:]
+        del self.heights[start:]
+        y = self.tops[-1] + self.heights[-1] if self.tops else 0.0
+        for network in networks[start:]:
+            height = network_height(network)
+            self.tops.append(y)
+            self.heights.append(height)
+            y += height
+
+    def total_height(self) -> float:
+        """Height of the whole document."""
+        return self.tops[-1] + self.heights[-1] if self.tops else 0.0
+
+    def network_at(self, y: float) -> int:
+        """Index of the network whose band holds scene y (clamped)."""
+        if not self.tops:
+            return 0
+        index = bisect.bisect_right(self.tops, y) - 1
+        return min(max(index, 0), len(self.tops) - 1)
+
+    def hit(self, networks: list[LadderNetwork], x: float, y: float) -> Hit:
+        """The network and cell (or comment line) under a scene point."""
+        index = self.network_at(y)
+        network = networks[index]
+        local_y = y - self.tops[index]
+        top = grid_top(network)
+        col = int((x - LEFT) // CELL_W)
+        col = min(max(col, 0), network.columns)
+        node = round((x - LEFT) / CELL_W)
+        node = min(max(node, 0), network.columns)
+        if local_y < top:
+            return Hit(index, 0, col, node, int(local_y // COMMENT_H))
+        row = int((local_y - top) // CELL_H)
+        row = min(max(row, 0), max(network.rows - 1, 0))
+        return Hit(index, row, col, node)

@@ -1,0 +1,219 @@
+"""One network drawn as a single scene item: rails, contacts, coils, wires, boxes, comments."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from PySide6.QtCore import QPointF, QRectF, Qt
+from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPainter, QPen
+from PySide6.QtWidgets import QGraphicsItem, QStyleOptionGraphicsItem, QWidget
+
+from ladderworks.core.il import print_instruction
+from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
+from ladderworks.gui.editor.geometry import (
+    CELL_H,
+    CELL_W,
+    COMMENT_H,
+    LEFT,
+    LISTING_LINE_H,
+    cell_origin,
+    grid_top,
+    network_height,
+    network_width,
+)
+
+INK = QColor("#1a1a1a")
+RAIL = QColor("#1f4e79")
+COMMENT = QColor("#2e7d32")
+NAME = QColor("#5b5b5b")
+ERROR = QColor("#d32f2f")
+BOX_FILL = QColor("#eef3fb")
+EMPTY_HINT = QColor("#9e9e9e")
+
+# Describes an address for the drawing: (signal name, description) or None.
+SignalLookup = Callable[[object], tuple[str, str] | None]
+
+
+def _fonts() -> tuple[QFont, QFont, QFont]:
+    label = QFont()
+    label.setPointSizeF(9.5)
+    label.setBold(True)
+    small = QFont()
+    small.setPointSizeF(7.5)
+    comment = QFont()
+    comment.setPointSizeF(9)
+    comment.setItalic(True)
+    return label, small, comment
+
+
+class NetworkItem(QGraphicsItem):
+    """Paints one LadderNetwork; its number and hints come from the view."""
+
+    def __init__(self, network: LadderNetwork, number: int, describe: SignalLookup) -> None:
+        super().__init__()
+        self.network = network
+        self.number = number
+        self.describe = describe
+        self.error_cells: set[tuple[int, int]] = set()
+        self.is_new = False  # the empty network at the end, where a new one is drawn
+        self._size = (network_width(network), network_height(network))
+        self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemUsesExtendedStyleOption, True)
+
+    def refresh(self) -> None:
+        """The network changed: recompute the size and repaint."""
+        size = (network_width(self.network), network_height(self.network))
+        if size != self._size:
+            self.prepareGeometryChange()
+            self._size = size
+        self.update()
+
+    def boundingRect(self) -> QRectF:
+        """The item's extent."""
+        return QRectF(0, 0, self._size[0], self._size[1])
+
+    def paint(self, painter: QPainter, option: QStyleOptionGraphicsItem,
+              widget: QWidget | None = None) -> None:
+        """Draw the network."""
+        net = self.network
+        label_font, small_font, comment_font = _fonts()
+        painter.setRenderHint(QPainter.RenderHint.Antialiasing, True)
+        painter.setFont(comment_font)
+        painter.setPen(COMMENT)
+        for index, line in enumerate(net.comments):
+            painter.drawText(QRectF(LEFT, index * COMMENT_H, self._size[0] - LEFT, COMMENT_H),
+                             Qt.AlignmentFlag.AlignVCenter, "// " + line)
+        top = grid_top(net)
+        painter.setFont(label_font)
+        painter.setPen(EMPTY_HINT if self.is_new else RAIL)
+        painter.drawText(QRectF(0, top, LEFT - 8, CELL_H / 2),
+                         Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter,
+                         "+" if self.is_new else f"N{self.number}")
+        if net.listing is not None:
+            self._paint_listing(painter, top)
+            return
+        bottom = top + net.rows * CELL_H
+        right = LEFT + (net.columns + 1) * CELL_W
+        rail = QPen(EMPTY_HINT if self.is_new else RAIL, 3)
+        painter.setPen(rail)
+        painter.drawLine(QPointF(LEFT, top), QPointF(LEFT, bottom))
+        painter.drawLine(QPointF(right, top), QPointF(right, bottom))
+        if self.is_new and net.is_empty():
+            grid = QPen(QColor("#e0e0e0"), 1, Qt.PenStyle.DotLine)
+            painter.setPen(grid)
+            for col in range(1, net.columns + 1):
+                painter.drawLine(QPointF(LEFT + col * CELL_W, top), QPointF(LEFT + col * CELL_W,
+                                                                          bottom))
+        ink = QPen(INK, 1.6)
+        painter.setPen(ink)
+        for row, node in net.links:
+            x = LEFT + node * CELL_W
+            y1 = top + row * CELL_H + CELL_H / 2
+            painter.drawLine(QPointF(x, y1), QPointF(x, y1 + CELL_H))
+        exposed = option.exposedRect
+        for (row, col), element in net.elements():
+            x, y = cell_origin(net, row, col)
+            if not exposed.intersects(QRectF(x, y, CELL_W * 2, CELL_H * 8)):
+                continue
+            painter.setPen(ink)
+            if isinstance(element, Wire):
+                painter.drawLine(QPointF(x, y + CELL_H / 2), QPointF(x + CELL_W, y + CELL_H / 2))
+            elif isinstance(element, Contact):
+                self._paint_contact(painter, element, x, y, label_font, small_font)
+            elif isinstance(element, Coil):
+                self._paint_coil(painter, element, x, y, col, label_font, small_font)
+            elif isinstance(element, FunctionBox):
+                self._paint_box(painter, element, x, y, label_font, small_font)
+        if self.error_cells:
+            painter.setPen(QPen(ERROR, 2, Qt.PenStyle.DashLine))
+            painter.setBrush(Qt.BrushStyle.NoBrush)
+            for row, col in self.error_cells:
+                x, y = cell_origin(net, row, col)
+                painter.drawRect(QRectF(x + 2, y + 2, CELL_W - 4, CELL_H - 4))
+
+    def _labels(self, painter: QPainter, element: Contact | Coil, x: float, y: float,
+                label_font: QFont, small_font: QFont) -> None:
+        painter.setFont(label_font)
+        painter.setPen(INK if element.address is not None else ERROR)
+        text = str(element.address) if element.address is not None else "?"
+        painter.drawText(QRectF(x, y + 1, CELL_W, 16), Qt.AlignmentFlag.AlignCenter, text)
+        below = element.comment
+        described = self.describe(element.address) if element.address is not None else None
+        if described is not None:
+            below = described[0] + (f" {element.comment}" if element.comment else "")
+        if below:
+            painter.setFont(small_font)
+            painter.setPen(NAME)
+            metrics = QFontMetricsF(small_font)
+            elided = metrics.elidedText(below, Qt.TextElideMode.ElideRight, CELL_W - 4)
+            painter.drawText(QRectF(x + 2, y + CELL_H - 16, CELL_W - 4, 14),
+                             Qt.AlignmentFlag.AlignCenter, elided)
+
+    def _paint_contact(self, painter: QPainter, element: Contact, x: float, y: float,
+                       label_font: QFont, small_font: QFont) -> None:
+        mid = y + CELL_H / 2
+        left, right = x + CELL_W / 2 - 8, x + CELL_W / 2 + 8
+        painter.drawLine(QPointF(x, mid), QPointF(left, mid))
+        painter.drawLine(QPointF(right, mid), QPointF(x + CELL_W, mid))
+        painter.drawLine(QPointF(left, mid - 11), QPointF(left, mid + 11))
+        painter.drawLine(QPointF(right, mid - 11), QPointF(right, mid + 11))
+        if element.negated:
+            painter.drawLine(QPointF(left - 3, mid + 11), QPointF(right + 3, mid - 11))
+        self._labels(painter, element, x, y, label_font, small_font)
+
+    def _paint_coil(self, painter: QPainter, element: Coil, x: float, y: float, col: int,
+                    label_font: QFont, small_font: QFont) -> None:
+        mid = y + CELL_H / 2
+        left, right = x + CELL_W / 2 - 10, x + CELL_W / 2 + 10
+        painter.drawLine(QPointF(x, mid), QPointF(left, mid))
+        end = x + CELL_W if col >= self.network.columns else right + 6
+        painter.drawLine(QPointF(right, mid), QPointF(end, mid))
+        painter.drawArc(QRectF(left, mid - 11, 14, 22), 100 * 16, 160 * 16)
+        painter.drawArc(QRectF(right - 14, mid - 11, 14, 22), -80 * 16, 160 * 16)
+        if element.negated:
+            painter.drawLine(QPointF(left, mid + 11), QPointF(right, mid - 11))
+        self._labels(painter, element, x, y, label_font, small_font)
+
+    def _paint_box(self, painter: QPainter, box: FunctionBox, x: float, y: float,
+                   label_font: QFont, small_font: QFont) -> None:
+        width = box.width * CELL_W
+        height = box.height * CELL_H
+        rect = QRectF(x + 10, y + 6, width - 20, height - 12)
+        painter.setBrush(BOX_FILL)
+        painter.drawRect(rect)
+        painter.setBrush(Qt.BrushStyle.NoBrush)
+        painter.setFont(small_font)
+        for index, name in enumerate(box.inputs):
+            pin = box.pins[index] if index < len(box.pins) else index
+            py = y + pin * CELL_H + CELL_H / 2
+            painter.drawLine(QPointF(x, py), QPointF(x + 10, py))
+            painter.drawText(QRectF(x + 12, py - 7, 40, 14), Qt.AlignmentFlag.AlignLeft, name)
+        if box.has_output:
+            py = y + CELL_H / 2
+            painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
+            painter.drawText(QRectF(x + width - 40, py - 7, 28, 14),
+                             Qt.AlignmentFlag.AlignRight, "W1")
+        painter.setFont(label_font)
+        painter.drawText(QRectF(rect.left(), rect.top() + 2, rect.width(), 16),
+                         Qt.AlignmentFlag.AlignHCenter, box.name)
+        params = " ".join(str(p) for p in box.params)
+        if params:
+            painter.setFont(small_font)
+            metrics = QFontMetricsF(small_font)
+            painter.drawText(QRectF(rect.left() + 4, rect.bottom() - 16, rect.width() - 8, 14),
+                             Qt.AlignmentFlag.AlignHCenter,
+                             metrics.elidedText(params, Qt.TextElideMode.ElideRight,
+                                                rect.width() - 8))
+
+    def _paint_listing(self, painter: QPainter, top: float) -> None:
+        painter.setPen(QPen(EMPTY_HINT, 1, Qt.PenStyle.DashLine))
+        height = max(len(self.network.listing or ()), 1) * LISTING_LINE_H
+        painter.drawRect(QRectF(LEFT, top, self._size[0] - LEFT - 8, height + 4))
+        painter.setPen(INK)
+        font = QFont("monospace")
+        font.setStyleHint(QFont.StyleHint.Monospace)
+        font.setPointSizeF(9)
+        painter.setFont(font)
+        for index, instruction in enumerate(self.network.listing or ()):
+            painter.drawText(QRectF(LEFT + 6, top + 2 + index * LISTING_LINE_H, 800,
+                                    LISTING_LINE_H), Qt.AlignmentFlag.AlignVCenter,
+                             print_instruction(instruction))

@@ -1,0 +1,212 @@
+"""The function property table: a dialog built from the instruction table for one function."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication, QLocale, Qt
+from PySide6.QtGui import QColor
+from PySide6.QtWidgets import (
+    QDialog,
+    QDialogButtonBox,
+    QHeaderView,
+    QLabel,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.il import Instruction, parse
+from ladderworks.core.il.printer import print_instruction
+from ladderworks.core.instructions import InstructionSpec, Param, ParamKind
+from ladderworks.gui.diagnostic_texts import diagnostic_text
+
+
+def param_label(name: str) -> str:
+    """A parameter's name in the current UI language."""
+    labels = {
+        "timer": QCoreApplication.translate("Param", "Timer number"),
+        "preset": QCoreApplication.translate("Param", "Preset"),
+        "accuracy": QCoreApplication.translate("Param", "Accuracy"),
+        "register": QCoreApplication.translate("Param", "Timer/counter register"),
+        "code": QCoreApplication.translate("Param", "Code signal"),
+        "spec": QCoreApplication.translate("Param", "Decode specification"),
+        "format": QCoreApplication.translate("Param", "Format"),
+        "first": QCoreApplication.translate("Param", "First number"),
+        "result": QCoreApplication.translate("Param", "Result"),
+        "counter": QCoreApplication.translate("Param", "Counter number"),
+        "positions": QCoreApplication.translate("Param", "Number of positions"),
+        "current": QCoreApplication.translate("Param", "Current position"),
+        "target": QCoreApplication.translate("Param", "Target position"),
+        "size": QCoreApplication.translate("Param", "Table size"),
+        "index": QCoreApplication.translate("Param", "Index"),
+        "output": QCoreApplication.translate("Param", "Output"),
+        "table": QCoreApplication.translate("Param", "Table values"),
+        "input": QCoreApplication.translate("Param", "Input"),
+        "high_mask": QCoreApplication.translate("Param", "High 4-bit mask"),
+        "low_mask": QCoreApplication.translate("Param", "Low 4-bit mask"),
+        "or_data": QCoreApplication.translate("Param", "OR data"),
+        "data": QCoreApplication.translate("Param", "Data"),
+        "coils": QCoreApplication.translate("Param", "Number of coils"),
+        "input_format": QCoreApplication.translate("Param", "Input format (0 constant, 1 address)"),
+        "compare": QCoreApplication.translate("Param", "Compared data"),
+        "search": QCoreApplication.translate("Param", "Searched data"),
+        "operand_format": QCoreApplication.translate(
+            "Param", "Operand format (0 constant, 1 address)"),
+        "a": QCoreApplication.translate("Param", "Operand A"),
+        "b": QCoreApplication.translate("Param", "Operand B"),
+        "constant": QCoreApplication.translate("Param", "Constant"),
+    }
+    return labels.get(name, name)
+
+
+def allowed_text(param: Param) -> str:
+    """What may be typed for `param`, from its row in the instruction table."""
+    if param.kind is ParamKind.NUMBER:
+        if param.choices:
+            return QCoreApplication.translate("FunctionDialog", "one of {0}").format(
+                ", ".join(str(c) for c in param.choices))
+        return QCoreApplication.translate("FunctionDialog", "{0} to {1}").format(
+            param.lo, param.hi)
+    if param.kind is ParamKind.ADDRESS:
+        if isinstance(param.width, int):
+            return QCoreApplication.translate(
+                "FunctionDialog", "byte address ({0} bytes)").format(param.width)
+        return QCoreApplication.translate("FunctionDialog", "byte address")
+    if param.kind is ParamKind.VALUE:
+        return QCoreApplication.translate("FunctionDialog", "constant or byte address")
+    if param.kind is ParamKind.MASK:
+        return QCoreApplication.translate("FunctionDialog", "up to 4 binary digits, e.g. 1111")
+    return QCoreApplication.translate("FunctionDialog", "values separated by spaces")
+
+
+def check_function(spec: InstructionSpec, values: list[str]) -> tuple[
+        Instruction | None, list[Diagnostic]]:
+    """Build the instruction from typed values, checked by the core's parser."""
+    words = " ".join(value.strip() for value in values if value.strip())
+    result = parse(f"%@3\n{spec.name} {words}\n%\n")
+    diagnostics = [d for d in result.diagnostics if d.is_error]
+    instructions = result.program.instructions()
+    if diagnostics or not instructions:
+        return None, diagnostics
+    found = instructions[0]
+    return Instruction(found.name, found.operand, found.params), []
+
+
+def _value_text(param: Param, value: object) -> str:
+    if param.kind is ParamKind.MASK and isinstance(value, int):
+        return f"{value:04b}"
+    return str(value)
+
+
+class FunctionDialog(QDialog):
+    """The property table of one functional instruction; OK only with valid parameters."""
+
+    def __init__(self, spec: InstructionSpec, instruction: Instruction | None = None,
+                 parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("function_dialog")
+        self.spec = spec
+        self.instruction: Instruction | None = None
+        self.setWindowTitle(f"{spec.name} — {spec.title}")
+        layout = QVBoxLayout(self)
+        self._title = QLabel(self)
+        layout.addWidget(self._title)
+        self.table = QTableWidget(self)
+        self.table.setObjectName("function_table")
+        self.table.setColumnCount(3)
+        self.table.verticalHeader().hide()
+        self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
+        layout.addWidget(self.table)
+        self.warning = QLabel(self)
+        self.warning.setObjectName("function_warning")
+        self.warning.setWordWrap(True)
+        self.warning.setStyleSheet("color: #b00020; font-weight: bold;")
+        self.warning.hide()
+        layout.addWidget(self.warning)
+        self.buttons = QDialogButtonBox(
+            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self)
+        self.buttons.accepted.connect(self.accept)
+        self.buttons.rejected.connect(self.reject)
+        layout.addWidget(self.buttons)
+        self._params = list(spec.params)
+        self.table.setRowCount(len(self._params))
+        current = instruction.param_map() if instruction is not None else {}
+        for row, param in enumerate(self._params):
+            name_item = QTableWidgetItem()
+            name_item.setFlags(Qt.ItemFlag.ItemIsEnabled)
+            self.table.setItem(row, 0, name_item)
+            value = current.get(param.name)
+            if isinstance(value, tuple):
+                text = " ".join(str(v) for v in value)
+            else:
+                text = _value_text(param, value) if value is not None else ""
+            self.table.setItem(row, 1, QTableWidgetItem(text))
+            hint = QTableWidgetItem()
+            hint.setFlags(Qt.ItemFlag.ItemIsEnabled)
+            self.table.setItem(row, 2, hint)
+        self.retranslate()
+        self.resize(560, 120 + 30 * max(len(self._params), 1))
+        if self._params:
+            self.table.setCurrentCell(0, 1)
+
+    def retranslate(self) -> None:
+        """Set the texts in the current UI language."""
+        self._title.setText(QCoreApplication.translate(
+            "FunctionDialog", "{0} — {1}: fill in the parameters").format(
+            self.spec.name, self.spec.title_tr if _turkish() else self.spec.title))
+        self.table.setHorizontalHeaderLabels([
+            QCoreApplication.translate("FunctionDialog", "Parameter"),
+            QCoreApplication.translate("FunctionDialog", "Value"),
+            QCoreApplication.translate("FunctionDialog", "Allowed"),
+        ])
+        for row, param in enumerate(self._params):
+            self.table.item(row, 0).setText(param_label(param.name))
+            self.table.item(row, 2).setText(allowed_text(param))
+
+    def set_value(self, name: str, text: str) -> None:
+        """Type `text` into the row of parameter `name`."""
+        for row, param in enumerate(self._params):
+            if param.name == name:
+                self.table.item(row, 1).setText(text)
+                return
+        raise KeyError(name)
+
+    def values(self) -> list[str]:
+        """The typed values, row by row."""
+        return [self.table.item(row, 1).text() for row in range(self.table.rowCount())]
+
+    def accept(self) -> None:
+        """Check with the core; on an error show the warning, mark the row and stay open."""
+        self.table.setCurrentCell(-1, -1)
+        instruction, diagnostics = check_function(self.spec, self.values())
+        for row in range(self.table.rowCount()):
+            self.table.item(row, 1).setBackground(QColor(Qt.GlobalColor.transparent))
+        if instruction is None:
+            messages = [diagnostic_text(d) for d in diagnostics] or [
+                QCoreApplication.translate("FunctionDialog", "The parameters are not valid")]
+            self.warning.setText("\n".join(messages))
+            self.warning.show()
+            bad = self._bad_row(diagnostics)
+            if bad is not None:
+                self.table.item(bad, 1).setBackground(QColor("#ffd6d6"))
+                self.table.setCurrentCell(bad, 1)
+            return
+        self.warning.hide()
+        self.instruction = instruction
+        super().accept()
+
+    def _bad_row(self, diagnostics: list[Diagnostic]) -> int | None:
+        for diagnostic in diagnostics:
+            index = diagnostic.args.get("index")
+            if isinstance(index, int):
+                return min(max(index - 1, 0), len(self._params) - 1)
+        return 0 if self._params else None
+
+    def instruction_text(self) -> str:
+        """The accepted instruction as one line of text."""
+        return print_instruction(self.instruction) if self.instruction else ""
+
+
+def _turkish() -> bool:
+    return QLocale().language() == QLocale.Language.Turkish

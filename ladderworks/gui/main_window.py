@@ -1,0 +1,589 @@
+"""The ladder console's main window: menus, actions, tool palette, editor, text view, docks."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
+from PySide6.QtGui import QAction, QActionGroup, QCloseEvent, QKeySequence
+from PySide6.QtWidgets import (
+    QFileDialog,
+    QLabel,
+    QMainWindow,
+    QMenu,
+    QMessageBox,
+    QStackedWidget,
+    QToolBar,
+    QWidget,
+)
+
+from ladderworks.core.diagnostics import Diagnostic, has_errors
+from ladderworks.core.il import Program, parse_file, print_program
+from ladderworks.gui import compile_step
+from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.error_list import ErrorListDock
+from ladderworks.gui.files import atomic_write
+from ladderworks.gui.palette import ToolPalette
+from ladderworks.gui.settings import MAX_RECENT, Settings
+from ladderworks.gui.text_view import ProgramTextView
+from ladderworks.gui.tools import Tool, icon, tool_help, tool_icon, tool_name
+from ladderworks.gui.translation import UiLanguage
+
+
+def _t(text: str) -> str:
+    return QCoreApplication.translate("MainWindow", text)
+
+
+class MainWindow(QMainWindow):
+    """The ladder console: one program, shown as ladder (or as text when it has errors)."""
+
+    language_changed = Signal(str)
+    file_saved = Signal(str)
+
+    def __init__(self, settings: Settings, language: UiLanguage,
+                 parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("main_window")
+        self.settings = settings
+        self.language = language
+        self.path: Path | None = None
+        self.encoding = "utf-8"
+        self.failed_path: Path | None = None  # a file that did not parse: never overwritten
+        self.setWindowIcon(icon("ladderworks"))
+
+        self.editor = LadderEditor(self)
+        self.text_view = ProgramTextView(self)
+        self.text_view.document().modificationChanged.connect(self._update_title)
+        self.pages = QStackedWidget(self)
+        self.pages.setObjectName("pages")
+        self.pages.addWidget(self.editor)
+        self.pages.addWidget(self.text_view)
+        self.setCentralWidget(self.pages)
+
+        self.actions_by_name: dict[str, QAction] = {}
+        self._texts: list[tuple[QAction | QMenu | QToolBar, Callable[[], str]]] = []
+        self._make_actions()
+        self.palette = ToolPalette([self.tool_actions[tool] for tool in Tool], self)
+        self.palette.function_chosen.connect(self._on_function_chosen)
+        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.palette)
+        self.errors = ErrorListDock(self)
+        self.errors.activated.connect(self.go_to_diagnostic)
+        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.errors)
+        self._make_menus()
+        self._make_status_bar()
+
+        self.editor.undo_stack.cleanChanged.connect(self._update_title)
+        self.editor.tool_requested.connect(self.set_tool)
+        self.editor.hover_changed.connect(self._show_hover)
+        self.editor.message.connect(self._show_message)
+        self.set_tool(Tool.SELECT)
+        self.editor.set_function(self.palette.current_function())
+        self.retranslate()
+        self.resize(1200, 800)
+        geometry, state = settings.window_state()
+        if geometry is not None:
+            self.restoreGeometry(geometry)
+        if state is not None:
+            self.restoreState(state)
+        self.new_file()
+
+    # -- actions and menus ---------------------------------------------------------------
+
+    def _action(self, name: str, text: Callable[[], str], slot: Callable[[], object] | None,
+                shortcut: QKeySequence | QKeySequence.StandardKey | str | None = None,
+                icon_name: str | None = None) -> QAction:
+        action = QAction(self)
+        action.setObjectName(name)
+        if shortcut is not None:
+            action.setShortcut(QKeySequence(shortcut))
+        if icon_name is not None:
+            action.setIcon(icon(icon_name))
+        if slot is not None:
+            action.triggered.connect(lambda _checked=False, s=slot: s())
+        self.actions_by_name[name] = action
+        self._texts.append((action, text))
+        return action
+
+    def _make_actions(self) -> None:
+        key = QKeySequence.StandardKey
+        ed = self.editor
+        a = self._action
+        a("action_new", lambda: _t("&New"), self.new_file, key.New)
+        a("action_open", lambda: _t("&Open..."), self.open_dialog, key.Open)
+        a("action_save", lambda: _t("&Save"), self.save, key.Save)
+        a("action_save_as", lambda: _t("Save &As..."), self.save_as_dialog, key.SaveAs)
+        a("action_import_mod", lambda: _t("&Import .MOD..."), self.import_mod_dialog)
+        a("action_export_mod", lambda: _t("&Export .MOD..."), self.export_mod_dialog)
+        a("action_clear_recent", lambda: _t("Clear the list"), self._clear_recent)
+        a("action_quit", lambda: _t("&Quit"), self.close, key.Quit)
+        undo = ed.undo_stack.createUndoAction(self)
+        undo.setObjectName("action_undo")
+        undo.setShortcut(QKeySequence(key.Undo))
+        self.actions_by_name["action_undo"] = undo
+        self._texts.append((undo, lambda: _t("&Undo")))
+        redo = ed.undo_stack.createRedoAction(self)
+        redo.setObjectName("action_redo")
+        redo.setShortcut(QKeySequence(key.Redo))
+        self.actions_by_name["action_redo"] = redo
+        self._texts.append((redo, lambda: _t("&Redo")))
+        a("action_cut", lambda: _t("Cu&t"), ed.cut, key.Cut)
+        a("action_copy", lambda: _t("&Copy"), ed.copy, key.Copy)
+        a("action_paste", lambda: _t("&Paste"), ed.paste, key.Paste)
+        a("action_delete", lambda: _t("&Delete"), ed.delete_at_cursor, "Del")
+        a("action_edit_element", lambda: _t("&Edit element"), ed.edit_at_cursor)
+        a("action_invert", lambda: _t("NOT (invert)"), ed.invert_at_cursor, None, "invert")
+        a("action_or", lambda: _t("OR (add parallel)"), ed.or_at_cursor, None, "or")
+        a("action_insert_row_before", lambda: _t("Insert row before"), ed.insert_row_before,
+          None, "row_before")
+        a("action_insert_row_after", lambda: _t("Insert row after"), ed.insert_row_after,
+          None, "row_after")
+        a("action_zoom_in", lambda: _t("Zoom &in"), ed.zoom_in, key.ZoomIn)
+        a("action_zoom_out", lambda: _t("Zoom &out"), ed.zoom_out, key.ZoomOut)
+        a("action_zoom_reset", lambda: _t("&Normal size"), ed.zoom_reset, "Ctrl+0")
+        a("action_show_ladder", lambda: _t("Show as &ladder"), self.show_as_ladder, "F5")
+        a("action_show_text", lambda: _t("Show as &text"), self.show_as_text, "F6")
+        a("action_check", lambda: _t("C&heck"), self.check, "F7")
+        a("action_compile", lambda: _t("&Compile"), self.compile, "F9", "compile")
+        a("action_language_en", lambda: "English", lambda: self.set_language("en"))
+        a("action_language_tr", lambda: "Türkçe", lambda: self.set_language("tr"))
+        a("action_about", lambda: _t("&About LadderWorks"), self.about)
+        languages = QActionGroup(self)
+        for code in ("en", "tr"):
+            action = self.actions_by_name[f"action_language_{code}"]
+            action.setCheckable(True)
+            languages.addAction(action)
+        self.recent_actions: list[QAction] = []
+        for index in range(MAX_RECENT):
+            action = QAction(self)
+            action.setObjectName(f"action_recent_{index}")
+            action.triggered.connect(lambda _c=False, i=index: self._open_recent(i))
+            self.recent_actions.append(action)
+            self.actions_by_name[action.objectName()] = action
+        self.tool_group = QActionGroup(self)
+        self.tool_actions: dict[Tool, QAction] = {}
+        for tool in Tool:
+            action = QAction(tool_icon(tool), "", self)
+            action.setObjectName(f"tool_{tool.value}")
+            action.setCheckable(True)
+            action.triggered.connect(lambda _c=False, t=tool: self.set_tool(t))
+            self.tool_group.addAction(action)
+            self.tool_actions[tool] = action
+            self.actions_by_name[action.objectName()] = action
+
+    def _menu(self, name: str, text: Callable[[], str], names: list[str | None]) -> QMenu:
+        menu = self.menuBar().addMenu("")
+        menu.setObjectName(name)
+        self._texts.append((menu, text))
+        for item in names:
+            if item is None:
+                menu.addSeparator()
+            else:
+                menu.addAction(self.actions_by_name[item])
+        return menu
+
+    def _make_menus(self) -> None:
+        file_menu = self._menu("menu_file", lambda: _t("&File"), [
+            "action_new", "action_open"])
+        self.recent_menu = QMenu(file_menu)
+        self.recent_menu.setObjectName("menu_recent")
+        self._texts.append((self.recent_menu, lambda: _t("Recent files")))
+        file_menu.addMenu(self.recent_menu)
+        for item in ("action_save", "action_save_as", None, "action_import_mod",
+                     "action_export_mod", None, "action_quit"):
+            if item is None:
+                file_menu.addSeparator()
+            else:
+                file_menu.addAction(self.actions_by_name[item])
+        self._menu("menu_edit", lambda: _t("&Edit"), [
+            "action_undo", "action_redo", None, "action_cut", "action_copy", "action_paste",
+            "action_delete", None, "action_edit_element", "action_invert", "action_or",
+            "action_insert_row_before", "action_insert_row_after"])
+        view = self._menu("menu_view", lambda: _t("&View"), [
+            "action_zoom_in", "action_zoom_out", "action_zoom_reset", None,
+            "action_show_ladder", "action_show_text", None])
+        for dock, name in ((self.palette, "action_dock_palette"),
+                           (self.errors, "action_dock_errors")):
+            toggle = dock.toggleViewAction()
+            toggle.setObjectName(name)
+            self.actions_by_name[name] = toggle
+            view.addAction(toggle)
+        self._menu("menu_plc", lambda: _t("&PLC"), ["action_check", "action_compile"])
+        tools = self._menu("menu_tools", lambda: _t("&Tools"),
+                           [f"tool_{tool.value}" for tool in Tool])
+        tools.addSeparator()
+        self._menu("menu_language", lambda: _t("&Language"),
+                   ["action_language_en", "action_language_tr"])
+        self._menu("menu_help", lambda: _t("&Help"), ["action_about"])
+        toolbar = QToolBar(self)
+        toolbar.setObjectName("toolbar_main")
+        self._texts.append((toolbar, lambda: _t("Main toolbar")))
+        for item in ("action_new", "action_open", "action_save", None, "action_undo",
+                     "action_redo", None, "action_zoom_in", "action_zoom_out", None,
+                     "action_compile"):
+            if item is None:
+                toolbar.addSeparator()
+            else:
+                toolbar.addAction(self.actions_by_name[item])
+        style = self.style()
+        sp = style.StandardPixmap
+        for name, pixmap in (("action_new", sp.SP_FileIcon),
+                             ("action_open", sp.SP_DialogOpenButton),
+                             ("action_save", sp.SP_DialogSaveButton),
+                             ("action_undo", sp.SP_ArrowBack), ("action_redo", sp.SP_ArrowForward)):
+            self.actions_by_name[name].setIcon(style.standardIcon(pixmap))
+        self.actions_by_name["action_zoom_in"].setIcon(icon("zoom_in"))
+        self.actions_by_name["action_zoom_out"].setIcon(icon("zoom_out"))
+        self.addToolBar(Qt.ToolBarArea.TopToolBarArea, toolbar)
+        self._update_recent_menu()
+
+    def _make_status_bar(self) -> None:
+        self.cell_label = QLabel(self)
+        self.cell_label.setObjectName("status_cell")
+        self.cell_label.setMinimumWidth(140)
+        self.statusBar().addPermanentWidget(self.cell_label)
+
+    # -- language ------------------------------------------------------------------------
+
+    def retranslate(self) -> None:
+        """Set every text in the current UI language."""
+        for widget, text in self._texts:
+            if isinstance(widget, QAction):
+                widget.setText(text())
+            elif isinstance(widget, QMenu):
+                widget.setTitle(text())
+            else:
+                widget.setWindowTitle(text())
+        for tool, action in self.tool_actions.items():
+            action.setText(tool_name(tool))
+            action.setToolTip(tool_help(tool))
+            action.setStatusTip(tool_help(tool))
+        for code in ("en", "tr"):
+            self.actions_by_name[f"action_language_{code}"].setChecked(
+                self.language.current == code)
+        self._update_title()
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate on a language change."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+    def set_language(self, code: str) -> None:
+        """Switch the UI language live and remember it."""
+        applied = self.language.apply(code)
+        self.settings.set_language(applied)
+        self.retranslate()
+        self.language_changed.emit(applied)
+
+    # -- tools ---------------------------------------------------------------------------
+
+    def set_tool(self, tool: Tool) -> None:
+        """Make `tool` the current tool of the grid editor."""
+        self.tool_actions[tool].setChecked(True)
+        self.editor.set_tool(tool)
+        self.statusBar().showMessage(tool_help(tool), 4000)
+
+    def current_tool(self) -> Tool:
+        """The checked tool."""
+        return self.editor.tool
+
+    def _on_function_chosen(self, name: str) -> None:
+        self.editor.set_function(name)
+        self.set_tool(Tool.FUNCTION)
+
+    def _show_hover(self, text: str) -> None:
+        self.cell_label.setText(text)
+
+    def _show_message(self, text: str) -> None:
+        self.statusBar().showMessage(text, 6000)
+
+    # -- documents -----------------------------------------------------------------------
+
+    def is_modified(self) -> bool:
+        """True when there are unsaved changes."""
+        if self.pages.currentWidget() is self.text_view:
+            return self.text_view.document().isModified()
+        return not self.editor.undo_stack.isClean()
+
+    def _update_title(self, *_args: object) -> None:
+        name = self.path.name if self.path else _t("Untitled")
+        star = "*" if self.is_modified() else ""
+        self.setWindowTitle(f"{name}{star} — LadderWorks")
+
+    def maybe_save(self) -> bool:
+        """Ask to save unsaved changes; False when the user cancels."""
+        if not self.is_modified():
+            return True
+        buttons = (QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
+                   | QMessageBox.StandardButton.Cancel)
+        answer = QMessageBox.question(
+            self, _t("Unsaved changes"),
+            _t("The program has unsaved changes. Save them?"), buttons,
+            QMessageBox.StandardButton.Save)
+        if answer == QMessageBox.StandardButton.Save:
+            return self.save()
+        return answer == QMessageBox.StandardButton.Discard
+
+    def new_file(self) -> None:
+        """Start an empty program."""
+        self.path = None
+        self.failed_path = None
+        self.encoding = "utf-8"
+        self.editor.set_program(Program())
+        self.text_view.setPlainText("")
+        self.text_view.document().setModified(False)
+        self.errors.set_diagnostics([])
+        self.pages.setCurrentWidget(self.editor)
+        self._update_title()
+
+    def load(self, path: str | Path) -> bool:
+        """Open a `.LAD` / `.MOD` file: as ladder, or as text with its errors listed."""
+        path = Path(path)
+        try:
+            result = parse_file(path)
+        except OSError as error:
+            QMessageBox.warning(self, _t("Open"), _t("Cannot read {0}: {1}").format(
+                path, error.strerror or str(error)))
+            return False
+        self.path = path
+        self.encoding = result.encoding
+        self.errors.set_diagnostics(result.diagnostics)
+        self._remember(path)
+        if result.ok:
+            self.failed_path = None
+            ladder_diagnostics = self.editor.set_program(result.program)
+            if ladder_diagnostics:
+                self.errors.set_diagnostics(result.diagnostics + ladder_diagnostics)
+            self.pages.setCurrentWidget(self.editor)
+        else:
+            self.failed_path = path
+            text = path.read_bytes().decode(self.encoding, errors="replace")
+            if text.startswith("\ufeff"):
+                text = text[1:]
+            self.editor.set_program(Program())
+            self.text_view.setPlainText(text)
+            self.text_view.document().setModified(False)
+            self.pages.setCurrentWidget(self.text_view)
+            self.errors.show()
+            self._show_message(_t("The file has errors: it is shown as text"))
+        self._update_title()
+        return True
+
+    def open_dialog(self) -> None:
+        """File > Open."""
+        if not self.maybe_save():
+            return
+        name, _ = QFileDialog.getOpenFileName(
+            self, _t("Open program"), str(self.path.parent if self.path else ""),
+            _t("Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)"))
+        if name:
+            self.load(name)
+
+    def program_text(self) -> str | None:
+        """The current program as `.LAD` text, or None when it cannot be made (errors listed)."""
+        if self.pages.currentWidget() is self.text_view:
+            return None
+        program, diagnostics = self.editor.program()
+        if program is None:
+            self.errors.set_diagnostics(diagnostics)
+            self.errors.show()
+            return None
+        return print_program(program)
+
+    def save(self) -> bool:
+        """File > Save (Save As when the program has no file yet)."""
+        if self.path is None:
+            return self.save_as_dialog()
+        return self.save_to(self.path)
+
+    def save_to(self, path: str | Path) -> bool:
+        """Write the program to `path` atomically; a file that failed to parse is kept."""
+        path = Path(path)
+        if self.pages.currentWidget() is self.text_view:
+            if self.failed_path is not None and path.resolve() == self.failed_path.resolve():
+                QMessageBox.warning(self, _t("Save"), _t(
+                    "{0} did not parse and is not overwritten. Fix the errors and use "
+                    "Show as ladder, or save under another name.").format(path.name))
+                return False
+            text = self.text_view.toPlainText()
+            if not text.endswith("\n"):
+                text += "\n"
+        else:
+            maybe = self.program_text()
+            if maybe is None:
+                QMessageBox.warning(self, _t("Save"), _t(
+                    "The ladder cannot be written as a program; see the error list."))
+                return False
+            text = maybe
+        try:
+            atomic_write(path, text, self.encoding)
+        except OSError as error:
+            QMessageBox.warning(self, _t("Save"), _t("Cannot write {0}: {1}").format(
+                path, error.strerror or str(error)))
+            return False
+        self.path = path
+        self.editor.undo_stack.setClean()
+        self.text_view.document().setModified(False)
+        self._remember(path)
+        self._update_title()
+        self._show_message(_t("Saved {0}").format(path.name))
+        self.file_saved.emit(str(path))
+        return True
+
+    def save_as_dialog(self) -> bool:
+        """File > Save As."""
+        name, _ = QFileDialog.getSaveFileName(
+            self, _t("Save program"), str(self.path or "program.LAD"),
+            _t("Ladder programs (*.LAD *.lad);;All files (*)"))
+        return bool(name) and self.save_to(name)
+
+    def import_mod_dialog(self) -> None:
+        """File > Import .MOD: open mnemonic text as a new, untitled ladder."""
+        if not self.maybe_save():
+            return
+        name, _ = QFileDialog.getOpenFileName(
+            self, _t("Import .MOD"), "", _t("Mnemonic programs (*.MOD *.mod);;All files (*)"))
+        if name:
+            self.import_mod(name)
+
+    def import_mod(self, path: str | Path) -> bool:
+        """Read a `.MOD` file into the editor; it is saved as a new `.LAD`."""
+        if not self.load(path):
+            return False
+        self.path = None
+        self.failed_path = None
+        self._update_title()
+        return True
+
+    def export_mod_dialog(self) -> None:
+        """File > Export .MOD."""
+        base = self.path.with_suffix(".MOD") if self.path else Path("program.MOD")
+        name, _ = QFileDialog.getSaveFileName(
+            self, _t("Export .MOD"), str(base), _t("Mnemonic programs (*.MOD);;All files (*)"))
+        if name:
+            self.export_mod(name)
+
+    def export_mod(self, path: str | Path) -> bool:
+        """Write the program as mnemonic text to `path`."""
+        text = self.program_text()
+        if text is None:
+            return False
+        atomic_write(path, text, self.encoding)
+        self._show_message(_t("Exported {0}").format(Path(path).name))
+        return True
+
+    def _remember(self, path: Path) -> None:
+        self.settings.add_recent_file(str(path))
+        self._update_recent_menu()
+
+    def _update_recent_menu(self) -> None:
+        self.recent_menu.clear()
+        files = self.settings.recent_files()
+        for action, name in zip(self.recent_actions, files, strict=False):
+            action.setText(name)
+            action.setData(name)
+            self.recent_menu.addAction(action)
+        self.recent_menu.addSeparator()
+        self.recent_menu.addAction(self.actions_by_name["action_clear_recent"])
+        self.recent_menu.setEnabled(True)
+
+    def _open_recent(self, index: int) -> None:
+        files = self.settings.recent_files()
+        if index < len(files) and self.maybe_save():
+            self.load(files[index])
+
+    def _clear_recent(self) -> None:
+        self.settings.clear_recent_files()
+        self._update_recent_menu()
+
+    def show_as_text(self) -> None:
+        """Show the program as instruction-list text."""
+        if self.pages.currentWidget() is self.text_view:
+            return
+        text = self.program_text()
+        if text is None:
+            return
+        self.text_view.setPlainText(text)
+        self.text_view.document().setModified(False)
+        self.pages.setCurrentWidget(self.text_view)
+
+    def show_as_ladder(self) -> bool:
+        """Parse the text view and show it as ladder; errors stay in the text view."""
+        if self.pages.currentWidget() is not self.text_view:
+            return True
+        from ladderworks.core.il import parse
+
+        modified = self.text_view.document().isModified()
+        result = parse(self.text_view.toPlainText())
+        self.errors.set_diagnostics(result.diagnostics)
+        if not result.ok:
+            self.errors.show()
+            return False
+        self.failed_path = None
+        ladder = self.editor.set_program(result.program)
+        if ladder:
+            self.errors.set_diagnostics(ladder)
+        self.pages.setCurrentWidget(self.editor)
+        if modified:
+            self.editor.mark_modified()
+        self._update_title()
+        return True
+
+    # -- PLC -----------------------------------------------------------------------------
+
+    def check(self) -> list[Diagnostic]:
+        """Check the program (grid and text rules) and list the diagnostics."""
+        if not self.show_as_ladder():
+            return self.errors.diagnostics()
+        program, diagnostics = self.editor.program()
+        if program is not None:
+            diagnostics = diagnostics + compile_step.check(program)
+        self.errors.set_diagnostics(diagnostics)
+        self.errors.show()
+        self._show_message(_t("Check: {0} error(s)").format(
+            sum(1 for d in diagnostics if d.is_error)))
+        return diagnostics
+
+    def compile(self) -> bytes | None:
+        """PLC > Compile: the binary PLC program, or None with the errors listed."""
+        if not self.show_as_ladder():
+            return None
+        program, diagnostics = self.editor.program()
+        binary: bytes | None = None
+        if program is not None and not has_errors(diagnostics):
+            binary, more = compile_step.compile_program(program)
+            diagnostics = diagnostics + more
+        self.errors.set_diagnostics(diagnostics)
+        if binary is None:
+            self.errors.show()
+            self._show_message(_t("Compile failed: {0} error(s)").format(
+                sum(1 for d in diagnostics if d.is_error)))
+        else:
+            self._show_message(_t("Compile finished: {0} bytes").format(len(binary)))
+        return binary
+
+    def go_to_diagnostic(self, diagnostic: Diagnostic) -> None:
+        """Jump to the diagnostic's cell in the ladder, or its line in the text view."""
+        if self.pages.currentWidget() is self.text_view or (
+                diagnostic.network is None and diagnostic.line):
+            if self.pages.currentWidget() is not self.text_view:
+                self.show_as_text()
+            self.text_view.go_to(diagnostic.line, diagnostic.column)
+            return
+        self.editor.go_to(diagnostic)
+
+    # -- help and closing ----------------------------------------------------------------
+
+    def about(self) -> None:
+        """Help > About."""
+        QMessageBox.about(self, _t("About LadderWorks"), _t(
+            "LadderWorks: ladder (FANUC PMC style) programming for CNC machines."))
+
+    def closeEvent(self, event: QCloseEvent) -> None:
+        """Ask about unsaved changes; remember the window layout."""
+        if not self.maybe_save():
+            event.ignore()
+            return
+        self.settings.set_window_state(self.saveGeometry(), self.saveState())
+        event.accept()

@@ -1,0 +1,86 @@
+"""The tool palette dock (the manual's main tool bag): tool buttons and the function list."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication, QEvent, QLocale, QSize, Qt, Signal
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import (
+    QComboBox,
+    QDockWidget,
+    QLabel,
+    QSizePolicy,
+    QToolButton,
+    QVBoxLayout,
+    QWidget,
+)
+
+from ladderworks.core.instructions import MANUAL_ORDER, lookup
+
+
+class ToolPalette(QDockWidget):
+    """A dock with one button per tool action and the drop-down of functional instructions."""
+
+    function_chosen = Signal(str)  # instruction name
+
+    def __init__(self, actions: list[QAction], parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("dock_palette")
+        body = QWidget(self)
+        layout = QVBoxLayout(body)
+        layout.setContentsMargins(4, 4, 4, 4)
+        layout.setSpacing(2)
+        self.buttons: list[QToolButton] = []
+        for action in actions:
+            button = QToolButton(body)
+            button.setObjectName("button_" + action.objectName())
+            button.setDefaultAction(action)
+            button.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextBesideIcon)
+            button.setIconSize(QSize(24, 24))
+            button.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Fixed)
+            button.setAutoRaise(True)
+            layout.addWidget(button)
+            self.buttons.append(button)
+        self._function_label = QLabel(body)
+        layout.addSpacing(6)
+        layout.addWidget(self._function_label)
+        self.functions = QComboBox(body)
+        self.functions.setObjectName("function_combo")
+        for name in MANUAL_ORDER:
+            self.functions.addItem(name, name)
+        self.functions.currentIndexChanged.connect(self._on_function)
+        layout.addWidget(self.functions)
+        layout.addStretch(1)
+        self.setWidget(body)
+        self.retranslate()
+
+    def current_function(self) -> str:
+        """The instruction name chosen in the drop-down."""
+        return str(self.functions.currentData())
+
+    def set_function(self, name: str) -> None:
+        """Choose `name` in the drop-down."""
+        index = self.functions.findData(name)
+        if index < 0:
+            raise KeyError(name)
+        self.functions.setCurrentIndex(index)
+
+    def _on_function(self, _index: int) -> None:
+        self.function_chosen.emit(self.current_function())
+
+    def retranslate(self) -> None:
+        """Set the texts in the current UI language."""
+        self.setWindowTitle(QCoreApplication.translate("ToolPalette", "Tools"))
+        self._function_label.setText(QCoreApplication.translate("ToolPalette", "Function:"))
+        turkish = QLocale().language() == QLocale.Language.Turkish
+        for index in range(self.functions.count()):
+            spec = lookup(str(self.functions.itemData(index)))
+            assert spec is not None
+            title = spec.title_tr if turkish else spec.title
+            self.functions.setItemText(index, f"{spec.name} — {title}")
+            self.functions.setItemData(index, title, Qt.ItemDataRole.ToolTipRole)
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate on a language change."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)

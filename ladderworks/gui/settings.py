@@ -1,0 +1,64 @@
+"""The user's settings (language, recent files, window layout) over QSettings, with defaults."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QByteArray, QSettings
+
+MAX_RECENT = 8
+LANGUAGES: tuple[str, ...] = ("en", "tr")
+
+
+class Settings:
+    """Typed access to the QSettings store; tests pass a QSettings on a temporary file."""
+
+    def __init__(self, store: QSettings | None = None) -> None:
+        self._store = store if store is not None else QSettings("LadderWorks", "LadderWorks")
+
+    @property
+    def store(self) -> QSettings:
+        """The underlying QSettings."""
+        return self._store
+
+    def language(self) -> str | None:
+        """The chosen UI language ('en' / 'tr'), or None before the user ever chose one."""
+        value = self._store.value("ui/language", None)
+        return str(value) if value in LANGUAGES else None
+
+    def set_language(self, language: str) -> None:
+        """Remember the UI language."""
+        self._store.setValue("ui/language", language)
+        self._store.sync()
+
+    def recent_files(self) -> list[str]:
+        """Recently opened or saved files, newest first."""
+        value = self._store.value("files/recent", [])
+        if isinstance(value, str):
+            return [value] if value else []
+        return [str(item) for item in (value or [])]
+
+    def add_recent_file(self, path: str) -> list[str]:
+        """Put `path` first in the recent list and return the list."""
+        files = [path, *(item for item in self.recent_files() if item != path)][:MAX_RECENT]
+        self._store.setValue("files/recent", files)
+        self._store.sync()
+        return files
+
+    def clear_recent_files(self) -> None:
+        """Forget the recent files."""
+        self._store.setValue("files/recent", [])
+        self._store.sync()
+
+    def window_state(self) -> tuple[QByteArray | None, QByteArray | None]:
+        """Saved (geometry, dock state) of the main window."""
+        geometry = self._store.value("window/geometry", None)
+        state = self._store.value("window/state", None)
+        return (
+            geometry if isinstance(geometry, QByteArray) else None,
+            state if isinstance(state, QByteArray) else None,
+        )
+
+    def set_window_state(self, geometry: QByteArray, state: QByteArray) -> None:
+        """Remember the main window's geometry and dock layout."""
+        self._store.setValue("window/geometry", geometry)
+        self._store.setValue("window/state", state)
+        self._store.sync()

@@ -1,0 +1,136 @@
+"""UI languages: build `.qm` files from the committed `.ts` at start-up and switch live."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import PySide6
+from PySide6.QtCore import (
+    QCoreApplication,
+    QLibraryInfo,
+    QLocale,
+    QStandardPaths,
+    QTranslator,
+)
+
+from ladderworks.gui.settings import LANGUAGES
+from ladderworks.paths import TRANSLATIONS
+
+
+def system_language() -> str:
+    """'tr' when the system locale is Turkish, else 'en'."""
+    return "tr" if QLocale.system().language() == QLocale.Language.Turkish else "en"
+
+
+def ts_file(language: str) -> Path:
+    """The committed translation source for `language`."""
+    return TRANSLATIONS / f"ladderworks_{language}.ts"
+
+
+def lrelease_program() -> str | None:
+    """The lrelease that ships with PySide6 (or one on PATH)."""
+    bundled = Path(PySide6.__file__).parent / "lrelease"
+    if bundled.exists():
+        return str(bundled)
+    return shutil.which("pyside6-lrelease") or shutil.which("lrelease")
+
+
+def cache_dir() -> Path:
+    """Where built `.qm` files are kept."""
+    base = QStandardPaths.writableLocation(QStandardPaths.StandardLocation.CacheLocation)
+    return Path(base or Path.home() / ".cache" / "ladderworks") / "translations"
+
+
+def build_qm(language: str, target_dir: Path | None = None) -> Path | None:
+    """The `.qm` for `language`, (re)built with lrelease when missing or older than the `.ts`."""
+    source = ts_file(language)
+    if not source.exists():
+        return None
+    shipped = TRANSLATIONS / f"ladderworks_{language}.qm"
+    if shipped.exists() and shipped.stat().st_mtime >= source.stat().st_mtime:
+        return shipped
+    directory = target_dir or cache_dir()
+    target = directory / f"ladderworks_{language}.qm"
+    if target.exists() and target.stat().st_mtime >= source.stat().st_mtime:
+        return target
+    program = lrelease_program()
+    if program is None:
+        return None
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+        subprocess.run(
+            [program, "-silent", str(source), "-qm", str(target)],
+            check=True, capture_output=True, timeout=60,
+        )
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return target if target.exists() else None
+
+
+class TsTranslator(QTranslator):
+    """A translator read straight from a `.ts` file: the fallback when lrelease is missing."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__()
+        self._table: dict[tuple[str, str], str] = {}
+        root = ET.parse(path).getroot()
+        for context in root.iter("context"):
+            name = context.findtext("name") or ""
+            for message in context.iter("message"):
+                source = message.findtext("source") or ""
+                node = message.find("translation")
+                if node is None or node.get("type") in ("unfinished", "vanished", "obsolete"):
+                    continue
+                if node.text:
+                    self._table[(name, source)] = node.text
+
+    def translate(
+        self, context: str, source: str, disambiguation: str | None = None, n: int = -1
+    ) -> str:
+        return self._table.get((context, source), "")
+
+    def isEmpty(self) -> bool:
+        return not self._table
+
+
+class UiLanguage:
+    """The installed translators; `apply` switches the language (Qt sends LanguageChange)."""
+
+    def __init__(self) -> None:
+        self._translators: list[QTranslator] = []
+        self.current = "en"
+
+    def apply(self, language: str) -> str:
+        """Install the translators for `language` ('en' / 'tr'); returns the language applied."""
+        if language not in LANGUAGES:
+            language = "en"
+        app = QCoreApplication.instance()
+        for translator in self._translators:
+            app.removeTranslator(translator)
+        self._translators = []
+        app_translator = self._app_translator(language)
+        if app_translator is not None:
+            self._translators.append(app_translator)
+        qt_translator = QTranslator()
+        qt_dir = QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)
+        if language != "en" and qt_translator.load(f"qtbase_{language}", qt_dir):
+            self._translators.append(qt_translator)
+        for translator in self._translators:
+            app.installTranslator(translator)
+        QLocale.setDefault(QLocale(QLocale.Language.Turkish if language == "tr"
+                                   else QLocale.Language.English))
+        self.current = language
+        return language
+
+    @staticmethod
+    def _app_translator(language: str) -> QTranslator | None:
+        qm = build_qm(language)
+        if qm is not None:
+            translator = QTranslator()
+            if translator.load(str(qm)):
+                return translator
+        source = ts_file(language)
+        return TsTranslator(source) if source.exists() else None
