@@ -7,7 +7,9 @@ from collections.abc import Iterable
 from typing import Any
 
 from ladderworks.core.address import Address, Area
+from ladderworks.core.compiler import check, disassemble
 from ladderworks.core.compiler.binary import BinaryProgram, SourcePosition, decode
+from ladderworks.core.diagnostics import DiagnosticError
 from ladderworks.core.plc.codegen import GeneratedScan, generate
 from ladderworks.core.plc.forcing import ForceEntry, ForceTable
 from ladderworks.core.plc.functions import FunctionContext, load_all
@@ -25,6 +27,16 @@ CLEARED_AREAS: tuple[Area, ...] = (Area.Y, Area.G, Area.R, Area.A)
 SYSTEM_RELAY = 9091
 
 
+def load_binary(data: bytes) -> BinaryProgram:
+    """Decode a binary and re-run the compile checks on it (a hand-made or damaged file
+    cannot reach the scan); raises DiagnosticError (BinaryFormatError for a bad file)."""
+    binary = decode(data)
+    errors = [d for d in check(disassemble(data)) if d.is_error]
+    if errors:
+        raise DiagnosticError(errors)
+    return binary
+
+
 class ScanEngine:
     """Runs a compiled binary: one `scan()` is the program once, top to bottom.
 
@@ -38,7 +50,7 @@ class ScanEngine:
                  memory: Memory | None = None) -> None:
         if period_ms <= 0:
             raise ValueError("the scan period must be at least 1 ms")
-        self.program = binary if isinstance(binary, BinaryProgram) else decode(binary)
+        self.program = binary if isinstance(binary, BinaryProgram) else load_binary(binary)
         self.memory = memory if memory is not None else Memory()
         self.period_ms = period_ms
         self.now_ms = 0

@@ -1,0 +1,149 @@
+"""The binary format: round trips, the source map, and clear errors for bad files."""
+
+from __future__ import annotations
+
+import struct
+import zlib
+from pathlib import Path
+
+import pytest
+
+from ladderworks.core.compiler import (
+    BinaryFormatError,
+    compile,
+    decode,
+    disassemble,
+)
+from ladderworks.core.compiler.binary import HEADER_SIZE, MAGIC
+from ladderworks.core.diagnostics import DiagnosticError
+from ladderworks.core.il import parse, parse_file, print_program
+from ladderworks.core.plc.engine import ScanEngine
+
+EXAMPLES = sorted((Path(__file__).resolve().parents[3] / "resources" / "examples").glob("*.LAD"))
+
+MIXED = """%@3
+RD X0.0
+AND.NOT R1.2
+RD.STK F3.4
+OR.STK
+WRT Y0.0
+RD R0.0
+TMR 7
+WRT R0.1
+RD R0.0
+RD.STK R0.1
+RD.STK R0.2
+RD.STK R0.3
+CTR 20
+WRT R0.4
+RD R1.0
+TMRC 1 D10 D20
+WRT R1.1
+RD R2.0
+RD.STK R2.2
+CODB 2 3 D0 D2 -5 0 70000
+WRT R2.1
+%
+"""
+
+
+def test_examples_exist() -> None:
+    assert len(EXAMPLES) >= 9
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
+def test_compile_disassemble_compile_gives_identical_bytes(path: Path) -> None:
+    program = parse_file(path).program
+    binary = compile(program)
+    again = compile(disassemble(binary))
+    assert again == binary
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
+def test_disassembly_is_the_program_without_its_comments(path: Path) -> None:
+    program = parse_file(path).program
+    back = disassemble(compile(program))
+    assert [[(i.name, i.operand, i.params, i.line) for i in n.instructions]
+            for n in back.networks] == [
+        [(i.name, i.operand, i.params, i.line) for i in n.instructions]
+        for n in program.networks]
+
+
+def test_functions_and_their_parameters_round_trip() -> None:
+    program = parse(MIXED).program
+    binary = compile(program)
+    back = disassemble(binary)
+    assert compile(back) == binary
+    text = print_program(back)
+    assert "CODB 2 3 D0 D2 -5 0 70000" in text
+    assert "TMRC 1 D10 D20" in text
+
+
+def test_source_map_points_at_network_instruction_and_line() -> None:
+    binary = decode(compile(parse(MIXED).program))
+    assert [(op.name, op.source.network, op.source.instruction, op.source.line)
+            for op in binary.ops[:8]] == [
+        ("RD", 0, 0, 2), ("AND.NOT", 0, 1, 3), ("RD.STK", 0, 2, 4), ("OR.STK", 0, 3, 5),
+        ("WRT", 0, 4, 6), ("RD", 1, 0, 7), ("TMR", 1, 1, 8), ("WRT", 1, 2, 9)]
+    assert binary.op_at_line(8) == 6
+
+
+def test_header_holds_magic_version_and_checksum() -> None:
+    data = compile(parse(MIXED).program)
+    magic, version, header_size, count, _params, crc = struct.unpack_from("<4sHHIII", data)
+    assert (magic, version, header_size, count) == (MAGIC, 1, HEADER_SIZE, 21)
+    assert crc == zlib.crc32(data[HEADER_SIZE:])
+
+
+def reason(data: bytes) -> str:
+    with pytest.raises(BinaryFormatError) as info:
+        disassemble(data)
+    diagnostic = info.value.diagnostics[0]
+    assert diagnostic.code == "bad-binary"
+    return str(diagnostic.args["reason"])
+
+
+def test_a_flipped_byte_is_caught_by_the_checksum() -> None:
+    data = bytearray(compile(parse(MIXED).program))
+    data[HEADER_SIZE + 5] ^= 0x40
+    assert "checksum" in reason(bytes(data))
+
+
+def test_foreign_files_are_refused_clearly() -> None:
+    assert "magic" in reason(b"%@3\nRD X0.0\nWRT Y0.0\n%\n" + bytes(20))
+    assert "too short" in reason(b"LWP")
+    assert "too short" in reason(b"")
+
+
+def test_truncated_file_is_refused() -> None:
+    data = compile(parse(MIXED).program)
+    assert "length" in reason(data[:-3])
+
+
+def test_newer_version_is_refused() -> None:
+    data = bytearray(compile(parse(MIXED).program))
+    data[4:6] = (2).to_bytes(2, "little")
+    assert "version 2" in reason(bytes(data))
+
+
+def test_bad_opcode_with_a_valid_checksum_is_refused() -> None:
+    data = bytearray(compile(parse(MIXED).program))
+    data[HEADER_SIZE] = 0x55
+    data[16:20] = zlib.crc32(bytes(data[HEADER_SIZE:])).to_bytes(4, "little")
+    assert "unknown opcode 85" in reason(bytes(data))
+
+
+def test_random_damage_with_a_valid_checksum_never_crashes_the_engine() -> None:
+    import random
+
+    rng = random.Random(4)
+    good = compile(parse(MIXED).program)
+    for _ in range(300):
+        data = bytearray(good)
+        for _ in range(rng.randint(1, 4)):
+            data[rng.randrange(len(data))] = rng.randrange(256)
+        data[16:20] = zlib.crc32(bytes(data[HEADER_SIZE:])).to_bytes(4, "little")
+        try:
+            ScanEngine(bytes(data)).run_scans(3)
+        except DiagnosticError as error:  # BinaryFormatError or a failed check
+            assert error.diagnostics
