@@ -58,7 +58,7 @@ MESSAGES: dict[str, str] = {
     "no-address": "this element has no address yet",
     "coil-branch": "coils hang on different points of the logic; join them to one point",
     "box-output": "only coils may follow the output of {name}",
-    "box-params": "{name}: {problem}",
+    "box-twice": "one function box per network: put {name} in a network of its own",
     # ladder edits (refused edits; nothing was changed)
     "edit-outside": "cell ({row}, {col}) is outside the grid",
     "edit-coil-column": "only coils go in the coil column (cell ({row}, {col}))",

@@ -1,0 +1,329 @@
+"""Grid → program: decompose a drawn network into series/parallel blocks and code it."""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass
+
+from ladderworks.core.diagnostics import Diagnostic, has_errors
+from ladderworks.core.il.program import Instruction
+from ladderworks.core.ladder.logic import (
+    MAX_PUSHES,
+    Leaf,
+    Logic,
+    Parallel,
+    Rung,
+    Undrawable,
+    code_logic,
+    code_rung,
+    first_cell,
+    parallel,
+    read_rung,
+    series,
+)
+from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork, Wire
+
+
+@dataclass(slots=True)
+class _Edge:
+    """A contact (or a reduced block) between two nets, power flowing src → dst."""
+
+    src: int
+    dst: int
+    logic: Logic
+    cell: Cell
+
+
+class _Nets:
+    """Union-find over grid nodes: wires and vertical links join nodes into nets."""
+
+    def __init__(self, network: LadderNetwork) -> None:
+        self.width = network.columns + 1
+        self.parent = list(range(network.rows * self.width))
+        for r in range(1, network.rows):
+            self.union((0, 0), (r, 0))
+        for (r, c), element in network.cells.items():
+            if isinstance(element, Wire) and c < network.columns and r < network.rows:
+                self.union((r, c), (r, c + 1))
+        for r, k in network.links:
+            if r + 1 < network.rows and 0 <= k <= network.columns:
+                self.union((r, k), (r + 1, k))
+
+    def _find(self, i: int) -> int:
+        while self.parent[i] != i:
+            self.parent[i] = self.parent[self.parent[i]]
+            i = self.parent[i]
+        return i
+
+    def union(self, a: Cell, b: Cell) -> None:
+        """Join the nets of two nodes."""
+        ra, rb = self.net(a), self.net(b)
+        if ra != rb:
+            self.parent[max(ra, rb)] = min(ra, rb)
+
+    def net(self, node: Cell) -> int:
+        """The net of node (row, k)."""
+        return self._find(node[0] * self.width + node[1])
+
+
+def _reach(start: set[int], edges: list[_Edge], forward: bool) -> set[int]:
+    seen = set(start)
+    todo = list(start)
+    nxt: dict[int, list[int]] = defaultdict(list)
+    for e in edges:
+        a, b = (e.src, e.dst) if forward else (e.dst, e.src)
+        nxt[a].append(b)
+    while todo:
+        n = todo.pop()
+        for m in nxt[n]:
+            if m not in seen:
+                seen.add(m)
+                todo.append(m)
+    return seen
+
+
+def _joined(a: int, goal: set[int], edges: list[_Edge], skip: _Edge) -> bool:
+    """True when net `a` reaches `goal` through other elements in either direction."""
+    others = [e for e in edges if e is not skip]
+    both = others + [_Edge(e.dst, e.src, e.logic, e.cell) for e in others]
+    return bool(_reach({a}, both, True) & goal)
+
+
+def _reduce(edges: list[_Edge], left: int, target: int) -> Logic | _Edge:
+    """Series/parallel reduction between the rail and a target net; returns the block, or an
+    element of what is left when the circuit is not series/parallel (a bridge)."""
+    edges = list(edges)
+    changed = True
+    while changed and edges:
+        changed = False
+        groups: dict[tuple[int, int], list[_Edge]] = defaultdict(list)
+        for e in edges:
+            groups[(e.src, e.dst)].append(e)
+        for (src, dst), group in groups.items():
+            if len(group) > 1:
+                logic = group[0].logic
+                for e in group[1:]:
+                    logic = parallel(logic, e.logic)
+                assert isinstance(logic, Parallel)
+                logic = Parallel(tuple(sorted(logic.items, key=first_cell)))
+                cell = min(e.cell for e in group)
+                edges = [e for e in edges if e not in group] + [_Edge(src, dst, logic, cell)]
+                changed = True
+        ins: dict[int, list[_Edge]] = defaultdict(list)
+        outs: dict[int, list[_Edge]] = defaultdict(list)
+        for e in edges:
+            ins[e.dst].append(e)
+            outs[e.src].append(e)
+        for n in list(ins):
+            if n in (left, target) or len(ins[n]) != 1 or len(outs[n]) != 1:
+                continue
+            a, b = ins[n][0], outs[n][0]
+            if a is b or a not in edges or b not in edges:
+                continue
+            edges = [e for e in edges if e is not a and e is not b]
+            edges.append(_Edge(a.src, b.dst, series(a.logic, b.logic), min(a.cell, b.cell)))
+            changed = True
+    if len(edges) == 1 and edges[0].src == left and edges[0].dst == target:
+        return edges[0].logic
+    inner = [e for e in edges if e.src not in (left, target) and e.dst not in (left, target)]
+    return min(inner or edges, key=lambda e: e.cell)
+
+
+def read_grid(network: LadderNetwork, index: int | None = None
+              ) -> tuple[Rung | None, list[Diagnostic]]:
+    """The network's meaning, or None with diagnostics at the cells (None, [] when empty)."""
+    diags: list[Diagnostic] = []
+
+    def report(code: str, cell: Cell, **args: object) -> None:
+        diags.append(Diagnostic(code, dict(args), network=index, cell=cell))
+
+    nets = _Nets(network)
+    left = nets.net((0, 0))
+    edges: list[_Edge] = []
+    coils: list[tuple[Cell, Coil, int]] = []
+    boxes: list[tuple[Cell, FunctionBox]] = []
+    for (r, c), element in network.elements():
+        if isinstance(element, Contact | Coil) and element.address is None:
+            report("no-address", (r, c))
+        if isinstance(element, Contact):
+            src, dst = nets.net((r, c)), nets.net((r, c + 1))
+            if src == dst:
+                report("short-circuit", (r, c))
+            else:
+                edges.append(_Edge(src, dst, Leaf(element, (r, c)), (r, c)))
+        elif isinstance(element, Coil):
+            if c != network.coil_column:
+                report("coil-not-right", (r, c))
+            coils.append(((r, c), element, nets.net((r, c))))
+        elif isinstance(element, FunctionBox):
+            boxes.append(((r, c), element))
+    if not coils and not boxes:
+        if network.cells:
+            report("empty-network", min(network.cells))
+        return None, diags
+    if len(boxes) > 1:
+        report("box-twice", boxes[1][0], name=boxes[1][1].name)
+        return None, diags
+
+    box_anchor, box = boxes[0] if boxes else ((0, 0), None)
+    targets: list[int] = []
+    output: int | None = None
+    if box is not None:
+        br, bc = box_anchor
+        problems = _box_param_problems(box)
+        for problem in problems:
+            report(problem.code, box_anchor, **problem.args)
+        targets = [nets.net((br + p, bc)) for p in box.pins]
+        if box.has_output and bc + box.width <= network.columns:
+            output = nets.net((br, bc + box.width))
+        for cell, _, net in coils:
+            if output is None:
+                report("box-output", cell, name=box.name)
+            elif net != output:
+                report("coil-branch", cell)
+        for i, target in enumerate(targets):
+            if target == left:
+                report("short-circuit", (br + box.pins[i], bc))
+            if target in targets[:i]:
+                report("short-circuit", (br + box.pins[i], bc))
+        if output is not None:
+            after = _reach({output}, edges, True)
+            for e in edges:
+                if e.src in after:
+                    report("box-output", e.cell, name=box.name)
+            edges = [e for e in edges if e.src not in after]
+    else:
+        coils.sort(key=lambda item: item[0])
+        targets = [coils[0][2]]
+        for cell, _, net in coils:
+            if net == left:
+                report("coil-on-rail", cell)
+            elif net != targets[0]:
+                report("coil-branch", cell)
+
+    fed = _reach({left}, edges, True)
+    feeding = _reach(set(targets), edges, False)
+    goal = set(targets)
+    for e in edges:
+        if e.src not in fed:
+            code = "reverse-flow" if _joined(e.src, {left}, edges, e) else "not-connected"
+            report(code, e.cell)
+        elif e.dst not in feeding:
+            code = "reverse-flow" if _joined(e.dst, goal, edges, e) else "open-circuit"
+            report(code, e.cell)
+    if box is None:
+        if targets[0] != left and targets[0] not in fed:
+            report("not-connected", coils[0][0])
+    else:
+        missing = [t for t in targets if t not in fed or t == left]
+        if missing:
+            report("box-inputs", box_anchor, name=box.name, count=len(box.pins))
+    if has_errors(diags):
+        return None, diags
+
+    useful = [e for e in edges if e.src in fed and e.dst in feeding]
+    cycle = _cycle_edge(useful)
+    if cycle is not None:
+        report("reverse-flow", cycle.cell)
+        return None, diags
+    blocks: list[Logic] = []
+    owner: dict[int, int] = {}
+    for i, target in enumerate(targets):
+        part = [e for e in useful if e.dst in _reach({target}, useful, False)]
+        for e in part:
+            if id(e) in owner:
+                report("bridge", e.cell)
+                return None, diags
+            owner[id(e)] = i
+        result = _reduce(part, left, target)
+        if isinstance(result, _Edge):
+            report("bridge", result.cell)
+            return None, diags
+        blocks.append(result)
+    rung = Rung()
+    if box is not None:
+        rung.box = box
+        rung.inputs = blocks
+    else:
+        rung.logic = blocks[0]
+    rung.coils = [coil for _, coil, _ in coils] if box is None else [
+        coil for _, coil, _ in sorted(coils, key=lambda item: item[0])]
+    _check_depth(rung, report)
+    if has_errors(diags):
+        return None, diags
+    return rung, diags
+
+
+def _box_param_problems(box: FunctionBox) -> list[Diagnostic]:
+    """The parser's complaints about a box's parameters (count, kinds, ranges)."""
+    from ladderworks.core.il.printer import print_instruction
+    from ladderworks.core.ladder.edits import function_params
+
+    words = print_instruction(Instruction(box.name, params=box.params)).split()
+    return function_params(box.name, words[1:])[1]
+
+
+def _cycle_edge(edges: list[_Edge]) -> _Edge | None:
+    """An element on a loop (power would have to flow back to the left), or None."""
+    outs: dict[int, list[_Edge]] = defaultdict(list)
+    for e in edges:
+        outs[e.src].append(e)
+    state: dict[int, int] = {}
+
+    def visit(n: int) -> _Edge | None:
+        state[n] = 1
+        for e in outs[n]:
+            if state.get(e.dst) == 1:
+                return e
+            if e.dst not in state:
+                found = visit(e.dst)
+                if found is not None:
+                    return found
+        state[n] = 2
+        return None
+
+    for e in sorted(edges, key=lambda e: e.cell):
+        if e.src not in state:
+            found = visit(e.src)
+            if found is not None:
+                return found
+    return None
+
+
+def _check_depth(rung: Rung, report: object) -> None:
+    cells: list[Cell | None] = []
+    code: list[Instruction] = []
+    if rung.box is not None:
+        for i, logic in enumerate(rung.inputs):
+            code.extend(code_logic(logic, i > 0, cells))
+    elif rung.logic is not None:
+        code.extend(code_logic(rung.logic, False, cells))
+    depth = 0
+    for ins, cell in zip(code, cells, strict=True):
+        depth += ins.spec.pushes
+        if depth > MAX_PUSHES:
+            report("stack-depth", cell or (0, 0))  # type: ignore[operator]
+            return
+
+
+def network_to_instructions(network: LadderNetwork, index: int | None = None
+                            ) -> tuple[list[Instruction] | None, list[Diagnostic]]:
+    """The instruction list of a drawn network, or None with the diagnostics at the cells.
+
+    A network kept as a listing gives its listing; a network read from text whose drawing still
+    means exactly the same gives its original coding back."""
+    if network.listing is not None:
+        return list(network.listing), []
+    rung, diags = read_grid(network, index)
+    if rung is None:
+        return None, diags
+    code = code_rung(rung)
+    if network.source is not None:
+        try:
+            original = code_rung(read_rung(network.source))
+        except Undrawable:
+            original = None
+        if original == code:
+            return list(network.source), diags
+    return code, diags
+

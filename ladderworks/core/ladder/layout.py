@@ -1,0 +1,125 @@
+"""Program → grid: lay a network's instructions out as a technician would draw them."""
+
+from __future__ import annotations
+
+from ladderworks.core.il.program import Instruction
+from ladderworks.core.ladder.logic import (
+    Leaf,
+    Logic,
+    Rung,
+    Series,
+    Undrawable,
+    code_rung,
+    read_rung,
+)
+from ladderworks.core.ladder.model import (
+    BOX_WIDTH,
+    DEFAULT_COLUMNS,
+    MAX_COLUMNS,
+    MAX_ROWS,
+    WIRE,
+    FunctionBox,
+    LadderNetwork,
+)
+
+
+def size(logic: Logic) -> tuple[int, int]:
+    """(columns, rows) a block needs: series side by side, parallel branches stacked."""
+    if isinstance(logic, Leaf):
+        return 1, 1
+    sizes = [size(item) for item in logic.items]
+    if isinstance(logic, Series):
+        return sum(w for w, _ in sizes), max(h for _, h in sizes)
+    return max(w for w, _ in sizes), sum(h for _, h in sizes)
+
+
+def place_logic(net: LadderNetwork, logic: Logic, row: int, col: int) -> None:
+    """Draw a block with its entry at node (row, col) and its exit at (row, col + width)."""
+    if isinstance(logic, Leaf):
+        net.cells[(row, col)] = logic.contact
+        return
+    if isinstance(logic, Series):
+        for item in logic.items:
+            place_logic(net, item, row, col)
+            col += size(item)[0]
+        return
+    width = size(logic)[0]
+    top = row
+    last = row
+    for item in logic.items:
+        w, h = size(item)
+        place_logic(net, item, row, col)
+        for c in range(col + w, col + width):  # a shorter branch runs on as a wire
+            net.cells[(row, c)] = WIRE
+        last = row
+        row += h
+    for r in range(top, last):
+        if col:  # node 0 is the left rail: it needs no link
+            net.links.add((r, col))
+        net.links.add((r, col + width))
+
+
+def draw_rung(rung: Rung, columns: int = DEFAULT_COLUMNS) -> LadderNetwork:
+    """The natural picture of a network: logic from the left rail, coils right-aligned in the
+    coil column (parallel coils below each other), a function box right-aligned before them
+    with its control inputs' logic on its pin rows. The grid widens when the logic needs it."""
+    if rung.box is not None:
+        box = rung.box
+        sizes = [size(logic) for logic in rung.inputs]
+        if not rung.inputs:  # JMPE, COME, END…: a box on the left rail
+            net = LadderNetwork(columns, 1)
+            net.cells[(0, 0)] = box
+            box_col = 0
+        else:
+            need = max(w for w, _ in sizes) + BOX_WIDTH
+            net = LadderNetwork(max(columns, need), 1)
+            box_col = net.columns - BOX_WIDTH
+            pins: list[int] = []
+            row = 0
+            for logic, (w, h) in zip(rung.inputs, sizes, strict=True):
+                place_logic(net, logic, row, 0)
+                for c in range(w, box_col):
+                    net.cells[(row, c)] = WIRE
+                pins.append(row)
+                row += h
+            height = max(1, row)
+            net.cells[(0, box_col)] = FunctionBox(box.name, box.params, box.comment, box.lead,
+                                                  tuple(pins), height)
+            net.rows = height
+        for c in range(box_col + BOX_WIDTH, net.columns):
+            net.cells[(0, c)] = WIRE
+    else:
+        assert rung.logic is not None
+        w, h = size(rung.logic)
+        net = LadderNetwork(max(columns, w), h)
+        place_logic(net, rung.logic, 0, 0)
+        for c in range(w, net.columns):
+            net.cells[(0, c)] = WIRE
+    for index, coil in enumerate(rung.coils):
+        net.cells[(index, net.coil_column)] = coil
+        if index:
+            net.links.add((index - 1, net.coil_column))
+    net.rows = max(net.rows, len(rung.coils), 1)
+    return net
+
+
+def layout_network(instructions: list[Instruction] | tuple[Instruction, ...],
+                   comments: list[str] | None = None,
+                   columns: int = DEFAULT_COLUMNS) -> LadderNetwork:
+    """The grid for one network's instructions.
+
+    Code with no ladder picture, or too big for the grid, is kept as a listing. Code that is
+    drawable but not in the standard coding (e.g. `RD a / RD.STK b / AND.STK`) is drawn, and
+    its original coding kept in `source` (written back while the drawing means the same)."""
+    comments = list(comments or [])
+    try:
+        rung = read_rung(instructions)
+    except Undrawable:
+        return LadderNetwork(columns, 1, comments=comments, listing=tuple(instructions))
+    net = draw_rung(rung, columns)
+    if net.columns > MAX_COLUMNS or net.rows > MAX_ROWS:
+        return LadderNetwork(columns, 1, comments=comments, listing=tuple(instructions))
+    net.comments = comments
+    if code_rung(rung) != list(instructions):
+        net.source = tuple(instructions)
+    return net

@@ -1,0 +1,196 @@
+"""A network's logic as series/parallel blocks, its standard coding, and reading code back."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ladderworks.core.il.program import Instruction
+from ladderworks.core.instructions import Kind
+from ladderworks.core.ladder.model import Coil, Contact, FunctionBox
+
+MAX_PUSHES = 8  # ST0 plus ST1..ST8: at most eight values pushed under ST0
+
+
+@dataclass(frozen=True, slots=True)
+class Leaf:
+    """One contact."""
+
+    contact: Contact
+    cell: tuple[int, int] | None = field(default=None, compare=False)  # where it is drawn
+
+
+@dataclass(frozen=True, slots=True)
+class Series:
+    """Blocks in series, left to right (never directly holds another Series)."""
+
+    items: tuple[Logic, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Parallel:
+    """Blocks in parallel, top to bottom (never directly holds another Parallel)."""
+
+    items: tuple[Logic, ...]
+
+
+Logic = Leaf | Series | Parallel
+
+
+def series(a: Logic, b: Logic) -> Series:
+    """`a` then `b`, flattened."""
+    left = a.items if isinstance(a, Series) else (a,)
+    right = b.items if isinstance(b, Series) else (b,)
+    return Series(left + right)
+
+
+def parallel(a: Logic, b: Logic) -> Parallel:
+    """`a` over `b`, flattened."""
+    top = a.items if isinstance(a, Parallel) else (a,)
+    bottom = b.items if isinstance(b, Parallel) else (b,)
+    return Parallel(top + bottom)
+
+
+@dataclass(slots=True)
+class Rung:
+    """What a network means: logic feeding coils, or control inputs feeding a function box."""
+
+    logic: Logic | None = None  # the coils' logic (None for a box network)
+    coils: list[Coil] = field(default_factory=list)  # parallel coils, top to bottom (box: on W1)
+    box: FunctionBox | None = None
+    inputs: list[Logic] = field(default_factory=list)  # box control inputs, first to last
+
+
+def _contact_instruction(contact: Contact, op: str, push: bool) -> Instruction:
+    name = op + (".NOT" if contact.negated else "") + (".STK" if push else "")
+    return Instruction(name, contact.address, comment=contact.comment, lead=contact.lead)
+
+
+def code_logic(logic: Logic, push: bool = False,
+               cells: list[tuple[int, int] | None] | None = None) -> list[Instruction]:
+    """The standard coding of a block: RD (RD.STK when `push`), AND/OR for single contacts,
+    RD.STK … AND.STK / OR.STK for blocks (seed 002 rules). `cells`, if given, receives the
+    drawn cell of each instruction (None for stack operations)."""
+    if cells is None:
+        cells = []
+    if isinstance(logic, Leaf):
+        cells.append(logic.cell)
+        return [_contact_instruction(logic.contact, "RD", push)]
+    out = code_logic(logic.items[0], push, cells)
+    op, stack_op = ("AND", "AND.STK") if isinstance(logic, Series) else ("OR", "OR.STK")
+    for item in logic.items[1:]:
+        if isinstance(item, Leaf):
+            cells.append(item.cell)
+            out.append(_contact_instruction(item.contact, op, False))
+        else:
+            out.extend(code_logic(item, True, cells))
+            cells.append(None)
+            out.append(Instruction(stack_op))
+    return out
+
+
+def first_cell(logic: Logic) -> tuple[int, int]:
+    """Top-most, then left-most drawn cell of a block (orders parallel branches)."""
+    if isinstance(logic, Leaf):
+        return logic.cell or (0, 0)
+    return min(first_cell(item) for item in logic.items)
+
+
+def coil_instruction(coil: Coil) -> Instruction:
+    """WRT / WRT.NOT of a coil, with its comments."""
+    return Instruction("WRT.NOT" if coil.negated else "WRT", coil.address,
+                       comment=coil.comment, lead=coil.lead)
+
+
+def box_instruction(box: FunctionBox) -> Instruction:
+    """The functional instruction of a box."""
+    return Instruction(box.name, params=box.params, comment=box.comment, lead=box.lead)
+
+
+def code_rung(rung: Rung) -> list[Instruction]:
+    """The standard coding of a whole network."""
+    out: list[Instruction] = []
+    if rung.box is not None:
+        for index, logic in enumerate(rung.inputs):
+            out.extend(code_logic(logic, push=index > 0))
+        out.append(box_instruction(rung.box))
+    elif rung.logic is not None:
+        out.extend(code_logic(rung.logic))
+    out.extend(coil_instruction(coil) for coil in rung.coils)
+    return out
+
+
+def stack_depth(instructions: list[Instruction]) -> int:
+    """Most values held under ST0 at any point (must be ≤ MAX_PUSHES)."""
+    depth = deepest = 0
+    for ins in instructions:
+        spec = ins.spec
+        if spec.kind is Kind.BASIC:
+            depth += spec.pushes
+        elif spec.inputs:
+            depth = 0
+        deepest = max(deepest, depth)
+    return deepest
+
+
+class Undrawable(Exception):
+    """The instructions have no faithful ladder picture (kept as a listing instead)."""
+
+
+def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung:
+    """The meaning of one network's instructions; Undrawable for code with no ladder picture
+    (unbalanced stack, logic after an output, a function without its control inputs, ...)."""
+    stack: list[Logic] = []
+    rung = Rung()
+    phase = "logic"  # then "coils" after the first WRT / the function
+    for ins in instructions:
+        spec = ins.spec
+        name = ins.name
+        if spec.kind is Kind.BASIC and spec.writes:
+            if phase == "logic":
+                if rung.box is None and len(stack) != 1:
+                    raise Undrawable(name)
+                if rung.box is None:
+                    rung.logic = stack[0]
+                phase = "coils"
+            if ins.operand is None:
+                raise Undrawable(name)
+            rung.coils.append(Coil(ins.operand, name == "WRT.NOT", ins.comment, ins.lead))
+            continue
+        if phase != "logic":
+            raise Undrawable(name)
+        if spec.kind is not Kind.BASIC:
+            if len(stack) != len(spec.inputs):
+                raise Undrawable(name)
+            rung.box = FunctionBox.new(name, ins.params, ins.comment, ins.lead)
+            rung.inputs = list(stack)
+            stack = []
+            phase = "coils" if spec.w1 else "closed"
+            continue
+        if name in ("AND.STK", "OR.STK"):
+            if len(stack) < 2:
+                raise Undrawable(name)
+            b = stack.pop()
+            a = stack.pop()
+            stack.append(series(a, b) if name == "AND.STK" else parallel(a, b))
+            continue
+        contact = Contact(ins.operand, name.startswith(("RD.NOT", "AND.NOT", "OR.NOT")),
+                          ins.comment, ins.lead)
+        if name in ("RD", "RD.NOT"):
+            if stack:
+                raise Undrawable(name)
+            stack.append(Leaf(contact))
+        elif name in ("RD.STK", "RD.NOT.STK"):
+            if not stack:
+                raise Undrawable(name)
+            stack.append(Leaf(contact))
+        else:
+            if not stack:
+                raise Undrawable(name)
+            top = stack.pop()
+            stack.append(series(top, Leaf(contact)) if name.startswith("AND")
+                         else parallel(top, Leaf(contact)))
+    if rung.box is None and rung.logic is None:
+        raise Undrawable("no output")
+    if rung.box is not None and not rung.box.spec.w1 and rung.coils:
+        raise Undrawable("coils")
+    return rung
