@@ -212,10 +212,11 @@ class ScanEngine:
     # -- tracing and alarms --------------------------------------------------------------
 
     def start_trace(self, addresses: Iterable[Address], period_ms: int,
-                    capacity: int = DEFAULT_CAPACITY) -> TraceSampler:
-        """Sample `addresses` every `period_ms` from the next scan on."""
+                    capacity: int = DEFAULT_CAPACITY,
+                    widths: list[int] | None = None) -> TraceSampler:
+        """Sample `addresses` (bytes: `widths` bytes each) every `period_ms` from the next scan."""
         with self.lock:
-            self.trace = TraceSampler(list(addresses), period_ms, capacity)
+            self.trace = TraceSampler(list(addresses), period_ms, capacity, widths)
             return self.trace
 
     def stop_trace(self) -> TraceSampler | None:

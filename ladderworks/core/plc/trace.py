@@ -24,13 +24,14 @@ class TraceSample:
 class TraceSampler:
     """Samples `addresses` every `period_ms` of virtual time, at the end of a scan.
 
-    A bit address gives 0/1, a byte address its byte. The period is met at scan granularity:
+    A bit address gives 0/1, a byte address its byte (or a `widths[i]`-byte little-endian
+    value). The period is met at scan granularity:
     a sample is taken by the first scan at or after each due time. Samples wait in a ring
     buffer of `capacity` until `take()`; `dropped` counts samples the buffer had to overwrite.
     """
 
     def __init__(self, addresses: list[Address], period_ms: int,
-                 capacity: int = DEFAULT_CAPACITY) -> None:
+                 capacity: int = DEFAULT_CAPACITY, widths: list[int] | None = None) -> None:
         if period_ms <= 0:
             raise ValueError("the trace period must be at least 1 ms")
         self.addresses = list(addresses)
@@ -40,7 +41,9 @@ class TraceSampler:
         self._next_ms: int | None = None
         self._seq = 0
         self.dropped = 0
-        self._readers = [(address.area, address.byte, address.bit) for address in addresses]
+        widths = widths or [1] * len(self.addresses)
+        self._readers = [(address.area, address.byte, address.bit, width)
+                         for address, width in zip(self.addresses, widths, strict=True)]
 
     def sample(self, memory: Memory, now_ms: int) -> None:
         """Called by the engine after each scan; records a sample when one is due."""
@@ -51,8 +54,11 @@ class TraceSampler:
         while self._next_ms <= now_ms:
             self._next_ms += self.period_ms
         areas = memory.areas
-        values = tuple(areas[area][byte] if bit is None else areas[area][byte] >> bit & 1
-                       for area, byte, bit in self._readers)
+        values = tuple(
+            (areas[area][byte] >> bit & 1) if bit is not None
+            else areas[area][byte] if width == 1
+            else int.from_bytes(areas[area][byte:byte + width], "little")
+            for area, byte, bit, width in self._readers)
         with self._lock:
             if len(self._buffer) == self._buffer.maxlen:
                 self.dropped += 1

@@ -1,0 +1,195 @@
+"""CLI commands of the PLC: `compile`, `disasm` and `run` (headless simulation)."""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+from ladderworks.core.address import Address, AddressError, parse_address
+from ladderworks.core.compiler import compile_program, disassemble
+from ladderworks.core.compiler.binary import MAGIC
+from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
+from ladderworks.core.il import parse_file, print_program
+from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
+from ladderworks.core.plc.functions.counters import write_counter_preset
+from ladderworks.core.plc.functions.timers import write_timer_preset
+
+_SET_RE = re.compile(r"^([^=@]+)=(-?\w+)(?:@(\d+))?$")
+_NUMBER_PAIR_RE = re.compile(r"^(\d+)=(\d+)$")
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    """Add `compile`, `disasm` and `run`."""
+    comp = subparsers.add_parser("compile", help="compile a program to a PLC binary")
+    comp.add_argument("file", metavar="FILE")
+    comp.add_argument("-o", "--output", metavar="OUT", required=True)
+    comp.set_defaults(handler=_compile)
+    dis = subparsers.add_parser("disasm", help="print the program held in a PLC binary")
+    dis.add_argument("file", metavar="OUT")
+    dis.set_defaults(handler=_disasm)
+    run = subparsers.add_parser("run", help="run a program or binary on the simulated PLC")
+    run.add_argument("file", metavar="FILE|BIN")
+    length = run.add_mutually_exclusive_group()
+    length.add_argument("--ms", type=int, metavar="T", help="run T ms of virtual time")
+    length.add_argument("--scans", type=int, metavar="N", help="run N scans (default 1)")
+    run.add_argument("--scan-period", type=int, default=DEFAULT_PERIOD_MS, metavar="MS",
+                     help=f"scan period in ms (default {DEFAULT_PERIOD_MS})")
+    run.add_argument("--set", action="append", default=[], metavar="ADDR=VALUE[@MS]",
+                     help="set a bit or byte (ADDR:2, ADDR:4 for wider values) at time MS")
+    run.add_argument("--timer", action="append", default=[], metavar="N=MS",
+                     help="preset of timer N in ms")
+    run.add_argument("--counter", action="append", default=[], metavar="N=PRESET",
+                     help="preset of counter N")
+    run.add_argument("--print", nargs="+", action="extend", default=[], metavar="ADDR",
+                     dest="print_", help="print ADDR = VALUE lines at the end")
+    run.add_argument("--trace", metavar="ADDR,...", help="print a CSV trace of these")
+    run.add_argument("--period", type=int, default=DEFAULT_PERIOD_MS, metavar="MS",
+                     help="trace sampling period in ms")
+    run.set_defaults(handler=_run)
+
+
+def _error(text: str) -> int:
+    print(f"ladderworks-cli: {text}", file=sys.stderr)
+    return 2
+
+
+def _report(name: str, diagnostics: list[Diagnostic]) -> None:
+    for diagnostic in diagnostics:
+        print(diagnostic.located(name), file=sys.stderr)
+
+
+def _load_program_binary(name: str) -> bytes | None:
+    """The binary of FILE: read as is when it is one, else parsed and compiled (None on error)."""
+    data = Path(name).read_bytes()
+    if data.startswith(MAGIC):
+        return data
+    result = parse_file(name)
+    if not result.ok:
+        _report(name, result.diagnostics)
+        return None
+    compiled = compile_program(result.program)
+    _report(name, compiled.diagnostics)
+    return compiled.binary
+
+
+def _compile(args: argparse.Namespace) -> int:
+    result = parse_file(args.file)
+    if not result.ok:
+        _report(args.file, result.diagnostics)
+        return 1
+    compiled = compile_program(result.program)
+    _report(args.file, compiled.diagnostics)
+    if compiled.binary is None:
+        return 1
+    Path(args.output).write_bytes(compiled.binary)
+    return 0
+
+
+def _disasm(args: argparse.Namespace) -> int:
+    try:
+        program = disassemble(Path(args.file).read_bytes())
+    except DiagnosticError as error:
+        _report(args.file, error.diagnostics)
+        return 1
+    sys.stdout.write(print_program(program))
+    return 0
+
+
+@dataclass(frozen=True, slots=True)
+class _Target:
+    """An address with a width, as written on the command line (`D10:2`)."""
+
+    text: str
+    address: Address
+    width: int
+
+    def read(self, engine: ScanEngine) -> int:
+        if self.address.bit is not None:
+            return engine.memory.bit(self.address)
+        return engine.memory.read(self.address, self.width)
+
+    def write(self, engine: ScanEngine, value: int) -> None:
+        if self.address.bit is not None:
+            engine.memory.set_bit(self.address, value)
+        else:
+            engine.memory.write(self.address, value, self.width)
+
+
+def _target(text: str) -> _Target:
+    spelled, _, width_text = text.strip().partition(":")
+    width = int(width_text) if width_text in ("1", "2", "4") else 0
+    if width_text and not width:
+        raise ValueError(f"'{text}': the width after ':' must be 1, 2 or 4")
+    try:
+        address = parse_address(spelled, width=width or 1)
+    except AddressError as error:
+        raise ValueError(f"'{text}': {error.code}") from None
+    if address.bit is not None and width:
+        raise ValueError(f"'{text}': a bit address takes no width")
+    return _Target(text.strip(), address, width or 1)
+
+
+def _run(args: argparse.Namespace) -> int:
+    try:
+        sets = []
+        for item in args.set:
+            match = _SET_RE.match(item.strip())
+            if not match:
+                raise ValueError(f"--set '{item}': expected ADDR=VALUE or ADDR=VALUE@MS")
+            sets.append((int(match.group(3) or 0), _target(match.group(1)),
+                         int(match.group(2), 0)))
+        timers = [_pair(item, "--timer", 1, 100) for item in args.timer]
+        counters = [_pair(item, "--counter", 1, 20) for item in args.counter]
+        prints = [_target(text) for text in args.print_]
+        traced = [_target(text) for text in args.trace.split(",")] if args.trace else []
+        if args.period <= 0 or args.scan_period <= 0:
+            raise ValueError("periods must be at least 1 ms")
+    except ValueError as error:
+        return _error(str(error))
+    binary = _load_program_binary(args.file)
+    if binary is None:
+        return 1
+    try:
+        engine = ScanEngine(binary, period_ms=args.scan_period)
+    except DiagnosticError as error:
+        _report(args.file, error.diagnostics)
+        return 1
+    for number, ms in timers:
+        write_timer_preset(engine.memory, number, ms)
+    for number, preset in counters:
+        write_counter_preset(engine.memory, number, preset)
+    trace = (engine.start_trace([t.address for t in traced], args.period,
+                                widths=[t.width for t in traced]) if traced else None)
+    sets.sort(key=lambda item: item[0])
+    pending = list(sets)
+    scans = args.scans if args.scans is not None else None
+    end_ms = args.ms
+    if scans is None and end_ms is None:
+        scans = 1
+    done = 0
+    while (scans is not None and done < scans) or (end_ms is not None and engine.now_ms < end_ms):
+        while pending and pending[0][0] <= engine.now_ms:
+            _, target, value = pending.pop(0)
+            target.write(engine, value)
+        engine.scan()
+        done += 1
+    if trace is not None:
+        print("time_ms," + ",".join(t.text for t in traced))
+        for sample in trace.take():
+            print(f"{sample.time_ms}," + ",".join(str(v) for v in sample.values))
+    for target in prints:
+        print(f"{target.text} = {target.read(engine)}")
+    return 0
+
+
+def _pair(item: str, option: str, lo: int, hi: int) -> tuple[int, int]:
+    match = _NUMBER_PAIR_RE.match(item.strip())
+    if not match:
+        raise ValueError(f"{option} '{item}': expected N=VALUE")
+    number, value = int(match.group(1)), int(match.group(2))
+    if not lo <= number <= hi:
+        raise ValueError(f"{option} '{item}': number must be {lo} to {hi}")
+    return number, value

@@ -1,0 +1,97 @@
+"""The real-time runner: a plain thread that scans an engine at its period on the wall clock."""
+
+from __future__ import annotations
+
+import threading
+import time
+from dataclasses import dataclass
+
+from ladderworks.core.plc.engine import ScanEngine
+
+
+@dataclass(frozen=True, slots=True)
+class ScanStats:
+    """Scan-time figures in ms: how long the logic took, and how often a period was missed."""
+
+    scans: int = 0
+    min_ms: float = 0.0
+    avg_ms: float = 0.0
+    max_ms: float = 0.0
+    overruns: int = 0  # scans that started late because the previous one ran past its period
+
+
+class RealTimeRunner:
+    """Scans `engine` every `engine.period_ms` of wall-clock time until `stop()`.
+
+    The engine's virtual clock still advances one period per scan, so timers run at real
+    speed as long as the scans keep up; a scan that finishes after its next start time counts
+    as an overrun and the schedule restarts from now (scans are never bunched to catch up).
+    """
+
+    def __init__(self, engine: ScanEngine) -> None:
+        self.engine = engine
+        self._thread: threading.Thread | None = None
+        self._stop = threading.Event()
+        self._lock = threading.Lock()
+        self._count = 0
+        self._total = 0.0
+        self._min = float("inf")
+        self._max = 0.0
+        self._overruns = 0
+
+    @property
+    def running(self) -> bool:
+        """True while the scan thread runs."""
+        return self._thread is not None and self._thread.is_alive()
+
+    def start(self) -> None:
+        """Start scanning (no-op if already running)."""
+        if self.running:
+            return
+        self._stop.clear()
+        self._thread = threading.Thread(target=self._loop, name="plc-scan", daemon=True)
+        self._thread.start()
+
+    def stop(self) -> None:
+        """Stop scanning and put the outputs in the safe state (every Y = 0)."""
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join()
+            self._thread = None
+        self.engine.stop()
+
+    def stats(self) -> ScanStats:
+        """The scan-time figures so far."""
+        with self._lock:
+            if not self._count:
+                return ScanStats()
+            return ScanStats(self._count, self._min * 1e3, self._total / self._count * 1e3,
+                             self._max * 1e3, self._overruns)
+
+    def reset_stats(self) -> None:
+        """Start the figures afresh."""
+        with self._lock:
+            self._count, self._total, self._min, self._max, self._overruns = (
+                0, 0.0, float("inf"), 0.0, 0)
+
+    def _loop(self) -> None:
+        period = self.engine.period_ms / 1000.0
+        next_start = time.perf_counter()
+        while not self._stop.is_set():
+            began = time.perf_counter()
+            self.engine.scan()
+            took = time.perf_counter() - began
+            next_start += period
+            now = time.perf_counter()
+            late = now > next_start
+            with self._lock:
+                self._count += 1
+                self._total += took
+                self._min = min(self._min, took)
+                self._max = max(self._max, took)
+                if late:
+                    self._overruns += 1
+            if late:
+                next_start = now
+            else:
+                self._stop.wait(next_start - now)
