@@ -3,10 +3,13 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from ladderworks.core.plc.functions import FunctionContext
 from ladderworks.core.plc.functions.arithmetic import truncated_division
-from tests.core.functions.conftest import at
+from ladderworks.core.plc.memory import Memory
+from tests.core.functions.conftest import Box, at
 
 
 @pytest.mark.parametrize(("name", "a", "b", "want"), [
@@ -119,3 +122,41 @@ def test_nume_and_numeb(ctx: FunctionContext, box) -> None:
     assert ctx.memory.read(at("D4"), 4) == 0
     box("NUMEB", 4, 99_999_999, "D4")(1)
     assert ctx.memory.read(at("D4"), 4) == 99_999_999
+
+
+@given(name=st.sampled_from(["ADD", "SUB", "MUL", "DIV"]), byt=st.booleans(),
+       a=st.integers(0, 9999), b=st.integers(0, 9999))
+def test_property_bcd_matches_integers(name: str, byt: bool, a: int, b: int) -> None:
+    ctx = FunctionContext(Memory())
+    width = 2 if byt else 1
+    limit = 10 ** (2 * width) - 1
+    a, b = a % (limit + 1), b % (limit + 1)
+    ctx.memory.write_bcd(at("D0"), a, width)
+    ctx.memory.write_bcd(at("D2"), b, width)
+    exact = {"ADD": a + b, "SUB": a - b, "MUL": a * b, "DIV": a // b if b else None}[name]
+    error = exact is None or not 0 <= exact <= limit
+    assert Box(ctx, name, 1, "D0", "D2", "D4")(byt, 0, 1) is error
+    assert ctx.memory.read_bcd(at("D4"), width) == (0 if error else exact)
+
+
+@given(name=st.sampled_from(["ADDB", "SUBB", "MULB", "DIVB"]), width=st.sampled_from([1, 2, 4]),
+       data=st.data())
+def test_property_binary_matches_integers(name: str, width: int, data: st.DataObject) -> None:
+    lo, hi = -(1 << (8 * width - 1)), (1 << (8 * width - 1)) - 1
+    a, b = data.draw(st.integers(lo, hi)), data.draw(st.integers(lo, hi))
+    ctx = FunctionContext(Memory())
+    ctx.memory.write(at("D0"), a, width)
+    ctx.memory.write(at("D4"), b, width)
+    if name == "DIVB":
+        exact = truncated_division(a, b)[0] if b else None
+    else:
+        exact = {"ADDB": a + b, "SUBB": a - b, "MULB": a * b}[name]
+    error = exact is None or not lo <= exact <= hi
+    assert Box(ctx, name, 1000 + width, "D0", "D4", "D8")(0, 1) is error
+    assert ctx.memory.bit(at("R9000.5")) == error
+    if not error:
+        assert ctx.memory.read(at("D8"), width, signed=True) == exact
+        assert ctx.memory.bit(at("R9000.1")) == (exact < 0)
+        assert ctx.memory.bit(at("R9000.0")) == (exact == 0)
+        if name == "DIVB":
+            assert exact * b + ctx.memory.read(at("R9002"), width, signed=True) == a

@@ -5,6 +5,8 @@ from __future__ import annotations
 import itertools
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from ladderworks.core.plc.functions import FunctionContext
 from ladderworks.core.plc.functions.rotation import rotate
@@ -130,3 +132,23 @@ def test_rotb_binary_positions_from_memory(ctx: FunctionContext, box, width: int
     mem.write(at("D0"), 0, width)  # zero positions: nothing is computed
     assert rotb(1, 1, 0, 1, 1) is False
     assert mem.read(at("D12"), width) == 9
+
+
+@given(positions=st.integers(1, 400), first=st.integers(0, 1), data=st.data())
+def test_property_turning_the_result_reaches_the_target(positions: int, first: int,
+                                                        data: st.DataObject) -> None:
+    """Turning `steps` stations in the W1 direction from current lands on the target."""
+    current = data.draw(st.integers(first, first + positions - 1))
+    target = data.draw(st.integers(first, first + positions - 1))
+    rotation = rotate(positions, first, current, target, shortest=True, before=False,
+                      steps=True)
+    assert rotation is not None
+    sign = -1 if rotation.reverse else 1
+    assert first + (current - first + sign * rotation.value) % positions == target
+    assert rotation.value <= positions // 2
+    before = rotate(positions, first, current, target, shortest=True, before=True,
+                    steps=False)
+    assert before is not None and before.reverse == rotation.reverse
+    if rotation.value >= 1:  # the station one before is one step short of the target
+        assert first + (current - first + sign * (rotation.value - 1)) % positions \
+            == before.value
