@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from ladderworks.cli import main
 from ladderworks.core import instructions as it
 from ladderworks.core.address import parse_address
 from ladderworks.core.compiler import compile_program
@@ -99,3 +100,15 @@ def test_ring_counter_counts_stations_1_to_12(binary: bytes) -> None:
         assert memory.read(counter_value_address(2), 2) == seen[-1]  # no count on the fall
     assert seen == list(range(1, 13)) * 2
     assert at_twelve == ([0] * 11 + [1]) * 2
+
+
+def test_cli_runs_ten_thousand_scans(capsys: pytest.CaptureFixture[str]) -> None:
+    code = main(["run", str(EXAMPLE), "--scans", "10000", "--set", "X41=2",
+                 "--set", f"F26={0x11}", "--set", "F7.3=1",
+                 "--print", "D200:2", "R230", "R232", "R231.0"])
+    assert code == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert "D200:2 = 10000" in lines
+    assert f"R230 = {0x12}" in lines  # BCD 12: slow down one station before 11
+    assert f"R232 = {0x03}" in lines  # 3 steps
+    assert "R231.0 = 1" in lines  # the short way from 2 to 11 is reverse
