@@ -34,7 +34,7 @@ class _Edge:
     cell: Cell
 
 
-class _Nets:
+class NodeNets:
     """Union-find over grid nodes: wires and vertical links join nodes into nets."""
 
     def __init__(self, network: LadderNetwork) -> None:
@@ -137,7 +137,7 @@ def read_grid(network: LadderNetwork, index: int | None = None
     def report(code: str, cell: Cell, **args: object) -> None:
         diags.append(Diagnostic(code, dict(args), network=index, cell=cell))
 
-    nets = _Nets(network)
+    nets = NodeNets(network)
     left = nets.net((0, 0))
     edges: list[_Edge] = []
     coils: list[tuple[Cell, Coil, int]] = []

@@ -1,0 +1,114 @@
+"""Ladder networks as plain-text drawings (for the command line and for reading in tests)."""
+
+from __future__ import annotations
+
+from ladderworks.core.il.printer import print_instruction
+from ladderworks.core.il.program import Instruction
+from ladderworks.core.ladder.model import (
+    Coil,
+    Contact,
+    FunctionBox,
+    LadderDocument,
+    LadderNetwork,
+    Wire,
+)
+
+CELL = 9  # characters per cell; nodes sit between cells
+
+
+def _x(node: int) -> int:
+    return node * (CELL + 1)
+
+
+def _symbol(element: Contact | Coil | Wire) -> str:
+    if isinstance(element, Wire):
+        return "-" * CELL
+    mark = "/" if element.negated else " "
+    return f"---{'|' if isinstance(element, Contact) else '('}{mark}" \
+           f"{'|' if isinstance(element, Contact) else ')'}---"
+
+
+def _label(element: Contact | Coil) -> str:
+    text = str(element.address) if element.address is not None else "?"
+    return text[:CELL].center(CELL)
+
+
+def _box_rows(box: FunctionBox) -> list[tuple[str, str]]:
+    """(label line, symbol line) texts for each row of a box, each 2*CELL+1 wide."""
+    width = 2 * CELL + 1
+    inner = width - 2
+    words = print_instruction(Instruction(box.name, params=box.params)).split()[1:]
+    rows: list[tuple[str, str]] = []
+    pin_names = {p: name for p, name in zip(box.pins, box.inputs, strict=False)}
+    for i in range(box.height):
+        pin = pin_names.get(i, "")
+        if i == 0:
+            label = "+" + f" {box.name} ".center(inner, "-") + "+"
+        else:
+            label = "|" + " " * inner + "|"
+        param = words[i] if i < len(words) else ""
+        if i == box.height - 1 and len(words) > box.height:
+            param = " ".join(words[i:])
+        out = "W1" if i == 0 and box.has_output else ""
+        body = (pin.ljust(7) + param).ljust(inner - len(out))[:inner - len(out)] + out
+        rows.append((label, "|" + body + "|"))
+    return rows
+
+
+def draw_network(network: LadderNetwork) -> list[str]:
+    """The network as text lines: two lines per grid row (addresses, then symbols)."""
+    lines = ["// " + text for text in network.comments]
+    if network.listing is not None:
+        lines.append("  (kept as instruction list: it has no ladder picture)")
+        lines.extend("    " + print_instruction(ins) for ins in network.listing)
+        return lines
+    width = _x(network.columns + 1) + 1
+    covered: dict[tuple[int, int], bool] = {}
+    for anchor, element in network.elements():
+        for cell in network.footprint(anchor, element):
+            covered[cell] = True
+    notes: list[str] = []
+    for r in range(network.rows):
+        label = [" "] * width
+        symbol = [" "] * width
+        label[0] = "|"
+        symbol[0] = "|"
+        for k in range(1, network.columns + 1):
+            if (r, k) in network.links or (r - 1, k) in network.links:
+                symbol[_x(k)] = "+"
+            elif covered.get((r, k - 1)) and covered.get((r, k)):
+                symbol[_x(k)] = "-"
+            if (r - 1, k) in network.links:
+                label[_x(k)] = "|"
+        for c in range(network.columns + 1):
+            element = network.cells.get((r, c))
+            if isinstance(element, Contact | Coil | Wire):
+                symbol[_x(c) + 1:_x(c) + 1 + CELL] = _symbol(element)
+                if isinstance(element, Contact | Coil):
+                    label[_x(c) + 1:_x(c) + 1 + CELL] = _label(element)
+        for (br, bc), element in network.elements():
+            if isinstance(element, FunctionBox) and br <= r < br + element.height:
+                top, body = _box_rows(element)[r - br]
+                label[_x(bc) + 1:_x(bc) + 1 + len(top)] = top
+                symbol[_x(bc) + 1:_x(bc) + 1 + len(body)] = body
+        lines.append("".join(label).rstrip())
+        lines.append("".join(symbol).rstrip())
+    for (r, c), element in network.elements():
+        if isinstance(element, Wire):
+            continue
+        name = (str(element.address) if isinstance(element, Contact | Coil) and element.address
+                else element.name if isinstance(element, FunctionBox) else "?")
+        notes.extend(f"   ({r},{c}) {name}: // {text}" for text in element.lead)
+        if element.comment:
+            notes.append(f"   ({r},{c}) {name}  {element.comment}")
+    return lines + notes
+
+
+def draw_document(doc: LadderDocument) -> str:
+    """Every network, one after another, numbered from 1."""
+    out: list[str] = ["// " + text for text in doc.header]
+    for index, network in enumerate(doc.networks, start=1):
+        out.append(f"== network {index} " + "=" * 40)
+        out.extend(draw_network(network))
+    out.extend("// " + text for text in doc.trailer)
+    return "\n".join(out) + "\n"

@@ -1,0 +1,54 @@
+"""Power flow through a drawn network, evaluated on the grid itself (left to right only)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from ladderworks.core.address import Address
+from ladderworks.core.ladder.decompose import NodeNets
+from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork
+
+
+class PowerFlow:
+    """Which nodes of a network carry power for given contact values.
+
+    Power starts at the left rail and passes a contact only from its left end to its right
+    end when the contact is closed; wires and vertical links join nodes. A box's W1 output is
+    not modelled (it depends on the instruction): `output_node_power` is None there."""
+
+    def __init__(self, network: LadderNetwork, value: Callable[[Address], bool]) -> None:
+        self.network = network
+        self._nets = NodeNets(network)
+        left = self._nets.net((0, 0))
+        edges: list[tuple[int, int]] = []
+        for (r, c), element in network.cells.items():
+            if (isinstance(element, Contact) and element.address is not None
+                    and value(element.address) != element.negated):
+                edges.append((self._nets.net((r, c)), self._nets.net((r, c + 1))))
+        powered = {left}
+        changed = True
+        while changed:
+            changed = False
+            for src, dst in edges:
+                if src in powered and dst not in powered:
+                    powered.add(dst)
+                    changed = True
+        self._powered = powered
+
+    def node(self, row: int, node: int) -> bool:
+        """True when node (row, k) carries power."""
+        return self._nets.net((row, node)) in self._powered
+
+    def coils(self) -> list[tuple[Cell, Coil, bool]]:
+        """Each coil with the value it writes (WRT.NOT writes the inverse of its power)."""
+        out = []
+        for (r, c), element in self.network.elements():
+            if isinstance(element, Coil):
+                out.append(((r, c), element, self.node(r, c) != element.negated))
+        return out
+
+    def pins(self, anchor: Cell) -> list[bool]:
+        """Power at each control input of the box anchored at `anchor`, first to last."""
+        box = self.network.cells[anchor]
+        assert isinstance(box, FunctionBox)
+        return [self.node(anchor[0] + p, anchor[1]) for p in box.pins]

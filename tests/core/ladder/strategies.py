@@ -1,0 +1,137 @@
+"""Hypothesis strategies: logic blocks, networks and programs in the standard coding."""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+from hypothesis import strategies as st
+
+from ladderworks.core.address import Address, Area
+from ladderworks.core.il import parse, parse_file, print_program
+from ladderworks.core.il.program import Instruction, Network, Program
+from ladderworks.core.instructions import ENDS, FUNCTIONS
+from ladderworks.core.ladder.logic import Leaf, Logic, Parallel, Rung, Series, code_rung
+from ladderworks.core.ladder.model import Coil, Contact, FunctionBox
+
+EXAMPLES = Path(__file__).resolve().parents[3] / "resources" / "examples"
+
+words = st.text(alphabet="ABCÇĞIİÖŞÜxyz0129 .-=*", min_size=1, max_size=12).map(
+    str.strip).filter(bool)
+bits = st.builds(Address, st.sampled_from([Area.X, Area.R, Area.F]),
+                 st.integers(0, 3), st.integers(0, 7))
+outputs = st.builds(Address, st.sampled_from([Area.Y, Area.R, Area.G]),
+                    st.integers(0, 3), st.integers(0, 7))
+comments = st.one_of(st.just(""), words)
+leads = st.one_of(st.just(()), st.lists(words, min_size=1, max_size=2).map(tuple))
+
+
+def contacts(with_comments: bool = True) -> st.SearchStrategy[Contact]:
+    """Contacts on a small set of addresses."""
+    if not with_comments:
+        return st.builds(Contact, bits, st.booleans())
+    return st.builds(Contact, bits, st.booleans(), comments, leads)
+
+
+def _depth(logic: Logic) -> tuple[int, int, int]:
+    """(columns, rows, pushes) of a block in the standard coding."""
+    from ladderworks.core.ladder.layout import size
+    from ladderworks.core.ladder.logic import code_logic, stack_depth
+
+    w, h = size(logic)
+    return w, h, stack_depth(code_logic(logic))
+
+
+def logic_blocks(leaf: st.SearchStrategy[Contact] | None = None,
+                 max_leaves: int = 14) -> st.SearchStrategy[Logic]:
+    """Series/parallel blocks (flattened), small enough for the grid and the stack."""
+    leaves = st.builds(Leaf, leaf if leaf is not None else contacts())
+
+    def extend(inner: st.SearchStrategy[Logic]) -> st.SearchStrategy[Logic]:
+        def combine(kind: str, items: list[Logic]) -> Logic:
+            out: list[Logic] = []
+            cls = Series if kind == "s" else Parallel
+            for item in items:
+                out.extend(item.items if isinstance(item, cls) else (item,))
+            return cls(tuple(out))
+
+        return st.builds(combine, st.sampled_from("sp"), st.lists(inner, min_size=2, max_size=3))
+
+    return st.recursive(leaves, extend, max_leaves=max_leaves).filter(
+        lambda logic: _fits(logic))
+
+
+def _fits(logic: Logic) -> bool:
+    w, h, pushes = _depth(logic)
+    return w <= 8 and h <= 12 and pushes <= 6
+
+
+@lru_cache(maxsize=1)
+def function_examples() -> dict[str, Instruction]:
+    """One real instruction per functional instruction (from all_functions.LAD)."""
+    program = parse_file(EXAMPLES / "all_functions.LAD").program
+    found: dict[str, Instruction] = {}
+    for ins in program.instructions():
+        if ins.spec.kind.value != "basic":
+            found.setdefault(ins.name, ins)
+    for spec in ENDS:
+        found.setdefault(spec.name, Instruction(spec.name))
+    return found
+
+
+coils = st.builds(Coil, outputs, st.booleans(), comments, leads)
+
+
+@st.composite
+def rungs(draw: st.DrawFn, with_comments: bool = True) -> Rung:
+    """A coil network or a function-box network in the standard coding."""
+    leaf = contacts(with_comments)
+    if draw(st.integers(0, 3)) > 0:
+        logic = draw(logic_blocks(leaf))
+        return Rung(logic=logic, coils=draw(st.lists(coils, min_size=1, max_size=3)))
+    names = sorted(s.name for s in FUNCTIONS + ENDS)
+    name = draw(st.sampled_from(names))
+    example = function_examples()[name]
+    box = FunctionBox.new(name, example.params, draw(comments) if with_comments else "",
+                          draw(leads) if with_comments else ())
+    inputs = [draw(logic_blocks(leaf, max_leaves=4)) for _ in box.inputs]
+    out = draw(st.lists(coils, max_size=2)) if box.has_output else []
+    return Rung(box=box, inputs=inputs, coils=out)
+
+
+@st.composite
+def programs(draw: st.DrawFn) -> Program:
+    """Whole programs: networks in the standard coding, with network comments."""
+    networks = []
+    for rung in draw(st.lists(rungs(), min_size=1, max_size=4)):
+        networks.append(Network(code_rung(rung), draw(st.lists(words, max_size=2))))
+    program = Program(networks, header=draw(st.lists(words, max_size=1)),
+                      trailer=draw(st.lists(words, max_size=1)))
+    result = parse(print_program(program))  # what a file holding it reads back as
+    assert result.ok, result.diagnostics
+    return result.program
+
+
+@st.composite
+def stack_code(draw: st.DrawFn, leaves: int = 6) -> list[Instruction]:
+    """Logic in any valid stack coding (not only the standard one), ending in one WRT."""
+
+    def build(n: int, push: bool) -> list[Instruction]:
+        if n == 1:
+            contact = draw(contacts(False))
+            name = "RD" + (".NOT" if contact.negated else "") + (".STK" if push else "")
+            return [Instruction(name, contact.address)]
+        split = draw(st.integers(1, n - 1))
+        op = draw(st.sampled_from(["AND", "OR"]))
+        out = build(split, push)
+        if n - split == 1 and draw(st.booleans()):
+            contact = draw(contacts(False))
+            out.append(Instruction(op + (".NOT" if contact.negated else ""), contact.address))
+        else:
+            out.extend(build(n - split, True))
+            out.append(Instruction(op + ".STK"))
+        return out
+
+    code = build(draw(st.integers(1, leaves)), False)
+    code.append(Instruction("WRT", draw(outputs)))
+    return code
