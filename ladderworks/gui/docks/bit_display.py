@@ -1,0 +1,334 @@
+"""The PLC bit display (PLC BIT GÖSTERİMİ): byte addresses typed in boxes, shown live as 8 bits."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication, QEvent, QPoint, Qt
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import (
+    QDockWidget,
+    QGridLayout,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QMainWindow,
+    QMenu,
+    QPushButton,
+    QScrollArea,
+    QToolButton,
+    QVBoxLayout,
+    QWidget,
+)
+
+from ladderworks.core.address import INPUT_AREAS, Address, AddressError, parse_address
+from ladderworks.core.plc.forcing import ForceEntry
+from ladderworks.core.signals import signal_at
+from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
+from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
+
+translate = QCoreApplication.translate
+
+BOX_COUNT = 8
+_ON = "background:#2e9e44;color:white;"
+_OFF = "background:#e4e4e4;color:#555;"
+_FORCED = "border:2px solid #e07000;font-weight:bold;"
+_PLAIN = "border:1px solid #999;"
+
+
+def _tr(text: str) -> str:
+    return translate("BitDisplay", text)
+
+
+class BitButton(QToolButton):
+    """One bit of a displayed byte: 0/1, green when on, an orange frame when forced."""
+
+    def __init__(self, row: int, bit: int, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.row = row
+        self.bit = bit
+        self.setObjectName(f"bitDisplayBit_{row}_{bit}")
+        self.setFixedSize(28, 26)
+        self.setText("·")
+        self.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
+
+    def show_value(self, value: int | None, forced: bool | None) -> None:
+        """Show 0/1 (None: nothing shown) and whether the bit is forced (and to what)."""
+        self.setText("·" if value is None else str(value))
+        style = (_ON if value else _OFF) + (_FORCED if forced is not None else _PLAIN)
+        self.setStyleSheet(f"QToolButton{{{style}}}")
+
+
+class BitRow:
+    """One box: the address typed, its 8 bit buttons, hex and decimal, and its error text."""
+
+    def __init__(self, dock: BitDisplayDock, index: int, grid: QGridLayout) -> None:
+        parent = grid.parentWidget()
+        self.index = index
+        self.address: Address | None = None
+        self.value: int | None = None
+        self.edit = QLineEdit(parent)
+        self.edit.setObjectName(f"bitDisplayAddress_{index}")
+        self.edit.setMaxLength(8)
+        self.edit.setFixedWidth(72)
+        self.edit.editingFinished.connect(lambda: dock.apply_row(self))
+        self.bits = [BitButton(index, bit, parent) for bit in range(8)]
+        for bit_button in self.bits:
+            bit_button.clicked.connect(lambda _c=False, b=bit_button: dock.toggle_bit(b))
+            bit_button.customContextMenuRequested.connect(
+                lambda pos, b=bit_button: dock.bit_menu(b, pos))
+        self.hex_label = QLabel(parent)
+        self.hex_label.setObjectName(f"bitDisplayHex_{index}")
+        self.hex_label.setMinimumWidth(40)
+        self.dec_label = QLabel(parent)
+        self.dec_label.setObjectName(f"bitDisplayDec_{index}")
+        self.dec_label.setMinimumWidth(36)
+        self.error = QLabel(parent)
+        self.error.setObjectName(f"bitDisplayError_{index}")
+        self.error.setStyleSheet("color:#c00000;")
+        self.error.setWordWrap(True)
+        self.error.hide()
+        row = index + 1
+        grid.addWidget(self.edit, row, 0)
+        for position, bit_button in enumerate(reversed(self.bits)):  # bit 7 on the left
+            grid.addWidget(bit_button, row, 1 + position)
+        grid.addWidget(self.hex_label, row, 9)
+        grid.addWidget(self.dec_label, row, 10)
+        grid.addWidget(self.error, row, 1, 1, 10)
+
+    def set_error(self, text: str) -> None:
+        """Show `text` in place of the bits ('' hides the error and shows the bits)."""
+        self.error.setText(text)
+        self.error.setVisible(bool(text))
+        for widget in (*self.bits, self.hex_label, self.dec_label):
+            widget.setVisible(not text)
+
+    def bit_texts(self) -> str:
+        """The bits shown, bit 7 first (`01000100`), or '' when nothing is shown."""
+        return "" if self.value is None else f"{self.value:08b}"
+
+
+class BitDisplayDock(QDockWidget):
+    """Type a byte address (X12, G30, R102 ...) in a box and START: its 8 bits, live.
+
+    STOP freezes what is shown. A click on a bit of an input (X, F) forces it to the other
+    value through the force list; its right-click menu forces 1 / 0 or releases the force.
+    """
+
+    def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("bitDisplayDock")
+        self.session = session
+        self.live = False
+        self._forced: dict[Address, bool] = {}
+        body = QWidget(self)
+        outer = QVBoxLayout(body)
+        buttons = QHBoxLayout()
+        self.start_button = QPushButton(body)
+        self.start_button.setObjectName("bitDisplayStart")
+        self.start_button.clicked.connect(self.start)
+        self.stop_button = QPushButton(body)
+        self.stop_button.setObjectName("bitDisplayStop")
+        self.stop_button.clicked.connect(self.stop)
+        self.state_label = QLabel(body)
+        self.state_label.setObjectName("bitDisplayState")
+        buttons.addWidget(self.start_button)
+        buttons.addWidget(self.stop_button)
+        buttons.addWidget(self.state_label, 1)
+        outer.addLayout(buttons)
+        grid_holder = QWidget(body)
+        grid = QGridLayout(grid_holder)
+        grid.setHorizontalSpacing(3)
+        self.headers: list[QLabel] = []
+        self.address_header = QLabel(grid_holder)
+        grid.addWidget(self.address_header, 0, 0)
+        for position in range(8):
+            label = QLabel(str(7 - position), grid_holder)
+            label.setAlignment(Qt.AlignmentFlag.AlignCenter)
+            grid.addWidget(label, 0, 1 + position)
+        self.hex_header = QLabel(grid_holder)
+        self.dec_header = QLabel(grid_holder)
+        grid.addWidget(self.hex_header, 0, 9)
+        grid.addWidget(self.dec_header, 0, 10)
+        self.rows = [BitRow(self, index, grid) for index in range(BOX_COUNT)]
+        grid.setColumnStretch(11, 1)
+        scroll = QScrollArea(body)
+        scroll.setWidgetResizable(True)
+        scroll.setWidget(grid_holder)
+        outer.addWidget(scroll, 1)
+        self.setWidget(body)
+        session.snapshot_ready.connect(self._on_snapshot)
+        session.forces_changed.connect(self._on_forces)
+        self._on_forces(session.forces())
+        self.retranslate()
+
+    # -- START / STOP ----------------------------------------------------------------------
+
+    def start(self) -> None:
+        """Read every box and show the bytes live."""
+        for row in self.rows:
+            self._parse(row)
+        self.live = True
+        self._update_state()
+        self._on_snapshot(self.session.snapshot())
+
+    def stop(self) -> None:
+        """Freeze what is shown."""
+        self.live = False
+        self._update_state()
+
+    def set_address(self, index: int, text: str) -> None:
+        """Type `text` into box `index` (as ENTER would: shown at once when live)."""
+        row = self.rows[index]
+        row.edit.setText(text)
+        self.apply_row(row)
+
+    def apply_row(self, row: BitRow) -> None:
+        """A box was edited: take its address (shown at once when live)."""
+        self._parse(row)
+        if self.live:
+            self._show_row(row, self.session.snapshot())
+
+    def _parse(self, row: BitRow) -> None:
+        text = row.edit.text().strip()
+        row.address = None
+        row.value = None
+        if not text:
+            row.set_error("")
+            self._show_row(row, None)
+            return
+        try:
+            address = parse_address(text, want_bit=False)
+        except AddressError as error:
+            row.set_error(address_error_text(error))
+            self._show_row(row, None)
+            return
+        row.address = address
+        row.edit.setText(str(address))
+        row.set_error("")
+        self._set_tooltips(row)
+
+    # -- showing ---------------------------------------------------------------------------
+
+    def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
+        if not self.live:
+            return
+        for row in self.rows:
+            self._show_row(row, snapshot)
+
+    def _show_row(self, row: BitRow, snapshot: PlcSnapshot | None) -> None:
+        address = row.address
+        value = snapshot.read(address) if address is not None and snapshot is not None else None
+        row.value = value
+        for button in row.bits:
+            forced = (self._forced.get(address.with_bit(button.bit))
+                      if address is not None else None)
+            button.show_value(None if value is None else value >> button.bit & 1, forced)
+        row.hex_label.setText("" if value is None else f"{value:02X}h")
+        row.dec_label.setText("" if value is None else str(value))
+
+    def _on_forces(self, entries: list[ForceEntry]) -> None:
+        self._forced = {entry.address: bool(entry.value) for entry in entries
+                        if entry.kind == "force" and entry.address is not None}
+        for row in self.rows:
+            if row.address is not None:
+                self._set_tooltips(row)
+                for button in row.bits:
+                    value = None if row.value is None else row.value >> button.bit & 1
+                    button.show_value(value, self._forced.get(row.address.with_bit(button.bit)))
+
+    def _set_tooltips(self, row: BitRow) -> None:
+        for button in row.bits:
+            button.setToolTip("" if row.address is None
+                              else self.bit_tooltip(row.address.with_bit(button.bit)))
+
+    def bit_tooltip(self, address: Address) -> str:
+        """The signal name and descriptions of a bit, whether it can be forced, and its force."""
+        lines = [str(address)]
+        signal = signal_at(address)
+        if signal is not None:
+            lines[0] += f"  {signal.name}"
+            lines += [text for text in (signal.turkish, signal.english, signal.notes) if text]
+        forced = self._forced.get(address)
+        if forced is not None:
+            lines.append(_tr("Forced to {0}").format(int(forced)))
+        if address.area in INPUT_AREAS:
+            lines.append(_tr("Click: force to the other value; right-click: force menu"))
+        return "\n".join(lines)
+
+    # -- forcing ---------------------------------------------------------------------------
+
+    def _bit_address(self, button: BitButton) -> Address | None:
+        address = self.rows[button.row].address
+        if address is None or address.area not in INPUT_AREAS:
+            return None
+        return address.with_bit(button.bit)
+
+    def toggle_bit(self, button: BitButton) -> None:
+        """Force an input bit to the value other than the one it has (or is forced to)."""
+        address = self._bit_address(button)
+        if address is None:
+            return
+        if self.session.engine is None:
+            self.state_label.setText(_tr("Load a program to force inputs"))
+            return
+        current = self._forced.get(address)
+        if current is None:
+            current = bool(self.session.bit(address))
+        self.session.force(address, not current)
+
+    def bit_menu(self, button: BitButton, pos: QPoint) -> None:
+        """Right-click on an input bit: force 1, force 0, release."""
+        address = self._bit_address(button)
+        if address is None or self.session.engine is None:
+            return
+        menu = QMenu(self)
+        menu.setObjectName("bitDisplayForceMenu")
+        for name, text, slot in (
+            ("bitDisplayForce1Action", _tr("Force to 1"),
+             lambda: self.session.force(address, True)),
+            ("bitDisplayForce0Action", _tr("Force to 0"),
+             lambda: self.session.force(address, False)),
+            ("bitDisplayReleaseAction", _tr("Release the force"),
+             lambda: self.session.release(address)),
+        ):
+            action = QAction(text, menu)
+            action.setObjectName(name)
+            action.triggered.connect(slot)
+            menu.addAction(action)
+        menu.exec(button.mapToGlobal(pos))
+
+    # -- language --------------------------------------------------------------------------
+
+    def _update_state(self) -> None:
+        self.state_label.setText(_tr("Live") if self.live else _tr("Stopped"))
+        self.start_button.setEnabled(True)
+        self.stop_button.setEnabled(self.live)
+
+    def retranslate(self) -> None:
+        """Set the texts in the current UI language."""
+        self.setWindowTitle(_tr("PLC bit display"))
+        self.start_button.setText(_tr("START"))
+        self.stop_button.setText(_tr("STOP"))
+        self.address_header.setText(_tr("Byte"))
+        self.hex_header.setText(_tr("Hex"))
+        self.dec_header.setText(_tr("Dec"))
+        for row in self.rows:
+            row.edit.setPlaceholderText(_tr("e.g. X12"))
+            if row.edit.text().strip():
+                self._parse(row)
+                if self.live:
+                    self._show_row(row, self.session.snapshot())
+        self._update_state()
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate on a language change."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+
+def install(window: QMainWindow, session: PlcSession) -> BitDisplayDock:
+    """Add the bit display to the console (hidden; View → PLC bit display shows it)."""
+    dock = BitDisplayDock(session, window)
+    add_dock(window, dock, "action_dock_bit_display", Qt.DockWidgetArea.RightDockWidgetArea)
+    dock.hide()
+    return dock

@@ -1,0 +1,266 @@
+"""The rows of the PLC tables: timers, counters, data table and keep relays, read and validated.
+
+Qt-free: the tables dock shows these rows and sends the values it accepts to the PLC session.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from enum import StrEnum
+
+from ladderworks.core.address import AREA_SIZES, Address, Area
+from ladderworks.core.compiler.binary import BinaryProgram
+from ladderworks.core.plc.functions.counters import (
+    MAX_PRESET,
+    counter_preset_address,
+    counter_value_address,
+)
+from ladderworks.core.plc.functions.timers import (
+    FAST_TICK_MS,
+    TIMER_BYTES,
+    effective_preset,
+    timer_preset_address,
+    timer_tick,
+)
+
+TIMER_COUNT = AREA_SIZES[Area.T] // TIMER_BYTES  # 100
+COUNTER_COUNT = 20
+MAX_TIMER_MS = 99_999_999  # the manual's range of a timer preset
+DATA_WIDTHS = (1, 2, 4)
+
+
+class TableKind(StrEnum):
+    """The four tables a PMC user edits."""
+
+    TIMER = "timer"
+    COUNTER = "counter"
+    DATA = "data"
+    KEEP = "keep"
+
+
+class TableError(ValueError):
+    """A value the table refuses; `code` and `args` name the reason (translated by the dock)."""
+
+    def __init__(self, code: str, **args: object) -> None:
+        self.code = code
+        self.args_map = dict(args)
+        super().__init__(f"{code}: {args}")
+
+
+@dataclass(frozen=True, slots=True)
+class TimerRow:
+    """A timer: TMR presets live in the T table (editable), TMRB presets in the program (fixed)."""
+
+    number: int
+    preset_ms: int
+    fixed: bool = False  # a TMRB: the preset is a parameter of the program
+
+    @property
+    def tick_ms(self) -> int:
+        """The timer's tick: 48 ms for TMR 1..8, 8 ms for TMR 9..100 and every TMRB."""
+        return FAST_TICK_MS if self.fixed else timer_tick(self.number)
+
+    @property
+    def effective_ms(self) -> int:
+        """The delay the timer really gives: the preset rounded down to the tick."""
+        return effective_preset(self.preset_ms, self.tick_ms)
+
+
+@dataclass(frozen=True, slots=True)
+class CounterRow:
+    """A CTR counter: preset and current value, both in the C table."""
+
+    number: int
+    preset: int
+    value: int
+
+
+@dataclass(frozen=True, slots=True)
+class DataRow:
+    """A value of the data table: `width` bytes from D`byte`, signed binary, little-endian."""
+
+    byte: int
+    width: int
+    value: int
+
+    @property
+    def address(self) -> Address:
+        """The first byte."""
+        return Address(Area.D, self.byte)
+
+
+@dataclass(frozen=True, slots=True)
+class KeepRow:
+    """A keep-relay byte K`byte` and its 8 bits."""
+
+    byte: int
+    value: int
+
+    @property
+    def bits(self) -> str:
+        """The byte as 8 binary digits, bit 7 first (as the bit display shows a byte)."""
+        return f"{self.value:08b}"
+
+
+@dataclass
+class ProgramUse:
+    """What the program uses of each table: rows listed even when their value is 0."""
+
+    timers: set[int]
+    fixed_timers: dict[int, int]  # TMRB number -> preset ms (the last TMRB of that number)
+    counters: set[int]
+    data: dict[int, int]  # D byte -> width
+    keep: set[int]
+
+    @classmethod
+    def of(cls, program: BinaryProgram | None) -> ProgramUse:
+        """Collect the timers, counters, D and K addresses a program refers to."""
+        use = cls(set(), {}, set(), {}, set())
+        if program is None:
+            return use
+        for op in program.ops:
+            if op.name == "TMR" and isinstance(op.params[0], int):
+                use.timers.add(op.params[0])
+            elif op.name == "TMRB" and all(isinstance(p, int) for p in op.params[:2]):
+                number, preset = op.params[0], op.params[1]
+                assert isinstance(number, int) and isinstance(preset, int)
+                use.fixed_timers[number] = preset
+            elif op.name == "CTR" and isinstance(op.params[0], int):
+                use.counters.add(op.params[0])
+            addresses = [op.operand, *op.params]
+            for index, where in enumerate(addresses):
+                if not isinstance(where, Address):
+                    continue
+                if where.area is Area.K:
+                    use.keep.add(where.byte)
+                elif where.area is Area.D:
+                    width = 1 if where.bit is not None else _data_width(op.name, index)
+                    use.data[where.byte] = max(use.data.get(where.byte, 1), width)
+        return use
+
+
+def _data_width(name: str, index: int) -> int:
+    """The width to show a D address of a program with: 2 for the presets of TMRC and CTRC."""
+    if name in ("TMRC", "CTRC") and index == (2 if name == "TMRC" else 1):
+        return 2
+    return 1
+
+
+# -- reading ------------------------------------------------------------------------------
+
+Areas = Mapping[Area, bytes | bytearray]  # a snapshot's areas or a Memory's
+
+
+def _read(areas: Areas, address: Address, width: int, *, signed: bool = False) -> int:
+    data = areas[address.area]
+    return int.from_bytes(data[address.byte:address.byte + width], "little", signed=signed)
+
+
+
+def timer_rows(areas: Areas, use: ProgramUse, listed: set[int]) -> list[TimerRow]:
+    """Every TMR the program uses, is listed or has a preset, then every TMRB, by number."""
+    numbers = set(use.timers) | set(listed)
+    data = areas[Area.T]
+    numbers |= {n for n in range(1, TIMER_COUNT + 1)
+                if any(data[(n - 1) * TIMER_BYTES:n * TIMER_BYTES])}
+    rows = [TimerRow(n, _read(areas, timer_preset_address(n), TIMER_BYTES)) for n in numbers]
+    rows += [TimerRow(n, preset, fixed=True) for n, preset in use.fixed_timers.items()]
+    return sorted(rows, key=lambda row: (row.number, row.fixed))
+
+
+def counter_rows(areas: Areas, use: ProgramUse, listed: set[int]) -> list[CounterRow]:
+    """Every CTR the program uses, is listed or has a non-zero preset or value, by number."""
+    numbers = set(use.counters) | set(listed)
+    data = areas[Area.C]
+    numbers |= {n for n in range(1, COUNTER_COUNT + 1) if any(data[(n - 1) * 4:n * 4])}
+    return [CounterRow(n, _read(areas, counter_preset_address(n), 2),
+                       _read(areas, counter_value_address(n), 2)) for n in sorted(numbers)]
+
+
+def data_rows(areas: Areas, use: ProgramUse, listed: dict[int, int]) -> list[DataRow]:
+    """Every D value the program uses or the user listed, by address (listed width wins)."""
+    widths = dict(use.data)
+    widths.update(listed)
+    return [DataRow(byte, width, _read(areas, Address(Area.D, byte), width, signed=True))
+            for byte, width in sorted(widths.items())]
+
+
+def keep_rows(areas: Areas, use: ProgramUse, listed: set[int]) -> list[KeepRow]:
+    """Every K byte the program uses, is listed or is non-zero, by address."""
+    data = areas[Area.K]
+    numbers = set(use.keep) | set(listed) | {n for n, value in enumerate(data) if value}
+    return [KeepRow(n, data[n]) for n in sorted(numbers)]
+
+
+# -- validating ---------------------------------------------------------------------------
+
+
+def parse_int(text: str) -> int:
+    """A decimal number (or `0x` hex, `0b` binary) typed in a cell; raises TableError."""
+    spelled = text.strip().replace("_", "")
+    try:
+        return int(spelled, 0) if spelled.lower().startswith(("0x", "0b")) else int(spelled)
+    except ValueError:
+        raise TableError("not-number", text=text.strip()) from None
+
+
+def check_range(value: int, low: int, high: int) -> int:
+    """`value` if low <= value <= high; raises TableError `range`."""
+    if not low <= value <= high:
+        raise TableError("range", value=value, low=low, high=high)
+    return value
+
+
+def timer_number(text: str) -> int:
+    """A timer number 1..100."""
+    return check_range(parse_int(text), 1, TIMER_COUNT)
+
+
+def timer_preset(text: str) -> int:
+    """A timer preset in ms, 0..99,999,999."""
+    return check_range(parse_int(text), 0, MAX_TIMER_MS)
+
+
+def counter_number(text: str) -> int:
+    """A counter number 1..20."""
+    return check_range(parse_int(text), 1, COUNTER_COUNT)
+
+
+def counter_value(text: str) -> int:
+    """A counter preset or value, 0..32767."""
+    return check_range(parse_int(text), 0, MAX_PRESET)
+
+
+def data_byte(text: str, width: int = 1) -> int:
+    """A D address (`D10`, `10`) with room for `width` bytes."""
+    spelled = text.strip().upper().removeprefix("D")
+    return check_range(parse_int(spelled), 0, AREA_SIZES[Area.D] - width)
+
+
+def data_width(text: str) -> int:
+    """A data width: 1, 2 or 4 bytes."""
+    width = parse_int(text)
+    if width not in DATA_WIDTHS:
+        raise TableError("width", value=width)
+    return width
+
+
+def data_value(text: str, width: int) -> int:
+    """A value for `width` bytes: signed or unsigned, -2^(8w-1) .. 2^(8w)-1."""
+    bits = 8 * width
+    return check_range(parse_int(text), -(1 << (bits - 1)), (1 << bits) - 1)
+
+
+def keep_byte(text: str) -> int:
+    """A K byte (`K5`, `5`), 0..99."""
+    spelled = text.strip().upper().removeprefix("K")
+    return check_range(parse_int(spelled), 0, AREA_SIZES[Area.K] - 1)
+
+
+def keep_bits(text: str) -> int:
+    """A keep-relay byte typed as up to 8 binary digits (bit 7 first)."""
+    spelled = text.strip().replace(" ", "")
+    if not spelled or len(spelled) > 8 or set(spelled) - {"0", "1"}:
+        raise TableError("bits", text=text.strip())
+    return int(spelled, 2)

@@ -1,0 +1,382 @@
+"""The PLC time chart (PLC ZAMAN KARTI): bit and value history from the engine, drawn as steps.
+
+The samples are taken inside the scan loop by the engine's trace sampler at the chosen period;
+this dock only takes them from the PLC session when it publishes, keeps them in a TraceRecord
+and draws each lane as a sample-and-hold step trace.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pyqtgraph as pg
+from PySide6.QtCore import QCoreApplication, QEvent, Qt
+from PySide6.QtGui import QAction, QColor
+from PySide6.QtWidgets import (
+    QDockWidget,
+    QFileDialog,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QMainWindow,
+    QSpinBox,
+    QToolBar,
+    QVBoxLayout,
+    QWidget,
+)
+
+from ladderworks.core.address import AddressError
+from ladderworks.core.signals import signal_at
+from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
+from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
+from ladderworks.gui.files import atomic_write
+from ladderworks.gui.plc_session import PlcSession
+
+translate = QCoreApplication.translate
+
+LANE_HEIGHT = 1.6  # a lane's trace spans 0..1 of it; the rest separates it from the next
+DEFAULT_PERIOD_MS = 8
+MAX_PERIOD_MS = 60_000
+_SPLIT = re.compile(r"[\s,;]+")
+_COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b",
+            "#e377c2")
+
+
+def _tr(text: str) -> str:
+    return translate("TimeChart", text)
+
+
+class TimeChartDock(QDockWidget):
+    """Type the bits (or `ADDR:width` values) to watch, choose the sampling time, START."""
+
+    def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("timeChartDock")
+        self.session = session
+        self.record = TraceRecord()
+        self.sampling = False
+        self._curves: list[pg.PlotDataItem] = []
+        body = QWidget(self)
+        layout = QVBoxLayout(body)
+        layout.setContentsMargins(4, 4, 4, 4)
+        entry = QHBoxLayout()
+        self.signals_label = QLabel(body)
+        self.signals_edit = QLineEdit(body)
+        self.signals_edit.setObjectName("timeChartSignals")
+        self.signals_edit.returnPressed.connect(self.start)
+        self.period_label = QLabel(body)
+        self.period_spin = QSpinBox(body)
+        self.period_spin.setObjectName("timeChartPeriod")
+        self.period_spin.setRange(1, MAX_PERIOD_MS)
+        self.period_spin.setValue(DEFAULT_PERIOD_MS)
+        self.period_spin.setSuffix(" ms")
+        entry.addWidget(self.signals_label)
+        entry.addWidget(self.signals_edit, 1)
+        entry.addWidget(self.period_label)
+        entry.addWidget(self.period_spin)
+        layout.addLayout(entry)
+        self.toolbar = QToolBar(body)
+        self.toolbar.setObjectName("timeChartToolbar")
+        self.toolbar.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
+        self.chart_actions: dict[str, QAction] = {}
+        for name, slot in (
+            ("timeChartStartAction", self.start),
+            ("timeChartStopAction", self.stop),
+            ("timeChartClearAction", self.clear),
+            (None, None),
+            ("timeChartFitAction", self.fit),
+            ("timeChartZoomInAction", lambda: self.zoom(0.5)),
+            ("timeChartZoomOutAction", lambda: self.zoom(2.0)),
+            (None, None),
+            ("timeChartCsvAction", self.export_csv_dialog),
+            ("timeChartPngAction", self.export_png_dialog),
+        ):
+            if name is None:
+                self.toolbar.addSeparator()
+                continue
+            action = QAction(self)
+            action.setObjectName(name)
+            action.triggered.connect(lambda _c=False, s=slot: s())
+            self.toolbar.addAction(action)
+            self.chart_actions[name] = action
+        layout.addWidget(self.toolbar)
+        self.message = QLabel(body)
+        self.message.setObjectName("timeChartMessage")
+        self.message.setWordWrap(True)
+        layout.addWidget(self.message)
+        self.plot = pg.PlotWidget(body, background="w")
+        self.plot.setObjectName("timeChartPlot")
+        self.plot.setMinimumHeight(160)
+        item = self.plot.getPlotItem()
+        item.showGrid(x=True, y=False, alpha=0.25)
+        item.hideButtons()
+        item.setMenuEnabled(False)
+        view = item.getViewBox()
+        view.setMouseEnabled(x=True, y=False)
+        view.enableAutoRange(x=True, y=False)
+        for side in ("left", "bottom"):
+            item.getAxis(side).setTextPen("k")
+            item.getAxis(side).setPen("k")
+        self.cursor = pg.InfiniteLine(angle=90, movable=True,
+                                      pen=pg.mkPen("#e07000", width=1.5))
+        self.cursor.setZValue(10)
+        self.cursor.sigPositionChanged.connect(self._show_cursor)
+        item.addItem(self.cursor, ignoreBounds=True)
+        layout.addWidget(self.plot, 1)
+        self.cursor_label = QLabel(body)
+        self.cursor_label.setObjectName("timeChartCursor")
+        self.cursor_label.setWordWrap(True)
+        self.cursor_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        layout.addWidget(self.cursor_label)
+        self.setWidget(body)
+        session.snapshot_ready.connect(self._take_samples)
+        session.program_loaded.connect(self._on_program_loaded)
+        self.retranslate()
+        self._update_actions()
+
+    # -- START / STOP / CLEAR ----------------------------------------------------------------
+
+    def parse_signals(self) -> list[TracedSignal] | None:
+        """The lanes typed in the box (None and a message when one is wrong or none is given)."""
+        texts = [text for text in _SPLIT.split(self.signals_edit.text().strip()) if text]
+        if not texts:
+            self._say(_tr("Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)"), error=True)
+            return None
+        signals: list[TracedSignal] = []
+        for text in texts:
+            try:
+                signals.append(parse_traced(text))
+            except AddressError as error:
+                self._say(address_error_text(error), error=True)
+                return None
+        return signals
+
+    def start(self) -> bool:
+        """Start sampling the typed signals at the chosen period (inside the scan loop) on a
+        fresh chart."""
+        signals = self.parse_signals()
+        if signals is None:
+            return False
+        if self.session.engine is None:
+            self._say(_tr("Load (compile) a PLC program first"), error=True)
+            return False
+        period = self.period_spin.value()
+        self.record = TraceRecord(signals)
+        self.record.period_ms = max(period, self.session.engine.period_ms)
+        self._make_lanes()
+        self.session.start_trace([s.address for s in signals], period,
+                                 widths=[s.width for s in signals])
+        self.sampling = True
+        self.fit()
+        self._say(_tr("Sampling every {0} ms").format(period))
+        self._update_actions()
+        return True
+
+    def stop(self) -> None:
+        """Stop sampling; what was sampled stays on the chart."""
+        if not self.sampling:
+            return
+        self.session.stop_trace()
+        self._take_samples()
+        self.sampling = False
+        self._say(_tr("Stopped: {0} samples").format(len(self.record)))
+        self._update_actions()
+
+    def clear(self) -> None:
+        """Wipe the chart (sampling goes on if started)."""
+        if self.sampling:
+            self.session.trace_samples()  # samples taken before CLEAR are not shown
+        self.record.clear()
+        self._redraw()
+        self._show_cursor()
+
+    def _on_program_loaded(self, _program: object) -> None:
+        if self.sampling:  # the session keeps the sampler across a reload
+            self._say(_tr("New program loaded; sampling goes on"))
+
+    def _take_samples(self, _snapshot: object = None) -> None:
+        if not self.sampling:
+            return
+        samples = self.session.trace_samples()
+        if samples and len(samples[0].values) == len(self.record.signals):
+            self.record.extend(samples)
+            self._redraw()
+
+    # -- drawing -----------------------------------------------------------------------------
+
+    def lane_name(self, signal: TracedSignal) -> str:
+        """The lane's label: the address and, for a named signal, its short name."""
+        found = signal_at(signal.address)
+        return f"{signal.label} {found.name}" if found is not None else signal.label
+
+    def lane_base(self, lane: int) -> float:
+        """The y of a lane's 0 level (the first lane on top)."""
+        return (len(self.record.signals) - 1 - lane) * LANE_HEIGHT
+
+    def _make_lanes(self) -> None:
+        item = self.plot.getPlotItem()
+        for curve in self._curves:
+            item.removeItem(curve)
+        self._curves = []
+        ticks = []
+        for lane, signal in enumerate(self.record.signals):
+            colour = QColor(_COLOURS[lane % len(_COLOURS)])
+            fill = QColor(colour)
+            fill.setAlpha(50)
+            base = self.lane_base(lane)
+            curve = pg.PlotDataItem(stepMode="center", pen=pg.mkPen(colour, width=2),
+                                    fillLevel=base, brush=fill if signal.is_bit else None)
+            item.addItem(curve)
+            self._curves.append(curve)
+            ticks.append((base + 0.5, self.lane_name(signal)))
+        item.getAxis("left").setTicks([ticks, []])
+        count = max(len(self.record.signals), 1)
+        item.getViewBox().setYRange(-0.3, (count - 1) * LANE_HEIGHT + 1.3, padding=0)
+        self._redraw()
+
+    def lane_points(self, lane: int) -> tuple[list[float], list[float]]:
+        """A lane's step points as drawn: x (one more than y) and y offset into its lane."""
+        xs, values = self.record.steps(lane)
+        base = self.lane_base(lane)
+        signal = self.record.signals[lane]
+        scale = 1 if signal.is_bit else max(max(values, default=0), 1)
+        return [float(x) for x in xs], [base + value / scale for value in values]
+
+    def _redraw(self) -> None:
+        for lane, curve in enumerate(self._curves):
+            xs, ys = self.lane_points(lane)
+            if xs:
+                curve.setData(xs, ys)
+            else:
+                curve.setData([], [])
+        if self.record.times and self.cursor.value() < self.record.times[0]:
+            self.cursor.setValue(self.record.times[0])
+        self._show_cursor()
+
+    # -- zoom, pan, cursor -----------------------------------------------------------------
+
+    def time_range(self) -> tuple[float, float]:
+        """The time span shown (ms)."""
+        low, high = self.plot.getPlotItem().getViewBox().viewRange()[0]
+        return low, high
+
+    def set_time_range(self, low: float, high: float) -> None:
+        """Show the span `low`..`high` ms (zoom and pan; the chart stops following)."""
+        self.plot.getPlotItem().getViewBox().setXRange(low, high, padding=0)
+
+    def zoom(self, factor: float) -> None:
+        """Zoom in time about the middle (factor < 1 zooms in)."""
+        low, high = self.time_range()
+        middle, half = (low + high) / 2, (high - low) / 2 * factor
+        self.set_time_range(middle - half, middle + half)
+
+    def fit(self) -> None:
+        """Show the whole record and follow it while sampling."""
+        view = self.plot.getPlotItem().getViewBox()
+        view.enableAutoRange(x=True, y=False)
+        if self.record.times:
+            end = self.record.end_ms or self.record.times[-1]
+            view.setXRange(self.record.times[0], end, padding=0.02)
+            view.enableAutoRange(x=True, y=False)
+
+    def set_cursor(self, time_ms: float) -> None:
+        """Put the cursor at `time_ms`."""
+        self.cursor.setValue(time_ms)
+
+    def cursor_values(self) -> dict[str, int | None]:
+        """Each lane's value at the cursor, by lane label (None outside the record)."""
+        at = self.cursor.value()
+        return {signal.label: self.record.value_at(lane, at)
+                for lane, signal in enumerate(self.record.signals)}
+
+    def _show_cursor(self, *_args: object) -> None:
+        if not self.record.signals:
+            self.cursor_label.setText("")
+            return
+        values = "   ".join(f"{label} = {'–' if value is None else value}"
+                            for label, value in self.cursor_values().items())
+        self.cursor_label.setText(
+            _tr("Cursor {0} ms:").format(round(self.cursor.value())) + "   " + values)
+
+    # -- export ------------------------------------------------------------------------------
+
+    def export_csv(self, path: str | Path) -> bool:
+        """Write the record as CSV (`time_ms,ADDR,...`, as `ladderworks-cli run --trace`)."""
+        try:
+            atomic_write(path, self.record.csv_text())
+        except OSError as error:
+            self._say(_tr("Cannot write {0}: {1}").format(path, error.strerror), error=True)
+            return False
+        self._say(_tr("Saved {0}").format(path))
+        return True
+
+    def export_png(self, path: str | Path) -> bool:
+        """Save the chart as a PNG picture."""
+        if not self.plot.grab().save(str(path), "PNG"):
+            self._say(_tr("Cannot write {0}").format(path), error=True)
+            return False
+        self._say(_tr("Saved {0}").format(path))
+        return True
+
+    def export_csv_dialog(self) -> None:
+        """Ask for a file and export the CSV."""
+        path, _filter = QFileDialog.getSaveFileName(
+            self, _tr("Export time chart as CSV"), "trace.csv", _tr("CSV files (*.csv)"))
+        if path:
+            self.export_csv(path)
+
+    def export_png_dialog(self) -> None:
+        """Ask for a file and export the PNG."""
+        path, _filter = QFileDialog.getSaveFileName(
+            self, _tr("Export time chart as PNG"), "trace.png", _tr("PNG pictures (*.png)"))
+        if path:
+            self.export_png(path)
+
+    # -- texts -------------------------------------------------------------------------------
+
+    def _say(self, text: str, *, error: bool = False) -> None:
+        self.message.setStyleSheet("color:#c00000;" if error else "")
+        self.message.setText(text)
+
+    def _update_actions(self) -> None:
+        self.chart_actions["timeChartStartAction"].setEnabled(not self.sampling)
+        self.chart_actions["timeChartStopAction"].setEnabled(self.sampling)
+        self.signals_edit.setReadOnly(self.sampling)
+        self.period_spin.setEnabled(not self.sampling)
+
+    def retranslate(self) -> None:
+        """Set the texts in the current UI language."""
+        self.setWindowTitle(_tr("PLC time chart"))
+        self.signals_label.setText(_tr("Signals:"))
+        self.signals_edit.setPlaceholderText(_tr("e.g. R1.4 R1.7 D10:2"))
+        self.period_label.setText(_tr("Sampling time:"))
+        for name, text in (
+            ("timeChartStartAction", _tr("START")),
+            ("timeChartStopAction", _tr("STOP")),
+            ("timeChartClearAction", _tr("CLEAR")),
+            ("timeChartFitAction", _tr("Fit")),
+            ("timeChartZoomInAction", _tr("Zoom in")),
+            ("timeChartZoomOutAction", _tr("Zoom out")),
+            ("timeChartCsvAction", _tr("CSV...")),
+            ("timeChartPngAction", _tr("PNG...")),
+        ):
+            self.chart_actions[name].setText(text)
+        self.chart_actions["timeChartCsvAction"].setToolTip(_tr("Export the samples as CSV"))
+        self.chart_actions["timeChartPngAction"].setToolTip(_tr("Save the chart as a PNG picture"))
+        self.plot.getPlotItem().setLabel("bottom", _tr("time (ms)"))
+        self._show_cursor()
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate on a language change."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+
+def install(window: QMainWindow, session: PlcSession) -> TimeChartDock:
+    """Add the time chart to the console (hidden; View → PLC time chart shows it)."""
+    dock = TimeChartDock(session, window)
+    add_dock(window, dock, "action_dock_time_chart")
+    dock.hide()
+    return dock
