@@ -80,21 +80,22 @@ def function_examples() -> dict[str, Instruction]:
 
 
 coils = st.builds(Coil, outputs, st.booleans(), comments, leads)
+_LOGIC = {True: logic_blocks(contacts(True)), False: logic_blocks(contacts(False))}
+_INPUTS = {True: logic_blocks(contacts(True), 4), False: logic_blocks(contacts(False), 4)}
+_NAMES = sorted(s.name for s in FUNCTIONS + ENDS)
 
 
 @st.composite
 def rungs(draw: st.DrawFn, with_comments: bool = True) -> Rung:
     """A coil network or a function-box network in the standard coding."""
-    leaf = contacts(with_comments)
     if draw(st.integers(0, 3)) > 0:
-        logic = draw(logic_blocks(leaf))
+        logic = draw(_LOGIC[with_comments])
         return Rung(logic=logic, coils=draw(st.lists(coils, min_size=1, max_size=3)))
-    names = sorted(s.name for s in FUNCTIONS + ENDS)
-    name = draw(st.sampled_from(names))
+    name = draw(st.sampled_from(_NAMES))
     example = function_examples()[name]
     box = FunctionBox.new(name, example.params, draw(comments) if with_comments else "",
                           draw(leads) if with_comments else ())
-    inputs = [draw(logic_blocks(leaf, max_leaves=4)) for _ in box.inputs]
+    inputs = [draw(_INPUTS[with_comments]) for _ in box.inputs]
     out = draw(st.lists(coils, max_size=2)) if box.has_output else []
     return Rung(box=box, inputs=inputs, coils=out)
 
