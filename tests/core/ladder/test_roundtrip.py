@@ -85,13 +85,10 @@ def test_any_stack_coding_round_trips_and_its_picture_means_the_same(
     grid.source = None
     drawn, problems = network_to_instructions(grid)  # what the picture alone says
     assert problems == [] and drawn is not None
+    addresses = {ins.operand for ins in code if ins.operand is not None}
     for _ in range(8):
-        values: dict[object, bool] = {}
-
-        def value(address: object) -> bool:
-            return values.setdefault(address, rnd.random() < 0.5)
-
-        assert run(drawn, value).writes == run(code, value).writes
+        values = {address: rnd.random() < 0.5 for address in addresses}
+        assert run(drawn, values.__getitem__).writes == run(code, values.__getitem__).writes
 
 
 def _ins(text: str) -> list[Instruction]:
