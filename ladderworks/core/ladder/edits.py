@@ -190,7 +190,8 @@ def erase_line(network: LadderNetwork, start: Cell, end: Cell) -> Edit:
 
 def _insert_row(work: LadderNetwork, at: int) -> None:
     """Shift rows `at`.. down by one; boxes spanning the gap grow, links across it stretch."""
-    _grow(work, work.rows)
+    if work.rows + 1 > MAX_ROWS:
+        raise EditRefused("edit-outside", (work.rows, 0), row=work.rows, col=0)
     cells: dict[Cell, Element] = {}
     for (r, c), element in work.cells.items():
         if r >= at:
