@@ -68,7 +68,7 @@ def draw_network(network: LadderNetwork) -> list[str]:
         for cell in network.footprint(anchor, element):
             covered[cell] = True
     notes: list[str] = []
-    for r in range(network.rows):
+    for r in range(network.used_rows()):
         label = [" "] * width
         symbol = [" "] * width
         label[0] = "|"

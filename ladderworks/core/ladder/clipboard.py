@@ -43,7 +43,7 @@ class Selection:
     @classmethod
     def whole(cls, network: LadderNetwork) -> Selection:
         """Every cell of a network, coil column included."""
-        return cls(0, 0, network.rows - 1, network.columns)
+        return cls(0, 0, network.used_rows() - 1, network.columns)
 
     def holds(self, cell: Cell) -> bool:
         """True when the cell is inside."""
@@ -108,8 +108,10 @@ def copy_text(network: LadderNetwork, selection: Selection | None = None) -> str
     sel = selection or Selection.whole(network)
     head: dict[str, object] = {"columns": network.columns, "rows": sel.bottom - sel.top + 1,
                                "width": sel.right - sel.left + 1}
-    if whole and network.comments:
-        head["comments"] = list(network.comments)
+    if whole:
+        head["rows"] = network.rows  # as set, even if an element reaches further
+        if network.comments:
+            head["comments"] = list(network.comments)
     lines = [f"{MAGIC} {json.dumps(head, ensure_ascii=False)}"]
     for (r, c), element in network.elements():
         cells = network.footprint((r, c), element)
@@ -152,12 +154,13 @@ def network_from_text(text: str) -> LadderNetwork:
         for record in records:
             if "link" in record:
                 r, k = (int(x) for x in record["link"])  # type: ignore[attr-defined]
-                if not (0 <= r < rows - 1 and 0 <= k <= columns):
+                if not (0 <= r < MAX_ROWS - 1 and 0 <= k <= columns):
                     raise ValueError("link")
                 network.links.add((r, k))
                 continue
             r, c = (int(x) for x in record["at"])  # type: ignore[attr-defined]
             _put(network, r, c, _element_from(record))
+        network.rows = rows
     except (ValueError, KeyError, TypeError, AddressError, EditRefused):
         raise EditRefused("grid-text") from None
     return network

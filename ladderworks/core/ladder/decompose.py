@@ -38,15 +38,16 @@ class NodeNets:
     """Union-find over grid nodes: wires and vertical links join nodes into nets."""
 
     def __init__(self, network: LadderNetwork) -> None:
-        self.width = network.columns + 1
-        self.parent = list(range(network.rows * self.width))
-        for r in range(1, network.rows):
+        self.width = network.columns + 2
+        rows = network.used_rows()
+        self.parent = list(range(rows * self.width))
+        for r in range(1, rows):
             self.union((0, 0), (r, 0))
         for (r, c), element in network.cells.items():
-            if isinstance(element, Wire) and c < network.columns and r < network.rows:
+            if isinstance(element, Wire) and c < network.columns:
                 self.union((r, c), (r, c + 1))
         for r, k in network.links:
-            if r + 1 < network.rows and 0 <= k <= network.columns:
+            if 0 <= k <= network.columns:
                 self.union((r, k), (r + 1, k))
 
     def _find(self, i: int) -> int:

@@ -179,6 +179,16 @@ class LadderNetwork:
                 return anchor, item
         return None
 
+    def used_rows(self) -> int:
+        """Rows the drawing really spans: `rows`, or more if an element or link reaches further
+        (a network built directly in code may not have grown `rows`)."""
+        last = self.rows
+        for (r, c), element in self.cells.items():
+            last = max(last, max(cell[0] for cell in self.footprint((r, c), element)) + 1)
+        for r, _ in self.links:
+            last = max(last, r + 2)
+        return last
+
     def has_link(self, row: int, node: int) -> bool:
         """True when a vertical link joins `row` and `row + 1` at node `node`."""
         return (row, node) in self.links
