@@ -283,11 +283,11 @@ class BitDisplayDock(QDockWidget):
         menu = QMenu(self)
         menu.setObjectName("bitDisplayForceMenu")
         for name, text, slot in (
-            ("bitDisplayForce1Action", _tr("Force to 1"),
+            ("action_bit_force_1", _tr("Force to 1"),
              lambda: self.session.force(address, True)),
-            ("bitDisplayForce0Action", _tr("Force to 0"),
+            ("action_bit_force_0", _tr("Force to 0"),
              lambda: self.session.force(address, False)),
-            ("bitDisplayReleaseAction", _tr("Release the force"),
+            ("action_bit_release", _tr("Release the force"),
              lambda: self.session.release(address)),
         ):
             action = QAction(text, menu)

@@ -81,16 +81,16 @@ class TimeChartDock(QDockWidget):
         self.toolbar.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
         self.chart_actions: dict[str, QAction] = {}
         for name, slot in (
-            ("timeChartStartAction", self.start),
-            ("timeChartStopAction", self.stop),
-            ("timeChartClearAction", self.clear),
+            ("action_time_chart_start", self.start),
+            ("action_time_chart_stop", self.stop),
+            ("action_time_chart_clear", self.clear),
             (None, None),
-            ("timeChartFitAction", self.fit),
-            ("timeChartZoomInAction", lambda: self.zoom(0.5)),
-            ("timeChartZoomOutAction", lambda: self.zoom(2.0)),
+            ("action_time_chart_fit", self.fit),
+            ("action_time_chart_zoom_in", lambda: self.zoom(0.5)),
+            ("action_time_chart_zoom_out", lambda: self.zoom(2.0)),
             (None, None),
-            ("timeChartCsvAction", self.export_csv_dialog),
-            ("timeChartPngAction", self.export_png_dialog),
+            ("action_time_chart_csv", self.export_csv_dialog),
+            ("action_time_chart_png", self.export_png_dialog),
         ):
             if name is None:
                 self.toolbar.addSeparator()
@@ -340,8 +340,8 @@ class TimeChartDock(QDockWidget):
         self.message.setText(text)
 
     def _update_actions(self) -> None:
-        self.chart_actions["timeChartStartAction"].setEnabled(not self.sampling)
-        self.chart_actions["timeChartStopAction"].setEnabled(self.sampling)
+        self.chart_actions["action_time_chart_start"].setEnabled(not self.sampling)
+        self.chart_actions["action_time_chart_stop"].setEnabled(self.sampling)
         self.signals_edit.setReadOnly(self.sampling)
         self.period_spin.setEnabled(not self.sampling)
 
@@ -352,18 +352,19 @@ class TimeChartDock(QDockWidget):
         self.signals_edit.setPlaceholderText(_tr("e.g. R1.4 R1.7 D10:2"))
         self.period_label.setText(_tr("Sampling time:"))
         for name, text in (
-            ("timeChartStartAction", _tr("START")),
-            ("timeChartStopAction", _tr("STOP")),
-            ("timeChartClearAction", _tr("CLEAR")),
-            ("timeChartFitAction", _tr("Fit")),
-            ("timeChartZoomInAction", _tr("Zoom in")),
-            ("timeChartZoomOutAction", _tr("Zoom out")),
-            ("timeChartCsvAction", _tr("CSV...")),
-            ("timeChartPngAction", _tr("PNG...")),
+            ("action_time_chart_start", _tr("START")),
+            ("action_time_chart_stop", _tr("STOP")),
+            ("action_time_chart_clear", _tr("CLEAR")),
+            ("action_time_chart_fit", _tr("Fit")),
+            ("action_time_chart_zoom_in", _tr("Zoom in")),
+            ("action_time_chart_zoom_out", _tr("Zoom out")),
+            ("action_time_chart_csv", _tr("CSV...")),
+            ("action_time_chart_png", _tr("PNG...")),
         ):
             self.chart_actions[name].setText(text)
-        self.chart_actions["timeChartCsvAction"].setToolTip(_tr("Export the samples as CSV"))
-        self.chart_actions["timeChartPngAction"].setToolTip(_tr("Save the chart as a PNG picture"))
+        actions = self.chart_actions
+        actions["action_time_chart_csv"].setToolTip(_tr("Export the samples as CSV"))
+        actions["action_time_chart_png"].setToolTip(_tr("Save the chart as a PNG picture"))
         self.plot.getPlotItem().setLabel("bottom", _tr("time (ms)"))
         self._show_cursor()
 

@@ -1,0 +1,218 @@
+"""The alarm panel: the AlarmMsg.dat message of every A bit the program raised, newest first."""
+
+from __future__ import annotations
+
+from datetime import datetime
+from pathlib import Path
+
+from PySide6.QtCore import QCoreApplication, QEvent, Qt
+from PySide6.QtGui import QAction, QBrush, QColor
+from PySide6.QtWidgets import (
+    QDockWidget,
+    QFileDialog,
+    QLabel,
+    QMainWindow,
+    QToolBar,
+    QTreeWidget,
+    QTreeWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+from ladderworks import paths
+from ladderworks.core.alarms import ActiveAlarm, format_number, load_alarm_file
+from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.docks.dock_menus import add_dock, find_menu, insert_before, register_action
+from ladderworks.gui.plc_session import PlcSession
+
+translate = QCoreApplication.translate
+
+DEFAULT_ALARM_FILE = paths.RESOURCES / "AlarmMsg.dat"
+COLUMNS = 5  # number, address, PLC time, clock, message
+
+
+def _tr(text: str) -> str:
+    return translate("AlarmPanel", text)
+
+
+def plc_time_text(ms: int) -> str:
+    """PLC (virtual clock) time as `m:ss.mmm` (`h:mm:ss.mmm` after an hour)."""
+    seconds, millis = divmod(ms, 1000)
+    minutes, seconds = divmod(seconds, 60)
+    hours, minutes = divmod(minutes, 60)
+    if hours:
+        return f"{hours}:{minutes:02d}:{seconds:02d}.{millis:03d}"
+    return f"{minutes}:{seconds:02d}.{millis:03d}"
+
+
+class AlarmDock(QDockWidget):
+    """The alarms the A area has raised, newest first; RESET clears those whose bit is 0.
+
+    Each row: the message number (A byte × 8 + bit), the A bit, the PLC time it rose, the
+    wall-clock time the panel first saw it, and the text from the alarm file. An alarm whose
+    bit dropped stays (greyed) until RESET, as on the CNC screen.
+    """
+
+    def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("alarmDock")
+        self.session = session
+        self.alarm_file: Path | None = None
+        self.file_problems: list[Diagnostic] = []
+        self._seen: dict[tuple[int, int], datetime] = {}
+        self.file_action = QAction(self)
+        self.file_action.setObjectName("action_alarm_file")
+        self.file_action.triggered.connect(self.open_dialog)
+        self.reset_action = QAction(self)
+        self.reset_action.setObjectName("action_alarm_reset")
+        self.reset_action.triggered.connect(self.reset)
+        body = QWidget(self)
+        layout = QVBoxLayout(body)
+        layout.setContentsMargins(4, 4, 4, 4)
+        toolbar = QToolBar(body)
+        toolbar.setObjectName("alarmToolbar")
+        toolbar.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
+        toolbar.addAction(self.reset_action)
+        toolbar.addAction(self.file_action)
+        self.file_label = QLabel(body)
+        self.file_label.setObjectName("alarmFileLabel")
+        toolbar.addWidget(self.file_label)
+        layout.addWidget(toolbar)
+        self.tree = QTreeWidget(body)
+        self.tree.setObjectName("alarmList")
+        self.tree.setColumnCount(COLUMNS)
+        self.tree.setRootIsDecorated(False)
+        self.tree.setAlternatingRowColors(True)
+        self.tree.setUniformRowHeights(True)
+        layout.addWidget(self.tree, 1)
+        self.setWidget(body)
+        self._alarms: list[ActiveAlarm] = []
+        session.alarms_changed.connect(self._on_alarms)
+        if not session.alarm_table.messages and DEFAULT_ALARM_FILE.exists():
+            self.load_file(DEFAULT_ALARM_FILE)
+        self.retranslate()
+        self._on_alarms(session.alarms())
+
+    # -- the alarm file ----------------------------------------------------------------------
+
+    def load_file(self, path: str | Path) -> bool:
+        """Read an AlarmMsg.dat; its messages are used from now on. False if unreadable."""
+        try:
+            table, problems = load_alarm_file(path)
+        except OSError as error:
+            self.file_label.setText(_tr("Cannot read {0}: {1}").format(
+                Path(path).name, error.strerror))
+            self.file_label.setStyleSheet("color:#c00000;")
+            return False
+        self.session.set_alarm_table(table)
+        self.alarm_file = Path(path)
+        self.file_problems = problems
+        self._show_file()
+        self._fill()
+        return True
+
+    def open_dialog(self) -> None:
+        """File → Alarm file: choose an AlarmMsg.dat."""
+        start = str(self.alarm_file or DEFAULT_ALARM_FILE)
+        path, _filter = QFileDialog.getOpenFileName(
+            self, _tr("Alarm message file"), start, _tr("Alarm files (*.dat);;All files (*)"))
+        if path:
+            self.load_file(path)
+
+    def _show_file(self) -> None:
+        if self.alarm_file is None:
+            self.file_label.setText(_tr("No alarm file"))
+            return
+        text = _tr("{0}: {1} messages").format(
+            self.alarm_file.name, len(self.session.alarm_table))
+        if self.file_problems:
+            text += " · " + _tr("{0} lines with problems").format(len(self.file_problems))
+        self.file_label.setText(text)
+        self.file_label.setStyleSheet("color:#a05000;" if self.file_problems else "")
+        self.file_label.setToolTip("\n".join(
+            _tr("line {0}: {1}").format(d.line, diagnostic_text(d)) for d in self.file_problems))
+
+    # -- the list ------------------------------------------------------------------------------
+
+    def reset(self) -> None:
+        """The reset key: alarms whose bit is 0 leave the list (those still on stay)."""
+        self.session.reset_alarms()
+
+    def alarms(self) -> list[ActiveAlarm]:
+        """The alarms shown, newest first."""
+        return list(self._alarms)
+
+    def message_of(self, alarm: ActiveAlarm) -> str:
+        """The alarm's text from the file now loaded (or a note that the file has none)."""
+        text = self.session.alarm_table.text_for(alarm.number) or alarm.text
+        return text or _tr("(no message {0} in the alarm file)").format(
+            format_number(alarm.number))
+
+    def _on_alarms(self, alarms: list[ActiveAlarm]) -> None:
+        self._alarms = list(alarms)
+        now = datetime.now()
+        keys = {(alarm.number, alarm.raised_ms) for alarm in self._alarms}
+        self._seen = {key: seen for key, seen in self._seen.items() if key in keys}
+        for key in keys:
+            self._seen.setdefault(key, now)
+        self._fill()
+
+    def _fill(self) -> None:
+        self.tree.clear()
+        grey = QBrush(QColor("#888888"))
+        for alarm in self._alarms:
+            seen = self._seen.get((alarm.number, alarm.raised_ms))
+            item = QTreeWidgetItem([
+                format_number(alarm.number),
+                str(alarm.address),
+                plc_time_text(alarm.raised_ms),
+                seen.strftime("%H:%M:%S") if seen is not None else "",
+                self.message_of(alarm),
+            ])
+            if alarm.active:
+                item.setForeground(0, QBrush(QColor("#c00000")))
+            else:
+                for column in range(COLUMNS):
+                    item.setForeground(column, grey)
+                item.setToolTip(4, _tr("The bit is 0 again: RESET clears this alarm"))
+            self.tree.addTopLevelItem(item)
+        for column in range(COLUMNS - 1):
+            self.tree.resizeColumnToContents(column)
+
+    def shown_rows(self) -> list[list[str]]:
+        """The texts of the list, row by row (for tests and for copying)."""
+        return [[self.tree.topLevelItem(row).text(column) for column in range(COLUMNS)]
+                for row in range(self.tree.topLevelItemCount())]
+
+    # -- language ------------------------------------------------------------------------------
+
+    def retranslate(self) -> None:
+        """Set the texts in the current UI language."""
+        self.setWindowTitle(_tr("Alarms"))
+        self.reset_action.setText(_tr("RESET"))
+        self.reset_action.setToolTip(_tr("Clear the alarms whose bit is 0 (the reset key)"))
+        self.file_action.setText(_tr("Alarm file..."))
+        self.tree.setHeaderLabels([_tr("No."), _tr("Bit"), _tr("PLC time"), _tr("Clock"),
+                                   _tr("Message")])
+        self._show_file()
+        self._fill()
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate on a language change."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+
+def install(window: QMainWindow, session: PlcSession) -> AlarmDock:
+    """Add the alarm panel to the console, File → Alarm file and PLC → RESET to its menus."""
+    dock = AlarmDock(session, window)
+    add_dock(window, dock, "action_dock_alarms")
+    for action in (dock.file_action, dock.reset_action):
+        register_action(window, action)
+    insert_before(find_menu(window, "menu_file"), dock.file_action, "action_quit")
+    plc = find_menu(window, "menu_plc")
+    if plc is not None:
+        plc.addAction(dock.reset_action)
+    return dock

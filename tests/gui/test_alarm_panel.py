@@ -1,0 +1,112 @@
+"""The alarm panel: an A bit raises its AlarmMsg.dat message with its time; RESET clears it."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from PySide6.QtWidgets import QMenu
+from pytestqt.qtbot import QtBot
+
+from ladderworks.core.address import parse_address
+from ladderworks.gui.docks import alarms as alarm_panel
+from ladderworks.gui.docks.alarms import AlarmDock, plc_time_text
+from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.translation import UiLanguage
+from tests.gui.plc_examples import running_session
+
+MOVING = parse_address("F102.0")  # MV1, X axis moving: the example writes A0.0
+
+
+@pytest.fixture
+def panel(qtbot: QtBot) -> Iterator[tuple[PlcSession, AlarmDock]]:
+    """The alarm example running on the virtual clock, with the alarm panel."""
+    UiLanguage().apply("en")
+    session = running_session("alarm.LAD")
+    dock = AlarmDock(session)
+    qtbot.addWidget(dock)
+    dock.show()
+    yield session, dock
+    session.stop()
+
+
+def test_alarm_bit_raises_its_message_and_reset_clears_it(
+        qtbot: QtBot, panel: tuple[PlcSession, AlarmDock]) -> None:
+    session, dock = panel
+    assert dock.alarm_file == alarm_panel.DEFAULT_ALARM_FILE
+    assert dock.shown_rows() == []
+    session.run_scans(125)  # 1 s
+    session.set_bit(MOVING, 1)
+    session.run_scans(1)
+    qtbot.waitUntil(lambda: len(dock.shown_rows()) == 1)
+    (row,) = dock.shown_rows()
+    (alarm,) = dock.alarms()
+    assert row[:3] == ["000", "A0.0", plc_time_text(alarm.raised_ms)]
+    assert 1000 <= alarm.raised_ms <= 1008
+    assert row[2].startswith("0:01.00")
+    assert row[4] == "X EKSENİ HAREKET EDİYOR / X AXIS IS MOVING"
+    dock.reset()  # the bit is still 1: the alarm stays, as on the CNC
+    assert len(dock.shown_rows()) == 1
+    session.set_bit(MOVING, 0)
+    session.run_scans(1)
+    qtbot.waitUntil(lambda: not dock.alarms()[0].active)
+    assert len(dock.shown_rows()) == 1  # shown until RESET
+    dock.reset_action.trigger()
+    qtbot.waitUntil(lambda: dock.shown_rows() == [])
+
+
+def test_newest_first(qtbot: QtBot, panel: tuple[PlcSession, AlarmDock]) -> None:
+    session, dock = panel
+    for byte_bit in ("A1.3", "A0.5"):  # messages 011 and 005, raised 80 ms apart
+        session.set_bit(parse_address(byte_bit), 1)
+        session.run_scans(10)
+    qtbot.waitUntil(lambda: len(dock.shown_rows()) == 2)
+    rows = dock.shown_rows()
+    assert [row[0] for row in rows] == ["005", "011"]
+    assert rows[0][4].startswith("YAĞLAMA YAĞI SEVİYESİ DÜŞÜK")
+    assert rows[1][4].startswith("KAPI AÇIK")
+
+
+def test_alarm_file_action_and_missing_messages(
+        qtbot: QtBot, panel: tuple[PlcSession, AlarmDock], tmp_path: Path) -> None:
+    session, dock = panel
+    mine = tmp_path / "AlarmMsg.dat"
+    mine.write_text("000 MY OWN TEXT\nA0.1 SECOND\nbad line here\n", encoding="utf-8")
+    assert dock.load_file(mine)
+    assert "AlarmMsg.dat: 2 messages" in dock.file_label.text()
+    assert "1 lines with problems" in dock.file_label.text()
+    assert "line 3" in dock.file_label.toolTip()
+    session.set_bit(MOVING, 1)
+    session.set_bit(parse_address("A5.0"), 1)  # message 040: not in this file
+    session.run_scans(1)
+    qtbot.waitUntil(lambda: len(dock.shown_rows()) == 2)
+    texts = {row[0]: row[4] for row in dock.shown_rows()}
+    assert texts == {"000": "MY OWN TEXT", "040": "(no message 040 in the alarm file)"}
+    assert not dock.load_file(tmp_path / "missing.dat")
+    assert "Cannot read missing.dat" in dock.file_label.text()
+
+
+def test_install_adds_menus(qtbot: QtBot, window: object) -> None:
+    session = PlcSession(realtime=False)
+    dock = alarm_panel.install(window, session)  # type: ignore[arg-type]
+    file_menu = window.findChild(QMenu, "menu_file")  # type: ignore[attr-defined]
+    names = [action.objectName() for action in file_menu.actions()]
+    assert "action_alarm_file" in names
+    assert names.index("action_alarm_file") < names.index("action_quit")
+    view = window.findChild(QMenu, "menu_view")  # type: ignore[attr-defined]
+    assert "action_dock_alarms" in [action.objectName() for action in view.actions()]
+    assert window.actions_by_name["action_alarm_reset"] is dock.reset_action  # type: ignore
+    assert dock.objectName() == "alarmDock"
+
+
+def test_turkish(qtbot: QtBot, panel: tuple[PlcSession, AlarmDock]) -> None:
+    _session, dock = panel
+    language = UiLanguage()
+    try:
+        language.apply("tr")
+        qtbot.waitUntil(lambda: dock.windowTitle() == "ALARMLAR")
+        assert dock.reset_action.text() == "RESET"
+        assert dock.tree.headerItem().text(4) == "Mesaj"
+    finally:
+        language.apply("en")
