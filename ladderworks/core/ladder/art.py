@@ -81,11 +81,11 @@ def draw_network(network: LadderNetwork) -> list[str]:
             if (r - 1, k) in network.links:
                 label[_x(k)] = "|"
         for c in range(network.columns + 1):
-            element = network.cells.get((r, c))
-            if isinstance(element, Contact | Coil | Wire):
-                symbol[_x(c) + 1:_x(c) + 1 + CELL] = _symbol(element)
-                if isinstance(element, Contact | Coil):
-                    label[_x(c) + 1:_x(c) + 1 + CELL] = _label(element)
+            item = network.cells.get((r, c))
+            if isinstance(item, Contact | Coil | Wire):
+                symbol[_x(c) + 1:_x(c) + 1 + CELL] = _symbol(item)
+                if isinstance(item, Contact | Coil):
+                    label[_x(c) + 1:_x(c) + 1 + CELL] = _label(item)
         for (br, bc), element in network.elements():
             if isinstance(element, FunctionBox) and br <= r < br + element.height:
                 top, body = _box_rows(element)[r - br]

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass
+from typing import Any
 
 from ladderworks.core.address import Address, AddressError, parse_address
 from ladderworks.core.il.program import ParamValue
@@ -50,11 +51,11 @@ class Selection:
         return self.top <= cell[0] <= self.bottom and self.left <= cell[1] <= self.right
 
 
-def _element_record(element: Element) -> dict[str, object]:
+def _element_record(element: Element) -> dict[str, Any]:
     if isinstance(element, Wire):
         return {"kind": "wire"}
     if isinstance(element, FunctionBox):
-        record: dict[str, object] = {
+        record: dict[str, Any] = {
             "kind": "box", "name": element.name,
             "params": [str(p) if isinstance(p, Address) else p for p in element.params],
             "pins": list(element.pins), "height": element.height}
@@ -77,19 +78,19 @@ def _parse_param(value: object) -> ParamValue:
     return parse_address(value)
 
 
-def _element_from(record: dict[str, object]) -> Element:
+def _element_from(record: dict[str, Any]) -> Element:
     kind = record.get("kind")
     comment = str(record.get("comment", ""))
-    lead = tuple(str(x) for x in record.get("lead", []))  # type: ignore[attr-defined]
+    lead = tuple(str(x) for x in record.get("lead", []))
     if kind == "wire":
         return WIRE
     if kind == "box":
         name = str(record["name"])
         if lookup(name) is None:
             raise ValueError(name)
-        params = tuple(_parse_param(p) for p in record.get("params", []))  # type: ignore[attr-defined]
-        pins = tuple(int(p) for p in record.get("pins", []))  # type: ignore[attr-defined]
-        height = int(record.get("height", 1))  # type: ignore[arg-type]
+        params = tuple(_parse_param(p) for p in record.get("params", []))
+        pins = tuple(int(p) for p in record.get("pins", []))
+        height = int(record.get("height", 1))
         default = FunctionBox.new(name)
         if len(pins) != len(default.pins) or any(p >= height for p in pins) or height < 1:
             raise ValueError("pins")
@@ -106,7 +107,7 @@ def copy_text(network: LadderNetwork, selection: Selection | None = None) -> str
     """The selected elements and links as text (the whole network when no selection)."""
     whole = selection is None
     sel = selection or Selection.whole(network)
-    head: dict[str, object] = {"columns": network.columns, "rows": sel.bottom - sel.top + 1,
+    head: dict[str, Any] = {"columns": network.columns, "rows": sel.bottom - sel.top + 1,
                                "width": sel.right - sel.left + 1}
     if whole:
         head["rows"] = network.rows  # as set, even if an element reaches further
@@ -127,7 +128,7 @@ def copy_text(network: LadderNetwork, selection: Selection | None = None) -> str
     return "\n".join(lines) + "\n"
 
 
-def _read(text: str) -> tuple[dict[str, object], list[dict[str, object]]]:
+def _read(text: str) -> tuple[dict[str, Any], list[dict[str, Any]]]:
     lines = [line for line in text.splitlines() if line.strip()]
     if not lines or not lines[0].startswith(MAGIC):
         raise EditRefused("grid-text")
@@ -145,20 +146,20 @@ def network_from_text(text: str) -> LadderNetwork:
     """A whole network from `copy_text` output; EditRefused('grid-text') if it is not one."""
     head, records = _read(text)
     try:
-        columns = int(head.get("columns", DEFAULT_COLUMNS))  # type: ignore[arg-type]
-        rows = int(head.get("rows", 1))  # type: ignore[arg-type]
+        columns = int(head.get("columns", DEFAULT_COLUMNS))
+        rows = int(head.get("rows", 1))
         if not (1 <= columns <= MAX_COLUMNS and 1 <= rows <= MAX_ROWS):
             raise ValueError("size")
         network = LadderNetwork(columns, rows,
-                                comments=[str(x) for x in head.get("comments", [])])  # type: ignore[attr-defined]
+                                comments=[str(x) for x in head.get("comments", [])])
         for record in records:
             if "link" in record:
-                r, k = (int(x) for x in record["link"])  # type: ignore[attr-defined]
+                r, k = (int(x) for x in record["link"])
                 if not (0 <= r < MAX_ROWS - 1 and 0 <= k <= columns):
                     raise ValueError("link")
                 network.links.add((r, k))
                 continue
-            r, c = (int(x) for x in record["at"])  # type: ignore[attr-defined]
+            r, c = (int(x) for x in record["at"])
             _put(network, r, c, _element_from(record))
         network.rows = rows
     except (ValueError, KeyError, TypeError, AddressError, EditRefused):
@@ -187,13 +188,13 @@ def paste(network: LadderNetwork, row: int, col: int, text: str) -> Edit:
     try:
         for record in records:
             if "link" in record:
-                r, k = (int(x) for x in record["link"])  # type: ignore[attr-defined]
+                r, k = (int(x) for x in record["link"])
                 if col + k > work.columns:
                     raise EditRefused("edit-outside", (row + r, col + k), row=row + r, col=col + k)
                 _grow(work, row + r + 1)
                 work.links.add((row + r, col + k))
                 continue
-            r, c = (int(x) for x in record["at"])  # type: ignore[attr-defined]
+            r, c = (int(x) for x in record["at"])
             element = _element_from(record)
             target = work.coil_column if record.get("coil_column") else col + c
             if target > work.columns:
