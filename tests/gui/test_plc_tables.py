@@ -197,7 +197,7 @@ def test_turkish(qtbot: QtBot, tables: tuple[PlcSession, PlcTablesDock]) -> None
         language.apply("tr")
         qtbot.waitUntil(lambda: dock.windowTitle() == "PLC TABLOLARI")
         dock.context_menu(TableKind.TIMER, 0)
-        assert dock.insert_action is not None and dock.insert_action.text() == "EKLE"
+        assert dock.insert_action is not None and dock.insert_action.text() == "EKLE (INSERT)"
         assert dock.edit_cell(TableKind.TIMER, 0, 2, "abc") == "'abc' bir sayı değil"
     finally:
         language.apply("en")

@@ -32,10 +32,6 @@ DEFAULT_ALARM_FILE = paths.RESOURCES / "AlarmMsg.dat"
 COLUMNS = 5  # number, address, PLC time, clock, message
 
 
-def _tr(text: str) -> str:
-    return translate("AlarmPanel", text)
-
-
 def plc_time_text(ms: int) -> str:
     """PLC (virtual clock) time as `m:ss.mmm` (`h:mm:ss.mmm` after an hour)."""
     seconds, millis = divmod(ms, 1000)
@@ -101,8 +97,11 @@ class AlarmDock(QDockWidget):
         try:
             table, problems = load_alarm_file(path)
         except OSError as error:
-            self.file_label.setText(_tr("Cannot read {0}: {1}").format(
-                Path(path).name, error.strerror))
+            self.file_label.setText(
+                translate("AlarmPanel", "Cannot read {0}: {1}").format(
+                    Path(path).name, error.strerror
+                )
+            )
             self.file_label.setStyleSheet("color:#c00000;")
             return False
         self.session.set_alarm_table(table)
@@ -116,22 +115,33 @@ class AlarmDock(QDockWidget):
         """File → Alarm file: choose an AlarmMsg.dat."""
         start = str(self.alarm_file or DEFAULT_ALARM_FILE)
         path, _filter = QFileDialog.getOpenFileName(
-            self, _tr("Alarm message file"), start, _tr("Alarm files (*.dat);;All files (*)"))
+            self,
+            translate("AlarmPanel", "Alarm message file"),
+            start,
+            translate("AlarmPanel", "Alarm files (*.dat);;All files (*)"),
+        )
         if path:
             self.load_file(path)
 
     def _show_file(self) -> None:
         if self.alarm_file is None:
-            self.file_label.setText(_tr("No alarm file"))
+            self.file_label.setText(translate("AlarmPanel", "No alarm file"))
             return
-        text = _tr("{0}: {1} messages").format(
-            self.alarm_file.name, len(self.session.alarm_table))
+        text = translate("AlarmPanel", "{0}: {1} messages").format(
+            self.alarm_file.name, len(self.session.alarm_table)
+        )
         if self.file_problems:
-            text += " · " + _tr("{0} lines with problems").format(len(self.file_problems))
+            text += " · " + translate("AlarmPanel", "{0} lines with problems").format(
+                len(self.file_problems)
+            )
         self.file_label.setText(text)
         self.file_label.setStyleSheet("color:#a05000;" if self.file_problems else "")
-        self.file_label.setToolTip("\n".join(
-            _tr("line {0}: {1}").format(d.line, diagnostic_text(d)) for d in self.file_problems))
+        self.file_label.setToolTip(
+            "\n".join(
+                translate("AlarmPanel", "line {0}: {1}").format(d.line, diagnostic_text(d))
+                for d in self.file_problems
+            )
+        )
 
     # -- the list ------------------------------------------------------------------------------
 
@@ -146,8 +156,9 @@ class AlarmDock(QDockWidget):
     def message_of(self, alarm: ActiveAlarm) -> str:
         """The alarm's text from the file now loaded (or a note that the file has none)."""
         text = self.session.alarm_table.text_for(alarm.number) or alarm.text
-        return text or _tr("(no message {0} in the alarm file)").format(
-            format_number(alarm.number))
+        return text or translate("AlarmPanel", "(no message {0} in the alarm file)").format(
+            format_number(alarm.number)
+        )
 
     def _on_alarms(self, alarms: list[ActiveAlarm]) -> None:
         self._alarms = list(alarms)
@@ -163,38 +174,53 @@ class AlarmDock(QDockWidget):
         grey = QBrush(QColor("#888888"))
         for alarm in self._alarms:
             seen = self._seen.get((alarm.number, alarm.raised_ms))
-            item = QTreeWidgetItem([
-                format_number(alarm.number),
-                str(alarm.address),
-                plc_time_text(alarm.raised_ms),
-                seen.strftime("%H:%M:%S") if seen is not None else "",
-                self.message_of(alarm),
-            ])
+            item = QTreeWidgetItem(
+                [
+                    format_number(alarm.number),
+                    str(alarm.address),
+                    plc_time_text(alarm.raised_ms),
+                    seen.strftime("%H:%M:%S") if seen is not None else "",
+                    self.message_of(alarm),
+                ]
+            )
             if alarm.active:
                 item.setForeground(0, QBrush(QColor("#c00000")))
             else:
                 for column in range(COLUMNS):
                     item.setForeground(column, grey)
-                item.setToolTip(4, _tr("The bit is 0 again: RESET clears this alarm"))
+                item.setToolTip(
+                    4, translate("AlarmPanel", "The bit is 0 again: RESET clears this alarm")
+                )
             self.tree.addTopLevelItem(item)
         for column in range(COLUMNS - 1):
             self.tree.resizeColumnToContents(column)
 
     def shown_rows(self) -> list[list[str]]:
         """The texts of the list, row by row (for tests and for copying)."""
-        return [[self.tree.topLevelItem(row).text(column) for column in range(COLUMNS)]
-                for row in range(self.tree.topLevelItemCount())]
+        return [
+            [self.tree.topLevelItem(row).text(column) for column in range(COLUMNS)]
+            for row in range(self.tree.topLevelItemCount())
+        ]
 
     # -- language ------------------------------------------------------------------------------
 
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
-        self.setWindowTitle(_tr("Alarms"))
-        self.reset_action.setText(_tr("RESET"))
-        self.reset_action.setToolTip(_tr("Clear the alarms whose bit is 0 (the reset key)"))
-        self.file_action.setText(_tr("Alarm file..."))
-        self.tree.setHeaderLabels([_tr("No."), _tr("Bit"), _tr("PLC time"), _tr("Clock"),
-                                   _tr("Message")])
+        self.setWindowTitle(translate("AlarmPanel", "Alarms"))
+        self.reset_action.setText(translate("AlarmPanel", "RESET"))
+        self.reset_action.setToolTip(
+            translate("AlarmPanel", "Clear the alarms whose bit is 0 (the reset key)")
+        )
+        self.file_action.setText(translate("AlarmPanel", "Alarm file..."))
+        self.tree.setHeaderLabels(
+            [
+                translate("AlarmPanel", "No."),
+                translate("AlarmPanel", "Bit"),
+                translate("AlarmPanel", "PLC time"),
+                translate("AlarmPanel", "Clock"),
+                translate("AlarmPanel", "Message"),
+            ]
+        )
         self._show_file()
         self._fill()
 

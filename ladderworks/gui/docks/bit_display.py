@@ -34,10 +34,6 @@ _FORCED = "border:2px solid #e07000;font-weight:bold;"
 _PLAIN = "border:1px solid #999;"
 
 
-def _tr(text: str) -> str:
-    return translate("BitDisplay", text)
-
-
 class BitButton(QToolButton):
     """One bit of a displayed byte: 0/1, green when on, an orange frame when forced."""
 
@@ -74,7 +70,8 @@ class BitRow:
         for bit_button in self.bits:
             bit_button.clicked.connect(lambda _c=False, b=bit_button: dock.toggle_bit(b))
             bit_button.customContextMenuRequested.connect(
-                lambda pos, b=bit_button: dock.bit_menu(b, pos))
+                lambda pos, b=bit_button: dock.bit_menu(b, pos)
+            )
         self.hex_label = QLabel(parent)
         self.hex_label.setObjectName(f"bitDisplayHex_{index}")
         self.hex_label.setMinimumWidth(40)
@@ -219,15 +216,17 @@ class BitDisplayDock(QDockWidget):
         value = snapshot.read(address) if address is not None and snapshot is not None else None
         row.value = value
         for button in row.bits:
-            forced = (self._forced.get(address.with_bit(button.bit))
-                      if address is not None else None)
+            forced = self._forced.get(address.with_bit(button.bit)) if address is not None else None
             button.show_value(None if value is None else value >> button.bit & 1, forced)
         row.hex_label.setText("" if value is None else f"{value:02X}h")
         row.dec_label.setText("" if value is None else str(value))
 
     def _on_forces(self, entries: list[ForceEntry]) -> None:
-        self._forced = {entry.address: bool(entry.value) for entry in entries
-                        if entry.kind == "force" and entry.address is not None}
+        self._forced = {
+            entry.address: bool(entry.value)
+            for entry in entries
+            if entry.kind == "force" and entry.address is not None
+        }
         for row in self.rows:
             if row.address is not None:
                 self._set_tooltips(row)
@@ -237,8 +236,9 @@ class BitDisplayDock(QDockWidget):
 
     def _set_tooltips(self, row: BitRow) -> None:
         for button in row.bits:
-            button.setToolTip("" if row.address is None
-                              else self.bit_tooltip(row.address.with_bit(button.bit)))
+            button.setToolTip(
+                "" if row.address is None else self.bit_tooltip(row.address.with_bit(button.bit))
+            )
 
     def bit_tooltip(self, address: Address) -> str:
         """The signal name and descriptions of a bit, whether it can be forced, and its force."""
@@ -249,9 +249,11 @@ class BitDisplayDock(QDockWidget):
             lines += [text for text in (signal.turkish, signal.english, signal.notes) if text]
         forced = self._forced.get(address)
         if forced is not None:
-            lines.append(_tr("Forced to {0}").format(int(forced)))
+            lines.append(translate("BitDisplay", "Forced to {0}").format(int(forced)))
         if address.area in INPUT_AREAS:
-            lines.append(_tr("Click: force to the other value; right-click: force menu"))
+            lines.append(
+                translate("BitDisplay", "Click: force to the other value; right-click: force menu")
+            )
         return "\n".join(lines)
 
     # -- forcing ---------------------------------------------------------------------------
@@ -268,7 +270,7 @@ class BitDisplayDock(QDockWidget):
         if address is None:
             return
         if self.session.engine is None:
-            self.state_label.setText(_tr("Load a program to force inputs"))
+            self.state_label.setText(translate("BitDisplay", "Load a program to force inputs"))
             return
         current = self._forced.get(address)
         if current is None:
@@ -283,12 +285,21 @@ class BitDisplayDock(QDockWidget):
         menu = QMenu(self)
         menu.setObjectName("bitDisplayForceMenu")
         for name, text, slot in (
-            ("action_bit_force_1", _tr("Force to 1"),
-             lambda: self.session.force(address, True)),
-            ("action_bit_force_0", _tr("Force to 0"),
-             lambda: self.session.force(address, False)),
-            ("action_bit_release", _tr("Release the force"),
-             lambda: self.session.release(address)),
+            (
+                "action_bit_force_1",
+                translate("BitDisplay", "Force to 1"),
+                lambda: self.session.force(address, True),
+            ),
+            (
+                "action_bit_force_0",
+                translate("BitDisplay", "Force to 0"),
+                lambda: self.session.force(address, False),
+            ),
+            (
+                "action_bit_release",
+                translate("BitDisplay", "Release the force"),
+                lambda: self.session.release(address),
+            ),
         ):
             action = QAction(text, menu)
             action.setObjectName(name)
@@ -299,20 +310,22 @@ class BitDisplayDock(QDockWidget):
     # -- language --------------------------------------------------------------------------
 
     def _update_state(self) -> None:
-        self.state_label.setText(_tr("Live") if self.live else _tr("Stopped"))
+        self.state_label.setText(
+            translate("BitDisplay", "Live") if self.live else translate("BitDisplay", "Stopped")
+        )
         self.start_button.setEnabled(True)
         self.stop_button.setEnabled(self.live)
 
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
-        self.setWindowTitle(_tr("PLC bit display"))
-        self.start_button.setText(_tr("START"))
-        self.stop_button.setText(_tr("STOP"))
-        self.address_header.setText(_tr("Byte"))
-        self.hex_header.setText(_tr("Hex"))
-        self.dec_header.setText(_tr("Dec"))
+        self.setWindowTitle(translate("BitDisplay", "PLC bit display"))
+        self.start_button.setText(translate("BitDisplay", "START"))
+        self.stop_button.setText(translate("BitDisplay", "STOP"))
+        self.address_header.setText(translate("BitDisplay", "Byte"))
+        self.hex_header.setText(translate("BitDisplay", "Hex"))
+        self.dec_header.setText(translate("BitDisplay", "Dec"))
         for row in self.rows:
-            row.edit.setPlaceholderText(_tr("e.g. X12"))
+            row.edit.setPlaceholderText(translate("BitDisplay", "e.g. X12"))
             if row.edit.text().strip():
                 self._parse(row)
                 if self.live:

@@ -72,50 +72,80 @@ EDITABLE: dict[TableKind, tuple[int, ...]] = {
 _READ_ONLY = QBrush(QColor("#eeeeee"))
 
 
-def _tr(text: str) -> str:
-    return translate("PlcTables", text)
-
-
 def table_error_text(error: TableError) -> str:
     """A refused value in the current UI language."""
     args = error.args_map
     if error.code == "not-number":
-        return _tr("'{0}' is not a number").format(args.get("text", ""))
+        return translate("PlcTables", "'{0}' is not a number").format(args.get("text", ""))
     if error.code == "range":
-        return _tr("{0} is out of range ({1} to {2})").format(
-            args.get("value"), args.get("low"), args.get("high"))
+        return translate("PlcTables", "{0} is out of range ({1} to {2})").format(
+            args.get("value"), args.get("low"), args.get("high")
+        )
     if error.code == "width":
-        return _tr("{0} bytes: a value has 1, 2 or 4 bytes").format(args.get("value"))
+        return translate("PlcTables", "{0} bytes: a value has 1, 2 or 4 bytes").format(
+            args.get("value")
+        )
     if error.code == "bits":
-        return _tr("'{0}': type up to 8 binary digits (0 and 1), bit 7 first").format(
-            args.get("text", ""))
+        return translate(
+            "PlcTables", "'{0}': type up to 8 binary digits (0 and 1), bit 7 first"
+        ).format(args.get("text", ""))
     if error.code == "fixed":
-        return _tr("TMRB {0}: its preset is fixed in the program and cannot be changed here"
-                   ).format(args.get("number"))
+        return translate(
+            "PlcTables", "TMRB {0}: its preset is fixed in the program and cannot be changed here"
+        ).format(args.get("number"))
     return error.code
 
 
 def headers(kind: TableKind) -> list[str]:
     """The column titles of a table in the current UI language."""
     if kind is TableKind.TIMER:
-        return [_tr("No."), _tr("Type"), _tr("Preset (ms)"), _tr("Tick (ms)"),
-                _tr("Delay (ms)")]
+        return [
+            translate("PlcTables", "No."),
+            translate("PlcTables", "Type"),
+            translate("PlcTables", "Preset (ms)"),
+            translate("PlcTables", "Tick (ms)"),
+            translate("PlcTables", "Delay (ms)"),
+        ]
     if kind is TableKind.COUNTER:
-        return [_tr("No."), _tr("Preset"), _tr("Current value")]
+        return [
+            translate("PlcTables", "No."),
+            translate("PlcTables", "Preset"),
+            translate("PlcTables", "Current value"),
+        ]
     if kind is TableKind.DATA:
-        return [_tr("Address"), _tr("Bytes"), _tr("Value"), _tr("Hex")]
-    return [_tr("Address"), _tr("Bits 7..0"), _tr("Hex")]
+        return [
+            translate("PlcTables", "Address"),
+            translate("PlcTables", "Bytes"),
+            translate("PlcTables", "Value"),
+            translate("PlcTables", "Hex"),
+        ]
+    return [
+        translate("PlcTables", "Address"),
+        translate("PlcTables", "Bits 7..0"),
+        translate("PlcTables", "Hex"),
+    ]
 
 
 def form_fields(kind: TableKind) -> list[str]:
     """The INSERT form's fields of a table."""
     if kind is TableKind.TIMER:
-        return [_tr("Timer number (1-100)"), _tr("Preset (ms)")]
+        return [
+            translate("PlcTables", "Timer number (1-100)"),
+            translate("PlcTables", "Preset (ms)"),
+        ]
     if kind is TableKind.COUNTER:
-        return [_tr("Counter number (1-20)"), _tr("Preset"), _tr("Current value")]
+        return [
+            translate("PlcTables", "Counter number (1-20)"),
+            translate("PlcTables", "Preset"),
+            translate("PlcTables", "Current value"),
+        ]
     if kind is TableKind.DATA:
-        return [_tr("Address (D)"), _tr("Bytes"), _tr("Value")]
-    return [_tr("Address (K)"), _tr("Bits 7..0")]
+        return [
+            translate("PlcTables", "Address (D)"),
+            translate("PlcTables", "Bytes"),
+            translate("PlcTables", "Value"),
+        ]
+    return [translate("PlcTables", "Address (K)"), translate("PlcTables", "Bits 7..0")]
 
 
 def row_key(row: Row) -> tuple[object, ...]:
@@ -132,27 +162,35 @@ def row_key(row: Row) -> tuple[object, ...]:
 def row_texts(row: Row) -> list[str]:
     """The cells of a row."""
     if isinstance(row, TimerRow):
-        return [str(row.number), "TMRB" if row.fixed else "TMR", str(row.preset_ms),
-                str(row.tick_ms), str(row.effective_ms)]
+        return [
+            str(row.number),
+            "TMRB" if row.fixed else "TMR",
+            str(row.preset_ms),
+            str(row.tick_ms),
+            str(row.effective_ms),
+        ]
     if isinstance(row, CounterRow):
         return [str(row.number), str(row.preset), str(row.value)]
     if isinstance(row, DataRow):
         unsigned = row.value & ((1 << (8 * row.width)) - 1)
-        return [str(row.address), str(row.width), str(row.value),
-                f"{unsigned:0{2 * row.width}X}h"]
+        return [str(row.address), str(row.width), str(row.value), f"{unsigned:0{2 * row.width}X}h"]
     return [f"K{row.byte}", row.bits, f"{row.value:02X}h"]
 
 
 class InsertRowDialog(QDialog):
     """The INSERT form of a table: its fields, validated when OK is pressed."""
 
-    def __init__(self, kind: TableKind, accept_texts: Callable[[list[str]], str | None],
-                 parent: QWidget | None = None) -> None:
+    def __init__(
+        self,
+        kind: TableKind,
+        accept_texts: Callable[[list[str]], str | None],
+        parent: QWidget | None = None,
+    ) -> None:
         super().__init__(parent)
         self.setObjectName("plcTablesInsertDialog")
         self.kind = kind
         self._accept_texts = accept_texts
-        self.setWindowTitle(_tr("INSERT"))
+        self.setWindowTitle(translate("PlcTables", "INSERT"))
         layout = QVBoxLayout(self)
         form = QFormLayout()
         self.fields: list[QLineEdit | QComboBox] = []
@@ -173,7 +211,8 @@ class InsertRowDialog(QDialog):
         self.error.setWordWrap(True)
         layout.addWidget(self.error)
         buttons = QDialogButtonBox(
-            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self)
+            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self
+        )
         buttons.accepted.connect(self.try_accept)
         buttons.rejected.connect(self.reject)
         layout.addWidget(buttons)
@@ -188,8 +227,10 @@ class InsertRowDialog(QDialog):
 
     def texts(self) -> list[str]:
         """What the fields hold."""
-        return [field.currentText() if isinstance(field, QComboBox) else field.text()
-                for field in self.fields]
+        return [
+            field.currentText() if isinstance(field, QComboBox) else field.text()
+            for field in self.fields
+        ]
 
     def try_accept(self) -> None:
         """OK: insert the row, or show why not and stay open."""
@@ -229,13 +270,14 @@ class PlcTablesDock(QDockWidget):
             table.setAlternatingRowColors(True)
             table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
             table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
-            table.setEditTriggers(QAbstractItemView.EditTrigger.DoubleClicked
-                                  | QAbstractItemView.EditTrigger.EditKeyPressed
-                                  | QAbstractItemView.EditTrigger.AnyKeyPressed)
+            table.setEditTriggers(
+                QAbstractItemView.EditTrigger.DoubleClicked
+                | QAbstractItemView.EditTrigger.EditKeyPressed
+                | QAbstractItemView.EditTrigger.AnyKeyPressed
+            )
             table.horizontalHeader().setStretchLastSection(True)
             table.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
-            table.customContextMenuRequested.connect(
-                lambda pos, k=kind: self._context_menu(k, pos))
+            table.customContextMenuRequested.connect(lambda pos, k=kind: self._context_menu(k, pos))
             table.itemChanged.connect(lambda item, k=kind: self._on_item_changed(k, item))
             self.tables[kind] = table
             self.tabs.addTab(table, "")
@@ -305,8 +347,11 @@ class PlcTablesDock(QDockWidget):
                     else:
                         item.setBackground(_READ_ONLY)
                     item.setFlags(flags)
-                    item.setToolTip(_tr("TMRB: the preset is fixed in the program")
-                                    if fixed else "")
+                    item.setToolTip(
+                        translate("PlcTables", "TMRB: the preset is fixed in the program")
+                        if fixed
+                        else ""
+                    )
             if not same_keys:
                 table.resizeColumnsToContents()
         finally:
@@ -316,8 +361,10 @@ class PlcTablesDock(QDockWidget):
     def cell_texts(self, kind: TableKind) -> list[list[str]]:
         """What a table shows, row by row."""
         table = self.tables[kind]
-        return [[table.item(row, column).text() for column in range(table.columnCount())]
-                for row in range(table.rowCount())]
+        return [
+            [table.item(row, column).text() for column in range(table.columnCount())]
+            for row in range(table.rowCount())
+        ]
 
     # -- editing -------------------------------------------------------------------------------
 
@@ -431,10 +478,10 @@ class PlcTablesDock(QDockWidget):
         """The right-click menu of a table at `row` (-1: below the rows): INSERT, DELETE."""
         menu = QMenu(self)
         menu.setObjectName("plcTablesMenu")
-        self.insert_action = QAction(_tr("INSERT"), menu)
+        self.insert_action = QAction(translate("PlcTables", "INSERT"), menu)
         self.insert_action.setObjectName("action_table_insert")
         self.insert_action.triggered.connect(lambda: self.open_insert_dialog(kind))
-        self.delete_action = QAction(_tr("DELETE"), menu)
+        self.delete_action = QAction(translate("PlcTables", "DELETE"), menu)
         self.delete_action.setObjectName("action_table_delete")
         self.delete_action.triggered.connect(lambda: self.delete_row(kind, row))
         self.delete_action.setEnabled(0 <= row < len(self.rows[kind]))
@@ -463,19 +510,22 @@ class PlcTablesDock(QDockWidget):
 
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
-        self.setWindowTitle(_tr("PLC tables"))
+        self.setWindowTitle(translate("PlcTables", "PLC tables"))
         titles = {
-            TableKind.TIMER: _tr("Timers (TMR)"),
-            TableKind.COUNTER: _tr("Counters (CTR)"),
-            TableKind.DATA: _tr("Data table (D)"),
-            TableKind.KEEP: _tr("Keep relays (K)"),
+            TableKind.TIMER: translate("PlcTables", "Timers (TMR)"),
+            TableKind.COUNTER: translate("PlcTables", "Counters (CTR)"),
+            TableKind.DATA: translate("PlcTables", "Data table (D)"),
+            TableKind.KEEP: translate("PlcTables", "Keep relays (K)"),
         }
         for index, kind in enumerate(TableKind):
             self.tabs.setTabText(index, titles[kind])
             self.tables[kind].setHorizontalHeaderLabels(headers(kind))
         self.tables[TableKind.TIMER].setToolTip(
-            _tr("Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms"
-                ).format(MAX_TIMER_MS))
+            translate(
+                "PlcTables",
+                "Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms",
+            ).format(MAX_TIMER_MS)
+        )
 
     def changeEvent(self, event: QEvent) -> None:
         """Retranslate on a language change."""

@@ -39,12 +39,7 @@ LANE_HEIGHT = 1.6  # a lane's trace spans 0..1 of it; the rest separates it from
 DEFAULT_PERIOD_MS = 8
 MAX_PERIOD_MS = 60_000
 _SPLIT = re.compile(r"[\s,;]+")
-_COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b",
-            "#e377c2")
-
-
-def _tr(text: str) -> str:
-    return translate("TimeChart", text)
+_COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
 
 
 class TimeChartDock(QDockWidget):
@@ -118,8 +113,7 @@ class TimeChartDock(QDockWidget):
         for side in ("left", "bottom"):
             item.getAxis(side).setTextPen("k")
             item.getAxis(side).setPen("k")
-        self.cursor = pg.InfiniteLine(angle=90, movable=True,
-                                      pen=pg.mkPen("#e07000", width=1.5))
+        self.cursor = pg.InfiniteLine(angle=90, movable=True, pen=pg.mkPen("#e07000", width=1.5))
         self.cursor.setZValue(10)
         self.cursor.sigPositionChanged.connect(self._show_cursor)
         item.addItem(self.cursor, ignoreBounds=True)
@@ -141,7 +135,10 @@ class TimeChartDock(QDockWidget):
         """The lanes typed in the box (None and a message when one is wrong or none is given)."""
         texts = [text for text in _SPLIT.split(self.signals_edit.text().strip()) if text]
         if not texts:
-            self._say(_tr("Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)"), error=True)
+            self._say(
+                translate("TimeChart", "Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)"),
+                error=True,
+            )
             return None
         signals: list[TracedSignal] = []
         for text in texts:
@@ -159,17 +156,18 @@ class TimeChartDock(QDockWidget):
         if signals is None:
             return False
         if self.session.engine is None:
-            self._say(_tr("Load (compile) a PLC program first"), error=True)
+            self._say(translate("TimeChart", "Load (compile) a PLC program first"), error=True)
             return False
         period = self.period_spin.value()
         self.record = TraceRecord(signals)
         self.record.period_ms = max(period, self.session.engine.period_ms)
         self._make_lanes()
-        self.session.start_trace([s.address for s in signals], period,
-                                 widths=[s.width for s in signals])
+        self.session.start_trace(
+            [s.address for s in signals], period, widths=[s.width for s in signals]
+        )
         self.sampling = True
         self.fit()
-        self._say(_tr("Sampling every {0} ms").format(period))
+        self._say(translate("TimeChart", "Sampling every {0} ms").format(period))
         self._update_actions()
         return True
 
@@ -180,7 +178,7 @@ class TimeChartDock(QDockWidget):
         self.session.stop_trace()
         self._take_samples()
         self.sampling = False
-        self._say(_tr("Stopped: {0} samples").format(len(self.record)))
+        self._say(translate("TimeChart", "Stopped: {0} samples").format(len(self.record)))
         self._update_actions()
 
     def clear(self) -> None:
@@ -193,7 +191,7 @@ class TimeChartDock(QDockWidget):
 
     def _on_program_loaded(self, _program: object) -> None:
         if self.sampling:  # the session keeps the sampler across a reload
-            self._say(_tr("New program loaded; sampling goes on"))
+            self._say(translate("TimeChart", "New program loaded; sampling goes on"))
 
     def _take_samples(self, _snapshot: object = None) -> None:
         if not self.sampling:
@@ -225,8 +223,12 @@ class TimeChartDock(QDockWidget):
             fill = QColor(colour)
             fill.setAlpha(50)
             base = self.lane_base(lane)
-            curve = pg.PlotDataItem(stepMode="center", pen=pg.mkPen(colour, width=2),
-                                    fillLevel=base, brush=fill if signal.is_bit else None)
+            curve = pg.PlotDataItem(
+                stepMode="center",
+                pen=pg.mkPen(colour, width=2),
+                fillLevel=base,
+                brush=fill if signal.is_bit else None,
+            )
             item.addItem(curve)
             self._curves.append(curve)
             ticks.append((base + 0.5, self.lane_name(signal)))
@@ -287,17 +289,24 @@ class TimeChartDock(QDockWidget):
     def cursor_values(self) -> dict[str, int | None]:
         """Each lane's value at the cursor, by lane label (None outside the record)."""
         at = self.cursor.value()
-        return {signal.label: self.record.value_at(lane, at)
-                for lane, signal in enumerate(self.record.signals)}
+        return {
+            signal.label: self.record.value_at(lane, at)
+            for lane, signal in enumerate(self.record.signals)
+        }
 
     def _show_cursor(self, *_args: object) -> None:
         if not self.record.signals:
             self.cursor_label.setText("")
             return
-        values = "   ".join(f"{label} = {'–' if value is None else value}"
-                            for label, value in self.cursor_values().items())
+        values = "   ".join(
+            f"{label} = {'–' if value is None else value}"
+            for label, value in self.cursor_values().items()
+        )
         self.cursor_label.setText(
-            _tr("Cursor {0} ms:").format(round(self.cursor.value())) + "   " + values)
+            translate("TimeChart", "Cursor {0} ms:").format(round(self.cursor.value()))
+            + "   "
+            + values
+        )
 
     # -- export ------------------------------------------------------------------------------
 
@@ -306,30 +315,41 @@ class TimeChartDock(QDockWidget):
         try:
             atomic_write(path, self.record.csv_text())
         except OSError as error:
-            self._say(_tr("Cannot write {0}: {1}").format(path, error.strerror), error=True)
+            self._say(
+                translate("TimeChart", "Cannot write {0}: {1}").format(path, error.strerror),
+                error=True,
+            )
             return False
-        self._say(_tr("Saved {0}").format(path))
+        self._say(translate("TimeChart", "Saved {0}").format(path))
         return True
 
     def export_png(self, path: str | Path) -> bool:
         """Save the chart as a PNG picture."""
         if not self.plot.grab().save(str(path), "PNG"):
-            self._say(_tr("Cannot write {0}").format(path), error=True)
+            self._say(translate("TimeChart", "Cannot write {0}").format(path), error=True)
             return False
-        self._say(_tr("Saved {0}").format(path))
+        self._say(translate("TimeChart", "Saved {0}").format(path))
         return True
 
     def export_csv_dialog(self) -> None:
         """Ask for a file and export the CSV."""
         path, _filter = QFileDialog.getSaveFileName(
-            self, _tr("Export time chart as CSV"), "trace.csv", _tr("CSV files (*.csv)"))
+            self,
+            translate("TimeChart", "Export time chart as CSV"),
+            "trace.csv",
+            translate("TimeChart", "CSV files (*.csv)"),
+        )
         if path:
             self.export_csv(path)
 
     def export_png_dialog(self) -> None:
         """Ask for a file and export the PNG."""
         path, _filter = QFileDialog.getSaveFileName(
-            self, _tr("Export time chart as PNG"), "trace.png", _tr("PNG pictures (*.png)"))
+            self,
+            translate("TimeChart", "Export time chart as PNG"),
+            "trace.png",
+            translate("TimeChart", "PNG pictures (*.png)"),
+        )
         if path:
             self.export_png(path)
 
@@ -347,25 +367,29 @@ class TimeChartDock(QDockWidget):
 
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
-        self.setWindowTitle(_tr("PLC time chart"))
-        self.signals_label.setText(_tr("Signals:"))
-        self.signals_edit.setPlaceholderText(_tr("e.g. R1.4 R1.7 D10:2"))
-        self.period_label.setText(_tr("Sampling time:"))
+        self.setWindowTitle(translate("TimeChart", "PLC time chart"))
+        self.signals_label.setText(translate("TimeChart", "Signals:"))
+        self.signals_edit.setPlaceholderText(translate("TimeChart", "e.g. R1.4 R1.7 D10:2"))
+        self.period_label.setText(translate("TimeChart", "Sampling time:"))
         for name, text in (
-            ("action_time_chart_start", _tr("START")),
-            ("action_time_chart_stop", _tr("STOP")),
-            ("action_time_chart_clear", _tr("CLEAR")),
-            ("action_time_chart_fit", _tr("Fit")),
-            ("action_time_chart_zoom_in", _tr("Zoom in")),
-            ("action_time_chart_zoom_out", _tr("Zoom out")),
-            ("action_time_chart_csv", _tr("CSV...")),
-            ("action_time_chart_png", _tr("PNG...")),
+            ("action_time_chart_start", translate("TimeChart", "START")),
+            ("action_time_chart_stop", translate("TimeChart", "STOP")),
+            ("action_time_chart_clear", translate("TimeChart", "CLEAR")),
+            ("action_time_chart_fit", translate("TimeChart", "Fit")),
+            ("action_time_chart_zoom_in", translate("TimeChart", "Zoom in")),
+            ("action_time_chart_zoom_out", translate("TimeChart", "Zoom out")),
+            ("action_time_chart_csv", translate("TimeChart", "CSV...")),
+            ("action_time_chart_png", translate("TimeChart", "PNG...")),
         ):
             self.chart_actions[name].setText(text)
         actions = self.chart_actions
-        actions["action_time_chart_csv"].setToolTip(_tr("Export the samples as CSV"))
-        actions["action_time_chart_png"].setToolTip(_tr("Save the chart as a PNG picture"))
-        self.plot.getPlotItem().setLabel("bottom", _tr("time (ms)"))
+        actions["action_time_chart_csv"].setToolTip(
+            translate("TimeChart", "Export the samples as CSV")
+        )
+        actions["action_time_chart_png"].setToolTip(
+            translate("TimeChart", "Save the chart as a PNG picture")
+        )
+        self.plot.getPlotItem().setLabel("bottom", translate("TimeChart", "time (ms)"))
         self._show_cursor()
 
     def changeEvent(self, event: QEvent) -> None:
