@@ -1330,22 +1330,22 @@
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="515"/>
         <source>Timers (TMR)</source>
-        <translation>Zamanlayıcılar (TMR)</translation>
+        <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="516"/>
         <source>Counters (CTR)</source>
-        <translation>Sayıcılar (CTR)</translation>
+        <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="517"/>
         <source>Data table (D)</source>
-        <translation>Veri tablosu (D)</translation>
+        <translation>Veri (D)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="518"/>
         <source>Keep relays (K)</source>
-        <translation>Tutma röleleri (K)</translation>
+        <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="524"/>

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pyqtgraph as pg
 from PySide6.QtCore import QCoreApplication, QEvent, Qt
-from PySide6.QtGui import QAction, QColor
+from PySide6.QtGui import QAction, QColor, QFontMetrics
 from PySide6.QtWidgets import (
     QDockWidget,
     QFileDialog,
@@ -51,7 +51,8 @@ class TimeChartDock(QDockWidget):
         self.session = session
         self.record = TraceRecord()
         self.sampling = False
-        self._curves: list[pg.PlotDataItem] = []
+        self._curves: list[pg.PlotDataItem] = []  # one step trace per lane
+        self._fills: list[pg.PlotDataItem] = []  # the shading under each bit lane
         body = QWidget(self)
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
@@ -214,25 +215,29 @@ class TimeChartDock(QDockWidget):
 
     def _make_lanes(self) -> None:
         item = self.plot.getPlotItem()
-        for curve in self._curves:
+        for curve in self._curves + self._fills:
             item.removeItem(curve)
         self._curves = []
+        self._fills = []
         ticks = []
         for lane, signal in enumerate(self.record.signals):
             colour = QColor(_COLOURS[lane % len(_COLOURS)])
-            fill = QColor(colour)
-            fill.setAlpha(50)
             base = self.lane_base(lane)
-            curve = pg.PlotDataItem(
-                stepMode="center",
-                pen=pg.mkPen(colour, width=2),
-                fillLevel=base,
-                brush=fill if signal.is_bit else None,
-            )
+            if signal.is_bit:  # a shaded 1-level; its own item, so no edge is drawn at the ends
+                fill = QColor(colour)
+                fill.setAlpha(50)
+                shade = pg.PlotDataItem(stepMode="center", pen=None, fillLevel=base, brush=fill)
+                item.addItem(shade)
+                self._fills.append(shade)
+            curve = pg.PlotDataItem(stepMode="center", pen=pg.mkPen(colour, width=2))
             item.addItem(curve)
             self._curves.append(curve)
             ticks.append((base + 0.5, self.lane_name(signal)))
-        item.getAxis("left").setTicks([ticks, []])
+        axis = item.getAxis("left")
+        axis.setTicks([ticks, []])
+        metrics = QFontMetrics(axis.font() if hasattr(axis, "font") else self.font())
+        widest = max((metrics.horizontalAdvance(label) for _y, label in ticks), default=20)
+        axis.setWidth(widest + 16)
         count = max(len(self.record.signals), 1)
         item.getViewBox().setYRange(-0.3, (count - 1) * LANE_HEIGHT + 1.3, padding=0)
         self._redraw()
@@ -246,12 +251,12 @@ class TimeChartDock(QDockWidget):
         return [float(x) for x in xs], [base + value / scale for value in values]
 
     def _redraw(self) -> None:
+        fills = iter(self._fills)
         for lane, curve in enumerate(self._curves):
             xs, ys = self.lane_points(lane)
-            if xs:
-                curve.setData(xs, ys)
-            else:
-                curve.setData([], [])
+            curve.setData(xs, ys)
+            if self.record.signals[lane].is_bit:
+                next(fills).setData(xs, ys)
         if self.record.times and self.cursor.value() < self.record.times[0]:
             self.cursor.setValue(self.record.times[0])
         self._show_cursor()
