@@ -201,3 +201,24 @@ def test_turkish(qtbot: QtBot, tables: tuple[PlcSession, PlcTablesDock]) -> None
         assert dock.edit_cell(TableKind.TIMER, 0, 2, "abc") == "'abc' bir sayı değil"
     finally:
         language.apply("en")
+
+
+def test_every_dock_installs_with_one_line(qtbot: QtBot, window: object) -> None:
+    from PySide6.QtWidgets import QDockWidget, QMenu
+
+    from ladderworks.gui.docks import alarms, bit_display, tables, time_chart
+
+    session = PlcSession(realtime=False)
+    docks = [module.install(window, session)  # type: ignore[arg-type]
+             for module in (bit_display, time_chart, alarms, tables)]
+    assert [d.objectName() for d in docks] == ["bitDisplayDock", "timeChartDock", "alarmDock",
+                                               "plcTablesDock"]
+    found = window.findChildren(QDockWidget)  # type: ignore[attr-defined]
+    assert all(dock in found for dock in docks)
+    view = window.findChild(QMenu, "menu_view")  # type: ignore[attr-defined]
+    names = [action.objectName() for action in view.actions()]
+    for name in ("action_dock_bit_display", "action_dock_time_chart", "action_dock_alarms",
+                 "action_dock_plc_tables"):
+        assert name in names
+        window.actions_by_name[name].trigger()  # type: ignore[attr-defined]
+    assert all(dock.isVisible() for dock in docks)
