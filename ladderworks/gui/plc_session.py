@@ -5,7 +5,8 @@ Public API (stable; docks of issues 7 and 8 build on it)::
     session = PlcSession(parent=None, realtime=True, period_ms=8, publish_ms=40)
 
     # program
-    session.load(binary: bytes) -> list[Diagnostic]       # [] when loaded (errors as data)
+    session.load(binary: bytes, program=None) -> list[Diagnostic]  # [] when loaded
+    session.program -> Program | None                       # its source, when known
     session.load_program(program: Program) -> CompileResult  # compile + load
     session.binary -> BinaryProgram | None                  # ops with their source map
     session.engine -> ScanEngine | None
@@ -185,6 +186,7 @@ class PlcSession(QObject):
         self.memory = Memory()
         self.engine: ScanEngine | None = None
         self.binary: BinaryProgram | None = None
+        self.program: Program | None = None  # the source of the binary, when known
         self.alarm_table = AlarmTable()
         self._alarms = ActiveAlarms(self.alarm_table)
         self._alarm_view: list[ActiveAlarm] = []
@@ -205,8 +207,9 @@ class PlcSession(QObject):
 
     # -- the program ---------------------------------------------------------------------
 
-    def load(self, binary: bytes) -> list[Diagnostic]:
-        """Load a compiled binary (the PLC stops first); the diagnostics if it is refused."""
+    def load(self, binary: bytes, program: Program | None = None) -> list[Diagnostic]:
+        """Load a compiled binary (the PLC stops first); the diagnostics if it is refused.
+        `program` is the source it was compiled from (views use its comments), if known."""
         try:
             engine = ScanEngine(binary, period_ms=self.period_ms, memory=self.memory)
         except DiagnosticError as error:
@@ -215,6 +218,7 @@ class PlcSession(QObject):
         old = self.engine
         self.engine = engine
         self.binary = engine.program
+        self.program = program
         engine.cold_start()
         engine.monitored = self._monitors > 0
         if old is not None:
@@ -235,7 +239,7 @@ class PlcSession(QObject):
         """Compile a program and load it when it compiles."""
         result = compile_program(program)
         if result.binary is not None:
-            problems = self.load(result.binary)
+            problems = self.load(result.binary, program)
             if problems:
                 return CompileResult(None, result.diagnostics + problems)
         return result

@@ -1,0 +1,264 @@
+"""PLC TEŞHİS: the running program as ladder, look only, power flow drawn live."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt
+from PySide6.QtGui import QBrush, QColor, QPainter
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QDockWidget,
+    QGraphicsScene,
+    QGraphicsView,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QVBoxLayout,
+    QWidget,
+)
+
+from ladderworks.core.address import Address, AddressError, parse_address
+from ladderworks.core.compiler.binary import BinaryProgram
+from ladderworks.core.ladder.layout import layout_network
+from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork
+from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
+from ladderworks.gui.docks.live_ladder import LivePower
+from ladderworks.gui.editor.geometry import CELL_H, Layout, cell_origin
+from ladderworks.gui.editor.network_item import NetworkItem
+from ladderworks.gui.editor.view import describe_signal
+from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
+
+translate = QCoreApplication.translate
+
+
+class DiagnosticView(QGraphicsView):
+    """A read-only ladder view: the console's network drawings with live overlays."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("diagnosticView")
+        self.scene_ = QGraphicsScene(self)
+        self.scene_.setBackgroundBrush(QBrush(QColor("#ffffff")))
+        self.setScene(self.scene_)
+        self.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)
+        self.setRenderHint(QPainter.RenderHint.Antialiasing, True)
+        self.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.MinimalViewportUpdate)
+        self.setDragMode(QGraphicsView.DragMode.ScrollHandDrag)
+        self.live = LivePower(self.scene_)
+        self.items: list[NetworkItem] = []
+        self.networks: list[LadderNetwork] = []
+        self.layout_ = Layout()
+        self.paints = 0  # viewport paint events (the benchmark's repaint rate)
+
+    def show_networks(self, networks: list[LadderNetwork], binary: BinaryProgram,
+                      ops: list[list[int]]) -> None:
+        """Draw `networks` (coded as `ops` of `binary`) with power overlays."""
+        self.live.detach()
+        for item in self.items:
+            self.scene_.removeItem(item)
+        self.networks = networks
+        self.layout_ = Layout()
+        self.layout_.rebuild(networks)
+        self.items = []
+        for index, (network, top) in enumerate(zip(networks, self.layout_.tops, strict=True)):
+            item = NetworkItem(network, index + 1, describe_signal)
+            item.setPos(0, top)
+            self.scene_.addItem(item)
+            self.items.append(item)
+        self.live.attach(networks, self.layout_.tops, binary, ops)
+        width = max((item.boundingRect().width() for item in self.items), default=600.0)
+        self.scene_.setSceneRect(QRectF(0, 0, width, max(self.layout_.total_height(), CELL_H)))
+
+    def visible_rect(self) -> QRectF:
+        """The part of the scene on screen."""
+        return self.mapToScene(self.viewport().rect()).boundingRect()
+
+    def cell_rect(self, network: int, cell: Cell) -> QRectF:
+        """Scene rectangle of a cell."""
+        x, y = cell_origin(self.networks[network], *cell)
+        return QRectF(x, y + self.layout_.tops[network], 96.0, CELL_H)
+
+    def viewportEvent(self, event: QEvent) -> bool:
+        """Count paints (the benchmark reports the repaint rate)."""
+        if event.type() == QEvent.Type.Paint:
+            self.paints += 1
+        return super().viewportEvent(event)
+
+
+class DiagnosticDock(QDockWidget):
+    """PLC TEŞHİS (PLC diagnostic): watch the ladder while the PLC runs; no editing."""
+
+    def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("plcDiagnosticDock")
+        self.session = session
+        body = QWidget(self)
+        layout = QVBoxLayout(body)
+        layout.setContentsMargins(4, 4, 4, 4)
+        bar = QHBoxLayout()
+        self.search = QLineEdit(body)
+        self.search.setObjectName("diagnosticSearch")
+        self.search.returnPressed.connect(self.find_next)
+        self.find_button = QPushButton(body)
+        self.find_button.setObjectName("diagnosticFind")
+        self.find_button.clicked.connect(self.find_next)
+        self.written_button = QPushButton(body)
+        self.written_button.setObjectName("diagnosticWhereWritten")
+        self.written_button.clicked.connect(self.where_written)
+        self.follow = QCheckBox(body)
+        self.follow.setObjectName("diagnosticFollow")
+        self.state = QLabel(body)
+        self.state.setObjectName("diagnosticState")
+        for widget in (self.search, self.find_button, self.written_button, self.follow):
+            bar.addWidget(widget)
+        bar.addWidget(self.state, 1)
+        layout.addLayout(bar)
+        self.message = QLabel(body)
+        self.message.setObjectName("diagnosticMessage")
+        layout.addWidget(self.message)
+        self.view = DiagnosticView(body)
+        layout.addWidget(self.view, 1)
+        self.setWidget(body)
+        self.hits: list[tuple[int, Cell]] = []
+        self.hit_index = -1
+        self._monitoring = False
+        self._snapshot: PlcSnapshot | None = None
+        session.program_loaded.connect(self._on_program)
+        session.snapshot_ready.connect(self._on_snapshot)
+        session.forces_changed.connect(lambda _entries: self._repaint())
+        self.visibilityChanged.connect(self._on_visible)
+        self.view.verticalScrollBar().valueChanged.connect(lambda _v: self._repaint())
+        self.view.horizontalScrollBar().valueChanged.connect(lambda _v: self._repaint())
+        self.retranslate()
+        if session.binary is not None:
+            self._on_program(session.binary)
+
+    def retranslate(self) -> None:
+        """Texts in the UI language."""
+        self.setWindowTitle(translate("PlcDiagnostic", "PLC DIAGNOSTIC"))
+        self.search.setPlaceholderText(translate("PlcDiagnostic", "Address, e.g. R102.0"))
+        self.find_button.setText(translate("PlcDiagnostic", "Find"))
+        self.written_button.setText(translate("PlcDiagnostic", "Where written"))
+        self.follow.setText(translate("PlcDiagnostic", "Follow"))
+        self.follow.setToolTip(translate(
+            "PlcDiagnostic", "Keep the searched address in view while the PLC runs"))
+        self._show_state()
+
+    # -- the program -------------------------------------------------------------------
+
+    def _on_program(self, binary: BinaryProgram) -> None:
+        program = self.session.program
+        if program is None or not program_matches(program, binary):
+            program = program_of(binary)
+        networks = [layout_network(net.instructions, net.comments) for net in program.networks]
+        self.view.show_networks(networks, binary, binary_networks(binary))
+        self.hits = []
+        self.hit_index = -1
+        self._repaint()
+
+    def _on_visible(self, visible: bool) -> None:
+        if visible != self._monitoring:
+            self._monitoring = visible
+            self.session.monitor(visible)
+        if visible:
+            self._repaint()
+
+    def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
+        self._snapshot = snapshot
+        if not self.isVisible():
+            return
+        self._repaint()
+        if self.follow.isChecked() and self.hits:
+            network, cell = self.hits[max(self.hit_index, 0)]
+            self.view.ensureVisible(self.view.cell_rect(network, cell), 40, 40)
+
+    def _repaint(self) -> None:
+        snapshot = self._snapshot or self.session.snapshot()
+        forced = (self.session.engine.force_table.forced()
+                  if self.session.engine is not None else {})
+        self.view.live.update(snapshot, forced, self.view.visible_rect())
+        self._show_state()
+
+    def _show_state(self) -> None:
+        status = self.session.status()
+        if not status.loaded:
+            text = translate("PlcDiagnostic", "No program loaded")
+        elif status.running:
+            text = translate("PlcDiagnostic", "RUNNING — scan {0}").format(status.scan_count)
+        else:
+            text = translate("PlcDiagnostic", "STOPPED")
+        self.state.setText(text)
+
+    # -- search --------------------------------------------------------------------------
+
+    def _address(self) -> Address | None:
+        text = self.search.text().strip()
+        try:
+            address = parse_address(text)
+        except AddressError:
+            self.message.setText(translate("PlcDiagnostic", "'{0}' is not an address")
+                                 .format(text))
+            return None
+        self.message.setText("")
+        return address
+
+    def _cells_with(self, address: Address, coils_only: bool) -> list[tuple[int, Cell]]:
+        found: list[tuple[int, Cell]] = []
+        for index, network in enumerate(self.view.networks):
+            for cell, element in network.elements():
+                if isinstance(element, Coil):
+                    hit = element.address == address
+                elif coils_only:
+                    hit = False
+                elif isinstance(element, Contact):
+                    hit = element.address == address
+                else:
+                    hit = isinstance(element, FunctionBox) and any(
+                        p == address or (isinstance(p, Address) and p.area is address.area
+                                         and p.byte == address.byte) for p in element.params)
+                if hit:
+                    found.append((index, cell))
+        return found
+
+    def _mark(self, hits: list[tuple[int, Cell]]) -> None:
+        for overlay in self.view.live.overlays:
+            if overlay.marked:
+                overlay.marked = set()
+                overlay.update()
+        for network, cell in hits:
+            overlay = self.view.live.overlays[network]
+            overlay.marked.add(cell)
+            overlay.update()
+
+    def find_next(self) -> None:
+        """Find the address in the ladder; again: the next place."""
+        address = self._address()
+        if address is None:
+            return
+        hits = self._cells_with(address, coils_only=False)
+        if hits != self.hits:
+            self.hits = hits
+            self.hit_index = -1
+            self._mark(hits)
+        self._go_next(translate("PlcDiagnostic", "'{0}' is not in the program").format(address))
+
+    def where_written(self) -> None:
+        """Jump to the coil that writes the address."""
+        address = self._address()
+        if address is None:
+            return
+        self.hits = self._cells_with(address, coils_only=True)
+        self.hit_index = -1
+        self._mark(self.hits)
+        self._go_next(translate("PlcDiagnostic", "No coil writes {0}").format(address))
+
+    def _go_next(self, not_found: str) -> None:
+        if not self.hits:
+            self.message.setText(not_found)
+            return
+        self.hit_index = (self.hit_index + 1) % len(self.hits)
+        network, cell = self.hits[self.hit_index]
+        self.view.centerOn(self.view.cell_rect(network, cell).center())
+        self.message.setText(translate("PlcDiagnostic", "{0} of {1}: network {2}").format(
+            self.hit_index + 1, len(self.hits), network + 1))
+        self._repaint()

@@ -1,0 +1,101 @@
+"""The force list: every forced signal and passive (disabled) element, released with one click."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication
+from PySide6.QtWidgets import (
+    QDockWidget,
+    QHBoxLayout,
+    QLabel,
+    QPushButton,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+from ladderworks.core.il import print_instruction
+from ladderworks.core.il.program import Instruction
+from ladderworks.core.plc.forcing import ForceEntry
+from ladderworks.gui.plc_session import PlcSession
+
+translate = QCoreApplication.translate
+
+
+class ForceListDock(QDockWidget):
+    """Forced bits and passive elements of the running program, each with a Release button."""
+
+    def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("forceListDock")
+        self.session = session
+        body = QWidget(self)
+        layout = QVBoxLayout(body)
+        layout.setContentsMargins(4, 4, 4, 4)
+        self.table = QTableWidget(0, 4, body)
+        self.table.setObjectName("forceListTable")
+        self.table.verticalHeader().hide()
+        self.table.horizontalHeader().setStretchLastSection(False)
+        self.table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
+        layout.addWidget(self.table, 1)
+        bottom = QHBoxLayout()
+        self.summary = QLabel(body)
+        self.summary.setObjectName("forceListSummary")
+        self.release_all_button = QPushButton(body)
+        self.release_all_button.setObjectName("forceListReleaseAll")
+        self.release_all_button.clicked.connect(session.release_all)
+        bottom.addWidget(self.summary, 1)
+        bottom.addWidget(self.release_all_button)
+        layout.addLayout(bottom)
+        self.setWidget(body)
+        self.entries: list[ForceEntry] = []
+        session.forces_changed.connect(self.show_entries)
+        session.program_loaded.connect(lambda _binary: self.show_entries(session.forces()))
+        self.retranslate()
+
+    def retranslate(self) -> None:
+        """Texts in the UI language."""
+        self.setWindowTitle(translate("ForceList", "Forced and passive"))
+        self.table.setHorizontalHeaderLabels([
+            translate("ForceList", "Kind"), translate("ForceList", "Signal / element"),
+            translate("ForceList", "Value"), ""])
+        self.release_all_button.setText(translate("ForceList", "Release all"))
+        self.show_entries(self.entries)
+
+    def describe(self, entry: ForceEntry) -> tuple[str, str, str]:
+        """(kind, what, value) shown for one entry."""
+        if entry.kind == "force":
+            return (translate("ForceList", "FORCED"), str(entry.address),
+                    str(int(bool(entry.value))))
+        binary = self.session.binary
+        text = f"op {entry.op}"
+        if binary is not None and entry.op is not None and entry.op < len(binary.ops):
+            op = binary.ops[entry.op]
+            code = print_instruction(Instruction(op.name, op.operand, op.params))
+            text = translate("ForceList", "network {0}, line {1}: {2}").format(
+                op.source.network + 1, op.source.line, code)
+        return translate("ForceList", "PASSIVE"), text, ""
+
+    def show_entries(self, entries: list[ForceEntry]) -> None:
+        """Fill the table."""
+        self.entries = list(entries)
+        self.table.setRowCount(len(entries))
+        for row, entry in enumerate(entries):
+            for col, text in enumerate(self.describe(entry)):
+                self.table.setItem(row, col, QTableWidgetItem(text))
+            button = QPushButton(translate("ForceList", "Release"), self.table)
+            button.setObjectName(f"forceListRelease_{row}")
+            button.clicked.connect(lambda _checked=False, e=entry: self.release(e))
+            self.table.setCellWidget(row, 3, button)
+        self.table.resizeColumnsToContents()
+        self.summary.setText(translate("ForceList", "{0} forced, {1} passive").format(
+            sum(1 for e in entries if e.kind == "force"),
+            sum(1 for e in entries if e.kind != "force")))
+        self.release_all_button.setEnabled(bool(entries))
+
+    def release(self, entry: ForceEntry) -> None:
+        """Release one force or make one element act again."""
+        if entry.kind == "force" and entry.address is not None:
+            self.session.release(entry.address)
+        elif entry.op is not None:
+            self.session.enable(entry.op)

@@ -1,0 +1,198 @@
+"""On-line mode: the console's own ladder shows the running PLC; disable and force elements."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication, QObject
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import QWidget
+
+from ladderworks.core.address import Address
+from ladderworks.core.compiler.binary import BinaryProgram
+from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox
+from ladderworks.gui.docks.live_ladder import LivePower, match_networks
+from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.plc_session import PlcSession, PlcSnapshot, safe_emit
+
+translate = QCoreApplication.translate
+
+ACTION_NAMES = ("action_plc_online", "action_plc_disable", "action_plc_enable",
+                "action_plc_force_1", "action_plc_force_0", "action_plc_release")
+
+
+class OnlineMode(QObject):
+    """Ties the console editor to the session: power flow over the drawing while on-line;
+    any edit takes the view off-line (the drawing no longer is what the PLC runs)."""
+
+    def __init__(self, editor: LadderEditor, session: PlcSession,
+                 parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self.editor = editor
+        self.session = session
+        self.live = LivePower(editor.scene())
+        self.actions: dict[str, QAction] = {}
+        owner = parent if isinstance(parent, QWidget) else editor
+        for name in ACTION_NAMES:
+            action = QAction(owner)
+            action.setObjectName(name)
+            self.actions[name] = action
+        self.actions["action_plc_online"].setCheckable(True)
+        self.actions["action_plc_online"].toggled.connect(self.set_online)
+        self.actions["action_plc_disable"].triggered.connect(lambda: self.disable_selected())
+        self.actions["action_plc_enable"].triggered.connect(lambda: self.enable_selected())
+        self.actions["action_plc_force_1"].triggered.connect(lambda: self.force_selected(1))
+        self.actions["action_plc_force_0"].triggered.connect(lambda: self.force_selected(0))
+        self.actions["action_plc_release"].triggered.connect(lambda: self.release_selected())
+        editor.context_actions.append(None)
+        editor.context_actions.extend(self.actions[n] for n in ACTION_NAMES[1:])
+        editor.undo_stack.indexChanged.connect(self._edited)
+        session.snapshot_ready.connect(self._on_snapshot)
+        session.program_loaded.connect(self._on_program)
+        session.forces_changed.connect(lambda _entries: self.refresh())
+        editor.verticalScrollBar().valueChanged.connect(lambda _v: self.refresh())
+        self._update_actions()
+        self.retranslate()
+
+    def retranslate(self) -> None:
+        """Texts in the UI language."""
+        texts = {
+            "action_plc_online": translate("PlcOnline", "On-line mode"),
+            "action_plc_disable": translate("PlcOnline", "Make passive (disable)"),
+            "action_plc_enable": translate("PlcOnline", "Make active again"),
+            "action_plc_force_1": translate("PlcOnline", "Force to 1"),
+            "action_plc_force_0": translate("PlcOnline", "Force to 0"),
+            "action_plc_release": translate("PlcOnline", "Release the force"),
+        }
+        for name, text in texts.items():
+            self.actions[name].setText(text)
+
+    @property
+    def online(self) -> bool:
+        """True while the editor shows the running PLC."""
+        return self.live.attached
+
+    def _say(self, text: str) -> None:
+        safe_emit(self.editor.message, text)
+
+    def set_online(self, on: bool) -> bool:
+        """Go on-line (when the drawing is exactly the loaded program) or off-line."""
+        if not on:
+            if self.live.attached:
+                self.live.detach()
+                self.session.monitor(False)
+                self._say(translate("PlcOnline", "Off-line"))
+            self._sync_check(False)
+            return False
+        binary = self.session.binary
+        if binary is None:
+            self._say(translate("PlcOnline", "On-line needs a compiled program in the PLC"))
+            self._sync_check(False)
+            return False
+        ops = match_networks(self.editor.networks, binary)
+        if ops is None:
+            self._say(translate("PlcOnline", "The drawing is not the program in the PLC: "
+                                "compile it in the PLC control screen first"))
+            self._sync_check(False)
+            return False
+        if not self.live.attached:
+            self.session.monitor(True)
+        self.live.attach(self.editor.networks, self.editor.layout_.tops, binary, ops)
+        self._sync_check(True)
+        self.refresh()
+        self._say(translate("PlcOnline", "On-line: the drawing shows the running PLC"))
+        return True
+
+    def _sync_check(self, on: bool) -> None:
+        action = self.actions["action_plc_online"]
+        if action.isChecked() != on:
+            action.blockSignals(True)
+            action.setChecked(on)
+            action.blockSignals(False)
+        self._update_actions()
+
+    def _update_actions(self) -> None:
+        for name in ACTION_NAMES[1:]:
+            self.actions[name].setEnabled(self.online)
+
+    def _edited(self, _index: int) -> None:
+        if self.online:
+            self.set_online(False)
+            self._say(translate("PlcOnline", "Off-line: the drawing was changed; it is no "
+                                "longer the program the PLC runs"))
+
+    def _on_program(self, _binary: BinaryProgram) -> None:
+        if self.online:
+            self.set_online(True)
+
+    def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
+        if self.online:
+            self._update(snapshot)
+
+    def refresh(self) -> None:
+        """Repaint the power flow now."""
+        if self.online:
+            self._update(self.session.snapshot())
+
+    def _update(self, snapshot: PlcSnapshot) -> None:
+        forced = (self.session.engine.force_table.forced()
+                  if self.session.engine is not None else {})
+        visible = self.editor.mapToScene(self.editor.viewport().rect()).boundingRect()
+        self.live.update(snapshot, forced, visible)
+
+    # -- the selected element ------------------------------------------------------------
+
+    def selected(self) -> tuple[int, Cell, object] | None:
+        """(network, anchor cell, element) under the editor's cursor."""
+        index, row, col = self.editor.cursor_cell
+        if not 0 <= index < len(self.editor.networks):
+            return None
+        found = self.editor.networks[index].element_at(row, col)
+        if found is None:
+            return None
+        return index, found[0], found[1]
+
+    def _selected_op(self) -> int | None:
+        chosen = self.selected() if self.online else None
+        if chosen is None:
+            self._say(translate("PlcOnline", "Select a contact, coil or function first"))
+            return None
+        op = self.live.op_at(chosen[0], chosen[1])
+        if op is None:
+            self._say(translate("PlcOnline", "This element has no op in the PLC program"))
+        return op
+
+    def disable_selected(self) -> int | None:
+        """Make the selected element passive (PASİF): it no longer acts."""
+        op = self._selected_op()
+        if op is not None:
+            self.session.disable(op)
+        return op
+
+    def enable_selected(self) -> int | None:
+        """Make the selected passive element act again."""
+        op = self._selected_op()
+        if op is not None:
+            self.session.enable(op)
+        return op
+
+    def _selected_address(self) -> Address | None:
+        chosen = self.selected() if self.online else None
+        element = chosen[2] if chosen is not None else None
+        if isinstance(element, Contact | Coil) and element.address is not None:
+            return element.address
+        if isinstance(element, FunctionBox) or chosen is None or element is None:
+            self._say(translate("PlcOnline", "Select a contact or coil to force its signal"))
+        return None
+
+    def force_selected(self, value: int) -> Address | None:
+        """Force the selected contact's or coil's signal to 0 or 1."""
+        address = self._selected_address()
+        if address is not None:
+            self.session.force(address, value)
+        return address
+
+    def release_selected(self) -> Address | None:
+        """Release the force on the selected element's signal."""
+        address = self._selected_address()
+        if address is not None:
+            self.session.release(address)
+        return address

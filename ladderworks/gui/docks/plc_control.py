@@ -1,0 +1,297 @@
+"""PLC KONTROL EKRANI: open a .MOD, compile it with green stripes, START and STOP the PLC."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+from PySide6.QtCore import QCoreApplication, QTimer, Signal
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import (
+    QDockWidget,
+    QFileDialog,
+    QHBoxLayout,
+    QLabel,
+    QMessageBox,
+    QProgressBar,
+    QToolBar,
+    QVBoxLayout,
+    QWidget,
+)
+
+from ladderworks.core.compiler import CompileResult, compile_program
+from ladderworks.core.diagnostics import Diagnostic, has_errors
+from ladderworks.core.il import Program, decode, parse, print_program
+from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
+from ladderworks.gui.plc_session import PlcSession, PlcStatus, safe_emit
+
+translate = QCoreApplication.translate
+
+STRIPE_MS = 25  # one step of the green stripes
+STRIPE_STEPS = 40  # the stripes reach the end in at most this many steps (≈ 1 s)
+
+RUNNING_STYLE = ("background: #2e7d32; color: white; font-weight: bold; padding: 4px 10px;"
+                 " border-radius: 4px;")
+STOPPED_STYLE = ("background: #c62828; color: white; font-weight: bold; padding: 4px 10px;"
+                 " border-radius: 4px;")
+IDLE_STYLE = ("background: #9e9e9e; color: white; font-weight: bold; padding: 4px 10px;"
+              " border-radius: 4px;")
+
+
+def network_end_lines(program: Program) -> list[int]:
+    """The last source line of each network (where its stripe ends)."""
+    ends: list[int] = []
+    for network in program.networks:
+        lines = [ins.line for ins in network.instructions if ins.line]
+        if lines:
+            ends.append(max(lines))
+    return ends
+
+
+class PlcControlDock(QDockWidget):
+    """The PLC control screen: mnemonic program, compile, START / STOP, scan figures."""
+
+    compile_progress = Signal(int)  # lines converted so far
+    compile_finished = Signal(object)  # CompileResult
+
+    def __init__(self, session: PlcSession, parent: QWidget | None = None,
+                 console_program: Callable[[], Program | None] | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("plcControlDock")
+        self.session = session
+        self.console_program = console_program
+        self.path: Path | None = None
+        self.result: CompileResult | None = None
+        self._program: Program | None = None
+        self._ends: list[int] = []
+        self._done = 0
+        self.stripe_ms = STRIPE_MS
+        self._timer = QTimer(self)
+        self._timer.timeout.connect(self._stripe_step)
+
+        body = QWidget(self)
+        layout = QVBoxLayout(body)
+        layout.setContentsMargins(4, 4, 4, 4)
+        self.toolbar = QToolBar(body)
+        self.toolbar.setObjectName("plcControlToolbar")
+        self.actions: dict[str, QAction] = {}
+        for name, slot in (("action_plc_open_mod", self.open_dialog),
+                           ("action_plc_take_console", self.take_console_program),
+                           ("action_plc_control_compile", self.compile),
+                           ("action_plc_start", self.start),
+                           ("action_plc_stop", self.stop)):
+            action = QAction(self)
+            action.setObjectName(name)
+            action.triggered.connect(lambda _checked=False, s=slot: s())
+            self.toolbar.addAction(action)
+            self.actions[name] = action
+        layout.addWidget(self.toolbar)
+        state = QHBoxLayout()
+        self.indicator = QLabel(body)
+        self.indicator.setObjectName("plcRunIndicator")
+        self.figures = QLabel(body)
+        self.figures.setObjectName("plcScanFigures")
+        state.addWidget(self.indicator)
+        state.addWidget(self.figures, 1)
+        layout.addLayout(state)
+        self.editor = MnemonicEditor(body)
+        self.editor.textChanged.connect(self._text_changed)
+        layout.addWidget(self.editor, 1)
+        self.progress = QProgressBar(body)
+        self.progress.setObjectName("plcCompileProgress")
+        self.progress.setTextVisible(True)
+        self.progress.setStyleSheet("QProgressBar::chunk { background: #43a047; }")
+        layout.addWidget(self.progress)
+        self.message = QLabel(body)
+        self.message.setObjectName("plcCompileMessage")
+        self.message.setWordWrap(True)
+        layout.addWidget(self.message)
+        self.setWidget(body)
+        session.status_changed.connect(self._show_status)
+        session.running_changed.connect(lambda _running: self._update_actions())
+        self.retranslate()
+        self._show_status(session.status())
+
+    def retranslate(self) -> None:
+        """Texts in the UI language."""
+        self.setWindowTitle(translate("PlcControl", "PLC CONTROL SCREEN"))
+        texts = {
+            "action_plc_open_mod": translate("PlcControl", "Open .MOD…"),
+            "action_plc_take_console": translate("PlcControl", "Take the console's program"),
+            "action_plc_control_compile": translate("PlcControl", "Compile"),
+            "action_plc_start": translate("PlcControl", "START"),
+            "action_plc_stop": translate("PlcControl", "STOP"),
+        }
+        for name, text in texts.items():
+            self.actions[name].setText(text)
+        self._show_status(self.session.status())
+
+    # -- the program text ------------------------------------------------------------------
+
+    def set_text(self, text: str, path: Path | None = None) -> None:
+        """Show a mnemonic program (nothing compiled yet)."""
+        self.path = path
+        self.editor.setPlainText(text)
+        self.editor.set_diagnostics([])
+        self.editor.set_converted(0)
+
+    def open_file(self, path: str | Path) -> bool:
+        """Read a .MOD / .LAD file (UTF-8 or Turkish Windows text)."""
+        path = Path(path)
+        try:
+            text, _encoding = decode(path.read_bytes())
+        except OSError as error:
+            self.message.setText(translate("PlcControl", "Cannot read {0}: {1}")
+                                 .format(path, error.strerror))
+            return False
+        self.set_text(text, path)
+        self.message.setText(translate("PlcControl", "Opened {0}").format(path.name))
+        return True
+
+    def open_dialog(self) -> None:
+        """File > open a mnemonic program."""
+        name, _ = QFileDialog.getOpenFileName(
+            self, translate("PlcControl", "Open mnemonic program"), "",
+            translate("PlcControl", "Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)"))
+        if name:
+            self.open_file(name)
+
+    def take_console_program(self) -> bool:
+        """Show the program drawn in the console as mnemonic code."""
+        program = self.console_program() if self.console_program is not None else None
+        if program is None:
+            self.message.setText(translate(
+                "PlcControl", "The console's program cannot be coded: see the error list"))
+            return False
+        self.set_text(print_program(program))
+        self.message.setText(translate("PlcControl", "Program taken from the console"))
+        return True
+
+    def _text_changed(self) -> None:
+        if self._timer.isActive():
+            self._timer.stop()
+        if self.editor.converted_lines:
+            self.editor.set_converted(0)
+
+    # -- compiling -----------------------------------------------------------------------
+
+    @property
+    def compiling(self) -> bool:
+        """True while the stripes advance."""
+        return self._timer.isActive()
+
+    def compile(self) -> CompileResult:
+        """Check and convert the text to the binary PLC program; the stripes then show the
+        networks converted, and at the end the program is loaded into the PLC."""
+        self._timer.stop()
+        parsed = parse(self.editor.toPlainText())
+        diagnostics: list[Diagnostic] = list(parsed.diagnostics)
+        result = CompileResult(None, diagnostics)
+        if not has_errors(diagnostics):
+            result = compile_program(parsed.program)
+            result = CompileResult(result.binary, diagnostics + result.diagnostics)
+        self.result = result
+        self.editor.set_diagnostics(result.diagnostics)
+        self.editor.set_converted(0)
+        if result.binary is None:
+            errors = [d for d in result.diagnostics if d.is_error]
+            first = min((d.line for d in errors if d.line), default=0)
+            self.editor.set_converted(max(first - 1, 0))
+            self.progress.setValue(0)
+            self.message.setText(translate("PlcControl", "Compile failed: {0} error(s). {1}")
+                                 .format(len(errors), diagnostic_text(errors[0]) if errors
+                                         else ""))
+            if first:
+                self.editor.go_to_line(first)
+            safe_emit(self.compile_finished, result)
+            return result
+        self._program = parsed.program
+        self._ends = network_end_lines(parsed.program) or [self.editor.blockCount()]
+        self._done = 0
+        self.progress.setRange(0, len(self._ends))
+        self.progress.setValue(0)
+        self.message.setText(translate("PlcControl", "Converting…"))
+        self._update_actions()
+        if self.stripe_ms <= 0:
+            while self._done < len(self._ends):
+                self._stripe_step()
+        else:
+            self._timer.start(self.stripe_ms)
+        return result
+
+    def _stripe_step(self) -> None:
+        step = max(1, -(-len(self._ends) // STRIPE_STEPS))
+        self._done = min(len(self._ends), self._done + step)
+        self.editor.set_converted(self._ends[self._done - 1])
+        self.progress.setValue(self._done)
+        safe_emit(self.compile_progress, self.editor.converted_lines)
+        if self._done < len(self._ends):
+            return
+        self._timer.stop()
+        self.editor.set_converted(self.editor.blockCount())
+        assert self.result is not None and self.result.binary is not None
+        problems = self.session.load(self.result.binary, self._program)
+        if problems:
+            self.message.setText(diagnostic_text(problems[0]))
+        else:
+            warnings = sum(1 for d in self.result.diagnostics if not d.is_error)
+            text = translate("PlcControl", "compile finish — {0} networks, {1} bytes").format(
+                len(self._ends), len(self.result.binary))
+            if warnings:
+                text += " " + translate("PlcControl", "({0} warning(s))").format(warnings)
+            self.message.setText(text)
+        self._update_actions()
+        safe_emit(self.compile_finished, self.result)
+
+    # -- START / STOP --------------------------------------------------------------------
+
+    def confirm_forces(self, count: int) -> bool:
+        """Ask before starting with forced or passive elements (tests replace this)."""
+        answer = QMessageBox.question(
+            self, translate("PlcControl", "START"),
+            translate("PlcControl", "{0} signal(s) are forced or element(s) passive. "
+                      "Start the PLC with them?").format(count))
+        return answer == QMessageBox.StandardButton.Yes
+
+    def start(self) -> bool:
+        """START: run the loaded program (asks first when forces are active)."""
+        if self.session.engine is None:
+            self.message.setText(translate("PlcControl", "Compile a program first"))
+            return False
+        forces = self.session.forces()
+        if forces and not self.confirm_forces(len(forces)):
+            return False
+        return self.session.start()
+
+    def stop(self) -> None:
+        """STOP: stop scanning (outputs go to 0)."""
+        self.session.stop()
+
+    def _update_actions(self) -> None:
+        running = self.session.running
+        self.actions["action_plc_start"].setEnabled(self.session.engine is not None
+                                                    and not running)
+        self.actions["action_plc_stop"].setEnabled(running)
+        self.actions["action_plc_control_compile"].setEnabled(not running and not self.compiling)
+
+    def _show_status(self, status: PlcStatus) -> None:
+        if not status.loaded:
+            self.indicator.setText(translate("PlcControl", "NO PROGRAM"))
+            self.indicator.setStyleSheet(IDLE_STYLE)
+        elif status.running:
+            self.indicator.setText(translate("PlcControl", "RUNNING"))
+            self.indicator.setStyleSheet(RUNNING_STYLE)
+        else:
+            self.indicator.setText(translate("PlcControl", "STOPPED"))
+            self.indicator.setStyleSheet(STOPPED_STYLE)
+        if status.loaded:
+            self.figures.setText(translate(
+                "PlcControl",
+                "scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · "
+                "period {4} ms · overruns {5}").format(
+                status.scan_count, status.min_ms, status.avg_ms, status.max_ms,
+                status.period_ms, status.overruns))
+        else:
+            self.figures.setText("")
+        self._update_actions()
