@@ -140,7 +140,7 @@ def _run(args: argparse.Namespace) -> int:
             if not match:
                 raise ValueError(f"--set '{item}': expected ADDR=VALUE or ADDR=VALUE@MS")
             sets.append((int(match.group(3) or 0), _target(match.group(1)),
-                         int(match.group(2), 0)))
+                         _number(match.group(2), item)))
         timers = [_pair(item, "--timer", 1, 100) for item in args.timer]
         counters = [_pair(item, "--counter", 1, 20) for item in args.counter]
         prints = [_target(text) for text in args.print_]
@@ -183,6 +183,16 @@ def _run(args: argparse.Namespace) -> int:
     for target in prints:
         print(f"{target.text} = {target.read(engine)}")
     return 0
+
+
+def _number(text: str, item: str) -> int:
+    """A decimal or 0x-hexadecimal value."""
+    try:
+        if text.lower().lstrip("-").startswith("0x"):
+            return int(text, 16)
+        return int(text, 10)
+    except ValueError:
+        raise ValueError(f"--set '{item}': '{text}' is not a number") from None
 
 
 def _pair(item: str, option: str, lo: int, hi: int) -> tuple[int, int]:

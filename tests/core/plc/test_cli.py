@@ -65,10 +65,11 @@ def test_run_wide_values_and_counter_preset(tmp_path: Path,
                       "WRT R1.0\n%\n")
     code, text, _ = run(capsys, "run", str(source), "--scans", "4", "--counter", "2=1",
                         "--set", "R0.3=1@8", "--set", "D10:4=70000", "--set", "D20:2=0x1234",
-                        "--print", "C4:2", "C6:2", "R1.0", "D10:4", "D20:2", "D20")
+                        "--set", "D30=007",
+                        "--print", "C4:2", "C6:2", "R1.0", "D10:4", "D20:2", "D20", "D30")
     assert code == 0
     assert text.splitlines() == ["C4:2 = 1", "C6:2 = 1", "R1.0 = 1", "D10:4 = 70000",
-                                 "D20:2 = 4660", "D20 = 52"]
+                                 "D20:2 = 4660", "D20 = 52", "D30 = 7"]
 
 
 def test_compile_reports_errors_with_positions(tmp_path: Path,
@@ -92,7 +93,7 @@ def test_disasm_of_a_foreign_file_is_a_clear_error(
 
 @pytest.mark.parametrize("argv", [
     ["--set", "Q1=1"], ["--set", "X1.0"], ["--print", "D10:3"], ["--timer", "101=5"],
-    ["--set", "X1.0:2=1"]])
+    ["--set", "X1.0:2=1"], ["--set", "D1=twelve"]])
 def test_bad_options_are_reported(capsys: pytest.CaptureFixture[str], argv: list[str]) -> None:
     code, _, err = run(capsys, "run", str(EXAMPLES / "alarm.LAD"), *argv)
     assert code == 2
