@@ -21,6 +21,7 @@ ScanFunction = Callable[[FunctionContext, bytearray], None]
 
 _AREA_NAMES = tuple(area.value for area in Area)
 _MAX_NESTING = 40  # parentheses per expression before it is stored in its variable
+_MAX_TERMS = 64  # operators per expression (Python's compiler recurses on long chains)
 _CONTACTS = frozenset({"RD", "RD.NOT", "AND", "AND.NOT", "OR", "OR.NOT", "RD.STK",
                        "RD.NOT.STK"})
 
@@ -36,12 +37,13 @@ class GeneratedScan:
 class _Value:
     """The Python expression for one stack level, and how it was built."""
 
-    __slots__ = ("expr", "nesting", "top")
+    __slots__ = ("expr", "nesting", "terms", "top")
 
-    def __init__(self, expr: str, top: str = "", nesting: int = 0) -> None:
+    def __init__(self, expr: str, top: str = "", nesting: int = 0, terms: int = 1) -> None:
         self.expr = expr
         self.top = top  # top-level operator: "", "&" or "|"
         self.nesting = nesting
+        self.terms = terms
 
 
 def _bit_expr(address: Address, inverted: bool) -> str:
@@ -159,8 +161,9 @@ class _Generator:
                 left_expr, nesting = f"({left_expr})", nesting + 1
             if right.top == "|":
                 right_expr, nesting = f"({right_expr})", nesting + 1
-        value = _Value(f"{left_expr} {operator} {right_expr}", operator, nesting)
-        if nesting > _MAX_NESTING:
+        value = _Value(f"{left_expr} {operator} {right_expr}", operator, nesting,
+                       left.terms + right.terms)
+        if nesting > _MAX_NESTING or value.terms > _MAX_TERMS:
             depth = len(self.values) - 1
             self.emit(f"{self.var(depth)} = {value.expr}")
             value = _Value(self.var(depth))
@@ -168,6 +171,8 @@ class _Generator:
 
     def write(self, index: int, address: Address, inverted: bool, off: bool) -> None:
         if off:
+            if self.commons:
+                self.count_coil()  # a disabled coil still counts in COM's range
             return
         depth = len(self.values) - 1
         for lower in range(depth):

@@ -326,3 +326,25 @@ def test_generated_scan_matches_the_reference_interpreter(seed: int, monitored: 
         engine.scan()
         reference_scan(program, reference)
         assert engine.memory.areas[Area.R][0:3] == reference.memory.areas[Area.R][0:3]
+
+
+def test_very_long_and_alternating_networks_compile_and_run() -> None:
+    series = "\n".join(f"AND.NOT R{k // 8}.{k % 8}" for k in range(3000))
+    alternating = "\n".join(f"{'AND' if k % 2 else 'OR'} R{k // 8}.{k % 8}" for k in range(500))
+    engine = engine_for(f"RD X0.0\n{series}\nWRT Y0.0\nRD X0.0\n{alternating}\nWRT Y0.1")
+    engine.memory.set_bit(at("X0.0"), 1)
+    engine.scan()
+    assert bit(engine, "Y0.0") == 1  # every R bit is 0, so every AND.NOT passes
+    # (((X0.0 OR R0.0) AND R0.1) OR R0.2) ...: ends with AND R62.3 = 0
+    assert bit(engine, "Y0.1") == 0
+    engine.memory.areas[Area.R][62] = 0b1100  # OR R62.2 then AND R62.3
+    engine.scan()
+    assert bit(engine, "Y0.1") == 1
+
+
+def test_disabled_coil_still_counts_in_a_com_range() -> None:
+    engine = engine_for("RD X0.0\nCOM 1\nRD X0.1\nWRT Y0.1\nRD X0.1\nWRT Y0.2")
+    engine.disable(3)
+    engine.memory.set_bit(at("X0.1"), 1)
+    engine.scan()
+    assert (bit(engine, "Y0.1"), bit(engine, "Y0.2")) == (0, 1)
