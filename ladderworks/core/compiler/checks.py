@@ -34,6 +34,10 @@ class _Checker:
 
     def add(self, code: str, ins: Instruction, network: int, *,
             warning: bool = False, **args: object) -> None:
+        self.report(code, ins, network, args, warning=warning)
+
+    def report(self, code: str, ins: Instruction, network: int, args: dict[str, object], *,
+               warning: bool = False) -> None:
         self.out.append(Diagnostic(
             code, dict(args), ins.line, ins.column,
             Severity.WARNING if warning else Severity.ERROR, network))
@@ -41,10 +45,10 @@ class _Checker:
     def run(self, program: Program) -> list[Diagnostic]:
         for index, network in enumerate(program.networks):
             self.network(index, network.instructions)
-        for network, ins in self.jumps:
-            self.add("jmp-without-jmpe", ins, network)
-        for network, ins in self.commons:
-            self.add("com-without-come", ins, network)
+        for at, ins in self.jumps:
+            self.add("jmp-without-jmpe", ins, at)
+        for at, ins in self.commons:
+            self.add("com-without-come", ins, at)
         return self.out
 
     def network(self, index: int, instructions: list[Instruction]) -> None:
@@ -144,32 +148,33 @@ class _Checker:
             return
         outputs = output_params(spec.name)
         for number, (param, value) in enumerate(zip(fixed, ins.params, strict=False), 1):
-            info = {"name": spec.name, "index": number, "param": param.name}
+            info: dict[str, object] = {"name": spec.name, "index": number, "param": param.name}
             address_wanted = param.kind is ParamKind.ADDRESS or (
                 param.kind is ParamKind.VALUE and value_is_address(spec, values) is True)
             if isinstance(value, Address):
                 if not param.allows_address() or (
                         param.kind is ParamKind.VALUE
                         and value_is_address(spec, values) is False):
-                    self.add("param-kind-number", ins, network, text=str(value), **info)
+                    self.report("param-kind-number", ins, network, {**info, "text": str(value)})
                     continue
                 width = width_of(spec, param, values)
                 try:
                     parse_address(str(value), want_bit=False, width=width)
                 except AddressError as exc:
-                    self.add(exc.code, ins, network, **exc.args_map)
+                    self.report(exc.code, ins, network, exc.args_map)
                     continue
                 if param.name in outputs:
                     self.write(ins, network, spec.name, value, coil=False)
                 continue
             if address_wanted:
-                self.add("param-kind-address", ins, network, text=str(value), **info)
+                self.report("param-kind-address", ins, network, {**info, "text": str(value)})
             elif param.choices and value not in param.choices:
-                self.add("param-choice", ins, network, value=value,
-                         choices=", ".join(str(c) for c in param.choices), **info)
+                self.report("param-choice", ins, network, {
+                    **info, "value": value,
+                    "choices": ", ".join(str(c) for c in param.choices)})
             elif not param.lo <= value <= param.hi:
-                self.add("param-range", ins, network, lo=param.lo, hi=param.hi, value=value,
-                         **info)
+                self.report("param-range", ins, network,
+                            {**info, "lo": param.lo, "hi": param.hi, "value": value})
         if table is not None:
             for offset, value in enumerate(ins.params[len(fixed):]):
                 if isinstance(value, Address) or not table.lo <= value <= table.hi:
