@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field, replace
 
 from ladderworks.core.address import Address
-from ladderworks.core.il.program import Instruction, ParamValue
+from ladderworks.core.il.program import Instruction, ParamValue, Section
 from ladderworks.core.instructions import InstructionSpec, Kind, lookup
 
 # Grid limits (FANUC-like). A network has `columns` contact columns (0 .. columns-1) and one
@@ -232,8 +232,8 @@ class LadderDocument:
     header: list[str] = field(default_factory=list)
     trailer: list[str] = field(default_factory=list)
     footer: list[str] = field(default_factory=list)
-    before: list = field(default_factory=list)  # il.Section objects kept verbatim
-    after: list = field(default_factory=list)
+    before: list[Section] = field(default_factory=list)  # other FANUC sections, verbatim
+    after: list[Section] = field(default_factory=list)
 
 
 def flip(element: Contact | Coil) -> Contact | Coil:

@@ -86,3 +86,19 @@ def test_thousands_of_drawn_networks_evaluate_like_their_code() -> None:
         for _ in range(4):
             _agree(network, _random_values(rnd))
     assert coded >= 2000
+
+
+def test_diagnostics_of_random_drawings_point_at_an_element() -> None:
+    rnd = random.Random(99)
+    rejected = 0
+    for _ in range(3000):
+        network = _random_grid(rnd)
+        code, diagnostics = network_to_instructions(network, 0)
+        if code is not None:
+            continue
+        rejected += 1
+        assert diagnostics
+        for diagnostic in diagnostics:
+            assert diagnostic.cell is not None and diagnostic.network == 0
+            assert network.element_at(*diagnostic.cell) is not None, diagnostic
+    assert rejected > 1000
