@@ -6,97 +6,110 @@ from PySide6.QtCore import QCoreApplication
 
 from ladderworks.core.diagnostics import Diagnostic
 
+translate = QCoreApplication.translate
+
 
 def diagnostic_templates() -> dict[str, str]:
     """Message templates by code in the current UI language ({names} filled from args)."""
     return {
-        "bad-address": QCoreApplication.translate(
+        "bad-address": translate(
             "Diagnostic", "'{text}' is not an address (expected e.g. X2.1 or R100)"),
-        "unknown-area": QCoreApplication.translate(
+        "unknown-area": translate(
             "Diagnostic", "'{text}': unknown area '{area}' (use X, Y, F, G, R, A, D, T, C or K)"),
-        "byte-range": QCoreApplication.translate(
+        "byte-range": translate(
             "Diagnostic", "'{text}': byte number out of range for area {area} (0 to {last})"),
-        "bit-range": QCoreApplication.translate(
-            "Diagnostic", "'{text}': bit number must be 0 to 7"),
-        "bit-expected": QCoreApplication.translate(
+        "bit-range": translate("Diagnostic", "'{text}': bit number must be 0 to 7"),
+        "bit-expected": translate(
             "Diagnostic", "'{text}': a bit address is needed here (e.g. {text}.0)"),
-        "byte-expected": QCoreApplication.translate(
+        "byte-expected": translate(
             "Diagnostic", "'{text}': a byte address is needed here, without a bit"),
-        "missing-start": QCoreApplication.translate(
-            "Diagnostic", 'the ladder section must begin with %@3'),
-        "missing-end": QCoreApplication.translate(
-            "Diagnostic", "the ladder section must end with a line '%'"),
-        "unexpected-text": QCoreApplication.translate("Diagnostic", "unexpected text '{text}'"),
-        "text-outside-section": QCoreApplication.translate(
-            "Diagnostic", "text outside any section: '{text}'"),
-        "duplicate-section": QCoreApplication.translate(
-            "Diagnostic", 'section %@{number} appears twice'),
-        "bad-section": QCoreApplication.translate(
+        "missing-start": translate("Diagnostic", 'the ladder section must begin with %@3'),
+        "missing-end": translate("Diagnostic", "the ladder section must end with a line '%'"),
+        "unexpected-text": translate("Diagnostic", "unexpected text '{text}'"),
+        "text-outside-section": translate("Diagnostic", "text outside any section: '{text}'"),
+        "duplicate-section": translate("Diagnostic", 'section %@{number} appears twice'),
+        "bad-section": translate(
             "Diagnostic", 'unknown section %@{number} (FANUC sections are %@0 to %@5)'),
-        "unknown-instruction": QCoreApplication.translate(
-            "Diagnostic", "unknown instruction '{name}'"),
-        "missing-operand": QCoreApplication.translate("Diagnostic", '{name} needs an address'),
-        "extra-operand": QCoreApplication.translate(
-            "Diagnostic", "{name} takes no operand, found '{text}'"),
-        "param-count": QCoreApplication.translate(
-            "Diagnostic", '{name} needs {expected} parameters, found {found}'),
-        "param-kind-number": QCoreApplication.translate(
+        "unknown-instruction": translate("Diagnostic", "unknown instruction '{name}'"),
+        "missing-operand": translate("Diagnostic", '{name} needs an address'),
+        "extra-operand": translate("Diagnostic", "{name} takes no operand, found '{text}'"),
+        "param-count": translate("Diagnostic", '{name} needs {expected} parameters, found {found}'),
+        "param-kind-number": translate(
             "Diagnostic", "{name}: parameter {index} ({param}) must be a number, found '{text}'"),
-        "param-kind-address": QCoreApplication.translate(
+        "param-kind-address": translate(
             "Diagnostic", "{name}: parameter {index} ({param}) must be an address, found '{text}'"),
-        "param-range": QCoreApplication.translate(
-            "Diagnostic", '{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}'),  # noqa: E501
-        "param-choice": QCoreApplication.translate(
-            "Diagnostic", '{name}: parameter {index} ({param}) must be one of {choices}, found {value}'),  # noqa: E501
-        "param-mask": QCoreApplication.translate(
-            "Diagnostic", "{name}: parameter {index} ({param}) must be up to 4 binary digits, found '{text}'"),  # noqa: E501
-        "unknown-sub": QCoreApplication.translate(
+        "param-range": translate(
+            "Diagnostic",
+            '{name}: parameter {index} ({param}) must be {lo} to {hi},'
+            ' found {value}'),
+        "param-choice": translate(
+            "Diagnostic",
+            '{name}: parameter {index} ({param}) must be one of'
+            ' {choices}, found {value}'),
+        "param-mask": translate(
+            "Diagnostic",
+            '{name}: parameter {index} ({param}) must be up to 4 binary'
+            " digits, found '{text}'"),
+        "unknown-sub": translate(
             "Diagnostic", 'no functional instruction has the number SUB {number}'),
-        "stray-parameter": QCoreApplication.translate(
+        "stray-parameter": translate(
             "Diagnostic", "a parameter line '{text}' without a SUB instruction before it"),
-        "bad-encoding": QCoreApplication.translate(
+        "bad-encoding": translate(
             "Diagnostic", 'the file is neither UTF-8 nor Turkish Windows (cp1254) text'),
-        "syntax": QCoreApplication.translate("Diagnostic", "syntax error at '{text}'"),
-        "open-circuit": QCoreApplication.translate(
+        "syntax": translate("Diagnostic", "syntax error at '{text}'"),
+        "open-circuit": translate(
             "Diagnostic", 'open circuit: this element is not connected to the right side'),
-        "not-connected": QCoreApplication.translate(
-            "Diagnostic", 'element not connected to the left rail'),
-        "coil-not-right": QCoreApplication.translate(
-            "Diagnostic", 'a coil must be at the right end of the network'),
-        "coil-on-rail": QCoreApplication.translate(
-            "Diagnostic", 'a coil cannot sit straight on the left rail'),
-        "bridge": QCoreApplication.translate(
+        "not-connected": translate("Diagnostic", 'element not connected to the left rail'),
+        "coil-not-right": translate("Diagnostic", 'a coil must be at the right end of the network'),
+        "coil-on-rail": translate("Diagnostic", 'a coil cannot sit straight on the left rail'),
+        "bridge": translate(
             "Diagnostic", 'bridge circuit: a vertical link joins two branches in the middle'),
-        "short-circuit": QCoreApplication.translate(
-            "Diagnostic", 'short circuit: a wire bypasses the element'),
-        "stack-depth": QCoreApplication.translate(
-            "Diagnostic", 'the logic needs more than 8 stack levels (ST8)'),
-        "reverse-flow": QCoreApplication.translate(
+        "short-circuit": translate("Diagnostic", 'short circuit: a wire bypasses the element'),
+        "stack-depth": translate("Diagnostic", 'the logic needs more than 8 stack levels (ST8)'),
+        "reverse-flow": translate(
             "Diagnostic", 'power would flow right to left here; ladder flows left to right only'),
-        "empty-network": QCoreApplication.translate(
-            "Diagnostic", 'the network has no coil or function'),
-        "box-inputs": QCoreApplication.translate(
-            "Diagnostic", '{name} needs its {count} control inputs connected'),
-        "stack-underflow": QCoreApplication.translate(
-            "Diagnostic", '{name} with nothing pushed on the stack'),
-        "write-input": QCoreApplication.translate(
-            "Diagnostic", '{name} writes to {address}, an input area'),
-        "write-result-register": QCoreApplication.translate(
+        "empty-network": translate("Diagnostic", 'the network has no coil or function'),
+        "box-inputs": translate("Diagnostic", '{name} needs its {count} control inputs connected'),
+        "no-address": translate("Diagnostic", 'this element has no address yet'),
+        "coil-branch": translate(
+            "Diagnostic", 'coils hang on different points of the logic; join them to one point'),
+        "box-output": translate("Diagnostic", 'only coils may follow the output of {name}'),
+        "box-params": translate("Diagnostic", '{name}: {problem}'),
+        "edit-outside": translate("Diagnostic", 'cell ({row}, {col}) is outside the grid'),
+        "edit-coil-column": translate(
+            "Diagnostic", 'only coils go in the coil column (cell ({row}, {col}))'),
+        "edit-box-room": translate(
+            "Diagnostic", '{name} does not fit here: a box needs two contact columns'),
+        "edit-no-element": translate(
+            "Diagnostic", 'there is no suitable element at cell ({row}, {col})'),
+        "edit-line": translate("Diagnostic", 'a line must be horizontal or vertical'),
+        "grid-text": translate("Diagnostic", 'the clipboard does not hold ladder elements'),
+        "stack-underflow": translate("Diagnostic", '{name} with nothing pushed on the stack'),
+        "write-input": translate("Diagnostic", '{name} writes to {address}, an input area'),
+        "write-result-register": translate(
             "Diagnostic", '{name} writes to {address}, part of the read-only R9000-R9005'),
-        "jmp-without-jmpe": QCoreApplication.translate("Diagnostic", 'JMP without a matching JMPE'),
-        "jmpe-without-jmp": QCoreApplication.translate(
-            "Diagnostic", 'JMPE without a JMP before it'),
-        "com-without-come": QCoreApplication.translate("Diagnostic", 'COM without a matching COME'),
-        "come-without-com": QCoreApplication.translate(
-            "Diagnostic", 'COME without a COM before it'),
-        "no-logic": QCoreApplication.translate(
+        "jmp-without-jmpe": translate("Diagnostic", 'JMP without a matching JMPE'),
+        "jmpe-without-jmp": translate("Diagnostic", 'JMPE without a JMP before it'),
+        "com-without-come": translate("Diagnostic", 'COM without a matching COME'),
+        "come-without-com": translate("Diagnostic", 'COME without a COM before it'),
+        "no-logic": translate(
             "Diagnostic", '{name} without a logic result before it (start with RD)'),
-        "coil-twice": QCoreApplication.translate(
-            "Diagnostic", 'coil {address} is written more than once'),
-        "dangling-logic": QCoreApplication.translate(
+        "coil-twice": translate("Diagnostic", 'coil {address} is written more than once'),
+        "dangling-logic": translate(
             "Diagnostic", 'logic at the end of the program is not written to any coil'),
-        "bad-binary": QCoreApplication.translate(
-            "Diagnostic", 'not a LadderWorks binary: {reason}'),
+        "bad-binary": translate("Diagnostic", 'not a LadderWorks binary: {reason}'),
+        "alarm-line": translate(
+            "Diagnostic",
+            "not an alarm message line: '{text}' (expected 'NNN text' or"
+            " 'A00.0 text')"),
+        "alarm-number": translate(
+            "Diagnostic", 'alarm number {number} is out of range (000 to 799)'),
+        "alarm-address": translate("Diagnostic", "'{text}' is not an alarm bit (A0.0 to A99.7)"),
+        "alarm-duplicate": translate(
+            "Diagnostic", 'message {number} appears again; the one on line {first} is used'),
+        "alarm-empty": translate("Diagnostic", 'message {number} has no text'),
+        "not-implemented": translate(
+            "Diagnostic", '{name} is not implemented in the simulator yet'),
     }
 
 

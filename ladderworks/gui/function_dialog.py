@@ -9,6 +9,7 @@ from PySide6.QtWidgets import (
     QDialogButtonBox,
     QHeaderView,
     QLabel,
+    QLineEdit,
     QTableWidget,
     QTableWidgetItem,
     QVBoxLayout,
@@ -103,11 +104,12 @@ class FunctionDialog(QDialog):
     """The property table of one functional instruction; OK only with valid parameters."""
 
     def __init__(self, spec: InstructionSpec, instruction: Instruction | None = None,
-                 parent: QWidget | None = None) -> None:
+                 parent: QWidget | None = None, comment: str = "") -> None:
         super().__init__(parent)
         self.setObjectName("function_dialog")
         self.spec = spec
         self.instruction: Instruction | None = None
+        self.comment_text = comment
         self.setWindowTitle(f"{spec.name} — {spec.title}")
         layout = QVBoxLayout(self)
         self._title = QLabel(self)
@@ -118,6 +120,12 @@ class FunctionDialog(QDialog):
         self.table.verticalHeader().hide()
         self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
         layout.addWidget(self.table)
+        self._comment_label = QLabel(self)
+        layout.addWidget(self._comment_label)
+        self.comment = QLineEdit(self)
+        self.comment.setObjectName("function_comment")
+        self.comment.setText(comment)
+        layout.addWidget(self.comment)
         self.warning = QLabel(self)
         self.warning.setObjectName("function_warning")
         self.warning.setWordWrap(True)
@@ -155,6 +163,8 @@ class FunctionDialog(QDialog):
         self._title.setText(QCoreApplication.translate(
             "FunctionDialog", "{0} — {1}: fill in the parameters").format(
             self.spec.name, self.spec.title_tr if _turkish() else self.spec.title))
+        self._comment_label.setText(QCoreApplication.translate(
+            "FunctionDialog", "Comment (shown with the box, written after // in the file):"))
         self.table.setHorizontalHeaderLabels([
             QCoreApplication.translate("FunctionDialog", "Parameter"),
             QCoreApplication.translate("FunctionDialog", "Value"),
@@ -194,6 +204,7 @@ class FunctionDialog(QDialog):
             return
         self.warning.hide()
         self.instruction = instruction
+        self.comment_text = self.comment.text().strip()
         super().accept()
 
     def _bad_row(self, diagnostics: list[Diagnostic]) -> int | None:

@@ -30,9 +30,7 @@ from ladderworks.gui.text_view import ProgramTextView
 from ladderworks.gui.tools import Tool, icon, tool_help, tool_icon, tool_name
 from ladderworks.gui.translation import UiLanguage
 
-
-def _t(text: str) -> str:
-    return QCoreApplication.translate("MainWindow", text)
+translate = QCoreApplication.translate
 
 
 class MainWindow(QMainWindow):
@@ -41,8 +39,9 @@ class MainWindow(QMainWindow):
     language_changed = Signal(str)
     file_saved = Signal(str)
 
-    def __init__(self, settings: Settings, language: UiLanguage,
-                 parent: QWidget | None = None) -> None:
+    def __init__(
+        self, settings: Settings, language: UiLanguage, parent: QWidget | None = None
+    ) -> None:
         super().__init__(parent)
         self.setObjectName("main_window")
         self.settings = settings
@@ -50,6 +49,7 @@ class MainWindow(QMainWindow):
         self.path: Path | None = None
         self.encoding = "utf-8"
         self.failed_path: Path | None = None  # a file that did not parse: never overwritten
+        self.last_warning = ""
         self.setWindowIcon(icon("ladderworks"))
 
         self.editor = LadderEditor(self)
@@ -90,9 +90,14 @@ class MainWindow(QMainWindow):
 
     # -- actions and menus ---------------------------------------------------------------
 
-    def _action(self, name: str, text: Callable[[], str], slot: Callable[[], object] | None,
-                shortcut: QKeySequence | QKeySequence.StandardKey | str | None = None,
-                icon_name: str | None = None) -> QAction:
+    def _action(
+        self,
+        name: str,
+        text: Callable[[], str],
+        slot: Callable[[], object] | None,
+        shortcut: QKeySequence | QKeySequence.StandardKey | str | None = None,
+        icon_name: str | None = None,
+    ) -> QAction:
         action = QAction(self)
         action.setObjectName(name)
         if shortcut is not None:
@@ -109,45 +114,109 @@ class MainWindow(QMainWindow):
         key = QKeySequence.StandardKey
         ed = self.editor
         a = self._action
-        a("action_new", lambda: _t("&New"), self.new_file, key.New)
-        a("action_open", lambda: _t("&Open..."), self.open_dialog, key.Open)
-        a("action_save", lambda: _t("&Save"), self.save, key.Save)
-        a("action_save_as", lambda: _t("Save &As..."), self.save_as_dialog, key.SaveAs)
-        a("action_import_mod", lambda: _t("&Import .MOD..."), self.import_mod_dialog)
-        a("action_export_mod", lambda: _t("&Export .MOD..."), self.export_mod_dialog)
-        a("action_clear_recent", lambda: _t("Clear the list"), self._clear_recent)
-        a("action_quit", lambda: _t("&Quit"), self.close, key.Quit)
+        a("action_new", lambda: translate("MainWindow", "&New"), self.new_file, key.New)
+        a("action_open", lambda: translate("MainWindow", "&Open..."), self.open_dialog, key.Open)
+        a("action_save", lambda: translate("MainWindow", "&Save"), self.save, key.Save)
+        a(
+            "action_save_as",
+            lambda: translate("MainWindow", "Save &As..."),
+            self.save_as_dialog,
+            key.SaveAs,
+        )
+        a(
+            "action_import_mod",
+            lambda: translate("MainWindow", "&Import .MOD..."),
+            self.import_mod_dialog,
+        )
+        a(
+            "action_export_mod",
+            lambda: translate("MainWindow", "&Export .MOD..."),
+            self.export_mod_dialog,
+        )
+        a(
+            "action_clear_recent",
+            lambda: translate("MainWindow", "Clear the list"),
+            self._clear_recent,
+        )
+        a("action_quit", lambda: translate("MainWindow", "&Quit"), self.close, key.Quit)
         undo = ed.undo_stack.createUndoAction(self)
         undo.setObjectName("action_undo")
         undo.setShortcut(QKeySequence(key.Undo))
         self.actions_by_name["action_undo"] = undo
-        self._texts.append((undo, lambda: _t("&Undo")))
+        self._texts.append((undo, lambda: translate("MainWindow", "&Undo")))
         redo = ed.undo_stack.createRedoAction(self)
         redo.setObjectName("action_redo")
         redo.setShortcut(QKeySequence(key.Redo))
         self.actions_by_name["action_redo"] = redo
-        self._texts.append((redo, lambda: _t("&Redo")))
-        a("action_cut", lambda: _t("Cu&t"), ed.cut, key.Cut)
-        a("action_copy", lambda: _t("&Copy"), ed.copy, key.Copy)
-        a("action_paste", lambda: _t("&Paste"), ed.paste, key.Paste)
-        a("action_delete", lambda: _t("&Delete"), ed.delete_at_cursor, "Del")
-        a("action_edit_element", lambda: _t("&Edit element"), ed.edit_at_cursor)
-        a("action_invert", lambda: _t("NOT (invert)"), ed.invert_at_cursor, None, "invert")
-        a("action_or", lambda: _t("OR (add parallel)"), ed.or_at_cursor, None, "or")
-        a("action_insert_row_before", lambda: _t("Insert row before"), ed.insert_row_before,
-          None, "row_before")
-        a("action_insert_row_after", lambda: _t("Insert row after"), ed.insert_row_after,
-          None, "row_after")
-        a("action_zoom_in", lambda: _t("Zoom &in"), ed.zoom_in, key.ZoomIn)
-        a("action_zoom_out", lambda: _t("Zoom &out"), ed.zoom_out, key.ZoomOut)
-        a("action_zoom_reset", lambda: _t("&Normal size"), ed.zoom_reset, "Ctrl+0")
-        a("action_show_ladder", lambda: _t("Show as &ladder"), self.show_as_ladder, "F5")
-        a("action_show_text", lambda: _t("Show as &text"), self.show_as_text, "F6")
-        a("action_check", lambda: _t("C&heck"), self.check, "F7")
-        a("action_compile", lambda: _t("&Compile"), self.compile, "F9", "compile")
+        self._texts.append((redo, lambda: translate("MainWindow", "&Redo")))
+        a("action_cut", lambda: translate("MainWindow", "Cu&t"), ed.cut, key.Cut)
+        a("action_copy", lambda: translate("MainWindow", "&Copy"), ed.copy, key.Copy)
+        a("action_paste", lambda: translate("MainWindow", "&Paste"), ed.paste, key.Paste)
+        a("action_delete", lambda: translate("MainWindow", "&Delete"), ed.delete_at_cursor, "Del")
+        a(
+            "action_edit_element",
+            lambda: translate("MainWindow", "&Edit element"),
+            ed.edit_at_cursor,
+        )
+        a(
+            "action_invert",
+            lambda: translate("MainWindow", "NOT (invert)"),
+            ed.invert_at_cursor,
+            None,
+            "invert",
+        )
+        a(
+            "action_or",
+            lambda: translate("MainWindow", "OR (add parallel)"),
+            ed.or_at_cursor,
+            None,
+            "or",
+        )
+        a(
+            "action_insert_row_before",
+            lambda: translate("MainWindow", "Insert row before"),
+            ed.insert_row_before,
+            None,
+            "row_before",
+        )
+        a(
+            "action_insert_row_after",
+            lambda: translate("MainWindow", "Insert row after"),
+            ed.insert_row_after,
+            None,
+            "row_after",
+        )
+        a("action_zoom_in", lambda: translate("MainWindow", "Zoom &in"), ed.zoom_in, key.ZoomIn)
+        a("action_zoom_out", lambda: translate("MainWindow", "Zoom &out"), ed.zoom_out, key.ZoomOut)
+        a(
+            "action_zoom_reset",
+            lambda: translate("MainWindow", "&Normal size"),
+            ed.zoom_reset,
+            "Ctrl+0",
+        )
+        a(
+            "action_show_ladder",
+            lambda: translate("MainWindow", "Show as &ladder"),
+            self.show_as_ladder,
+            "F5",
+        )
+        a(
+            "action_show_text",
+            lambda: translate("MainWindow", "Show as &text"),
+            self.show_as_text,
+            "F6",
+        )
+        a("action_check", lambda: translate("MainWindow", "C&heck"), self.check, "F7")
+        a(
+            "action_compile",
+            lambda: translate("MainWindow", "&Compile"),
+            self.compile,
+            "F9",
+            "compile",
+        )
         a("action_language_en", lambda: "English", lambda: self.set_language("en"))
         a("action_language_tr", lambda: "Türkçe", lambda: self.set_language("tr"))
-        a("action_about", lambda: _t("&About LadderWorks"), self.about)
+        a("action_about", lambda: translate("MainWindow", "&About LadderWorks"), self.about)
         languages = QActionGroup(self)
         for code in ("en", "tr"):
             action = self.actions_by_name[f"action_language_{code}"]
@@ -183,54 +252,110 @@ class MainWindow(QMainWindow):
         return menu
 
     def _make_menus(self) -> None:
-        file_menu = self._menu("menu_file", lambda: _t("&File"), [
-            "action_new", "action_open"])
+        file_menu = self._menu(
+            "menu_file", lambda: translate("MainWindow", "&File"), ["action_new", "action_open"]
+        )
         self.recent_menu = QMenu(file_menu)
         self.recent_menu.setObjectName("menu_recent")
-        self._texts.append((self.recent_menu, lambda: _t("Recent files")))
+        self._texts.append((self.recent_menu, lambda: translate("MainWindow", "Recent files")))
         file_menu.addMenu(self.recent_menu)
-        for item in ("action_save", "action_save_as", None, "action_import_mod",
-                     "action_export_mod", None, "action_quit"):
+        for item in (
+            "action_save",
+            "action_save_as",
+            None,
+            "action_import_mod",
+            "action_export_mod",
+            None,
+            "action_quit",
+        ):
             if item is None:
                 file_menu.addSeparator()
             else:
                 file_menu.addAction(self.actions_by_name[item])
-        self._menu("menu_edit", lambda: _t("&Edit"), [
-            "action_undo", "action_redo", None, "action_cut", "action_copy", "action_paste",
-            "action_delete", None, "action_edit_element", "action_invert", "action_or",
-            "action_insert_row_before", "action_insert_row_after"])
-        view = self._menu("menu_view", lambda: _t("&View"), [
-            "action_zoom_in", "action_zoom_out", "action_zoom_reset", None,
-            "action_show_ladder", "action_show_text", None])
-        for dock, name in ((self.palette, "action_dock_palette"),
-                           (self.errors, "action_dock_errors")):
+        self._menu(
+            "menu_edit",
+            lambda: translate("MainWindow", "&Edit"),
+            [
+                "action_undo",
+                "action_redo",
+                None,
+                "action_cut",
+                "action_copy",
+                "action_paste",
+                "action_delete",
+                None,
+                "action_edit_element",
+                "action_invert",
+                "action_or",
+                "action_insert_row_before",
+                "action_insert_row_after",
+            ],
+        )
+        view = self._menu(
+            "menu_view",
+            lambda: translate("MainWindow", "&View"),
+            [
+                "action_zoom_in",
+                "action_zoom_out",
+                "action_zoom_reset",
+                None,
+                "action_show_ladder",
+                "action_show_text",
+                None,
+            ],
+        )
+        for dock, name in (
+            (self.palette, "action_dock_palette"),
+            (self.errors, "action_dock_errors"),
+        ):
             toggle = dock.toggleViewAction()
             toggle.setObjectName(name)
             self.actions_by_name[name] = toggle
             view.addAction(toggle)
-        self._menu("menu_plc", lambda: _t("&PLC"), ["action_check", "action_compile"])
-        tools = self._menu("menu_tools", lambda: _t("&Tools"),
-                           [f"tool_{tool.value}" for tool in Tool])
+        self._menu(
+            "menu_plc", lambda: translate("MainWindow", "&PLC"), ["action_check", "action_compile"]
+        )
+        tools = self._menu(
+            "menu_tools",
+            lambda: translate("MainWindow", "&Tools"),
+            [f"tool_{tool.value}" for tool in Tool],
+        )
         tools.addSeparator()
-        self._menu("menu_language", lambda: _t("&Language"),
-                   ["action_language_en", "action_language_tr"])
-        self._menu("menu_help", lambda: _t("&Help"), ["action_about"])
+        self._menu(
+            "menu_language",
+            lambda: translate("MainWindow", "&Language"),
+            ["action_language_en", "action_language_tr"],
+        )
+        self._menu("menu_help", lambda: translate("MainWindow", "&Help"), ["action_about"])
         toolbar = QToolBar(self)
         toolbar.setObjectName("toolbar_main")
-        self._texts.append((toolbar, lambda: _t("Main toolbar")))
-        for item in ("action_new", "action_open", "action_save", None, "action_undo",
-                     "action_redo", None, "action_zoom_in", "action_zoom_out", None,
-                     "action_compile"):
+        self._texts.append((toolbar, lambda: translate("MainWindow", "Main toolbar")))
+        for item in (
+            "action_new",
+            "action_open",
+            "action_save",
+            None,
+            "action_undo",
+            "action_redo",
+            None,
+            "action_zoom_in",
+            "action_zoom_out",
+            None,
+            "action_compile",
+        ):
             if item is None:
                 toolbar.addSeparator()
             else:
                 toolbar.addAction(self.actions_by_name[item])
         style = self.style()
         sp = style.StandardPixmap
-        for name, pixmap in (("action_new", sp.SP_FileIcon),
-                             ("action_open", sp.SP_DialogOpenButton),
-                             ("action_save", sp.SP_DialogSaveButton),
-                             ("action_undo", sp.SP_ArrowBack), ("action_redo", sp.SP_ArrowForward)):
+        for name, pixmap in (
+            ("action_new", sp.SP_FileIcon),
+            ("action_open", sp.SP_DialogOpenButton),
+            ("action_save", sp.SP_DialogSaveButton),
+            ("action_undo", sp.SP_ArrowBack),
+            ("action_redo", sp.SP_ArrowForward),
+        ):
             self.actions_by_name[name].setIcon(style.standardIcon(pixmap))
         self.actions_by_name["action_zoom_in"].setIcon(icon("zoom_in"))
         self.actions_by_name["action_zoom_out"].setIcon(icon("zoom_out"))
@@ -260,7 +385,8 @@ class MainWindow(QMainWindow):
             action.setStatusTip(tool_help(tool))
         for code in ("en", "tr"):
             self.actions_by_name[f"action_language_{code}"].setChecked(
-                self.language.current == code)
+                self.language.current == code
+            )
         self._update_title()
 
     def changeEvent(self, event: QEvent) -> None:
@@ -307,20 +433,36 @@ class MainWindow(QMainWindow):
         return not self.editor.undo_stack.isClean()
 
     def _update_title(self, *_args: object) -> None:
-        name = self.path.name if self.path else _t("Untitled")
+        name = self.path.name if self.path else translate("MainWindow", "Untitled")
         star = "*" if self.is_modified() else ""
         self.setWindowTitle(f"{name}{star} — LadderWorks")
+
+    def warn(self, title: str, text: str) -> None:
+        """Show a warning without blocking (the text is kept in `last_warning`)."""
+        self.last_warning = text
+        box = QMessageBox(
+            QMessageBox.Icon.Warning, title, text, QMessageBox.StandardButton.Ok, self
+        )
+        box.setObjectName("warning_box")
+        box.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose, True)
+        box.open()
 
     def maybe_save(self) -> bool:
         """Ask to save unsaved changes; False when the user cancels."""
         if not self.is_modified():
             return True
-        buttons = (QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
-                   | QMessageBox.StandardButton.Cancel)
+        buttons = (
+            QMessageBox.StandardButton.Save
+            | QMessageBox.StandardButton.Discard
+            | QMessageBox.StandardButton.Cancel
+        )
         answer = QMessageBox.question(
-            self, _t("Unsaved changes"),
-            _t("The program has unsaved changes. Save them?"), buttons,
-            QMessageBox.StandardButton.Save)
+            self,
+            translate("MainWindow", "Unsaved changes"),
+            translate("MainWindow", "The program has unsaved changes. Save them?"),
+            buttons,
+            QMessageBox.StandardButton.Save,
+        )
         if answer == QMessageBox.StandardButton.Save:
             return self.save()
         return answer == QMessageBox.StandardButton.Discard
@@ -343,8 +485,12 @@ class MainWindow(QMainWindow):
         try:
             result = parse_file(path)
         except OSError as error:
-            QMessageBox.warning(self, _t("Open"), _t("Cannot read {0}: {1}").format(
-                path, error.strerror or str(error)))
+            self.warn(
+                translate("MainWindow", "Open"),
+                translate("MainWindow", "Cannot read {0}: {1}").format(
+                    path, error.strerror or str(error)
+                ),
+            )
             return False
         self.path = path
         self.encoding = result.encoding
@@ -366,7 +512,7 @@ class MainWindow(QMainWindow):
             self.text_view.document().setModified(False)
             self.pages.setCurrentWidget(self.text_view)
             self.errors.show()
-            self._show_message(_t("The file has errors: it is shown as text"))
+            self._show_message(translate("MainWindow", "The file has errors: it is shown as text"))
         self._update_title()
         return True
 
@@ -375,8 +521,14 @@ class MainWindow(QMainWindow):
         if not self.maybe_save():
             return
         name, _ = QFileDialog.getOpenFileName(
-            self, _t("Open program"), str(self.path.parent if self.path else ""),
-            _t("Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)"))
+            self,
+            translate("MainWindow", "Open program"),
+            str(self.path.parent if self.path else ""),
+            translate(
+                "MainWindow",
+                "Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)",
+            ),
+        )
         if name:
             self.load(name)
 
@@ -402,9 +554,14 @@ class MainWindow(QMainWindow):
         path = Path(path)
         if self.pages.currentWidget() is self.text_view:
             if self.failed_path is not None and path.resolve() == self.failed_path.resolve():
-                QMessageBox.warning(self, _t("Save"), _t(
-                    "{0} did not parse and is not overwritten. Fix the errors and use "
-                    "Show as ladder, or save under another name.").format(path.name))
+                self.warn(
+                    translate("MainWindow", "Save"),
+                    translate(
+                        "MainWindow",
+                        "{0} did not parse and is not overwritten. Fix the errors and use "
+                        "Show as ladder, or save under another name.",
+                    ).format(path.name),
+                )
                 return False
             text = self.text_view.toPlainText()
             if not text.endswith("\n"):
@@ -412,30 +569,42 @@ class MainWindow(QMainWindow):
         else:
             maybe = self.program_text()
             if maybe is None:
-                QMessageBox.warning(self, _t("Save"), _t(
-                    "The ladder cannot be written as a program; see the error list."))
+                self.warn(
+                    translate("MainWindow", "Save"),
+                    translate(
+                        "MainWindow",
+                        "The ladder cannot be written as a program; see the error list.",
+                    ),
+                )
                 return False
             text = maybe
         try:
             atomic_write(path, text, self.encoding)
         except OSError as error:
-            QMessageBox.warning(self, _t("Save"), _t("Cannot write {0}: {1}").format(
-                path, error.strerror or str(error)))
+            self.warn(
+                translate("MainWindow", "Save"),
+                translate("MainWindow", "Cannot write {0}: {1}").format(
+                    path, error.strerror or str(error)
+                ),
+            )
             return False
         self.path = path
         self.editor.undo_stack.setClean()
         self.text_view.document().setModified(False)
         self._remember(path)
         self._update_title()
-        self._show_message(_t("Saved {0}").format(path.name))
+        self._show_message(translate("MainWindow", "Saved {0}").format(path.name))
         self.file_saved.emit(str(path))
         return True
 
     def save_as_dialog(self) -> bool:
         """File > Save As."""
         name, _ = QFileDialog.getSaveFileName(
-            self, _t("Save program"), str(self.path or "program.LAD"),
-            _t("Ladder programs (*.LAD *.lad);;All files (*)"))
+            self,
+            translate("MainWindow", "Save program"),
+            str(self.path or "program.LAD"),
+            translate("MainWindow", "Ladder programs (*.LAD *.lad);;All files (*)"),
+        )
         return bool(name) and self.save_to(name)
 
     def import_mod_dialog(self) -> None:
@@ -443,7 +612,11 @@ class MainWindow(QMainWindow):
         if not self.maybe_save():
             return
         name, _ = QFileDialog.getOpenFileName(
-            self, _t("Import .MOD"), "", _t("Mnemonic programs (*.MOD *.mod);;All files (*)"))
+            self,
+            translate("MainWindow", "Import .MOD"),
+            "",
+            translate("MainWindow", "Mnemonic programs (*.MOD *.mod);;All files (*)"),
+        )
         if name:
             self.import_mod(name)
 
@@ -460,7 +633,11 @@ class MainWindow(QMainWindow):
         """File > Export .MOD."""
         base = self.path.with_suffix(".MOD") if self.path else Path("program.MOD")
         name, _ = QFileDialog.getSaveFileName(
-            self, _t("Export .MOD"), str(base), _t("Mnemonic programs (*.MOD);;All files (*)"))
+            self,
+            translate("MainWindow", "Export .MOD"),
+            str(base),
+            translate("MainWindow", "Mnemonic programs (*.MOD);;All files (*)"),
+        )
         if name:
             self.export_mod(name)
 
@@ -470,7 +647,7 @@ class MainWindow(QMainWindow):
         if text is None:
             return False
         atomic_write(path, text, self.encoding)
-        self._show_message(_t("Exported {0}").format(Path(path).name))
+        self._show_message(translate("MainWindow", "Exported {0}").format(Path(path).name))
         return True
 
     def _remember(self, path: Path) -> None:
@@ -541,8 +718,11 @@ class MainWindow(QMainWindow):
             diagnostics = diagnostics + compile_step.check(program)
         self.errors.set_diagnostics(diagnostics)
         self.errors.show()
-        self._show_message(_t("Check: {0} error(s)").format(
-            sum(1 for d in diagnostics if d.is_error)))
+        self._show_message(
+            translate("MainWindow", "Check: {0} error(s)").format(
+                sum(1 for d in diagnostics if d.is_error)
+            )
+        )
         return diagnostics
 
     def compile(self) -> bytes | None:
@@ -557,16 +737,22 @@ class MainWindow(QMainWindow):
         self.errors.set_diagnostics(diagnostics)
         if binary is None:
             self.errors.show()
-            self._show_message(_t("Compile failed: {0} error(s)").format(
-                sum(1 for d in diagnostics if d.is_error)))
+            self._show_message(
+                translate("MainWindow", "Compile failed: {0} error(s)").format(
+                    sum(1 for d in diagnostics if d.is_error)
+                )
+            )
         else:
-            self._show_message(_t("Compile finished: {0} bytes").format(len(binary)))
+            self._show_message(
+                translate("MainWindow", "Compile finished: {0} bytes").format(len(binary))
+            )
         return binary
 
     def go_to_diagnostic(self, diagnostic: Diagnostic) -> None:
         """Jump to the diagnostic's cell in the ladder, or its line in the text view."""
         if self.pages.currentWidget() is self.text_view or (
-                diagnostic.network is None and diagnostic.line):
+            diagnostic.network is None and diagnostic.line
+        ):
             if self.pages.currentWidget() is not self.text_view:
                 self.show_as_text()
             self.text_view.go_to(diagnostic.line, diagnostic.column)
@@ -577,8 +763,13 @@ class MainWindow(QMainWindow):
 
     def about(self) -> None:
         """Help > About."""
-        QMessageBox.about(self, _t("About LadderWorks"), _t(
-            "LadderWorks: ladder (FANUC PMC style) programming for CNC machines."))
+        QMessageBox.about(
+            self,
+            translate("MainWindow", "About LadderWorks"),
+            translate(
+                "MainWindow", "LadderWorks: ladder (FANUC PMC style) programming for CNC machines."
+            ),
+        )
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Ask about unsaved changes; remember the window layout."""

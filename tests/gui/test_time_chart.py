@@ -184,3 +184,25 @@ def test_named_signals_label_their_lanes(qtbot: QtBot) -> None:
     ticks = dock.plot.getPlotItem().getAxis("left")._tickLevels[0]
     assert [label for _y, label in ticks] == ["G30.0 SOV0", "X2.1 FP_Din_1"]
     session.stop()
+
+
+def test_real_time_samples_arrive_in_order(qtbot: QtBot) -> None:
+    from ladderworks.core.il import parse_file
+    from ladderworks.paths import EXAMPLES
+
+    session = PlcSession(realtime=True)
+    session.load_program(parse_file(EXAMPLES / "timer_relay.LAD").program)
+    dock = TimeChartDock(session)
+    qtbot.addWidget(dock)
+    dock.signals_edit.setText("R9091.5")
+    assert session.start()
+    try:
+        assert dock.start()
+        qtbot.waitUntil(lambda: len(dock.record) >= 60, timeout=10_000)
+        dock.stop()
+    finally:
+        session.stop()
+    count = len(dock.record)
+    assert list(dock.record.seqs) == list(range(count))
+    times = list(dock.record.times)
+    assert times == list(range(times[0], times[0] + 8 * count, 8))  # virtual ms, every scan

@@ -27,7 +27,7 @@ class NetworkEditCommand(QUndoCommand):
         self._done = True
         network = editor.networks[index]
         self._appended: LadderNetwork | None = None
-        if index == len(editor.networks) - 1 and not network.is_empty():
+        if index == len(editor.networks) - 1 and not (network.is_empty() and not network.comments):
             self._appended = LadderNetwork()
 
     def redo(self) -> None:

@@ -12,7 +12,8 @@ CELL_H = 60.0
 COMMENT_H = 20.0
 LISTING_LINE_H = 18.0
 LEFT = 56.0  # room for the network number left of the left rail
-GAP = 14.0  # space between networks
+GAP = 10.0  # space between networks
+SPARE_ROWS = 1  # an empty row drawn under each network: clicking there adds a row
 
 
 def network_height(network: LadderNetwork) -> float:
@@ -20,7 +21,7 @@ def network_height(network: LadderNetwork) -> float:
     comments = len(network.comments) * COMMENT_H
     if network.listing is not None:
         return comments + max(len(network.listing), 1) * LISTING_LINE_H + 8
-    return comments + network.rows * CELL_H + GAP
+    return comments + (network.rows + SPARE_ROWS) * CELL_H + GAP
 
 
 def network_width(network: LadderNetwork) -> float:
@@ -102,5 +103,5 @@ class Layout:
         if local_y < top:
             return Hit(index, 0, col, node, int(local_y // COMMENT_H))
         row = int((local_y - top) // CELL_H)
-        row = min(max(row, 0), max(network.rows - 1, 0))
+        row = min(max(row, 0), network.rows - 1 + SPARE_ROWS)
         return Hit(index, row, col, node)

@@ -46,11 +46,13 @@ from ladderworks.core.ladder import (
 from ladderworks.core.signals import signal_at
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
+from ladderworks.gui.editor.conversion import ladder_to_program, program_to_ladder
 from ladderworks.gui.editor.geometry import (
     CELL_H,
     CELL_W,
     COMMENT_H,
     LEFT,
+    SPARE_ROWS,
     Hit,
     Layout,
     cell_centre,
@@ -67,8 +69,12 @@ ZOOM_MIN = 0.3
 ZOOM_MAX = 3.0
 
 
-def _t(text: str) -> str:
-    return QCoreApplication.translate("LadderEditor", text)
+translate = QCoreApplication.translate
+
+
+def is_blank(network: LadderNetwork) -> bool:
+    """True for a network with nothing drawn and no comment (the drawing area at the end)."""
+    return network.is_empty() and not network.comments
 
 
 def describe_signal(address: object) -> tuple[str, str] | None:
@@ -139,7 +145,8 @@ class LadderEditor(QGraphicsView):
         self.inline_message = QLabel(self.viewport())
         self.inline_message.setObjectName("inline_message")
         self.inline_message.setStyleSheet(
-            "background: #fff3f3; color: #b00020; border: 1px solid #b00020; padding: 2px;")
+            "background: #fff3f3; color: #b00020; border: 1px solid #b00020; padding: 2px;"
+        )
         self.inline_message.hide()
         self._inline_target: tuple[str, int, int, int] | None = None  # kind, network, row, col
 
@@ -147,7 +154,7 @@ class LadderEditor(QGraphicsView):
 
     def set_program(self, program: Program) -> list[Diagnostic]:
         """Show a program as ladder (clears undo); returns the conversion's diagnostics."""
-        document, diagnostics = core.program_to_ladder(program)
+        document, diagnostics = program_to_ladder(program)
         self.set_document(document)
         self.mark_diagnostics(diagnostics)
         return diagnostics
@@ -181,12 +188,14 @@ class LadderEditor(QGraphicsView):
     def ladder_document(self) -> LadderDocument:
         """The document with the drawn networks (the empty network at the end left out)."""
         doc = self.document
-        nets = [net for net in self.networks if not net.is_empty()]
+        nets = list(self.networks)
+        if nets and is_blank(nets[-1]):
+            nets.pop()
         return LadderDocument(nets, doc.header, doc.trailer, doc.footer, doc.before, doc.after)
 
     def program(self) -> tuple[Program | None, list[Diagnostic]]:
         """The program drawn (None when a network cannot be coded) and the diagnostics."""
-        program, diagnostics = core.ladder_to_program(self.ladder_document())
+        program, diagnostics = ladder_to_program(self.ladder_document())
         self.mark_diagnostics(diagnostics)
         return program, diagnostics
 
@@ -252,8 +261,11 @@ class LadderEditor(QGraphicsView):
                 item.error_cells = set()
                 item.update()
         for diagnostic in diagnostics:
-            if diagnostic.network is not None and diagnostic.cell is not None \
-                    and 0 <= diagnostic.network < len(self.items):
+            if (
+                diagnostic.network is not None
+                and diagnostic.cell is not None
+                and 0 <= diagnostic.network < len(self.items)
+            ):
                 item = self.items[diagnostic.network]
                 item.error_cells.add(diagnostic.cell)
                 item.update()
@@ -301,7 +313,9 @@ class LadderEditor(QGraphicsView):
         elif tool in (Tool.OUTPUT, Tool.OUTPUT_NOT):
             self._place_bit(index, row, col, Coil(negated=tool is Tool.OUTPUT_NOT))
         elif tool is Tool.INVERT:
-            self.run_edit(index, lambda n: core.invert(n, row, col), _t("NOT"))
+            self.run_edit(
+                index, lambda n: core.invert(n, row, col), translate("LadderEditor", "NOT")
+            )
         elif tool is Tool.OR:
             self._add_parallel(index, row, col)
         elif tool is Tool.LINE:
@@ -310,15 +324,22 @@ class LadderEditor(QGraphicsView):
             if net.row_is_empty(row) or row >= net.rows:
                 self.open_comment_editor(index, len(net.comments))
             else:
-                self.message.emit(_t("The comment tool works on an empty row only"))
+                self.message.emit(
+                    translate("LadderEditor", "The comment tool works on an empty row only")
+                )
         elif tool is Tool.DELETE:
-            self.run_edit(index, lambda n: core.delete(n, row, col), _t("Delete"))
+            self.run_edit(
+                index, lambda n: core.delete(n, row, col), translate("LadderEditor", "Delete")
+            )
         elif tool is Tool.FUNCTION:
             self.open_function_dialog(index, row, col, self.function_name)
         elif tool in (Tool.ROW_BEFORE, Tool.ROW_AFTER):
             after = tool is Tool.ROW_AFTER
-            self.run_edit(index, lambda n: core.insert_row(n, row, after=after),
-                          _t("Insert row"))
+            self.run_edit(
+                index,
+                lambda n: core.insert_row(n, row, after=after),
+                translate("LadderEditor", "Insert row"),
+            )
 
     def _place_bit(self, index: int, row: int, col: int, element: Contact | Coil) -> None:
         found = self.networks[index].element_at(row, col)
@@ -326,20 +347,30 @@ class LadderEditor(QGraphicsView):
             old = found[1]
             assert isinstance(old, Contact | Coil)
             if old.negated != element.negated:
-                self.run_edit(index, lambda n: core.invert(n, row, col), _t("NOT"))
+                self.run_edit(
+                    index, lambda n: core.invert(n, row, col), translate("LadderEditor", "NOT")
+                )
             self.open_address_editor(index, found[0][0], found[0][1])
             return
-        text = _t("Place contact") if isinstance(element, Contact) else _t("Place coil")
+        text = (
+            translate("LadderEditor", "Place contact")
+            if isinstance(element, Contact)
+            else translate("LadderEditor", "Place coil")
+        )
         if self.run_edit(index, lambda n: core.place(n, row, col, element), text):
             self.open_address_editor(index, row, col)
 
     def _add_parallel(self, index: int, row: int, col: int) -> None:
         found = self.networks[index].element_at(row, col)
         if found is None or not isinstance(found[1], Contact | Coil):
-            self.message.emit(_t("Select a contact or a coil for the OR tool"))
+            self.message.emit(
+                translate("LadderEditor", "Select a contact or a coil for the OR tool")
+            )
             return
         (row, col), _old = found
-        if self.run_edit(index, lambda n: core.add_parallel(n, row, col), _t("OR")):
+        if self.run_edit(
+            index, lambda n: core.add_parallel(n, row, col), translate("LadderEditor", "OR")
+        ):
             self.open_address_editor(index, row + 1, col)
 
     def _line_click(self, index: int, row: int, node: int) -> None:
@@ -349,15 +380,18 @@ class LadderEditor(QGraphicsView):
             top = self.layout_.tops[index]
             self._line_item.setRect(QRectF(x - 4, top + y - 4, 8, 8))
             self._line_item.show()
-            self.message.emit(_t("Line: click the second point"))
+            self.message.emit(translate("LadderEditor", "Line: click the second point"))
             return
         _, row1, node1 = self.line_start
         self.line_start = None
         self._line_item.hide()
         if (row1, node1) == (row, node):
             return
-        self.run_edit(index, lambda n: core.draw_line(n, (row1, node1), (row, node)),
-                      _t("Line"))
+        self.run_edit(
+            index,
+            lambda n: core.draw_line(n, (row1, node1), (row, node)),
+            translate("LadderEditor", "Line"),
+        )
 
     def _select(self, index: int, row: int, col: int) -> None:
         found = self.networks[index].element_at(row, col)
@@ -369,8 +403,9 @@ class LadderEditor(QGraphicsView):
             self.selection = (index, Selection.spanning(cells[0], cells[-1]))
         self._place_overlays()
 
-    def open_function_dialog(self, index: int, row: int, col: int, name: str,
-                             box: FunctionBox | None = None) -> None:
+    def open_function_dialog(
+        self, index: int, row: int, col: int, name: str, box: FunctionBox | None = None
+    ) -> None:
         """The function property table; on OK the box is placed (or its parameters set)."""
         spec = lookup(name)
         if spec is None:
@@ -378,7 +413,7 @@ class LadderEditor(QGraphicsView):
         from ladderworks.core.il import Instruction
 
         current = Instruction(box.name, params=box.params) if box is not None else None
-        dialog = FunctionDialog(spec, current, self)
+        dialog = FunctionDialog(spec, current, self, box.comment if box is not None else "")
         self.function_dialog = dialog
 
         def done() -> None:
@@ -386,12 +421,27 @@ class LadderEditor(QGraphicsView):
             if instruction is None:
                 return
             if box is None:
-                element = FunctionBox.new(spec.name, instruction.params)
-                self.run_edit(index, lambda n: core.place(n, row, col, element),
-                              _t("Place {0}").format(spec.name))
+                element = FunctionBox.new(spec.name, instruction.params, dialog.comment_text)
+                self.run_edit(
+                    index,
+                    lambda n: core.place(n, row, col, element),
+                    translate("LadderEditor", "Place {0}").format(spec.name),
+                )
             else:
-                self.run_edit(index, lambda n: core.set_params(n, row, col, instruction.params),
-                              _t("Parameters of {0}").format(spec.name))
+                self.undo_stack.beginMacro(
+                    translate("LadderEditor", "Parameters of {0}").format(spec.name))
+                self.run_edit(
+                    index,
+                    lambda n: core.set_params(n, row, col, instruction.params),
+                    translate("LadderEditor", "Parameters of {0}").format(spec.name),
+                )
+                if dialog.comment_text != box.comment:
+                    self.run_edit(
+                        index,
+                        lambda n: core.set_comment(n, row, col, dialog.comment_text),
+                        translate("LadderEditor", "Comment"),
+                    )
+                self.undo_stack.endMacro()
             self.setFocus()
 
         dialog.accepted.connect(done)
@@ -410,19 +460,27 @@ class LadderEditor(QGraphicsView):
             text += "  // " + element.comment
         x, y = cell_origin(self.networks[index], row, col)
         rect = QRectF(x - 10, self.layout_.tops[index] + y, CELL_W + 60, 24)
-        self._open_inline(("address", index, row, col), text, rect,
-                          _t("Address, e.g. X2.1 (// comment)"))
+        self._open_inline(
+            ("address", index, row, col),
+            text,
+            rect,
+            translate("LadderEditor", "Address, e.g. X2.1 (// comment)"),
+        )
 
     def open_comment_editor(self, index: int, line: int) -> None:
         """Edit (or add) network comment line `line` (the comment tool)."""
         net = self.networks[index]
         text = net.comments[line] if line < len(net.comments) else ""
-        rect = QRectF(LEFT, self.layout_.tops[index] + line * COMMENT_H,
-                      (net.columns + 1) * CELL_W, 24)
-        self._open_inline(("comment", index, line, 0), text, rect, _t("Comment"))
+        rect = QRectF(
+            LEFT, self.layout_.tops[index] + line * COMMENT_H, (net.columns + 1) * CELL_W, 24
+        )
+        self._open_inline(
+            ("comment", index, line, 0), text, rect, translate("LadderEditor", "Comment")
+        )
 
-    def _open_inline(self, target: tuple[str, int, int, int], text: str, rect: QRectF,
-                     placeholder: str) -> None:
+    def _open_inline(
+        self, target: tuple[str, int, int, int], text: str, rect: QRectF, placeholder: str
+    ) -> None:
         self._inline_target = target
         self.ensureVisible(rect, 20, 20)
         top_left = self.mapFromScene(rect.topLeft())
@@ -476,12 +534,18 @@ class LadderEditor(QGraphicsView):
         assert found is not None
         element = found[1]
         assert isinstance(element, Contact | Coil)
-        self.undo_stack.beginMacro(_t("Address {0}").format(address_text))
-        self.run_edit(index, lambda n: core.set_address(n, row, col, address_text),
-                      _t("Address"))
+        self.undo_stack.beginMacro(translate("LadderEditor", "Address {0}").format(address_text))
+        self.run_edit(
+            index,
+            lambda n: core.set_address(n, row, col, address_text),
+            translate("LadderEditor", "Address"),
+        )
         if comment != element.comment:
-            self.run_edit(index, lambda n: core.set_comment(n, row, col, comment),
-                          _t("Comment"))
+            self.run_edit(
+                index,
+                lambda n: core.set_comment(n, row, col, comment),
+                translate("LadderEditor", "Comment"),
+            )
         self.undo_stack.endMacro()
         self._close_inline()
 
@@ -498,7 +562,11 @@ class LadderEditor(QGraphicsView):
             self._close_inline()
             return
         self._close_inline()
-        self.run_edit(index, lambda n: core.set_network_comments(n, lines), _t("Comment"))
+        self.run_edit(
+            index,
+            lambda n: core.set_network_comments(n, lines),
+            translate("LadderEditor", "Comment"),
+        )
 
     def eventFilter(self, watched: object, event: QEvent) -> bool:
         """ESC in the inline editor cancels it."""
@@ -536,7 +604,7 @@ class LadderEditor(QGraphicsView):
         """DEL: delete the selection or the element at the cursor."""
         if self.selection is not None:
             index, sel = self.selection
-            text = _t("Delete")
+            text = translate("LadderEditor", "Delete")
             try:
                 _, undo_edit = core.cut(self.networks[index], sel)
             except EditRefused as refused:
@@ -547,12 +615,14 @@ class LadderEditor(QGraphicsView):
             self._place_overlays()
             return
         index, row, col = self.cursor_cell
-        self.run_edit(index, lambda n: core.delete(n, row, col), _t("Delete"))
+        self.run_edit(
+            index, lambda n: core.delete(n, row, col), translate("LadderEditor", "Delete")
+        )
 
     def invert_at_cursor(self) -> None:
         """NOT on the element at the cursor."""
         index, row, col = self._cursor_target()
-        self.run_edit(index, lambda n: core.invert(n, row, col), _t("NOT"))
+        self.run_edit(index, lambda n: core.invert(n, row, col), translate("LadderEditor", "NOT"))
 
     def or_at_cursor(self) -> None:
         """OR on the element at the cursor (a parallel contact or coil)."""
@@ -562,12 +632,18 @@ class LadderEditor(QGraphicsView):
     def insert_row_before(self) -> None:
         """Insert an empty row before the cursor's row."""
         index, row, _ = self.cursor_cell
-        self.run_edit(index, lambda n: core.insert_row(n, row), _t("Insert row"))
+        self.run_edit(
+            index, lambda n: core.insert_row(n, row), translate("LadderEditor", "Insert row")
+        )
 
     def insert_row_after(self) -> None:
         """Insert an empty row after the cursor's row."""
         index, row, _ = self.cursor_cell
-        self.run_edit(index, lambda n: core.insert_row(n, row, after=True), _t("Insert row"))
+        self.run_edit(
+            index,
+            lambda n: core.insert_row(n, row, after=True),
+            translate("LadderEditor", "Insert row"),
+        )
 
     def copy(self) -> None:
         """Copy the selection (or the element at the cursor) to the clipboard as grid text."""
@@ -583,7 +659,9 @@ class LadderEditor(QGraphicsView):
             self.message.emit(diagnostic_text(refused.diagnostic))
             return
         QApplication.clipboard().setText(text)
-        self.undo_stack.push(NetworkEditCommand(self, index, undo_edit, _t("Cut")))
+        self.undo_stack.push(
+            NetworkEditCommand(self, index, undo_edit, translate("LadderEditor", "Cut"))
+        )
         self.selection = None
         self._place_overlays()
 
@@ -593,14 +671,18 @@ class LadderEditor(QGraphicsView):
         if not text:
             return
         index, row, col = self.cursor_cell
-        self.run_edit(index, lambda n: core.paste(n, row, col, text), _t("Paste"))
+        self.run_edit(
+            index, lambda n: core.paste(n, row, col, text), translate("LadderEditor", "Paste")
+        )
 
     def delete_network(self) -> None:
         """Delete the network at the cursor."""
         index = self.cursor_cell[0]
         if index >= len(self.networks) - 1:
             return
-        self.undo_stack.push(NetworkListCommand(self, index, None, _t("Delete network")))
+        self.undo_stack.push(
+            NetworkListCommand(self, index, None, translate("LadderEditor", "Delete network"))
+        )
 
     def _selection_or_cursor(self) -> tuple[int, Selection]:
         if self.selection is not None:
@@ -642,7 +724,7 @@ class LadderEditor(QGraphicsView):
     def move_cursor(self, index: int, row: int, col: int) -> None:
         """Put the cursor on a cell."""
         net = self.networks[index]
-        row = min(max(row, 0), max(net.rows - 1, 0))
+        row = min(max(row, 0), net.rows - 1 + SPARE_ROWS)
         col = min(max(col, 0), net.columns)
         self.cursor_cell = (index, row, col)
         self._place_overlays()
@@ -658,7 +740,8 @@ class LadderEditor(QGraphicsView):
         if self.selection is not None and self.selection[0] < len(self.networks):
             sel_index, sel = self.selection
             rect = self.cell_rect(sel_index, sel.top, sel.left).united(
-                self.cell_rect(sel_index, sel.bottom, sel.right))
+                self.cell_rect(sel_index, sel.bottom, sel.right)
+            )
             self._selection_item.setRect(rect)
             self._selection_item.show()
         else:
@@ -674,7 +757,9 @@ class LadderEditor(QGraphicsView):
 
     def describe_cell(self, index: int, row: int, col: int) -> str:
         """Status-bar text: the cell, and the address with its signal name and comment."""
-        parts = [_t("N{0} row {1} col {2}").format(index + 1, row + 1, col + 1)]
+        parts = [
+            translate("LadderEditor", "N{0} row {1} col {2}").format(index + 1, row + 1, col + 1)
+        ]
         found = self.networks[index].element_at(row, col)
         if found is not None:
             element = found[1]
@@ -731,8 +816,11 @@ class LadderEditor(QGraphicsView):
             self.apply_tool(hit)
             index = min(self.cursor_cell[0], len(self.networks) - 1)
             net = self.networks[index]
-            self.cursor_cell = (index, min(self.cursor_cell[1], max(net.rows - 1, 0)),
-                                min(self.cursor_cell[2], net.columns))
+            self.cursor_cell = (
+                index,
+                min(self.cursor_cell[1], net.rows - 1 + SPARE_ROWS),
+                min(self.cursor_cell[2], net.columns),
+            )
             self._place_overlays()
             event.accept()
             return
@@ -779,8 +867,12 @@ class LadderEditor(QGraphicsView):
         key = event.key()
         index, row, col = self.cursor_cell
         net = self.networks[index]
-        moves = {Qt.Key.Key_Left: (0, -1), Qt.Key.Key_Right: (0, 1),
-                 Qt.Key.Key_Up: (-1, 0), Qt.Key.Key_Down: (1, 0)}
+        moves = {
+            Qt.Key.Key_Left: (0, -1),
+            Qt.Key.Key_Right: (0, 1),
+            Qt.Key.Key_Up: (-1, 0),
+            Qt.Key.Key_Down: (1, 0),
+        }
         if key in moves:
             drow, dcol = moves[Qt.Key(key)]
             row += drow
@@ -788,7 +880,7 @@ class LadderEditor(QGraphicsView):
             if row < 0 and index > 0:
                 index -= 1
                 row = self.networks[index].rows - 1
-            elif row >= net.rows and index < len(self.networks) - 1:
+            elif row >= net.rows + SPARE_ROWS and index < len(self.networks) - 1:
                 index += 1
                 row = 0
             self.move_cursor(index, row, col)
@@ -812,7 +904,8 @@ class LadderEditor(QGraphicsView):
             return
         text = event.text().upper()
         if text in KEY_TOOLS and not event.modifiers() & (
-                Qt.KeyboardModifier.ControlModifier | Qt.KeyboardModifier.AltModifier):
+            Qt.KeyboardModifier.ControlModifier | Qt.KeyboardModifier.AltModifier
+        ):
             self.tool_requested.emit(KEY_TOOLS[text])
             return
         super().keyPressEvent(event)

@@ -1,0 +1,87 @@
+"""On-line mode in the console: power flow on the drawing, disable / force, the force list."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QPushButton
+from pytestqt.qtbot import QtBot
+
+from ladderworks import paths
+from ladderworks.core.address import parse_address
+from ladderworks.gui.main_window import MainWindow
+from tests.gui.plc_docks_help import plc_docks, set_switch
+
+SPINDLE = paths.EXAMPLES / "spindle_override.LAD"
+
+
+def online_window(window: MainWindow):
+    """The spindle program drawn, compiled from the console, started and on-line."""
+    assert window.load(SPINDLE)
+    docks = plc_docks(window)
+    docks.control.stripe_ms = 0
+    assert docks.control.take_console_program() and docks.control.compile().ok
+    assert docks.session.start()
+    docks.online.actions["action_plc_online"].trigger()
+    assert docks.online.online
+    return docks
+
+
+def test_online_shows_power_on_the_console_drawing(qtbot: QtBot, window: MainWindow) -> None:
+    docks = online_window(window)
+    set_switch(docks.session, 0)
+    docks.session.step(8)
+    power = docks.online.live.overlays[0].power  # RD.NOT X2.1 / AND.NOT X2.3 / AND.NOT X2.5
+    assert {(0, 0), (0, 1), (0, 2)} <= power.closed
+    assert power.coils == {(0, window.editor.networks[0].coil_column)}
+    set_switch(docks.session, 1)
+    docks.session.step(8)
+    assert docks.online.live.overlays[0].power.coils == set()
+
+
+def test_disable_and_force_change_the_engine_and_the_force_list(qtbot: QtBot,
+                                                                window: MainWindow) -> None:
+    docks = online_window(window)
+    session, online, force_list = docks.session, docks.online, docks.force_list
+    set_switch(session, 0)
+    session.step(8)
+    assert session.bit(parse_address("R102.0")) == 1
+    window.editor.cursor_cell = (0, 0, 0)  # select RD.NOT X2.1
+    op = online.disable_selected()
+    assert op == 0
+    session.step(8)
+    assert session.bit(parse_address("R102.0")) == 0  # the passive contact is open
+    assert force_list.table.rowCount() == 1
+    assert force_list.table.item(0, 0).text() == "PASSIVE"
+    assert "RD.NOT X2.1" in force_list.table.item(0, 1).text()
+    assert (0, 0) in online.live.overlays[0].power.disabled
+    online.force_selected(1)  # force X2.1 = 1: the switch reads position 1
+    assert force_list.table.rowCount() == 2
+    assert force_list.table.item(0, 0).text() == "FORCED"
+    assert force_list.table.item(0, 1).text() == "X2.1"
+    assert force_list.table.item(0, 2).text() == "1"
+    assert (0, 0) in online.live.overlays[0].power.forced
+    button = force_list.table.cellWidget(1, 3)
+    assert isinstance(button, QPushButton)
+    qtbot.mouseClick(button, Qt.MouseButton.LeftButton)  # one click: active again
+    session.step(8)
+    assert session.bit(parse_address("R102.1")) == 1 and session.bit(parse_address("R102.0")) == 0
+    assert force_list.table.rowCount() == 1
+    qtbot.mouseClick(force_list.table.cellWidget(0, 3), Qt.MouseButton.LeftButton)
+    session.step(8)
+    assert force_list.table.rowCount() == 0
+    assert session.bit(parse_address("R102.0")) == 1  # X2.1 back to the switch's 0
+
+
+def test_editing_takes_the_view_off_line(qtbot: QtBot, window: MainWindow) -> None:
+    docks = online_window(window)
+    messages: list[str] = []
+    window.editor.message.connect(messages.append)
+    window.editor.cursor_cell = (0, 0, 0)
+    window.actions_by_name["action_invert"].trigger()  # the NOT tool on RD.NOT X2.1
+    assert window.editor.undo_stack.count() == 1
+    assert not docks.online.online
+    assert not docks.online.actions["action_plc_online"].isChecked()
+    assert any("Off-line" in m for m in messages)
+    docks.online.actions["action_plc_online"].trigger()  # the drawing differs now
+    assert not docks.online.online
+    assert "not the program in the PLC" in messages[-1]
