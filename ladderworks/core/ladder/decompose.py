@@ -3,10 +3,13 @@
 from __future__ import annotations
 
 from collections import defaultdict
+from collections.abc import Callable
 from dataclasses import dataclass
+from itertools import pairwise
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il.program import Instruction
+from ladderworks.core.instructions import Kind
 from ladderworks.core.ladder.logic import (
     MAX_PUSHES,
     Leaf,
@@ -14,7 +17,6 @@ from ladderworks.core.ladder.logic import (
     Parallel,
     Rung,
     Undrawable,
-    code_logic,
     code_rung,
     first_cell,
     parallel,
@@ -195,12 +197,12 @@ def read_grid(network: LadderNetwork, index: int | None = None
             edges = [e for e in edges if e.src not in after]
     else:
         coils.sort(key=lambda item: item[0])
-        targets = [coils[0][2]]
         for cell, _, net in coils:
             if net == left:
                 report("coil-on-rail", cell)
-            elif net != targets[0]:
-                report("coil-branch", cell)
+            elif net not in targets:
+                targets.append(net)
+        targets = targets or [left]
 
     fed = _reach({left}, edges, True)
     feeding = _reach(set(targets), edges, False)
@@ -213,8 +215,9 @@ def read_grid(network: LadderNetwork, index: int | None = None
             code = "reverse-flow" if _joined(e.dst, goal, edges, e) else "open-circuit"
             report(code, e.cell)
     if box is None:
-        if targets[0] != left and targets[0] not in fed:
-            report("not-connected", coils[0][0])
+        for cell, _, net in coils:
+            if net != left and net not in fed:
+                report("not-connected", cell)
     else:
         missing = [t for t in targets if t not in fed or t == left]
         if missing:
@@ -227,6 +230,8 @@ def read_grid(network: LadderNetwork, index: int | None = None
     if cycle is not None:
         report("reverse-flow", cycle.cell)
         return None, diags
+    if box is None:
+        return _read_chain(left, targets, useful, coils, report, diags)
     blocks: list[Logic] = []
     owner: dict[int, int] = {}
     for i, target in enumerate(targets):
@@ -241,14 +246,46 @@ def read_grid(network: LadderNetwork, index: int | None = None
             report("bridge", result.cell)
             return None, diags
         blocks.append(result)
-    rung = Rung()
-    if box is not None:
-        rung.box = box
-        rung.inputs = blocks
-    else:
-        rung.logic = blocks[0]
-    rung.coils = [coil for _, coil, _ in coils] if box is None else [
-        coil for _, coil, _ in sorted(coils, key=lambda item: item[0])]
+    rung = Rung(box=box, inputs=blocks, coils=[coil for _, coil, _ in coils])
+    _check_depth(rung, report)
+    if has_errors(diags):
+        return None, diags
+    return rung, diags
+
+
+def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
+                coils: list[tuple[Cell, Coil, int]], report: Callable[..., None],
+                diags: list[Diagnostic]) -> tuple[Rung | None, list[Diagnostic]]:
+    """Coil logic: one output net, or an output chain where each next output is reached only
+    through the one before it (`WRT y / AND b / WRT z`)."""
+    after = {o: _reach({o}, useful, True) for o in outputs}
+    order = sorted(outputs, key=lambda o: -len(after[o] & set(outputs)))
+    first_coil = {net: cell for cell, _, net in reversed(coils)}
+    for a, b in pairwise(order):
+        if b not in after[a]:
+            report("coil-branch", first_coil[b])
+            return None, diags
+    blocks: list[Logic] = []
+    covered: set[int] = set()
+    start = left
+    for target in order:
+        into = _reach({target}, useful, False)
+        out_of = _reach({start}, useful, True)
+        part = [e for e in useful if e.src in out_of and e.dst in into]
+        covered.update(id(e) for e in part)
+        result = _reduce(part, start, target)
+        if isinstance(result, _Edge):
+            report("bridge", result.cell)
+            return None, diags
+        blocks.append(result)
+        start = target
+    stray = [e for e in useful if id(e) not in covered]
+    if stray:
+        report("coil-branch", first_coil[order[-1]])
+        return None, diags
+    groups = [[coil for _, coil, net in coils if net == o] for o in order]
+    rung = Rung(logic=blocks[0], coils=groups[0], chain=list(zip(blocks[1:], groups[1:],
+                                                                   strict=True)))
     _check_depth(rung, report)
     if has_errors(diags):
         return None, diags
@@ -291,20 +328,16 @@ def _cycle_edge(edges: list[_Edge]) -> _Edge | None:
     return None
 
 
-def _check_depth(rung: Rung, report: object) -> None:
+def _check_depth(rung: Rung, report: Callable[..., None]) -> None:
     cells: list[Cell | None] = []
-    code: list[Instruction] = []
-    if rung.box is not None:
-        for i, logic in enumerate(rung.inputs):
-            code.extend(code_logic(logic, i > 0, cells))
-    elif rung.logic is not None:
-        code.extend(code_logic(rung.logic, False, cells))
     depth = 0
-    for ins, cell in zip(code, cells, strict=True):
-        depth += ins.spec.pushes
+    for ins, cell in zip(code_rung(rung, cells), cells, strict=True):
+        depth += ins.spec.pushes if ins.spec.kind is Kind.BASIC else 0
         if depth > MAX_PUSHES:
-            report("stack-depth", cell or (0, 0))  # type: ignore[operator]
+            report("stack-depth", cell or (0, 0))
             return
+        if ins.spec.kind is not Kind.BASIC:
+            depth = 0
 
 
 def network_to_instructions(network: LadderNetwork, index: int | None = None

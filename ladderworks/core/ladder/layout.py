@@ -18,6 +18,7 @@ from ladderworks.core.ladder.model import (
     MAX_COLUMNS,
     MAX_ROWS,
     WIRE,
+    Coil,
     FunctionBox,
     LadderNetwork,
 )
@@ -89,17 +90,45 @@ def draw_rung(rung: Rung, columns: int = DEFAULT_COLUMNS) -> LadderNetwork:
         for c in range(box_col + BOX_WIDTH, net.columns):
             net.cells[(0, c)] = WIRE
     else:
-        assert rung.logic is not None
-        w, h = size(rung.logic)
-        net = LadderNetwork(max(columns, w), h)
-        place_logic(net, rung.logic, 0, 0)
-        for c in range(w, net.columns):
-            net.cells[(0, c)] = WIRE
-    for index, coil in enumerate(rung.coils):
-        net.cells[(index, net.coil_column)] = coil
+        return _draw_chain(rung, columns)
+    _draw_coils(net, 0, rung.coils)
+    return net
+
+
+def _draw_coils(net: LadderNetwork, row: int, coils: list[Coil]) -> None:
+    for index, coil in enumerate(coils):
+        net.cells[(row + index, net.coil_column)] = coil
         if index:
-            net.links.add((index - 1, net.coil_column))
-    net.rows = max(net.rows, len(rung.coils), 1)
+            net.links.add((row + index - 1, net.coil_column))
+    net.rows = max(net.rows, row + len(coils), 1)
+
+
+def _draw_chain(rung: Rung, columns: int) -> LadderNetwork:
+    """Coil logic; an output chain continues from the end of the block before it, on the rows
+    below that block's coils, joined to it by a vertical link."""
+    assert rung.logic is not None
+    segments = [(rung.logic, rung.coils), *rung.chain]
+    places: list[tuple[int, int, int]] = []  # (row, entry column, exit column)
+    row = col = 0
+    for index, (block, coils) in enumerate(segments):
+        w, h = size(block)
+        places.append((row, col, col + w))
+        if index + 1 < len(segments):
+            below = row + max(h, len(coils))
+            col += w
+            row = below
+    net = LadderNetwork(max(columns, places[-1][2]), 1)
+    for index, ((block, coils), (row, entry, exit_)) in enumerate(
+            zip(segments, places, strict=True)):
+        place_logic(net, block, row, entry)
+        if index:
+            previous_row = places[index - 1][0]
+            for r in range(previous_row, row):
+                net.links.add((r, entry))
+        for c in range(exit_, net.columns):
+            net.cells[(row, c)] = WIRE
+        net.rows = max(net.rows, row + size(block)[1])
+        _draw_coils(net, row, coils)
     return net
 
 

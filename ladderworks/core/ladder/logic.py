@@ -58,6 +58,9 @@ class Rung:
     coils: list[Coil] = field(default_factory=list)  # parallel coils, top to bottom (box: on W1)
     box: FunctionBox | None = None
     inputs: list[Logic] = field(default_factory=list)  # box control inputs, first to last
+    # an output chain (coil networks): after the coils, each block is put in series with the
+    # result so far and its own coils written (`WRT y / AND b / WRT z`)
+    chain: list[tuple[Logic, list[Coil]]] = field(default_factory=list)
 
 
 def _contact_instruction(contact: Contact, op: str, push: bool) -> Instruction:
@@ -106,16 +109,30 @@ def box_instruction(box: FunctionBox) -> Instruction:
     return Instruction(box.name, params=box.params, comment=box.comment, lead=box.lead)
 
 
-def code_rung(rung: Rung) -> list[Instruction]:
-    """The standard coding of a whole network."""
+def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
+              ) -> list[Instruction]:
+    """The standard coding of a whole network (`cells` as in `code_logic`)."""
+    if cells is None:
+        cells = []
     out: list[Instruction] = []
     if rung.box is not None:
         for index, logic in enumerate(rung.inputs):
-            out.extend(code_logic(logic, push=index > 0))
+            out.extend(code_logic(logic, index > 0, cells))
         out.append(box_instruction(rung.box))
     elif rung.logic is not None:
-        out.extend(code_logic(rung.logic))
+        out.extend(code_logic(rung.logic, False, cells))
     out.extend(coil_instruction(coil) for coil in rung.coils)
+    for block, coils in rung.chain:
+        for item in block.items if isinstance(block, Series) else (block,):
+            if isinstance(item, Leaf):
+                cells.append(item.cell)
+                out.append(_contact_instruction(item.contact, "AND", False))
+            else:
+                out.extend(code_logic(item, True, cells))
+                cells.append(None)
+                out.append(Instruction("AND.STK"))
+        out.extend(coil_instruction(coil) for coil in coils)
+    cells.extend([None] * (len(out) - len(cells)))
     return out
 
 
@@ -136,12 +153,15 @@ class Undrawable(Exception):
     """The instructions have no faithful ladder picture (kept as a listing instead)."""
 
 
+_PREVIOUS = Leaf(Contact(None, comment="the result written so far"))  # chain start marker
+
+
 def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung:
     """The meaning of one network's instructions; Undrawable for code with no ladder picture
-    (unbalanced stack, logic after an output, a function without its control inputs, ...)."""
+    (unbalanced stack, OR after an output, a function without its control inputs, ...)."""
     stack: list[Logic] = []
     rung = Rung()
-    phase = "logic"  # then "coils" after the first WRT / the function
+    phase = "logic"  # then "coils" after the first WRT / the function; "chain" after more logic
     for ins in instructions:
         spec = ins.spec
         name = ins.name
@@ -151,15 +171,25 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
                     raise Undrawable(name)
                 if rung.box is None:
                     rung.logic = stack[0]
-                phase = "coils"
+            elif phase == "chain":
+                top = stack[0] if len(stack) == 1 else None
+                if not isinstance(top, Series) or top.items[0] is not _PREVIOUS:
+                    raise Undrawable(name)
+                rest = top.items[1:]
+                rung.chain.append((rest[0] if len(rest) == 1 else Series(rest), []))
+            phase = "coils"
             if ins.operand is None:
                 raise Undrawable(name)
-            rung.coils.append(Coil(ins.operand, name == "WRT.NOT", ins.comment, ins.lead))
+            coil = Coil(ins.operand, name == "WRT.NOT", ins.comment, ins.lead)
+            (rung.chain[-1][1] if rung.chain else rung.coils).append(coil)
             continue
-        if phase != "logic":
+        if phase == "coils" and rung.box is None and spec.kind is Kind.BASIC:
+            phase = "chain"
+            stack = [_PREVIOUS]
+        if phase not in ("logic", "chain"):
             raise Undrawable(name)
         if spec.kind is not Kind.BASIC:
-            if len(stack) != len(spec.inputs):
+            if phase == "chain" or len(stack) != len(spec.inputs):
                 raise Undrawable(name)
             rung.box = FunctionBox.new(name, ins.params, ins.comment, ins.lead)
             rung.inputs = list(stack)
@@ -191,6 +221,8 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
                          else parallel(top, Leaf(contact)))
     if rung.box is None and rung.logic is None:
         raise Undrawable("no output")
+    if phase == "chain":
+        raise Undrawable("logic after the last coil")
     if rung.box is not None and not rung.box.spec.w1 and rung.coils:
         raise Undrawable("coils")
     return rung

@@ -90,7 +90,10 @@ def rungs(draw: st.DrawFn, with_comments: bool = True) -> Rung:
     """A coil network or a function-box network in the standard coding."""
     if draw(st.integers(0, 3)) > 0:
         logic = draw(_LOGIC[with_comments])
-        return Rung(logic=logic, coils=draw(st.lists(coils, min_size=1, max_size=3)))
+        chain = draw(st.lists(st.tuples(_INPUTS[with_comments],
+                                        st.lists(coils, min_size=1, max_size=2)), max_size=2))
+        return Rung(logic=logic, coils=draw(st.lists(coils, min_size=1, max_size=3)),
+                    chain=chain)
     name = draw(st.sampled_from(_NAMES))
     example = function_examples()[name]
     box = FunctionBox.new(name, example.params, draw(comments) if with_comments else "",

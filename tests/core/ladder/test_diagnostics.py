@@ -129,7 +129,7 @@ def test_element_without_an_address() -> None:
 
 
 def test_coils_on_different_points() -> None:
-    cells = {**_rung_row(), (1, 0): _c("X0.1"), **_wires(1, 1, 2), (1, 4): _coil("Y0.1")}
+    cells = {**_rung_row(), (1, 0): _c("X0.1"), **_wires(1, 1, 3), (1, 4): _coil("Y0.1")}
     network = _net(4, 2, cells)
     assert ("coil-branch", (1, 4)) in _found(network)
 

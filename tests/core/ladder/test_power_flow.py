@@ -34,7 +34,8 @@ def _agree(network: LadderNetwork, values: dict[Address, bool]) -> None:
         anchor, _ = boxes[0]
         assert [stack for _, stack in result.calls] == [flow.pins(anchor)]
     else:
-        assert result.writes == [(coil.address, value) for _, coil, value in flow.coils()]
+        drawn = [(coil.address, value) for _, coil, value in flow.coils()]
+        assert sorted(result.writes, key=str) == sorted(drawn, key=str)  # chains: any order
 
 
 @settings(max_examples=500, deadline=None)
@@ -69,7 +70,7 @@ def _random_grid(rnd: random.Random) -> LadderNetwork:
     coils = rnd.randint(1, rows)
     for r in range(coils):
         network.cells[(r, columns)] = Coil(Address(Area.Y, 0, r), rnd.random() < 0.3)
-        if r:
+        if r and rnd.random() < 0.7:
             network.links.add((r - 1, columns))
     return network
 
