@@ -155,3 +155,11 @@ def test_box_with_wrong_parameters() -> None:
 
 def test_an_empty_network_is_no_error() -> None:
     assert network_to_instructions(LadderNetwork()) == (None, [])
+
+
+def test_a_chain_entered_from_the_side_is_a_coil_branch() -> None:
+    # Y0.1 hangs after X0.1 (fed from Y0.0's point) but also after X0.2, straight from the rail.
+    cells = {**_rung_row(), (1, 1): _c("X0.1"), (1, 2): WIRE, (1, 3): WIRE,
+             (1, 4): _coil("Y0.1"), (2, 0): _c("X0.2"), (2, 1): WIRE}
+    network = _net(4, 3, cells, {(0, 1), (1, 2)})
+    assert ("coil-branch", (1, 4)) in _found(network)

@@ -145,3 +145,16 @@ def test_a_network_and_its_comment_lines_keep_their_order() -> None:
                       header=["h"], trailer=["t"])
     assert _drawn_only(program) == program
     assert parse_address("Y0.1") == program.networks[1].instructions[-1].operand
+
+
+def test_output_chain_is_drawn_below_its_first_coil_and_read_back() -> None:
+    code = _ins("RD X0.0\nOR X0.1\nWRT Y0.0\nAND X0.2\nWRT Y0.1\nWRT Y0.2\n"
+                "RD.STK X0.3\nOR X0.4\nAND.STK\nWRT Y0.3")
+    grid = layout_network(code)
+    assert grid.listing is None and grid.source is None
+    where = {str(e.address): cell for cell, e in grid.elements() if hasattr(e, "address")}
+    assert where["Y0.0"] == (0, 10) and where["X0.2"] == (2, 1)
+    assert where["Y0.1"] == (2, 10) and where["Y0.2"] == (3, 10)
+    assert where["X0.3"] == (4, 2) and where["Y0.3"] == (4, 10)
+    assert (1, 1) in grid.links and (3, 2) in grid.links  # each segment hangs from the last
+    assert network_to_instructions(grid) == (code, [])
