@@ -1,1959 +1,1959 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US" sourcelanguage="en">
-  <context>
+<context>
     <name>AlarmPanel</name>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="101" />
-      <source>Cannot read {0}: {1}</source>
-      <translation>Cannot read {0}: {1}</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="101"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="119" />
-      <source>Alarm message file</source>
-      <translation>Alarm message file</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="119"/>
+        <source>Alarm message file</source>
+        <translation>Alarm message file</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="121" />
-      <source>Alarm files (*.dat);;All files (*)</source>
-      <translation>Alarm files (*.dat);;All files (*)</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="121"/>
+        <source>Alarm files (*.dat);;All files (*)</source>
+        <translation>Alarm files (*.dat);;All files (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="128" />
-      <source>No alarm file</source>
-      <translation>No alarm file</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="128"/>
+        <source>No alarm file</source>
+        <translation>No alarm file</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="130" />
-      <source>{0}: {1} messages</source>
-      <translation>{0}: {1} messages</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="130"/>
+        <source>{0}: {1} messages</source>
+        <translation>{0}: {1} messages</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="134" />
-      <source>{0} lines with problems</source>
-      <translation>{0} lines with problems</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="134"/>
+        <source>{0} lines with problems</source>
+        <translation>{0} lines with problems</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="141" />
-      <source>line {0}: {1}</source>
-      <translation>line {0}: {1}</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="141"/>
+        <source>line {0}: {1}</source>
+        <translation>line {0}: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="159" />
-      <source>(no message {0} in the alarm file)</source>
-      <translation>(no message {0} in the alarm file)</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="159"/>
+        <source>(no message {0} in the alarm file)</source>
+        <translation>(no message {0} in the alarm file)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="192" />
-      <source>The bit is 0 again: RESET clears this alarm</source>
-      <translation>The bit is 0 again: RESET clears this alarm</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="192"/>
+        <source>The bit is 0 again: RESET clears this alarm</source>
+        <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="209" />
-      <source>Alarms</source>
-      <translation>Alarms</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="209"/>
+        <source>Alarms</source>
+        <translation>Alarms</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="210" />
-      <source>RESET</source>
-      <translation>RESET</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="210"/>
+        <source>RESET</source>
+        <translation>RESET</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="212" />
-      <source>Clear the alarms whose bit is 0 (the reset key)</source>
-      <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="212"/>
+        <source>Clear the alarms whose bit is 0 (the reset key)</source>
+        <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="214" />
-      <source>Alarm file...</source>
-      <translation>Alarm file...</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="214"/>
+        <source>Alarm file...</source>
+        <translation>Alarm file...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="217" />
-      <source>No.</source>
-      <translation>No.</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="217"/>
+        <source>No.</source>
+        <translation>No.</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="218" />
-      <source>Bit</source>
-      <translation>Bit</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="218"/>
+        <source>Bit</source>
+        <translation>Bit</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="219" />
-      <source>PLC time</source>
-      <translation>PLC time</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="219"/>
+        <source>PLC time</source>
+        <translation>PLC time</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="220" />
-      <source>Clock</source>
-      <translation>Clock</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="220"/>
+        <source>Clock</source>
+        <translation>Clock</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="221" />
-      <source>Message</source>
-      <translation>Message</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="221"/>
+        <source>Message</source>
+        <translation>Message</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>BitDisplay</name>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="252" />
-      <source>Forced to {0}</source>
-      <translation>Forced to {0}</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="252"/>
+        <source>Forced to {0}</source>
+        <translation>Forced to {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="255" />
-      <source>Click: force to the other value; right-click: force menu</source>
-      <translation>Click: force to the other value; right-click: force menu</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="255"/>
+        <source>Click: force to the other value; right-click: force menu</source>
+        <translation>Click: force to the other value; right-click: force menu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="273" />
-      <source>Load a program to force inputs</source>
-      <translation>Load a program to force inputs</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="273"/>
+        <source>Load a program to force inputs</source>
+        <translation>Load a program to force inputs</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="290" />
-      <source>Force to 1</source>
-      <translation>Force to 1</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="290"/>
+        <source>Force to 1</source>
+        <translation>Force to 1</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="295" />
-      <source>Force to 0</source>
-      <translation>Force to 0</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="295"/>
+        <source>Force to 0</source>
+        <translation>Force to 0</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="300" />
-      <source>Release the force</source>
-      <translation>Release the force</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="300"/>
+        <source>Release the force</source>
+        <translation>Release the force</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="314" />
-      <source>Live</source>
-      <translation>Live</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="314"/>
+        <source>Live</source>
+        <translation>Live</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="314" />
-      <source>Stopped</source>
-      <translation>Stopped</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="314"/>
+        <source>Stopped</source>
+        <translation>Stopped</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="321" />
-      <source>PLC bit display</source>
-      <translation>PLC bit display</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="321"/>
+        <source>PLC bit display</source>
+        <translation>PLC bit display</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="322" />
-      <source>START</source>
-      <translation>START</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="322"/>
+        <source>START</source>
+        <translation>START</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="323" />
-      <source>STOP</source>
-      <translation>STOP</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="323"/>
+        <source>STOP</source>
+        <translation>STOP</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="324" />
-      <source>Byte</source>
-      <translation>Byte</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="324"/>
+        <source>Byte</source>
+        <translation>Byte</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="325" />
-      <source>Hex</source>
-      <translation>Hex</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="325"/>
+        <source>Hex</source>
+        <translation>Hex</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="326" />
-      <source>Dec</source>
-      <translation>Dec</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="326"/>
+        <source>Dec</source>
+        <translation>Dec</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="328" />
-      <source>e.g. X12</source>
-      <translation>e.g. X12</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <source>e.g. X12</source>
+        <translation>e.g. X12</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>Diagnostic</name>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="15" />
-      <source>'{text}' is not an address (expected e.g. X2.1 or R100)</source>
-      <translation>'{text}' is not an address (expected e.g. X2.1 or R100)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="15"/>
+        <source>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</source>
+        <translation>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="17" />
-      <source>'{text}': unknown area '{area}' (use X, Y, F, G, R, A, D, T, C or K)</source>
-      <translation>'{text}': unknown area '{area}' (use X, Y, F, G, R, A, D, T, C or K)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="17"/>
+        <source>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</source>
+        <translation>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="19" />
-      <source>'{text}': byte number out of range for area {area} (0 to {last})</source>
-      <translation>'{text}': byte number out of range for area {area} (0 to {last})</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="19"/>
+        <source>&apos;{text}&apos;: byte number out of range for area {area} (0 to {last})</source>
+        <translation>&apos;{text}&apos;: byte number out of range for area {area} (0 to {last})</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="21" />
-      <source>'{text}': bit number must be 0 to 7</source>
-      <translation>'{text}': bit number must be 0 to 7</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="21"/>
+        <source>&apos;{text}&apos;: bit number must be 0 to 7</source>
+        <translation>&apos;{text}&apos;: bit number must be 0 to 7</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="22" />
-      <source>'{text}': a bit address is needed here (e.g. {text}.0)</source>
-      <translation>'{text}': a bit address is needed here (e.g. {text}.0)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="22"/>
+        <source>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</source>
+        <translation>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="24" />
-      <source>'{text}': a byte address is needed here, without a bit</source>
-      <translation>'{text}': a byte address is needed here, without a bit</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="24"/>
+        <source>&apos;{text}&apos;: a byte address is needed here, without a bit</source>
+        <translation>&apos;{text}&apos;: a byte address is needed here, without a bit</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="26" />
-      <source>the ladder section must begin with %@3</source>
-      <translation>the ladder section must begin with %@3</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="26"/>
+        <source>the ladder section must begin with %@3</source>
+        <translation>the ladder section must begin with %@3</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="27" />
-      <source>the ladder section must end with a line '%'</source>
-      <translation>the ladder section must end with a line '%'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="27"/>
+        <source>the ladder section must end with a line &apos;%&apos;</source>
+        <translation>the ladder section must end with a line &apos;%&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="28" />
-      <source>unexpected text '{text}'</source>
-      <translation>unexpected text '{text}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="28"/>
+        <source>unexpected text &apos;{text}&apos;</source>
+        <translation>unexpected text &apos;{text}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="29" />
-      <source>text outside any section: '{text}'</source>
-      <translation>text outside any section: '{text}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="29"/>
+        <source>text outside any section: &apos;{text}&apos;</source>
+        <translation>text outside any section: &apos;{text}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="30" />
-      <source>section %@{number} appears twice</source>
-      <translation>section %@{number} appears twice</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="30"/>
+        <source>section %@{number} appears twice</source>
+        <translation>section %@{number} appears twice</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="31" />
-      <source>unknown section %@{number} (FANUC sections are %@0 to %@5)</source>
-      <translation>unknown section %@{number} (FANUC sections are %@0 to %@5)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="31"/>
+        <source>unknown section %@{number} (FANUC sections are %@0 to %@5)</source>
+        <translation>unknown section %@{number} (FANUC sections are %@0 to %@5)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="33" />
-      <source>unknown instruction '{name}'</source>
-      <translation>unknown instruction '{name}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="33"/>
+        <source>unknown instruction &apos;{name}&apos;</source>
+        <translation>unknown instruction &apos;{name}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="34" />
-      <source>{name} needs an address</source>
-      <translation>{name} needs an address</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="34"/>
+        <source>{name} needs an address</source>
+        <translation>{name} needs an address</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="35" />
-      <source>{name} takes no operand, found '{text}'</source>
-      <translation>{name} takes no operand, found '{text}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="35"/>
+        <source>{name} takes no operand, found &apos;{text}&apos;</source>
+        <translation>{name} takes no operand, found &apos;{text}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="36" />
-      <source>{name} needs {expected} parameters, found {found}</source>
-      <translation>{name} needs {expected} parameters, found {found}</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="36"/>
+        <source>{name} needs {expected} parameters, found {found}</source>
+        <translation>{name} needs {expected} parameters, found {found}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="37" />
-      <source>{name}: parameter {index} ({param}) must be a number, found '{text}'</source>
-      <translation>{name}: parameter {index} ({param}) must be a number, found '{text}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="37"/>
+        <source>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</source>
+        <translation>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="39" />
-      <source>{name}: parameter {index} ({param}) must be an address, found '{text}'</source>
-      <translation>{name}: parameter {index} ({param}) must be an address, found '{text}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="39"/>
+        <source>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</source>
+        <translation>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="41" />
-      <source>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</source>
-      <translation>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="41"/>
+        <source>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</source>
+        <translation>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="45" />
-      <source>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</source>
-      <translation>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="45"/>
+        <source>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</source>
+        <translation>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="49" />
-      <source>{name}: parameter {index} ({param}) must be up to 4 binary digits, found '{text}'</source>
-      <translation>{name}: parameter {index} ({param}) must be up to 4 binary digits, found '{text}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="49"/>
+        <source>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</source>
+        <translation>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="53" />
-      <source>no functional instruction has the number SUB {number}</source>
-      <translation>no functional instruction has the number SUB {number}</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="53"/>
+        <source>no functional instruction has the number SUB {number}</source>
+        <translation>no functional instruction has the number SUB {number}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="55" />
-      <source>a parameter line '{text}' without a SUB instruction before it</source>
-      <translation>a parameter line '{text}' without a SUB instruction before it</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="55"/>
+        <source>a parameter line &apos;{text}&apos; without a SUB instruction before it</source>
+        <translation>a parameter line &apos;{text}&apos; without a SUB instruction before it</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="57" />
-      <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
-      <translation>the file is neither UTF-8 nor Turkish Windows (cp1254) text</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="57"/>
+        <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
+        <translation>the file is neither UTF-8 nor Turkish Windows (cp1254) text</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="59" />
-      <source>syntax error at '{text}'</source>
-      <translation>syntax error at '{text}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="59"/>
+        <source>syntax error at &apos;{text}&apos;</source>
+        <translation>syntax error at &apos;{text}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="60" />
-      <source>open circuit: this element is not connected to the right side</source>
-      <translation>open circuit: this element is not connected to the right side</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="60"/>
+        <source>open circuit: this element is not connected to the right side</source>
+        <translation>open circuit: this element is not connected to the right side</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="62" />
-      <source>element not connected to the left rail</source>
-      <translation>element not connected to the left rail</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="62"/>
+        <source>element not connected to the left rail</source>
+        <translation>element not connected to the left rail</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="63" />
-      <source>a coil must be at the right end of the network</source>
-      <translation>a coil must be at the right end of the network</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
+        <source>a coil must be at the right end of the network</source>
+        <translation>a coil must be at the right end of the network</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="64" />
-      <source>a coil cannot sit straight on the left rail</source>
-      <translation>a coil cannot sit straight on the left rail</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="64"/>
+        <source>a coil cannot sit straight on the left rail</source>
+        <translation>a coil cannot sit straight on the left rail</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="65" />
-      <source>bridge circuit: a vertical link joins two branches in the middle</source>
-      <translation>bridge circuit: a vertical link joins two branches in the middle</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="65"/>
+        <source>bridge circuit: a vertical link joins two branches in the middle</source>
+        <translation>bridge circuit: a vertical link joins two branches in the middle</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="67" />
-      <source>short circuit: a wire bypasses the element</source>
-      <translation>short circuit: a wire bypasses the element</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
+        <source>short circuit: a wire bypasses the element</source>
+        <translation>short circuit: a wire bypasses the element</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="68" />
-      <source>the logic needs more than 8 stack levels (ST8)</source>
-      <translation>the logic needs more than 8 stack levels (ST8)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
+        <source>the logic needs more than 8 stack levels (ST8)</source>
+        <translation>the logic needs more than 8 stack levels (ST8)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="69" />
-      <source>power would flow right to left here; ladder flows left to right only</source>
-      <translation>power would flow right to left here; ladder flows left to right only</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="69"/>
+        <source>power would flow right to left here; ladder flows left to right only</source>
+        <translation>power would flow right to left here; ladder flows left to right only</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="71" />
-      <source>the network has no coil or function</source>
-      <translation>the network has no coil or function</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
+        <source>the network has no coil or function</source>
+        <translation>the network has no coil or function</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="72" />
-      <source>{name} needs its {count} control inputs connected</source>
-      <translation>{name} needs its {count} control inputs connected</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
+        <source>{name} needs its {count} control inputs connected</source>
+        <translation>{name} needs its {count} control inputs connected</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="73" />
-      <source>this element has no address yet</source>
-      <translation>this element has no address yet</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="73"/>
+        <source>this element has no address yet</source>
+        <translation>this element has no address yet</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="74" />
-      <source>coils hang on different points of the logic; join them to one point</source>
-      <translation>coils hang on different points of the logic; join them to one point</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="74"/>
+        <source>coils hang on different points of the logic; join them to one point</source>
+        <translation>coils hang on different points of the logic; join them to one point</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="76" />
-      <source>only coils may follow the output of {name}</source>
-      <translation>only coils may follow the output of {name}</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
+        <source>only coils may follow the output of {name}</source>
+        <translation>only coils may follow the output of {name}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="77" />
-      <source>{name}: {problem}</source>
-      <translation>{name}: {problem}</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
+        <source>{name}: {problem}</source>
+        <translation>{name}: {problem}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="78" />
-      <source>cell ({row}, {col}) is outside the grid</source>
-      <translation>cell ({row}, {col}) is outside the grid</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="78"/>
+        <source>cell ({row}, {col}) is outside the grid</source>
+        <translation>cell ({row}, {col}) is outside the grid</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="79" />
-      <source>only coils go in the coil column (cell ({row}, {col}))</source>
-      <translation>only coils go in the coil column (cell ({row}, {col}))</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
+        <source>only coils go in the coil column (cell ({row}, {col}))</source>
+        <translation>only coils go in the coil column (cell ({row}, {col}))</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="81" />
-      <source>{name} does not fit here: a box needs two contact columns</source>
-      <translation>{name} does not fit here: a box needs two contact columns</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="81"/>
+        <source>{name} does not fit here: a box needs two contact columns</source>
+        <translation>{name} does not fit here: a box needs two contact columns</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="83" />
-      <source>there is no suitable element at cell ({row}, {col})</source>
-      <translation>there is no suitable element at cell ({row}, {col})</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
+        <source>there is no suitable element at cell ({row}, {col})</source>
+        <translation>there is no suitable element at cell ({row}, {col})</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="85" />
-      <source>a line must be horizontal or vertical</source>
-      <translation>a line must be horizontal or vertical</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="85"/>
+        <source>a line must be horizontal or vertical</source>
+        <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="86" />
-      <source>the clipboard does not hold ladder elements</source>
-      <translation>the clipboard does not hold ladder elements</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="86"/>
+        <source>the clipboard does not hold ladder elements</source>
+        <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="87" />
-      <source>{name} with nothing pushed on the stack</source>
-      <translation>{name} with nothing pushed on the stack</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
+        <source>{name} with nothing pushed on the stack</source>
+        <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="88" />
-      <source>{name} writes to {address}, an input area</source>
-      <translation>{name} writes to {address}, an input area</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="88"/>
+        <source>{name} writes to {address}, an input area</source>
+        <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="89" />
-      <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
-      <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
+        <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
+        <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="91" />
-      <source>JMP without a matching JMPE</source>
-      <translation>JMP without a matching JMPE</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
+        <source>JMP without a matching JMPE</source>
+        <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="92" />
-      <source>JMPE without a JMP before it</source>
-      <translation>JMPE without a JMP before it</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
+        <source>JMPE without a JMP before it</source>
+        <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="93" />
-      <source>COM without a matching COME</source>
-      <translation>COM without a matching COME</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
+        <source>COM without a matching COME</source>
+        <translation>COM without a matching COME</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="94" />
-      <source>COME without a COM before it</source>
-      <translation>COME without a COM before it</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="94"/>
+        <source>COME without a COM before it</source>
+        <translation>COME without a COM before it</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="95" />
-      <source>{name} without a logic result before it (start with RD)</source>
-      <translation>{name} without a logic result before it (start with RD)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
+        <source>{name} without a logic result before it (start with RD)</source>
+        <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="97" />
-      <source>coil {address} is written more than once</source>
-      <translation>coil {address} is written more than once</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
+        <source>coil {address} is written more than once</source>
+        <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="98" />
-      <source>logic at the end of the program is not written to any coil</source>
-      <translation>logic at the end of the program is not written to any coil</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
+        <source>logic at the end of the program is not written to any coil</source>
+        <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="100" />
-      <source>not a LadderWorks binary: {reason}</source>
-      <translation>not a LadderWorks binary: {reason}</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="100"/>
+        <source>not a LadderWorks binary: {reason}</source>
+        <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="101" />
-      <source>not an alarm message line: '{text}' (expected 'NNN text' or 'A00.0 text')</source>
-      <translation>not an alarm message line: '{text}' (expected 'NNN text' or 'A00.0 text')</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
+        <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
+        <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="105" />
-      <source>alarm number {number} is out of range (000 to 799)</source>
-      <translation>alarm number {number} is out of range (000 to 799)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
+        <source>alarm number {number} is out of range (000 to 799)</source>
+        <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="107" />
-      <source>'{text}' is not an alarm bit (A0.0 to A99.7)</source>
-      <translation>'{text}' is not an alarm bit (A0.0 to A99.7)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="107"/>
+        <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
+        <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="108" />
-      <source>message {number} appears again; the one on line {first} is used</source>
-      <translation>message {number} appears again; the one on line {first} is used</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
+        <source>message {number} appears again; the one on line {first} is used</source>
+        <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="110" />
-      <source>message {number} has no text</source>
-      <translation>message {number} has no text</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="110"/>
+        <source>message {number} has no text</source>
+        <translation>message {number} has no text</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="111" />
-      <source>{name} is not implemented in the simulator yet</source>
-      <translation>{name} is not implemented in the simulator yet</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <source>{name} is not implemented in the simulator yet</source>
+        <translation>{name} is not implemented in the simulator yet</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>ErrorList</name>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="16" />
-      <source>network {0}, row {1}, column {2}</source>
-      <translation>network {0}, row {1}, column {2}</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="16"/>
+        <source>network {0}, row {1}, column {2}</source>
+        <translation>network {0}, row {1}, column {2}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="20" />
-      <source>network {0}</source>
-      <translation>network {0}</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="20"/>
+        <source>network {0}</source>
+        <translation>network {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="23" />
-      <source>line {0}, column {1}</source>
-      <translation>line {0}, column {1}</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="23"/>
+        <source>line {0}, column {1}</source>
+        <translation>line {0}, column {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="59" />
-      <source>Error</source>
-      <translation>Error</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="59"/>
+        <source>Error</source>
+        <translation>Error</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="60" />
-      <source>Warning</source>
-      <translation>Warning</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="60"/>
+        <source>Warning</source>
+        <translation>Warning</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="74" />
-      <source>Errors</source>
-      <translation>Errors</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="74"/>
+        <source>Errors</source>
+        <translation>Errors</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="76" />
-      <source>Kind</source>
-      <translation>Kind</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="76"/>
+        <source>Kind</source>
+        <translation>Kind</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="77" />
-      <source>Where</source>
-      <translation>Where</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="77"/>
+        <source>Where</source>
+        <translation>Where</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="78" />
-      <source>Message</source>
-      <translation>Message</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="78"/>
+        <source>Message</source>
+        <translation>Message</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>ForceList</name>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="58" />
-      <source>Forced and passive</source>
-      <translation>Forced and passive</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="58"/>
+        <source>Forced and passive</source>
+        <translation>Forced and passive</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="60" />
-      <source>Kind</source>
-      <translation>Kind</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
+        <source>Kind</source>
+        <translation>Kind</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="60" />
-      <source>Signal / element</source>
-      <translation>Signal / element</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
+        <source>Signal / element</source>
+        <translation>Signal / element</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="61" />
-      <source>Value</source>
-      <translation>Value</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <source>Value</source>
+        <translation>Value</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="62" />
-      <source>Release all</source>
-      <translation>Release all</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
+        <source>Release all</source>
+        <translation>Release all</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="68" />
-      <source>FORCED</source>
-      <translation>FORCED</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="68"/>
+        <source>FORCED</source>
+        <translation>FORCED</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="75" />
-      <source>network {0}, line {1}: {2}</source>
-      <translation>network {0}, line {1}: {2}</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="75"/>
+        <source>network {0}, line {1}: {2}</source>
+        <translation>network {0}, line {1}: {2}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="77" />
-      <source>PASSIVE</source>
-      <translation>PASSIVE</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="77"/>
+        <source>PASSIVE</source>
+        <translation>PASSIVE</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="86" />
-      <source>Release</source>
-      <translation>Release</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="86"/>
+        <source>Release</source>
+        <translation>Release</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="91" />
-      <source>{0} forced, {1} passive</source>
-      <translation>{0} forced, {1} passive</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <source>{0} forced, {1} passive</source>
+        <translation>{0} forced, {1} passive</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>FunctionDialog</name>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="68" />
-      <source>one of {0}</source>
-      <translation>one of {0}</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="68"/>
+        <source>one of {0}</source>
+        <translation>one of {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="70" />
-      <source>{0} to {1}</source>
-      <translation>{0} to {1}</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
+        <source>{0} to {1}</source>
+        <translation>{0} to {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="74" />
-      <source>byte address ({0} bytes)</source>
-      <translation>byte address ({0} bytes)</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="74"/>
+        <source>byte address ({0} bytes)</source>
+        <translation>byte address ({0} bytes)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="76" />
-      <source>byte address</source>
-      <translation>byte address</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="76"/>
+        <source>byte address</source>
+        <translation>byte address</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="78" />
-      <source>constant or byte address</source>
-      <translation>constant or byte address</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="78"/>
+        <source>constant or byte address</source>
+        <translation>constant or byte address</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="80" />
-      <source>up to 4 binary digits, e.g. 1111</source>
-      <translation>up to 4 binary digits, e.g. 1111</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="80"/>
+        <source>up to 4 binary digits, e.g. 1111</source>
+        <translation>up to 4 binary digits, e.g. 1111</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="81" />
-      <source>values separated by spaces</source>
-      <translation>values separated by spaces</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="81"/>
+        <source>values separated by spaces</source>
+        <translation>values separated by spaces</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="163" />
-      <source>{0} — {1}: fill in the parameters</source>
-      <translation>{0} — {1}: fill in the parameters</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="163"/>
+        <source>{0} — {1}: fill in the parameters</source>
+        <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="166" />
-      <source>Comment (shown with the box, written after // in the file):</source>
-      <translation>Comment (shown with the box, written after // in the file):</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="166"/>
+        <source>Comment (shown with the box, written after // in the file):</source>
+        <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="169" />
-      <source>Parameter</source>
-      <translation>Parameter</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="169"/>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="170" />
-      <source>Value</source>
-      <translation>Value</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="170"/>
+        <source>Value</source>
+        <translation>Value</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="171" />
-      <source>Allowed</source>
-      <translation>Allowed</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="171"/>
+        <source>Allowed</source>
+        <translation>Allowed</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="197" />
-      <source>The parameters are not valid</source>
-      <translation>The parameters are not valid</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="197"/>
+        <source>The parameters are not valid</source>
+        <translation>The parameters are not valid</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>LadderEditor</name>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="317" />
-      <location filename="../ladderworks/gui/editor/view.py" line="351" />
-      <location filename="../ladderworks/gui/editor/view.py" line="625" />
-      <source>NOT</source>
-      <translation>NOT</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="317"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="351"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
+        <source>NOT</source>
+        <translation>NOT</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="328" />
-      <source>The comment tool works on an empty row only</source>
-      <translation>The comment tool works on an empty row only</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="328"/>
+        <source>The comment tool works on an empty row only</source>
+        <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="332" />
-      <location filename="../ladderworks/gui/editor/view.py" line="607" />
-      <location filename="../ladderworks/gui/editor/view.py" line="619" />
-      <source>Delete</source>
-      <translation>Delete</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="332"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="607"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="619"/>
+        <source>Delete</source>
+        <translation>Delete</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="341" />
-      <location filename="../ladderworks/gui/editor/view.py" line="636" />
-      <location filename="../ladderworks/gui/editor/view.py" line="645" />
-      <source>Insert row</source>
-      <translation>Insert row</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="341"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="636"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="645"/>
+        <source>Insert row</source>
+        <translation>Insert row</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="356" />
-      <source>Place contact</source>
-      <translation>Place contact</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="356"/>
+        <source>Place contact</source>
+        <translation>Place contact</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="358" />
-      <source>Place coil</source>
-      <translation>Place coil</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="358"/>
+        <source>Place coil</source>
+        <translation>Place coil</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="367" />
-      <source>Select a contact or a coil for the OR tool</source>
-      <translation>Select a contact or a coil for the OR tool</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="367"/>
+        <source>Select a contact or a coil for the OR tool</source>
+        <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="372" />
-      <source>OR</source>
-      <translation>OR</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="372"/>
+        <source>OR</source>
+        <translation>OR</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="383" />
-      <source>Line: click the second point</source>
-      <translation>Line: click the second point</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
+        <source>Line: click the second point</source>
+        <translation>Line: click the second point</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="393" />
-      <source>Line</source>
-      <translation>Line</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="393"/>
+        <source>Line</source>
+        <translation>Line</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="428" />
-      <source>Place {0}</source>
-      <translation>Place {0}</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="428"/>
+        <source>Place {0}</source>
+        <translation>Place {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="432" />
-      <location filename="../ladderworks/gui/editor/view.py" line="436" />
-      <source>Parameters of {0}</source>
-      <translation>Parameters of {0}</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="432"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
+        <source>Parameters of {0}</source>
+        <translation>Parameters of {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="467" />
-      <source>Address, e.g. X2.1 (// comment)</source>
-      <translation>Address, e.g. X2.1 (// comment)</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="467"/>
+        <source>Address, e.g. X2.1 (// comment)</source>
+        <translation>Address, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="442" />
-      <location filename="../ladderworks/gui/editor/view.py" line="478" />
-      <location filename="../ladderworks/gui/editor/view.py" line="547" />
-      <location filename="../ladderworks/gui/editor/view.py" line="568" />
-      <source>Comment</source>
-      <translation>Comment</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="442"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="478"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="547"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="568"/>
+        <source>Comment</source>
+        <translation>Comment</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="537" />
-      <source>Address {0}</source>
-      <translation>Address {0}</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="537"/>
+        <source>Address {0}</source>
+        <translation>Address {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="541" />
-      <source>Address</source>
-      <translation>Address</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="541"/>
+        <source>Address</source>
+        <translation>Address</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="663" />
-      <source>Cut</source>
-      <translation>Cut</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
+        <source>Cut</source>
+        <translation>Cut</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="675" />
-      <source>Paste</source>
-      <translation>Paste</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="675"/>
+        <source>Paste</source>
+        <translation>Paste</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="684" />
-      <source>Delete network</source>
-      <translation>Delete network</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="684"/>
+        <source>Delete network</source>
+        <translation>Delete network</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="761" />
-      <source>N{0} row {1} col {2}</source>
-      <translation>N{0} row {1} col {2}</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="761"/>
+        <source>N{0} row {1} col {2}</source>
+        <translation>N{0} row {1} col {2}</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="117" />
-      <source>&amp;New</source>
-      <translation>&amp;New</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="117"/>
+        <source>&amp;New</source>
+        <translation>&amp;New</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="118" />
-      <source>&amp;Open...</source>
-      <translation>&amp;Open...</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="118"/>
+        <source>&amp;Open...</source>
+        <translation>&amp;Open...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="119" />
-      <source>&amp;Save</source>
-      <translation>&amp;Save</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="119"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Save</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="122" />
-      <source>Save &amp;As...</source>
-      <translation>Save &amp;As...</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="122"/>
+        <source>Save &amp;As...</source>
+        <translation>Save &amp;As...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="128" />
-      <source>&amp;Import .MOD...</source>
-      <translation>&amp;Import .MOD...</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="128"/>
+        <source>&amp;Import .MOD...</source>
+        <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="133" />
-      <source>&amp;Export .MOD...</source>
-      <translation>&amp;Export .MOD...</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="133"/>
+        <source>&amp;Export .MOD...</source>
+        <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="138" />
-      <source>Clear the list</source>
-      <translation>Clear the list</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="138"/>
+        <source>Clear the list</source>
+        <translation>Clear the list</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="141" />
-      <source>&amp;Quit</source>
-      <translation>&amp;Quit</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="141"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quit</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="146" />
-      <source>&amp;Undo</source>
-      <translation>&amp;Undo</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Undo</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="151" />
-      <source>&amp;Redo</source>
-      <translation>&amp;Redo</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="151"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Redo</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="152" />
-      <source>Cu&amp;t</source>
-      <translation>Cu&amp;t</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="152"/>
+        <source>Cu&amp;t</source>
+        <translation>Cu&amp;t</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="153" />
-      <source>&amp;Copy</source>
-      <translation>&amp;Copy</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="153"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copy</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="154" />
-      <source>&amp;Paste</source>
-      <translation>&amp;Paste</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="154"/>
+        <source>&amp;Paste</source>
+        <translation>&amp;Paste</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="155" />
-      <source>&amp;Delete</source>
-      <translation>&amp;Delete</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="155"/>
+        <source>&amp;Delete</source>
+        <translation>&amp;Delete</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="158" />
-      <source>&amp;Edit element</source>
-      <translation>&amp;Edit element</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="158"/>
+        <source>&amp;Edit element</source>
+        <translation>&amp;Edit element</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="163" />
-      <source>NOT (invert)</source>
-      <translation>NOT (invert)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <source>NOT (invert)</source>
+        <translation>NOT (invert)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="170" />
-      <source>OR (add parallel)</source>
-      <translation>OR (add parallel)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
+        <source>OR (add parallel)</source>
+        <translation>OR (add parallel)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="177" />
-      <source>Insert row before</source>
-      <translation>Insert row before</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="177"/>
+        <source>Insert row before</source>
+        <translation>Insert row before</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="184" />
-      <source>Insert row after</source>
-      <translation>Insert row after</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="184"/>
+        <source>Insert row after</source>
+        <translation>Insert row after</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="189" />
-      <source>Zoom &amp;in</source>
-      <translation>Zoom &amp;in</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <source>Zoom &amp;in</source>
+        <translation>Zoom &amp;in</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="190" />
-      <source>Zoom &amp;out</source>
-      <translation>Zoom &amp;out</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="190"/>
+        <source>Zoom &amp;out</source>
+        <translation>Zoom &amp;out</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="193" />
-      <source>&amp;Normal size</source>
-      <translation>&amp;Normal size</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="193"/>
+        <source>&amp;Normal size</source>
+        <translation>&amp;Normal size</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="199" />
-      <source>Show as &amp;ladder</source>
-      <translation>Show as &amp;ladder</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <source>Show as &amp;ladder</source>
+        <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="205" />
-      <source>Show as &amp;text</source>
-      <translation>Show as &amp;text</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="205"/>
+        <source>Show as &amp;text</source>
+        <translation>Show as &amp;text</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="209" />
-      <source>C&amp;heck</source>
-      <translation>C&amp;heck</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
+        <source>C&amp;heck</source>
+        <translation>C&amp;heck</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="212" />
-      <source>&amp;Compile</source>
-      <translation>&amp;Compile</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="212"/>
+        <source>&amp;Compile</source>
+        <translation>&amp;Compile</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="219" />
-      <source>&amp;About LadderWorks</source>
-      <translation>&amp;About LadderWorks</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="219"/>
+        <source>&amp;About LadderWorks</source>
+        <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="256" />
-      <source>&amp;File</source>
-      <translation>&amp;File</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="256"/>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="260" />
-      <source>Recent files</source>
-      <translation>Recent files</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="260"/>
+        <source>Recent files</source>
+        <translation>Recent files</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="277" />
-      <source>&amp;Edit</source>
-      <translation>&amp;Edit</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="277"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Edit</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="296" />
-      <source>&amp;View</source>
-      <translation>&amp;View</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="296"/>
+        <source>&amp;View</source>
+        <translation>&amp;View</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="316" />
-      <source>&amp;PLC</source>
-      <translation>&amp;PLC</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="316"/>
+        <source>&amp;PLC</source>
+        <translation>&amp;PLC</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="320" />
-      <source>&amp;Tools</source>
-      <translation>&amp;Tools</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="320"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Tools</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="326" />
-      <source>&amp;Language</source>
-      <translation>&amp;Language</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="326"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Language</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="329" />
-      <source>&amp;Help</source>
-      <translation>&amp;Help</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="329"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Help</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="332" />
-      <source>Main toolbar</source>
-      <translation>Main toolbar</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="332"/>
+        <source>Main toolbar</source>
+        <translation>Main toolbar</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="436" />
-      <source>Untitled</source>
-      <translation>Untitled</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="436"/>
+        <source>Untitled</source>
+        <translation>Untitled</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="461" />
-      <source>Unsaved changes</source>
-      <translation>Unsaved changes</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="461"/>
+        <source>Unsaved changes</source>
+        <translation>Unsaved changes</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="462" />
-      <source>The program has unsaved changes. Save them?</source>
-      <translation>The program has unsaved changes. Save them?</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="462"/>
+        <source>The program has unsaved changes. Save them?</source>
+        <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="489" />
-      <source>Open</source>
-      <translation>Open</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="489"/>
+        <source>Open</source>
+        <translation>Open</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="490" />
-      <source>Cannot read {0}: {1}</source>
-      <translation>Cannot read {0}: {1}</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="490"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="515" />
-      <source>The file has errors: it is shown as text</source>
-      <translation>The file has errors: it is shown as text</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="515"/>
+        <source>The file has errors: it is shown as text</source>
+        <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="525" />
-      <source>Open program</source>
-      <translation>Open program</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="525"/>
+        <source>Open program</source>
+        <translation>Open program</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="527" />
-      <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
-      <translation>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="527"/>
+        <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
+        <translation>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="558" />
-      <location filename="../ladderworks/gui/main_window.py" line="573" />
-      <location filename="../ladderworks/gui/main_window.py" line="585" />
-      <source>Save</source>
-      <translation>Save</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="558"/>
+        <location filename="../ladderworks/gui/main_window.py" line="573"/>
+        <location filename="../ladderworks/gui/main_window.py" line="585"/>
+        <source>Save</source>
+        <translation>Save</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="559" />
-      <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
-      <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="559"/>
+        <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
+        <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="574" />
-      <source>The ladder cannot be written as a program; see the error list.</source>
-      <translation>The ladder cannot be written as a program; see the error list.</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="574"/>
+        <source>The ladder cannot be written as a program; see the error list.</source>
+        <translation>The ladder cannot be written as a program; see the error list.</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="586" />
-      <source>Cannot write {0}: {1}</source>
-      <translation>Cannot write {0}: {1}</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="586"/>
+        <source>Cannot write {0}: {1}</source>
+        <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="596" />
-      <source>Saved {0}</source>
-      <translation>Saved {0}</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="596"/>
+        <source>Saved {0}</source>
+        <translation>Saved {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="604" />
-      <source>Save program</source>
-      <translation>Save program</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="604"/>
+        <source>Save program</source>
+        <translation>Save program</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="606" />
-      <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
-      <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="606"/>
+        <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
+        <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="616" />
-      <source>Import .MOD</source>
-      <translation>Import .MOD</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="616"/>
+        <source>Import .MOD</source>
+        <translation>Import .MOD</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="618" />
-      <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
-      <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="618"/>
+        <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
+        <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="637" />
-      <source>Export .MOD</source>
-      <translation>Export .MOD</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="637"/>
+        <source>Export .MOD</source>
+        <translation>Export .MOD</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="639" />
-      <source>Mnemonic programs (*.MOD);;All files (*)</source>
-      <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="639"/>
+        <source>Mnemonic programs (*.MOD);;All files (*)</source>
+        <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="650" />
-      <source>Exported {0}</source>
-      <translation>Exported {0}</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="650"/>
+        <source>Exported {0}</source>
+        <translation>Exported {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="722" />
-      <source>Check: {0} error(s)</source>
-      <translation>Check: {0} error(s)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="722"/>
+        <source>Check: {0} error(s)</source>
+        <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="741" />
-      <source>Compile failed: {0} error(s)</source>
-      <translation>Compile failed: {0} error(s)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="741"/>
+        <source>Compile failed: {0} error(s)</source>
+        <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="747" />
-      <source>Compile finished: {0} bytes</source>
-      <translation>Compile finished: {0} bytes</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="747"/>
+        <source>Compile finished: {0} bytes</source>
+        <translation>Compile finished: {0} bytes</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="768" />
-      <source>About LadderWorks</source>
-      <translation>About LadderWorks</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="768"/>
+        <source>About LadderWorks</source>
+        <translation>About LadderWorks</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="769" />
-      <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
-      <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="769"/>
+        <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
+        <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>Param</name>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="29" />
-      <source>Timer number</source>
-      <translation>Timer number</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="29"/>
+        <source>Timer number</source>
+        <translation>Timer number</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="30" />
-      <source>Preset</source>
-      <translation>Preset</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="30"/>
+        <source>Preset</source>
+        <translation>Preset</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="31" />
-      <source>Accuracy</source>
-      <translation>Accuracy</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="31"/>
+        <source>Accuracy</source>
+        <translation>Accuracy</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="32" />
-      <source>Timer/counter register</source>
-      <translation>Timer/counter register</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <source>Timer/counter register</source>
+        <translation>Timer/counter register</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="33" />
-      <source>Code signal</source>
-      <translation>Code signal</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
+        <source>Code signal</source>
+        <translation>Code signal</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="34" />
-      <source>Decode specification</source>
-      <translation>Decode specification</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <source>Decode specification</source>
+        <translation>Decode specification</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="35" />
-      <source>Format</source>
-      <translation>Format</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
+        <source>Format</source>
+        <translation>Format</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="36" />
-      <source>First number</source>
-      <translation>First number</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
+        <source>First number</source>
+        <translation>First number</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="37" />
-      <source>Result</source>
-      <translation>Result</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
+        <source>Result</source>
+        <translation>Result</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="38" />
-      <source>Counter number</source>
-      <translation>Counter number</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <source>Counter number</source>
+        <translation>Counter number</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="39" />
-      <source>Number of positions</source>
-      <translation>Number of positions</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <source>Number of positions</source>
+        <translation>Number of positions</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="40" />
-      <source>Current position</source>
-      <translation>Current position</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <source>Current position</source>
+        <translation>Current position</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="41" />
-      <source>Target position</source>
-      <translation>Target position</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
+        <source>Target position</source>
+        <translation>Target position</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="42" />
-      <source>Table size</source>
-      <translation>Table size</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <source>Table size</source>
+        <translation>Table size</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="43" />
-      <source>Index</source>
-      <translation>Index</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
+        <source>Index</source>
+        <translation>Index</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="44" />
-      <source>Output</source>
-      <translation>Output</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <source>Output</source>
+        <translation>Output</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="45" />
-      <source>Table values</source>
-      <translation>Table values</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <source>Table values</source>
+        <translation>Table values</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="46" />
-      <source>Input</source>
-      <translation>Input</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <source>Input</source>
+        <translation>Input</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="47" />
-      <source>High 4-bit mask</source>
-      <translation>High 4-bit mask</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <source>High 4-bit mask</source>
+        <translation>High 4-bit mask</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="48" />
-      <source>Low 4-bit mask</source>
-      <translation>Low 4-bit mask</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <source>Low 4-bit mask</source>
+        <translation>Low 4-bit mask</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="49" />
-      <source>OR data</source>
-      <translation>OR data</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
+        <source>OR data</source>
+        <translation>OR data</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="50" />
-      <source>Data</source>
-      <translation>Data</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <source>Data</source>
+        <translation>Data</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="51" />
-      <source>Number of coils</source>
-      <translation>Number of coils</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <source>Number of coils</source>
+        <translation>Number of coils</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="52" />
-      <source>Input format (0 constant, 1 address)</source>
-      <translation>Input format (0 constant, 1 address)</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="52"/>
+        <source>Input format (0 constant, 1 address)</source>
+        <translation>Input format (0 constant, 1 address)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="53" />
-      <source>Compared data</source>
-      <translation>Compared data</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <source>Compared data</source>
+        <translation>Compared data</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="54" />
-      <source>Searched data</source>
-      <translation>Searched data</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
+        <source>Searched data</source>
+        <translation>Searched data</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="55" />
-      <source>Operand format (0 constant, 1 address)</source>
-      <translation>Operand format (0 constant, 1 address)</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
+        <source>Operand format (0 constant, 1 address)</source>
+        <translation>Operand format (0 constant, 1 address)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="57" />
-      <source>Operand A</source>
-      <translation>Operand A</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="57"/>
+        <source>Operand A</source>
+        <translation>Operand A</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="58" />
-      <source>Operand B</source>
-      <translation>Operand B</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
+        <source>Operand B</source>
+        <translation>Operand B</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="59" />
-      <source>Constant</source>
-      <translation>Constant</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="59"/>
+        <source>Constant</source>
+        <translation>Constant</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>PlcControl</name>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="118" />
-      <source>PLC CONTROL SCREEN</source>
-      <translation>PLC CONTROL SCREEN</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="118"/>
+        <source>PLC CONTROL SCREEN</source>
+        <translation>PLC CONTROL SCREEN</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="120" />
-      <source>Open .MOD…</source>
-      <translation>Open .MOD…</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="120"/>
+        <source>Open .MOD…</source>
+        <translation>Open .MOD…</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="121" />
-      <source>Take the console's program</source>
-      <translation>Take the console's program</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="121"/>
+        <source>Take the console&apos;s program</source>
+        <translation>Take the console&apos;s program</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="122" />
-      <source>Compile</source>
-      <translation>Compile</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="122"/>
+        <source>Compile</source>
+        <translation>Compile</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="123" />
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="252" />
-      <source>START</source>
-      <translation>START</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="252"/>
+        <source>START</source>
+        <translation>START</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="124" />
-      <source>STOP</source>
-      <translation>STOP</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="124"/>
+        <source>STOP</source>
+        <translation>STOP</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="145" />
-      <source>Cannot read {0}: {1}</source>
-      <translation>Cannot read {0}: {1}</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="145"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="149" />
-      <source>Opened {0}</source>
-      <translation>Opened {0}</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="149"/>
+        <source>Opened {0}</source>
+        <translation>Opened {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="155" />
-      <source>Open mnemonic program</source>
-      <translation>Open mnemonic program</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
+        <source>Open mnemonic program</source>
+        <translation>Open mnemonic program</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="156" />
-      <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
-      <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
+        <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="164" />
-      <source>The console's program cannot be coded: see the error list</source>
-      <translation>The console's program cannot be coded: see the error list</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="164"/>
+        <source>The console&apos;s program cannot be coded: see the error list</source>
+        <translation>The console&apos;s program cannot be coded: see the error list</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="168" />
-      <source>Program taken from the console</source>
-      <translation>Program taken from the console</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="168"/>
+        <source>Program taken from the console</source>
+        <translation>Program taken from the console</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="202" />
-      <source>Compile failed: {0} error(s). {1}</source>
-      <translation>Compile failed: {0} error(s). {1}</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="202"/>
+        <source>Compile failed: {0} error(s). {1}</source>
+        <translation>Compile failed: {0} error(s). {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="214" />
-      <source>Converting…</source>
-      <translation>Converting…</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="214"/>
+        <source>Converting…</source>
+        <translation>Converting…</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="239" />
-      <source>compile finish — {0} networks, {1} bytes</source>
-      <translation>compile finish — {0} networks, {1} bytes</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="239"/>
+        <source>compile finish — {0} networks, {1} bytes</source>
+        <translation>compile finish — {0} networks, {1} bytes</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="242" />
-      <source>({0} warning(s))</source>
-      <translation>({0} warning(s))</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="242"/>
+        <source>({0} warning(s))</source>
+        <translation>({0} warning(s))</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="253" />
-      <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
-      <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="253"/>
+        <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
+        <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="260" />
-      <source>Compile a program first</source>
-      <translation>Compile a program first</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="260"/>
+        <source>Compile a program first</source>
+        <translation>Compile a program first</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="280" />
-      <source>NO PROGRAM</source>
-      <translation>NO PROGRAM</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="280"/>
+        <source>NO PROGRAM</source>
+        <translation>NO PROGRAM</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="283" />
-      <source>RUNNING</source>
-      <translation>RUNNING</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="283"/>
+        <source>RUNNING</source>
+        <translation>RUNNING</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="286" />
-      <source>STOPPED</source>
-      <translation>STOPPED</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <source>STOPPED</source>
+        <translation>STOPPED</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="289" />
-      <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
-      <translation>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="289"/>
+        <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
+        <translation>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>PlcDiagnostic</name>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="138" />
-      <source>PLC DIAGNOSTIC</source>
-      <translation>PLC DIAGNOSTIC</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="138"/>
+        <source>PLC DIAGNOSTIC</source>
+        <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="139" />
-      <source>Address, e.g. R102.0</source>
-      <translation>Address, e.g. R102.0</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="139"/>
+        <source>Address, e.g. R102.0</source>
+        <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="140" />
-      <source>Find</source>
-      <translation>Find</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="140"/>
+        <source>Find</source>
+        <translation>Find</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="141" />
-      <source>Where written</source>
-      <translation>Where written</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="141"/>
+        <source>Where written</source>
+        <translation>Where written</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="142" />
-      <source>Follow</source>
-      <translation>Follow</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="142"/>
+        <source>Follow</source>
+        <translation>Follow</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="143" />
-      <source>Keep the searched address in view while the PLC runs</source>
-      <translation>Keep the searched address in view while the PLC runs</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="143"/>
+        <source>Keep the searched address in view while the PLC runs</source>
+        <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="185" />
-      <source>No program loaded</source>
-      <translation>No program loaded</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="185"/>
+        <source>No program loaded</source>
+        <translation>No program loaded</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="187" />
-      <source>RUNNING — scan {0}</source>
-      <translation>RUNNING — scan {0}</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="187"/>
+        <source>RUNNING — scan {0}</source>
+        <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="189" />
-      <source>STOPPED</source>
-      <translation>STOPPED</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="189"/>
+        <source>STOPPED</source>
+        <translation>STOPPED</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="199" />
-      <source>'{0}' is not an address</source>
-      <translation>'{0}' is not an address</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="199"/>
+        <source>&apos;{0}&apos; is not an address</source>
+        <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="243" />
-      <source>'{0}' is not in the program</source>
-      <translation>'{0}' is not in the program</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="243"/>
+        <source>&apos;{0}&apos; is not in the program</source>
+        <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="253" />
-      <source>No coil writes {0}</source>
-      <translation>No coil writes {0}</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="253"/>
+        <source>No coil writes {0}</source>
+        <translation>No coil writes {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="262" />
-      <source>{0} of {1}: network {2}</source>
-      <translation>{0} of {1}: network {2}</translation>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="262"/>
+        <source>{0} of {1}: network {2}</source>
+        <translation>{0} of {1}: network {2}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/power_overlay.py" line="97" />
-      <source>PASSIVE</source>
-      <translation>PASSIVE</translation>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="97"/>
+        <source>PASSIVE</source>
+        <translation>PASSIVE</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>PlcDocks</name>
     <message>
-      <location filename="../ladderworks/gui/docks/dock_menus.py" line="55" />
-      <source>'{0}': the width after ':' must be 1, 2 or 4</source>
-      <translation>'{0}': the width after ':' must be 1, 2 or 4</translation>
+        <location filename="../ladderworks/gui/docks/dock_menus.py" line="55"/>
+        <source>&apos;{0}&apos;: the width after &apos;:&apos; must be 1, 2 or 4</source>
+        <translation>&apos;{0}&apos;: the width after &apos;:&apos; must be 1, 2 or 4</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/dock_menus.py" line="58" />
-      <source>'{0}': a bit address takes no width</source>
-      <translation>'{0}': a bit address takes no width</translation>
+        <location filename="../ladderworks/gui/docks/dock_menus.py" line="58"/>
+        <source>&apos;{0}&apos;: a bit address takes no width</source>
+        <translation>&apos;{0}&apos;: a bit address takes no width</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>PlcOnline</name>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="58" />
-      <source>On-line mode</source>
-      <translation>On-line mode</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="58"/>
+        <source>On-line mode</source>
+        <translation>On-line mode</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="59" />
-      <source>Make passive (disable)</source>
-      <translation>Make passive (disable)</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="59"/>
+        <source>Make passive (disable)</source>
+        <translation>Make passive (disable)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="60" />
-      <source>Make active again</source>
-      <translation>Make active again</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
+        <source>Make active again</source>
+        <translation>Make active again</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="61" />
-      <source>Force to 1</source>
-      <translation>Force to 1</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
+        <source>Force to 1</source>
+        <translation>Force to 1</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="62" />
-      <source>Force to 0</source>
-      <translation>Force to 0</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
+        <source>Force to 0</source>
+        <translation>Force to 0</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="63" />
-      <source>Release the force</source>
-      <translation>Release the force</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <source>Release the force</source>
+        <translation>Release the force</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="82" />
-      <source>Off-line</source>
-      <translation>Off-line</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="82"/>
+        <source>Off-line</source>
+        <translation>Off-line</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="87" />
-      <source>On-line needs a compiled program in the PLC</source>
-      <translation>On-line needs a compiled program in the PLC</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="87"/>
+        <source>On-line needs a compiled program in the PLC</source>
+        <translation>On-line needs a compiled program in the PLC</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="92" />
-      <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
-      <translation>The drawing is not the program in the PLC: compile it in the PLC control screen first</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="92"/>
+        <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
+        <translation>The drawing is not the program in the PLC: compile it in the PLC control screen first</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="101" />
-      <source>On-line: the drawing shows the running PLC</source>
-      <translation>On-line: the drawing shows the running PLC</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="101"/>
+        <source>On-line: the drawing shows the running PLC</source>
+        <translation>On-line: the drawing shows the running PLC</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="119" />
-      <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
-      <translation>Off-line: the drawing was changed; it is no longer the program the PLC runs</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="119"/>
+        <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
+        <translation>Off-line: the drawing was changed; it is no longer the program the PLC runs</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="156" />
-      <source>Select a contact, coil or function first</source>
-      <translation>Select a contact, coil or function first</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="156"/>
+        <source>Select a contact, coil or function first</source>
+        <translation>Select a contact, coil or function first</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="160" />
-      <source>This element has no op in the PLC program</source>
-      <translation>This element has no op in the PLC program</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="160"/>
+        <source>This element has no op in the PLC program</source>
+        <translation>This element has no op in the PLC program</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="183" />
-      <source>Select a contact or coil to force its signal</source>
-      <translation>Select a contact or coil to force its signal</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="183"/>
+        <source>Select a contact or coil to force its signal</source>
+        <translation>Select a contact or coil to force its signal</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>PlcTables</name>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="79" />
-      <source>'{0}' is not a number</source>
-      <translation>'{0}' is not a number</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="79"/>
+        <source>&apos;{0}&apos; is not a number</source>
+        <translation>&apos;{0}&apos; is not a number</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="81" />
-      <source>{0} is out of range ({1} to {2})</source>
-      <translation>{0} is out of range ({1} to {2})</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="81"/>
+        <source>{0} is out of range ({1} to {2})</source>
+        <translation>{0} is out of range ({1} to {2})</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="85" />
-      <source>{0} bytes: a value has 1, 2 or 4 bytes</source>
-      <translation>{0} bytes: a value has 1, 2 or 4 bytes</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="85"/>
+        <source>{0} bytes: a value has 1, 2 or 4 bytes</source>
+        <translation>{0} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="89" />
-      <source>'{0}': type up to 8 binary digits (0 and 1), bit 7 first</source>
-      <translation>'{0}': type up to 8 binary digits (0 and 1), bit 7 first</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="89"/>
+        <source>&apos;{0}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
+        <translation>&apos;{0}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="93" />
-      <source>TMRB {0}: its preset is fixed in the program and cannot be changed here</source>
-      <translation>TMRB {0}: its preset is fixed in the program and cannot be changed here</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="93"/>
+        <source>TMRB {0}: its preset is fixed in the program and cannot be changed here</source>
+        <translation>TMRB {0}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="103" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="111" />
-      <source>No.</source>
-      <translation>No.</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="103"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="111"/>
+        <source>No.</source>
+        <translation>No.</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="104" />
-      <source>Type</source>
-      <translation>Type</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="104"/>
+        <source>Type</source>
+        <translation>Type</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="105" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="134" />
-      <source>Preset (ms)</source>
-      <translation>Preset (ms)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="134"/>
+        <source>Preset (ms)</source>
+        <translation>Preset (ms)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="106" />
-      <source>Tick (ms)</source>
-      <translation>Tick (ms)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="106"/>
+        <source>Tick (ms)</source>
+        <translation>Tick (ms)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="107" />
-      <source>Delay (ms)</source>
-      <translation>Delay (ms)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="107"/>
+        <source>Delay (ms)</source>
+        <translation>Delay (ms)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="112" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="139" />
-      <source>Preset</source>
-      <translation>Preset</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="112"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="139"/>
+        <source>Preset</source>
+        <translation>Preset</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="113" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="140" />
-      <source>Current value</source>
-      <translation>Current value</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="113"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="140"/>
+        <source>Current value</source>
+        <translation>Current value</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="117" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="123" />
-      <source>Address</source>
-      <translation>Address</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="123"/>
+        <source>Address</source>
+        <translation>Address</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="118" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="145" />
-      <source>Bytes</source>
-      <translation>Bytes</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="118"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="145"/>
+        <source>Bytes</source>
+        <translation>Bytes</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="119" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="146" />
-      <source>Value</source>
-      <translation>Value</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="146"/>
+        <source>Value</source>
+        <translation>Value</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="120" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="125" />
-      <source>Hex</source>
-      <translation>Hex</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="120"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="125"/>
+        <source>Hex</source>
+        <translation>Hex</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="124" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="148" />
-      <source>Bits 7..0</source>
-      <translation>Bits 7..0</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="148"/>
+        <source>Bits 7..0</source>
+        <translation>Bits 7..0</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="133" />
-      <source>Timer number (1-100)</source>
-      <translation>Timer number (1-100)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="133"/>
+        <source>Timer number (1-100)</source>
+        <translation>Timer number (1-100)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="138" />
-      <source>Counter number (1-20)</source>
-      <translation>Counter number (1-20)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="138"/>
+        <source>Counter number (1-20)</source>
+        <translation>Counter number (1-20)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="144" />
-      <source>Address (D)</source>
-      <translation>Address (D)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="144"/>
+        <source>Address (D)</source>
+        <translation>Address (D)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="148" />
-      <source>Address (K)</source>
-      <translation>Address (K)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="148"/>
+        <source>Address (K)</source>
+        <translation>Address (K)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="193" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="481" />
-      <source>INSERT</source>
-      <translation>INSERT</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="481"/>
+        <source>INSERT</source>
+        <translation>INSERT</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="351" />
-      <source>TMRB: the preset is fixed in the program</source>
-      <translation>TMRB: the preset is fixed in the program</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
+        <source>TMRB: the preset is fixed in the program</source>
+        <translation>TMRB: the preset is fixed in the program</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="484" />
-      <source>DELETE</source>
-      <translation>DELETE</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="484"/>
+        <source>DELETE</source>
+        <translation>DELETE</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="513" />
-      <source>PLC tables</source>
-      <translation>PLC tables</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="513"/>
+        <source>PLC tables</source>
+        <translation>PLC tables</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="515" />
-      <source>Timers (TMR)</source>
-      <translation>Timers (TMR)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="515"/>
+        <source>Timers (TMR)</source>
+        <translation>Timers (TMR)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="516" />
-      <source>Counters (CTR)</source>
-      <translation>Counters (CTR)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="516"/>
+        <source>Counters (CTR)</source>
+        <translation>Counters (CTR)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="517" />
-      <source>Data table (D)</source>
-      <translation>Data table (D)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="517"/>
+        <source>Data table (D)</source>
+        <translation>Data table (D)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="518" />
-      <source>Keep relays (K)</source>
-      <translation>Keep relays (K)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="518"/>
+        <source>Keep relays (K)</source>
+        <translation>Keep relays (K)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="524" />
-      <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
-      <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="524"/>
+        <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
+        <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>TimeChart</name>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="140" />
-      <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
-      <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="140"/>
+        <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
+        <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="160" />
-      <source>Load (compile) a PLC program first</source>
-      <translation>Load (compile) a PLC program first</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="160"/>
+        <source>Load (compile) a PLC program first</source>
+        <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="171" />
-      <source>Sampling every {0} ms</source>
-      <translation>Sampling every {0} ms</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="171"/>
+        <source>Sampling every {0} ms</source>
+        <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="182" />
-      <source>Stopped: {0} samples</source>
-      <translation>Stopped: {0} samples</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="182"/>
+        <source>Stopped: {0} samples</source>
+        <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="195" />
-      <source>New program loaded; sampling goes on</source>
-      <translation>New program loaded; sampling goes on</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="195"/>
+        <source>New program loaded; sampling goes on</source>
+        <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="311" />
-      <source>Cursor {0} ms:</source>
-      <translation>Cursor {0} ms:</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="311"/>
+        <source>Cursor {0} ms:</source>
+        <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="324" />
-      <source>Cannot write {0}: {1}</source>
-      <translation>Cannot write {0}: {1}</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="324"/>
+        <source>Cannot write {0}: {1}</source>
+        <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="328" />
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="336" />
-      <source>Saved {0}</source>
-      <translation>Saved {0}</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="336"/>
+        <source>Saved {0}</source>
+        <translation>Saved {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="334" />
-      <source>Cannot write {0}</source>
-      <translation>Cannot write {0}</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="334"/>
+        <source>Cannot write {0}</source>
+        <translation>Cannot write {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="343" />
-      <source>Export time chart as CSV</source>
-      <translation>Export time chart as CSV</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="343"/>
+        <source>Export time chart as CSV</source>
+        <translation>Export time chart as CSV</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="345" />
-      <source>CSV files (*.csv)</source>
-      <translation>CSV files (*.csv)</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="345"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="354" />
-      <source>Export time chart as PNG</source>
-      <translation>Export time chart as PNG</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="354"/>
+        <source>Export time chart as PNG</source>
+        <translation>Export time chart as PNG</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="356" />
-      <source>PNG pictures (*.png)</source>
-      <translation>PNG pictures (*.png)</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="356"/>
+        <source>PNG pictures (*.png)</source>
+        <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="375" />
-      <source>PLC time chart</source>
-      <translation>PLC time chart</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="375"/>
+        <source>PLC time chart</source>
+        <translation>PLC time chart</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="376" />
-      <source>Signals:</source>
-      <translation>Signals:</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="376"/>
+        <source>Signals:</source>
+        <translation>Signals:</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="377" />
-      <source>e.g. R1.4 R1.7 D10:2</source>
-      <translation>e.g. R1.4 R1.7 D10:2</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="377"/>
+        <source>e.g. R1.4 R1.7 D10:2</source>
+        <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="378" />
-      <source>Sampling time:</source>
-      <translation>Sampling time:</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="378"/>
+        <source>Sampling time:</source>
+        <translation>Sampling time:</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="380" />
-      <source>START</source>
-      <translation>START</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="380"/>
+        <source>START</source>
+        <translation>START</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="381" />
-      <source>STOP</source>
-      <translation>STOP</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
+        <source>STOP</source>
+        <translation>STOP</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="382" />
-      <source>CLEAR</source>
-      <translation>CLEAR</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <source>CLEAR</source>
+        <translation>CLEAR</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="383" />
-      <source>Fit</source>
-      <translation>Fit</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="383"/>
+        <source>Fit</source>
+        <translation>Fit</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="384" />
-      <source>Zoom in</source>
-      <translation>Zoom in</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="384"/>
+        <source>Zoom in</source>
+        <translation>Zoom in</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="385" />
-      <source>Zoom out</source>
-      <translation>Zoom out</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <source>Zoom out</source>
+        <translation>Zoom out</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="386" />
-      <source>CSV...</source>
-      <translation>CSV...</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
+        <source>CSV...</source>
+        <translation>CSV...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="387" />
-      <source>PNG...</source>
-      <translation>PNG...</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
+        <source>PNG...</source>
+        <translation>PNG...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="392" />
-      <source>Export the samples as CSV</source>
-      <translation>Export the samples as CSV</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <source>Export the samples as CSV</source>
+        <translation>Export the samples as CSV</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="395" />
-      <source>Save the chart as a PNG picture</source>
-      <translation>Save the chart as a PNG picture</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
+        <source>Save the chart as a PNG picture</source>
+        <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="397" />
-      <source>time (ms)</source>
-      <translation>time (ms)</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
+        <source>time (ms)</source>
+        <translation>time (ms)</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>Tool</name>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="80" />
-      <source>Select</source>
-      <translation>Select</translation>
+        <location filename="../ladderworks/gui/tools.py" line="80"/>
+        <source>Select</source>
+        <translation>Select</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="81" />
-      <source>Input</source>
-      <translation>Input</translation>
+        <location filename="../ladderworks/gui/tools.py" line="81"/>
+        <source>Input</source>
+        <translation>Input</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="82" />
-      <source>NOT input</source>
-      <translation>NOT input</translation>
+        <location filename="../ladderworks/gui/tools.py" line="82"/>
+        <source>NOT input</source>
+        <translation>NOT input</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="83" />
-      <source>Output</source>
-      <translation>Output</translation>
+        <location filename="../ladderworks/gui/tools.py" line="83"/>
+        <source>Output</source>
+        <translation>Output</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="84" />
-      <source>NOT output</source>
-      <translation>NOT output</translation>
+        <location filename="../ladderworks/gui/tools.py" line="84"/>
+        <source>NOT output</source>
+        <translation>NOT output</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="85" />
-      <source>NOT</source>
-      <translation>NOT</translation>
+        <location filename="../ladderworks/gui/tools.py" line="85"/>
+        <source>NOT</source>
+        <translation>NOT</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="86" />
-      <source>OR</source>
-      <translation>OR</translation>
+        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <source>OR</source>
+        <translation>OR</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="87" />
-      <source>Line</source>
-      <translation>Line</translation>
+        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <source>Line</source>
+        <translation>Line</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="88" />
-      <source>Comment</source>
-      <translation>Comment</translation>
+        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <source>Comment</source>
+        <translation>Comment</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="89" />
-      <source>Delete</source>
-      <translation>Delete</translation>
+        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <source>Delete</source>
+        <translation>Delete</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="90" />
-      <source>Function</source>
-      <translation>Function</translation>
+        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <source>Function</source>
+        <translation>Function</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="91" />
-      <source>Insert row before</source>
-      <translation>Insert row before</translation>
+        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <source>Insert row before</source>
+        <translation>Insert row before</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="92" />
-      <source>Insert row after</source>
-      <translation>Insert row after</translation>
+        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <source>Insert row after</source>
+        <translation>Insert row after</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="100" />
-      <source>Select an element; right-click for cut, copy, paste</source>
-      <translation>Select an element; right-click for cut, copy, paste</translation>
+        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <source>Select an element; right-click for cut, copy, paste</source>
+        <translation>Select an element; right-click for cut, copy, paste</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="102" />
-      <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
-      <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
+        <location filename="../ladderworks/gui/tools.py" line="102"/>
+        <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
+        <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="104" />
-      <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
-      <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
+        <location filename="../ladderworks/gui/tools.py" line="104"/>
+        <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
+        <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="106" />
-      <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
-      <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
+        <location filename="../ladderworks/gui/tools.py" line="106"/>
+        <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
+        <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="108" />
-      <source>Click a cell to place a NOT coil (WRT.NOT)</source>
-      <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
+        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <source>Click a cell to place a NOT coil (WRT.NOT)</source>
+        <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="110" />
-      <source>Click a contact or coil to turn it into its inverse</source>
-      <translation>Click a contact or coil to turn it into its inverse</translation>
+        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <source>Click a contact or coil to turn it into its inverse</source>
+        <translation>Click a contact or coil to turn it into its inverse</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="112" />
-      <source>Click a contact or coil to add a parallel one below it</source>
-      <translation>Click a contact or coil to add a parallel one below it</translation>
+        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <source>Click a contact or coil to add a parallel one below it</source>
+        <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="114" />
-      <source>Click a first point, then a second point: a horizontal or vertical wire</source>
-      <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
+        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <source>Click a first point, then a second point: a horizontal or vertical wire</source>
+        <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="116" />
-      <source>Click the start of an empty row, type the comment, ENTER</source>
-      <translation>Click the start of an empty row, type the comment, ENTER</translation>
+        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <source>Click the start of an empty row, type the comment, ENTER</source>
+        <translation>Click the start of an empty row, type the comment, ENTER</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="118" />
-      <source>Click an element to delete it</source>
-      <translation>Click an element to delete it</translation>
+        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <source>Click an element to delete it</source>
+        <translation>Click an element to delete it</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="119" />
-      <source>Choose a function in the list, click the diagram, fill its table</source>
-      <translation>Choose a function in the list, click the diagram, fill its table</translation>
+        <location filename="../ladderworks/gui/tools.py" line="119"/>
+        <source>Choose a function in the list, click the diagram, fill its table</source>
+        <translation>Choose a function in the list, click the diagram, fill its table</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="121" />
-      <source>Click a cell to insert an empty row before it</source>
-      <translation>Click a cell to insert an empty row before it</translation>
+        <location filename="../ladderworks/gui/tools.py" line="121"/>
+        <source>Click a cell to insert an empty row before it</source>
+        <translation>Click a cell to insert an empty row before it</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="123" />
-      <source>Click a cell to insert an empty row after it</source>
-      <translation>Click a cell to insert an empty row after it</translation>
+        <location filename="../ladderworks/gui/tools.py" line="123"/>
+        <source>Click a cell to insert an empty row after it</source>
+        <translation>Click a cell to insert an empty row after it</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>ToolPalette</name>
     <message>
-      <location filename="../ladderworks/gui/palette.py" line="72" />
-      <source>Tools</source>
-      <translation>Tools</translation>
+        <location filename="../ladderworks/gui/palette.py" line="72"/>
+        <source>Tools</source>
+        <translation>Tools</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/palette.py" line="73" />
-      <source>Function:</source>
-      <translation>Function:</translation>
+        <location filename="../ladderworks/gui/palette.py" line="73"/>
+        <source>Function:</source>
+        <translation>Function:</translation>
     </message>
-  </context>
+</context>
 </TS>

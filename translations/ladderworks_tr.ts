@@ -1,1959 +1,1959 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="tr_TR" sourcelanguage="en">
-  <context>
+<context>
     <name>AlarmPanel</name>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="101" />
-      <source>Cannot read {0}: {1}</source>
-      <translation>{0} okunamıyor: {1}</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="101"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="119" />
-      <source>Alarm message file</source>
-      <translation>Alarm mesaj dosyası</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="119"/>
+        <source>Alarm message file</source>
+        <translation>Alarm mesaj dosyası</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="121" />
-      <source>Alarm files (*.dat);;All files (*)</source>
-      <translation>Alarm dosyaları (*.dat);;Tüm dosyalar (*)</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="121"/>
+        <source>Alarm files (*.dat);;All files (*)</source>
+        <translation>Alarm dosyaları (*.dat);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="128" />
-      <source>No alarm file</source>
-      <translation>Alarm dosyası yok</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="128"/>
+        <source>No alarm file</source>
+        <translation>Alarm dosyası yok</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="130" />
-      <source>{0}: {1} messages</source>
-      <translation>{0}: {1} mesaj</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="130"/>
+        <source>{0}: {1} messages</source>
+        <translation>{0}: {1} mesaj</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="134" />
-      <source>{0} lines with problems</source>
-      <translation>{0} satırda sorun var</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="134"/>
+        <source>{0} lines with problems</source>
+        <translation>{0} satırda sorun var</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="141" />
-      <source>line {0}: {1}</source>
-      <translation>satır {0}: {1}</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="141"/>
+        <source>line {0}: {1}</source>
+        <translation>satır {0}: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="159" />
-      <source>(no message {0} in the alarm file)</source>
-      <translation>(alarm dosyasında {0} numaralı mesaj yok)</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="159"/>
+        <source>(no message {0} in the alarm file)</source>
+        <translation>(alarm dosyasında {0} numaralı mesaj yok)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="192" />
-      <source>The bit is 0 again: RESET clears this alarm</source>
-      <translation>Bit yeniden 0: RESET bu alarmı siler</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="192"/>
+        <source>The bit is 0 again: RESET clears this alarm</source>
+        <translation>Bit yeniden 0: RESET bu alarmı siler</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="209" />
-      <source>Alarms</source>
-      <translation>ALARMLAR</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="209"/>
+        <source>Alarms</source>
+        <translation>ALARMLAR</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="210" />
-      <source>RESET</source>
-      <translation>RESET</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="210"/>
+        <source>RESET</source>
+        <translation>RESET</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="212" />
-      <source>Clear the alarms whose bit is 0 (the reset key)</source>
-      <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="212"/>
+        <source>Clear the alarms whose bit is 0 (the reset key)</source>
+        <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="214" />
-      <source>Alarm file...</source>
-      <translation>Alarm dosyası...</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="214"/>
+        <source>Alarm file...</source>
+        <translation>Alarm dosyası...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="217" />
-      <source>No.</source>
-      <translation>No.</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="217"/>
+        <source>No.</source>
+        <translation>No.</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="218" />
-      <source>Bit</source>
-      <translation>Bit</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="218"/>
+        <source>Bit</source>
+        <translation>Bit</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="219" />
-      <source>PLC time</source>
-      <translation>PLC zamanı</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="219"/>
+        <source>PLC time</source>
+        <translation>PLC zamanı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="220" />
-      <source>Clock</source>
-      <translation>Saat</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="220"/>
+        <source>Clock</source>
+        <translation>Saat</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/alarms.py" line="221" />
-      <source>Message</source>
-      <translation>Mesaj</translation>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="221"/>
+        <source>Message</source>
+        <translation>Mesaj</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>BitDisplay</name>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="252" />
-      <source>Forced to {0}</source>
-      <translation>{0} değerine zorlandı</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="252"/>
+        <source>Forced to {0}</source>
+        <translation>{0} değerine zorlandı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="255" />
-      <source>Click: force to the other value; right-click: force menu</source>
-      <translation>Tıklama: diğer değere zorla; sağ tuş: zorlama menüsü</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="255"/>
+        <source>Click: force to the other value; right-click: force menu</source>
+        <translation>Tıklama: diğer değere zorla; sağ tuş: zorlama menüsü</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="273" />
-      <source>Load a program to force inputs</source>
-      <translation>Girişleri zorlamak için bir program yükleyin</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="273"/>
+        <source>Load a program to force inputs</source>
+        <translation>Girişleri zorlamak için bir program yükleyin</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="290" />
-      <source>Force to 1</source>
-      <translation>1'e zorla</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="290"/>
+        <source>Force to 1</source>
+        <translation>1&apos;e zorla</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="295" />
-      <source>Force to 0</source>
-      <translation>0'a zorla</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="295"/>
+        <source>Force to 0</source>
+        <translation>0&apos;a zorla</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="300" />
-      <source>Release the force</source>
-      <translation>Zorlamayı kaldır</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="300"/>
+        <source>Release the force</source>
+        <translation>Zorlamayı kaldır</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="314" />
-      <source>Live</source>
-      <translation>Canlı</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="314"/>
+        <source>Live</source>
+        <translation>Canlı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="314" />
-      <source>Stopped</source>
-      <translation>Durduruldu</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="314"/>
+        <source>Stopped</source>
+        <translation>Durduruldu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="321" />
-      <source>PLC bit display</source>
-      <translation>PLC BIT GÖSTERİMİ</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="321"/>
+        <source>PLC bit display</source>
+        <translation>PLC BIT GÖSTERİMİ</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="322" />
-      <source>START</source>
-      <translation>BAŞLAT</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="322"/>
+        <source>START</source>
+        <translation>BAŞLAT</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="323" />
-      <source>STOP</source>
-      <translation>DURDUR</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="323"/>
+        <source>STOP</source>
+        <translation>DURDUR</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="324" />
-      <source>Byte</source>
-      <translation>Byte</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="324"/>
+        <source>Byte</source>
+        <translation>Byte</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="325" />
-      <source>Hex</source>
-      <translation>Hex</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="325"/>
+        <source>Hex</source>
+        <translation>Hex</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="326" />
-      <source>Dec</source>
-      <translation>Ondalık</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="326"/>
+        <source>Dec</source>
+        <translation>Ondalık</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/bit_display.py" line="328" />
-      <source>e.g. X12</source>
-      <translation>örn. X12</translation>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <source>e.g. X12</source>
+        <translation>örn. X12</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>Diagnostic</name>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="15" />
-      <source>'{text}' is not an address (expected e.g. X2.1 or R100)</source>
-      <translation>'{text}' bir adres değil (örneğin X2.1 veya R100 olmalı)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="15"/>
+        <source>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</source>
+        <translation>&apos;{text}&apos; bir adres değil (örneğin X2.1 veya R100 olmalı)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="17" />
-      <source>'{text}': unknown area '{area}' (use X, Y, F, G, R, A, D, T, C or K)</source>
-      <translation>'{text}': bilinmeyen alan '{area}' (X, Y, F, G, R, A, D, T, C veya K kullanın)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="17"/>
+        <source>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</source>
+        <translation>&apos;{text}&apos;: bilinmeyen alan &apos;{area}&apos; (X, Y, F, G, R, A, D, T, C veya K kullanın)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="19" />
-      <source>'{text}': byte number out of range for area {area} (0 to {last})</source>
-      <translation>'{text}': {area} alanı için byte numarası sınır dışı (0 ile {last} arası)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="19"/>
+        <source>&apos;{text}&apos;: byte number out of range for area {area} (0 to {last})</source>
+        <translation>&apos;{text}&apos;: {area} alanı için byte numarası sınır dışı (0 ile {last} arası)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="21" />
-      <source>'{text}': bit number must be 0 to 7</source>
-      <translation>'{text}': bit numarası 0 ile 7 arasında olmalı</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="21"/>
+        <source>&apos;{text}&apos;: bit number must be 0 to 7</source>
+        <translation>&apos;{text}&apos;: bit numarası 0 ile 7 arasında olmalı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="22" />
-      <source>'{text}': a bit address is needed here (e.g. {text}.0)</source>
-      <translation>'{text}': burada bit adresi gerekir (örneğin {text}.0)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="22"/>
+        <source>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</source>
+        <translation>&apos;{text}&apos;: burada bit adresi gerekir (örneğin {text}.0)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="24" />
-      <source>'{text}': a byte address is needed here, without a bit</source>
-      <translation>'{text}': burada bitsiz bir byte adresi gerekir</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="24"/>
+        <source>&apos;{text}&apos;: a byte address is needed here, without a bit</source>
+        <translation>&apos;{text}&apos;: burada bitsiz bir byte adresi gerekir</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="26" />
-      <source>the ladder section must begin with %@3</source>
-      <translation>ladder bölümü %@3 ile başlamalı</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="26"/>
+        <source>the ladder section must begin with %@3</source>
+        <translation>ladder bölümü %@3 ile başlamalı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="27" />
-      <source>the ladder section must end with a line '%'</source>
-      <translation>ladder bölümü '%' satırıyla bitmeli</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="27"/>
+        <source>the ladder section must end with a line &apos;%&apos;</source>
+        <translation>ladder bölümü &apos;%&apos; satırıyla bitmeli</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="28" />
-      <source>unexpected text '{text}'</source>
-      <translation>beklenmeyen metin '{text}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="28"/>
+        <source>unexpected text &apos;{text}&apos;</source>
+        <translation>beklenmeyen metin &apos;{text}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="29" />
-      <source>text outside any section: '{text}'</source>
-      <translation>hiçbir bölümün içinde olmayan metin: '{text}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="29"/>
+        <source>text outside any section: &apos;{text}&apos;</source>
+        <translation>hiçbir bölümün içinde olmayan metin: &apos;{text}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="30" />
-      <source>section %@{number} appears twice</source>
-      <translation>%@{number} bölümü iki kez var</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="30"/>
+        <source>section %@{number} appears twice</source>
+        <translation>%@{number} bölümü iki kez var</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="31" />
-      <source>unknown section %@{number} (FANUC sections are %@0 to %@5)</source>
-      <translation>bilinmeyen bölüm %@{number} (FANUC bölümleri %@0 ile %@5 arası)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="31"/>
+        <source>unknown section %@{number} (FANUC sections are %@0 to %@5)</source>
+        <translation>bilinmeyen bölüm %@{number} (FANUC bölümleri %@0 ile %@5 arası)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="33" />
-      <source>unknown instruction '{name}'</source>
-      <translation>bilinmeyen komut '{name}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="33"/>
+        <source>unknown instruction &apos;{name}&apos;</source>
+        <translation>bilinmeyen komut &apos;{name}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="34" />
-      <source>{name} needs an address</source>
-      <translation>{name} bir adres ister</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="34"/>
+        <source>{name} needs an address</source>
+        <translation>{name} bir adres ister</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="35" />
-      <source>{name} takes no operand, found '{text}'</source>
-      <translation>{name} operand almaz, '{text}' bulundu</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="35"/>
+        <source>{name} takes no operand, found &apos;{text}&apos;</source>
+        <translation>{name} operand almaz, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="36" />
-      <source>{name} needs {expected} parameters, found {found}</source>
-      <translation>{name} {expected} parametre ister, {found} bulundu</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="36"/>
+        <source>{name} needs {expected} parameters, found {found}</source>
+        <translation>{name} {expected} parametre ister, {found} bulundu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="37" />
-      <source>{name}: parameter {index} ({param}) must be a number, found '{text}'</source>
-      <translation>{name}: {index}. parametre ({param}) sayı olmalı, '{text}' bulundu</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="37"/>
+        <source>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</source>
+        <translation>{name}: {index}. parametre ({param}) sayı olmalı, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="39" />
-      <source>{name}: parameter {index} ({param}) must be an address, found '{text}'</source>
-      <translation>{name}: {index}. parametre ({param}) adres olmalı, '{text}' bulundu</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="39"/>
+        <source>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</source>
+        <translation>{name}: {index}. parametre ({param}) adres olmalı, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="41" />
-      <source>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</source>
-      <translation>{name}: {index}. parametre ({param}) {lo} ile {hi} arasında olmalı, {value} bulundu</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="41"/>
+        <source>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</source>
+        <translation>{name}: {index}. parametre ({param}) {lo} ile {hi} arasında olmalı, {value} bulundu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="45" />
-      <source>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</source>
-      <translation>{name}: {index}. parametre ({param}) şunlardan biri olmalı: {choices}; {value} bulundu</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="45"/>
+        <source>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</source>
+        <translation>{name}: {index}. parametre ({param}) şunlardan biri olmalı: {choices}; {value} bulundu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="49" />
-      <source>{name}: parameter {index} ({param}) must be up to 4 binary digits, found '{text}'</source>
-      <translation>{name}: {index}. parametre ({param}) en çok 4 ikili hane olmalı, '{text}' bulundu</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="49"/>
+        <source>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</source>
+        <translation>{name}: {index}. parametre ({param}) en çok 4 ikili hane olmalı, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="53" />
-      <source>no functional instruction has the number SUB {number}</source>
-      <translation>SUB {number} numaralı fonksiyon yok</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="53"/>
+        <source>no functional instruction has the number SUB {number}</source>
+        <translation>SUB {number} numaralı fonksiyon yok</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="55" />
-      <source>a parameter line '{text}' without a SUB instruction before it</source>
-      <translation>önünde SUB komutu olmayan parametre satırı '{text}'</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="55"/>
+        <source>a parameter line &apos;{text}&apos; without a SUB instruction before it</source>
+        <translation>önünde SUB komutu olmayan parametre satırı &apos;{text}&apos;</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="57" />
-      <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
-      <translation>dosya ne UTF-8 ne de Türkçe Windows (cp1254) metni</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="57"/>
+        <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
+        <translation>dosya ne UTF-8 ne de Türkçe Windows (cp1254) metni</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="59" />
-      <source>syntax error at '{text}'</source>
-      <translation>'{text}' yerinde yazım hatası</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="59"/>
+        <source>syntax error at &apos;{text}&apos;</source>
+        <translation>&apos;{text}&apos; yerinde yazım hatası</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="60" />
-      <source>open circuit: this element is not connected to the right side</source>
-      <translation>açık devre: bu eleman sağ tarafa bağlı değil</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="60"/>
+        <source>open circuit: this element is not connected to the right side</source>
+        <translation>açık devre: bu eleman sağ tarafa bağlı değil</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="62" />
-      <source>element not connected to the left rail</source>
-      <translation>eleman sol baraya bağlı değil</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="62"/>
+        <source>element not connected to the left rail</source>
+        <translation>eleman sol baraya bağlı değil</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="63" />
-      <source>a coil must be at the right end of the network</source>
-      <translation>çıkış (bobin) devrenin sağ ucunda olmalı</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
+        <source>a coil must be at the right end of the network</source>
+        <translation>çıkış (bobin) devrenin sağ ucunda olmalı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="64" />
-      <source>a coil cannot sit straight on the left rail</source>
-      <translation>çıkış (bobin) doğrudan sol baraya bağlanamaz</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="64"/>
+        <source>a coil cannot sit straight on the left rail</source>
+        <translation>çıkış (bobin) doğrudan sol baraya bağlanamaz</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="65" />
-      <source>bridge circuit: a vertical link joins two branches in the middle</source>
-      <translation>köprü devre: dikey çizgi iki kolu ortadan birleştiriyor</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="65"/>
+        <source>bridge circuit: a vertical link joins two branches in the middle</source>
+        <translation>köprü devre: dikey çizgi iki kolu ortadan birleştiriyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="67" />
-      <source>short circuit: a wire bypasses the element</source>
-      <translation>kısa devre: bir çizgi elemanı atlıyor</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
+        <source>short circuit: a wire bypasses the element</source>
+        <translation>kısa devre: bir çizgi elemanı atlıyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="68" />
-      <source>the logic needs more than 8 stack levels (ST8)</source>
-      <translation>mantık 8'den fazla yığın seviyesi (ST8) gerektiriyor</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
+        <source>the logic needs more than 8 stack levels (ST8)</source>
+        <translation>mantık 8&apos;den fazla yığın seviyesi (ST8) gerektiriyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="69" />
-      <source>power would flow right to left here; ladder flows left to right only</source>
-      <translation>burada enerji sağdan sola akardı; ladder yalnız soldan sağa akar</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="69"/>
+        <source>power would flow right to left here; ladder flows left to right only</source>
+        <translation>burada enerji sağdan sola akardı; ladder yalnız soldan sağa akar</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="71" />
-      <source>the network has no coil or function</source>
-      <translation>devrede çıkış veya fonksiyon yok</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
+        <source>the network has no coil or function</source>
+        <translation>devrede çıkış veya fonksiyon yok</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="72" />
-      <source>{name} needs its {count} control inputs connected</source>
-      <translation>{name} fonksiyonunun {count} kontrol girişi bağlanmalı</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
+        <source>{name} needs its {count} control inputs connected</source>
+        <translation>{name} fonksiyonunun {count} kontrol girişi bağlanmalı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="73" />
-      <source>this element has no address yet</source>
-      <translation>bu elemanın henüz adresi yok</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="73"/>
+        <source>this element has no address yet</source>
+        <translation>bu elemanın henüz adresi yok</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="74" />
-      <source>coils hang on different points of the logic; join them to one point</source>
-      <translation>çıkışlar mantığın farklı noktalarına bağlı; tek noktaya bağlayın</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="74"/>
+        <source>coils hang on different points of the logic; join them to one point</source>
+        <translation>çıkışlar mantığın farklı noktalarına bağlı; tek noktaya bağlayın</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="76" />
-      <source>only coils may follow the output of {name}</source>
-      <translation>{name} çıkışından sonra yalnız çıkış (bobin) gelebilir</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
+        <source>only coils may follow the output of {name}</source>
+        <translation>{name} çıkışından sonra yalnız çıkış (bobin) gelebilir</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="77" />
-      <source>{name}: {problem}</source>
-      <translation>{name}: {problem}</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
+        <source>{name}: {problem}</source>
+        <translation>{name}: {problem}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="78" />
-      <source>cell ({row}, {col}) is outside the grid</source>
-      <translation>({row}, {col}) hücresi ızgaranın dışında</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="78"/>
+        <source>cell ({row}, {col}) is outside the grid</source>
+        <translation>({row}, {col}) hücresi ızgaranın dışında</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="79" />
-      <source>only coils go in the coil column (cell ({row}, {col}))</source>
-      <translation>çıkış sütununa yalnız çıkış konur (({row}, {col}) hücresi)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
+        <source>only coils go in the coil column (cell ({row}, {col}))</source>
+        <translation>çıkış sütununa yalnız çıkış konur (({row}, {col}) hücresi)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="81" />
-      <source>{name} does not fit here: a box needs two contact columns</source>
-      <translation>{name} buraya sığmıyor: fonksiyon kutusu iki kontak sütunu ister</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="81"/>
+        <source>{name} does not fit here: a box needs two contact columns</source>
+        <translation>{name} buraya sığmıyor: fonksiyon kutusu iki kontak sütunu ister</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="83" />
-      <source>there is no suitable element at cell ({row}, {col})</source>
-      <translation>({row}, {col}) hücresinde uygun eleman yok</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
+        <source>there is no suitable element at cell ({row}, {col})</source>
+        <translation>({row}, {col}) hücresinde uygun eleman yok</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="85" />
-      <source>a line must be horizontal or vertical</source>
-      <translation>çizgi yatay veya dikey olmalı</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="85"/>
+        <source>a line must be horizontal or vertical</source>
+        <translation>çizgi yatay veya dikey olmalı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="86" />
-      <source>the clipboard does not hold ladder elements</source>
-      <translation>panoda ladder elemanı yok</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="86"/>
+        <source>the clipboard does not hold ladder elements</source>
+        <translation>panoda ladder elemanı yok</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="87" />
-      <source>{name} with nothing pushed on the stack</source>
-      <translation>yığına hiçbir şey itilmeden {name}</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
+        <source>{name} with nothing pushed on the stack</source>
+        <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="88" />
-      <source>{name} writes to {address}, an input area</source>
-      <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="88"/>
+        <source>{name} writes to {address}, an input area</source>
+        <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="89" />
-      <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
-      <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
+        <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
+        <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="91" />
-      <source>JMP without a matching JMPE</source>
-      <translation>eşi olan JMPE olmadan JMP</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
+        <source>JMP without a matching JMPE</source>
+        <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="92" />
-      <source>JMPE without a JMP before it</source>
-      <translation>önünde JMP olmadan JMPE</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
+        <source>JMPE without a JMP before it</source>
+        <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="93" />
-      <source>COM without a matching COME</source>
-      <translation>eşi olan COME olmadan COM</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
+        <source>COM without a matching COME</source>
+        <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="94" />
-      <source>COME without a COM before it</source>
-      <translation>önünde COM olmadan COME</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="94"/>
+        <source>COME without a COM before it</source>
+        <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="95" />
-      <source>{name} without a logic result before it (start with RD)</source>
-      <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
+        <source>{name} without a logic result before it (start with RD)</source>
+        <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="97" />
-      <source>coil {address} is written more than once</source>
-      <translation>{address} çıkışı birden fazla yazılıyor</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
+        <source>coil {address} is written more than once</source>
+        <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="98" />
-      <source>logic at the end of the program is not written to any coil</source>
-      <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
+        <source>logic at the end of the program is not written to any coil</source>
+        <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="100" />
-      <source>not a LadderWorks binary: {reason}</source>
-      <translation>LadderWorks binary dosyası değil: {reason}</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="100"/>
+        <source>not a LadderWorks binary: {reason}</source>
+        <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="101" />
-      <source>not an alarm message line: '{text}' (expected 'NNN text' or 'A00.0 text')</source>
-      <translation>alarm mesajı satırı değil: '{text}' ('NNN metin' veya 'A00.0 metin' olmalı)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
+        <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
+        <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="105" />
-      <source>alarm number {number} is out of range (000 to 799)</source>
-      <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
+        <source>alarm number {number} is out of range (000 to 799)</source>
+        <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="107" />
-      <source>'{text}' is not an alarm bit (A0.0 to A99.7)</source>
-      <translation>'{text}' bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="107"/>
+        <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
+        <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="108" />
-      <source>message {number} appears again; the one on line {first} is used</source>
-      <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
+        <source>message {number} appears again; the one on line {first} is used</source>
+        <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="110" />
-      <source>message {number} has no text</source>
-      <translation>{number} mesajının metni yok</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="110"/>
+        <source>message {number} has no text</source>
+        <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/diagnostic_texts.py" line="111" />
-      <source>{name} is not implemented in the simulator yet</source>
-      <translation>{name} simülatörde henüz yok</translation>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <source>{name} is not implemented in the simulator yet</source>
+        <translation>{name} simülatörde henüz yok</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>ErrorList</name>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="16" />
-      <source>network {0}, row {1}, column {2}</source>
-      <translation>devre {0}, satır {1}, sütun {2}</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="16"/>
+        <source>network {0}, row {1}, column {2}</source>
+        <translation>devre {0}, satır {1}, sütun {2}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="20" />
-      <source>network {0}</source>
-      <translation>devre {0}</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="20"/>
+        <source>network {0}</source>
+        <translation>devre {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="23" />
-      <source>line {0}, column {1}</source>
-      <translation>satır {0}, sütun {1}</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="23"/>
+        <source>line {0}, column {1}</source>
+        <translation>satır {0}, sütun {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="59" />
-      <source>Error</source>
-      <translation>Hata</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="59"/>
+        <source>Error</source>
+        <translation>Hata</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="60" />
-      <source>Warning</source>
-      <translation>Uyarı</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="60"/>
+        <source>Warning</source>
+        <translation>Uyarı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="74" />
-      <source>Errors</source>
-      <translation>Hatalar</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="74"/>
+        <source>Errors</source>
+        <translation>Hatalar</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="76" />
-      <source>Kind</source>
-      <translation>Tür</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="76"/>
+        <source>Kind</source>
+        <translation>Tür</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="77" />
-      <source>Where</source>
-      <translation>Yer</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="77"/>
+        <source>Where</source>
+        <translation>Yer</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/error_list.py" line="78" />
-      <source>Message</source>
-      <translation>Mesaj</translation>
+        <location filename="../ladderworks/gui/error_list.py" line="78"/>
+        <source>Message</source>
+        <translation>Mesaj</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>ForceList</name>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="58" />
-      <source>Forced and passive</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/force_list.py" line="58"/>
+        <source>Forced and passive</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="60" />
-      <source>Kind</source>
-      <translation>Tür</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
+        <source>Kind</source>
+        <translation>Tür</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="60" />
-      <source>Signal / element</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
+        <source>Signal / element</source>
+        <translation>Tür</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="61" />
-      <source>Value</source>
-      <translation>Değer</translation>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <source>Value</source>
+        <translation>Değer</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="62" />
-      <source>Release all</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
+        <source>Release all</source>
+        <translation>Değer</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="68" />
-      <source>FORCED</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/force_list.py" line="68"/>
+        <source>FORCED</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="75" />
-      <source>network {0}, line {1}: {2}</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/force_list.py" line="75"/>
+        <source>network {0}, line {1}: {2}</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="77" />
-      <source>PASSIVE</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/force_list.py" line="77"/>
+        <source>PASSIVE</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="86" />
-      <source>Release</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/force_list.py" line="86"/>
+        <source>Release</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/force_list.py" line="91" />
-      <source>{0} forced, {1} passive</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <source>{0} forced, {1} passive</source>
+        <translation type="unfinished"></translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>FunctionDialog</name>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="68" />
-      <source>one of {0}</source>
-      <translation>şunlardan biri: {0}</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="68"/>
+        <source>one of {0}</source>
+        <translation>şunlardan biri: {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="70" />
-      <source>{0} to {1}</source>
-      <translation>{0} ile {1} arası</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
+        <source>{0} to {1}</source>
+        <translation>{0} ile {1} arası</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="74" />
-      <source>byte address ({0} bytes)</source>
-      <translation>byte adresi ({0} byte)</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="74"/>
+        <source>byte address ({0} bytes)</source>
+        <translation>byte adresi ({0} byte)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="76" />
-      <source>byte address</source>
-      <translation>byte adresi</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="76"/>
+        <source>byte address</source>
+        <translation>byte adresi</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="78" />
-      <source>constant or byte address</source>
-      <translation>sabit veya byte adresi</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="78"/>
+        <source>constant or byte address</source>
+        <translation>sabit veya byte adresi</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="80" />
-      <source>up to 4 binary digits, e.g. 1111</source>
-      <translation>en çok 4 ikili hane, örneğin 1111</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="80"/>
+        <source>up to 4 binary digits, e.g. 1111</source>
+        <translation>en çok 4 ikili hane, örneğin 1111</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="81" />
-      <source>values separated by spaces</source>
-      <translation>boşlukla ayrılmış değerler</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="81"/>
+        <source>values separated by spaces</source>
+        <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="163" />
-      <source>{0} — {1}: fill in the parameters</source>
-      <translation>{0} — {1}: parametreleri girin</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="163"/>
+        <source>{0} — {1}: fill in the parameters</source>
+        <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="166" />
-      <source>Comment (shown with the box, written after // in the file):</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/function_dialog.py" line="166"/>
+        <source>Comment (shown with the box, written after // in the file):</source>
+        <translation>şunlardan biri: {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="169" />
-      <source>Parameter</source>
-      <translation>Parametre</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="169"/>
+        <source>Parameter</source>
+        <translation>Parametre</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="170" />
-      <source>Value</source>
-      <translation>Değer</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="170"/>
+        <source>Value</source>
+        <translation>Değer</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="171" />
-      <source>Allowed</source>
-      <translation>İzin verilen</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="171"/>
+        <source>Allowed</source>
+        <translation>İzin verilen</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="197" />
-      <source>The parameters are not valid</source>
-      <translation>Parametreler geçersiz</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="197"/>
+        <source>The parameters are not valid</source>
+        <translation>Parametreler geçersiz</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>LadderEditor</name>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="317" />
-      <location filename="../ladderworks/gui/editor/view.py" line="351" />
-      <location filename="../ladderworks/gui/editor/view.py" line="625" />
-      <source>NOT</source>
-      <translation>DEĞİL</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="317"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="351"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
+        <source>NOT</source>
+        <translation>DEĞİL</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="328" />
-      <source>The comment tool works on an empty row only</source>
-      <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="328"/>
+        <source>The comment tool works on an empty row only</source>
+        <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="332" />
-      <location filename="../ladderworks/gui/editor/view.py" line="607" />
-      <location filename="../ladderworks/gui/editor/view.py" line="619" />
-      <source>Delete</source>
-      <translation>Sil</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="332"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="607"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="619"/>
+        <source>Delete</source>
+        <translation>Sil</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="341" />
-      <location filename="../ladderworks/gui/editor/view.py" line="636" />
-      <location filename="../ladderworks/gui/editor/view.py" line="645" />
-      <source>Insert row</source>
-      <translation>Satır gir</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="341"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="636"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="645"/>
+        <source>Insert row</source>
+        <translation>Satır gir</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="356" />
-      <source>Place contact</source>
-      <translation>Kontak koy</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="356"/>
+        <source>Place contact</source>
+        <translation>Kontak koy</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="358" />
-      <source>Place coil</source>
-      <translation>Çıkış koy</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="358"/>
+        <source>Place coil</source>
+        <translation>Çıkış koy</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="367" />
-      <source>Select a contact or a coil for the OR tool</source>
-      <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="367"/>
+        <source>Select a contact or a coil for the OR tool</source>
+        <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="372" />
-      <source>OR</source>
-      <translation>VEYA</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="372"/>
+        <source>OR</source>
+        <translation>VEYA</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="383" />
-      <source>Line: click the second point</source>
-      <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
+        <source>Line: click the second point</source>
+        <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="393" />
-      <source>Line</source>
-      <translation>Çizgi</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="393"/>
+        <source>Line</source>
+        <translation>Çizgi</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="428" />
-      <source>Place {0}</source>
-      <translation>{0} koy</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="428"/>
+        <source>Place {0}</source>
+        <translation>{0} koy</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="432" />
-      <location filename="../ladderworks/gui/editor/view.py" line="436" />
-      <source>Parameters of {0}</source>
-      <translation>{0} parametreleri</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="432"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
+        <source>Parameters of {0}</source>
+        <translation>{0} parametreleri</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="467" />
-      <source>Address, e.g. X2.1 (// comment)</source>
-      <translation>Adres, örneğin X2.1 (// yorum)</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="467"/>
+        <source>Address, e.g. X2.1 (// comment)</source>
+        <translation>Adres, örneğin X2.1 (// yorum)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="442" />
-      <location filename="../ladderworks/gui/editor/view.py" line="478" />
-      <location filename="../ladderworks/gui/editor/view.py" line="547" />
-      <location filename="../ladderworks/gui/editor/view.py" line="568" />
-      <source>Comment</source>
-      <translation>Yorum</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="442"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="478"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="547"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="568"/>
+        <source>Comment</source>
+        <translation>Yorum</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="537" />
-      <source>Address {0}</source>
-      <translation>Adres {0}</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="537"/>
+        <source>Address {0}</source>
+        <translation>Adres {0}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="541" />
-      <source>Address</source>
-      <translation>Adres</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="541"/>
+        <source>Address</source>
+        <translation>Adres</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="663" />
-      <source>Cut</source>
-      <translation>Kes</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
+        <source>Cut</source>
+        <translation>Kes</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="675" />
-      <source>Paste</source>
-      <translation>Yapıştır</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="675"/>
+        <source>Paste</source>
+        <translation>Yapıştır</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="684" />
-      <source>Delete network</source>
-      <translation>Devreyi sil</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="684"/>
+        <source>Delete network</source>
+        <translation>Devreyi sil</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/editor/view.py" line="761" />
-      <source>N{0} row {1} col {2}</source>
-      <translation>D{0} satır {1} sütun {2}</translation>
+        <location filename="../ladderworks/gui/editor/view.py" line="761"/>
+        <source>N{0} row {1} col {2}</source>
+        <translation>D{0} satır {1} sütun {2}</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="117" />
-      <source>&amp;New</source>
-      <translation>&amp;Yeni</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="117"/>
+        <source>&amp;New</source>
+        <translation>&amp;Yeni</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="118" />
-      <source>&amp;Open...</source>
-      <translation>&amp;Aç...</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="118"/>
+        <source>&amp;Open...</source>
+        <translation>&amp;Aç...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="119" />
-      <source>&amp;Save</source>
-      <translation>&amp;Kaydet</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="119"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Kaydet</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="122" />
-      <source>Save &amp;As...</source>
-      <translation>&amp;Farklı kaydet...</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="122"/>
+        <source>Save &amp;As...</source>
+        <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="128" />
-      <source>&amp;Import .MOD...</source>
-      <translation>.MOD &amp;içe aktar...</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="128"/>
+        <source>&amp;Import .MOD...</source>
+        <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="133" />
-      <source>&amp;Export .MOD...</source>
-      <translation>.MOD &amp;dışa aktar...</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="133"/>
+        <source>&amp;Export .MOD...</source>
+        <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="138" />
-      <source>Clear the list</source>
-      <translation>Listeyi temizle</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="138"/>
+        <source>Clear the list</source>
+        <translation>Listeyi temizle</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="141" />
-      <source>&amp;Quit</source>
-      <translation>Çı&amp;kış</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="141"/>
+        <source>&amp;Quit</source>
+        <translation>Çı&amp;kış</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="146" />
-      <source>&amp;Undo</source>
-      <translation>&amp;Geri al</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Geri al</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="151" />
-      <source>&amp;Redo</source>
-      <translation>&amp;Yinele</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="151"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Yinele</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="152" />
-      <source>Cu&amp;t</source>
-      <translation>&amp;Kes</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="152"/>
+        <source>Cu&amp;t</source>
+        <translation>&amp;Kes</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="153" />
-      <source>&amp;Copy</source>
-      <translation>K&amp;opyala</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="153"/>
+        <source>&amp;Copy</source>
+        <translation>K&amp;opyala</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="154" />
-      <source>&amp;Paste</source>
-      <translation>&amp;Yapıştır</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="154"/>
+        <source>&amp;Paste</source>
+        <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="155" />
-      <source>&amp;Delete</source>
-      <translation>&amp;Sil</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="155"/>
+        <source>&amp;Delete</source>
+        <translation>&amp;Sil</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="158" />
-      <source>&amp;Edit element</source>
-      <translation>Elemanı &amp;düzenle</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="158"/>
+        <source>&amp;Edit element</source>
+        <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="163" />
-      <source>NOT (invert)</source>
-      <translation>DEĞİL (ters çevir)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <source>NOT (invert)</source>
+        <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="170" />
-      <source>OR (add parallel)</source>
-      <translation>VEYA (paralel ekle)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
+        <source>OR (add parallel)</source>
+        <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="177" />
-      <source>Insert row before</source>
-      <translation>Önceye satır gir</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="177"/>
+        <source>Insert row before</source>
+        <translation>Önceye satır gir</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="184" />
-      <source>Insert row after</source>
-      <translation>Sonraya satır gir</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="184"/>
+        <source>Insert row after</source>
+        <translation>Sonraya satır gir</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="189" />
-      <source>Zoom &amp;in</source>
-      <translation>&amp;Yakınlaştır</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <source>Zoom &amp;in</source>
+        <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="190" />
-      <source>Zoom &amp;out</source>
-      <translation>&amp;Uzaklaştır</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="190"/>
+        <source>Zoom &amp;out</source>
+        <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="193" />
-      <source>&amp;Normal size</source>
-      <translation>&amp;Normal boyut</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="193"/>
+        <source>&amp;Normal size</source>
+        <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="199" />
-      <source>Show as &amp;ladder</source>
-      <translation>&amp;Ladder olarak göster</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <source>Show as &amp;ladder</source>
+        <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="205" />
-      <source>Show as &amp;text</source>
-      <translation>&amp;Metin olarak göster</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="205"/>
+        <source>Show as &amp;text</source>
+        <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="209" />
-      <source>C&amp;heck</source>
-      <translation>&amp;Kontrol et</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
+        <source>C&amp;heck</source>
+        <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="212" />
-      <source>&amp;Compile</source>
-      <translation>&amp;Derle</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="212"/>
+        <source>&amp;Compile</source>
+        <translation>&amp;Derle</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="219" />
-      <source>&amp;About LadderWorks</source>
-      <translation>LadderWorks &amp;hakkında</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="219"/>
+        <source>&amp;About LadderWorks</source>
+        <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="256" />
-      <source>&amp;File</source>
-      <translation>&amp;Dosya</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="256"/>
+        <source>&amp;File</source>
+        <translation>&amp;Dosya</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="260" />
-      <source>Recent files</source>
-      <translation>Son dosyalar</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="260"/>
+        <source>Recent files</source>
+        <translation>Son dosyalar</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="277" />
-      <source>&amp;Edit</source>
-      <translation>Dü&amp;zen</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="277"/>
+        <source>&amp;Edit</source>
+        <translation>Dü&amp;zen</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="296" />
-      <source>&amp;View</source>
-      <translation>&amp;Görünüm</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="296"/>
+        <source>&amp;View</source>
+        <translation>&amp;Görünüm</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="316" />
-      <source>&amp;PLC</source>
-      <translation>&amp;PLC</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="316"/>
+        <source>&amp;PLC</source>
+        <translation>&amp;PLC</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="320" />
-      <source>&amp;Tools</source>
-      <translation>&amp;Takımlar</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="320"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Takımlar</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="326" />
-      <source>&amp;Language</source>
-      <translation>D&amp;il</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="326"/>
+        <source>&amp;Language</source>
+        <translation>D&amp;il</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="329" />
-      <source>&amp;Help</source>
-      <translation>&amp;Yardım</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="329"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Yardım</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="332" />
-      <source>Main toolbar</source>
-      <translation>Ana araç çubuğu</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="332"/>
+        <source>Main toolbar</source>
+        <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="436" />
-      <source>Untitled</source>
-      <translation>Adsız</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="436"/>
+        <source>Untitled</source>
+        <translation>Adsız</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="461" />
-      <source>Unsaved changes</source>
-      <translation>Kaydedilmemiş değişiklikler</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="461"/>
+        <source>Unsaved changes</source>
+        <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="462" />
-      <source>The program has unsaved changes. Save them?</source>
-      <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="462"/>
+        <source>The program has unsaved changes. Save them?</source>
+        <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="489" />
-      <source>Open</source>
-      <translation>Aç</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="489"/>
+        <source>Open</source>
+        <translation>Aç</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="490" />
-      <source>Cannot read {0}: {1}</source>
-      <translation>{0} okunamıyor: {1}</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="490"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="515" />
-      <source>The file has errors: it is shown as text</source>
-      <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="515"/>
+        <source>The file has errors: it is shown as text</source>
+        <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="525" />
-      <source>Open program</source>
-      <translation>Program aç</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="525"/>
+        <source>Open program</source>
+        <translation>Program aç</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="527" />
-      <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
-      <translation>Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="527"/>
+        <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
+        <translation>Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="558" />
-      <location filename="../ladderworks/gui/main_window.py" line="573" />
-      <location filename="../ladderworks/gui/main_window.py" line="585" />
-      <source>Save</source>
-      <translation>Kaydet</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="558"/>
+        <location filename="../ladderworks/gui/main_window.py" line="573"/>
+        <location filename="../ladderworks/gui/main_window.py" line="585"/>
+        <source>Save</source>
+        <translation>Kaydet</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="559" />
-      <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
-      <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster'i kullanın veya başka bir adla kaydedin.</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="559"/>
+        <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
+        <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="574" />
-      <source>The ladder cannot be written as a program; see the error list.</source>
-      <translation>Ladder programa çevrilemiyor; hata listesine bakın.</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="574"/>
+        <source>The ladder cannot be written as a program; see the error list.</source>
+        <translation>Ladder programa çevrilemiyor; hata listesine bakın.</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="586" />
-      <source>Cannot write {0}: {1}</source>
-      <translation>{0} yazılamıyor: {1}</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="586"/>
+        <source>Cannot write {0}: {1}</source>
+        <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="596" />
-      <source>Saved {0}</source>
-      <translation>{0} kaydedildi</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="596"/>
+        <source>Saved {0}</source>
+        <translation>{0} kaydedildi</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="604" />
-      <source>Save program</source>
-      <translation>Programı kaydet</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="604"/>
+        <source>Save program</source>
+        <translation>Programı kaydet</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="606" />
-      <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
-      <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="606"/>
+        <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
+        <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="616" />
-      <source>Import .MOD</source>
-      <translation>.MOD içe aktar</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="616"/>
+        <source>Import .MOD</source>
+        <translation>.MOD içe aktar</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="618" />
-      <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
-      <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="618"/>
+        <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
+        <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="637" />
-      <source>Export .MOD</source>
-      <translation>.MOD dışa aktar</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="637"/>
+        <source>Export .MOD</source>
+        <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="639" />
-      <source>Mnemonic programs (*.MOD);;All files (*)</source>
-      <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="639"/>
+        <source>Mnemonic programs (*.MOD);;All files (*)</source>
+        <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="650" />
-      <source>Exported {0}</source>
-      <translation>{0} dışa aktarıldı</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="650"/>
+        <source>Exported {0}</source>
+        <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="722" />
-      <source>Check: {0} error(s)</source>
-      <translation>Kontrol: {0} hata</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="722"/>
+        <source>Check: {0} error(s)</source>
+        <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="741" />
-      <source>Compile failed: {0} error(s)</source>
-      <translation>Derleme başarısız: {0} hata</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="741"/>
+        <source>Compile failed: {0} error(s)</source>
+        <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="747" />
-      <source>Compile finished: {0} bytes</source>
-      <translation>Derleme bitti (compile finish): {0} byte</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="747"/>
+        <source>Compile finished: {0} bytes</source>
+        <translation>Derleme bitti (compile finish): {0} byte</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="768" />
-      <source>About LadderWorks</source>
-      <translation>LadderWorks hakkında</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="768"/>
+        <source>About LadderWorks</source>
+        <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/main_window.py" line="769" />
-      <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
-      <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="769"/>
+        <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
+        <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>Param</name>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="29" />
-      <source>Timer number</source>
-      <translation>Zamanlayıcı numarası</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="29"/>
+        <source>Timer number</source>
+        <translation>Zamanlayıcı numarası</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="30" />
-      <source>Preset</source>
-      <translation>Ayar değeri</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="30"/>
+        <source>Preset</source>
+        <translation>Ayar değeri</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="31" />
-      <source>Accuracy</source>
-      <translation>Hassasiyet</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="31"/>
+        <source>Accuracy</source>
+        <translation>Hassasiyet</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="32" />
-      <source>Timer/counter register</source>
-      <translation>Zamanlayıcı/sayıcı kaydı</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <source>Timer/counter register</source>
+        <translation>Zamanlayıcı/sayıcı kaydı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="33" />
-      <source>Code signal</source>
-      <translation>Kod sinyali</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
+        <source>Code signal</source>
+        <translation>Kod sinyali</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="34" />
-      <source>Decode specification</source>
-      <translation>Kod çözme tanımı</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <source>Decode specification</source>
+        <translation>Kod çözme tanımı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="35" />
-      <source>Format</source>
-      <translation>Format</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
+        <source>Format</source>
+        <translation>Format</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="36" />
-      <source>First number</source>
-      <translation>İlk sayı</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
+        <source>First number</source>
+        <translation>İlk sayı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="37" />
-      <source>Result</source>
-      <translation>Sonuç</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
+        <source>Result</source>
+        <translation>Sonuç</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="38" />
-      <source>Counter number</source>
-      <translation>Sayıcı numarası</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <source>Counter number</source>
+        <translation>Sayıcı numarası</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="39" />
-      <source>Number of positions</source>
-      <translation>Pozisyon sayısı</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <source>Number of positions</source>
+        <translation>Pozisyon sayısı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="40" />
-      <source>Current position</source>
-      <translation>Mevcut pozisyon</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <source>Current position</source>
+        <translation>Mevcut pozisyon</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="41" />
-      <source>Target position</source>
-      <translation>Hedef pozisyon</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
+        <source>Target position</source>
+        <translation>Hedef pozisyon</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="42" />
-      <source>Table size</source>
-      <translation>Tablo boyu</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <source>Table size</source>
+        <translation>Tablo boyu</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="43" />
-      <source>Index</source>
-      <translation>İndeks</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
+        <source>Index</source>
+        <translation>İndeks</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="44" />
-      <source>Output</source>
-      <translation>Çıkış</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <source>Output</source>
+        <translation>Çıkış</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="45" />
-      <source>Table values</source>
-      <translation>Tablo değerleri</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <source>Table values</source>
+        <translation>Tablo değerleri</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="46" />
-      <source>Input</source>
-      <translation>Giriş</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <source>Input</source>
+        <translation>Giriş</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="47" />
-      <source>High 4-bit mask</source>
-      <translation>Üst 4 bit maskesi</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <source>High 4-bit mask</source>
+        <translation>Üst 4 bit maskesi</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="48" />
-      <source>Low 4-bit mask</source>
-      <translation>Alt 4 bit maskesi</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <source>Low 4-bit mask</source>
+        <translation>Alt 4 bit maskesi</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="49" />
-      <source>OR data</source>
-      <translation>VEYA verisi</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
+        <source>OR data</source>
+        <translation>VEYA verisi</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="50" />
-      <source>Data</source>
-      <translation>Veri</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <source>Data</source>
+        <translation>Veri</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="51" />
-      <source>Number of coils</source>
-      <translation>Çıkış sayısı</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <source>Number of coils</source>
+        <translation>Çıkış sayısı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="52" />
-      <source>Input format (0 constant, 1 address)</source>
-      <translation>Giriş formatı (0 sabit, 1 adres)</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="52"/>
+        <source>Input format (0 constant, 1 address)</source>
+        <translation>Giriş formatı (0 sabit, 1 adres)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="53" />
-      <source>Compared data</source>
-      <translation>Karşılaştırılan veri</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <source>Compared data</source>
+        <translation>Karşılaştırılan veri</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="54" />
-      <source>Searched data</source>
-      <translation>Aranan veri</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
+        <source>Searched data</source>
+        <translation>Aranan veri</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="55" />
-      <source>Operand format (0 constant, 1 address)</source>
-      <translation>Operand formatı (0 sabit, 1 adres)</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
+        <source>Operand format (0 constant, 1 address)</source>
+        <translation>Operand formatı (0 sabit, 1 adres)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="57" />
-      <source>Operand A</source>
-      <translation>Operand A</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="57"/>
+        <source>Operand A</source>
+        <translation>Operand A</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="58" />
-      <source>Operand B</source>
-      <translation>Operand B</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
+        <source>Operand B</source>
+        <translation>Operand B</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/function_dialog.py" line="59" />
-      <source>Constant</source>
-      <translation>Sabit</translation>
+        <location filename="../ladderworks/gui/function_dialog.py" line="59"/>
+        <source>Constant</source>
+        <translation>Sabit</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>PlcControl</name>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="118" />
-      <source>PLC CONTROL SCREEN</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="118"/>
+        <source>PLC CONTROL SCREEN</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="120" />
-      <source>Open .MOD…</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="120"/>
+        <source>Open .MOD…</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="121" />
-      <source>Take the console's program</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="121"/>
+        <source>Take the console&apos;s program</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="122" />
-      <source>Compile</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="122"/>
+        <source>Compile</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="123" />
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="252" />
-      <source>START</source>
-      <translation type="unfinished">BAŞLAT</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="252"/>
+        <source>START</source>
+        <translation type="unfinished">BAŞLAT</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="124" />
-      <source>STOP</source>
-      <translation type="unfinished">DURDUR</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="124"/>
+        <source>STOP</source>
+        <translation type="unfinished">DURDUR</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="145" />
-      <source>Cannot read {0}: {1}</source>
-      <translation>{0} okunamıyor: {1}</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="145"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="149" />
-      <source>Opened {0}</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="149"/>
+        <source>Opened {0}</source>
+        <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="155" />
-      <source>Open mnemonic program</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
+        <source>Open mnemonic program</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="156" />
-      <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="164" />
-      <source>The console's program cannot be coded: see the error list</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="164"/>
+        <source>The console&apos;s program cannot be coded: see the error list</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="168" />
-      <source>Program taken from the console</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="168"/>
+        <source>Program taken from the console</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="202" />
-      <source>Compile failed: {0} error(s). {1}</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="202"/>
+        <source>Compile failed: {0} error(s). {1}</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="214" />
-      <source>Converting…</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="214"/>
+        <source>Converting…</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="239" />
-      <source>compile finish — {0} networks, {1} bytes</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="239"/>
+        <source>compile finish — {0} networks, {1} bytes</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="242" />
-      <source>({0} warning(s))</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="242"/>
+        <source>({0} warning(s))</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="253" />
-      <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="253"/>
+        <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="260" />
-      <source>Compile a program first</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="260"/>
+        <source>Compile a program first</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="280" />
-      <source>NO PROGRAM</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="280"/>
+        <source>NO PROGRAM</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="283" />
-      <source>RUNNING</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="283"/>
+        <source>RUNNING</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="286" />
-      <source>STOPPED</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <source>STOPPED</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/plc_control.py" line="289" />
-      <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="289"/>
+        <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
+        <translation type="unfinished"></translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>PlcDiagnostic</name>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="138" />
-      <source>PLC DIAGNOSTIC</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="138"/>
+        <source>PLC DIAGNOSTIC</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="139" />
-      <source>Address, e.g. R102.0</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="139"/>
+        <source>Address, e.g. R102.0</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="140" />
-      <source>Find</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="140"/>
+        <source>Find</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="141" />
-      <source>Where written</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="141"/>
+        <source>Where written</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="142" />
-      <source>Follow</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="142"/>
+        <source>Follow</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="143" />
-      <source>Keep the searched address in view while the PLC runs</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="143"/>
+        <source>Keep the searched address in view while the PLC runs</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="185" />
-      <source>No program loaded</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="185"/>
+        <source>No program loaded</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="187" />
-      <source>RUNNING — scan {0}</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="187"/>
+        <source>RUNNING — scan {0}</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="189" />
-      <source>STOPPED</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="189"/>
+        <source>STOPPED</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="199" />
-      <source>'{0}' is not an address</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="199"/>
+        <source>&apos;{0}&apos; is not an address</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="243" />
-      <source>'{0}' is not in the program</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="243"/>
+        <source>&apos;{0}&apos; is not in the program</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="253" />
-      <source>No coil writes {0}</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="253"/>
+        <source>No coil writes {0}</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/diagnostic.py" line="262" />
-      <source>{0} of {1}: network {2}</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="262"/>
+        <source>{0} of {1}: network {2}</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/power_overlay.py" line="97" />
-      <source>PASSIVE</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="97"/>
+        <source>PASSIVE</source>
+        <translation type="unfinished"></translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>PlcDocks</name>
     <message>
-      <location filename="../ladderworks/gui/docks/dock_menus.py" line="55" />
-      <source>'{0}': the width after ':' must be 1, 2 or 4</source>
-      <translation>'{0}': ':' işaretinden sonraki genişlik 1, 2 veya 4 olmalı</translation>
+        <location filename="../ladderworks/gui/docks/dock_menus.py" line="55"/>
+        <source>&apos;{0}&apos;: the width after &apos;:&apos; must be 1, 2 or 4</source>
+        <translation>&apos;{0}&apos;: &apos;:&apos; işaretinden sonraki genişlik 1, 2 veya 4 olmalı</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/dock_menus.py" line="58" />
-      <source>'{0}': a bit address takes no width</source>
-      <translation>'{0}': bit adresine genişlik verilmez</translation>
+        <location filename="../ladderworks/gui/docks/dock_menus.py" line="58"/>
+        <source>&apos;{0}&apos;: a bit address takes no width</source>
+        <translation>&apos;{0}&apos;: bit adresine genişlik verilmez</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>PlcOnline</name>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="58" />
-      <source>On-line mode</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="58"/>
+        <source>On-line mode</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="59" />
-      <source>Make passive (disable)</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="59"/>
+        <source>Make passive (disable)</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="60" />
-      <source>Make active again</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
+        <source>Make active again</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="61" />
-      <source>Force to 1</source>
-      <translation type="unfinished">1'e zorla</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
+        <source>Force to 1</source>
+        <translation type="unfinished">1&apos;e zorla</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="62" />
-      <source>Force to 0</source>
-      <translation type="unfinished">0'a zorla</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
+        <source>Force to 0</source>
+        <translation type="unfinished">0&apos;a zorla</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="63" />
-      <source>Release the force</source>
-      <translation type="unfinished">Zorlamayı kaldır</translation>
+        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <source>Release the force</source>
+        <translation type="unfinished">Zorlamayı kaldır</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="82" />
-      <source>Off-line</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="82"/>
+        <source>Off-line</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="87" />
-      <source>On-line needs a compiled program in the PLC</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="87"/>
+        <source>On-line needs a compiled program in the PLC</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="92" />
-      <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="92"/>
+        <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="101" />
-      <source>On-line: the drawing shows the running PLC</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="101"/>
+        <source>On-line: the drawing shows the running PLC</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="119" />
-      <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="119"/>
+        <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="156" />
-      <source>Select a contact, coil or function first</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="156"/>
+        <source>Select a contact, coil or function first</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="160" />
-      <source>This element has no op in the PLC program</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="160"/>
+        <source>This element has no op in the PLC program</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/online.py" line="183" />
-      <source>Select a contact or coil to force its signal</source>
-      <translation type="unfinished" />
+        <location filename="../ladderworks/gui/docks/online.py" line="183"/>
+        <source>Select a contact or coil to force its signal</source>
+        <translation type="unfinished"></translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>PlcTables</name>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="79" />
-      <source>'{0}' is not a number</source>
-      <translation>'{0}' bir sayı değil</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="79"/>
+        <source>&apos;{0}&apos; is not a number</source>
+        <translation>&apos;{0}&apos; bir sayı değil</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="81" />
-      <source>{0} is out of range ({1} to {2})</source>
-      <translation>{0} sınır dışı ({1} ile {2} arası)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="81"/>
+        <source>{0} is out of range ({1} to {2})</source>
+        <translation>{0} sınır dışı ({1} ile {2} arası)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="85" />
-      <source>{0} bytes: a value has 1, 2 or 4 bytes</source>
-      <translation>{0} byte: bir değer 1, 2 veya 4 byte olur</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="85"/>
+        <source>{0} bytes: a value has 1, 2 or 4 bytes</source>
+        <translation>{0} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="89" />
-      <source>'{0}': type up to 8 binary digits (0 and 1), bit 7 first</source>
-      <translation>'{0}': en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="89"/>
+        <source>&apos;{0}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
+        <translation>&apos;{0}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="93" />
-      <source>TMRB {0}: its preset is fixed in the program and cannot be changed here</source>
-      <translation>TMRB {0}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="93"/>
+        <source>TMRB {0}: its preset is fixed in the program and cannot be changed here</source>
+        <translation>TMRB {0}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="103" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="111" />
-      <source>No.</source>
-      <translation>No.</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="103"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="111"/>
+        <source>No.</source>
+        <translation>No.</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="104" />
-      <source>Type</source>
-      <translation>Tip</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="104"/>
+        <source>Type</source>
+        <translation>Tip</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="105" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="134" />
-      <source>Preset (ms)</source>
-      <translation>Ayar değeri (ms)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="134"/>
+        <source>Preset (ms)</source>
+        <translation>Ayar değeri (ms)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="106" />
-      <source>Tick (ms)</source>
-      <translation>Adım (ms)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="106"/>
+        <source>Tick (ms)</source>
+        <translation>Adım (ms)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="107" />
-      <source>Delay (ms)</source>
-      <translation>Gecikme (ms)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="107"/>
+        <source>Delay (ms)</source>
+        <translation>Gecikme (ms)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="112" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="139" />
-      <source>Preset</source>
-      <translation>Ayar değeri</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="112"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="139"/>
+        <source>Preset</source>
+        <translation>Ayar değeri</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="113" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="140" />
-      <source>Current value</source>
-      <translation>Şimdiki değer</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="113"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="140"/>
+        <source>Current value</source>
+        <translation>Şimdiki değer</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="117" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="123" />
-      <source>Address</source>
-      <translation>Adres</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="123"/>
+        <source>Address</source>
+        <translation>Adres</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="118" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="145" />
-      <source>Bytes</source>
-      <translation>Byte</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="118"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="145"/>
+        <source>Bytes</source>
+        <translation>Byte</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="119" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="146" />
-      <source>Value</source>
-      <translation>Değer</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="146"/>
+        <source>Value</source>
+        <translation>Değer</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="120" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="125" />
-      <source>Hex</source>
-      <translation>Hex</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="120"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="125"/>
+        <source>Hex</source>
+        <translation>Hex</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="124" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="148" />
-      <source>Bits 7..0</source>
-      <translation>Bitler 7..0</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="148"/>
+        <source>Bits 7..0</source>
+        <translation>Bitler 7..0</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="133" />
-      <source>Timer number (1-100)</source>
-      <translation>Zamanlayıcı numarası (1-100)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="133"/>
+        <source>Timer number (1-100)</source>
+        <translation>Zamanlayıcı numarası (1-100)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="138" />
-      <source>Counter number (1-20)</source>
-      <translation>Sayıcı numarası (1-20)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="138"/>
+        <source>Counter number (1-20)</source>
+        <translation>Sayıcı numarası (1-20)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="144" />
-      <source>Address (D)</source>
-      <translation>Adres (D)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="144"/>
+        <source>Address (D)</source>
+        <translation>Adres (D)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="148" />
-      <source>Address (K)</source>
-      <translation>Adres (K)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="148"/>
+        <source>Address (K)</source>
+        <translation>Adres (K)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="193" />
-      <location filename="../ladderworks/gui/docks/tables.py" line="481" />
-      <source>INSERT</source>
-      <translation>EKLE (INSERT)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="481"/>
+        <source>INSERT</source>
+        <translation>EKLE (INSERT)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="351" />
-      <source>TMRB: the preset is fixed in the program</source>
-      <translation>TMRB: ayar değeri programda sabittir</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
+        <source>TMRB: the preset is fixed in the program</source>
+        <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="484" />
-      <source>DELETE</source>
-      <translation>SİL (DELETE)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="484"/>
+        <source>DELETE</source>
+        <translation>SİL (DELETE)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="513" />
-      <source>PLC tables</source>
-      <translation>PLC TABLOLARI</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="513"/>
+        <source>PLC tables</source>
+        <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="515" />
-      <source>Timers (TMR)</source>
-      <translation>Zamanlayıcı (TMR)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="515"/>
+        <source>Timers (TMR)</source>
+        <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="516" />
-      <source>Counters (CTR)</source>
-      <translation>Sayıcı (CTR)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="516"/>
+        <source>Counters (CTR)</source>
+        <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="517" />
-      <source>Data table (D)</source>
-      <translation>Veri (D)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="517"/>
+        <source>Data table (D)</source>
+        <translation>Veri (D)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="518" />
-      <source>Keep relays (K)</source>
-      <translation>Tutma rölesi (K)</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="518"/>
+        <source>Keep relays (K)</source>
+        <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/tables.py" line="524" />
-      <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
-      <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
+        <location filename="../ladderworks/gui/docks/tables.py" line="524"/>
+        <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
+        <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>TimeChart</name>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="140" />
-      <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
-      <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="140"/>
+        <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
+        <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="160" />
-      <source>Load (compile) a PLC program first</source>
-      <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="160"/>
+        <source>Load (compile) a PLC program first</source>
+        <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="171" />
-      <source>Sampling every {0} ms</source>
-      <translation>Her {0} ms'de örnekleniyor</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="171"/>
+        <source>Sampling every {0} ms</source>
+        <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="182" />
-      <source>Stopped: {0} samples</source>
-      <translation>Durduruldu: {0} örnek</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="182"/>
+        <source>Stopped: {0} samples</source>
+        <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="195" />
-      <source>New program loaded; sampling goes on</source>
-      <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="195"/>
+        <source>New program loaded; sampling goes on</source>
+        <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="311" />
-      <source>Cursor {0} ms:</source>
-      <translation>İmleç {0} ms:</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="311"/>
+        <source>Cursor {0} ms:</source>
+        <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="324" />
-      <source>Cannot write {0}: {1}</source>
-      <translation>{0} yazılamıyor: {1}</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="324"/>
+        <source>Cannot write {0}: {1}</source>
+        <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="328" />
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="336" />
-      <source>Saved {0}</source>
-      <translation>{0} kaydedildi</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="336"/>
+        <source>Saved {0}</source>
+        <translation>{0} kaydedildi</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="334" />
-      <source>Cannot write {0}</source>
-      <translation>{0} yazılamıyor</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="334"/>
+        <source>Cannot write {0}</source>
+        <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="343" />
-      <source>Export time chart as CSV</source>
-      <translation>Zaman kartını CSV olarak dışa aktar</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="343"/>
+        <source>Export time chart as CSV</source>
+        <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="345" />
-      <source>CSV files (*.csv)</source>
-      <translation>CSV dosyaları (*.csv)</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="345"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="354" />
-      <source>Export time chart as PNG</source>
-      <translation>Zaman kartını PNG olarak dışa aktar</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="354"/>
+        <source>Export time chart as PNG</source>
+        <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="356" />
-      <source>PNG pictures (*.png)</source>
-      <translation>PNG resimleri (*.png)</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="356"/>
+        <source>PNG pictures (*.png)</source>
+        <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="375" />
-      <source>PLC time chart</source>
-      <translation>PLC ZAMAN KARTI</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="375"/>
+        <source>PLC time chart</source>
+        <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="376" />
-      <source>Signals:</source>
-      <translation>Sinyaller:</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="376"/>
+        <source>Signals:</source>
+        <translation>Sinyaller:</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="377" />
-      <source>e.g. R1.4 R1.7 D10:2</source>
-      <translation>örn. R1.4 R1.7 D10:2</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="377"/>
+        <source>e.g. R1.4 R1.7 D10:2</source>
+        <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="378" />
-      <source>Sampling time:</source>
-      <translation>ÖRNEKLEME ZAMANI:</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="378"/>
+        <source>Sampling time:</source>
+        <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="380" />
-      <source>START</source>
-      <translation>BAŞLAT</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="380"/>
+        <source>START</source>
+        <translation>BAŞLAT</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="381" />
-      <source>STOP</source>
-      <translation>DURDUR</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
+        <source>STOP</source>
+        <translation>DURDUR</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="382" />
-      <source>CLEAR</source>
-      <translation>TEMİZLE</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <source>CLEAR</source>
+        <translation>TEMİZLE</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="383" />
-      <source>Fit</source>
-      <translation>Sığdır</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="383"/>
+        <source>Fit</source>
+        <translation>Sığdır</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="384" />
-      <source>Zoom in</source>
-      <translation>Yakınlaştır</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="384"/>
+        <source>Zoom in</source>
+        <translation>Yakınlaştır</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="385" />
-      <source>Zoom out</source>
-      <translation>Uzaklaştır</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <source>Zoom out</source>
+        <translation>Uzaklaştır</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="386" />
-      <source>CSV...</source>
-      <translation>CSV...</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
+        <source>CSV...</source>
+        <translation>CSV...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="387" />
-      <source>PNG...</source>
-      <translation>PNG...</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
+        <source>PNG...</source>
+        <translation>PNG...</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="392" />
-      <source>Export the samples as CSV</source>
-      <translation>Örnekleri CSV olarak dışa aktar</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <source>Export the samples as CSV</source>
+        <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="395" />
-      <source>Save the chart as a PNG picture</source>
-      <translation>Grafiği PNG resmi olarak kaydet</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
+        <source>Save the chart as a PNG picture</source>
+        <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/docks/time_chart.py" line="397" />
-      <source>time (ms)</source>
-      <translation>zaman (ms)</translation>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
+        <source>time (ms)</source>
+        <translation>zaman (ms)</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>Tool</name>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="80" />
-      <source>Select</source>
-      <translation>SEÇİM</translation>
+        <location filename="../ladderworks/gui/tools.py" line="80"/>
+        <source>Select</source>
+        <translation>SEÇİM</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="81" />
-      <source>Input</source>
-      <translation>GİRİŞ</translation>
+        <location filename="../ladderworks/gui/tools.py" line="81"/>
+        <source>Input</source>
+        <translation>GİRİŞ</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="82" />
-      <source>NOT input</source>
-      <translation>GİRİŞ DEĞİL</translation>
+        <location filename="../ladderworks/gui/tools.py" line="82"/>
+        <source>NOT input</source>
+        <translation>GİRİŞ DEĞİL</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="83" />
-      <source>Output</source>
-      <translation>ÇIKIŞ</translation>
+        <location filename="../ladderworks/gui/tools.py" line="83"/>
+        <source>Output</source>
+        <translation>ÇIKIŞ</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="84" />
-      <source>NOT output</source>
-      <translation>ÇIKIŞ DEĞİL</translation>
+        <location filename="../ladderworks/gui/tools.py" line="84"/>
+        <source>NOT output</source>
+        <translation>ÇIKIŞ DEĞİL</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="85" />
-      <source>NOT</source>
-      <translation>DEĞİL</translation>
+        <location filename="../ladderworks/gui/tools.py" line="85"/>
+        <source>NOT</source>
+        <translation>DEĞİL</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="86" />
-      <source>OR</source>
-      <translation>VEYA</translation>
+        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <source>OR</source>
+        <translation>VEYA</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="87" />
-      <source>Line</source>
-      <translation>ÇİZGİ</translation>
+        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <source>Line</source>
+        <translation>ÇİZGİ</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="88" />
-      <source>Comment</source>
-      <translation>YORUM</translation>
+        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <source>Comment</source>
+        <translation>YORUM</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="89" />
-      <source>Delete</source>
-      <translation>SİL</translation>
+        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <source>Delete</source>
+        <translation>SİL</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="90" />
-      <source>Function</source>
-      <translation>FONKSİYON</translation>
+        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <source>Function</source>
+        <translation>FONKSİYON</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="91" />
-      <source>Insert row before</source>
-      <translation>ÖNCEYE SATIR GİR</translation>
+        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <source>Insert row before</source>
+        <translation>ÖNCEYE SATIR GİR</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="92" />
-      <source>Insert row after</source>
-      <translation>SONRAYA SATIR GİR</translation>
+        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <source>Insert row after</source>
+        <translation>SONRAYA SATIR GİR</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="100" />
-      <source>Select an element; right-click for cut, copy, paste</source>
-      <translation>Bir eleman seçin; kes, kopyala, yapıştır için sağ tıklayın</translation>
+        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <source>Select an element; right-click for cut, copy, paste</source>
+        <translation>Bir eleman seçin; kes, kopyala, yapıştır için sağ tıklayın</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="102" />
-      <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
-      <translation>Kontak (RD / AND) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
+        <location filename="../ladderworks/gui/tools.py" line="102"/>
+        <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
+        <translation>Kontak (RD / AND) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="104" />
-      <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
-      <translation>DEĞİL kontak (RD.NOT / AND.NOT) koymak için hücreye tıklayın</translation>
+        <location filename="../ladderworks/gui/tools.py" line="104"/>
+        <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
+        <translation>DEĞİL kontak (RD.NOT / AND.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="106" />
-      <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
-      <translation>Çıkış (WRT) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
+        <location filename="../ladderworks/gui/tools.py" line="106"/>
+        <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
+        <translation>Çıkış (WRT) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="108" />
-      <source>Click a cell to place a NOT coil (WRT.NOT)</source>
-      <translation>DEĞİL çıkış (WRT.NOT) koymak için hücreye tıklayın</translation>
+        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <source>Click a cell to place a NOT coil (WRT.NOT)</source>
+        <translation>DEĞİL çıkış (WRT.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="110" />
-      <source>Click a contact or coil to turn it into its inverse</source>
-      <translation>Tersine çevirmek için bir kontak veya çıkışa tıklayın</translation>
+        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <source>Click a contact or coil to turn it into its inverse</source>
+        <translation>Tersine çevirmek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="112" />
-      <source>Click a contact or coil to add a parallel one below it</source>
-      <translation>Altına paralel eklemek için bir kontak veya çıkışa tıklayın</translation>
+        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <source>Click a contact or coil to add a parallel one below it</source>
+        <translation>Altına paralel eklemek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="114" />
-      <source>Click a first point, then a second point: a horizontal or vertical wire</source>
-      <translation>Birinci noktaya, sonra ikinci noktaya tıklayın: yatay veya dikey çizgi</translation>
+        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <source>Click a first point, then a second point: a horizontal or vertical wire</source>
+        <translation>Birinci noktaya, sonra ikinci noktaya tıklayın: yatay veya dikey çizgi</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="116" />
-      <source>Click the start of an empty row, type the comment, ENTER</source>
-      <translation>Boş bir satırın başına tıklayın, yorumu yazın, ENTER</translation>
+        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <source>Click the start of an empty row, type the comment, ENTER</source>
+        <translation>Boş bir satırın başına tıklayın, yorumu yazın, ENTER</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="118" />
-      <source>Click an element to delete it</source>
-      <translation>Silmek için elemanın üzerine tıklayın</translation>
+        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <source>Click an element to delete it</source>
+        <translation>Silmek için elemanın üzerine tıklayın</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="119" />
-      <source>Choose a function in the list, click the diagram, fill its table</source>
-      <translation>Listeden fonksiyonu seçin, diyagrama tıklayın, özellik tablosunu doldurun</translation>
+        <location filename="../ladderworks/gui/tools.py" line="119"/>
+        <source>Choose a function in the list, click the diagram, fill its table</source>
+        <translation>Listeden fonksiyonu seçin, diyagrama tıklayın, özellik tablosunu doldurun</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="121" />
-      <source>Click a cell to insert an empty row before it</source>
-      <translation>Önüne boş satır girmek için hücreye tıklayın</translation>
+        <location filename="../ladderworks/gui/tools.py" line="121"/>
+        <source>Click a cell to insert an empty row before it</source>
+        <translation>Önüne boş satır girmek için hücreye tıklayın</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/tools.py" line="123" />
-      <source>Click a cell to insert an empty row after it</source>
-      <translation>Arkasına boş satır girmek için hücreye tıklayın</translation>
+        <location filename="../ladderworks/gui/tools.py" line="123"/>
+        <source>Click a cell to insert an empty row after it</source>
+        <translation>Arkasına boş satır girmek için hücreye tıklayın</translation>
     </message>
-  </context>
-  <context>
+</context>
+<context>
     <name>ToolPalette</name>
     <message>
-      <location filename="../ladderworks/gui/palette.py" line="72" />
-      <source>Tools</source>
-      <translation>Ana takım çantası</translation>
+        <location filename="../ladderworks/gui/palette.py" line="72"/>
+        <source>Tools</source>
+        <translation>Ana takım çantası</translation>
     </message>
     <message>
-      <location filename="../ladderworks/gui/palette.py" line="73" />
-      <source>Function:</source>
-      <translation>Fonksiyon:</translation>
+        <location filename="../ladderworks/gui/palette.py" line="73"/>
+        <source>Function:</source>
+        <translation>Fonksiyon:</translation>
     </message>
-  </context>
+</context>
 </TS>

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from PySide6.QtWidgets import QApplication
 
 from ladderworks.gui.main_window import MainWindow
+from ladderworks.gui.refcount_guard import guard_singletons
 from ladderworks.gui.settings import Settings
 from ladderworks.gui.translation import UiLanguage, system_language
 
@@ -23,6 +24,7 @@ def create_window(settings: Settings | None = None) -> MainWindow:
 def main(argv: Sequence[str] | None = None) -> int:
     """Start the IDE (optionally opening the files named on the command line)."""
     args = list(argv) if argv is not None else sys.argv
+    guard_singletons()
     app = QApplication.instance() or QApplication(args)
     app.setApplicationName("LadderWorks")
     app.setOrganizationName("LadderWorks")

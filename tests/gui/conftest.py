@@ -15,8 +15,11 @@ from PySide6.QtWidgets import QApplication, QMessageBox, QWidget
 from pytestqt.qtbot import QtBot
 
 from ladderworks.gui.main_window import MainWindow
+from ladderworks.gui.refcount_guard import guard_singletons
 from ladderworks.gui.settings import Settings
 from ladderworks.gui.translation import UiLanguage
+
+guard_singletons()  # PySide6 6.12.0 loses a reference to None on every void Qt call
 
 
 @pytest.fixture
