@@ -366,121 +366,121 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
-        <source>{name}: {problem}</source>
-        <translation>{name}: {problem}</translation>
+        <source>one function box per network: put {name} in a network of its own</source>
+        <translation>her devrede bir fonksiyon kutusu olur: {name} için ayrı bir devre kullanın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="78"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
         <source>cell ({row}, {col}) is outside the grid</source>
         <translation>({row}, {col}) hücresi ızgaranın dışında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
         <source>only coils go in the coil column (cell ({row}, {col}))</source>
         <translation>çıkış sütununa yalnız çıkış konur (({row}, {col}) hücresi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="81"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="82"/>
         <source>{name} does not fit here: a box needs two contact columns</source>
         <translation>{name} buraya sığmıyor: fonksiyon kutusu iki kontak sütunu ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="84"/>
         <source>there is no suitable element at cell ({row}, {col})</source>
         <translation>({row}, {col}) hücresinde uygun eleman yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="85"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="86"/>
         <source>a line must be horizontal or vertical</source>
         <translation>çizgi yatay veya dikey olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="86"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>panoda ladder elemanı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="88"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="88"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
         <source>JMP without a matching JMPE</source>
         <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
         <source>JMPE without a JMP before it</source>
         <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="94"/>
         <source>COM without a matching COME</source>
         <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="94"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
         <source>COME without a COM before it</source>
         <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
         <source>coil {address} is written more than once</source>
         <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="100"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="106"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="107"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="110"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
@@ -538,7 +538,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="58"/>
         <source>Forced and passive</source>
-        <translation type="unfinished"></translation>
+        <translation>Zorlananlar ve pasifler</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
@@ -548,7 +548,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
         <source>Signal / element</source>
-        <translation>Tür</translation>
+        <translation>Sinyal / eleman</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
@@ -558,32 +558,32 @@
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
         <source>Release all</source>
-        <translation>Değer</translation>
+        <translation>Hepsini bırak</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="68"/>
         <source>FORCED</source>
-        <translation type="unfinished"></translation>
+        <translation>ZORLANMIŞ</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="75"/>
         <source>network {0}, line {1}: {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>devre {0}, satır {1}: {2}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="77"/>
         <source>PASSIVE</source>
-        <translation type="unfinished"></translation>
+        <translation>PASİF</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="86"/>
         <source>Release</source>
-        <translation type="unfinished"></translation>
+        <translation>Bırak</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
         <source>{0} forced, {1} passive</source>
-        <translation type="unfinished"></translation>
+        <translation>{0} zorlanmış, {1} pasif</translation>
     </message>
 </context>
 <context>
@@ -631,7 +631,7 @@
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="166"/>
         <source>Comment (shown with the box, written after // in the file):</source>
-        <translation>şunlardan biri: {0}</translation>
+        <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="169"/>
@@ -770,309 +770,309 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="117"/>
+        <location filename="../ladderworks/gui/main_window.py" line="122"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="118"/>
+        <location filename="../ladderworks/gui/main_window.py" line="123"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="119"/>
+        <location filename="../ladderworks/gui/main_window.py" line="124"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="122"/>
+        <location filename="../ladderworks/gui/main_window.py" line="127"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="128"/>
+        <location filename="../ladderworks/gui/main_window.py" line="133"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="133"/>
+        <location filename="../ladderworks/gui/main_window.py" line="138"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="138"/>
+        <location filename="../ladderworks/gui/main_window.py" line="143"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="141"/>
+        <location filename="../ladderworks/gui/main_window.py" line="146"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <location filename="../ladderworks/gui/main_window.py" line="151"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="151"/>
+        <location filename="../ladderworks/gui/main_window.py" line="156"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="152"/>
+        <location filename="../ladderworks/gui/main_window.py" line="157"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="153"/>
+        <location filename="../ladderworks/gui/main_window.py" line="158"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="154"/>
+        <location filename="../ladderworks/gui/main_window.py" line="159"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="155"/>
+        <location filename="../ladderworks/gui/main_window.py" line="160"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="158"/>
+        <location filename="../ladderworks/gui/main_window.py" line="163"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <location filename="../ladderworks/gui/main_window.py" line="168"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="170"/>
+        <location filename="../ladderworks/gui/main_window.py" line="175"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="177"/>
+        <location filename="../ladderworks/gui/main_window.py" line="182"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="184"/>
+        <location filename="../ladderworks/gui/main_window.py" line="189"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <location filename="../ladderworks/gui/main_window.py" line="194"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="190"/>
+        <location filename="../ladderworks/gui/main_window.py" line="195"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="193"/>
+        <location filename="../ladderworks/gui/main_window.py" line="198"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <location filename="../ladderworks/gui/main_window.py" line="204"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="205"/>
+        <location filename="../ladderworks/gui/main_window.py" line="210"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="209"/>
+        <location filename="../ladderworks/gui/main_window.py" line="214"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="212"/>
+        <location filename="../ladderworks/gui/main_window.py" line="217"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="219"/>
+        <location filename="../ladderworks/gui/main_window.py" line="224"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="256"/>
+        <location filename="../ladderworks/gui/main_window.py" line="261"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="260"/>
+        <location filename="../ladderworks/gui/main_window.py" line="265"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="277"/>
+        <location filename="../ladderworks/gui/main_window.py" line="282"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="296"/>
+        <location filename="../ladderworks/gui/main_window.py" line="301"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="316"/>
+        <location filename="../ladderworks/gui/main_window.py" line="321"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="320"/>
+        <location filename="../ladderworks/gui/main_window.py" line="325"/>
         <source>&amp;Tools</source>
         <translation>&amp;Takımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="326"/>
+        <location filename="../ladderworks/gui/main_window.py" line="331"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="329"/>
+        <location filename="../ladderworks/gui/main_window.py" line="334"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="332"/>
+        <location filename="../ladderworks/gui/main_window.py" line="337"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="436"/>
+        <location filename="../ladderworks/gui/main_window.py" line="441"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="461"/>
+        <location filename="../ladderworks/gui/main_window.py" line="466"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="462"/>
+        <location filename="../ladderworks/gui/main_window.py" line="467"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="489"/>
+        <location filename="../ladderworks/gui/main_window.py" line="494"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="490"/>
+        <location filename="../ladderworks/gui/main_window.py" line="495"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="515"/>
+        <location filename="../ladderworks/gui/main_window.py" line="520"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="525"/>
+        <location filename="../ladderworks/gui/main_window.py" line="530"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="527"/>
+        <location filename="../ladderworks/gui/main_window.py" line="532"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="558"/>
-        <location filename="../ladderworks/gui/main_window.py" line="573"/>
-        <location filename="../ladderworks/gui/main_window.py" line="585"/>
+        <location filename="../ladderworks/gui/main_window.py" line="563"/>
+        <location filename="../ladderworks/gui/main_window.py" line="578"/>
+        <location filename="../ladderworks/gui/main_window.py" line="590"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="559"/>
+        <location filename="../ladderworks/gui/main_window.py" line="564"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="574"/>
+        <location filename="../ladderworks/gui/main_window.py" line="579"/>
         <source>The ladder cannot be written as a program; see the error list.</source>
         <translation>Ladder programa çevrilemiyor; hata listesine bakın.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="586"/>
+        <location filename="../ladderworks/gui/main_window.py" line="591"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="596"/>
+        <location filename="../ladderworks/gui/main_window.py" line="601"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="604"/>
+        <location filename="../ladderworks/gui/main_window.py" line="609"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="606"/>
+        <location filename="../ladderworks/gui/main_window.py" line="611"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="616"/>
+        <location filename="../ladderworks/gui/main_window.py" line="621"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="618"/>
+        <location filename="../ladderworks/gui/main_window.py" line="623"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="637"/>
+        <location filename="../ladderworks/gui/main_window.py" line="642"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="639"/>
+        <location filename="../ladderworks/gui/main_window.py" line="644"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="650"/>
+        <location filename="../ladderworks/gui/main_window.py" line="655"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="722"/>
+        <location filename="../ladderworks/gui/main_window.py" line="727"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="741"/>
+        <location filename="../ladderworks/gui/main_window.py" line="746"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="747"/>
+        <location filename="../ladderworks/gui/main_window.py" line="752"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Derleme bitti (compile finish): {0} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="768"/>
+        <location filename="../ladderworks/gui/main_window.py" line="773"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="769"/>
+        <location filename="../ladderworks/gui/main_window.py" line="774"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -1235,33 +1235,33 @@
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="118"/>
         <source>PLC CONTROL SCREEN</source>
-        <translation type="unfinished"></translation>
+        <translation>PLC KONTROL EKRANI</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="120"/>
         <source>Open .MOD…</source>
-        <translation type="unfinished"></translation>
+        <translation>.MOD aç…</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="121"/>
         <source>Take the console&apos;s program</source>
-        <translation type="unfinished"></translation>
+        <translation>Konsoldaki programı al</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="122"/>
         <source>Compile</source>
-        <translation type="unfinished"></translation>
+        <translation>Derle</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="123"/>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="252"/>
         <source>START</source>
-        <translation type="unfinished">BAŞLAT</translation>
+        <translation>BAŞLAT</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="124"/>
         <source>STOP</source>
-        <translation type="unfinished">DURDUR</translation>
+        <translation>DURDUR</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="145"/>
@@ -1271,77 +1271,77 @@
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="149"/>
         <source>Opened {0}</source>
-        <translation>{0} okunamıyor: {1}</translation>
+        <translation>{0} açıldı</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
         <source>Open mnemonic program</source>
-        <translation type="unfinished"></translation>
+        <translation>Mnemonik program aç</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mnemonik programlar (*.MOD *.mod *.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="164"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
-        <translation type="unfinished"></translation>
+        <translation>Konsoldaki program kodlanamıyor: hata listesine bakın</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="168"/>
         <source>Program taken from the console</source>
-        <translation type="unfinished"></translation>
+        <translation>Program konsoldan alındı</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="202"/>
         <source>Compile failed: {0} error(s). {1}</source>
-        <translation type="unfinished"></translation>
+        <translation>Derleme başarısız: {0} hata. {1}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="214"/>
         <source>Converting…</source>
-        <translation type="unfinished"></translation>
+        <translation>Çevriliyor…</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="239"/>
         <source>compile finish — {0} networks, {1} bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>compile finish (derleme bitti) — {0} devre, {1} byte</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="242"/>
         <source>({0} warning(s))</source>
-        <translation type="unfinished"></translation>
+        <translation>({0} uyarı)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="253"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
-        <translation type="unfinished"></translation>
+        <translation>{0} sinyal zorlanmış veya eleman pasif. PLC bunlarla başlatılsın mı?</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="260"/>
         <source>Compile a program first</source>
-        <translation type="unfinished"></translation>
+        <translation>Önce bir program derleyin</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="280"/>
         <source>NO PROGRAM</source>
-        <translation type="unfinished"></translation>
+        <translation>PROGRAM YOK</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="283"/>
         <source>RUNNING</source>
-        <translation type="unfinished"></translation>
+        <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
         <source>STOPPED</source>
-        <translation type="unfinished"></translation>
+        <translation>DURDU</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="289"/>
         <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
-        <translation type="unfinished"></translation>
+        <translation>tarama {0} · tarama süresi {1:.3f} / {2:.3f} / {3:.3f} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>
 </context>
 <context>
@@ -1349,72 +1349,72 @@
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="138"/>
         <source>PLC DIAGNOSTIC</source>
-        <translation type="unfinished"></translation>
+        <translation>PLC TEŞHİS</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="139"/>
         <source>Address, e.g. R102.0</source>
-        <translation type="unfinished"></translation>
+        <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="140"/>
         <source>Find</source>
-        <translation type="unfinished"></translation>
+        <translation>Bul</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="141"/>
         <source>Where written</source>
-        <translation type="unfinished"></translation>
+        <translation>Nerede yazılıyor</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="142"/>
         <source>Follow</source>
-        <translation type="unfinished"></translation>
+        <translation>Takip et</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="143"/>
         <source>Keep the searched address in view while the PLC runs</source>
-        <translation type="unfinished"></translation>
+        <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="185"/>
         <source>No program loaded</source>
-        <translation type="unfinished"></translation>
+        <translation>Yüklü program yok</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="187"/>
         <source>RUNNING — scan {0}</source>
-        <translation type="unfinished"></translation>
+        <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="189"/>
         <source>STOPPED</source>
-        <translation type="unfinished"></translation>
+        <translation>DURDU</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="199"/>
         <source>&apos;{0}&apos; is not an address</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="243"/>
         <source>&apos;{0}&apos; is not in the program</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="253"/>
         <source>No coil writes {0}</source>
-        <translation type="unfinished"></translation>
+        <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="262"/>
         <source>{0} of {1}: network {2}</source>
-        <translation type="unfinished"></translation>
+        <translation>{0} / {1}: devre {2}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/power_overlay.py" line="97"/>
         <source>PASSIVE</source>
-        <translation type="unfinished"></translation>
+        <translation>PASİF</translation>
     </message>
 </context>
 <context>
@@ -1435,72 +1435,72 @@
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="58"/>
         <source>On-line mode</source>
-        <translation type="unfinished"></translation>
+        <translation>On-line mod</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="59"/>
         <source>Make passive (disable)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasif hale getir</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="60"/>
         <source>Make active again</source>
-        <translation type="unfinished"></translation>
+        <translation>Tekrar aktif yap</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="61"/>
         <source>Force to 1</source>
-        <translation type="unfinished">1&apos;e zorla</translation>
+        <translation>1&apos;e zorla</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="62"/>
         <source>Force to 0</source>
-        <translation type="unfinished">0&apos;a zorla</translation>
+        <translation>0&apos;a zorla</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="63"/>
         <source>Release the force</source>
-        <translation type="unfinished">Zorlamayı kaldır</translation>
+        <translation>Zorlamayı bırak</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="82"/>
         <source>Off-line</source>
-        <translation type="unfinished"></translation>
+        <translation>Off-line</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="87"/>
         <source>On-line needs a compiled program in the PLC</source>
-        <translation type="unfinished"></translation>
+        <translation>On-line mod için PLC&apos;de derlenmiş bir program gerekir</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="92"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
-        <translation type="unfinished"></translation>
+        <translation>Çizim PLC&apos;deki program değil: önce PLC kontrol ekranında derleyin</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="101"/>
         <source>On-line: the drawing shows the running PLC</source>
-        <translation type="unfinished"></translation>
+        <translation>On-line: çizim çalışan PLC&apos;yi gösteriyor</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="119"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
-        <translation type="unfinished"></translation>
+        <translation>Off-line: çizim değişti; artık PLC&apos;nin çalıştırdığı program değil</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="156"/>
         <source>Select a contact, coil or function first</source>
-        <translation type="unfinished"></translation>
+        <translation>Önce bir kontak, çıkış veya fonksiyon seçin</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="160"/>
         <source>This element has no op in the PLC program</source>
-        <translation type="unfinished"></translation>
+        <translation>Bu elemanın PLC programında karşılığı yok</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="183"/>
         <source>Select a contact or coil to force its signal</source>
-        <translation type="unfinished"></translation>
+        <translation>Sinyalini zorlamak için bir kontak veya çıkış seçin</translation>
     </message>
 </context>
 <context>
@@ -1946,12 +1946,12 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="72"/>
+        <location filename="../ladderworks/gui/palette.py" line="73"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="73"/>
+        <location filename="../ladderworks/gui/palette.py" line="74"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>

@@ -72,6 +72,9 @@ class MainWindow(QMainWindow):
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.errors)
         self._make_menus()
         self._make_status_bar()
+        from ladderworks.gui.docks import install_plc_docks  # the PLC docks (issues 7, 8)
+
+        self.plc_docks = install_plc_docks(self)
 
         self.editor.undo_stack.cleanChanged.connect(self._update_title)
         self.editor.tool_requested.connect(self.set_tool)
