@@ -74,7 +74,8 @@ def diagnostic_templates() -> dict[str, str]:
         "coil-branch": translate(
             "Diagnostic", 'coils hang on different points of the logic; join them to one point'),
         "box-output": translate("Diagnostic", 'only coils may follow the output of {name}'),
-        "box-params": translate("Diagnostic", '{name}: {problem}'),
+        "box-twice": translate(
+            "Diagnostic", 'one function box per network: put {name} in a network of its own'),
         "edit-outside": translate("Diagnostic", 'cell ({row}, {col}) is outside the grid'),
         "edit-coil-column": translate(
             "Diagnostic", 'only coils go in the coil column (cell ({row}, {col}))'),

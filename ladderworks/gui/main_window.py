@@ -6,8 +6,9 @@ from collections.abc import Callable
 from pathlib import Path
 
 from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
-from PySide6.QtGui import QAction, QActionGroup, QCloseEvent, QKeySequence
+from PySide6.QtGui import QAction, QActionGroup, QCloseEvent, QKeySequence, QShowEvent
 from PySide6.QtWidgets import (
+    QDockWidget,
     QFileDialog,
     QLabel,
     QMainWindow,
@@ -84,6 +85,7 @@ class MainWindow(QMainWindow):
         self.editor.set_function(self.palette.current_function())
         self.retranslate()
         self.resize(1200, 800)
+        self._first_show = True
         geometry, state = settings.window_state()
         if geometry is not None:
             self.restoreGeometry(geometry)
@@ -773,6 +775,18 @@ class MainWindow(QMainWindow):
                 "MainWindow", "LadderWorks: ladder (FANUC PMC style) programming for CNC machines."
             ),
         )
+
+    def showEvent(self, event: QShowEvent) -> None:
+        """On the first show, keep the bottom docks low so the ladder has the room."""
+        super().showEvent(event)
+        if self._first_show:
+            self._first_show = False
+            if self.settings.window_state()[1] is None:
+                bottom = [dock for dock in self.findChildren(QDockWidget)
+                          if self.dockWidgetArea(dock) == Qt.DockWidgetArea.BottomDockWidgetArea
+                          and dock.isVisible()]
+                if bottom:
+                    self.resizeDocks(bottom, [170] * len(bottom), Qt.Orientation.Vertical)
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Ask about unsaved changes; remember the window layout."""

@@ -50,6 +50,7 @@ class ToolPalette(QDockWidget):
         self.functions.currentIndexChanged.connect(self._on_function)
         layout.addWidget(self.functions)
         layout.addStretch(1)
+        body.setMaximumWidth(230)
         self.setWidget(body)
         self.retranslate()
 

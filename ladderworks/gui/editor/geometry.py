@@ -7,11 +7,11 @@ from dataclasses import dataclass
 
 from ladderworks.core.ladder.model import LadderNetwork
 
-CELL_W = 96.0
+CELL_W = 84.0
 CELL_H = 60.0
 COMMENT_H = 20.0
 LISTING_LINE_H = 18.0
-LEFT = 56.0  # room for the network number left of the left rail
+LEFT = 44.0  # room for the network number left of the left rail
 GAP = 10.0  # space between networks
 SPARE_ROWS = 1  # an empty row drawn under each network: clicking there adds a row
 

@@ -1,0 +1,90 @@
+"""Every tr() string has a finished Turkish translation; every core diagnostic has a GUI text."""
+
+from __future__ import annotations
+
+import re
+import string
+import subprocess
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from ladderworks.core.diagnostics import MESSAGES
+from ladderworks.gui.diagnostic_texts import diagnostic_templates
+from ladderworks.gui.translation import TsTranslator, lrelease_program, ts_file
+from ladderworks.paths import ROOT
+
+GUI = ROOT / "ladderworks" / "gui"
+
+
+def _lupdate() -> Path:
+    program = Path(lrelease_program() or "").with_name("lupdate")
+    if not program.exists():
+        pytest.fail("PySide6's lupdate is missing")
+    return program
+
+
+def _messages(path: Path) -> dict[tuple[str, str], ET.Element]:
+    root = ET.parse(path).getroot()
+    found: dict[tuple[str, str], ET.Element] = {}
+    for context in root.iter("context"):
+        name = context.findtext("name") or ""
+        for message in context.iter("message"):
+            translation = message.find("translation")
+            assert translation is not None
+            found[(name, message.findtext("source") or "")] = translation
+    return found
+
+
+def test_every_tr_string_has_a_finished_turkish_translation(tmp_path: Path) -> None:
+    sources = sorted(str(p) for p in GUI.rglob("*.py"))
+    extracted = tmp_path / "extracted.ts"
+    subprocess.run([str(_lupdate()), "-silent", *sources, "-ts", str(extracted)],
+                   check=True, capture_output=True, timeout=120)
+    wanted = set(_messages(extracted))
+    assert len(wanted) > 150
+    committed = _messages(ts_file("tr"))
+    missing = sorted(wanted - set(committed))
+    assert not missing, f"not in translations/ladderworks_tr.ts (run lupdate): {missing[:10]}"
+    unfinished = sorted(key for key in wanted
+                        if committed[key].get("type") in ("unfinished", "vanished", "obsolete")
+                        or not (committed[key].text or "").strip())
+    assert not unfinished, f"no Turkish translation yet: {unfinished[:10]}"
+
+
+def test_the_english_file_is_complete_too() -> None:
+    committed = _messages(ts_file("en"))
+    assert committed
+    assert all(node.get("type") != "unfinished" for node in committed.values())
+
+
+def _fields(template: str) -> set[str]:
+    return {name for _, name, _, _ in string.Formatter().parse(template) if name}
+
+
+def test_every_core_diagnostic_code_has_a_gui_text_with_the_same_fields() -> None:
+    gui = diagnostic_templates()
+    missing = sorted(set(MESSAGES) - set(gui))
+    assert not missing, f"add these codes to gui/diagnostic_texts.py: {missing}"
+    for code, template in MESSAGES.items():
+        assert _fields(gui[code]) == _fields(template), code
+        assert gui[code] == template, f"{code}: the GUI's English differs from the core's"
+
+
+def test_turkish_diagnostics_keep_their_fields() -> None:
+    translator = TsTranslator(ts_file("tr"))
+    for code, template in MESSAGES.items():
+        turkish = translator.translate("Diagnostic", template)
+        assert turkish, code
+        assert _fields(turkish) == _fields(template), code
+
+
+def test_seed_manual_terms_name_the_tools() -> None:
+    translator = TsTranslator(ts_file("tr"))
+    names = {source: translator.translate("Tool", source) for source in (
+        "Select", "Input", "Output", "NOT", "OR", "Line", "Comment", "Delete", "Function")}
+    assert names == {"Select": "SEÇİM", "Input": "GİRİŞ", "Output": "ÇIKIŞ", "NOT": "DEĞİL",
+                     "OR": "VEYA", "Line": "ÇİZGİ", "Comment": "YORUM", "Delete": "SİL",
+                     "Function": "FONKSİYON"}
+    assert re.search("ÖNCE", translator.translate("Tool", "Insert row before"))
