@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from PySide6.QtCore import Qt
 from pytestqt.qtbot import QtBot
 
 from ladderworks import paths
@@ -58,6 +59,7 @@ def test_spindle_override_compile_start_watch_stop(qtbot: QtBot, window: MainWin
 
     diagnostic.show()
     diagnostic.raise_()
+    window.resizeDocks([diagnostic], [820], Qt.Orientation.Horizontal)
     qtbot.waitUntil(diagnostic.isVisible)
     assert session.engine.monitored
     session.step(8)

@@ -30,6 +30,8 @@ from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 
 translate = QCoreApplication.translate
 
+VIEW_SCALE = 0.62
+
 
 class DiagnosticView(QGraphicsView):
     """A read-only ladder view: the console's network drawings with live overlays."""
@@ -49,6 +51,7 @@ class DiagnosticView(QGraphicsView):
         self.networks: list[LadderNetwork] = []
         self.layout_ = Layout()
         self.paints = 0  # viewport paint events (the benchmark's repaint rate)
+        self.scale(VIEW_SCALE, VIEW_SCALE)  # a dock is narrower than the console
 
     def show_networks(self, networks: list[LadderNetwork], binary: BinaryProgram,
                       ops: list[list[int]]) -> None:
@@ -98,6 +101,7 @@ class DiagnosticDock(QDockWidget):
         bar = QHBoxLayout()
         self.search = QLineEdit(body)
         self.search.setObjectName("diagnosticSearch")
+        self.search.setMinimumWidth(150)
         self.search.returnPressed.connect(self.find_next)
         self.find_button = QPushButton(body)
         self.find_button.setObjectName("diagnosticFind")
@@ -119,6 +123,7 @@ class DiagnosticDock(QDockWidget):
         self.view = DiagnosticView(body)
         layout.addWidget(self.view, 1)
         self.setWidget(body)
+        self.setMinimumWidth(520)
         self.hits: list[tuple[int, Cell]] = []
         self.hit_index = -1
         self._monitoring = False

@@ -75,18 +75,23 @@ class PlcControlDock(QDockWidget):
         layout.setContentsMargins(4, 4, 4, 4)
         self.toolbar = QToolBar(body)
         self.toolbar.setObjectName("plcControlToolbar")
+        self.run_bar = QToolBar(body)
+        self.run_bar.setObjectName("plcRunToolbar")
         self.actions: dict[str, QAction] = {}
-        for name, slot in (("action_plc_open_mod", self.open_dialog),
-                           ("action_plc_take_console", self.take_console_program),
-                           ("action_plc_control_compile", self.compile),
-                           ("action_plc_start", self.start),
-                           ("action_plc_stop", self.stop)):
+        for name, slot, bar in (
+                ("action_plc_open_mod", self.open_dialog, self.toolbar),
+                ("action_plc_take_console", self.take_console_program, self.toolbar),
+                ("action_plc_control_compile", self.compile, self.run_bar),
+                ("action_plc_start", self.start, self.run_bar),
+                ("action_plc_stop", self.stop, self.run_bar)):
             action = QAction(self)
             action.setObjectName(name)
             action.triggered.connect(lambda _checked=False, s=slot: s())
-            self.toolbar.addAction(action)
+            bar.addAction(action)
             self.actions[name] = action
         layout.addWidget(self.toolbar)
+        layout.addWidget(self.run_bar)
+        self.setMinimumWidth(440)
         state = QHBoxLayout()
         self.indicator = QLabel(body)
         self.indicator.setObjectName("plcRunIndicator")

@@ -1,0 +1,92 @@
+"""PLC TEŞHİS: read-only ladder of the running program, search, where written, box values."""
+
+from __future__ import annotations
+
+from pytestqt.qtbot import QtBot
+
+from ladderworks.core.address import parse_address
+from ladderworks.core.il import parse
+from ladderworks.gui.main_window import MainWindow
+from tests.gui.plc_docks_help import plc_docks
+
+TIMER = """%@3
+RD X0.0
+TMRB 9 80
+WRT R1.7
+RD X0.1
+SUB 8
+1111
+1111
+R0100
+R0300
+RD X0.0
+WRT Y0.0
+%
+"""
+
+
+def loaded(window: MainWindow, text: str):
+    """Docks with `text` compiled, started and the diagnostic shown."""
+    docks = plc_docks(window)
+    result = parse(text)
+    assert docks.session.load_program(result.program).ok
+    docks.session.start()
+    docks.diagnostic.show()
+    docks.diagnostic.raise_()
+    return docks
+
+
+def test_box_values_and_power(qtbot: QtBot, window: MainWindow) -> None:
+    docks = loaded(window, TIMER)
+    session, view = docks.session, docks.diagnostic.view
+    session.write(parse_address("R100"), 123)
+    session.set_bit(parse_address("X0.0"), 1)
+    session.step(120)
+    overlay = view.live.overlays[0]
+    box_cell = next(cell for cell, e in view.networks[0].cells.items()
+                    if type(e).__name__ == "FunctionBox")
+    assert overlay.power.box_pins[box_cell] == [True]
+    assert box_cell in overlay.power.box_out  # 120 ms > 80 ms: the timer is up
+    assert overlay.values[box_cell] == []  # TMRB has no address parameters
+    add_cell = next(cell for cell, e in view.networks[1].cells.items()
+                    if type(e).__name__ == "FunctionBox")
+    assert view.live.overlays[1].values[add_cell] == ["R100=123", "R300=0"]
+    session.set_bit(parse_address("X0.1"), 1)
+    session.step(8)
+    assert view.live.overlays[1].values[add_cell] == ["R100=123", "R300=123"]
+
+
+def test_find_and_where_written(qtbot: QtBot, window: MainWindow) -> None:
+    docks = loaded(window, TIMER)
+    dock = docks.diagnostic
+    dock.search.setText("X0.0")
+    dock.find_next()
+    assert dock.hits == [(0, (0, 0)), (2, (0, 0))]
+    assert "1 of 2" in dock.message.text()
+    dock.find_next()
+    assert "2 of 2" in dock.message.text()
+    dock.search.setText("Y0.0")
+    dock.where_written()
+    assert dock.hits == [(2, (0, dock.view.networks[2].coil_column))]
+    assert (0, dock.view.networks[2].coil_column) in dock.view.live.overlays[2].marked
+    dock.search.setText("Q9")
+    dock.find_next()
+    assert "not an address" in dock.message.text()
+    dock.search.setText("R5.5")
+    dock.where_written()
+    assert "No coil writes R5.5" in dock.message.text()
+
+
+def test_passive_element_is_tagged(qtbot: QtBot, window: MainWindow) -> None:
+    docks = loaded(window, TIMER)
+    session, view = docks.session, docks.diagnostic.view
+    session.set_bit(parse_address("X0.0"), 1)
+    op = session.disable((2, 0))  # RD X0.0 of the last network
+    session.step(8)
+    assert session.bit(parse_address("Y0.0")) == 0
+    assert (0, 0) in view.live.overlays[2].power.disabled
+    assert (0, 0) not in view.live.overlays[2].power.closed
+    session.enable(op)
+    session.step(8)
+    assert session.bit(parse_address("Y0.0")) == 1
+    assert view.live.overlays[2].power.coils
