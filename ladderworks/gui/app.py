@@ -13,20 +13,12 @@ from ladderworks.gui.settings import Settings
 from ladderworks.gui.translation import UiLanguage, system_language
 
 
-def create_window(settings: Settings | None = None, plc_docks: bool = True) -> MainWindow:
-    """The main window with the remembered (or the system's) UI language applied and, unless
-    `plc_docks` is False, the PLC docks (control screen, diagnostic, bit display, time chart …)."""
+def create_window(settings: Settings | None = None) -> MainWindow:
+    """The main window (with its PLC docks) in the remembered or the system's UI language."""
     settings = settings if settings is not None else Settings()
     language = UiLanguage()
     language.apply(settings.language() or system_language())
     window = MainWindow(settings, language)
-    if plc_docks:
-        from ladderworks.gui.docks import install_plc_docks
-
-        install_plc_docks(window)
-        _geometry, state = settings.window_state()
-        if state is not None:
-            window.restoreState(state)
     return window
 
 

@@ -73,6 +73,12 @@ class MainWindow(QMainWindow):
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.errors)
         self._make_menus()
         self._make_status_bar()
+        named = self.actions_by_name
+        self.editor.context_actions = [
+            named[name] if name else None for name in (
+                "action_cut", "action_copy", "action_paste", "action_delete", "",
+                "action_invert", "action_or", "", "action_insert_row_before",
+                "action_insert_row_after", "", "action_delete_network")]
         from ladderworks.gui.docks import install_plc_docks  # the PLC docks (issues 7, 8)
 
         self.plc_docks = install_plc_docks(self)
@@ -191,6 +197,8 @@ class MainWindow(QMainWindow):
             None,
             "row_after",
         )
+        a("action_delete_network", lambda: translate("MainWindow", "Delete network"),
+          ed.delete_network)
         a("action_zoom_in", lambda: translate("MainWindow", "Zoom &in"), ed.zoom_in, key.ZoomIn)
         a("action_zoom_out", lambda: translate("MainWindow", "Zoom &out"), ed.zoom_out, key.ZoomOut)
         a(
@@ -294,6 +302,7 @@ class MainWindow(QMainWindow):
                 "action_or",
                 "action_insert_row_before",
                 "action_insert_row_after",
+                "action_delete_network",
             ],
         )
         view = self._menu(
@@ -364,6 +373,10 @@ class MainWindow(QMainWindow):
             self.actions_by_name[name].setIcon(style.standardIcon(pixmap))
         self.actions_by_name["action_zoom_in"].setIcon(icon("zoom_in"))
         self.actions_by_name["action_zoom_out"].setIcon(icon("zoom_out"))
+        toolbar_toggle = toolbar.toggleViewAction()
+        toolbar_toggle.setObjectName("action_toolbar_main")
+        self.actions_by_name["action_toolbar_main"] = toolbar_toggle
+        view.addAction(toolbar_toggle)
         self.addToolBar(Qt.ToolBarArea.TopToolBarArea, toolbar)
         self._update_recent_menu()
 
@@ -404,6 +417,8 @@ class MainWindow(QMainWindow):
         """Switch the UI language live and remember it."""
         applied = self.language.apply(code)
         self.settings.set_language(applied)
+        # deliver the LanguageChange events now, so every widget is retranslated on return
+        QCoreApplication.sendPostedEvents(None, QEvent.Type.LanguageChange)
         self.retranslate()
         self.language_changed.emit(applied)
 
