@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtCore import QCoreApplication, QEvent, QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QMainWindow
 
 from ladderworks.core.il import Program
@@ -97,5 +97,8 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
     for name, module in (("bit_display", bit_display), ("time_chart", time_chart),
                          ("alarms", alarms), ("tables", tables)):
         others[name] = module.install(window, session)
+    app = QCoreApplication.instance()
+    if app is not None:
+        app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
     window.plc_docks = PlcDocks(session, control, diagnostic, force_list, online, others)
     return window.plc_docks
