@@ -140,7 +140,6 @@ class LadderEditor(QGraphicsView):
         self.inline_editor = QLineEdit(self.viewport())
         self.inline_editor.setObjectName("inline_editor")
         self.inline_editor.hide()
-        self.inline_editor.returnPressed.connect(self._commit_inline)
         self.inline_editor.installEventFilter(self)
         self.inline_message = QLabel(self.viewport())
         self.inline_message.setObjectName("inline_message")
@@ -569,11 +568,15 @@ class LadderEditor(QGraphicsView):
         )
 
     def eventFilter(self, watched: object, event: QEvent) -> bool:
-        """ESC in the inline editor cancels it."""
+        """ENTER in the inline editor commits it, ESC cancels it."""
         if watched is self.inline_editor and event.type() == QEvent.Type.KeyPress:
             assert isinstance(event, QKeyEvent)
             if event.key() == Qt.Key.Key_Escape:
                 self._close_inline()
+                return True
+            if event.key() in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
+                # consumed here: an ignored ENTER would reach the grid and open the editor again
+                self._commit_inline()
                 return True
         return super().eventFilter(watched, event)
 

@@ -1,0 +1,185 @@
+"""The grid editor: in-place address editing, the function table, tools, keys, menu, zoom."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QPoint, Qt, QTimer
+from PySide6.QtWidgets import QApplication, QMenu
+from pytestqt.qtbot import QtBot
+
+from ladderworks.core.address import parse_address
+from ladderworks.core.ladder import Coil, Contact, FunctionBox
+from ladderworks.gui.main_window import MainWindow
+from ladderworks.gui.tools import Tool
+from ladderworks.paths import EXAMPLES
+from tests.gui.conftest import Drawer, type_text
+
+
+def test_invalid_address_is_refused_with_a_message(drawer: Drawer, window: MainWindow,
+                                                   qtbot: QtBot) -> None:
+    drawer.key("I")
+    drawer.click(0, 0, 0)
+    editor = window.editor.inline_editor
+    qtbot.waitUntil(editor.isVisible)
+    type_text(qtbot, editor, "X2.9")
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    message = window.editor.inline_message
+    assert message.isVisible()
+    assert message.text() == "'X2.9': bit number must be 0 to 7"
+    assert editor.isVisible()
+    assert window.editor.networks[0].cells[(0, 0)] == Contact()
+    editor.clear()
+    type_text(qtbot, editor, "X2.1")
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    assert not editor.isVisible()
+    assert window.editor.networks[0].cells[(0, 0)] == Contact(parse_address("X2.1"))
+
+
+def test_address_refusal_is_in_turkish_when_the_ui_is(drawer: Drawer, window: MainWindow,
+                                                      qtbot: QtBot) -> None:
+    window.set_language("tr")
+    drawer.key("O")
+    drawer.click(0, 0, 10)
+    type_text(qtbot, window.editor.inline_editor, "Q1.0")
+    qtbot.keyClick(window.editor.inline_editor, Qt.Key.Key_Return)
+    assert "bilinmeyen alan 'Q'" in window.editor.inline_message.text()
+
+
+def test_function_table_refuses_a_wrong_parameter(drawer: Drawer, window: MainWindow,
+                                                  qtbot: QtBot) -> None:
+    window.palette.set_function("TMRB")
+    assert window.current_tool() is Tool.FUNCTION
+    drawer.click(0, 0, 2)
+    dialog = window.editor.function_dialog
+    assert dialog is not None
+    qtbot.waitUntil(dialog.isVisible)
+    assert [dialog.table.item(r, 0).text() for r in range(2)] == ["Timer number", "Preset"]
+    assert dialog.table.item(0, 2).text() == "1 to 100"
+    dialog.set_value("timer", "101")
+    dialog.set_value("preset", "500")
+    dialog.buttons.button(dialog.buttons.StandardButton.Ok).click()
+    assert dialog.isVisible()
+    assert dialog.warning.text() == "TMRB: parameter 1 (timer) must be 1 to 100, found 101"
+    assert dialog.table.currentRow() == 0
+    assert (0, 2) not in window.editor.networks[0].cells
+    dialog.set_value("timer", "7")
+    with qtbot.waitSignal(dialog.accepted):
+        dialog.buttons.button(dialog.buttons.StandardButton.Ok).click()
+    box = window.editor.networks[0].cells[(0, 2)]
+    assert isinstance(box, FunctionBox) and box.name == "TMRB" and box.params == (7, 500)
+
+
+def test_not_or_and_delete_tools(drawer: Drawer, window: MainWindow) -> None:
+    drawer.element(0, 0, 0, "I", "X1.0")
+    net = window.editor.networks[0]
+    drawer.key("T")
+    drawer.click(0, 0, 0)
+    assert net.cells[(0, 0)] == Contact(parse_address("X1.0"), negated=True)
+    drawer.key("R")
+    drawer.click(0, 0, 0)
+    drawer.type_inline("X1.1")
+    assert net.cells[(1, 0)] == Contact(parse_address("X1.1"))
+    assert {(0, 0), (0, 1)} <= net.links
+    drawer.key("D")
+    drawer.click(0, 1, 0)
+    assert (1, 0) not in net.cells
+    window.editor.undo_stack.undo()
+    assert (1, 0) in net.cells
+
+
+def test_keyboard_moves_edits_and_deletes(window: MainWindow, qtbot: QtBot) -> None:
+    window.load(EXAMPLES / "or_double.LAD")
+    view = window.editor
+    view.setFocus()
+    view.move_cursor(0, 0, 0)
+    qtbot.keyClick(view, Qt.Key.Key_Right)
+    qtbot.keyClick(view, Qt.Key.Key_Down)
+    assert view.cursor_cell == (0, 1, 1)
+    assert "R1.6" in window.cell_label.text()
+    qtbot.keyClick(view, Qt.Key.Key_Return)
+    qtbot.waitUntil(view.inline_editor.isVisible)
+    assert view.inline_editor.text() == "R1.6"
+    view.inline_editor.clear()
+    type_text(qtbot, view.inline_editor, "R1.5 // yeni")
+    qtbot.keyClick(view.inline_editor, Qt.Key.Key_Return)
+    element = view.networks[0].cells[(1, 1)]
+    assert isinstance(element, Contact)
+    assert (str(element.address), element.comment, element.negated) == ("R1.5", "yeni", True)
+    qtbot.keyClick(view, Qt.Key.Key_Delete)
+    assert (1, 1) not in view.networks[0].cells
+    qtbot.keyClick(view, "l")
+    assert window.current_tool() is Tool.LINE
+    qtbot.keyClick(view, Qt.Key.Key_Escape)
+    assert window.current_tool() is Tool.SELECT
+
+
+def test_status_bar_shows_signal_names(window: MainWindow, qtbot: QtBot) -> None:
+    window.load(EXAMPLES / "or_single.LAD")
+    view = window.editor
+    qtbot.mouseMove(view.viewport(), view.cell_point(0, 0, 1))
+    qtbot.waitUntil(lambda: "F2.5" in window.cell_label.text())
+    assert "OPSTP" in window.cell_label.text()
+    assert "İSTEĞE BAĞLI DURMA" in window.cell_label.text()
+
+
+def test_right_click_menu_offers_the_edit_actions(window: MainWindow, qtbot: QtBot) -> None:
+    window.load(EXAMPLES / "or_double.LAD")
+    view = window.editor
+    point = view.cell_point(0, 0, 0)
+    seen: list[str] = []
+
+    def read_menu() -> None:
+        menu = QApplication.activePopupWidget()
+        assert isinstance(menu, QMenu)
+        seen.extend(a.objectName() for a in menu.actions() if a.objectName())
+        menu.close()
+
+    QTimer.singleShot(0, read_menu)
+    qtbot.mouseClick(view.viewport(), Qt.MouseButton.RightButton, pos=point)
+    view.contextMenuEvent(_context_event(view, point))
+    assert seen[:4] == ["action_cut", "action_copy", "action_paste", "action_delete"]
+    assert {"action_invert", "action_or", "action_insert_row_before",
+            "action_insert_row_after"} <= set(seen)
+    assert view.selection is not None and view.selection[0] == 0
+
+
+def _context_event(view: object, point: QPoint) -> object:
+    from PySide6.QtGui import QContextMenuEvent
+
+    viewport = view.viewport()  # type: ignore[attr-defined]
+    return QContextMenuEvent(QContextMenuEvent.Reason.Mouse, point, viewport.mapToGlobal(point))
+
+
+def test_copy_paste_and_insert_rows(window: MainWindow) -> None:
+    window.load(EXAMPLES / "rising_edge.LAD")
+    view = window.editor
+    view.move_cursor(0, 0, 0)
+    window.actions_by_name["action_copy"].trigger()
+    view.move_cursor(1, 0, 2)
+    window.actions_by_name["action_insert_row_after"].trigger()
+    assert view.networks[1].rows == 2
+    view.move_cursor(1, 1, 2)
+    window.actions_by_name["action_paste"].trigger()
+    assert view.networks[1].cells[(1, 2)] == view.networks[0].cells[(0, 0)]
+    window.actions_by_name["action_delete_network"].trigger()
+    assert len(view.networks) == 2
+    window.actions_by_name["action_undo"].trigger()
+    assert len(view.networks) == 3
+
+
+def test_zoom(window: MainWindow) -> None:
+    view = window.editor
+    window.actions_by_name["action_zoom_in"].trigger()
+    assert view.zoom() > 1.0
+    assert view.transform().m11() == view.zoom()
+    window.actions_by_name["action_zoom_reset"].trigger()
+    window.actions_by_name["action_zoom_out"].trigger()
+    assert view.zoom() < 1.0
+
+
+def test_coil_in_a_contact_column_is_diagnosed_at_its_cell(drawer: Drawer,
+                                                           window: MainWindow) -> None:
+    drawer.element(0, 0, 0, "I", "X1.0")
+    drawer.element(0, 0, 1, "O", "Y1.0")
+    assert isinstance(window.editor.networks[0].cells[(0, 1)], Coil)
+    diagnostics = window.check()
+    assert any(d.cell == (0, 1) or d.cell == (0, 2) for d in diagnostics if d.is_error)
