@@ -657,112 +657,112 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="317"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="351"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="316"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="350"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="628"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="328"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="327"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="332"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="607"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="619"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="331"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="610"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="622"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="341"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="636"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="645"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="340"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="639"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="648"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="356"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="355"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="358"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="357"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="367"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="366"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="372"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="371"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="382"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="393"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="392"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="428"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="427"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="432"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="431"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="435"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="467"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="466"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Address, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="442"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="478"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="547"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="568"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="441"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="477"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="546"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="567"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="537"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="536"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="541"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="540"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="666"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="675"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="678"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="684"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="687"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="761"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="764"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>

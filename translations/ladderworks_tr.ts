@@ -657,112 +657,112 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="317"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="351"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="316"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="350"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="628"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="328"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="327"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="332"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="607"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="619"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="331"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="610"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="622"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="341"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="636"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="645"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="340"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="639"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="648"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="356"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="355"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="358"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="357"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="367"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="366"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="372"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="371"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="382"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="393"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="392"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="428"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="427"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="432"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="431"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="435"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="467"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="466"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Adres, örneğin X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="442"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="478"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="547"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="568"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="441"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="477"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="546"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="567"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="537"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="536"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="541"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="540"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="666"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="675"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="678"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="684"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="687"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="761"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="764"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
