@@ -11,11 +11,11 @@ run: install
 	$(PYTHON) -m ladderworks
 
 test: install
-	QT_QPA_PLATFORM=offscreen $(PYTHON) -m ruff check ladderworks tests benchmarks
+	QT_QPA_PLATFORM=offscreen $(PYTHON) -m ruff check ladderworks tests benchmarks tools
 	QT_QPA_PLATFORM=offscreen $(PYTHON) -m pytest -q
 
 lint:
-	$(PYTHON) -m ruff check ladderworks tests benchmarks
+	$(PYTHON) -m ruff check ladderworks tests benchmarks tools
 
 bench: install
 	for script in benchmarks/*.py; do $(PYTHON) $$script || exit 1; done

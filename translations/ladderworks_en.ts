@@ -657,112 +657,112 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="316"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="350"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="628"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="321"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="355"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="633"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="327"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="332"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="331"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="610"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="622"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="336"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="615"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="340"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="639"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="648"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="345"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="644"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="653"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="355"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="357"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="362"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="366"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="371"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="371"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="376"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="382"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="387"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="392"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="427"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="432"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="431"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="435"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="440"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="466"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="471"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Address, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="441"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="477"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="546"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="567"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="446"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="482"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="551"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="572"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="536"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="541"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="540"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="545"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="666"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="671"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="678"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="683"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="687"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="692"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="764"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="769"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -996,8 +996,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/main_window.py" line="578"/>
-        <location filename="../ladderworks/gui/main_window.py" line="593"/>
-        <location filename="../ladderworks/gui/main_window.py" line="605"/>
+        <location filename="../ladderworks/gui/main_window.py" line="601"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
@@ -1007,77 +1006,77 @@
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="594"/>
-        <source>The ladder cannot be written as a program; see the error list.</source>
-        <translation>The ladder cannot be written as a program; see the error list.</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/main_window.py" line="606"/>
+        <location filename="../ladderworks/gui/main_window.py" line="602"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="616"/>
+        <location filename="../ladderworks/gui/main_window.py" line="613"/>
+        <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
+        <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="618"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="624"/>
+        <location filename="../ladderworks/gui/main_window.py" line="626"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="626"/>
+        <location filename="../ladderworks/gui/main_window.py" line="628"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="636"/>
+        <location filename="../ladderworks/gui/main_window.py" line="638"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="638"/>
+        <location filename="../ladderworks/gui/main_window.py" line="640"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="657"/>
+        <location filename="../ladderworks/gui/main_window.py" line="659"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="659"/>
+        <location filename="../ladderworks/gui/main_window.py" line="661"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="670"/>
+        <location filename="../ladderworks/gui/main_window.py" line="672"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="742"/>
+        <location filename="../ladderworks/gui/main_window.py" line="744"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="761"/>
+        <location filename="../ladderworks/gui/main_window.py" line="763"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="767"/>
+        <location filename="../ladderworks/gui/main_window.py" line="769"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Compile finished: {0} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="788"/>
+        <location filename="../ladderworks/gui/main_window.py" line="790"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="789"/>
+        <location filename="../ladderworks/gui/main_window.py" line="791"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>

@@ -657,112 +657,112 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="316"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="350"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="628"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="321"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="355"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="633"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="327"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="332"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="331"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="610"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="622"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="336"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="615"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="340"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="639"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="648"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="345"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="644"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="653"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="355"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="357"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="362"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="366"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="371"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="371"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="376"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="382"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="387"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="392"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="427"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="432"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="431"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="435"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="440"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="466"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="471"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Adres, örneğin X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="441"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="477"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="546"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="567"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="446"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="482"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="551"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="572"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="536"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="541"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="540"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="545"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="666"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="671"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="678"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="683"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="687"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="692"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="764"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="769"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
@@ -996,8 +996,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/main_window.py" line="578"/>
-        <location filename="../ladderworks/gui/main_window.py" line="593"/>
-        <location filename="../ladderworks/gui/main_window.py" line="605"/>
+        <location filename="../ladderworks/gui/main_window.py" line="601"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
@@ -1007,77 +1006,77 @@
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="594"/>
-        <source>The ladder cannot be written as a program; see the error list.</source>
-        <translation>Ladder programa çevrilemiyor; hata listesine bakın.</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/main_window.py" line="606"/>
+        <location filename="../ladderworks/gui/main_window.py" line="602"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="616"/>
+        <location filename="../ladderworks/gui/main_window.py" line="613"/>
+        <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
+        <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="618"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="624"/>
+        <location filename="../ladderworks/gui/main_window.py" line="626"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="626"/>
+        <location filename="../ladderworks/gui/main_window.py" line="628"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="636"/>
+        <location filename="../ladderworks/gui/main_window.py" line="638"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="638"/>
+        <location filename="../ladderworks/gui/main_window.py" line="640"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="657"/>
+        <location filename="../ladderworks/gui/main_window.py" line="659"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="659"/>
+        <location filename="../ladderworks/gui/main_window.py" line="661"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="670"/>
+        <location filename="../ladderworks/gui/main_window.py" line="672"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="742"/>
+        <location filename="../ladderworks/gui/main_window.py" line="744"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="761"/>
+        <location filename="../ladderworks/gui/main_window.py" line="763"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="767"/>
+        <location filename="../ladderworks/gui/main_window.py" line="769"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Derleme bitti (compile finish): {0} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="788"/>
+        <location filename="../ladderworks/gui/main_window.py" line="790"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="789"/>
+        <location filename="../ladderworks/gui/main_window.py" line="791"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>

@@ -583,21 +583,17 @@ class MainWindow(QMainWindow):
                     ).format(path.name),
                 )
                 return False
+            drafts = False
             text = self.text_view.toPlainText()
             if not text.endswith("\n"):
                 text += "\n"
         else:
-            maybe = self.program_text()
-            if maybe is None:
-                self.warn(
-                    translate("MainWindow", "Save"),
-                    translate(
-                        "MainWindow",
-                        "The ladder cannot be written as a program; see the error list.",
-                    ),
-                )
-                return False
-            text = maybe
+            program, diagnostics = self.editor.saved_program()
+            text = print_program(program)
+            drafts = has_errors(diagnostics)
+            self.errors.set_diagnostics(diagnostics)
+            if drafts:
+                self.errors.show()
         try:
             atomic_write(path, text, self.encoding)
         except OSError as error:
@@ -613,7 +609,13 @@ class MainWindow(QMainWindow):
         self.text_view.document().setModified(False)
         self._remember(path)
         self._update_title()
-        self._show_message(translate("MainWindow", "Saved {0}").format(path.name))
+        if drafts:
+            self._show_message(translate(
+                "MainWindow",
+                "Saved {0}; networks with errors are kept as drawings (see the error list)",
+            ).format(path.name))
+        else:
+            self._show_message(translate("MainWindow", "Saved {0}").format(path.name))
         self.file_saved.emit(str(path))
         return True
 

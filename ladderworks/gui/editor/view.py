@@ -29,7 +29,7 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core import ladder as core
 from ladderworks.core.address import Address
-from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program
 from ladderworks.core.instructions import lookup
 from ladderworks.core.ladder import (
@@ -194,6 +194,11 @@ class LadderEditor(QGraphicsView):
 
     def program(self) -> tuple[Program | None, list[Diagnostic]]:
         """The program drawn (None when a network cannot be coded) and the diagnostics."""
+        program, diagnostics = self.saved_program()
+        return (None if has_errors(diagnostics) else program), diagnostics
+
+    def saved_program(self) -> tuple[Program, list[Diagnostic]]:
+        """The program to save: a network that cannot be coded yet is kept as a draft."""
         program, diagnostics = ladder_to_program(self.ladder_document())
         self.mark_diagnostics(diagnostics)
         return program, diagnostics
