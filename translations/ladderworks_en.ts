@@ -589,69 +589,87 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="68"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
         <source>one of {0}</source>
         <translation>one of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="72"/>
         <source>{0} to {1}</source>
         <translation>{0} to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="74"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="76"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte address ({0} bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="76"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="78"/>
         <source>byte address</source>
         <translation>byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="78"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="80"/>
         <source>constant or byte address</source>
         <translation>constant or byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="80"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="82"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>up to 4 binary digits, e.g. 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="81"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="83"/>
         <source>values separated by spaces</source>
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="163"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="168"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="166"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="171"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="169"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="174"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="170"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="175"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="171"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="176"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="197"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="210"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
+    </message>
+</context>
+<context>
+    <name>InstructionHelp</name>
+    <message>
+        <location filename="../ladderworks/gui/help_browser.py" line="122"/>
+        <source>No reference entry for this instruction.</source>
+        <translation>No reference entry for this instruction.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/help_browser.py" line="134"/>
+        <source>Instruction reference</source>
+        <translation>Instruction reference</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/help_browser.py" line="135"/>
+        <source>Search, e.g. TMR</source>
+        <translation>Search, e.g. TMR</translation>
     </message>
 </context>
 <context>
@@ -770,313 +788,318 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="128"/>
+        <location filename="../ladderworks/gui/main_window.py" line="131"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="129"/>
+        <location filename="../ladderworks/gui/main_window.py" line="132"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="130"/>
+        <location filename="../ladderworks/gui/main_window.py" line="133"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="133"/>
+        <location filename="../ladderworks/gui/main_window.py" line="136"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="139"/>
+        <location filename="../ladderworks/gui/main_window.py" line="142"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="144"/>
+        <location filename="../ladderworks/gui/main_window.py" line="147"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="149"/>
+        <location filename="../ladderworks/gui/main_window.py" line="152"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="152"/>
+        <location filename="../ladderworks/gui/main_window.py" line="155"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="157"/>
+        <location filename="../ladderworks/gui/main_window.py" line="160"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/main_window.py" line="165"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <location filename="../ladderworks/gui/main_window.py" line="166"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="164"/>
+        <location filename="../ladderworks/gui/main_window.py" line="167"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="165"/>
+        <location filename="../ladderworks/gui/main_window.py" line="168"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="166"/>
+        <location filename="../ladderworks/gui/main_window.py" line="169"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="169"/>
+        <location filename="../ladderworks/gui/main_window.py" line="172"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="174"/>
+        <location filename="../ladderworks/gui/main_window.py" line="177"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="181"/>
+        <location filename="../ladderworks/gui/main_window.py" line="184"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/main_window.py" line="191"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="195"/>
+        <location filename="../ladderworks/gui/main_window.py" line="198"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="200"/>
+        <location filename="../ladderworks/gui/main_window.py" line="203"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="202"/>
+        <location filename="../ladderworks/gui/main_window.py" line="205"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="203"/>
+        <location filename="../ladderworks/gui/main_window.py" line="206"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="212"/>
+        <location filename="../ladderworks/gui/main_window.py" line="215"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="218"/>
+        <location filename="../ladderworks/gui/main_window.py" line="221"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="222"/>
+        <location filename="../ladderworks/gui/main_window.py" line="225"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="225"/>
+        <location filename="../ladderworks/gui/main_window.py" line="228"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="232"/>
+        <location filename="../ladderworks/gui/main_window.py" line="237"/>
+        <source>&amp;Instruction reference</source>
+        <translation>&amp;Instruction reference</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="241"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="269"/>
+        <location filename="../ladderworks/gui/main_window.py" line="278"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="273"/>
+        <location filename="../ladderworks/gui/main_window.py" line="282"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="290"/>
+        <location filename="../ladderworks/gui/main_window.py" line="299"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="310"/>
+        <location filename="../ladderworks/gui/main_window.py" line="319"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="330"/>
+        <location filename="../ladderworks/gui/main_window.py" line="339"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="334"/>
+        <location filename="../ladderworks/gui/main_window.py" line="343"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="340"/>
+        <location filename="../ladderworks/gui/main_window.py" line="349"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="343"/>
+        <location filename="../ladderworks/gui/main_window.py" line="354"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="346"/>
+        <location filename="../ladderworks/gui/main_window.py" line="359"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="456"/>
+        <location filename="../ladderworks/gui/main_window.py" line="469"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="481"/>
+        <location filename="../ladderworks/gui/main_window.py" line="494"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="482"/>
+        <location filename="../ladderworks/gui/main_window.py" line="495"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="509"/>
+        <location filename="../ladderworks/gui/main_window.py" line="522"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="510"/>
+        <location filename="../ladderworks/gui/main_window.py" line="523"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="535"/>
+        <location filename="../ladderworks/gui/main_window.py" line="548"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="545"/>
+        <location filename="../ladderworks/gui/main_window.py" line="558"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <location filename="../ladderworks/gui/main_window.py" line="560"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="578"/>
-        <location filename="../ladderworks/gui/main_window.py" line="601"/>
+        <location filename="../ladderworks/gui/main_window.py" line="591"/>
+        <location filename="../ladderworks/gui/main_window.py" line="614"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="579"/>
+        <location filename="../ladderworks/gui/main_window.py" line="592"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="602"/>
+        <location filename="../ladderworks/gui/main_window.py" line="615"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="613"/>
+        <location filename="../ladderworks/gui/main_window.py" line="626"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="618"/>
+        <location filename="../ladderworks/gui/main_window.py" line="631"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="626"/>
+        <location filename="../ladderworks/gui/main_window.py" line="639"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="628"/>
+        <location filename="../ladderworks/gui/main_window.py" line="641"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="638"/>
+        <location filename="../ladderworks/gui/main_window.py" line="651"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="640"/>
+        <location filename="../ladderworks/gui/main_window.py" line="653"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="659"/>
+        <location filename="../ladderworks/gui/main_window.py" line="672"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="661"/>
+        <location filename="../ladderworks/gui/main_window.py" line="674"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="672"/>
+        <location filename="../ladderworks/gui/main_window.py" line="685"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="744"/>
+        <location filename="../ladderworks/gui/main_window.py" line="757"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="763"/>
+        <location filename="../ladderworks/gui/main_window.py" line="776"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="769"/>
+        <location filename="../ladderworks/gui/main_window.py" line="782"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Compile finished: {0} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="790"/>
+        <location filename="../ladderworks/gui/main_window.py" line="827"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="791"/>
+        <location filename="../ladderworks/gui/main_window.py" line="828"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -1084,152 +1107,152 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="29"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="31"/>
         <source>Timer number</source>
         <translation>Timer number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="30"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
         <source>Preset</source>
         <translation>Preset</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="31"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
         <source>Timer/counter register</source>
         <translation>Timer/counter register</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
         <source>Code signal</source>
         <translation>Code signal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
         <source>Decode specification</source>
         <translation>Decode specification</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
         <source>First number</source>
         <translation>First number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
         <source>Counter number</source>
         <translation>Counter number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
         <source>Number of positions</source>
         <translation>Number of positions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
         <source>Current position</source>
         <translation>Current position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
         <source>Target position</source>
         <translation>Target position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
         <source>Table size</source>
         <translation>Table size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
         <source>Index</source>
         <translation>Index</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
         <source>Table values</source>
         <translation>Table values</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
         <source>High 4-bit mask</source>
         <translation>High 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
         <source>Low 4-bit mask</source>
         <translation>Low 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
         <source>OR data</source>
         <translation>OR data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="52"/>
         <source>Data</source>
         <translation>Data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
         <source>Number of coils</source>
         <translation>Number of coils</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="52"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Input format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
         <source>Compared data</source>
         <translation>Compared data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
         <source>Searched data</source>
         <translation>Searched data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="57"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="57"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="59"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="60"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="59"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="61"/>
         <source>Constant</source>
         <translation>Constant</translation>
     </message>
@@ -1950,12 +1973,12 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="73"/>
+        <location filename="../ladderworks/gui/palette.py" line="74"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="74"/>
+        <location filename="../ladderworks/gui/palette.py" line="75"/>
         <source>Function:</source>
         <translation>Function:</translation>
     </message>

@@ -589,69 +589,87 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="68"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
         <source>one of {0}</source>
         <translation>şunlardan biri: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="72"/>
         <source>{0} to {1}</source>
         <translation>{0} ile {1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="74"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="76"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte adresi ({0} byte)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="76"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="78"/>
         <source>byte address</source>
         <translation>byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="78"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="80"/>
         <source>constant or byte address</source>
         <translation>sabit veya byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="80"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="82"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>en çok 4 ikili hane, örneğin 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="81"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="83"/>
         <source>values separated by spaces</source>
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="163"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="168"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="166"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="171"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="169"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="174"/>
         <source>Parameter</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="170"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="175"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="171"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="176"/>
         <source>Allowed</source>
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="197"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="210"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
+    </message>
+</context>
+<context>
+    <name>InstructionHelp</name>
+    <message>
+        <location filename="../ladderworks/gui/help_browser.py" line="122"/>
+        <source>No reference entry for this instruction.</source>
+        <translation>Bu komut için başvuru kaydı yok.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/help_browser.py" line="134"/>
+        <source>Instruction reference</source>
+        <translation>Komut başvurusu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/help_browser.py" line="135"/>
+        <source>Search, e.g. TMR</source>
+        <translation>Ara, örn. TMR</translation>
     </message>
 </context>
 <context>
@@ -770,313 +788,318 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="128"/>
+        <location filename="../ladderworks/gui/main_window.py" line="131"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="129"/>
+        <location filename="../ladderworks/gui/main_window.py" line="132"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="130"/>
+        <location filename="../ladderworks/gui/main_window.py" line="133"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="133"/>
+        <location filename="../ladderworks/gui/main_window.py" line="136"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="139"/>
+        <location filename="../ladderworks/gui/main_window.py" line="142"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="144"/>
+        <location filename="../ladderworks/gui/main_window.py" line="147"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="149"/>
+        <location filename="../ladderworks/gui/main_window.py" line="152"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="152"/>
+        <location filename="../ladderworks/gui/main_window.py" line="155"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="157"/>
+        <location filename="../ladderworks/gui/main_window.py" line="160"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/main_window.py" line="165"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <location filename="../ladderworks/gui/main_window.py" line="166"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="164"/>
+        <location filename="../ladderworks/gui/main_window.py" line="167"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="165"/>
+        <location filename="../ladderworks/gui/main_window.py" line="168"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="166"/>
+        <location filename="../ladderworks/gui/main_window.py" line="169"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="169"/>
+        <location filename="../ladderworks/gui/main_window.py" line="172"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="174"/>
+        <location filename="../ladderworks/gui/main_window.py" line="177"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="181"/>
+        <location filename="../ladderworks/gui/main_window.py" line="184"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/main_window.py" line="191"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="195"/>
+        <location filename="../ladderworks/gui/main_window.py" line="198"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="200"/>
+        <location filename="../ladderworks/gui/main_window.py" line="203"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="202"/>
+        <location filename="../ladderworks/gui/main_window.py" line="205"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="203"/>
+        <location filename="../ladderworks/gui/main_window.py" line="206"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="212"/>
+        <location filename="../ladderworks/gui/main_window.py" line="215"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="218"/>
+        <location filename="../ladderworks/gui/main_window.py" line="221"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="222"/>
+        <location filename="../ladderworks/gui/main_window.py" line="225"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="225"/>
+        <location filename="../ladderworks/gui/main_window.py" line="228"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="232"/>
+        <location filename="../ladderworks/gui/main_window.py" line="237"/>
+        <source>&amp;Instruction reference</source>
+        <translation>&amp;Komut başvurusu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="241"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="269"/>
+        <location filename="../ladderworks/gui/main_window.py" line="278"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="273"/>
+        <location filename="../ladderworks/gui/main_window.py" line="282"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="290"/>
+        <location filename="../ladderworks/gui/main_window.py" line="299"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="310"/>
+        <location filename="../ladderworks/gui/main_window.py" line="319"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="330"/>
+        <location filename="../ladderworks/gui/main_window.py" line="339"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="334"/>
+        <location filename="../ladderworks/gui/main_window.py" line="343"/>
         <source>&amp;Tools</source>
         <translation>&amp;Takımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="340"/>
+        <location filename="../ladderworks/gui/main_window.py" line="349"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="343"/>
+        <location filename="../ladderworks/gui/main_window.py" line="354"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="346"/>
+        <location filename="../ladderworks/gui/main_window.py" line="359"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="456"/>
+        <location filename="../ladderworks/gui/main_window.py" line="469"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="481"/>
+        <location filename="../ladderworks/gui/main_window.py" line="494"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="482"/>
+        <location filename="../ladderworks/gui/main_window.py" line="495"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="509"/>
+        <location filename="../ladderworks/gui/main_window.py" line="522"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="510"/>
+        <location filename="../ladderworks/gui/main_window.py" line="523"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="535"/>
+        <location filename="../ladderworks/gui/main_window.py" line="548"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="545"/>
+        <location filename="../ladderworks/gui/main_window.py" line="558"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <location filename="../ladderworks/gui/main_window.py" line="560"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="578"/>
-        <location filename="../ladderworks/gui/main_window.py" line="601"/>
+        <location filename="../ladderworks/gui/main_window.py" line="591"/>
+        <location filename="../ladderworks/gui/main_window.py" line="614"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="579"/>
+        <location filename="../ladderworks/gui/main_window.py" line="592"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="602"/>
+        <location filename="../ladderworks/gui/main_window.py" line="615"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="613"/>
+        <location filename="../ladderworks/gui/main_window.py" line="626"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="618"/>
+        <location filename="../ladderworks/gui/main_window.py" line="631"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="626"/>
+        <location filename="../ladderworks/gui/main_window.py" line="639"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="628"/>
+        <location filename="../ladderworks/gui/main_window.py" line="641"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="638"/>
+        <location filename="../ladderworks/gui/main_window.py" line="651"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="640"/>
+        <location filename="../ladderworks/gui/main_window.py" line="653"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="659"/>
+        <location filename="../ladderworks/gui/main_window.py" line="672"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="661"/>
+        <location filename="../ladderworks/gui/main_window.py" line="674"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="672"/>
+        <location filename="../ladderworks/gui/main_window.py" line="685"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="744"/>
+        <location filename="../ladderworks/gui/main_window.py" line="757"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="763"/>
+        <location filename="../ladderworks/gui/main_window.py" line="776"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="769"/>
+        <location filename="../ladderworks/gui/main_window.py" line="782"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Derleme bitti (compile finish): {0} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="790"/>
+        <location filename="../ladderworks/gui/main_window.py" line="827"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="791"/>
+        <location filename="../ladderworks/gui/main_window.py" line="828"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -1084,152 +1107,152 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="29"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="31"/>
         <source>Timer number</source>
         <translation>Zamanlayıcı numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="30"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
         <source>Preset</source>
         <translation>Ayar değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="31"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
         <source>Accuracy</source>
         <translation>Hassasiyet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
         <source>Timer/counter register</source>
         <translation>Zamanlayıcı/sayıcı kaydı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
         <source>Code signal</source>
         <translation>Kod sinyali</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
         <source>Decode specification</source>
         <translation>Kod çözme tanımı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
         <source>First number</source>
         <translation>İlk sayı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
         <source>Counter number</source>
         <translation>Sayıcı numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
         <source>Number of positions</source>
         <translation>Pozisyon sayısı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
         <source>Current position</source>
         <translation>Mevcut pozisyon</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
         <source>Target position</source>
         <translation>Hedef pozisyon</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
         <source>Table size</source>
         <translation>Tablo boyu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
         <source>Index</source>
         <translation>İndeks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
         <source>Output</source>
         <translation>Çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
         <source>Table values</source>
         <translation>Tablo değerleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
         <source>Input</source>
         <translation>Giriş</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
         <source>High 4-bit mask</source>
         <translation>Üst 4 bit maskesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
         <source>Low 4-bit mask</source>
         <translation>Alt 4 bit maskesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
         <source>OR data</source>
         <translation>VEYA verisi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="52"/>
         <source>Data</source>
         <translation>Veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
         <source>Number of coils</source>
         <translation>Çıkış sayısı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="52"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Giriş formatı (0 sabit, 1 adres)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
         <source>Compared data</source>
         <translation>Karşılaştırılan veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
         <source>Searched data</source>
         <translation>Aranan veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="57"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand formatı (0 sabit, 1 adres)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="57"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="59"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="60"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="59"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="61"/>
         <source>Constant</source>
         <translation>Sabit</translation>
     </message>
@@ -1950,12 +1973,12 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="73"/>
+        <location filename="../ladderworks/gui/palette.py" line="74"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="74"/>
+        <location filename="../ladderworks/gui/palette.py" line="75"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QLocale, Qt
+from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (
     QDialog,
@@ -21,6 +21,8 @@ from ladderworks.core.il import Instruction, parse
 from ladderworks.core.il.printer import print_instruction
 from ladderworks.core.instructions import InstructionSpec, Param, ParamKind
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.help_browser import InstructionHelp
+from ladderworks.gui.translation import instruction_title
 
 
 def param_label(name: str) -> str:
@@ -133,9 +135,12 @@ class FunctionDialog(QDialog):
         self.warning.hide()
         layout.addWidget(self.warning)
         self.buttons = QDialogButtonBox(
-            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self)
+            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
+            | QDialogButtonBox.StandardButton.Help, self)
         self.buttons.accepted.connect(self.accept)
         self.buttons.rejected.connect(self.reject)
+        self.buttons.helpRequested.connect(self.show_help)
+        self.help_window: InstructionHelp | None = None
         layout.addWidget(self.buttons)
         self._params = list(spec.params)
         self.table.setRowCount(len(self._params))
@@ -162,7 +167,7 @@ class FunctionDialog(QDialog):
         """Set the texts in the current UI language."""
         self._title.setText(QCoreApplication.translate(
             "FunctionDialog", "{0} — {1}: fill in the parameters").format(
-            self.spec.name, self.spec.title_tr if _turkish() else self.spec.title))
+            self.spec.name, instruction_title(self.spec)))
         self._comment_label.setText(QCoreApplication.translate(
             "FunctionDialog", "Comment (shown with the box, written after // in the file):"))
         self.table.setHorizontalHeaderLabels([
@@ -173,6 +178,14 @@ class FunctionDialog(QDialog):
         for row, param in enumerate(self._params):
             self.table.item(row, 0).setText(param_label(param.name))
             self.table.item(row, 2).setText(allowed_text(param))
+
+    def show_help(self) -> InstructionHelp:
+        """The Help button: this instruction's reference entry, beside the dialog."""
+        if self.help_window is None:
+            self.help_window = InstructionHelp(self)
+        self.help_window.show_instruction(self.spec.name)
+        self.help_window.show()
+        return self.help_window
 
     def set_value(self, name: str, text: str) -> None:
         """Type `text` into the row of parameter `name`."""
@@ -219,5 +232,3 @@ class FunctionDialog(QDialog):
         return print_instruction(self.instruction) if self.instruction else ""
 
 
-def _turkish() -> bool:
-    return QLocale().language() == QLocale.Language.Turkish

@@ -21,10 +21,12 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, parse_file, print_program
+from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.files import atomic_write
+from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.text_view import ProgramTextView
@@ -92,6 +94,7 @@ class MainWindow(QMainWindow):
         self.retranslate()
         self.resize(1200, 800)
         self._first_show = True
+        self.help_window: InstructionHelp | None = None
         geometry, state = settings.window_state()
         if geometry is not None:
             self.restoreGeometry(geometry)
@@ -229,6 +232,12 @@ class MainWindow(QMainWindow):
         )
         a("action_language_en", lambda: "English", lambda: self.set_language("en"))
         a("action_language_tr", lambda: "Türkçe", lambda: self.set_language("tr"))
+        a(
+            "action_instruction_help",
+            lambda: translate("MainWindow", "&Instruction reference"),
+            self.show_instruction_help,
+            QKeySequence.StandardKey.HelpContents,
+        )
         a("action_about", lambda: translate("MainWindow", "&About LadderWorks"), self.about)
         languages = QActionGroup(self)
         for code in ("en", "tr"):
@@ -340,7 +349,11 @@ class MainWindow(QMainWindow):
             lambda: translate("MainWindow", "&Language"),
             ["action_language_en", "action_language_tr"],
         )
-        self._menu("menu_help", lambda: translate("MainWindow", "&Help"), ["action_about"])
+        self._menu(
+            "menu_help",
+            lambda: translate("MainWindow", "&Help"),
+            ["action_instruction_help", "action_about"],
+        )
         toolbar = QToolBar(self)
         toolbar.setObjectName("toolbar_main")
         self._texts.append((toolbar, lambda: translate("MainWindow", "Main toolbar")))
@@ -783,6 +796,30 @@ class MainWindow(QMainWindow):
 
     # -- help and closing ----------------------------------------------------------------
 
+    def instruction_at_cursor(self) -> str:
+        """The instruction help should show: the element at the cursor, else the palette's."""
+        index, row, col = self.editor.cursor_cell
+        if index < len(self.editor.networks):
+            found = self.editor.networks[index].element_at(row, col)
+            if found is not None:
+                element = found[1]
+                if isinstance(element, FunctionBox):
+                    return element.name
+                if isinstance(element, Contact):
+                    return "RD.NOT" if element.negated else "RD"
+                if isinstance(element, Coil):
+                    return "WRT.NOT" if element.negated else "WRT"
+        return self.palette.current_function()
+
+    def show_instruction_help(self, name: str | None = None) -> InstructionHelp:
+        """Help > Instruction reference (F1): `name`'s entry, or the element at the cursor's."""
+        if self.help_window is None:
+            self.help_window = InstructionHelp(self)
+        self.help_window.show_instruction(name or self.instruction_at_cursor())
+        self.help_window.show()
+        self.help_window.raise_()
+        return self.help_window
+
     def about(self) -> None:
         """Help > About."""
         QMessageBox.about(
@@ -811,4 +848,6 @@ class MainWindow(QMainWindow):
             event.ignore()
             return
         self.settings.set_window_state(self.saveGeometry(), self.saveState())
+        if self.help_window is not None:
+            self.help_window.close()
         event.accept()

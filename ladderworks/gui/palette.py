@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent, QLocale, QSize, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, QSize, Qt, Signal
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import (
     QComboBox,
@@ -15,6 +15,7 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.instructions import MANUAL_ORDER, lookup
+from ladderworks.gui.translation import instruction_title
 
 
 class ToolPalette(QDockWidget):
@@ -72,11 +73,10 @@ class ToolPalette(QDockWidget):
         """Set the texts in the current UI language."""
         self.setWindowTitle(QCoreApplication.translate("ToolPalette", "Tools"))
         self._function_label.setText(QCoreApplication.translate("ToolPalette", "Function:"))
-        turkish = QLocale().language() == QLocale.Language.Turkish
         for index in range(self.functions.count()):
             spec = lookup(str(self.functions.itemData(index)))
             assert spec is not None
-            title = spec.title_tr if turkish else spec.title
+            title = instruction_title(spec)
             self.functions.setItemText(index, f"{spec.name} — {title}")
             self.functions.setItemData(index, title, Qt.ItemDataRole.ToolTipRole)
 

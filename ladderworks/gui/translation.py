@@ -16,6 +16,7 @@ from PySide6.QtCore import (
     QTranslator,
 )
 
+from ladderworks.core.instructions import InstructionSpec
 from ladderworks.gui.settings import LANGUAGES
 from ladderworks.paths import TRANSLATIONS
 
@@ -23,6 +24,16 @@ from ladderworks.paths import TRANSLATIONS
 def system_language() -> str:
     """'tr' when the system locale is Turkish, else 'en'."""
     return "tr" if QLocale.system().language() == QLocale.Language.Turkish else "en"
+
+
+def ui_is_turkish() -> bool:
+    """True while the UI language is Turkish (the translators set the default QLocale)."""
+    return QLocale().language() == QLocale.Language.Turkish
+
+
+def instruction_title(spec: InstructionSpec) -> str:
+    """An instruction's title in the UI language (the seed manual's Turkish words)."""
+    return spec.title_tr if ui_is_turkish() else spec.title
 
 
 def ts_file(language: str) -> Path:

@@ -1,0 +1,145 @@
+"""The instruction help window: every instruction of the table and its reference entry."""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from PySide6.QtCore import QCoreApplication, QEvent, Qt
+from PySide6.QtWidgets import (
+    QDialog,
+    QHBoxLayout,
+    QLineEdit,
+    QListWidget,
+    QListWidgetItem,
+    QSplitter,
+    QTextBrowser,
+    QVBoxLayout,
+    QWidget,
+)
+
+from ladderworks.core.instructions import ALL, InstructionSpec, lookup
+from ladderworks.gui.translation import instruction_title
+from ladderworks.paths import ROOT
+
+translate = QCoreApplication.translate
+
+REFERENCE = ROOT / "docs" / "instructions.md"
+_ANCHOR = re.compile(r'\s*<a id="([^"]+)"></a>\s*$')
+
+
+@lru_cache(maxsize=1)
+def reference_sections() -> dict[str, str]:
+    """The markdown of each instruction's entry in docs/instructions.md, by help key."""
+    sections: dict[str, str] = {}
+    key: str | None = None
+    lines: list[str] = []
+    text = REFERENCE.read_text("utf-8") if REFERENCE.exists() else ""
+    for line in text.splitlines():
+        heading = line.startswith(("## ", "### "))
+        if heading and key is not None:
+            sections[key] = "\n".join(lines).strip() + "\n"
+            key = None
+        if heading:
+            match = _ANCHOR.search(line)
+            if match:
+                key = match.group(1)
+                lines = [_ANCHOR.sub("", line).replace("### ", "## ", 1)]
+            continue
+        if key is not None:
+            lines.append(line)
+    if key is not None:
+        sections[key] = "\n".join(lines).strip() + "\n"
+    return sections
+
+
+class InstructionHelp(QDialog):
+    """A non-modal window: the instruction list on the left, the chosen entry on the right."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("dialog_instruction_help")
+        self.resize(900, 600)
+        self.filter = QLineEdit(self)
+        self.filter.setObjectName("help_filter")
+        self.filter.setClearButtonEnabled(True)
+        self.filter.textChanged.connect(self._apply_filter)
+        self.list = QListWidget(self)
+        self.list.setObjectName("help_list")
+        self.browser = QTextBrowser(self)
+        self.browser.setObjectName("help_text")
+        self.browser.setOpenExternalLinks(False)
+        left = QWidget(self)
+        column = QVBoxLayout(left)
+        column.setContentsMargins(0, 0, 0, 0)
+        column.addWidget(self.filter)
+        column.addWidget(self.list)
+        splitter = QSplitter(Qt.Orientation.Horizontal, self)
+        splitter.addWidget(left)
+        splitter.addWidget(self.browser)
+        splitter.setStretchFactor(1, 3)
+        layout = QHBoxLayout(self)
+        layout.addWidget(splitter)
+        self._fill()
+        self.list.currentItemChanged.connect(self._on_current)
+        self.retranslate()
+
+    def _fill(self) -> None:
+        self.list.clear()
+        for spec in ALL:
+            item = QListWidgetItem(f"{spec.name} — {instruction_title(spec)}")
+            item.setData(Qt.ItemDataRole.UserRole, spec.name)
+            self.list.addItem(item)
+
+    def show_instruction(self, name: str) -> bool:
+        """Select and show the entry of instruction `name`; False if there is none."""
+        spec = lookup(name)
+        if spec is None:
+            return False
+        self.filter.clear()
+        for row in range(self.list.count()):
+            item = self.list.item(row)
+            if item.data(Qt.ItemDataRole.UserRole) == spec.name:
+                self.list.setCurrentItem(item)
+                self._show(spec)
+                return True
+        return False
+
+    def shown_name(self) -> str | None:
+        """The instruction whose entry is shown."""
+        item = self.list.currentItem()
+        return None if item is None else str(item.data(Qt.ItemDataRole.UserRole))
+
+    def _on_current(self, item: QListWidgetItem | None, _previous: object = None) -> None:
+        if item is not None:
+            spec = lookup(str(item.data(Qt.ItemDataRole.UserRole)))
+            if spec is not None:
+                self._show(spec)
+
+    def _show(self, spec: InstructionSpec) -> None:
+        section = reference_sections().get(spec.help_key)
+        if section is None:
+            section = "## " + spec.name + "\n\n" + translate(
+                "InstructionHelp", "No reference entry for this instruction.")
+        self.browser.setMarkdown(section)
+
+    def _apply_filter(self, text: str) -> None:
+        needle = text.strip().casefold()
+        for row in range(self.list.count()):
+            item = self.list.item(row)
+            item.setHidden(bool(needle) and needle not in item.text().casefold())
+
+    def retranslate(self) -> None:
+        """Set the texts in the current language."""
+        self.setWindowTitle(translate("InstructionHelp", "Instruction reference"))
+        self.filter.setPlaceholderText(translate("InstructionHelp", "Search, e.g. TMR"))
+        shown = self.shown_name()
+        self._fill()
+        if shown is not None:
+            self.show_instruction(shown)
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate when the language changes."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)

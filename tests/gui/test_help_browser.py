@@ -1,0 +1,63 @@
+"""The instruction reference window: every instruction reachable, F1 and the dialog's Help."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Qt
+from pytestqt.qtbot import QtBot
+
+from ladderworks.core.instructions import ALL, BY_NAME
+from ladderworks.gui.function_dialog import FunctionDialog
+from ladderworks.gui.help_browser import reference_sections
+from ladderworks.gui.main_window import MainWindow
+from ladderworks.paths import EXAMPLES
+
+
+def test_every_instruction_has_an_entry() -> None:
+    sections = reference_sections()
+    assert {spec.help_key for spec in ALL} <= set(sections)
+    assert sections["instr-tmr"].startswith("## TMR")
+    assert "<a id=" not in sections["instr-rot"]
+
+
+def test_help_menu_opens_the_entry_of_the_element_at_the_cursor(window: MainWindow,
+                                                                 qtbot: QtBot) -> None:
+    assert window.load(EXAMPLES / "timer_relay.LAD")
+    net = window.editor.networks[0]
+    box = next(cell for cell, element in net.cells.items()
+               if getattr(element, "name", "") == "TMR")
+    window.editor.cursor_cell = (0, *box)
+    window.actions_by_name["action_instruction_help"].trigger()
+    help_window = window.help_window
+    assert help_window is not None
+    qtbot.waitUntil(help_window.isVisible)
+    assert help_window.shown_name() == "TMR"
+    assert "TMR — Timer" in help_window.browser.toPlainText()
+    window.editor.cursor_cell = (0, 0, 0)  # the contact R1.4
+    window.show_instruction_help()
+    assert help_window.shown_name() == "RD"
+    assert help_window.list.count() == len(ALL)
+
+
+def test_search_filters_the_list(window: MainWindow) -> None:
+    help_window = window.show_instruction_help("ROT")
+    help_window.filter.setText("rot")
+    visible = [help_window.list.item(i).text() for i in range(help_window.list.count())
+               if not help_window.list.item(i).isHidden()]
+    assert [text.split(" ")[0] for text in visible] == ["ROT", "ROTB"]
+
+
+def test_function_dialog_help_button(qtbot: QtBot) -> None:
+    dialog = FunctionDialog(BY_NAME["DECB"])
+    qtbot.addWidget(dialog)
+    dialog.show()
+    help_button = dialog.buttons.button(dialog.buttons.StandardButton.Help)
+    qtbot.mouseClick(help_button, Qt.MouseButton.LeftButton)
+    assert dialog.help_window is not None and dialog.help_window.shown_name() == "DECB"
+    assert "DECB" in dialog.help_window.browser.toPlainText()
+
+
+def test_closing_the_console_closes_its_help(window: MainWindow, qtbot: QtBot) -> None:
+    help_window = window.show_instruction_help("CTR")
+    qtbot.waitUntil(help_window.isVisible)
+    window.close()
+    assert not help_window.isVisible()
