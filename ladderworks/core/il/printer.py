@@ -2,9 +2,21 @@
 
 from __future__ import annotations
 
-from ladderworks.core.address import Address
-from ladderworks.core.il.program import Instruction, Program, Section
-from ladderworks.core.instructions import ParamKind
+from ladderworks.core.il.program import Instruction, ParamValue, Program, Section
+from ladderworks.core.instructions import InstructionSpec, ParamKind
+
+
+def format_params(spec: InstructionSpec, params: tuple[ParamValue, ...]) -> list[str]:
+    """Each parameter as written in the text (addresses canonical, MOVE masks as 4 digits)."""
+    fixed = spec.fixed_params()
+    out: list[str] = []
+    for index, value in enumerate(params):
+        param = fixed[index] if index < len(fixed) else None
+        if param is not None and param.kind is ParamKind.MASK and isinstance(value, int):
+            out.append(f"{value:04b}")
+        else:
+            out.append(str(value))
+    return out
 
 
 def print_instruction(instruction: Instruction) -> str:
@@ -13,15 +25,7 @@ def print_instruction(instruction: Instruction) -> str:
     parts = [spec.name]
     if instruction.operand is not None:
         parts.append(str(instruction.operand))
-    fixed = spec.fixed_params()
-    for index, value in enumerate(instruction.params):
-        param = fixed[index] if index < len(fixed) else None
-        if param is not None and param.kind is ParamKind.MASK and isinstance(value, int):
-            parts.append(f"{value:04b}")
-        elif isinstance(value, Address):
-            parts.append(str(value))
-        else:
-            parts.append(str(value))
+    parts.extend(format_params(spec, instruction.params))
     text = " ".join(parts)
     if instruction.comment:
         text += "  // " + instruction.comment

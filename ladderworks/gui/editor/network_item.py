@@ -9,6 +9,8 @@ from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPainter, QPen
 from PySide6.QtWidgets import QGraphicsItem, QStyleOptionGraphicsItem, QWidget
 
 from ladderworks.core.il import print_instruction
+from ladderworks.core.il.printer import format_params
+from ladderworks.core.instructions import lookup
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
 from ladderworks.gui.editor.geometry import (
     CELL_H,
@@ -195,14 +197,23 @@ class NetworkItem(QGraphicsItem):
         painter.setFont(label_font)
         painter.drawText(QRectF(rect.left(), rect.top() + 2, rect.width(), 16),
                          Qt.AlignmentFlag.AlignHCenter, box.name)
-        params = " ".join(str(p) for p in box.params)
+        spec = lookup(box.name)
+        params = " ".join(format_params(spec, box.params) if spec else map(str, box.params))
+        painter.setFont(small_font)
+        metrics = QFontMetricsF(small_font)
         if params:
-            painter.setFont(small_font)
-            metrics = QFontMetricsF(small_font)
             painter.drawText(QRectF(rect.left() + 4, rect.bottom() - 16, rect.width() - 8, 14),
                              Qt.AlignmentFlag.AlignHCenter,
                              metrics.elidedText(params, Qt.TextElideMode.ElideRight,
                                                 rect.width() - 8))
+        if box.comment:
+            pen = painter.pen()
+            painter.setPen(NAME)
+            painter.drawText(QRectF(rect.left() + 4, rect.top() + 18, rect.width() - 8, 14),
+                             Qt.AlignmentFlag.AlignHCenter,
+                             metrics.elidedText(box.comment, Qt.TextElideMode.ElideRight,
+                                                rect.width() - 8))
+            painter.setPen(pen)
 
     def _paint_listing(self, painter: QPainter, top: float) -> None:
         painter.setPen(QPen(EMPTY_HINT, 1, Qt.PenStyle.DashLine))
