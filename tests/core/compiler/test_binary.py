@@ -147,3 +147,20 @@ def test_random_damage_with_a_valid_checksum_never_crashes_the_engine() -> None:
             ScanEngine(bytes(data)).run_scans(3)
         except DiagnosticError as error:  # BinaryFormatError or a failed check
             assert error.diagnostics
+
+
+def test_random_programs_round_trip_to_identical_bytes() -> None:
+    import random
+
+    from tests.core.plc.test_engine import random_program
+
+    rng = random.Random(11)
+    for _ in range(40):
+        ops = random_program(rng, rng.randint(1, 8))
+        text = "\n".join(n if a is None else f"{n} {a}" for n, a in ops)
+        extra = f"\nRD R9.0\nTMRB {rng.randint(1, 100)} {rng.randint(0, 99_999_999)}\nWRT R9.1"
+        binary = compile(parse("%@3\n" + text + extra + "\n%\n").program)
+        assert compile(disassemble(binary)) == binary
+        reprinted = decode(compile(parse(print_program(disassemble(binary))).program))
+        assert [(op.name, op.operand, op.params) for op in reprinted.ops] == [
+            (op.name, op.operand, op.params) for op in decode(binary).ops]
