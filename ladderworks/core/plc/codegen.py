@@ -102,7 +102,7 @@ class _Generator:
                 previous_network = op.source.network
                 self.values = [_Value("0")]
             self.op(index, op)
-            if self.monitored:
+            if self.monitored and op.name != "JMP":  # JMP records its ACT before the jump
                 self.store_all()
                 self.emit(f"M[{index}] = {self.var(len(self.values) - 1)}")
         if self.jumps:
@@ -224,6 +224,8 @@ class _Generator:
         inputs = [self.var(d) for d in range(first, len(self.values))]
         name = spec.name
         if name == "JMP":
+            if self.monitored:
+                self.emit(f"M[{index}] = {inputs[-1]}")
             self.emit(f"if not {inputs[-1]}:" if not off else "if 1:")
             self.indent += 1
             self.emit("pass")

@@ -348,3 +348,14 @@ def test_disabled_coil_still_counts_in_a_com_range() -> None:
     engine.memory.set_bit(at("X0.1"), 1)
     engine.scan()
     assert (bit(engine, "Y0.1"), bit(engine, "Y0.2")) == (0, 1)
+
+
+def test_power_flow_shows_a_jump_taken_and_the_skipped_ops_off() -> None:
+    engine = engine_for("RD X0.0\nJMP\nRD X0.1\nWRT Y0.1\nJMPE\nRD X0.1\nWRT Y0.2")
+    engine.monitored = True
+    engine.memory.set_bit(at("X0.1"), 1)
+    engine.scan()
+    assert list(engine.power_flow) == [0, 0, 1, 1, 0, 1, 1]
+    engine.memory.set_bit(at("X0.0"), 1)
+    engine.scan()
+    assert list(engine.power_flow) == [1, 1, 0, 0, 0, 1, 1]
