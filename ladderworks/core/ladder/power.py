@@ -9,6 +9,19 @@ from ladderworks.core.ladder.decompose import NodeNets
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork
 
 
+def powered_nets(source: int, edges: list[tuple[int, int]]) -> set[int]:
+    """The nets power reaches from `source` along one-way edges (closed contacts, boxes)."""
+    powered = {source}
+    changed = True
+    while changed:
+        changed = False
+        for src, dst in edges:
+            if src in powered and dst not in powered:
+                powered.add(dst)
+                changed = True
+    return powered
+
+
 class PowerFlow:
     """Which nodes of a network carry power for given contact values.
 
@@ -25,15 +38,7 @@ class PowerFlow:
             if (isinstance(element, Contact) and element.address is not None
                     and value(element.address) != element.negated):
                 edges.append((self._nets.net((r, c)), self._nets.net((r, c + 1))))
-        powered = {left}
-        changed = True
-        while changed:
-            changed = False
-            for src, dst in edges:
-                if src in powered and dst not in powered:
-                    powered.add(dst)
-                    changed = True
-        self._powered = powered
+        self._powered = powered_nets(left, edges)
 
     def node(self, row: int, node: int) -> bool:
         """True when node (row, k) carries power."""

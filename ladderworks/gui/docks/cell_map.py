@@ -14,6 +14,7 @@ from ladderworks.core.il.program import Instruction, Network, Program
 from ladderworks.core.ladder.decompose import NodeNets, read_grid
 from ladderworks.core.ladder.logic import code_logic
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork, Wire
+from ladderworks.core.ladder.power import powered_nets
 
 OpKey = tuple[str, object, tuple[object, ...]]
 
@@ -171,14 +172,7 @@ def network_power(network: LadderNetwork, value: Callable[[Address], int],
         box = network.cells[anchor]
         assert isinstance(box, FunctionBox)
         edges.append((nets.net((0, 0)), nets.net((anchor[0], anchor[1] + box.width))))
-    powered = {nets.net((0, 0))}
-    changed = True
-    while changed:
-        changed = False
-        for src, dst in edges:
-            if src in powered and dst not in powered:
-                powered.add(dst)
-                changed = True
+    powered = powered_nets(nets.net((0, 0)), edges)
     for r in range(network.rows):
         for k in range(network.columns + 1):
             if nets.net((r, k)) in powered:
