@@ -123,17 +123,8 @@ def test_or_single_stop_signal_is_inverted() -> None:
     assert bit(engine, "G8.5") == 0
 
 
-RIGHT_ORDER = """
-RD X17.0
-AND.NOT R10.0
-WRT R11.0
-RD X17.0
-WRT R10.0
-"""
-
-
 def test_rising_edge_in_the_right_order_lasts_exactly_one_scan() -> None:
-    engine = engine_for(RIGHT_ORDER)
+    engine = engine_for_example("rising_edge_pulse.LAD")
     pulses = []
     for press in [0, 0, 1, 1, 1, 1, 0, 0, 1, 1]:
         set_bit(engine, "X17.0", press)
