@@ -147,7 +147,7 @@ class BitDisplayDock(QDockWidget):
         grid.addWidget(self.dec_header, 0, 10)
         self.rows = [BitRow(self, index, grid) for index in range(BOX_COUNT)]
         grid.setColumnStretch(11, 1)
-        scroll = QScrollArea(body)
+        self._scroll = scroll = QScrollArea(body)
         scroll.setWidgetResizable(True)
         scroll.setWidget(grid_holder)
         outer.addWidget(scroll, 1)
@@ -331,6 +331,15 @@ class BitDisplayDock(QDockWidget):
                 if self.live:
                     self._show_row(row, self.session.snapshot())
         self._update_state()
+        self._fit_width()
+
+    def _fit_width(self) -> None:
+        """Ask for the width the rows need in this language, so no column is cut off."""
+        holder = self._scroll.widget()
+        holder.adjustSize()
+        bar = self._scroll.verticalScrollBar().sizeHint().width()
+        frame = 2 * self._scroll.frameWidth()
+        self._scroll.setMinimumWidth(holder.minimumSizeHint().width() + bar + frame)
 
     def changeEvent(self, event: QEvent) -> None:
         """Retranslate on a language change."""
