@@ -183,3 +183,44 @@ def test_coil_in_a_contact_column_is_diagnosed_at_its_cell(drawer: Drawer,
     assert isinstance(window.editor.networks[0].cells[(0, 1)], Coil)
     diagnostics = window.check()
     assert any(d.cell == (0, 1) or d.cell == (0, 2) for d in diagnostics if d.is_error)
+
+
+def test_drag_selects_a_rectangle_that_copies_and_pastes_whole(window: MainWindow,
+                                                               qtbot: QtBot) -> None:
+    window.load(EXAMPLES / "or_double.LAD")  # rows 0 and 1: two contacts each, then OR
+    view = window.editor
+    source = view.networks[0]
+    start = view.cell_point(0, 0, 0)
+    end = view.cell_point(0, 1, 1)
+    qtbot.mousePress(view.viewport(), Qt.MouseButton.LeftButton, pos=start)
+    qtbot.mouseMove(view.viewport(), view.cell_point(0, 1, 0))
+    qtbot.mouseMove(view.viewport(), end)
+    qtbot.mouseRelease(view.viewport(), Qt.MouseButton.LeftButton, pos=end)
+    assert view.selection is not None
+    index, sel = view.selection
+    assert (index, sel.top, sel.left, sel.bottom, sel.right) == (0, 0, 0, 1, 1)
+    window.actions_by_name["action_copy"].trigger()
+    # paste into the empty network at the end: the four contacts arrive together
+    last = len(view.networks) - 1
+    view.selection = None
+    view.move_cursor(last, 0, 0)
+    window.actions_by_name["action_paste"].trigger()
+    pasted = view.networks[last].cells
+    for cell in ((0, 0), (0, 1), (1, 0), (1, 1)):
+        assert pasted[cell] == source.cells[cell]
+
+
+def test_shift_arrows_extend_the_selection(window: MainWindow, qtbot: QtBot) -> None:
+    window.load(EXAMPLES / "or_double.LAD")
+    view = window.editor
+    view.setFocus()
+    view.move_cursor(0, 0, 0)
+    for key in (Qt.Key.Key_Right, Qt.Key.Key_Down):
+        qtbot.keyClick(view, key, Qt.KeyboardModifier.ShiftModifier)
+    assert view.selection is not None
+    _, sel = view.selection
+    assert (sel.top, sel.left, sel.bottom, sel.right) == (0, 0, 1, 1)
+    window.actions_by_name["action_delete"].trigger()
+    assert not any(cell in view.networks[0].cells for cell in ((0, 0), (0, 1), (1, 0), (1, 1)))
+    window.actions_by_name["action_undo"].trigger()
+    assert (1, 1) in view.networks[0].cells

@@ -118,6 +118,8 @@ class LadderEditor(QGraphicsView):
         self.function_name = "TMR"
         self.cursor_cell: tuple[int, int, int] = (0, 0, 0)  # network, row, col
         self.selection: tuple[int, Selection] | None = None
+        self._drag_origin: tuple[int, int, int] | None = None  # select tool: where a drag began
+        self._shift_anchor: tuple[int, int, int] | None = None  # Shift+arrows: the fixed corner
         self.line_start: tuple[int, int, int] | None = None  # network, row, node
         self.function_dialog: FunctionDialog | None = None
         self.context_actions: list[QAction | None] = []
@@ -822,6 +824,9 @@ class LadderEditor(QGraphicsView):
             self.setFocus()
             self.cursor_cell = (hit.network, hit.row, hit.col)
             self.apply_tool(hit)
+            self._shift_anchor = None
+            if self.tool is Tool.SELECT and hit.comment_line is None:
+                self._drag_origin = (hit.network, hit.row, hit.col)
             index = min(self.cursor_cell[0], len(self.networks) - 1)
             net = self.networks[index]
             self.cursor_cell = (
@@ -840,14 +845,35 @@ class LadderEditor(QGraphicsView):
             return
         super().mousePressEvent(event)
 
+    def select_rectangle(self, index: int, corner: tuple[int, int],
+                         other: tuple[int, int]) -> None:
+        """Select the cells between two corners of one network (rows and columns clamped)."""
+        net = self.networks[index]
+        last_row = max(net.rows - 1, 0)
+
+        def clamp(cell: tuple[int, int]) -> tuple[int, int]:
+            return min(max(cell[0], 0), last_row), min(max(cell[1], 0), net.columns)
+
+        self.selection = (index, Selection.spanning(clamp(corner), clamp(other)))
+        self._place_overlays()
+
     def mouseMoveEvent(self, event: QMouseEvent) -> None:
-        """Report the cell under the mouse."""
+        """Report the cell under the mouse; with the select tool, a drag selects a rectangle."""
         hit = self._hit(event.position().toPoint())
+        origin = self._drag_origin
+        if (origin is not None and hit.network == origin[0] and hit.comment_line is None
+                and (hit.row, hit.col) != origin[1:]):
+            self.select_rectangle(origin[0], origin[1:], (hit.row, hit.col))
         if hit.comment_line is None:
             net = self.networks[hit.network]
             if hit.row < net.rows:
                 self.hover_changed.emit(self.describe_cell(hit.network, hit.row, hit.col))
         super().mouseMoveEvent(event)
+
+    def mouseReleaseEvent(self, event: QMouseEvent) -> None:
+        """End a drag selection."""
+        self._drag_origin = None
+        super().mouseReleaseEvent(event)
 
     def mouseDoubleClickEvent(self, event: QMouseEvent) -> None:
         """Double-click edits the element (in the select tool)."""
@@ -881,6 +907,15 @@ class LadderEditor(QGraphicsView):
             Qt.Key.Key_Up: (-1, 0),
             Qt.Key.Key_Down: (1, 0),
         }
+        if key in moves and event.modifiers() & Qt.KeyboardModifier.ShiftModifier:
+            drow, dcol = moves[Qt.Key(key)]
+            if self._shift_anchor is None or self._shift_anchor[0] != index:
+                self._shift_anchor = (index, row, col)
+            self.move_cursor(index, max(row + drow, 0), max(col + dcol, 0))
+            self.select_rectangle(index, self._shift_anchor[1:], self.cursor_cell[1:])
+            return
+        if key not in (Qt.Key.Key_Shift, Qt.Key.Key_Control, Qt.Key.Key_Alt, Qt.Key.Key_Meta):
+            self._shift_anchor = None  # any other key ends a Shift+arrows selection
         if key in moves:
             drow, dcol = moves[Qt.Key(key)]
             row += drow
