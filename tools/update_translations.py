@@ -25,13 +25,40 @@ def unfinished(ts: Path) -> list[tuple[str, str]]:
     return found
 
 
+def fill(ts: Path, translations: dict[str, str]) -> int:
+    """Finish the unfinished entries whose source is in `translations`; returns how many."""
+    tree = ET.parse(ts)
+    done = 0
+    for message in tree.getroot().iter("message"):
+        node = message.find("translation")
+        source = message.findtext("source") or ""
+        if node is not None and node.get("type") == "unfinished" and source in translations:
+            node.text = translations[source]
+            del node.attrib["type"]
+            done += 1
+    if done:
+        tree.write(ts, encoding="utf-8", xml_declaration=True)
+    return done
+
+
 def main() -> int:
-    """Run lupdate (existing translations are kept) and print the unfinished entries."""
+    """Run lupdate (existing translations are kept) and print the unfinished entries.
+
+    With a file argument (a TSV of `English<TAB>Türkçe` lines), fill those entries first:
+    Turkish into ladderworks_tr.ts, the English text itself into ladderworks_en.ts."""
+    pairs: dict[str, str] = {}
+    if len(sys.argv) > 1:
+        for line in Path(sys.argv[1]).read_text("utf-8").splitlines():
+            if "\t" in line:
+                english, turkish = line.split("\t", 1)
+                pairs[english] = turkish
     sources = sorted(str(p) for p in (ROOT / "ladderworks" / "gui").rglob("*.py"))
     for language in ("tr", "en"):
         ts = ROOT / "translations" / f"ladderworks_{language}.ts"
-        subprocess.run([str(LUPDATE), "-silent", "-no-obsolete", *sources, "-ts", str(ts)],
-                       check=True)
+        command = [str(LUPDATE), "-silent", "-no-obsolete", *sources, "-ts", str(ts)]
+        subprocess.run(command, check=True)
+        if pairs and fill(ts, pairs if language == "tr" else {k: k for k in pairs}):
+            subprocess.run(command, check=True)  # back to lupdate's own layout
         for context, source in unfinished(ts):
             print(f"{ts.name}: [{context}] {source}")
     return 0

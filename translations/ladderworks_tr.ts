@@ -675,112 +675,113 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="321"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="355"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="633"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="336"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="370"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="648"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="332"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="347"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="336"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="615"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="351"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="630"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="642"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="345"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="644"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="653"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="659"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="668"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="375"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="362"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="377"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="371"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="386"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="376"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="391"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="387"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="402"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="432"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="447"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="440"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="455"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="471"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="486"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Adres, örneğin X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="446"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="482"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="551"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="572"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="461"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="497"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="566"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="587"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="541"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="302"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="556"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="545"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="671"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="686"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="683"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="698"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="692"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="707"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="769"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="784"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
@@ -788,318 +789,328 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="131"/>
+        <location filename="../ladderworks/gui/main_window.py" line="139"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="132"/>
+        <location filename="../ladderworks/gui/main_window.py" line="140"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="133"/>
+        <location filename="../ladderworks/gui/main_window.py" line="141"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="136"/>
+        <location filename="../ladderworks/gui/main_window.py" line="144"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="142"/>
+        <location filename="../ladderworks/gui/main_window.py" line="150"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="147"/>
+        <location filename="../ladderworks/gui/main_window.py" line="155"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="152"/>
+        <location filename="../ladderworks/gui/main_window.py" line="160"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="155"/>
+        <location filename="../ladderworks/gui/main_window.py" line="163"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="160"/>
+        <location filename="../ladderworks/gui/main_window.py" line="168"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="165"/>
+        <location filename="../ladderworks/gui/main_window.py" line="173"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="166"/>
+        <location filename="../ladderworks/gui/main_window.py" line="174"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="167"/>
+        <location filename="../ladderworks/gui/main_window.py" line="175"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="168"/>
+        <location filename="../ladderworks/gui/main_window.py" line="176"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="169"/>
+        <location filename="../ladderworks/gui/main_window.py" line="177"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="172"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="177"/>
+        <location filename="../ladderworks/gui/main_window.py" line="185"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="184"/>
+        <location filename="../ladderworks/gui/main_window.py" line="192"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="191"/>
+        <location filename="../ladderworks/gui/main_window.py" line="199"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="198"/>
+        <location filename="../ladderworks/gui/main_window.py" line="206"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="203"/>
+        <location filename="../ladderworks/gui/main_window.py" line="211"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="205"/>
+        <location filename="../ladderworks/gui/main_window.py" line="213"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="214"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="209"/>
+        <location filename="../ladderworks/gui/main_window.py" line="217"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="215"/>
+        <location filename="../ladderworks/gui/main_window.py" line="223"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="221"/>
+        <location filename="../ladderworks/gui/main_window.py" line="229"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="225"/>
+        <location filename="../ladderworks/gui/main_window.py" line="233"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="228"/>
+        <location filename="../ladderworks/gui/main_window.py" line="236"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="237"/>
+        <location filename="../ladderworks/gui/main_window.py" line="245"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <location filename="../ladderworks/gui/main_window.py" line="249"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="278"/>
+        <location filename="../ladderworks/gui/main_window.py" line="286"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="282"/>
+        <location filename="../ladderworks/gui/main_window.py" line="290"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="299"/>
+        <location filename="../ladderworks/gui/main_window.py" line="307"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="319"/>
+        <location filename="../ladderworks/gui/main_window.py" line="327"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="339"/>
+        <location filename="../ladderworks/gui/main_window.py" line="348"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="343"/>
+        <location filename="../ladderworks/gui/main_window.py" line="352"/>
         <source>&amp;Tools</source>
         <translation>&amp;Takımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="349"/>
+        <location filename="../ladderworks/gui/main_window.py" line="358"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="354"/>
+        <location filename="../ladderworks/gui/main_window.py" line="363"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="359"/>
+        <location filename="../ladderworks/gui/main_window.py" line="368"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="469"/>
+        <location filename="../ladderworks/gui/main_window.py" line="478"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="494"/>
+        <location filename="../ladderworks/gui/main_window.py" line="503"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="495"/>
+        <location filename="../ladderworks/gui/main_window.py" line="504"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="522"/>
+        <location filename="../ladderworks/gui/main_window.py" line="531"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="523"/>
+        <location filename="../ladderworks/gui/main_window.py" line="532"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="548"/>
+        <location filename="../ladderworks/gui/main_window.py" line="557"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="558"/>
+        <location filename="../ladderworks/gui/main_window.py" line="567"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="560"/>
+        <location filename="../ladderworks/gui/main_window.py" line="569"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="591"/>
-        <location filename="../ladderworks/gui/main_window.py" line="614"/>
+        <location filename="../ladderworks/gui/main_window.py" line="600"/>
+        <location filename="../ladderworks/gui/main_window.py" line="623"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="592"/>
+        <location filename="../ladderworks/gui/main_window.py" line="601"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="615"/>
+        <location filename="../ladderworks/gui/main_window.py" line="624"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="626"/>
+        <location filename="../ladderworks/gui/main_window.py" line="635"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="631"/>
+        <location filename="../ladderworks/gui/main_window.py" line="640"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="639"/>
+        <location filename="../ladderworks/gui/main_window.py" line="648"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="641"/>
+        <location filename="../ladderworks/gui/main_window.py" line="650"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="651"/>
+        <location filename="../ladderworks/gui/main_window.py" line="660"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="653"/>
+        <location filename="../ladderworks/gui/main_window.py" line="662"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="672"/>
+        <location filename="../ladderworks/gui/main_window.py" line="681"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="674"/>
+        <location filename="../ladderworks/gui/main_window.py" line="683"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="685"/>
+        <location filename="../ladderworks/gui/main_window.py" line="694"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="757"/>
+        <location filename="../ladderworks/gui/main_window.py" line="766"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="776"/>
+        <location filename="../ladderworks/gui/main_window.py" line="785"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="782"/>
+        <location filename="../ladderworks/gui/main_window.py" line="791"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Derleme bitti (compile finish): {0} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="827"/>
+        <location filename="../ladderworks/gui/main_window.py" line="811"/>
+        <source>Address {0} set</source>
+        <translation>{0} adresi verildi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="814"/>
+        <source>{0} copied (select a contact or coil to set its address)</source>
+        <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="846"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="828"/>
+        <location filename="../ladderworks/gui/main_window.py" line="847"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -1694,145 +1705,188 @@
     </message>
 </context>
 <context>
+    <name>SignalList</name>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="88"/>
+        <source>{0} signals</source>
+        <translation>{0} sinyal</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="92"/>
+        <source>Signals</source>
+        <translation>Sinyaller</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="94"/>
+        <source>Address, name or words, e.g. G8.4, SPL, acil</source>
+        <translation>Adres, ad veya kelime, örn. G8.4, SPL, acil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="97"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="98"/>
+        <source>Name</source>
+        <translation>Ad</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="95"/>
+        <source>English</source>
+        <translation>İngilizce</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="95"/>
+        <source>Turkish</source>
+        <translation>Türkçe</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="101"/>
+        <source>Double-click: use the address for the contact or coil at the cursor</source>
+        <translation>Çift tıklama: adresi imleçteki kontak veya bobine ver</translation>
+    </message>
+</context>
+<context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="147"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="160"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="167"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="171"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="178"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="182"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="195"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="202"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="311"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="318"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="324"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="331"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="328"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="336"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="335"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="343"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="334"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="341"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="343"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="350"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="345"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="352"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="361"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="356"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="363"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="375"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="376"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="383"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="377"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="384"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="378"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="389"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="383"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="384"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="399"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="402"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="404"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>

@@ -8,6 +8,7 @@ from pathlib import Path
 from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
 from PySide6.QtGui import QAction, QActionGroup, QCloseEvent, QKeySequence, QShowEvent
 from PySide6.QtWidgets import (
+    QApplication,
     QDockWidget,
     QFileDialog,
     QLabel,
@@ -19,6 +20,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, parse_file, print_program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
@@ -29,6 +31,7 @@ from ladderworks.gui.files import atomic_write
 from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.settings import MAX_RECENT, Settings
+from ladderworks.gui.signal_list import SignalListDock
 from ladderworks.gui.text_view import ProgramTextView
 from ladderworks.gui.tools import Tool, icon, tool_help, tool_icon, tool_name
 from ladderworks.gui.translation import UiLanguage
@@ -73,6 +76,11 @@ class MainWindow(QMainWindow):
         self.errors = ErrorListDock(self)
         self.errors.activated.connect(self.go_to_diagnostic)
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.errors)
+        self.signals_dock = SignalListDock(self)
+        self.signals_dock.address_chosen.connect(self.use_signal)
+        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.signals_dock)
+        self.tabifyDockWidget(self.palette, self.signals_dock)
+        self.palette.raise_()
         self._make_menus()
         self._make_status_bar()
         named = self.actions_by_name
@@ -330,6 +338,7 @@ class MainWindow(QMainWindow):
         for dock, name in (
             (self.palette, "action_dock_palette"),
             (self.errors, "action_dock_errors"),
+            (self.signals_dock, "action_dock_signals"),
         ):
             toggle = dock.toggleViewAction()
             toggle.setObjectName(name)
@@ -795,6 +804,16 @@ class MainWindow(QMainWindow):
         self.editor.go_to(diagnostic)
 
     # -- help and closing ----------------------------------------------------------------
+
+    def use_signal(self, address: Address) -> None:
+        """A signal double-clicked in the list: onto the element at the cursor, else copied."""
+        if self.editor.assign_address_at_cursor(address):
+            self._show_message(translate("MainWindow", "Address {0} set").format(address))
+            return
+        QApplication.clipboard().setText(str(address))
+        self._show_message(translate(
+            "MainWindow", "{0} copied (select a contact or coil to set its address)",
+        ).format(address))
 
     def instruction_at_cursor(self) -> str:
         """The instruction help should show: the element at the cursor, else the palette's."""

@@ -288,6 +288,19 @@ class LadderEditor(QGraphicsView):
         self.undo_stack.push(NetworkEditCommand(self, index, undo_edit, text))
         return True
 
+    def assign_address_at_cursor(self, address: Address) -> bool:
+        """Put `address` on the contact or coil at the cursor (one undo step); False if none."""
+        index, row, col = self.cursor_cell
+        if index >= len(self.networks) or address.bit is None:
+            return False
+        found = self.networks[index].element_at(row, col)
+        if found is None or not isinstance(found[1], Contact | Coil):
+            return False
+        (r, c), _element = found
+        text = str(address)
+        return self.run_edit(index, lambda n: core.set_address(n, r, c, text),
+                             translate("LadderEditor", "Address {0}").format(text))
+
     def set_tool(self, tool: Tool) -> None:
         """Make `tool` current."""
         self.tool = tool
