@@ -1960,8 +1960,8 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/tools.py" line="100"/>
-        <source>Select an element; right-click for cut, copy, paste</source>
-        <translation>Select an element; right-click for cut, copy, paste</translation>
+        <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
+        <translation>Click an element or drag over cells to select; right-click: cut, copy, paste</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/tools.py" line="102"/>

@@ -1960,8 +1960,8 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/tools.py" line="100"/>
-        <source>Select an element; right-click for cut, copy, paste</source>
-        <translation>Bir eleman seçin; kes, kopyala, yapıştır için sağ tıklayın</translation>
+        <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
+        <translation>Bir eleman seçmek için tıklayın veya hücreler üzerinde sürükleyin; sağ tık: kes, kopyala, yapıştır</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/tools.py" line="102"/>

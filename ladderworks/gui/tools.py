@@ -98,7 +98,7 @@ def tool_help(tool: Tool) -> str:
     """One sentence on how the tool is used (status tip and tooltip)."""
     helps = {
         Tool.SELECT: QCoreApplication.translate(
-            "Tool", "Select an element; right-click for cut, copy, paste"),
+            "Tool", "Click an element or drag over cells to select; right-click: cut, copy, paste"),
         Tool.INPUT: QCoreApplication.translate(
             "Tool", "Click a cell to place a contact (RD / AND), type its address, ENTER"),
         Tool.INPUT_NOT: QCoreApplication.translate(
