@@ -194,7 +194,6 @@ class PlcSession(QObject):
         self._running = False
         self._figures = _ScanFigures()
         self._stopped_stats: ScanStats | None = None
-        self._last_alarm_bits = b""
         self._monitors = 0
         self._held: dict[Address, bool] = {}  # forced X/F bits: the machine's own value
         self._trace: TraceSampler | None = None
@@ -229,7 +228,6 @@ class PlcSession(QObject):
         self._figures = _ScanFigures()
         self._stopped_stats = None
         self._alarms.clear()
-        self._last_alarm_bits = b""
         self._emit("program_loaded", engine.program)
         self._emit("forces_changed", engine.forces())
         self.publish()
@@ -290,7 +288,7 @@ class PlcSession(QObject):
             began = time.perf_counter()
             engine.scan()
             self._figures.add(time.perf_counter() - began)
-            self._update_alarms(engine)
+        self._update_alarms(engine)
         self.publish()
         return count
 
@@ -336,7 +334,7 @@ class PlcSession(QObject):
         """Emit the status and a snapshot now (the timer calls this while running)."""
         snap = self.snapshot()
         if self._runner is not None and self.engine is not None:
-            self._update_alarms(self.engine, snap.areas[Area.A], snap.now_ms)
+            self._update_alarms(self.engine)
         self._emit("status_changed", self.status())
         self._emit("snapshot_ready", snap)
 
@@ -496,15 +494,13 @@ class PlcSession(QObject):
         self._alarms.reset()
         self._emit_alarms()
 
-    def _update_alarms(self, engine: ScanEngine, a_bytes: bytes | None = None,
-                       now_ms: int | None = None) -> None:
-        if a_bytes is None:
-            a_bytes = bytes(self.memory.areas[Area.A])
-        if a_bytes == self._last_alarm_bits:
-            return
-        self._last_alarm_bits = a_bytes
-        self._alarms.update(a_bytes, engine.now_ms if now_ms is None else now_ms)
-        self._emit_alarms()
+    def _update_alarms(self, engine: ScanEngine) -> None:
+        """Feed the alarm list every A-area change the engine logged, at its scan's time."""
+        changes = engine.take_alarm_changes()
+        for now_ms, a_bytes in changes:
+            self._alarms.update(a_bytes, now_ms)
+        if changes:
+            self._emit_alarms()
 
     def _emit_alarms(self) -> None:
         self._alarm_view = self._alarms.alarms

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import threading
+from collections import deque
 from collections.abc import Iterable
 from typing import Any
 
@@ -17,6 +18,7 @@ from ladderworks.core.plc.memory import Memory
 from ladderworks.core.plc.trace import DEFAULT_CAPACITY, TraceSampler
 
 DEFAULT_PERIOD_MS = 8  # FANUC level-1 period
+ALARM_LOG_CAPACITY = 4096  # A-area changes kept until a view takes them
 
 # Kept on a cold start (and across stop): keep relays, data table, timer and counter tables.
 RETAINED_AREAS: frozenset[Area] = frozenset({Area.K, Area.D, Area.T, Area.C})
@@ -59,6 +61,9 @@ class ScanEngine:
         self.force_table = ForceTable()
         self.trace: TraceSampler | None = None
         self.power_flow = bytearray(len(self.program.ops))
+        # every change of the A area, with the time of the scan that made it (newest last)
+        self.alarm_log: deque[tuple[int, bytes]] = deque(maxlen=ALARM_LOG_CAPACITY)
+        self._alarm_bits = bytes(self.memory.areas[Area.A])
         self._monitored = False
         self._registry = load_all()
         self._states: list[dict[str, Any]] = [{} for _ in self.program.ops]
@@ -95,6 +100,10 @@ class ScanEngine:
             self.force_table.apply(self.memory)
             self._current.scan(ctx, self.power_flow)
             self.force_table.apply(self.memory)
+            alarms = self.memory.areas[Area.A]
+            if alarms != self._alarm_bits:  # ~100 ns: the alarm panel misses no pulse
+                self._alarm_bits = bytes(alarms)
+                self.alarm_log.append((now, self._alarm_bits))
             if self.trace is not None:
                 self.trace.sample(self.memory, now)
             self.scan_count += 1
@@ -224,6 +233,13 @@ class ScanEngine:
         with self.lock:
             trace, self.trace = self.trace, None
             return trace
+
+    def take_alarm_changes(self) -> list[tuple[int, bytes]]:
+        """The A-area changes since the last call, oldest first: (scan time ms, 100 bytes)."""
+        with self.lock:
+            changes = list(self.alarm_log)
+            self.alarm_log.clear()
+            return changes
 
     def active_alarms(self) -> list[int]:
         """Numbers of the alarm bits that are on (A0.0 = 0, A0.1 = 1, ... A99.7 = 799)."""
