@@ -10,6 +10,7 @@ from ladderworks.core.compiler import compile
 from ladderworks.core.il import parse
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot, PlcStatus
 from ladderworks.paths import EXAMPLES
+from tests.gui.plc_docks_help import override_code
 
 
 def a(text: str):
@@ -56,17 +57,6 @@ def test_virtual_scans_publish_status_and_snapshot(qtbot: QtBot, session: PlcSes
     assert statuses[-1].running and statuses[-1].scan_count == 10
     assert statuses[-1].now_ms == 80 and statuses[-1].max_ms >= statuses[-1].min_ms > 0
     assert snaps[-1].scan_count == 10
-
-
-def override_code(position: int) -> int:
-    """G30 for a switch position, from the seed's BIN 1 … BIN 128 equations."""
-    r = [position == k for k in range(8)]
-    bits = [r[6], r[0] or r[7], r[1] or r[3] or r[5] or r[6] or r[7],
-            r[0] or r[2] or r[3] or r[6],
-            (r[1] or r[3] or r[4] or r[6] or r[7]) and not r[5],
-            (r[2] or r[3] or r[5] or r[6]) and not r[1],
-            (r[4] or r[5] or r[6]) and not r[1], r[7] and not r[1]]
-    return sum(1 << k for k, on in enumerate(bits) if on)
 
 
 @pytest.mark.parametrize("position", range(8))
