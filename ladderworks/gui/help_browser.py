@@ -19,22 +19,23 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.instructions import ALL, InstructionSpec, lookup
-from ladderworks.gui.translation import instruction_title
+from ladderworks.gui.translation import instruction_title, ui_is_turkish
 from ladderworks.paths import ROOT
 
 translate = QCoreApplication.translate
 
-REFERENCE = ROOT / "docs" / "instructions.md"
+REFERENCES = {"en": ROOT / "docs" / "instructions.md", "tr": ROOT / "docs" / "instructions_tr.md"}
 _ANCHOR = re.compile(r'\s*<a id="([^"]+)"></a>\s*$')
 
 
-@lru_cache(maxsize=1)
-def reference_sections() -> dict[str, str]:
-    """The markdown of each instruction's entry in docs/instructions.md, by help key."""
+@lru_cache(maxsize=2)
+def reference_sections(language: str = "en") -> dict[str, str]:
+    """The markdown of each instruction's entry in the reference of `language`, by help key."""
     sections: dict[str, str] = {}
     key: str | None = None
     lines: list[str] = []
-    text = REFERENCE.read_text("utf-8") if REFERENCE.exists() else ""
+    path = REFERENCES.get(language, REFERENCES["en"])
+    text = path.read_text("utf-8") if path.exists() else ""
     for line in text.splitlines():
         heading = line.startswith(("## ", "### "))
         if heading and key is not None:
@@ -117,7 +118,9 @@ class InstructionHelp(QDialog):
                 self._show(spec)
 
     def _show(self, spec: InstructionSpec) -> None:
-        section = reference_sections().get(spec.help_key)
+        language = "tr" if ui_is_turkish() else "en"
+        section = (reference_sections(language).get(spec.help_key)
+                   or reference_sections("en").get(spec.help_key))
         if section is None:
             section = "## " + spec.name + "\n\n" + translate(
                 "InstructionHelp", "No reference entry for this instruction.")

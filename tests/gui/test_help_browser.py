@@ -61,3 +61,14 @@ def test_closing_the_console_closes_its_help(window: MainWindow, qtbot: QtBot) -
     qtbot.waitUntil(help_window.isVisible)
     window.close()
     assert not help_window.isVisible()
+
+
+def test_turkish_ui_shows_the_turkish_reference(window: MainWindow, qtbot: QtBot) -> None:
+    with qtbot.waitSignal(window.language_changed):
+        window.actions_by_name["action_language_tr"].trigger()
+    help_window = window.show_instruction_help("TMR")
+    assert "TMR — ZAMANLAYICI" in help_window.browser.toPlainText()
+    assert help_window.list.currentItem().text() == "TMR — ZAMANLAYICI"
+    with qtbot.waitSignal(window.language_changed):
+        window.actions_by_name["action_language_en"].trigger()
+    assert "TMR — Timer" in help_window.browser.toPlainText()  # retranslated live
