@@ -175,312 +175,312 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="15"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="18"/>
         <source>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</source>
         <translation>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="17"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="20"/>
         <source>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</source>
         <translation>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="19"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="22"/>
         <source>&apos;{text}&apos;: byte number out of range for area {area} (0 to {last})</source>
         <translation>&apos;{text}&apos;: byte number out of range for area {area} (0 to {last})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="21"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="24"/>
         <source>&apos;{text}&apos;: bit number must be 0 to 7</source>
         <translation>&apos;{text}&apos;: bit number must be 0 to 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="22"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="25"/>
         <source>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</source>
         <translation>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="24"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="27"/>
         <source>&apos;{text}&apos;: a byte address is needed here, without a bit</source>
         <translation>&apos;{text}&apos;: a byte address is needed here, without a bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="26"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="29"/>
         <source>the ladder section must begin with %@3</source>
         <translation>the ladder section must begin with %@3</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="27"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="30"/>
         <source>the ladder section must end with a line &apos;%&apos;</source>
         <translation>the ladder section must end with a line &apos;%&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="28"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="31"/>
         <source>unexpected text &apos;{text}&apos;</source>
         <translation>unexpected text &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="29"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="32"/>
         <source>text outside any section: &apos;{text}&apos;</source>
         <translation>text outside any section: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="30"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="33"/>
         <source>section %@{number} appears twice</source>
         <translation>section %@{number} appears twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="31"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="34"/>
         <source>unknown section %@{number} (FANUC sections are %@0 to %@5)</source>
         <translation>unknown section %@{number} (FANUC sections are %@0 to %@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="33"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="36"/>
         <source>unknown instruction &apos;{name}&apos;</source>
         <translation>unknown instruction &apos;{name}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="34"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="37"/>
         <source>{name} needs an address</source>
         <translation>{name} needs an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="35"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="38"/>
         <source>{name} takes no operand, found &apos;{text}&apos;</source>
         <translation>{name} takes no operand, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="36"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="39"/>
         <source>{name} needs {expected} parameters, found {found}</source>
         <translation>{name} needs {expected} parameters, found {found}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="37"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="40"/>
         <source>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="39"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="42"/>
         <source>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="41"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="44"/>
         <source>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</source>
         <translation>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="45"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="48"/>
         <source>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</source>
         <translation>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="49"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="52"/>
         <source>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="53"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="56"/>
         <source>no functional instruction has the number SUB {number}</source>
         <translation>no functional instruction has the number SUB {number}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="55"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="58"/>
         <source>a parameter line &apos;{text}&apos; without a SUB instruction before it</source>
         <translation>a parameter line &apos;{text}&apos; without a SUB instruction before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="57"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="60"/>
         <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
         <translation>the file is neither UTF-8 nor Turkish Windows (cp1254) text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="59"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="62"/>
         <source>syntax error at &apos;{text}&apos;</source>
         <translation>syntax error at &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="60"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
         <source>open circuit: this element is not connected to the right side</source>
         <translation>open circuit: this element is not connected to the right side</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="62"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="65"/>
         <source>element not connected to the left rail</source>
         <translation>element not connected to the left rail</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="66"/>
         <source>a coil must be at the right end of the network</source>
         <translation>a coil must be at the right end of the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="64"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
         <source>a coil cannot sit straight on the left rail</source>
         <translation>a coil cannot sit straight on the left rail</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="65"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
         <source>bridge circuit: a vertical link joins two branches in the middle</source>
         <translation>bridge circuit: a vertical link joins two branches in the middle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="70"/>
         <source>short circuit: a wire bypasses the element</source>
         <translation>short circuit: a wire bypasses the element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
         <source>the logic needs more than 8 stack levels (ST8)</source>
         <translation>the logic needs more than 8 stack levels (ST8)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="69"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
         <source>power would flow right to left here; ladder flows left to right only</source>
         <translation>power would flow right to left here; ladder flows left to right only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="74"/>
         <source>the network has no coil or function</source>
         <translation>the network has no coil or function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="75"/>
         <source>{name} needs its {count} control inputs connected</source>
         <translation>{name} needs its {count} control inputs connected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="73"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
         <source>this element has no address yet</source>
         <translation>this element has no address yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="74"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
         <source>coils hang on different points of the logic; join them to one point</source>
         <translation>coils hang on different points of the logic; join them to one point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
         <source>only coils may follow the output of {name}</source>
         <translation>only coils may follow the output of {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
         <source>one function box per network: put {name} in a network of its own</source>
         <translation>one function box per network: put {name} in a network of its own</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="82"/>
         <source>cell ({row}, {col}) is outside the grid</source>
         <translation>cell ({row}, {col}) is outside the grid</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
         <source>only coils go in the coil column (cell ({row}, {col}))</source>
         <translation>only coils go in the coil column (cell ({row}, {col}))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="82"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="85"/>
         <source>{name} does not fit here: a box needs two contact columns</source>
         <translation>{name} does not fit here: a box needs two contact columns</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="84"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
         <source>there is no suitable element at cell ({row}, {col})</source>
         <translation>there is no suitable element at cell ({row}, {col})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="86"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
         <source>a line must be horizontal or vertical</source>
         <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="88"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="94"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="104"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="106"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
@@ -589,67 +589,67 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
         <source>one of {0}</source>
         <translation>one of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="72"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
         <source>{0} to {1}</source>
         <translation>{0} to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="76"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte address ({0} bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="78"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
         <source>byte address</source>
         <translation>byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="80"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
         <source>constant or byte address</source>
         <translation>constant or byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="82"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>up to 4 binary digits, e.g. 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="83"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
         <source>values separated by spaces</source>
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="168"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="130"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="171"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="133"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="174"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="136"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="175"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="137"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="176"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="210"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="172"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -657,17 +657,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="122"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="125"/>
         <source>No reference entry for this instruction.</source>
         <translation>No reference entry for this instruction.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="134"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
         <source>Instruction reference</source>
         <translation>Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="135"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="138"/>
         <source>Search, e.g. TMR</source>
         <translation>Search, e.g. TMR</translation>
     </message>
@@ -1118,152 +1118,152 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="31"/>
+        <location filename="../ladderworks/gui/translation.py" line="42"/>
         <source>Timer number</source>
         <translation>Timer number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <location filename="../ladderworks/gui/translation.py" line="43"/>
         <source>Preset</source>
         <translation>Preset</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
+        <location filename="../ladderworks/gui/translation.py" line="44"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/translation.py" line="45"/>
         <source>Timer/counter register</source>
         <translation>Timer/counter register</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
+        <location filename="../ladderworks/gui/translation.py" line="46"/>
         <source>Code signal</source>
         <translation>Code signal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
+        <location filename="../ladderworks/gui/translation.py" line="47"/>
         <source>Decode specification</source>
         <translation>Decode specification</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
+        <location filename="../ladderworks/gui/translation.py" line="48"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <location filename="../ladderworks/gui/translation.py" line="49"/>
         <source>First number</source>
         <translation>First number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <location filename="../ladderworks/gui/translation.py" line="50"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/translation.py" line="51"/>
         <source>Counter number</source>
         <translation>Counter number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
+        <location filename="../ladderworks/gui/translation.py" line="52"/>
         <source>Number of positions</source>
         <translation>Number of positions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/translation.py" line="53"/>
         <source>Current position</source>
         <translation>Current position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
+        <location filename="../ladderworks/gui/translation.py" line="54"/>
         <source>Target position</source>
         <translation>Target position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/translation.py" line="55"/>
         <source>Table size</source>
         <translation>Table size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/translation.py" line="56"/>
         <source>Index</source>
         <translation>Index</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <location filename="../ladderworks/gui/translation.py" line="57"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <location filename="../ladderworks/gui/translation.py" line="58"/>
         <source>Table values</source>
         <translation>Table values</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <location filename="../ladderworks/gui/translation.py" line="59"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
+        <location filename="../ladderworks/gui/translation.py" line="60"/>
         <source>High 4-bit mask</source>
         <translation>High 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <location filename="../ladderworks/gui/translation.py" line="61"/>
         <source>Low 4-bit mask</source>
         <translation>Low 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <location filename="../ladderworks/gui/translation.py" line="62"/>
         <source>OR data</source>
         <translation>OR data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="52"/>
+        <location filename="../ladderworks/gui/translation.py" line="63"/>
         <source>Data</source>
         <translation>Data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <location filename="../ladderworks/gui/translation.py" line="64"/>
         <source>Number of coils</source>
         <translation>Number of coils</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
+        <location filename="../ladderworks/gui/translation.py" line="65"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Input format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
+        <location filename="../ladderworks/gui/translation.py" line="66"/>
         <source>Compared data</source>
         <translation>Compared data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
+        <location filename="../ladderworks/gui/translation.py" line="67"/>
         <source>Searched data</source>
         <translation>Searched data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="57"/>
+        <location filename="../ladderworks/gui/translation.py" line="68"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="59"/>
+        <location filename="../ladderworks/gui/translation.py" line="70"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="60"/>
+        <location filename="../ladderworks/gui/translation.py" line="71"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="61"/>
+        <location filename="../ladderworks/gui/translation.py" line="72"/>
         <source>Constant</source>
         <translation>Constant</translation>
     </message>
@@ -1707,42 +1707,42 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="88"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="97"/>
         <source>{0} signals</source>
         <translation>{0} signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="92"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="101"/>
         <source>Signals</source>
         <translation>Signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="94"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="103"/>
         <source>Address, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Address, name or words, e.g. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="97"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="106"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="98"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="107"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="95"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="104"/>
         <source>English</source>
         <translation>English</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="95"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="104"/>
         <source>Turkish</source>
         <translation>Turkish</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="101"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="110"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Double-click: use the address for the contact or coil at the cursor</translation>
     </message>

@@ -175,312 +175,312 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="15"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="18"/>
         <source>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</source>
         <translation>&apos;{text}&apos; bir adres değil (örneğin X2.1 veya R100 olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="17"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="20"/>
         <source>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</source>
         <translation>&apos;{text}&apos;: bilinmeyen alan &apos;{area}&apos; (X, Y, F, G, R, A, D, T, C veya K kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="19"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="22"/>
         <source>&apos;{text}&apos;: byte number out of range for area {area} (0 to {last})</source>
         <translation>&apos;{text}&apos;: {area} alanı için byte numarası sınır dışı (0 ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="21"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="24"/>
         <source>&apos;{text}&apos;: bit number must be 0 to 7</source>
         <translation>&apos;{text}&apos;: bit numarası 0 ile 7 arasında olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="22"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="25"/>
         <source>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</source>
         <translation>&apos;{text}&apos;: burada bit adresi gerekir (örneğin {text}.0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="24"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="27"/>
         <source>&apos;{text}&apos;: a byte address is needed here, without a bit</source>
         <translation>&apos;{text}&apos;: burada bitsiz bir byte adresi gerekir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="26"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="29"/>
         <source>the ladder section must begin with %@3</source>
         <translation>ladder bölümü %@3 ile başlamalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="27"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="30"/>
         <source>the ladder section must end with a line &apos;%&apos;</source>
         <translation>ladder bölümü &apos;%&apos; satırıyla bitmeli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="28"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="31"/>
         <source>unexpected text &apos;{text}&apos;</source>
         <translation>beklenmeyen metin &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="29"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="32"/>
         <source>text outside any section: &apos;{text}&apos;</source>
         <translation>hiçbir bölümün içinde olmayan metin: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="30"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="33"/>
         <source>section %@{number} appears twice</source>
         <translation>%@{number} bölümü iki kez var</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="31"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="34"/>
         <source>unknown section %@{number} (FANUC sections are %@0 to %@5)</source>
         <translation>bilinmeyen bölüm %@{number} (FANUC bölümleri %@0 ile %@5 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="33"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="36"/>
         <source>unknown instruction &apos;{name}&apos;</source>
         <translation>bilinmeyen komut &apos;{name}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="34"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="37"/>
         <source>{name} needs an address</source>
         <translation>{name} bir adres ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="35"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="38"/>
         <source>{name} takes no operand, found &apos;{text}&apos;</source>
         <translation>{name} operand almaz, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="36"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="39"/>
         <source>{name} needs {expected} parameters, found {found}</source>
         <translation>{name} {expected} parametre ister, {found} bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="37"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="40"/>
         <source>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. parametre ({param}) sayı olmalı, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="39"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="42"/>
         <source>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. parametre ({param}) adres olmalı, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="41"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="44"/>
         <source>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</source>
         <translation>{name}: {index}. parametre ({param}) {lo} ile {hi} arasında olmalı, {value} bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="45"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="48"/>
         <source>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</source>
         <translation>{name}: {index}. parametre ({param}) şunlardan biri olmalı: {choices}; {value} bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="49"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="52"/>
         <source>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. parametre ({param}) en çok 4 ikili hane olmalı, &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="53"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="56"/>
         <source>no functional instruction has the number SUB {number}</source>
         <translation>SUB {number} numaralı fonksiyon yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="55"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="58"/>
         <source>a parameter line &apos;{text}&apos; without a SUB instruction before it</source>
         <translation>önünde SUB komutu olmayan parametre satırı &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="57"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="60"/>
         <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
         <translation>dosya ne UTF-8 ne de Türkçe Windows (cp1254) metni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="59"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="62"/>
         <source>syntax error at &apos;{text}&apos;</source>
         <translation>&apos;{text}&apos; yerinde yazım hatası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="60"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
         <source>open circuit: this element is not connected to the right side</source>
         <translation>açık devre: bu eleman sağ tarafa bağlı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="62"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="65"/>
         <source>element not connected to the left rail</source>
         <translation>eleman sol baraya bağlı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="66"/>
         <source>a coil must be at the right end of the network</source>
         <translation>çıkış (bobin) devrenin sağ ucunda olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="64"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
         <source>a coil cannot sit straight on the left rail</source>
         <translation>çıkış (bobin) doğrudan sol baraya bağlanamaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="65"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
         <source>bridge circuit: a vertical link joins two branches in the middle</source>
         <translation>köprü devre: dikey çizgi iki kolu ortadan birleştiriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="70"/>
         <source>short circuit: a wire bypasses the element</source>
         <translation>kısa devre: bir çizgi elemanı atlıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
         <source>the logic needs more than 8 stack levels (ST8)</source>
         <translation>mantık 8&apos;den fazla yığın seviyesi (ST8) gerektiriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="69"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
         <source>power would flow right to left here; ladder flows left to right only</source>
         <translation>burada enerji sağdan sola akardı; ladder yalnız soldan sağa akar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="74"/>
         <source>the network has no coil or function</source>
         <translation>devrede çıkış veya fonksiyon yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="75"/>
         <source>{name} needs its {count} control inputs connected</source>
         <translation>{name} fonksiyonunun {count} kontrol girişi bağlanmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="73"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
         <source>this element has no address yet</source>
         <translation>bu elemanın henüz adresi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="74"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
         <source>coils hang on different points of the logic; join them to one point</source>
         <translation>çıkışlar mantığın farklı noktalarına bağlı; tek noktaya bağlayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
         <source>only coils may follow the output of {name}</source>
         <translation>{name} çıkışından sonra yalnız çıkış (bobin) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
         <source>one function box per network: put {name} in a network of its own</source>
         <translation>her devrede bir fonksiyon kutusu olur: {name} için ayrı bir devre kullanın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="82"/>
         <source>cell ({row}, {col}) is outside the grid</source>
         <translation>({row}, {col}) hücresi ızgaranın dışında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
         <source>only coils go in the coil column (cell ({row}, {col}))</source>
         <translation>çıkış sütununa yalnız çıkış konur (({row}, {col}) hücresi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="82"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="85"/>
         <source>{name} does not fit here: a box needs two contact columns</source>
         <translation>{name} buraya sığmıyor: fonksiyon kutusu iki kontak sütunu ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="84"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
         <source>there is no suitable element at cell ({row}, {col})</source>
         <translation>({row}, {col}) hücresinde uygun eleman yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="86"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
         <source>a line must be horizontal or vertical</source>
         <translation>çizgi yatay veya dikey olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>panoda ladder elemanı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="88"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
         <source>JMP without a matching JMPE</source>
         <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
         <source>JMPE without a JMP before it</source>
         <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="94"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
         <source>COM without a matching COME</source>
         <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
         <source>COME without a COM before it</source>
         <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
         <source>coil {address} is written more than once</source>
         <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="104"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="106"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
@@ -589,67 +589,67 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
         <source>one of {0}</source>
         <translation>şunlardan biri: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="72"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
         <source>{0} to {1}</source>
         <translation>{0} ile {1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="76"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte adresi ({0} byte)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="78"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
         <source>byte address</source>
         <translation>byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="80"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
         <source>constant or byte address</source>
         <translation>sabit veya byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="82"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>en çok 4 ikili hane, örneğin 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="83"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
         <source>values separated by spaces</source>
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="168"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="130"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="171"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="133"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="174"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="136"/>
         <source>Parameter</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="175"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="137"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="176"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
         <source>Allowed</source>
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="210"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="172"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
     </message>
@@ -657,17 +657,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="122"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="125"/>
         <source>No reference entry for this instruction.</source>
         <translation>Bu komut için başvuru kaydı yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="134"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
         <source>Instruction reference</source>
         <translation>Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="135"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="138"/>
         <source>Search, e.g. TMR</source>
         <translation>Ara, örn. TMR</translation>
     </message>
@@ -1118,152 +1118,152 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="31"/>
+        <location filename="../ladderworks/gui/translation.py" line="42"/>
         <source>Timer number</source>
         <translation>Zamanlayıcı numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <location filename="../ladderworks/gui/translation.py" line="43"/>
         <source>Preset</source>
         <translation>Ayar değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
+        <location filename="../ladderworks/gui/translation.py" line="44"/>
         <source>Accuracy</source>
         <translation>Hassasiyet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/translation.py" line="45"/>
         <source>Timer/counter register</source>
         <translation>Zamanlayıcı/sayıcı kaydı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
+        <location filename="../ladderworks/gui/translation.py" line="46"/>
         <source>Code signal</source>
         <translation>Kod sinyali</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
+        <location filename="../ladderworks/gui/translation.py" line="47"/>
         <source>Decode specification</source>
         <translation>Kod çözme tanımı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
+        <location filename="../ladderworks/gui/translation.py" line="48"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <location filename="../ladderworks/gui/translation.py" line="49"/>
         <source>First number</source>
         <translation>İlk sayı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <location filename="../ladderworks/gui/translation.py" line="50"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/translation.py" line="51"/>
         <source>Counter number</source>
         <translation>Sayıcı numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
+        <location filename="../ladderworks/gui/translation.py" line="52"/>
         <source>Number of positions</source>
         <translation>Pozisyon sayısı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/translation.py" line="53"/>
         <source>Current position</source>
         <translation>Mevcut pozisyon</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
+        <location filename="../ladderworks/gui/translation.py" line="54"/>
         <source>Target position</source>
         <translation>Hedef pozisyon</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/translation.py" line="55"/>
         <source>Table size</source>
         <translation>Tablo boyu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/translation.py" line="56"/>
         <source>Index</source>
         <translation>İndeks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <location filename="../ladderworks/gui/translation.py" line="57"/>
         <source>Output</source>
         <translation>Çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <location filename="../ladderworks/gui/translation.py" line="58"/>
         <source>Table values</source>
         <translation>Tablo değerleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <location filename="../ladderworks/gui/translation.py" line="59"/>
         <source>Input</source>
         <translation>Giriş</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
+        <location filename="../ladderworks/gui/translation.py" line="60"/>
         <source>High 4-bit mask</source>
         <translation>Üst 4 bit maskesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <location filename="../ladderworks/gui/translation.py" line="61"/>
         <source>Low 4-bit mask</source>
         <translation>Alt 4 bit maskesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <location filename="../ladderworks/gui/translation.py" line="62"/>
         <source>OR data</source>
         <translation>VEYA verisi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="52"/>
+        <location filename="../ladderworks/gui/translation.py" line="63"/>
         <source>Data</source>
         <translation>Veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <location filename="../ladderworks/gui/translation.py" line="64"/>
         <source>Number of coils</source>
         <translation>Çıkış sayısı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
+        <location filename="../ladderworks/gui/translation.py" line="65"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Giriş formatı (0 sabit, 1 adres)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
+        <location filename="../ladderworks/gui/translation.py" line="66"/>
         <source>Compared data</source>
         <translation>Karşılaştırılan veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
+        <location filename="../ladderworks/gui/translation.py" line="67"/>
         <source>Searched data</source>
         <translation>Aranan veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="57"/>
+        <location filename="../ladderworks/gui/translation.py" line="68"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand formatı (0 sabit, 1 adres)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="59"/>
+        <location filename="../ladderworks/gui/translation.py" line="70"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="60"/>
+        <location filename="../ladderworks/gui/translation.py" line="71"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="61"/>
+        <location filename="../ladderworks/gui/translation.py" line="72"/>
         <source>Constant</source>
         <translation>Sabit</translation>
     </message>
@@ -1707,42 +1707,42 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="88"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="97"/>
         <source>{0} signals</source>
         <translation>{0} sinyal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="92"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="101"/>
         <source>Signals</source>
         <translation>Sinyaller</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="94"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="103"/>
         <source>Address, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Adres, ad veya kelime, örn. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="97"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="106"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="98"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="107"/>
         <source>Name</source>
         <translation>Ad</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="95"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="104"/>
         <source>English</source>
         <translation>İngilizce</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="95"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="104"/>
         <source>Turkish</source>
         <translation>Türkçe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="101"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="110"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Çift tıklama: adresi imleçteki kontak veya bobine ver</translation>
     </message>

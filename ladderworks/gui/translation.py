@@ -36,6 +36,44 @@ def instruction_title(spec: InstructionSpec) -> str:
     return spec.title_tr if ui_is_turkish() else spec.title
 
 
+def param_label(name: str) -> str:
+    """A parameter's name in the current UI language."""
+    labels = {
+        "timer": QCoreApplication.translate("Param", "Timer number"),
+        "preset": QCoreApplication.translate("Param", "Preset"),
+        "accuracy": QCoreApplication.translate("Param", "Accuracy"),
+        "register": QCoreApplication.translate("Param", "Timer/counter register"),
+        "code": QCoreApplication.translate("Param", "Code signal"),
+        "spec": QCoreApplication.translate("Param", "Decode specification"),
+        "format": QCoreApplication.translate("Param", "Format"),
+        "first": QCoreApplication.translate("Param", "First number"),
+        "result": QCoreApplication.translate("Param", "Result"),
+        "counter": QCoreApplication.translate("Param", "Counter number"),
+        "positions": QCoreApplication.translate("Param", "Number of positions"),
+        "current": QCoreApplication.translate("Param", "Current position"),
+        "target": QCoreApplication.translate("Param", "Target position"),
+        "size": QCoreApplication.translate("Param", "Table size"),
+        "index": QCoreApplication.translate("Param", "Index"),
+        "output": QCoreApplication.translate("Param", "Output"),
+        "table": QCoreApplication.translate("Param", "Table values"),
+        "input": QCoreApplication.translate("Param", "Input"),
+        "high_mask": QCoreApplication.translate("Param", "High 4-bit mask"),
+        "low_mask": QCoreApplication.translate("Param", "Low 4-bit mask"),
+        "or_data": QCoreApplication.translate("Param", "OR data"),
+        "data": QCoreApplication.translate("Param", "Data"),
+        "coils": QCoreApplication.translate("Param", "Number of coils"),
+        "input_format": QCoreApplication.translate("Param", "Input format (0 constant, 1 address)"),
+        "compare": QCoreApplication.translate("Param", "Compared data"),
+        "search": QCoreApplication.translate("Param", "Searched data"),
+        "operand_format": QCoreApplication.translate(
+            "Param", "Operand format (0 constant, 1 address)"),
+        "a": QCoreApplication.translate("Param", "Operand A"),
+        "b": QCoreApplication.translate("Param", "Operand B"),
+        "constant": QCoreApplication.translate("Param", "Constant"),
+    }
+    return labels.get(name, name)
+
+
 def ts_file(language: str) -> Path:
     """The committed translation source for `language`."""
     return TRANSLATIONS / f"ladderworks_{language}.ts"

@@ -58,7 +58,7 @@ def test_function_table_refuses_a_wrong_parameter(drawer: Drawer, window: MainWi
     dialog.set_value("preset", "500")
     dialog.buttons.button(dialog.buttons.StandardButton.Ok).click()
     assert dialog.isVisible()
-    assert dialog.warning.text() == "TMRB: parameter 1 (timer) must be 1 to 100, found 101"
+    assert dialog.warning.text() == "TMRB: parameter 1 (Timer number) must be 1 to 100, found 101"
     assert dialog.table.currentRow() == 0
     assert (0, 2) not in window.editor.networks[0].cells
     dialog.set_value("timer", "7")

@@ -88,3 +88,30 @@ def test_seed_manual_terms_name_the_tools() -> None:
                      "OR": "VEYA", "Line": "ÇİZGİ", "Comment": "YORUM", "Delete": "SİL",
                      "Function": "FONKSİYON"}
     assert re.search("ÖNCE", translator.translate("Tool", "Insert row before"))
+
+
+def test_every_parameter_has_a_name_for_the_user(qapp: object) -> None:
+    from ladderworks.core.instructions import FUNCTIONS
+    from ladderworks.gui.translation import param_label
+
+    names = {param.name for spec in FUNCTIONS for param in spec.params}
+    assert [name for name in names if param_label(name) == name] == []
+
+
+def test_diagnostics_name_the_parameter_in_the_ui_language(qapp: object) -> None:
+    from ladderworks.core.il import parse
+    from ladderworks.gui.diagnostic_texts import diagnostic_text
+    from ladderworks.gui.translation import UiLanguage
+
+    (diagnostic,) = parse("%@3\nRD X0.0\nTMR 300\nWRT Y0.0\n%\n").diagnostics
+    language = UiLanguage()
+    try:
+        language.apply("tr")
+        turkish = diagnostic_text(diagnostic)
+        language.apply("en")
+        english = diagnostic_text(diagnostic)
+    finally:
+        language.apply("en")
+    assert "Timer number" in english and "timer)" not in english
+    assert "Zamanlayıcı" in turkish or "ZAMANLAYICI" in turkish.upper(), turkish
+    assert "300" in turkish
