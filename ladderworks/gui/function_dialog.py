@@ -121,7 +121,12 @@ class FunctionDialog(QDialog):
             hint.setFlags(Qt.ItemFlag.ItemIsEnabled)
             self.table.setItem(row, 2, hint)
         self.retranslate()
-        self.resize(560, 120 + 30 * max(len(self._params), 1))
+        # every parameter row visible without scrolling (at most 5 rows: no instruction has more)
+        rows = sum(self.table.rowHeight(row) for row in range(self.table.rowCount()))
+        header = self.table.horizontalHeader().sizeHint().height()
+        self.table.setMinimumHeight(header + rows + 2 * self.table.frameWidth() + 2)
+        self.adjustSize()
+        self.resize(max(self.width(), 560), self.height())
         if self._params:
             self.table.setCurrentCell(0, 1)
 
