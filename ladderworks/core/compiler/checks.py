@@ -115,14 +115,15 @@ class _Checker:
     def function(self, ins: Instruction, network: int) -> None:
         spec = ins.spec
         if spec.name == "JMP":
-            self.jumps.append((network, ins))
+            if ins.params and ins.params[0] == 0:  # JMP n > 0 ends after n coils, no JMPE
+                self.jumps.append((network, ins))
         elif spec.name == "JMPE":
             if self.jumps:
                 self.jumps.pop()
             else:
                 self.add("jmpe-without-jmp", ins, network)
         elif spec.name == "COM":
-            if ins.params and ins.params[0] == 0:
+            if ins.params and ins.params[0] == 0:  # COM n > 0 ends after n coils, no COME
                 self.commons.append((network, ins))
         elif spec.name == "COME":
             if self.commons:

@@ -34,6 +34,35 @@ class GeneratedScan:
     scan: ScanFunction
 
 
+@dataclass(slots=True)
+class _Range:
+    """An open JMP or COM range: COM's gate variable and the coils left (None: up to the end
+    instruction, JMPE or COME)."""
+
+    variable: str
+    left: int | None
+
+
+def _count_coil(ranges: list[_Range]) -> bool:
+    """Count one coil in the innermost of `ranges`; True when it was that range's last coil.
+
+    A coil counts only for the innermost open range (JMP and COM alike): a counted range
+    nested inside another counts its own coils, and the outer one goes on counting after it.
+    """
+    if not ranges or ranges[-1].left is None:
+        return False
+    ranges[-1].left -= 1
+    if ranges[-1].left > 0:
+        return False
+    ranges.pop()
+    return True
+
+
+def _counted(coils: object) -> int | None:
+    """A range's coil count from the instruction's parameter: None for 0 (up to the end)."""
+    return coils if isinstance(coils, int) and coils > 0 else None
+
+
 class _Value:
     """The Python expression for one stack level, and how it was built."""
 
@@ -68,9 +97,10 @@ class _Generator:
         self.values: list[_Value] = [_Value("0")]
         self.impls: list[FunctionImpl] = []
         self.calls: list[int] = []  # op index of each function call
-        self.commons: list[tuple[str, int | None]] = []  # (variable, coils left or None)
+        self.commons: list[_Range] = []
         self.common_vars = 0
-        self.jumps = 0
+        self.jumps: list[_Range] = []  # each an `if not act:` block of the scan code
+        self.jump_ended = False  # the op just generated was the last coil of a JMP n range
         self.max_depth = 0
 
     def emit(self, line: str) -> None:
@@ -105,8 +135,11 @@ class _Generator:
             if self.monitored and op.name != "JMP":  # JMP records its ACT before the jump
                 self.store_all()
                 self.emit(f"M[{index}] = {self.var(len(self.values) - 1)}")
-        if self.jumps:
+            if self.jump_ended:
+                self.end_counted_jump(index)
+        if any(jump.left is None for jump in self.jumps):
             raise self.fail(len(self.ops), "JMP without JMPE")
+        # a JMP n with fewer than n coils after it skips to the end of the program
         head = [f"def scan(ctx, M, {', '.join(f'{a}={a}' for a in _AREA_NAMES)}, "
                 "FN=FN, ST=ST, PA=PA):"]
         depths = [self.var(d) for d in range(self.max_depth + 1)]
@@ -116,6 +149,33 @@ class _Generator:
         if self.monitored:
             head.append("    M[:] = ZERO")
         return "\n".join([*head, *self.lines, "    return None", ""])
+
+    def live_after(self, index: int) -> bool:
+        """Whether the op after `index` goes on using this network's stack values."""
+        nxt = self.ops[index + 1] if index + 1 < len(self.ops) else None
+        return (nxt is not None and nxt.source.network == self.ops[index].source.network
+                and nxt.name not in ("RD", "RD.NOT"))
+
+    def end_counted_jump(self, index: int) -> None:
+        """Close the block of a JMP n after its n-th coil (op `index`).
+
+        When the network goes on after that coil, its stack values read 0 if the jump was
+        taken (the skipped contacts were not evaluated).
+        """
+        self.jump_ended = False
+        live = self.live_after(index)
+        if live:
+            self.store_all()
+        self.indent -= 1
+        if live:
+            self.emit("else:")
+            self.emit("    " + " = ".join(self.var(d) for d in range(len(self.values))) + " = 0")
+
+    def count_coil(self) -> None:
+        """Count a coil (written or disabled) in the innermost COM and JMP ranges."""
+        _count_coil(self.commons)
+        if _count_coil(self.jumps):
+            self.jump_ended = True
 
     def op(self, index: int, op: Op) -> None:
         spec = op.spec
@@ -171,16 +231,13 @@ class _Generator:
 
     def write(self, index: int, address: Address, inverted: bool, off: bool) -> None:
         if off:
-            if self.commons:
-                self.count_coil()  # a disabled coil still counts in COM's range
+            self.count_coil()  # a disabled coil still counts in a COM or JMP range
             return
         depth = len(self.values) - 1
         for lower in range(depth):
             self.store(lower)
         value = self.values[depth]
-        nxt = self.ops[index + 1] if index + 1 < len(self.ops) else None
-        live = (nxt is not None and nxt.source.network == self.ops[index].source.network
-                and nxt.name not in ("RD", "RD.NOT"))
+        live = self.live_after(index)
         byte = f"{address.area.value}[{address.byte}]"
         assert address.bit is not None
         mask = 1 << address.bit
@@ -188,9 +245,8 @@ class _Generator:
             condition = self.store(depth)
             if inverted:
                 condition = f"({condition} ^ 1)"
-            condition = f"{self.commons[-1][0]} & {condition}"
+            condition = f"{self.commons[-1].variable} & {condition}"
             inverted = False
-            self.count_coil()
         elif value.expr == self.var(depth):
             condition = value.expr
         elif live or self.monitored:
@@ -205,14 +261,7 @@ class _Generator:
         self.emit(f"    {on}")
         self.emit("else:")
         self.emit(f"    {off_line}")
-
-    def count_coil(self) -> None:
-        variable, left = self.commons[-1]
-        if left is not None:
-            if left <= 1:
-                self.commons.pop()
-            else:
-                self.commons[-1] = (variable, left - 1)
+        self.count_coil()
 
     def function(self, index: int, op: Op, off: bool) -> None:
         spec = op.spec
@@ -229,24 +278,27 @@ class _Generator:
             self.emit(f"if not {inputs[-1]}:" if not off else "if 1:")
             self.indent += 1
             self.emit("pass")
-            self.jumps += 1
+            self.jumps.append(_Range("", _counted(op.params[0] if op.params else 0)))
         elif name == "JMPE":
+            # ends the innermost JMP 0, and any JMP n opened inside it that is still counting
+            while self.jumps and self.jumps[-1].left is not None:
+                self.jumps.pop()
+                self.indent -= 1
             if not self.jumps:
                 raise self.fail(index, "JMPE without JMP")
-            self.jumps -= 1
+            self.jumps.pop()
             self.indent -= 1
         elif name == "COM":
             variable = f"cm{self.common_vars}"
             self.common_vars += 1
             act = "1" if off else inputs[-1]
             if self.commons:
-                act = f"{act} & {self.commons[-1][0]}"
+                act = f"{act} & {self.commons[-1].variable}"
             self.emit(f"{variable} = {act}")
-            coils = op.params[0] if op.params else 0
-            self.commons.append((variable, coils if isinstance(coils, int) and coils else None))
+            self.commons.append(_Range(variable, _counted(op.params[0] if op.params else 0)))
         elif name == "COME":
             for k in range(len(self.commons) - 1, -1, -1):
-                if self.commons[k][1] is None:
+                if self.commons[k].left is None:
                     del self.commons[k]
                     break
         else:

@@ -50,8 +50,11 @@ def test_function_output_into_an_input_area() -> None:
 
 
 def test_jump_and_common_line_pairs() -> None:
-    assert codes("RD R0.0\nJMP\nRD R0.1\nWRT R0.2") == [("jmp-without-jmpe", 3, "error")]
+    assert codes("RD R0.0\nJMP 0\nRD R0.1\nWRT R0.2") == [("jmp-without-jmpe", 3, "error")]
+    assert codes("RD R0.0\nJMP 2\nRD R0.1\nWRT R0.2") == []  # a coil count needs no JMPE
     assert codes("JMPE\nRD R0.1\nWRT R0.2") == [("jmpe-without-jmp", 2, "error")]
+    assert codes("RD R0.0\nJMP 1\nRD R0.1\nWRT R0.2\nJMPE") == [
+        ("jmpe-without-jmp", 6, "error")]  # JMP n has no JMPE to pair with
     assert codes("RD R0.0\nCOM 0\nRD R0.1\nWRT R0.2") == [("com-without-come", 3, "error")]
     assert codes("RD R0.0\nCOM 2\nRD R0.1\nWRT R0.2") == []
     assert codes("COME\nRD R0.1\nWRT R0.2") == [("come-without-com", 2, "error")]

@@ -143,7 +143,7 @@ def test_move_masks_print_as_binary_digits() -> None:
 
 
 def test_functions_and_ends_split_networks() -> None:
-    text = "%@3\nRD X0.0\nJMP\nRD X0.1\nWRT Y0.0\nJMPE\nRD X0.2\nWRT Y0.1\nEND1\n%\n"
+    text = "%@3\nRD X0.0\nJMP 0\nRD X0.1\nWRT Y0.0\nJMPE\nRD X0.2\nWRT Y0.1\nEND1\n%\n"
     result = parse(text)
     assert result.ok, result.diagnostics
     names = [[i.name for i in n.instructions] for n in result.program.networks]

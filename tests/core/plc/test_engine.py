@@ -187,7 +187,7 @@ def test_trace_ring_buffer_counts_what_it_overwrites() -> None:
 def test_jmp_skips_to_jmpe_and_skipped_coils_keep_their_state() -> None:
     engine = engine_for("""
 RD X0.0
-JMP
+JMP 0
 RD X0.1
 WRT Y0.1
 RD X0.1
@@ -351,7 +351,7 @@ def test_disabled_coil_still_counts_in_a_com_range() -> None:
 
 
 def test_power_flow_shows_a_jump_taken_and_the_skipped_ops_off() -> None:
-    engine = engine_for("RD X0.0\nJMP\nRD X0.1\nWRT Y0.1\nJMPE\nRD X0.1\nWRT Y0.2")
+    engine = engine_for("RD X0.0\nJMP 0\nRD X0.1\nWRT Y0.1\nJMPE\nRD X0.1\nWRT Y0.2")
     engine.monitored = True
     engine.memory.set_bit(at("X0.1"), 1)
     engine.scan()
