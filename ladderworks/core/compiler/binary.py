@@ -12,7 +12,12 @@ from ladderworks.core.il.program import ParamValue
 from ladderworks.core.instructions import BY_SUB, InstructionSpec, Kind, lookup
 
 MAGIC = b"LWPC"
-FORMAT_VERSION = 1
+FORMAT_VERSION = 2
+
+# Older versions this LadderWorks refuses, with what changed (the program must be compiled again).
+RETIRED_VERSIONS: dict[int, str] = {
+    1: "JMP had no coil count then",
+}
 
 _HEADER = struct.Struct("<4sHHIII")  # magic, version, header size, ops, param bytes, crc32
 _OP = struct.Struct("<BBHI")  # opcode, a, b, c
@@ -155,6 +160,10 @@ def decode(data: bytes) -> BinaryProgram:
     magic, version, header_size, count, param_bytes, crc = _HEADER.unpack_from(data)
     if magic != MAGIC:
         raise BinaryFormatError("wrong magic number (not a compiled LadderWorks program)")
+    if version in RETIRED_VERSIONS:
+        raise BinaryFormatError(
+            f"format version {version} is no longer supported ({RETIRED_VERSIONS[version]}): "
+            f"compile the program again (this LadderWorks reads version {FORMAT_VERSION})")
     if version != FORMAT_VERSION:
         raise BinaryFormatError(f"format version {version} is not supported "
                                 f"(this LadderWorks reads version {FORMAT_VERSION})")

@@ -14,7 +14,7 @@ from ladderworks.core.compiler import (
     decode,
     disassemble,
 )
-from ladderworks.core.compiler.binary import HEADER_SIZE, MAGIC
+from ladderworks.core.compiler.binary import FORMAT_VERSION, HEADER_SIZE, MAGIC
 from ladderworks.core.diagnostics import DiagnosticError
 from ladderworks.core.il import parse, parse_file, print_program
 from ladderworks.core.plc.engine import ScanEngine
@@ -91,7 +91,7 @@ def test_source_map_points_at_network_instruction_and_line() -> None:
 def test_header_holds_magic_version_and_checksum() -> None:
     data = compile(parse(MIXED).program)
     magic, version, header_size, count, _params, crc = struct.unpack_from("<4sHHIII", data)
-    assert (magic, version, header_size, count) == (MAGIC, 1, HEADER_SIZE, 21)
+    assert (magic, version, header_size, count) == (MAGIC, FORMAT_VERSION, HEADER_SIZE, 21)
     assert crc == zlib.crc32(data[HEADER_SIZE:])
 
 
@@ -122,8 +122,28 @@ def test_truncated_file_is_refused() -> None:
 
 def test_newer_version_is_refused() -> None:
     data = bytearray(compile(parse(MIXED).program))
-    data[4:6] = (2).to_bytes(2, "little")
-    assert "version 2" in reason(bytes(data))
+    data[4:6] = (FORMAT_VERSION + 1).to_bytes(2, "little")
+    assert f"version {FORMAT_VERSION + 1} is not supported" in reason(bytes(data))
+
+
+def test_version_1_binary_with_a_bare_jmp_is_refused_with_the_reason() -> None:
+    # version 1 wrote JMP (SUB 10) with no parameter: op record a = 0
+    op = struct.pack("<BBHI", 0x80, 0, 10, 0)
+    body = struct.pack("<BBHI", 1, 0, 0, 0) + op + struct.pack("<IHIH", 0, 0, 2, 1) * 2
+    header = struct.pack("<4sHHIII", MAGIC, 1, HEADER_SIZE, 2, 0, zlib.crc32(body))
+    text = reason(header + body)
+    assert "version 1 is no longer supported" in text
+    assert "JMP" in text and "compile the program again" in text
+    with pytest.raises(DiagnosticError) as info:
+        ScanEngine(header + body)
+    assert [d.code for d in info.value.diagnostics] == ["bad-binary"]
+
+
+def test_jmp_keeps_its_coil_count_in_the_binary() -> None:
+    program = parse("%@3\nRD X0.0\nJMP 2\nRD X0.1\nWRT Y0.1\nRD X0.0\nJMP 0\nJMPE\n%\n")
+    assert program.ok
+    jumps = [op for op in decode(compile(program.program)).ops if op.name == "JMP"]
+    assert [op.params for op in jumps] == [(2,), (0,)]
 
 
 def test_bad_opcode_with_a_valid_checksum_is_refused() -> None:
