@@ -39,3 +39,23 @@ def bit(engine: ScanEngine, text: str) -> int:
 def set_bit(engine: ScanEngine, text: str, value: int) -> None:
     """Set an input bit (as the machine would)."""
     engine.memory.set_bit(at(text), value)
+
+
+def stack_step(stack: list[int], name: str, value: int) -> None:
+    """One basic logic instruction on a reference stack (`value`: the operand bit, NOT applied
+    here); for the reference interpreters the generated scan code is checked against."""
+    if ".NOT" in name:
+        value ^= 1
+    if name in ("RD", "RD.NOT"):
+        stack[-1] = value
+    elif name in ("RD.STK", "RD.NOT.STK"):
+        stack.append(value)
+    elif name in ("AND", "AND.NOT"):
+        stack[-1] &= value
+    elif name in ("OR", "OR.NOT"):
+        stack[-1] |= value
+    elif name in ("AND.STK", "OR.STK"):
+        top = stack.pop()
+        stack[-1] = stack[-1] & top if name == "AND.STK" else stack[-1] | top
+    else:
+        raise ValueError(f"not a logic instruction: {name}")

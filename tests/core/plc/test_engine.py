@@ -11,7 +11,7 @@ from ladderworks.core.address import Area
 from ladderworks.core.compiler import SourcePosition
 from ladderworks.core.plc.engine import ScanEngine
 from ladderworks.core.plc.functions.timers import write_timer_preset
-from tests.core.plc.conftest import at, bit, engine_for
+from tests.core.plc.conftest import at, bit, engine_for, stack_step
 
 SELF_HOLD = """
 RD X0.0
@@ -264,27 +264,12 @@ def reference_scan(program: list[tuple[str, str | None]], engine: ScanEngine) ->
     memory = engine.memory
     stack = [0]
     for name, operand in program:
-        value = memory.bit(at(operand)) if operand else 0
-        if name.startswith(("RD", "AND", "OR")) and ".NOT" in name:
-            value ^= 1
-        if name in ("RD", "RD.NOT"):
-            stack[-1] = value
-        elif name in ("RD.STK", "RD.NOT.STK"):
-            stack.append(value)
-        elif name in ("AND", "AND.NOT"):
-            stack[-1] &= value
-        elif name in ("OR", "OR.NOT"):
-            stack[-1] |= value
-        elif name == "AND.STK":
-            top = stack.pop()
-            stack[-1] &= top
-        elif name == "OR.STK":
-            top = stack.pop()
-            stack[-1] |= top
-        elif name == "WRT":
+        if name == "WRT":
             memory.set_bit(at(operand or ""), stack[-1])
         elif name == "WRT.NOT":
             memory.set_bit(at(operand or ""), stack[-1] ^ 1)
+        else:
+            stack_step(stack, name, memory.bit(at(operand)) if operand else 0)
 
 
 def random_program(rng: random.Random, networks: int) -> list[tuple[str, str | None]]:

@@ -11,7 +11,7 @@ from ladderworks.core.address import Area
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.il import parse, print_program
 from ladderworks.core.plc.engine import ScanEngine
-from tests.core.plc.conftest import at, bit, engine_for, set_bit
+from tests.core.plc.conftest import at, bit, engine_for, set_bit, stack_step
 
 
 def ladder(text: str) -> str:
@@ -236,20 +236,7 @@ def reference_scan(program: list[Op], engine: ScanEngine) -> None:
             if name.endswith(".STK"):
                 stack = [*stack, 0] if name.startswith("RD") else stack[:-1]
             continue
-        value = memory.bit(at(operand)) if operand else 0
-        if ".NOT" in name:
-            value ^= 1
-        if name in ("RD", "RD.NOT"):
-            stack[-1] = value
-        elif name in ("RD.STK", "RD.NOT.STK"):
-            stack.append(value)
-        elif name in ("AND", "AND.NOT"):
-            stack[-1] &= value
-        elif name in ("OR", "OR.NOT"):
-            stack[-1] |= value
-        else:
-            top = stack.pop()
-            stack[-1] = stack[-1] & top if name == "AND.STK" else stack[-1] | top
+        stack_step(stack, name, memory.bit(at(operand)) if operand else 0)
 
 
 def random_program(rng: random.Random, networks: int) -> list[Op]:
