@@ -540,9 +540,7 @@ class MainWindow(QMainWindow):
         self._remember(path)
         if result.ok:
             self.failed_path = None
-            ladder_diagnostics = self.editor.set_program(result.program)
-            if ladder_diagnostics:
-                self.errors.set_diagnostics(result.diagnostics + ladder_diagnostics)
+            self.editor.set_program(result.program)
             self.pages.setCurrentWidget(self.editor)
         else:
             self.failed_path = path
@@ -742,9 +740,7 @@ class MainWindow(QMainWindow):
             self.errors.show()
             return False
         self.failed_path = None
-        ladder = self.editor.set_program(result.program)
-        if ladder:
-            self.errors.set_diagnostics(ladder)
+        self.editor.set_program(result.program)
         self.pages.setCurrentWidget(self.editor)
         if modified:
             self.editor.mark_modified()

@@ -42,11 +42,11 @@ from ladderworks.core.ladder import (
     LadderNetwork,
     Selection,
     Wire,
+    convert,
 )
 from ladderworks.core.signals import signal_at
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
-from ladderworks.gui.editor.conversion import ladder_to_program, program_to_ladder
 from ladderworks.gui.editor.geometry import (
     CELL_H,
     CELL_W,
@@ -153,12 +153,9 @@ class LadderEditor(QGraphicsView):
 
     # -- the document ------------------------------------------------------------------------
 
-    def set_program(self, program: Program) -> list[Diagnostic]:
-        """Show a program as ladder (clears undo); returns the conversion's diagnostics."""
-        document, diagnostics = program_to_ladder(program)
-        self.set_document(document)
-        self.mark_diagnostics(diagnostics)
-        return diagnostics
+    def set_program(self, program: Program) -> None:
+        """Show a program as ladder (clears undo); every program the parser accepts lays out."""
+        self.set_document(convert.program_to_ladder(program))
 
     def set_document(self, document: LadderDocument) -> None:
         """Show a ladder document (clears undo)."""
@@ -201,7 +198,7 @@ class LadderEditor(QGraphicsView):
 
     def saved_program(self) -> tuple[Program, list[Diagnostic]]:
         """The program to save: a network that cannot be coded yet is kept as a draft."""
-        program, diagnostics = ladder_to_program(self.ladder_document())
+        program, diagnostics = convert.ladder_to_program(self.ladder_document())
         self.mark_diagnostics(diagnostics)
         return program, diagnostics
 
