@@ -11,7 +11,13 @@ from ladderworks.core.address import Area
 from ladderworks.core.compiler import SourcePosition
 from ladderworks.core.plc.engine import ScanEngine
 from ladderworks.core.plc.functions.timers import write_timer_preset
-from tests.core.plc.conftest import at, bit, engine_for, stack_step
+from tests.core.plc.conftest import (
+    assert_matches_reference,
+    at,
+    bit,
+    engine_for,
+    stack_step,
+)
 
 SELF_HOLD = """
 RD X0.0
@@ -301,16 +307,7 @@ def test_generated_scan_matches_the_reference_interpreter(seed: int, monitored: 
     rng = random.Random(seed)
     program = random_program(rng, rng.randint(1, 6))
     text = "\n".join(name if operand is None else f"{name} {operand}" for name, operand in program)
-    engine = engine_for(text)
-    engine.monitored = monitored
-    reference = engine_for(text)
-    for _ in range(4):
-        data = bytes(rng.randrange(256) for _ in range(3))
-        engine.memory.areas[Area.R][0:3] = data
-        reference.memory.areas[Area.R][0:3] = data
-        engine.scan()
-        reference_scan(program, reference)
-        assert engine.memory.areas[Area.R][0:3] == reference.memory.areas[Area.R][0:3]
+    assert_matches_reference(text, lambda engine: reference_scan(program, engine), rng, monitored)
 
 
 def test_very_long_and_alternating_networks_compile_and_run() -> None:

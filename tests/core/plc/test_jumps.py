@@ -11,7 +11,14 @@ from ladderworks.core.address import Area
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.il import parse, print_program
 from ladderworks.core.plc.engine import ScanEngine
-from tests.core.plc.conftest import at, bit, engine_for, set_bit, stack_step
+from tests.core.plc.conftest import (
+    assert_matches_reference,
+    at,
+    bit,
+    engine_for,
+    set_bit,
+    stack_step,
+)
 
 
 def ladder(text: str) -> str:
@@ -286,14 +293,5 @@ def text_of(program: list[Op]) -> str:
 def test_generated_jumps_match_the_reference_interpreter(seed: int, monitored: bool) -> None:
     rng = random.Random(seed)
     program = random_program(rng, rng.randint(1, 10))
-    engine = engine_for(text_of(program))
-    engine.monitored = monitored
-    reference = engine_for(text_of(program))
-    for _ in range(4):
-        data = bytes(rng.randrange(256) for _ in range(3))
-        engine.memory.areas[Area.R][0:3] = data
-        reference.memory.areas[Area.R][0:3] = data
-        engine.scan()
-        reference_scan(program, reference)
-        assert engine.memory.areas[Area.R][0:3] == reference.memory.areas[Area.R][0:3], (
-            text_of(program))
+    assert_matches_reference(text_of(program), lambda engine: reference_scan(program, engine),
+                             rng, monitored)
