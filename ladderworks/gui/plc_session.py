@@ -48,14 +48,12 @@ forced X/F bit gives it back the value the machine side last wrote with `set_bit
 
 from __future__ import annotations
 
-import ctypes
-import sys
 import time
 from collections.abc import Iterable
 from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, field
 
-from PySide6.QtCore import QObject, QTimer, Signal, SignalInstance
+from PySide6.QtCore import QObject, QTimer, Signal
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.alarms import ActiveAlarm, ActiveAlarms, AlarmTable
@@ -120,38 +118,6 @@ class PlcSnapshot:
         return int.from_bytes(data[address.byte:address.byte + width], "little")
 
 
-def _emit_steals_true() -> bool:
-    """True when this PySide6 drops a reference to True on every `SignalInstance.emit()`
-    (seen with PySide6 6.12 on Python 3.11: after some hundred emits Python aborts with
-    "bool_dealloc: deallocating True")."""
-
-    class Probe(QObject):
-        fired = Signal(object)
-
-    probe = Probe()
-    before = sys.getrefcount(True)
-    for _ in range(4):
-        probe.fired.emit(None)
-    stolen = before - sys.getrefcount(True)
-    for _ in range(max(stolen, 0)):
-        ctypes.pythonapi.Py_IncRef(ctypes.py_object(True))
-    return stolen == 4
-
-
-_STEALS_TRUE: bool | None = None
-
-
-def safe_emit(signal: SignalInstance, *args: object) -> None:
-    """`signal.emit(*args)`, giving back the reference to True a buggy PySide6 takes on each
-    emit. Use it for every Python-side emit that may run often (timers, scans)."""
-    global _STEALS_TRUE
-    if _STEALS_TRUE is None:
-        _STEALS_TRUE = _emit_steals_true()
-    signal.emit(*args)
-    if _STEALS_TRUE:
-        ctypes.pythonapi.Py_IncRef(ctypes.py_object(True))
-
-
 class _ScanFigures:
     """Min/avg/max of scans run on the virtual clock (the runner keeps its own)."""
 
@@ -172,7 +138,7 @@ class PlcSession(QObject):
     """Owns the ScanEngine of the loaded program; runs it and tells the GUI what it does."""
 
     program_loaded = Signal(object)
-    running_changed = Signal(object)  # bool (object: see safe_emit)
+    running_changed = Signal(object)  # a bool
     status_changed = Signal(object)
     snapshot_ready = Signal(object)
     forces_changed = Signal(list)
@@ -201,9 +167,6 @@ class PlcSession(QObject):
         self._timer.setInterval(publish_ms)
         self._timer.timeout.connect(self.publish)
 
-    def _emit(self, name: str, *args: object) -> None:
-        safe_emit(getattr(self, name), *args)
-
     # -- the program ---------------------------------------------------------------------
 
     def load(self, binary: bytes, program: Program | None = None) -> list[Diagnostic]:
@@ -228,8 +191,8 @@ class PlcSession(QObject):
         self._figures = _ScanFigures()
         self._stopped_stats = None
         self._alarms.clear()
-        self._emit("program_loaded", engine.program)
-        self._emit("forces_changed", engine.forces())
+        self.program_loaded.emit(engine.program)
+        self.forces_changed.emit(engine.forces())
         self.publish()
         return []
 
@@ -260,7 +223,7 @@ class PlcSession(QObject):
             self._runner = RealTimeRunner(self.engine)
             self._runner.start()
             self._timer.start()
-        self._emit("running_changed", True)
+        self.running_changed.emit(True)
         self.publish()
         return True
 
@@ -276,7 +239,7 @@ class PlcSession(QObject):
             self._stopped_stats = self._runner.stats()
             self._runner = None
         self._running = False
-        self._emit("running_changed", False)
+        self.running_changed.emit(False)
         self.publish()
 
     def run_scans(self, count: int) -> int:
@@ -335,8 +298,8 @@ class PlcSession(QObject):
         snap = self.snapshot()
         if self._runner is not None and self.engine is not None:
             self._update_alarms(self.engine)
-        self._emit("status_changed", self.status())
-        self._emit("snapshot_ready", snap)
+        self.status_changed.emit(self.status())
+        self.snapshot_ready.emit(snap)
 
     def monitor(self, on: bool) -> None:
         """A view starts (True) or stops (False) needing the power flow of every op."""
@@ -380,7 +343,7 @@ class PlcSession(QObject):
     # -- forcing and disabling -----------------------------------------------------------
 
     def _forces_changed(self) -> None:
-        self._emit("forces_changed", self.forces())
+        self.forces_changed.emit(self.forces())
         if not self._running:
             self.publish()
 
@@ -504,5 +467,5 @@ class PlcSession(QObject):
 
     def _emit_alarms(self) -> None:
         self._alarm_view = self._alarms.alarms
-        self._emit("alarms_changed", list(self._alarm_view))
+        self.alarms_changed.emit(list(self._alarm_view))
 

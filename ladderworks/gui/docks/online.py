@@ -11,7 +11,7 @@ from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox
 from ladderworks.gui.docks.live_ladder import LivePower, match_networks
 from ladderworks.gui.editor.view import LadderEditor
-from ladderworks.gui.plc_session import PlcSession, PlcSnapshot, safe_emit
+from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 
 translate = QCoreApplication.translate
 
@@ -71,7 +71,7 @@ class OnlineMode(QObject):
         return self.live.attached
 
     def _say(self, text: str) -> None:
-        safe_emit(self.editor.message, text)
+        self.editor.message.emit(text)
 
     def set_online(self, on: bool) -> bool:
         """Go on-line (when the drawing is exactly the loaded program) or off-line."""

@@ -24,7 +24,7 @@ from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, decode, parse, print_program
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
-from ladderworks.gui.plc_session import PlcSession, PlcStatus, safe_emit
+from ladderworks.gui.plc_session import PlcSession, PlcStatus
 
 translate = QCoreApplication.translate
 
@@ -209,7 +209,7 @@ class PlcControlDock(QDockWidget):
                                          else ""))
             if first:
                 self.editor.go_to_line(first)
-            safe_emit(self.compile_finished, result)
+            self.compile_finished.emit(result)
             return result
         self._program = parsed.program
         self._ends = network_end_lines(parsed.program) or [self.editor.blockCount()]
@@ -230,7 +230,7 @@ class PlcControlDock(QDockWidget):
         self._done = min(len(self._ends), self._done + step)
         self.editor.set_converted(self._ends[self._done - 1])
         self.progress.setValue(self._done)
-        safe_emit(self.compile_progress, self.editor.converted_lines)
+        self.compile_progress.emit(self.editor.converted_lines)
         if self._done < len(self._ends):
             return
         self._timer.stop()
@@ -247,7 +247,7 @@ class PlcControlDock(QDockWidget):
                 text += " " + translate("PlcControl", "({0} warning(s))").format(warnings)
             self.message.setText(text)
         self._update_actions()
-        safe_emit(self.compile_finished, self.result)
+        self.compile_finished.emit(self.result)
 
     # -- START / STOP --------------------------------------------------------------------
 
