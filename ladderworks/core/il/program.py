@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address
-from ladderworks.core.instructions import InstructionSpec, Kind, lookup
+from ladderworks.core.instructions import InstructionSpec, Kind, spec_for
 
 ParamValue = int | Address
 
@@ -25,7 +25,7 @@ class Instruction:
     @property
     def spec(self) -> InstructionSpec:
         """The instruction table row."""
-        spec = lookup(self.name)
+        spec = spec_for(self.name, len(self.params))
         assert spec is not None, self.name
         return spec
 
