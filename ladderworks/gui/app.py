@@ -50,7 +50,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Start the IDE (optionally opening the file named on the command line)."""
     args = list(argv) if argv is not None else sys.argv
     parse_arguments(args[1:])
-    if QCoreApplication.instance() is None and uses_xcb(os.environ, sys.platform):
+    if uses_xcb(os.environ, sys.platform):
         missing = missing_libraries()
         if missing:
             explain_missing_libraries(missing)
