@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import hashlib
+import os
 import shutil
 import subprocess
 import xml.etree.ElementTree as ET
@@ -97,8 +99,10 @@ def cache_dir() -> Path:
 def build_qm(language: str, target_dir: Path | None = None) -> Path | None:
     """The `.qm` for `language`: the packaged one, else built with lrelease from the `.ts`.
 
-    An installed wheel ships only the `.qm`; a checkout (re)builds it into the cache when it is
-    missing or older than the `.ts`."""
+    An installed wheel ships only the `.qm`. A checkout builds it into the cache under the
+    `.ts`'s hash, written whole and renamed into place: Qt maps a loaded `.qm` into memory, so
+    a file rewritten in place under another running process (another checkout, a parallel test
+    run) would crash it."""
     source = ts_file(language)
     shipped = translations_dir() / f"ladderworks_{language}.qm"
     if shipped.exists() and (not source.exists()
@@ -106,22 +110,26 @@ def build_qm(language: str, target_dir: Path | None = None) -> Path | None:
         return shipped
     if not source.exists():
         return None
+    digest = hashlib.sha256(source.read_bytes()).hexdigest()[:16]
     directory = target_dir or cache_dir()
-    target = directory / f"ladderworks_{language}.qm"
-    if target.exists() and target.stat().st_mtime >= source.stat().st_mtime:
+    target = directory / f"ladderworks_{language}-{digest}.qm"
+    if target.exists():
         return target
     program = lrelease_program()
     if program is None:
         return None
+    partial = directory / f"{target.name}.{os.getpid()}.part"
     try:
         directory.mkdir(parents=True, exist_ok=True)
         subprocess.run(
-            [program, "-silent", str(source), "-qm", str(target)],
+            [program, "-silent", str(source), "-qm", str(partial)],
             check=True, capture_output=True, timeout=60,
         )
+        os.replace(partial, target)
     except (OSError, subprocess.SubprocessError):
+        partial.unlink(missing_ok=True)
         return None
-    return target if target.exists() else None
+    return target
 
 
 class TsTranslator(QTranslator):
