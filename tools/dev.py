@@ -108,8 +108,9 @@ def commands(python: Path, name: str, args: list[str]) -> list[list[str]]:
     if name == "test":
         return [[py, "-m", "ruff", "check", *LINTED], [py, "-m", "pytest", "-q", *args]]
     if name == "bench":
-        return [[py, str(script), *args] for script in sorted(Path("benchmarks").glob("*.py"))]
-    return [[py, str(Path("tools") / "product_check.py"), *args]]
+        return [[py, str(script), *args]
+                for script in sorted((CHECKOUT / "benchmarks").glob("*.py"))]
+    return [[py, str(CHECKOUT / "tools" / "product_check.py"), *args]]
 
 
 def main(argv: list[str]) -> int:

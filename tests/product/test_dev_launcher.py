@@ -72,3 +72,12 @@ def test_test_runs_ruff_then_the_whole_suite_and_run_starts_the_ide() -> None:
 def test_an_unknown_command_prints_the_usage(capsys: pytest.CaptureFixture[str]) -> None:
     assert dev.main(["deploy"]) == 1
     assert "usage: python3 tools/dev.py run|test" in capsys.readouterr().err
+
+
+def test_bench_and_product_name_the_checkout_s_scripts() -> None:
+    python = Path("py")
+    benches = dev.commands(python, "bench", [])
+    assert benches and all(Path(script).parent == dev.CHECKOUT / "benchmarks"
+                           for _py, script in benches)
+    assert dev.commands(python, "product", []) == [
+        ["py", str(dev.CHECKOUT / "tools" / "product_check.py")]]
