@@ -77,7 +77,10 @@ def needs_install(stamp: Path, wanted: dict[str, object]) -> bool:
         return True
     if not isinstance(done, dict) or done.get("pyproject") != wanted["pyproject"]:
         return True
-    return not set(wanted["extras"]) <= set(done.get("extras", []))  # type: ignore[arg-type]
+    done_extras, wanted_extras = done.get("extras"), wanted["extras"]
+    if not isinstance(done_extras, list) or not isinstance(wanted_extras, list):
+        return True
+    return not set(wanted_extras) <= set(done_extras)
 
 
 def install(checkout: Path, venv: Path, extras: tuple[str, ...]) -> str | None:
