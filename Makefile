@@ -1,21 +1,23 @@
-# LadderWorks: the two entry points of the README, and the helpers they use.
+# LadderWorks: the two entry points of the README, and the helpers they use. Each runs in the
+# project-local .venv that tools/dev.py creates and keeps installed (make is optional:
+# `python3 tools/dev.py run` does the same, e.g. `py tools\dev.py test` in PowerShell).
 PYTHON ?= python3
-PIP ?= $(PYTHON) -m pip
+DEV = $(PYTHON) tools/dev.py
 
-.PHONY: install run test lint bench translations
+.PHONY: run test lint bench product
 
-install:
-	$(PIP) install --quiet --disable-pip-version-check -e '.[test]'
+run:
+	$(DEV) run
 
-run: install
-	$(PYTHON) -m ladderworks
-
-test: install
-	QT_QPA_PLATFORM=offscreen $(PYTHON) -m ruff check ladderworks tests benchmarks tools
-	QT_QPA_PLATFORM=offscreen $(PYTHON) -m pytest -q
+test:
+	$(DEV) test
 
 lint:
-	$(PYTHON) -m ruff check ladderworks tests benchmarks tools
+	$(DEV) lint
 
-bench: install
-	for script in benchmarks/*.py; do $(PYTHON) $$script || exit 1; done
+bench:
+	$(DEV) bench
+
+# What .ci/run checks after the tests: the wheel, installed into a fresh environment.
+product:
+	$(DEV) product

@@ -624,32 +624,32 @@
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="130"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="135"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="133"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="136"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="141"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="137"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="142"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="143"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="172"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -657,17 +657,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="125"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="124"/>
         <source>No reference entry for this instruction.</source>
         <translation>No reference entry for this instruction.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="136"/>
         <source>Instruction reference</source>
         <translation>Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="138"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
         <source>Search, e.g. TMR</source>
         <translation>Search, e.g. TMR</translation>
     </message>
@@ -675,113 +675,113 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="336"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="370"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="648"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="333"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="367"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="645"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="347"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="344"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="351"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="630"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="642"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="639"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="659"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="668"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="357"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="656"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="665"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="375"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="372"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="377"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="374"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="386"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="391"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="388"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="402"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="399"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="409"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="447"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="444"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="455"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="448"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="486"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="483"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Address, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="461"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="497"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="566"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="587"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="458"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="494"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="563"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="584"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="302"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="556"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="299"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="553"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="557"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="686"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="683"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="698"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="707"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="704"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="784"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="781"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -1004,113 +1004,113 @@
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="557"/>
+        <location filename="../ladderworks/gui/main_window.py" line="555"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="567"/>
+        <location filename="../ladderworks/gui/main_window.py" line="565"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="569"/>
+        <location filename="../ladderworks/gui/main_window.py" line="567"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="600"/>
-        <location filename="../ladderworks/gui/main_window.py" line="623"/>
+        <location filename="../ladderworks/gui/main_window.py" line="598"/>
+        <location filename="../ladderworks/gui/main_window.py" line="621"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="601"/>
+        <location filename="../ladderworks/gui/main_window.py" line="599"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="624"/>
+        <location filename="../ladderworks/gui/main_window.py" line="622"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="635"/>
+        <location filename="../ladderworks/gui/main_window.py" line="633"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="640"/>
+        <location filename="../ladderworks/gui/main_window.py" line="638"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="648"/>
+        <location filename="../ladderworks/gui/main_window.py" line="646"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="650"/>
+        <location filename="../ladderworks/gui/main_window.py" line="648"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="660"/>
+        <location filename="../ladderworks/gui/main_window.py" line="658"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="662"/>
+        <location filename="../ladderworks/gui/main_window.py" line="660"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="681"/>
+        <location filename="../ladderworks/gui/main_window.py" line="679"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="683"/>
+        <location filename="../ladderworks/gui/main_window.py" line="681"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="694"/>
+        <location filename="../ladderworks/gui/main_window.py" line="692"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="766"/>
+        <location filename="../ladderworks/gui/main_window.py" line="762"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="785"/>
+        <location filename="../ladderworks/gui/main_window.py" line="781"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="791"/>
+        <location filename="../ladderworks/gui/main_window.py" line="787"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Compile finished: {0} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="811"/>
+        <location filename="../ladderworks/gui/main_window.py" line="807"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="814"/>
+        <location filename="../ladderworks/gui/main_window.py" line="810"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="846"/>
+        <location filename="../ladderworks/gui/main_window.py" line="842"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="847"/>
+        <location filename="../ladderworks/gui/main_window.py" line="843"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -1702,6 +1702,19 @@
         <location filename="../ladderworks/gui/docks/tables.py" line="524"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
+    </message>
+</context>
+<context>
+    <name>QtLibraries</name>
+    <message>
+        <location filename="../ladderworks/gui/qt_libraries.py" line="71"/>
+        <source>LadderWorks cannot start: Qt&apos;s X11 (xcb) platform needs system libraries that are missing: {0}.</source>
+        <translation>LadderWorks cannot start: Qt&apos;s X11 (xcb) platform needs system libraries that are missing: {0}.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/qt_libraries.py" line="75"/>
+        <source>On Debian or Ubuntu, install them with:</source>
+        <translation>On Debian or Ubuntu, install them with:</translation>
     </message>
 </context>
 <context>

@@ -624,32 +624,32 @@
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="130"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="135"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="133"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="136"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="141"/>
         <source>Parameter</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="137"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="142"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="143"/>
         <source>Allowed</source>
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="172"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
     </message>
@@ -657,17 +657,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="125"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="124"/>
         <source>No reference entry for this instruction.</source>
         <translation>Bu komut için başvuru kaydı yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="136"/>
         <source>Instruction reference</source>
         <translation>Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="138"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
         <source>Search, e.g. TMR</source>
         <translation>Ara, örn. TMR</translation>
     </message>
@@ -675,113 +675,113 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="336"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="370"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="648"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="333"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="367"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="645"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="347"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="344"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="351"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="630"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="642"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="639"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="659"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="668"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="357"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="656"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="665"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="375"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="372"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="377"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="374"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="386"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="391"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="388"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="402"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="399"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="409"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="447"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="444"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="455"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="448"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="486"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="483"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Adres, örneğin X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="461"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="497"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="566"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="587"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="458"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="494"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="563"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="584"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="302"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="556"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="299"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="553"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="557"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="686"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="683"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="698"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="707"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="704"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="784"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="781"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
@@ -1004,113 +1004,113 @@
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="557"/>
+        <location filename="../ladderworks/gui/main_window.py" line="555"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="567"/>
+        <location filename="../ladderworks/gui/main_window.py" line="565"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="569"/>
+        <location filename="../ladderworks/gui/main_window.py" line="567"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="600"/>
-        <location filename="../ladderworks/gui/main_window.py" line="623"/>
+        <location filename="../ladderworks/gui/main_window.py" line="598"/>
+        <location filename="../ladderworks/gui/main_window.py" line="621"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="601"/>
+        <location filename="../ladderworks/gui/main_window.py" line="599"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="624"/>
+        <location filename="../ladderworks/gui/main_window.py" line="622"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="635"/>
+        <location filename="../ladderworks/gui/main_window.py" line="633"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="640"/>
+        <location filename="../ladderworks/gui/main_window.py" line="638"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="648"/>
+        <location filename="../ladderworks/gui/main_window.py" line="646"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="650"/>
+        <location filename="../ladderworks/gui/main_window.py" line="648"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="660"/>
+        <location filename="../ladderworks/gui/main_window.py" line="658"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="662"/>
+        <location filename="../ladderworks/gui/main_window.py" line="660"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="681"/>
+        <location filename="../ladderworks/gui/main_window.py" line="679"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="683"/>
+        <location filename="../ladderworks/gui/main_window.py" line="681"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="694"/>
+        <location filename="../ladderworks/gui/main_window.py" line="692"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="766"/>
+        <location filename="../ladderworks/gui/main_window.py" line="762"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="785"/>
+        <location filename="../ladderworks/gui/main_window.py" line="781"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="791"/>
+        <location filename="../ladderworks/gui/main_window.py" line="787"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Derleme bitti (compile finish): {0} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="811"/>
+        <location filename="../ladderworks/gui/main_window.py" line="807"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="814"/>
+        <location filename="../ladderworks/gui/main_window.py" line="810"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="846"/>
+        <location filename="../ladderworks/gui/main_window.py" line="842"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="847"/>
+        <location filename="../ladderworks/gui/main_window.py" line="843"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -1702,6 +1702,19 @@
         <location filename="../ladderworks/gui/docks/tables.py" line="524"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
+    </message>
+</context>
+<context>
+    <name>QtLibraries</name>
+    <message>
+        <location filename="../ladderworks/gui/qt_libraries.py" line="71"/>
+        <source>LadderWorks cannot start: Qt&apos;s X11 (xcb) platform needs system libraries that are missing: {0}.</source>
+        <translation>LadderWorks başlatılamıyor: Qt&apos;nin X11 (xcb) platformunun gerektirdiği sistem kütüphaneleri eksik: {0}.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/qt_libraries.py" line="75"/>
+        <source>On Debian or Ubuntu, install them with:</source>
+        <translation>Debian veya Ubuntu&apos;da şu komutla kurun:</translation>
     </message>
 </context>
 <context>

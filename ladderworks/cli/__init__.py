@@ -8,11 +8,14 @@ import pkgutil
 import sys
 from collections.abc import Sequence
 
+from ladderworks import version
+
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser with every subcommand of every module in this package."""
     parser = argparse.ArgumentParser(
         prog="ladderworks-cli", description="LadderWorks command-line tools")
+    parser.add_argument("--version", action="version", version=f"%(prog)s {version()}")
     subparsers = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for info in sorted(pkgutil.iter_modules(__path__), key=lambda m: m.name):
         if info.name.startswith("_"):  # __main__ runs the CLI when imported

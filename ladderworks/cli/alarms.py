@@ -14,7 +14,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     """Add `alarms [FILE]`."""
     parser = subparsers.add_parser(
         "alarms", help="check an AlarmMsg.dat and list its messages as NNN  A0.0  text")
-    parser.add_argument("file", nargs="?", default=str(paths.RESOURCES / "AlarmMsg.dat"),
+    parser.add_argument("file", nargs="?", default=str(paths.alarm_file()),
                         metavar="FILE", help="the message file (default: the sample)")
     parser.set_defaults(handler=_alarms)
 

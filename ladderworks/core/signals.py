@@ -93,7 +93,7 @@ def load_signals() -> tuple[Signal, ...]:
     """Every signal of resources/signals/, ordered by address (read once, then cached)."""
     signals: list[Signal] = []
     for area, filename in SIGNAL_FILES.items():
-        signals.extend(read_signal_file(paths.SIGNALS / filename, area))
+        signals.extend(read_signal_file(paths.signals_dir() / filename, area))
     return tuple(sorted(signals, key=lambda s: sort_key(s.address)))
 
 

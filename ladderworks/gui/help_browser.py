@@ -20,11 +20,10 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.instructions import ALL, InstructionSpec, lookup
 from ladderworks.gui.translation import instruction_title, ui_is_turkish
-from ladderworks.paths import ROOT
+from ladderworks.paths import help_page
 
 translate = QCoreApplication.translate
 
-REFERENCES = {"en": ROOT / "docs" / "instructions.md", "tr": ROOT / "docs" / "instructions_tr.md"}
 _ANCHOR = re.compile(r'\s*<a id="([^"]+)"></a>\s*$')
 
 
@@ -34,7 +33,7 @@ def reference_sections(language: str = "en") -> dict[str, str]:
     sections: dict[str, str] = {}
     key: str | None = None
     lines: list[str] = []
-    path = REFERENCES.get(language, REFERENCES["en"])
+    path = help_page(language)
     text = path.read_text("utf-8") if path.exists() else ""
     for line in text.splitlines():
         heading = line.startswith(("## ", "### "))

@@ -7,7 +7,7 @@ from enum import StrEnum
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QIcon
 
-from ladderworks.paths import ICONS
+from ladderworks.paths import icons_dir
 
 
 class Tool(StrEnum):
@@ -66,7 +66,7 @@ KEY_TOOLS: dict[str, Tool] = {key: tool for tool, key in TOOL_KEYS.items()}
 
 def icon(name: str) -> QIcon:
     """An SVG icon from resources/icons."""
-    return QIcon(str(ICONS / f"{name}.svg"))
+    return QIcon(str(icons_dir() / f"{name}.svg"))
 
 
 def tool_icon(tool: Tool) -> QIcon:

@@ -1,7 +1,9 @@
-"""UI languages: build `.qm` files from the committed `.ts` at start-up and switch live."""
+"""UI languages: load the packaged `.qm` (a checkout builds it from `.ts`) and switch live."""
 
 from __future__ import annotations
 
+import hashlib
+import os
 import shutil
 import subprocess
 import xml.etree.ElementTree as ET
@@ -18,7 +20,7 @@ from PySide6.QtCore import (
 
 from ladderworks.core.instructions import InstructionSpec
 from ladderworks.gui.settings import LANGUAGES
-from ladderworks.paths import TRANSLATIONS
+from ladderworks.paths import translations_dir
 
 
 def system_language() -> str:
@@ -75,15 +77,16 @@ def param_label(name: str) -> str:
 
 
 def ts_file(language: str) -> Path:
-    """The committed translation source for `language`."""
-    return TRANSLATIONS / f"ladderworks_{language}.ts"
+    """The committed translation source for `language` (absent from an installed wheel)."""
+    return translations_dir() / f"ladderworks_{language}.ts"
 
 
 def lrelease_program() -> str | None:
     """The lrelease that ships with PySide6 (or one on PATH)."""
-    bundled = Path(PySide6.__file__).parent / "lrelease"
-    if bundled.exists():
-        return str(bundled)
+    for name in ("lrelease", "lrelease.exe"):
+        bundled = Path(PySide6.__file__).parent / name
+        if bundled.exists():
+            return str(bundled)
     return shutil.which("pyside6-lrelease") or shutil.which("lrelease")
 
 
@@ -94,29 +97,39 @@ def cache_dir() -> Path:
 
 
 def build_qm(language: str, target_dir: Path | None = None) -> Path | None:
-    """The `.qm` for `language`, (re)built with lrelease when missing or older than the `.ts`."""
+    """The `.qm` for `language`: the packaged one, else built with lrelease from the `.ts`.
+
+    An installed wheel ships only the `.qm`. A checkout builds it into the cache under the
+    `.ts`'s hash, written whole and renamed into place: Qt maps a loaded `.qm` into memory, so
+    a file rewritten in place under another running process (another checkout, a parallel test
+    run) would crash it."""
     source = ts_file(language)
+    shipped = translations_dir() / f"ladderworks_{language}.qm"
+    if shipped.exists() and (not source.exists()
+                             or shipped.stat().st_mtime >= source.stat().st_mtime):
+        return shipped
     if not source.exists():
         return None
-    shipped = TRANSLATIONS / f"ladderworks_{language}.qm"
-    if shipped.exists() and shipped.stat().st_mtime >= source.stat().st_mtime:
-        return shipped
+    digest = hashlib.sha256(source.read_bytes()).hexdigest()[:16]
     directory = target_dir or cache_dir()
-    target = directory / f"ladderworks_{language}.qm"
-    if target.exists() and target.stat().st_mtime >= source.stat().st_mtime:
+    target = directory / f"ladderworks_{language}-{digest}.qm"
+    if target.exists():
         return target
     program = lrelease_program()
     if program is None:
         return None
+    partial = directory / f"{target.name}.{os.getpid()}.part"
     try:
         directory.mkdir(parents=True, exist_ok=True)
         subprocess.run(
-            [program, "-silent", str(source), "-qm", str(target)],
+            [program, "-silent", str(source), "-qm", str(partial)],
             check=True, capture_output=True, timeout=60,
         )
+        os.replace(partial, target)
     except (OSError, subprocess.SubprocessError):
+        partial.unlink(missing_ok=True)
         return None
-    return target if target.exists() else None
+    return target
 
 
 class TsTranslator(QTranslator):

@@ -16,13 +16,13 @@ from ladderworks.gui import app
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.settings import Settings
 from ladderworks.gui.translation import UiLanguage
-from ladderworks.paths import EXAMPLES, ROOT
+from ladderworks.paths import CHECKOUT, EXAMPLES
 
 BROKEN = "%@3\nRD X2.1\nAND Q9.9\nWRT Y0.0\n%\n"
 
 
 def documented_names() -> set[str]:
-    text = (ROOT / "docs" / "ui.md").read_text("utf-8")
+    text = (CHECKOUT / "docs" / "ui.md").read_text("utf-8")
     return set(re.findall(r"`([a-z][a-z0-9_]*)`", text))
 
 

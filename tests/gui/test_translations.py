@@ -13,9 +13,9 @@ import pytest
 from ladderworks.core.diagnostics import MESSAGES
 from ladderworks.gui.diagnostic_texts import diagnostic_templates
 from ladderworks.gui.translation import TsTranslator, lrelease_program, ts_file
-from ladderworks.paths import ROOT
+from ladderworks.paths import CHECKOUT
 
-GUI = ROOT / "ladderworks" / "gui"
+GUI = CHECKOUT / "ladderworks" / "gui"
 
 
 def _lupdate() -> Path:

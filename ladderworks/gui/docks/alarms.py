@@ -28,7 +28,7 @@ from ladderworks.gui.plc_session import PlcSession
 
 translate = QCoreApplication.translate
 
-DEFAULT_ALARM_FILE = paths.RESOURCES / "AlarmMsg.dat"
+DEFAULT_ALARM_FILE = paths.alarm_file()
 COLUMNS = 5  # number, address, PLC time, clock, message
 
 
