@@ -24,7 +24,8 @@ def difu(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tu
     """W1 = 1 for one execution when ACT has gone 0 -> 1 since the last one."""
     (act,) = inputs
     (number,) = params
-    return bool(act) and not _previous(ctx, "DIFU", number, act)
+    before = _previous(ctx, "DIFU", number, act)
+    return bool(act) and not before
 
 
 @function("DIFD")
@@ -32,4 +33,5 @@ def difd(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tu
     """W1 = 1 for one execution when ACT has gone 1 -> 0 since the last one."""
     (act,) = inputs
     (number,) = params
-    return not act and _previous(ctx, "DIFD", number, act)
+    before = _previous(ctx, "DIFD", number, act)
+    return before and not act
