@@ -1,4 +1,6 @@
-"""docs/instructions.md: a heading for every row of the instruction table, examples that parse."""
+"""docs/instructions.md: a heading for every row of the instruction table, examples that parse,
+compile and run; `lad pending` examples (SET/RST and the subprogram and label instructions, which
+the simulator does not run yet) parse with nothing but the diagnostics listed in PENDING_CODES."""
 
 from __future__ import annotations
 
@@ -16,6 +18,9 @@ DOC = Path(__file__).resolve().parents[3] / "docs" / "instructions.md"
 TEXT = DOC.read_text(encoding="utf-8")
 HEADINGS = [line for line in TEXT.splitlines() if line.startswith("### ")]
 EXAMPLES = re.findall(r"```lad\n(.*?)```", TEXT, flags=re.S)
+PENDING = re.findall(r"```lad pending\n(.*?)```", TEXT, flags=re.S)
+# what the parser says today about `Pn` and `Ln` operands; nothing else may be wrong
+PENDING_CODES = {"param-kind-number"}
 
 
 @pytest.mark.parametrize("spec", it.ALL, ids=lambda s: s.name)
@@ -34,9 +39,20 @@ def test_no_heading_for_unknown_instructions() -> None:
 
 def test_every_functional_instruction_has_an_example() -> None:
     used = {line.split()[0] for block in EXAMPLES for line in block.splitlines() if line}
-    missing = {s.name for s in it.FUNCTIONS} - used - {"JMPE", "COME"}
+    pending = {line.split()[0] for block in PENDING for line in block.splitlines() if line}
+    missing = {s.name for s in it.FUNCTIONS} - used - pending - {"JMPE", "COME", "SP", "SPE"}
     assert not missing
-    assert len(EXAMPLES) >= 45
+    assert {"SP", "SPE", "SET", "RST"} <= pending
+    assert len(EXAMPLES) >= 75
+
+
+@pytest.mark.parametrize("example", PENDING)
+def test_pending_example_parses_but_for_program_and_label_operands(example: str) -> None:
+    result = parse(f"%@3\n{example}%\n")
+    assert {d.code for d in result.diagnostics} <= PENDING_CODES, [
+        str(d) for d in result.diagnostics]
+    for line in example.splitlines():
+        assert it.lookup(line.split()[0]) is not None, line
 
 
 @pytest.mark.parametrize("example", EXAMPLES)
