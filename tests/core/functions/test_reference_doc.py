@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from ladderworks.core import instructions as it
+from ladderworks.core.address import parse_address
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.il import parse
 from ladderworks.core.plc.engine import ScanEngine
@@ -67,3 +68,20 @@ def test_example_parses_without_errors(example: str) -> None:
     for _ in range(5):
         engine.scan()
     assert engine.scan_count == 5
+
+
+def test_sft_example_shifts_once_per_press() -> None:
+    """The SFT entry's example (issue #17): DIFU gives ACT for one scan, so one shift a press."""
+    entry = TEXT[TEXT.index('<a id="instr-sft">'):]
+    block = re.search(r"```lad\n(.*?)```", entry, flags=re.S)
+    assert block
+    compiled = compile_program(parse(f"%@3\n{block.group(1)}%\n").program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    engine.memory.write(parse_address("R100"), 1, 2)
+    for press in range(1, 4):
+        engine.memory.set_bit(parse_address("X1.0"), 1)
+        engine.run_scans(5)
+        engine.memory.set_bit(parse_address("X1.0"), 0)
+        engine.run_scans(2)
+        assert engine.memory.read(parse_address("R100"), 2) == 1 << press
