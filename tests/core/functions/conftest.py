@@ -1,4 +1,5 @@
-"""Shared set-up for the functional-instruction tests: a fresh PLC memory and a call helper."""
+"""Shared set-up for the functional-instruction tests: a fresh PLC memory, a call helper and
+engines running small programs in fast and monitored mode."""
 
 from __future__ import annotations
 
@@ -6,9 +7,11 @@ from collections.abc import Callable
 
 import pytest
 
-from ladderworks.core.address import Address, parse_address
+from ladderworks.core.address import Address, Area, parse_address
+from ladderworks.core.plc.engine import ScanEngine
 from ladderworks.core.plc.functions import FunctionContext, load_all
 from ladderworks.core.plc.memory import Memory
+from tests.core.plc.conftest import engine_for
 
 REGISTRY = load_all()
 
@@ -42,3 +45,34 @@ def ctx() -> FunctionContext:
 def box(ctx: FunctionContext) -> Callable[..., Box]:
     """Make a call site: box("ADD", 0, "R100", 5, "R102")."""
     return lambda name, *params: Box(ctx, name, *params)
+
+
+# The 30i memory-B sizes of the areas whose FANUC layout lies past LadderWorks' seed map:
+# T9000.. (timer precision) and C5000.. (CTRB values).
+FANUC_SIZES = {Area.T: 9500, Area.C: 5200}
+
+
+def fanuc_memory() -> Memory:
+    """Zeroed memory with the T and C areas as large as on a 30i memory-B PMC."""
+    memory = Memory()
+    for area, size in FANUC_SIZES.items():
+        memory.areas[area] = bytearray(size)
+    return memory
+
+
+def run_engine(text: str, monitored: bool, dialect: str = "seed",
+               memory: Memory | None = None) -> ScanEngine:
+    """An engine for ladder lines, in monitored or fast mode, for a program of `dialect`.
+
+    Until the engine sets the dialect from the program, it is set on the engine's context here.
+    """
+    engine = engine_for(text, memory=memory) if memory is not None else engine_for(text)
+    engine.monitored = monitored
+    engine._ctx.dialect = dialect  # see the docstring
+    return engine
+
+
+@pytest.fixture(params=[False, True], ids=["fast", "monitored"])
+def monitored(request: pytest.FixtureRequest) -> bool:
+    """Run an engine test in fast and in monitored mode."""
+    return bool(request.param)

@@ -114,3 +114,17 @@ def test_dcnvb_bcd_to_binary_with_sin(ctx: FunctionContext, box) -> None:
     assert dcnvb(0, 1, 0, 1) is True
     assert ctx.memory.read(at("D4"), 1, signed=True) == 99
     assert dcnvb(0, 1, 1, 1) is False
+
+
+def test_codb_table_of_256_rows_with_32_bit_values(ctx: FunctionContext, box) -> None:
+    """Issue #17: the manual's rows 00-255, values from -2^31 up to 2^32 - 1."""
+    table = [-2**31, 2**32 - 1, *range(2, 255), 2**31 - 1]
+    assert len(table) == 256
+    codb = box("CODB", 4, 256, "R10", "D0", *table)
+    for row, expected in [(0, -2**31), (1, 2**32 - 1), (200, 200), (255, 2**31 - 1)]:
+        ctx.memory.write(at("R10"), row)
+        assert codb(0, 1) is False
+        assert ctx.memory.read(at("D0"), 4) == expected & 0xFFFF_FFFF
+    short = box("CODB", 4, 255, "R10", "D0", *table[:255])
+    ctx.memory.write(at("R10"), 255)
+    assert short(0, 1) is True  # row 255 of a 255-row table

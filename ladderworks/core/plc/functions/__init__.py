@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ladderworks.core.address import Address, Area
+from ladderworks.core.instructions import InstructionSpec
 from ladderworks.core.plc.memory import Memory
 
 RESULT_REGISTER = Address(Area.R, 9000)
@@ -36,6 +37,13 @@ class FunctionContext:
     now_ms: int = 0  # virtual time at the start of this scan
     scan_ms: int = 0  # time since the previous scan
     extra: dict[str, Any] = field(default_factory=dict)  # engine-owned tables (timers, ...)
+    dialect: str = "seed"  # the program's dialect: "seed" (LadderWorks) or "fanuc" (LADDER-III)
+    # DIFU/DIFD edge memories, one per (instruction name, edge number), shared by call sites
+    edges: dict[tuple[str, int], bool] = field(default_factory=dict)
+
+    def power_on(self) -> None:
+        """Forget what instructions keep outside their call sites (cold start: edge memories)."""
+        self.edges.clear()
 
     def set_result_register(self, value: int, width: int = 6) -> None:
         """Write R9000.. (the function result register), bypassing the program's write ban."""
@@ -77,6 +85,23 @@ def output(state: dict, w1: bool) -> bool:
     return w1
 
 
+def fits(memory: Memory, address: Address, width: int) -> bool:
+    """True when `width` bytes from `address` lie inside its area (writes never grow one)."""
+    return width > 0 and address.byte + width <= len(memory.areas[address.area])
+
+
+def executed_once_this_scan(ctx: FunctionContext, state: dict) -> bool:
+    """True the first time a call site runs in this scan (a scan is known by `ctx.now_ms`).
+
+    Timers add `ctx.scan_ms` only then, so a timer that is not executed (skipped by JMP, in a
+    subprogram not called) is frozen, and one called twice in a scan counts the scan once.
+    """
+    if state.get("at") == ctx.now_ms:
+        return False
+    state["at"] = ctx.now_ms
+    return True
+
+
 def load_all() -> dict[str, FunctionImpl]:
     """Import every family module of this package (each registers itself); the registry."""
     import importlib
@@ -85,6 +110,21 @@ def load_all() -> dict[str, FunctionImpl]:
     for info in sorted(pkgutil.iter_modules(__path__), key=lambda m: m.name):
         importlib.import_module(f"{__name__}.{info.name}")
     return REGISTRY
+
+
+def impl_for(spec: InstructionSpec) -> FunctionImpl:
+    """The implementation the scan calls for `spec`: its registered one, or for a `SUB n` the
+    table does not know (`spec.known` False) the CNC-side stub (W1 = ACT, nothing else).
+
+    Raises KeyError for a known instruction without one (the structure ops: JMP, CALL, ...).
+    """
+    if not spec.known:
+        from ladderworks.core.plc.functions.cnc import unknown_sub
+
+        return unknown_sub
+    if spec.name not in REGISTRY:
+        load_all()
+    return REGISTRY[spec.name]
 
 
 def result_flags(value: int) -> int:

@@ -1,4 +1,4 @@
-"""Shift register: SFT shifts 16 bits one place per rising edge of ACT."""
+"""Shift register: SFT shifts 16 bits one place in every scan that runs it with ACT = 1."""
 
 from __future__ import annotations
 
@@ -23,14 +23,13 @@ def shift_word(data: int, right: bool, keep: bool) -> tuple[int, bool]:
 
 @function("SFT")
 def sft(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
-    """One shift per ACT rising edge; W1 = the bit shifted out (held); RST = 1: W1 = 0."""
+    """One shift per execution with ACT = 1 (the seed: to shift once, set ACT = 1 and at once
+    back to 0); W1 = the bit shifted out, held; RST = 1: W1 = 0 and no shift."""
     direction, cont, rst, act = inputs
-    rising = act and not state.get("act", False)
-    state["act"] = act
     if rst:
         state["w1"] = False
         return False
-    if rising:
+    if act:
         (address,) = params
         data, out = shift_word(ctx.memory.read(address, 2), direction, cont)
         ctx.memory.write(address, data, 2)

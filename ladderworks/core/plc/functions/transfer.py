@@ -1,9 +1,16 @@
-"""Data transfer: MOVE (masked), MOVOR (with OR), XMOV and XMOVB (indexed table transfer)."""
+"""Data transfer: MOVE (masked), MOVOR (with OR), MOVB/MOVW/MOVN/MOVD (1, 2, n, 4 bytes),
+XMOV and XMOVB (indexed table transfer)."""
 
 from __future__ import annotations
 
 from ladderworks.core.address import AREA_SIZES, Address
-from ladderworks.core.plc.functions import FunctionContext, function, held_output, output
+from ladderworks.core.plc.functions import (
+    FunctionContext,
+    fits,
+    function,
+    held_output,
+    output,
+)
 from ladderworks.core.plc.memory import Memory
 
 
@@ -24,6 +31,46 @@ def movor(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: t
     if act:
         source, or_data, target = params
         ctx.memory.write(target, ctx.memory.read(source, 1) | ctx.memory.read(or_data, 1), 1)
+    return False
+
+
+def copy_bytes(memory: Memory, source: Address, target: Address, count: int) -> None:
+    """Copy `count` bytes as if through a buffer (overlap is safe); nothing if either runs
+    past the end of its area."""
+    if fits(memory, source, count) and fits(memory, target, count):
+        memory.write(target, memory.read(source, count), count)
+
+
+@function("MOVB")
+def movb(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
+    """Copy 1 byte while ACT = 1."""
+    if inputs[-1]:
+        copy_bytes(ctx.memory, params[0], params[1], 1)
+    return False
+
+
+@function("MOVW")
+def movw(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
+    """Copy 2 bytes while ACT = 1."""
+    if inputs[-1]:
+        copy_bytes(ctx.memory, params[0], params[1], 2)
+    return False
+
+
+@function("MOVN")
+def movn(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
+    """Copy n bytes while ACT = 1 (as through a buffer when the areas overlap)."""
+    if inputs[-1]:
+        count, source, target = params
+        copy_bytes(ctx.memory, source, target, count)
+    return False
+
+
+@function("MOVD")
+def movd(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
+    """Copy 4 bytes while ACT = 1: the same as MOVN 4."""
+    if inputs[-1]:
+        copy_bytes(ctx.memory, params[0], params[1], 4)
     return False
 
 
@@ -61,11 +108,14 @@ def xmov(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tu
 
 @function("XMOVB")
 def xmovb(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
-    """Binary XMOV: entries of 1/2/4 bytes, the index a binary number."""
+    """Binary XMOV: entries of 1/2/4 bytes, the index a binary number; the table size is a
+    constant or read (2 bytes) from an address."""
     rw, rst, act = inputs
     held = held_output(state, rst, act)
     if held is not None:
         return held
     width, size, table, data, index = params
+    if isinstance(size, Address):  # the table size at an address: 2 bytes, signed
+        size = ctx.memory.read(size, 2, signed=True)
     row = ctx.memory.read(index, 4, signed=True)
     return output(state, _transfer(ctx.memory, rw, table, row, size, data, width))
