@@ -484,6 +484,21 @@
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="117"/>
+        <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
+        <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
+        <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
+        <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="122"/>
+        <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
+        <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
+    </message>
 </context>
 <context>
     <name>ErrorList</name>
@@ -624,32 +639,32 @@
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="130"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="135"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="133"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="136"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="141"/>
         <source>Parameter</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="137"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="142"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="143"/>
         <source>Allowed</source>
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="172"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
     </message>
@@ -675,113 +690,113 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="336"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="370"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="648"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="333"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="367"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="645"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="347"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="344"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="351"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="630"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="642"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="639"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="659"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="668"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="357"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="656"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="665"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="375"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="372"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="377"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="374"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="386"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="391"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="388"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="402"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="399"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="409"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="447"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="444"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="455"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="448"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="486"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="483"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Adres, örneğin X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="461"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="497"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="566"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="587"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="458"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="494"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="563"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="584"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="302"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="556"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="299"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="553"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="557"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="686"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="683"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="698"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="707"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="704"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="784"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="781"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
@@ -789,328 +804,342 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="139"/>
+        <location filename="../ladderworks/gui/main_window.py" line="146"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="140"/>
+        <location filename="../ladderworks/gui/main_window.py" line="147"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="141"/>
+        <location filename="../ladderworks/gui/main_window.py" line="148"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="144"/>
+        <location filename="../ladderworks/gui/main_window.py" line="151"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="150"/>
+        <location filename="../ladderworks/gui/main_window.py" line="157"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="155"/>
+        <location filename="../ladderworks/gui/main_window.py" line="162"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="160"/>
+        <location filename="../ladderworks/gui/main_window.py" line="167"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="168"/>
+        <location filename="../ladderworks/gui/main_window.py" line="175"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="173"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="174"/>
+        <location filename="../ladderworks/gui/main_window.py" line="181"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="182"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="176"/>
+        <location filename="../ladderworks/gui/main_window.py" line="183"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="177"/>
+        <location filename="../ladderworks/gui/main_window.py" line="184"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/main_window.py" line="187"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="185"/>
+        <location filename="../ladderworks/gui/main_window.py" line="192"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="192"/>
+        <location filename="../ladderworks/gui/main_window.py" line="199"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <location filename="../ladderworks/gui/main_window.py" line="206"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="213"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="211"/>
+        <location filename="../ladderworks/gui/main_window.py" line="218"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="213"/>
+        <location filename="../ladderworks/gui/main_window.py" line="220"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="214"/>
+        <location filename="../ladderworks/gui/main_window.py" line="221"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="217"/>
+        <location filename="../ladderworks/gui/main_window.py" line="224"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="223"/>
+        <location filename="../ladderworks/gui/main_window.py" line="230"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="229"/>
+        <location filename="../ladderworks/gui/main_window.py" line="236"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="233"/>
+        <location filename="../ladderworks/gui/main_window.py" line="240"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
+        <location filename="../ladderworks/gui/main_window.py" line="243"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/main_window.py" line="252"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="249"/>
+        <location filename="../ladderworks/gui/main_window.py" line="256"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="286"/>
+        <location filename="../ladderworks/gui/main_window.py" line="293"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="290"/>
+        <location filename="../ladderworks/gui/main_window.py" line="297"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="307"/>
+        <location filename="../ladderworks/gui/main_window.py" line="314"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="327"/>
+        <location filename="../ladderworks/gui/main_window.py" line="334"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="348"/>
+        <location filename="../ladderworks/gui/main_window.py" line="355"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="352"/>
+        <location filename="../ladderworks/gui/main_window.py" line="359"/>
         <source>&amp;Tools</source>
         <translation>&amp;Takımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="358"/>
+        <location filename="../ladderworks/gui/main_window.py" line="365"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="363"/>
+        <location filename="../ladderworks/gui/main_window.py" line="370"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="368"/>
+        <location filename="../ladderworks/gui/main_window.py" line="375"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="478"/>
+        <location filename="../ladderworks/gui/main_window.py" line="487"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="503"/>
+        <location filename="../ladderworks/gui/main_window.py" line="512"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="504"/>
+        <location filename="../ladderworks/gui/main_window.py" line="513"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="531"/>
+        <location filename="../ladderworks/gui/main_window.py" line="541"/>
+        <location filename="../ladderworks/gui/main_window.py" line="560"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="532"/>
+        <location filename="../ladderworks/gui/main_window.py" line="542"/>
+        <location filename="../ladderworks/gui/main_window.py" line="561"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="557"/>
+        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <source>PMC parameters</source>
+        <translation>PMC parametreleri</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
+        <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="586"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="567"/>
+        <location filename="../ladderworks/gui/main_window.py" line="596"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="569"/>
+        <location filename="../ladderworks/gui/main_window.py" line="598"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="600"/>
-        <location filename="../ladderworks/gui/main_window.py" line="623"/>
+        <location filename="../ladderworks/gui/main_window.py" line="629"/>
+        <location filename="../ladderworks/gui/main_window.py" line="653"/>
+        <location filename="../ladderworks/gui/main_window.py" line="663"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="601"/>
+        <location filename="../ladderworks/gui/main_window.py" line="630"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="624"/>
+        <location filename="../ladderworks/gui/main_window.py" line="654"/>
+        <location filename="../ladderworks/gui/main_window.py" line="664"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="635"/>
+        <location filename="../ladderworks/gui/main_window.py" line="675"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="640"/>
+        <location filename="../ladderworks/gui/main_window.py" line="680"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="648"/>
+        <location filename="../ladderworks/gui/main_window.py" line="688"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="650"/>
+        <location filename="../ladderworks/gui/main_window.py" line="690"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="660"/>
+        <location filename="../ladderworks/gui/main_window.py" line="700"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="662"/>
+        <location filename="../ladderworks/gui/main_window.py" line="702"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="681"/>
+        <location filename="../ladderworks/gui/main_window.py" line="721"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="683"/>
+        <location filename="../ladderworks/gui/main_window.py" line="723"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="694"/>
+        <location filename="../ladderworks/gui/main_window.py" line="734"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="766"/>
+        <location filename="../ladderworks/gui/main_window.py" line="804"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="785"/>
+        <location filename="../ladderworks/gui/main_window.py" line="823"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="791"/>
+        <location filename="../ladderworks/gui/main_window.py" line="829"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Derleme bitti (compile finish): {0} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="811"/>
+        <location filename="../ladderworks/gui/main_window.py" line="849"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="814"/>
+        <location filename="../ladderworks/gui/main_window.py" line="852"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="846"/>
+        <location filename="../ladderworks/gui/main_window.py" line="884"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="847"/>
+        <location filename="../ladderworks/gui/main_window.py" line="885"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -1544,164 +1573,180 @@
 <context>
     <name>PlcTables</name>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="79"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="47"/>
         <source>&apos;{0}&apos; is not a number</source>
         <translation>&apos;{0}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="49"/>
         <source>{0} is out of range ({1} to {2})</source>
         <translation>{0} sınır dışı ({1} ile {2} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="85"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="53"/>
         <source>{0} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{0} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="57"/>
         <source>&apos;{0}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{0}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="93"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="61"/>
         <source>TMRB {0}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {0}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="103"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="111"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="183"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="107"/>
         <source>Type</source>
         <translation>Tip</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="105"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="134"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="115"/>
         <source>Preset (ms)</source>
         <translation>Ayar değeri (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="106"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="114"/>
+        <source>Preset (ticks)</source>
+        <translation>Ayar değeri (tık)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="106"/>
+        <source>Precision</source>
+        <translation>Hassasiyet</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="108"/>
         <source>Tick (ms)</source>
         <translation>Adım (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="109"/>
         <source>Delay (ms)</source>
         <translation>Gecikme (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="112"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="139"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="116"/>
+        <source>Timer number (1-{0})</source>
+        <translation>Zamanlayıcı numarası (1-{0})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
         <source>Preset</source>
         <translation>Ayar değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="113"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="189"/>
         <source>Current value</source>
         <translation>Şimdiki değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="117"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="299"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="118"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="145"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
         <source>Bytes</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="119"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="249"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="120"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="300"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="124"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
         <source>Bits 7..0</source>
         <translation>Bitler 7..0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="133"/>
-        <source>Timer number (1-100)</source>
-        <translation>Zamanlayıcı numarası (1-100)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="138"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
         <source>Counter number (1-20)</source>
         <translation>Sayıcı numarası (1-20)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
         <source>Address (D)</source>
         <translation>Adres (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
         <source>Address (K)</source>
         <translation>Adres (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="193"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="481"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="252"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="170"/>
         <source>TMRB: the preset is fixed in the program</source>
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="484"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="255"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="513"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="286"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="515"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="288"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="516"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="289"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="517"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="290"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="518"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="291"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="524"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="301"/>
+        <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
+        <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
 </context>
 <context>
