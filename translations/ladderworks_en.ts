@@ -484,6 +484,21 @@
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="117"/>
+        <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
+        <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
+        <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
+        <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="122"/>
+        <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
+        <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
+    </message>
 </context>
 <context>
     <name>ErrorList</name>
@@ -789,328 +804,342 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="139"/>
+        <location filename="../ladderworks/gui/main_window.py" line="146"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="140"/>
+        <location filename="../ladderworks/gui/main_window.py" line="147"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="141"/>
+        <location filename="../ladderworks/gui/main_window.py" line="148"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="144"/>
+        <location filename="../ladderworks/gui/main_window.py" line="151"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="150"/>
+        <location filename="../ladderworks/gui/main_window.py" line="157"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="155"/>
+        <location filename="../ladderworks/gui/main_window.py" line="162"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="160"/>
+        <location filename="../ladderworks/gui/main_window.py" line="167"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="168"/>
+        <location filename="../ladderworks/gui/main_window.py" line="175"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="173"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="174"/>
+        <location filename="../ladderworks/gui/main_window.py" line="181"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="182"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="176"/>
+        <location filename="../ladderworks/gui/main_window.py" line="183"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="177"/>
+        <location filename="../ladderworks/gui/main_window.py" line="184"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/main_window.py" line="187"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="185"/>
+        <location filename="../ladderworks/gui/main_window.py" line="192"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="192"/>
+        <location filename="../ladderworks/gui/main_window.py" line="199"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <location filename="../ladderworks/gui/main_window.py" line="206"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="213"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="211"/>
+        <location filename="../ladderworks/gui/main_window.py" line="218"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="213"/>
+        <location filename="../ladderworks/gui/main_window.py" line="220"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="214"/>
+        <location filename="../ladderworks/gui/main_window.py" line="221"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="217"/>
+        <location filename="../ladderworks/gui/main_window.py" line="224"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="223"/>
+        <location filename="../ladderworks/gui/main_window.py" line="230"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="229"/>
+        <location filename="../ladderworks/gui/main_window.py" line="236"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="233"/>
+        <location filename="../ladderworks/gui/main_window.py" line="240"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
+        <location filename="../ladderworks/gui/main_window.py" line="243"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/main_window.py" line="252"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="249"/>
+        <location filename="../ladderworks/gui/main_window.py" line="256"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="286"/>
+        <location filename="../ladderworks/gui/main_window.py" line="293"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="290"/>
+        <location filename="../ladderworks/gui/main_window.py" line="297"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="307"/>
+        <location filename="../ladderworks/gui/main_window.py" line="314"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="327"/>
+        <location filename="../ladderworks/gui/main_window.py" line="334"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="348"/>
+        <location filename="../ladderworks/gui/main_window.py" line="355"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="352"/>
+        <location filename="../ladderworks/gui/main_window.py" line="359"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="358"/>
+        <location filename="../ladderworks/gui/main_window.py" line="365"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="363"/>
+        <location filename="../ladderworks/gui/main_window.py" line="370"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="368"/>
+        <location filename="../ladderworks/gui/main_window.py" line="375"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="478"/>
+        <location filename="../ladderworks/gui/main_window.py" line="487"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="503"/>
+        <location filename="../ladderworks/gui/main_window.py" line="512"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="504"/>
+        <location filename="../ladderworks/gui/main_window.py" line="513"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="531"/>
+        <location filename="../ladderworks/gui/main_window.py" line="541"/>
+        <location filename="../ladderworks/gui/main_window.py" line="560"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="532"/>
+        <location filename="../ladderworks/gui/main_window.py" line="542"/>
+        <location filename="../ladderworks/gui/main_window.py" line="561"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="555"/>
+        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <source>PMC parameters</source>
+        <translation>PMC parameters</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
+        <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="586"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="565"/>
+        <location filename="../ladderworks/gui/main_window.py" line="596"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="567"/>
+        <location filename="../ladderworks/gui/main_window.py" line="598"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="598"/>
-        <location filename="../ladderworks/gui/main_window.py" line="621"/>
+        <location filename="../ladderworks/gui/main_window.py" line="629"/>
+        <location filename="../ladderworks/gui/main_window.py" line="653"/>
+        <location filename="../ladderworks/gui/main_window.py" line="663"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="599"/>
+        <location filename="../ladderworks/gui/main_window.py" line="630"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="622"/>
+        <location filename="../ladderworks/gui/main_window.py" line="654"/>
+        <location filename="../ladderworks/gui/main_window.py" line="664"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="633"/>
+        <location filename="../ladderworks/gui/main_window.py" line="675"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="638"/>
+        <location filename="../ladderworks/gui/main_window.py" line="680"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="646"/>
+        <location filename="../ladderworks/gui/main_window.py" line="688"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="648"/>
+        <location filename="../ladderworks/gui/main_window.py" line="690"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="658"/>
+        <location filename="../ladderworks/gui/main_window.py" line="700"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="660"/>
+        <location filename="../ladderworks/gui/main_window.py" line="702"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="679"/>
+        <location filename="../ladderworks/gui/main_window.py" line="721"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="681"/>
+        <location filename="../ladderworks/gui/main_window.py" line="723"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="692"/>
+        <location filename="../ladderworks/gui/main_window.py" line="734"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="762"/>
+        <location filename="../ladderworks/gui/main_window.py" line="804"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="781"/>
+        <location filename="../ladderworks/gui/main_window.py" line="823"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="787"/>
+        <location filename="../ladderworks/gui/main_window.py" line="829"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Compile finished: {0} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="807"/>
+        <location filename="../ladderworks/gui/main_window.py" line="849"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="810"/>
+        <location filename="../ladderworks/gui/main_window.py" line="852"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="842"/>
+        <location filename="../ladderworks/gui/main_window.py" line="884"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="843"/>
+        <location filename="../ladderworks/gui/main_window.py" line="885"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -1118,152 +1147,152 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="42"/>
+        <location filename="../ladderworks/gui/translation.py" line="44"/>
         <source>Timer number</source>
         <translation>Timer number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="43"/>
+        <location filename="../ladderworks/gui/translation.py" line="45"/>
         <source>Preset</source>
         <translation>Preset</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="44"/>
+        <location filename="../ladderworks/gui/translation.py" line="46"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="45"/>
+        <location filename="../ladderworks/gui/translation.py" line="47"/>
         <source>Timer/counter register</source>
         <translation>Timer/counter register</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="46"/>
+        <location filename="../ladderworks/gui/translation.py" line="48"/>
         <source>Code signal</source>
         <translation>Code signal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="47"/>
+        <location filename="../ladderworks/gui/translation.py" line="49"/>
         <source>Decode specification</source>
         <translation>Decode specification</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="48"/>
+        <location filename="../ladderworks/gui/translation.py" line="50"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="49"/>
+        <location filename="../ladderworks/gui/translation.py" line="51"/>
         <source>First number</source>
         <translation>First number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="50"/>
+        <location filename="../ladderworks/gui/translation.py" line="52"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="51"/>
+        <location filename="../ladderworks/gui/translation.py" line="53"/>
         <source>Counter number</source>
         <translation>Counter number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="52"/>
+        <location filename="../ladderworks/gui/translation.py" line="54"/>
         <source>Number of positions</source>
         <translation>Number of positions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="53"/>
+        <location filename="../ladderworks/gui/translation.py" line="55"/>
         <source>Current position</source>
         <translation>Current position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="54"/>
+        <location filename="../ladderworks/gui/translation.py" line="56"/>
         <source>Target position</source>
         <translation>Target position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="55"/>
+        <location filename="../ladderworks/gui/translation.py" line="57"/>
         <source>Table size</source>
         <translation>Table size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="56"/>
+        <location filename="../ladderworks/gui/translation.py" line="58"/>
         <source>Index</source>
         <translation>Index</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="57"/>
+        <location filename="../ladderworks/gui/translation.py" line="59"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="58"/>
+        <location filename="../ladderworks/gui/translation.py" line="60"/>
         <source>Table values</source>
         <translation>Table values</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="59"/>
+        <location filename="../ladderworks/gui/translation.py" line="61"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="60"/>
+        <location filename="../ladderworks/gui/translation.py" line="62"/>
         <source>High 4-bit mask</source>
         <translation>High 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="61"/>
+        <location filename="../ladderworks/gui/translation.py" line="63"/>
         <source>Low 4-bit mask</source>
         <translation>Low 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="62"/>
+        <location filename="../ladderworks/gui/translation.py" line="64"/>
         <source>OR data</source>
         <translation>OR data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="63"/>
+        <location filename="../ladderworks/gui/translation.py" line="65"/>
         <source>Data</source>
         <translation>Data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="64"/>
+        <location filename="../ladderworks/gui/translation.py" line="66"/>
         <source>Number of coils</source>
         <translation>Number of coils</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="65"/>
+        <location filename="../ladderworks/gui/translation.py" line="67"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Input format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="66"/>
+        <location filename="../ladderworks/gui/translation.py" line="68"/>
         <source>Compared data</source>
         <translation>Compared data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="67"/>
+        <location filename="../ladderworks/gui/translation.py" line="69"/>
         <source>Searched data</source>
         <translation>Searched data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="68"/>
+        <location filename="../ladderworks/gui/translation.py" line="70"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="70"/>
+        <location filename="../ladderworks/gui/translation.py" line="72"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="71"/>
+        <location filename="../ladderworks/gui/translation.py" line="73"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="72"/>
+        <location filename="../ladderworks/gui/translation.py" line="74"/>
         <source>Constant</source>
         <translation>Constant</translation>
     </message>
@@ -1544,164 +1573,180 @@
 <context>
     <name>PlcTables</name>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="79"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="47"/>
         <source>&apos;{0}&apos; is not a number</source>
         <translation>&apos;{0}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="49"/>
         <source>{0} is out of range ({1} to {2})</source>
         <translation>{0} is out of range ({1} to {2})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="85"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="53"/>
         <source>{0} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{0} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="57"/>
         <source>&apos;{0}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{0}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="93"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="61"/>
         <source>TMRB {0}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {0}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="103"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="111"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="183"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="107"/>
         <source>Type</source>
         <translation>Type</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="105"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="134"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="115"/>
         <source>Preset (ms)</source>
         <translation>Preset (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="106"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="114"/>
+        <source>Preset (ticks)</source>
+        <translation>Preset (ticks)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="106"/>
+        <source>Precision</source>
+        <translation>Precision</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="108"/>
         <source>Tick (ms)</source>
         <translation>Tick (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="109"/>
         <source>Delay (ms)</source>
         <translation>Delay (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="112"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="139"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="116"/>
+        <source>Timer number (1-{0})</source>
+        <translation>Timer number (1-{0})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
         <source>Preset</source>
         <translation>Preset</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="113"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="189"/>
         <source>Current value</source>
         <translation>Current value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="117"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="299"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="118"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="145"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
         <source>Bytes</source>
         <translation>Bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="119"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="249"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="120"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="300"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="124"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
         <source>Bits 7..0</source>
         <translation>Bits 7..0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="133"/>
-        <source>Timer number (1-100)</source>
-        <translation>Timer number (1-100)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="138"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
         <source>Counter number (1-20)</source>
         <translation>Counter number (1-20)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
         <source>Address (D)</source>
         <translation>Address (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
         <source>Address (K)</source>
         <translation>Address (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="193"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="481"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="252"/>
         <source>INSERT</source>
         <translation>INSERT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="170"/>
         <source>TMRB: the preset is fixed in the program</source>
         <translation>TMRB: the preset is fixed in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="484"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="255"/>
         <source>DELETE</source>
         <translation>DELETE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="513"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="286"/>
         <source>PLC tables</source>
         <translation>PLC tables</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="515"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="288"/>
         <source>Timers (TMR)</source>
         <translation>Timers (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="516"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="289"/>
         <source>Counters (CTR)</source>
         <translation>Counters (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="517"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="290"/>
         <source>Data table (D)</source>
         <translation>Data table (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="518"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="291"/>
         <source>Keep relays (K)</source>
         <translation>Keep relays (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="524"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="301"/>
+        <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
+        <translation>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</translation>
     </message>
 </context>
 <context>

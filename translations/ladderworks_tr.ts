@@ -484,6 +484,21 @@
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="117"/>
+        <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
+        <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
+        <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
+        <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="122"/>
+        <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
+        <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
+    </message>
 </context>
 <context>
     <name>ErrorList</name>
@@ -789,328 +804,342 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="139"/>
+        <location filename="../ladderworks/gui/main_window.py" line="146"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="140"/>
+        <location filename="../ladderworks/gui/main_window.py" line="147"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="141"/>
+        <location filename="../ladderworks/gui/main_window.py" line="148"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="144"/>
+        <location filename="../ladderworks/gui/main_window.py" line="151"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="150"/>
+        <location filename="../ladderworks/gui/main_window.py" line="157"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="155"/>
+        <location filename="../ladderworks/gui/main_window.py" line="162"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="160"/>
+        <location filename="../ladderworks/gui/main_window.py" line="167"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="168"/>
+        <location filename="../ladderworks/gui/main_window.py" line="175"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="173"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="174"/>
+        <location filename="../ladderworks/gui/main_window.py" line="181"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="182"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="176"/>
+        <location filename="../ladderworks/gui/main_window.py" line="183"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="177"/>
+        <location filename="../ladderworks/gui/main_window.py" line="184"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/main_window.py" line="187"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="185"/>
+        <location filename="../ladderworks/gui/main_window.py" line="192"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="192"/>
+        <location filename="../ladderworks/gui/main_window.py" line="199"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <location filename="../ladderworks/gui/main_window.py" line="206"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="213"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="211"/>
+        <location filename="../ladderworks/gui/main_window.py" line="218"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="213"/>
+        <location filename="../ladderworks/gui/main_window.py" line="220"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="214"/>
+        <location filename="../ladderworks/gui/main_window.py" line="221"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="217"/>
+        <location filename="../ladderworks/gui/main_window.py" line="224"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="223"/>
+        <location filename="../ladderworks/gui/main_window.py" line="230"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="229"/>
+        <location filename="../ladderworks/gui/main_window.py" line="236"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="233"/>
+        <location filename="../ladderworks/gui/main_window.py" line="240"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
+        <location filename="../ladderworks/gui/main_window.py" line="243"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/main_window.py" line="252"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="249"/>
+        <location filename="../ladderworks/gui/main_window.py" line="256"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="286"/>
+        <location filename="../ladderworks/gui/main_window.py" line="293"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="290"/>
+        <location filename="../ladderworks/gui/main_window.py" line="297"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="307"/>
+        <location filename="../ladderworks/gui/main_window.py" line="314"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="327"/>
+        <location filename="../ladderworks/gui/main_window.py" line="334"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="348"/>
+        <location filename="../ladderworks/gui/main_window.py" line="355"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="352"/>
+        <location filename="../ladderworks/gui/main_window.py" line="359"/>
         <source>&amp;Tools</source>
         <translation>&amp;Takımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="358"/>
+        <location filename="../ladderworks/gui/main_window.py" line="365"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="363"/>
+        <location filename="../ladderworks/gui/main_window.py" line="370"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="368"/>
+        <location filename="../ladderworks/gui/main_window.py" line="375"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="478"/>
+        <location filename="../ladderworks/gui/main_window.py" line="487"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="503"/>
+        <location filename="../ladderworks/gui/main_window.py" line="512"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="504"/>
+        <location filename="../ladderworks/gui/main_window.py" line="513"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="531"/>
+        <location filename="../ladderworks/gui/main_window.py" line="541"/>
+        <location filename="../ladderworks/gui/main_window.py" line="560"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="532"/>
+        <location filename="../ladderworks/gui/main_window.py" line="542"/>
+        <location filename="../ladderworks/gui/main_window.py" line="561"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="555"/>
+        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <source>PMC parameters</source>
+        <translation>PMC parametreleri</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
+        <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="586"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="565"/>
+        <location filename="../ladderworks/gui/main_window.py" line="596"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="567"/>
+        <location filename="../ladderworks/gui/main_window.py" line="598"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="598"/>
-        <location filename="../ladderworks/gui/main_window.py" line="621"/>
+        <location filename="../ladderworks/gui/main_window.py" line="629"/>
+        <location filename="../ladderworks/gui/main_window.py" line="653"/>
+        <location filename="../ladderworks/gui/main_window.py" line="663"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="599"/>
+        <location filename="../ladderworks/gui/main_window.py" line="630"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="622"/>
+        <location filename="../ladderworks/gui/main_window.py" line="654"/>
+        <location filename="../ladderworks/gui/main_window.py" line="664"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="633"/>
+        <location filename="../ladderworks/gui/main_window.py" line="675"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="638"/>
+        <location filename="../ladderworks/gui/main_window.py" line="680"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="646"/>
+        <location filename="../ladderworks/gui/main_window.py" line="688"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="648"/>
+        <location filename="../ladderworks/gui/main_window.py" line="690"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="658"/>
+        <location filename="../ladderworks/gui/main_window.py" line="700"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="660"/>
+        <location filename="../ladderworks/gui/main_window.py" line="702"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="679"/>
+        <location filename="../ladderworks/gui/main_window.py" line="721"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="681"/>
+        <location filename="../ladderworks/gui/main_window.py" line="723"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="692"/>
+        <location filename="../ladderworks/gui/main_window.py" line="734"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="762"/>
+        <location filename="../ladderworks/gui/main_window.py" line="804"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="781"/>
+        <location filename="../ladderworks/gui/main_window.py" line="823"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="787"/>
+        <location filename="../ladderworks/gui/main_window.py" line="829"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Derleme bitti (compile finish): {0} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="807"/>
+        <location filename="../ladderworks/gui/main_window.py" line="849"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="810"/>
+        <location filename="../ladderworks/gui/main_window.py" line="852"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="842"/>
+        <location filename="../ladderworks/gui/main_window.py" line="884"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="843"/>
+        <location filename="../ladderworks/gui/main_window.py" line="885"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -1118,152 +1147,152 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="42"/>
+        <location filename="../ladderworks/gui/translation.py" line="44"/>
         <source>Timer number</source>
         <translation>Zamanlayıcı numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="43"/>
+        <location filename="../ladderworks/gui/translation.py" line="45"/>
         <source>Preset</source>
         <translation>Ayar değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="44"/>
+        <location filename="../ladderworks/gui/translation.py" line="46"/>
         <source>Accuracy</source>
         <translation>Hassasiyet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="45"/>
+        <location filename="../ladderworks/gui/translation.py" line="47"/>
         <source>Timer/counter register</source>
         <translation>Zamanlayıcı/sayıcı kaydı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="46"/>
+        <location filename="../ladderworks/gui/translation.py" line="48"/>
         <source>Code signal</source>
         <translation>Kod sinyali</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="47"/>
+        <location filename="../ladderworks/gui/translation.py" line="49"/>
         <source>Decode specification</source>
         <translation>Kod çözme tanımı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="48"/>
+        <location filename="../ladderworks/gui/translation.py" line="50"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="49"/>
+        <location filename="../ladderworks/gui/translation.py" line="51"/>
         <source>First number</source>
         <translation>İlk sayı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="50"/>
+        <location filename="../ladderworks/gui/translation.py" line="52"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="51"/>
+        <location filename="../ladderworks/gui/translation.py" line="53"/>
         <source>Counter number</source>
         <translation>Sayıcı numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="52"/>
+        <location filename="../ladderworks/gui/translation.py" line="54"/>
         <source>Number of positions</source>
         <translation>Pozisyon sayısı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="53"/>
+        <location filename="../ladderworks/gui/translation.py" line="55"/>
         <source>Current position</source>
         <translation>Mevcut pozisyon</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="54"/>
+        <location filename="../ladderworks/gui/translation.py" line="56"/>
         <source>Target position</source>
         <translation>Hedef pozisyon</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="55"/>
+        <location filename="../ladderworks/gui/translation.py" line="57"/>
         <source>Table size</source>
         <translation>Tablo boyu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="56"/>
+        <location filename="../ladderworks/gui/translation.py" line="58"/>
         <source>Index</source>
         <translation>İndeks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="57"/>
+        <location filename="../ladderworks/gui/translation.py" line="59"/>
         <source>Output</source>
         <translation>Çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="58"/>
+        <location filename="../ladderworks/gui/translation.py" line="60"/>
         <source>Table values</source>
         <translation>Tablo değerleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="59"/>
+        <location filename="../ladderworks/gui/translation.py" line="61"/>
         <source>Input</source>
         <translation>Giriş</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="60"/>
+        <location filename="../ladderworks/gui/translation.py" line="62"/>
         <source>High 4-bit mask</source>
         <translation>Üst 4 bit maskesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="61"/>
+        <location filename="../ladderworks/gui/translation.py" line="63"/>
         <source>Low 4-bit mask</source>
         <translation>Alt 4 bit maskesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="62"/>
+        <location filename="../ladderworks/gui/translation.py" line="64"/>
         <source>OR data</source>
         <translation>VEYA verisi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="63"/>
+        <location filename="../ladderworks/gui/translation.py" line="65"/>
         <source>Data</source>
         <translation>Veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="64"/>
+        <location filename="../ladderworks/gui/translation.py" line="66"/>
         <source>Number of coils</source>
         <translation>Çıkış sayısı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="65"/>
+        <location filename="../ladderworks/gui/translation.py" line="67"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Giriş formatı (0 sabit, 1 adres)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="66"/>
+        <location filename="../ladderworks/gui/translation.py" line="68"/>
         <source>Compared data</source>
         <translation>Karşılaştırılan veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="67"/>
+        <location filename="../ladderworks/gui/translation.py" line="69"/>
         <source>Searched data</source>
         <translation>Aranan veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="68"/>
+        <location filename="../ladderworks/gui/translation.py" line="70"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand formatı (0 sabit, 1 adres)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="70"/>
+        <location filename="../ladderworks/gui/translation.py" line="72"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="71"/>
+        <location filename="../ladderworks/gui/translation.py" line="73"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="72"/>
+        <location filename="../ladderworks/gui/translation.py" line="74"/>
         <source>Constant</source>
         <translation>Sabit</translation>
     </message>
@@ -1544,164 +1573,180 @@
 <context>
     <name>PlcTables</name>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="79"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="47"/>
         <source>&apos;{0}&apos; is not a number</source>
         <translation>&apos;{0}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="49"/>
         <source>{0} is out of range ({1} to {2})</source>
         <translation>{0} sınır dışı ({1} ile {2} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="85"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="53"/>
         <source>{0} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{0} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="57"/>
         <source>&apos;{0}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{0}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="93"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="61"/>
         <source>TMRB {0}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {0}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="103"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="111"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="183"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="107"/>
         <source>Type</source>
         <translation>Tip</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="105"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="134"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="115"/>
         <source>Preset (ms)</source>
         <translation>Ayar değeri (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="106"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="114"/>
+        <source>Preset (ticks)</source>
+        <translation>Ayar değeri (tık)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="106"/>
+        <source>Precision</source>
+        <translation>Hassasiyet</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="108"/>
         <source>Tick (ms)</source>
         <translation>Adım (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="109"/>
         <source>Delay (ms)</source>
         <translation>Gecikme (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="112"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="139"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="116"/>
+        <source>Timer number (1-{0})</source>
+        <translation>Zamanlayıcı numarası (1-{0})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
         <source>Preset</source>
         <translation>Ayar değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="113"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="189"/>
         <source>Current value</source>
         <translation>Şimdiki değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="117"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="299"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="118"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="145"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
         <source>Bytes</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="119"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="249"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="120"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="300"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="124"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
         <source>Bits 7..0</source>
         <translation>Bitler 7..0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="133"/>
-        <source>Timer number (1-100)</source>
-        <translation>Zamanlayıcı numarası (1-100)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="138"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
         <source>Counter number (1-20)</source>
         <translation>Sayıcı numarası (1-20)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
         <source>Address (D)</source>
         <translation>Adres (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
         <source>Address (K)</source>
         <translation>Adres (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="193"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="481"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="252"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="170"/>
         <source>TMRB: the preset is fixed in the program</source>
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="484"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="255"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="513"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="286"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="515"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="288"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="516"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="289"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="517"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="290"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="518"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="291"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="524"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="301"/>
+        <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
+        <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
 </context>
 <context>

@@ -14,8 +14,8 @@ from ladderworks.core.compiler.binary import MAGIC
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.il import parse_file, print_program
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
-from ladderworks.core.plc.functions.counters import write_counter_preset
-from ladderworks.core.plc.functions.timers import write_timer_preset
+from ladderworks.core.plc.parameters import ParameterFile, parameters_beside, read_parameter_file
+from ladderworks.core.plc.session import PlcRun
 
 _SET_RE = re.compile(r"^([^=@]+)=(-?\w+)(?:@(\d+))?$")
 _NUMBER_PAIR_RE = re.compile(r"^(\d+)=(\d+)$")
@@ -43,6 +43,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                      help="preset of timer N in ms")
     run.add_argument("--counter", action="append", default=[], metavar="N=PRESET",
                      help="preset of counter N")
+    run.add_argument("--params", metavar="PATH",
+                     help="PMC parameter file (default: FILE.prm beside FILE, if there is one)")
     run.add_argument("--print", nargs="+", action="extend", default=[], metavar="ADDR",
                      dest="print_", help="print ADDR = VALUE lines at the end")
     run.add_argument("--trace", metavar="ADDR,...", help="print a CSV trace of these")
@@ -152,15 +154,21 @@ def _run(args: argparse.Namespace) -> int:
     binary = _load_program_binary(args.file)
     if binary is None:
         return 1
-    try:
-        engine = ScanEngine(binary, period_ms=args.scan_period)
-    except DiagnosticError as error:
-        _report(args.file, error.diagnostics)
+    parameters = _parameters(args.file, args.params)
+    if parameters is None:
+        return 2
+    plc = PlcRun(period_ms=args.scan_period)
+    plc.set_parameters(parameters.parameters)
+    problems = plc.load(binary)
+    if problems or plc.engine is None:
+        _report(args.file, problems)
         return 1
-    for number, ms in timers:
-        write_timer_preset(engine.memory, number, ms)
+    engine = plc.engine
+    for number, value in timers:  # options win over the parameter file
+        plc.set_timer_preset(number, value)
     for number, preset in counters:
-        write_counter_preset(engine.memory, number, preset)
+        plc.set_counter_preset(number, preset)
+    plc.start()
     trace = (engine.start_trace([t.address for t in traced], args.period,
                                 widths=[t.width for t in traced]) if traced else None)
     sets.sort(key=lambda item: item[0])
@@ -174,7 +182,7 @@ def _run(args: argparse.Namespace) -> int:
         while pending and pending[0][0] <= engine.now_ms:
             _, target, value = pending.pop(0)
             target.write(engine, value)
-        engine.scan()
+        plc.run_scans(1)
         done += 1
     if trace is not None:
         print("time_ms," + ",".join(t.text for t in traced))
@@ -183,6 +191,19 @@ def _run(args: argparse.Namespace) -> int:
     for target in prints:
         print(f"{target.text} = {target.read(engine)}")
     return 0
+
+
+def _parameters(program: str, named: str | None) -> ParameterFile | None:
+    """The PMC parameters for `run`: the named file, else the one beside the program (problems
+    are reported as warnings); None when a named file cannot be read."""
+    try:
+        found = read_parameter_file(named) if named else parameters_beside(program)
+    except OSError as error:
+        print(f"ladderworks-cli: {named}: {error.strerror or error}", file=sys.stderr)
+        return None
+    if found.path is not None:
+        _report(str(found.path), found.diagnostics)
+    return found
 
 
 def _number(text: str, item: str) -> int:

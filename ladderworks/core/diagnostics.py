@@ -85,6 +85,10 @@ MESSAGES: dict[str, str] = {
     "alarm-duplicate": "message {number} appears again; the one on line {first} is used",
     "alarm-empty": "message {number} has no text",
     "not-implemented": "{name} is not implemented in the simulator yet",
+    # the PMC parameter file (PROGRAM.LAD.prm)
+    "prm-line": "not a parameter line: '{text}' (expected ADDRESS = VALUE, e.g. T0:4 = 1000)",
+    "prm-area": "'{text}': PMC parameters are in the T, C, K and D areas only",
+    "prm-value": "'{text}' is not a value for {width} byte(s)",
 }
 
 

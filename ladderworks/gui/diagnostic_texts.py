@@ -114,6 +114,12 @@ def diagnostic_templates() -> dict[str, str]:
         "alarm-empty": translate("Diagnostic", 'message {number} has no text'),
         "not-implemented": translate(
             "Diagnostic", '{name} is not implemented in the simulator yet'),
+        "prm-line": translate(
+            "Diagnostic",
+            "not a parameter line: '{text}' (expected ADDRESS = VALUE, e.g. T0:4 = 1000)"),
+        "prm-area": translate(
+            "Diagnostic", "'{text}': PMC parameters are in the T, C, K and D areas only"),
+        "prm-value": translate("Diagnostic", "'{text}' is not a value for {width} byte(s)"),
     }
 
 

@@ -24,12 +24,15 @@ from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, parse_file, print_program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
+from ladderworks.core.plc.timer_table import dialect_of
 from ladderworks.gui import compile_step
+from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.palette import ToolPalette
+from ladderworks.gui.parameter_document import ParameterDocument
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.signal_list import SignalListDock
 from ladderworks.gui.text_view import ProgramTextView
@@ -54,6 +57,7 @@ class MainWindow(QMainWindow):
         self.language = language
         self.path: Path | None = None
         self.encoding = "utf-8"
+        self.dialect = "seed"  # of the open program: how its parameter file names timers
         self.failed_path: Path | None = None  # a file that did not parse: never overwritten
         self.last_warning = ""
         self.setWindowIcon(icon("ladderworks"))
@@ -92,6 +96,9 @@ class MainWindow(QMainWindow):
         from ladderworks.gui.docks import install_plc_docks  # the PLC docks (issues 7, 8)
 
         self.plc_docks = install_plc_docks(self)
+        # PMC parameters (T/C/K/D set in the PLC tables) are saved with the program
+        self.parameters = ParameterDocument(self.plc_docks.session)
+        self.plc_docks.session.parameters_changed.connect(self._update_title)
 
         self.editor.undo_stack.cleanChanged.connect(self._update_title)
         self.editor.tool_requested.connect(self.set_tool)
@@ -470,6 +477,8 @@ class MainWindow(QMainWindow):
 
     def is_modified(self) -> bool:
         """True when there are unsaved changes."""
+        if self.parameters.modified:
+            return True
         if self.pages.currentWidget() is self.text_view:
             return self.text_view.document().isModified()
         return not self.editor.undo_stack.isClean()
@@ -519,7 +528,27 @@ class MainWindow(QMainWindow):
         self.text_view.document().setModified(False)
         self.errors.set_diagnostics([])
         self.pages.setCurrentWidget(self.editor)
+        self.dialect = "seed"
+        self.parameters.reset()
         self._update_title()
+
+    def _open_parameters(self, path: Path) -> None:
+        """Read the PMC parameter file beside the program (the defaults when there is none)."""
+        try:
+            problems = self.parameters.open(path)
+        except OSError as error:
+            self.parameters.reset()
+            self.warn(translate("MainWindow", "Open"),
+                      translate("MainWindow", "Cannot read {0}: {1}").format(
+                          path.name + ".prm", error.strerror or str(error)))
+            return
+        if problems:
+            first = problems[0]
+            self.warn(translate("MainWindow", "PMC parameters"), translate(
+                "MainWindow",
+                "{0}: {1} lines not understood (kept as they are); line {2}: {3}",
+            ).format(path.name + ".prm", len(problems), first.line,
+                     diagnostic_text(first)))
 
     def load(self, path: str | Path) -> bool:
         """Open a `.LAD` / `.MOD` file: as ladder, or as text with its errors listed."""
@@ -536,6 +565,8 @@ class MainWindow(QMainWindow):
             return False
         self.path = path
         self.encoding = result.encoding
+        self.dialect = dialect_of(result.program)
+        self._open_parameters(path)
         self.errors.set_diagnostics(result.diagnostics)
         self._remember(path)
         if result.ok:
@@ -609,6 +640,7 @@ class MainWindow(QMainWindow):
                 text += "\n"
         else:
             program, diagnostics = self.editor.saved_program()
+            self.dialect = dialect_of(program)
             text = print_program(program)
             drafts = has_errors(diagnostics)
             self.errors.set_diagnostics(diagnostics)
@@ -621,6 +653,16 @@ class MainWindow(QMainWindow):
                 translate("MainWindow", "Save"),
                 translate("MainWindow", "Cannot write {0}: {1}").format(
                     path, error.strerror or str(error)
+                ),
+            )
+            return False
+        try:
+            self.parameters.save(path, self.dialect)
+        except OSError as error:
+            self.warn(
+                translate("MainWindow", "Save"),
+                translate("MainWindow", "Cannot write {0}: {1}").format(
+                    path.name + ".prm", error.strerror or str(error)
                 ),
             )
             return False

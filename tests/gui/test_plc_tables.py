@@ -69,7 +69,7 @@ def type_into_cell(qtbot: QtBot, dock: PlcTablesDock, kind: TableKind, row: int,
     """Double-click a cell, type, ENTER: as the user does."""
     table = dock.tables[kind]
     dock.tabs.setCurrentWidget(table)
-    rect = table.visualItemRect(table.item(row, column))
+    rect = table.visualRect(table.model().index(row, column))
     qtbot.mouseClick(table.viewport(), Qt.MouseButton.LeftButton, pos=rect.center())
     qtbot.mouseDClick(table.viewport(), Qt.MouseButton.LeftButton, pos=rect.center())
     qtbot.waitUntil(lambda: isinstance(QApplication.focusWidget(), QLineEdit))
@@ -88,9 +88,9 @@ def test_rows_of_the_program(tables: tuple[PlcSession, PlcTablesDock]) -> None:
     ]
     assert dock.cell_texts(TableKind.COUNTER) == [["3", "0", "0"]]
     assert dock.cell_texts(TableKind.KEEP) == [["K5", "00000000", "00h"]]
-    tmrb = dock.tables[TableKind.TIMER].item(1, 2)
-    assert not tmrb.flags() & Qt.ItemFlag.ItemIsEditable
-    assert dock.tables[TableKind.TIMER].item(0, 2).flags() & Qt.ItemFlag.ItemIsEditable
+    model = dock.models[TableKind.TIMER]
+    assert not model.flags(model.index(1, 2)) & Qt.ItemFlag.ItemIsEditable  # TMRB
+    assert model.flags(model.index(0, 2)) & Qt.ItemFlag.ItemIsEditable
 
 
 def test_changing_a_timer_preset_changes_the_delay(

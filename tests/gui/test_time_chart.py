@@ -109,7 +109,7 @@ def test_no_sample_is_lost(relay: tuple[PlcSession, TimeChartDock]) -> None:
     assert len(record) == 10_000
     assert list(record.seqs) == list(range(10_000))
     assert list(record.times) == [8 * i for i in range(10_000)]
-    assert session._trace is not None and session._trace.dropped == 0
+    assert session.run.trace is not None and session.run.trace.dropped == 0
     # the 200 ms clock relay R9091.5 toggles every 104/96 ms: 100 rising edges in 80 s
     assert len(record.rising_edges(2)) == 80_000 // 200 - 1
 

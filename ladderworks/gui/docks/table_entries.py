@@ -16,17 +16,10 @@ from ladderworks.core.plc.functions.counters import (
     counter_preset_address,
     counter_value_address,
 )
-from ladderworks.core.plc.functions.timers import (
-    FAST_TICK_MS,
-    TIMER_BYTES,
-    effective_preset,
-    timer_preset_address,
-    timer_tick,
-)
+from ladderworks.core.plc.functions.timers import FAST_TICK_MS, effective_preset
+from ladderworks.core.plc.timer_table import PRECISION_MS, TimerLayout
 
-TIMER_COUNT = AREA_SIZES[Area.T] // TIMER_BYTES  # 100
 COUNTER_COUNT = 20
-MAX_TIMER_MS = 99_999_999  # the manual's range of a timer preset
 DATA_WIDTHS = (1, 2, 4)
 
 
@@ -50,21 +43,28 @@ class TableError(ValueError):
 
 @dataclass(frozen=True, slots=True)
 class TimerRow:
-    """A timer: TMR presets live in the T table (editable), TMRB presets in the program (fixed)."""
+    """A timer: TMR presets live in the T table (editable), TMRB presets in the program (fixed).
+
+    `preset` is in ms (seed) or ticks (fanuc); `precision` is the FANUC precision code."""
 
     number: int
-    preset_ms: int
+    preset: int
+    tick_ms: int
+    delay_ms: int
     fixed: bool = False  # a TMRB: the preset is a parameter of the program
+    precision: int = 0
 
-    @property
-    def tick_ms(self) -> int:
-        """The timer's tick: 48 ms for TMR 1..8, 8 ms for TMR 9..100 and every TMRB."""
-        return FAST_TICK_MS if self.fixed else timer_tick(self.number)
 
-    @property
-    def effective_ms(self) -> int:
-        """The delay the timer really gives: the preset rounded down to the tick."""
-        return effective_preset(self.preset_ms, self.tick_ms)
+def timer_row(layout: TimerLayout, number: int, preset: int, precision: int = 0) -> TimerRow:
+    """A TMR row: its tick and real delay by the layout (dialect) of the program."""
+    return TimerRow(number, preset, layout.tick_ms(number, precision),
+                    layout.delay_ms(number, preset, precision), precision=precision)
+
+
+def fixed_timer_row(number: int, preset_ms: int) -> TimerRow:
+    """A TMRB row: the preset (ms) is in the program, 8 ms tick."""
+    return TimerRow(number, preset_ms, FAST_TICK_MS, effective_preset(preset_ms, FAST_TICK_MS),
+                    fixed=True)
 
 
 @dataclass(frozen=True, slots=True)
@@ -158,14 +158,20 @@ def _read(areas: Areas, address: Address, width: int, *, signed: bool = False) -
 
 
 
-def timer_rows(areas: Areas, use: ProgramUse, listed: set[int]) -> list[TimerRow]:
+def timer_rows(areas: Areas, use: ProgramUse, listed: set[int],
+               layout: TimerLayout) -> list[TimerRow]:
     """Every TMR the program uses, is listed or has a preset, then every TMRB, by number."""
-    numbers = set(use.timers) | set(listed)
+    width = layout.width
     data = areas[Area.T]
-    numbers |= {n for n in range(1, TIMER_COUNT + 1)
-                if any(data[(n - 1) * TIMER_BYTES:n * TIMER_BYTES])}
-    rows = [TimerRow(n, _read(areas, timer_preset_address(n), TIMER_BYTES)) for n in numbers]
-    rows += [TimerRow(n, preset, fixed=True) for n, preset in use.fixed_timers.items()]
+    numbers = {n for n in set(use.timers) | set(listed) if 1 <= n <= layout.count}
+    numbers |= {n for n in range(1, layout.count + 1) if any(data[(n - 1) * width:n * width])}
+    rows = []
+    for n in numbers:
+        where = layout.precision_address(n)
+        precision = _read(areas, where, 2) if where is not None else 0
+        rows.append(timer_row(layout, n, _read(areas, layout.preset_address(n), width),
+                              precision))
+    rows += [fixed_timer_row(n, preset) for n, preset in use.fixed_timers.items()]
     return sorted(rows, key=lambda row: (row.number, row.fixed))
 
 
@@ -212,14 +218,19 @@ def check_range(value: int, low: int, high: int) -> int:
     return value
 
 
-def timer_number(text: str) -> int:
-    """A timer number 1..100."""
-    return check_range(parse_int(text), 1, TIMER_COUNT)
+def timer_number(text: str, layout: TimerLayout) -> int:
+    """A timer number 1..count (100 in seed programs)."""
+    return check_range(parse_int(text), 1, layout.count)
 
 
-def timer_preset(text: str) -> int:
-    """A timer preset in ms, 0..99,999,999."""
-    return check_range(parse_int(text), 0, MAX_TIMER_MS)
+def timer_preset(text: str, layout: TimerLayout) -> int:
+    """A timer preset: ms 0..99,999,999 (seed) or ticks 0..32767 (fanuc)."""
+    return check_range(parse_int(text), 0, layout.max_preset)
+
+
+def timer_precision(text: str) -> int:
+    """A FANUC timer precision code 0..5."""
+    return check_range(parse_int(text), 0, max(PRECISION_MS))
 
 
 def counter_number(text: str) -> int:

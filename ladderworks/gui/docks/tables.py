@@ -1,16 +1,18 @@
 """The PLC tables dock: timer presets, counters, data table and keep relays, edited while running.
 
+Each tab is a QTableView over a `PlcTableModel` driven by the table's spec (`table_specs.py`).
 Right-click a table: INSERT fills a form and adds a row, DELETE clears the row under the mouse
 (as the seed manual's tables). TMRB presets are fixed in the program and shown read-only
-("a normal timer can be changed from the PLC table, TMRB cannot").
+("a normal timer can be changed from the PLC table, TMRB cannot"). Every value set here is a
+PMC parameter: saved with the program (`PROGRAM.LAD.prm`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
-from PySide6.QtCore import QCoreApplication, QEvent, QPoint, Qt, QTimer
-from PySide6.QtGui import QAction, QBrush, QColor
+from PySide6.QtCore import QCoreApplication, QEvent, QPoint, Qt
+from PySide6.QtGui import QAction
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QComboBox,
@@ -22,54 +24,20 @@ from PySide6.QtWidgets import (
     QLineEdit,
     QMainWindow,
     QMenu,
-    QTableWidget,
-    QTableWidgetItem,
+    QTableView,
     QTabWidget,
     QVBoxLayout,
     QWidget,
 )
 
-from ladderworks.core.address import Address, Area
 from ladderworks.core.compiler.binary import BinaryProgram
-from ladderworks.core.plc.functions.counters import counter_value_address
 from ladderworks.gui.docks.dock_menus import add_dock
-from ladderworks.gui.docks.table_entries import (
-    DATA_WIDTHS,
-    MAX_TIMER_MS,
-    Areas,
-    CounterRow,
-    DataRow,
-    KeepRow,
-    ProgramUse,
-    TableError,
-    TableKind,
-    TimerRow,
-    counter_number,
-    counter_rows,
-    counter_value,
-    data_byte,
-    data_rows,
-    data_value,
-    data_width,
-    keep_bits,
-    keep_byte,
-    keep_rows,
-    timer_number,
-    timer_preset,
-    timer_rows,
-)
+from ladderworks.gui.docks.table_entries import DATA_WIDTHS, TableError, TableKind
+from ladderworks.gui.docks.table_model import PlcTableModel
+from ladderworks.gui.docks.table_specs import Row, TableSpec, table_specs
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 
 translate = QCoreApplication.translate
-
-Row = TimerRow | CounterRow | DataRow | KeepRow
-EDITABLE: dict[TableKind, tuple[int, ...]] = {
-    TableKind.TIMER: (2,),
-    TableKind.COUNTER: (1, 2),
-    TableKind.DATA: (2,),
-    TableKind.KEEP: (1,),
-}
-_READ_ONLY = QBrush(QColor("#eeeeee"))
 
 
 def table_error_text(error: TableError) -> str:
@@ -96,93 +64,13 @@ def table_error_text(error: TableError) -> str:
     return error.code
 
 
-def headers(kind: TableKind) -> list[str]:
-    """The column titles of a table in the current UI language."""
-    if kind is TableKind.TIMER:
-        return [
-            translate("PlcTables", "No."),
-            translate("PlcTables", "Type"),
-            translate("PlcTables", "Preset (ms)"),
-            translate("PlcTables", "Tick (ms)"),
-            translate("PlcTables", "Delay (ms)"),
-        ]
-    if kind is TableKind.COUNTER:
-        return [
-            translate("PlcTables", "No."),
-            translate("PlcTables", "Preset"),
-            translate("PlcTables", "Current value"),
-        ]
-    if kind is TableKind.DATA:
-        return [
-            translate("PlcTables", "Address"),
-            translate("PlcTables", "Bytes"),
-            translate("PlcTables", "Value"),
-            translate("PlcTables", "Hex"),
-        ]
-    return [
-        translate("PlcTables", "Address"),
-        translate("PlcTables", "Bits 7..0"),
-        translate("PlcTables", "Hex"),
-    ]
-
-
-def form_fields(kind: TableKind) -> list[str]:
-    """The INSERT form's fields of a table."""
-    if kind is TableKind.TIMER:
-        return [
-            translate("PlcTables", "Timer number (1-100)"),
-            translate("PlcTables", "Preset (ms)"),
-        ]
-    if kind is TableKind.COUNTER:
-        return [
-            translate("PlcTables", "Counter number (1-20)"),
-            translate("PlcTables", "Preset"),
-            translate("PlcTables", "Current value"),
-        ]
-    if kind is TableKind.DATA:
-        return [
-            translate("PlcTables", "Address (D)"),
-            translate("PlcTables", "Bytes"),
-            translate("PlcTables", "Value"),
-        ]
-    return [translate("PlcTables", "Address (K)"), translate("PlcTables", "Bits 7..0")]
-
-
-def row_key(row: Row) -> tuple[object, ...]:
-    """What identifies a row of a table."""
-    if isinstance(row, TimerRow):
-        return (row.number, row.fixed)
-    if isinstance(row, CounterRow):
-        return (row.number,)
-    if isinstance(row, DataRow):
-        return (row.byte, row.width)
-    return (row.byte,)
-
-
-def row_texts(row: Row) -> list[str]:
-    """The cells of a row."""
-    if isinstance(row, TimerRow):
-        return [
-            str(row.number),
-            "TMRB" if row.fixed else "TMR",
-            str(row.preset_ms),
-            str(row.tick_ms),
-            str(row.effective_ms),
-        ]
-    if isinstance(row, CounterRow):
-        return [str(row.number), str(row.preset), str(row.value)]
-    if isinstance(row, DataRow):
-        unsigned = row.value & ((1 << (8 * row.width)) - 1)
-        return [str(row.address), str(row.width), str(row.value), f"{unsigned:0{2 * row.width}X}h"]
-    return [f"K{row.byte}", row.bits, f"{row.value:02X}h"]
-
-
 class InsertRowDialog(QDialog):
     """The INSERT form of a table: its fields, validated when OK is pressed."""
 
     def __init__(
         self,
         kind: TableKind,
+        fields: list[str],
         accept_texts: Callable[[list[str]], str | None],
         parent: QWidget | None = None,
     ) -> None:
@@ -194,7 +82,7 @@ class InsertRowDialog(QDialog):
         layout = QVBoxLayout(self)
         form = QFormLayout()
         self.fields: list[QLineEdit | QComboBox] = []
-        for index, label in enumerate(form_fields(kind)):
+        for index, label in enumerate(fields):
             field: QLineEdit | QComboBox
             if kind is TableKind.DATA and index == 1:
                 field = QComboBox(self)
@@ -248,39 +136,23 @@ class PlcTablesDock(QDockWidget):
         super().__init__(parent)
         self.setObjectName("plcTablesDock")
         self.session = session
-        self.use = ProgramUse.of(session.binary)
-        self.listed_timers: set[int] = set()
-        self.listed_counters: set[int] = set()
-        self.listed_data: dict[int, int] = {}
-        self.listed_keep: set[int] = set()
-        self.rows: dict[TableKind, list[Row]] = {kind: [] for kind in TableKind}
+        self.specs: dict[TableKind, TableSpec] = {spec.kind: spec for spec in table_specs()}
+        self.models: dict[TableKind, PlcTableModel] = {}
+        self.tables: dict[TableKind, QTableView] = {}
         self.insert_dialog: InsertRowDialog | None = None
-        self._filling = False
-        self._stale: set[TableKind] = set()  # tables to show again even if unchanged
         body = QWidget(self)
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
         self.tabs = QTabWidget(body)
         self.tabs.setObjectName("plcTablesTabs")
-        self.tables: dict[TableKind, QTableWidget] = {}
-        for kind in TableKind:
-            table = QTableWidget(0, len(headers(kind)), self.tabs)
-            table.setObjectName(f"plcTable_{kind.value}")
-            table.verticalHeader().hide()
-            table.setAlternatingRowColors(True)
-            table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
-            table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
-            table.setEditTriggers(
-                QAbstractItemView.EditTrigger.DoubleClicked
-                | QAbstractItemView.EditTrigger.EditKeyPressed
-                | QAbstractItemView.EditTrigger.AnyKeyPressed
-            )
-            table.horizontalHeader().setStretchLastSection(True)
-            table.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
-            table.customContextMenuRequested.connect(lambda pos, k=kind: self._context_menu(k, pos))
-            table.itemChanged.connect(lambda item, k=kind: self._on_item_changed(k, item))
-            self.tables[kind] = table
-            self.tabs.addTab(table, "")
+        for kind, spec in self.specs.items():
+            model = PlcTableModel(spec, session)
+            model.setParent(self)
+            model.refused.connect(self._refused)
+            model.stored.connect(lambda: self._say(""))
+            self.models[kind] = model
+            self.tables[kind] = self._make_view(kind, model)
+            self.tabs.addTab(self.tables[kind], "")
         layout.addWidget(self.tabs, 1)
         self.message = QLabel(body)
         self.message.setObjectName("plcTablesMessage")
@@ -292,185 +164,84 @@ class PlcTablesDock(QDockWidget):
         session.snapshot_ready.connect(self._on_snapshot)
         session.program_loaded.connect(self._on_program)
         self.retranslate()
-        self.refresh()
+
+    def _make_view(self, kind: TableKind, model: PlcTableModel) -> QTableView:
+        table = QTableView(self.tabs)
+        table.setModel(model)
+        table.setObjectName(f"plcTable_{kind.value}")
+        table.verticalHeader().hide()
+        table.setAlternatingRowColors(True)
+        table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
+        table.setEditTriggers(
+            QAbstractItemView.EditTrigger.DoubleClicked
+            | QAbstractItemView.EditTrigger.EditKeyPressed
+            | QAbstractItemView.EditTrigger.AnyKeyPressed
+        )
+        table.horizontalHeader().setStretchLastSection(True)
+        table.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
+        table.customContextMenuRequested.connect(lambda pos: self._context_menu(kind, pos))
+        model.modelReset.connect(table.resizeColumnsToContents)
+        model.rowsInserted.connect(table.resizeColumnsToContents)
+        table.resizeColumnsToContents()
+        return table
 
     # -- showing -------------------------------------------------------------------------------
 
     def _on_program(self, program: BinaryProgram) -> None:
-        self.use = ProgramUse.of(program)
-        self.refresh()
+        for model in self.models.values():
+            model.set_program(program)
+        self.retranslate()  # the timer columns follow the program's dialect
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
-        self.refresh(snapshot.areas)
+        for model in self.models.values():
+            model.update(snapshot.areas)
 
-    def current_rows(self, kind: TableKind, areas: Areas) -> list[Row]:
-        """The rows a table has for these memory areas."""
-        if kind is TableKind.TIMER:
-            return list(timer_rows(areas, self.use, self.listed_timers))
-        if kind is TableKind.COUNTER:
-            return list(counter_rows(areas, self.use, self.listed_counters))
-        if kind is TableKind.DATA:
-            return list(data_rows(areas, self.use, self.listed_data))
-        return list(keep_rows(areas, self.use, self.listed_keep))
+    def refresh(self) -> None:
+        """Show the tables' values now."""
+        for model in self.models.values():
+            model.update()
 
-    def refresh(self, areas: Areas | None = None) -> None:
-        """Show the tables' values now (a cell being edited is left alone)."""
-        if areas is None:
-            areas = self.session.snapshot().areas
-        for kind, table in self.tables.items():
-            if table.state() == QAbstractItemView.State.EditingState:
-                continue
-            rows = self.current_rows(kind, areas)
-            self._fill(kind, table, rows)
-
-    def _fill(self, kind: TableKind, table: QTableWidget, rows: list[Row]) -> None:
-        same_keys = [row_key(r) for r in rows] == [row_key(r) for r in self.rows[kind]]
-        if same_keys and rows == self.rows[kind] and kind not in self._stale:
-            return
-        self._stale.discard(kind)
-        self._filling = True
-        try:
-            table.setRowCount(len(rows))
-            for index, row in enumerate(rows):
-                fixed = isinstance(row, TimerRow) and row.fixed
-                for column, text in enumerate(row_texts(row)):
-                    item = table.item(index, column)
-                    if item is None:
-                        item = QTableWidgetItem()
-                        table.setItem(index, column, item)
-                    if item.text() != text:
-                        item.setText(text)
-                    flags = Qt.ItemFlag.ItemIsEnabled | Qt.ItemFlag.ItemIsSelectable
-                    if column in EDITABLE[kind] and not fixed:
-                        flags |= Qt.ItemFlag.ItemIsEditable
-                        item.setBackground(QBrush())
-                    else:
-                        item.setBackground(_READ_ONLY)
-                    item.setFlags(flags)
-                    item.setToolTip(
-                        translate("PlcTables", "TMRB: the preset is fixed in the program")
-                        if fixed
-                        else ""
-                    )
-            if not same_keys:
-                table.resizeColumnsToContents()
-        finally:
-            self._filling = False
-        self.rows[kind] = rows
+    def rows(self, kind: TableKind) -> list[Row]:
+        """The rows a table shows."""
+        return self.models[kind].rows
 
     def cell_texts(self, kind: TableKind) -> list[list[str]]:
         """What a table shows, row by row."""
-        table = self.tables[kind]
-        return [
-            [table.item(row, column).text() for column in range(table.columnCount())]
-            for row in range(table.rowCount())
-        ]
+        return self.models[kind].texts()
 
     # -- editing -------------------------------------------------------------------------------
 
-    def _on_item_changed(self, kind: TableKind, item: QTableWidgetItem) -> None:
-        if self._filling:
-            return
-        self.edit_cell(kind, item.row(), item.column(), item.text())
-
     def edit_cell(self, kind: TableKind, row: int, column: int, text: str) -> str | None:
         """Store a value typed in a cell; the translated reason when it is refused (the cell
-        then shows the value again)."""
-        try:
-            target = self.rows[kind][row]
-            self._store(kind, target, column, text)
-        except TableError as error:
-            problem = table_error_text(error)
-            self._say(problem, error=True)
-            self._refresh_later(kind)  # show the stored value again
-            return problem
-        self._say("")
-        self._refresh_later(kind)
-        return None
+        then shows the stored value again)."""
+        model = self.models[kind]
+        if model.setData(model.index(row, column), text):
+            return None
+        return table_error_text(model.last_error) if model.last_error else None
 
-    def _refresh_later(self, kind: TableKind) -> None:
-        """Show the table again: at once, or once a cell's editor has closed when the edit
-        is being committed from inside it."""
-        self._stale.add(kind)
-        if self.tables[kind].state() == QAbstractItemView.State.EditingState:
-            QTimer.singleShot(0, self.refresh)
-        else:
-            self.refresh()
+    def _refused(self, error: TableError) -> None:
+        self._say(table_error_text(error), error=True)
 
-    def _store(self, kind: TableKind, target: Row, column: int, text: str) -> None:
-        session = self.session
-        if isinstance(target, TimerRow):
-            if target.fixed:
-                raise TableError("fixed", number=target.number)
-            session.set_timer_preset(target.number, timer_preset(text))
-        elif isinstance(target, CounterRow):
-            value = counter_value(text)
-            if column == 1:
-                session.set_counter_preset(target.number, value)
-            else:
-                session.write(counter_value_address(target.number), value, 2)
-        elif isinstance(target, DataRow):
-            session.write(target.address, data_value(text, target.width), target.width)
-        else:
-            session.write(Address(Area.K, target.byte), keep_bits(text), 1)
+    def _outcome(self, error: TableError | None) -> str | None:
+        if error is None:
+            self._say("")
+            return None
+        problem = table_error_text(error)
+        self._say(problem, error=True)
+        return problem
 
     def insert_texts(self, kind: TableKind, texts: Sequence[str]) -> str | None:
         """INSERT with the form's texts: validate, store, list the row; or the reason not."""
-        try:
-            self._insert(kind, list(texts) + [""] * 3)
-        except TableError as error:
+        error = self.models[kind].run("insert", list(texts) + [""] * 3)
+        if error is not None:
             return table_error_text(error)
         self._say("")
-        self._refresh_later(kind)
         return None
-
-    def _insert(self, kind: TableKind, texts: list[str]) -> None:
-        session = self.session
-        if kind is TableKind.TIMER:
-            number = timer_number(texts[0])
-            session.set_timer_preset(number, timer_preset(texts[1] or "0"))
-            self.listed_timers.add(number)
-        elif kind is TableKind.COUNTER:
-            number = counter_number(texts[0])
-            preset, value = counter_value(texts[1] or "0"), counter_value(texts[2] or "0")
-            session.set_counter_preset(number, preset)
-            session.write(counter_value_address(number), value, 2)
-            self.listed_counters.add(number)
-        elif kind is TableKind.DATA:
-            width = data_width(texts[1] or "1")
-            byte = data_byte(texts[0], width)
-            value = data_value(texts[2] or "0", width)
-            session.write(Address(Area.D, byte), value, width)
-            self.listed_data[byte] = width
-        else:
-            byte = keep_byte(texts[0])
-            session.write(Address(Area.K, byte), keep_bits(texts[1] or "0"), 1)
-            self.listed_keep.add(byte)
 
     def delete_row(self, kind: TableKind, row: int) -> str | None:
         """DELETE: clear the row's value and unlist it (a row the program uses stays, at 0)."""
-        target = self.rows[kind][row]
-        session = self.session
-        if isinstance(target, TimerRow):
-            if target.fixed:
-                problem = table_error_text(TableError("fixed", number=target.number))
-                self._say(problem, error=True)
-                return problem
-            session.set_timer_preset(target.number, 0)
-            self.listed_timers.discard(target.number)
-        elif isinstance(target, CounterRow):
-            session.set_counter_preset(target.number, 0)
-            session.write(counter_value_address(target.number), 0, 2)
-            self.listed_counters.discard(target.number)
-        elif isinstance(target, DataRow):
-            session.write(target.address, 0, target.width)
-            self.listed_data.pop(target.byte, None)
-        else:
-            session.write(Address(Area.K, target.byte), 0, 1)
-            self.listed_keep.discard(target.byte)
-        self._say("")
-        self._refresh_later(kind)
-        return None
+        return self._outcome(self.models[kind].run("delete", row))
 
     # -- the right-click menu ------------------------------------------------------------------
 
@@ -484,7 +255,7 @@ class PlcTablesDock(QDockWidget):
         self.delete_action = QAction(translate("PlcTables", "DELETE"), menu)
         self.delete_action.setObjectName("action_table_delete")
         self.delete_action.triggered.connect(lambda: self.delete_row(kind, row))
-        self.delete_action.setEnabled(0 <= row < len(self.rows[kind]))
+        self.delete_action.setEnabled(0 <= row < self.models[kind].rowCount())
         menu.addAction(self.insert_action)
         menu.addAction(self.delete_action)
         return menu
@@ -496,7 +267,9 @@ class PlcTablesDock(QDockWidget):
 
     def open_insert_dialog(self, kind: TableKind) -> InsertRowDialog:
         """Open the INSERT form of a table (not modal-blocking: OK inserts)."""
-        dialog = InsertRowDialog(kind, lambda texts: self.insert_texts(kind, texts), self)
+        fields = self.specs[kind].form_fields(self.session)
+        dialog = InsertRowDialog(kind, fields, lambda texts: self.insert_texts(kind, texts),
+                                 self)
         dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
         self.insert_dialog = dialog
         dialog.open()
@@ -517,14 +290,20 @@ class PlcTablesDock(QDockWidget):
             TableKind.DATA: translate("PlcTables", "Data table (D)"),
             TableKind.KEEP: translate("PlcTables", "Keep relays (K)"),
         }
-        for index, kind in enumerate(TableKind):
+        for index, kind in enumerate(self.specs):
             self.tabs.setTabText(index, titles[kind])
-            self.tables[kind].setHorizontalHeaderLabels(headers(kind))
+            self.models[kind].retranslate()
+        layout = self.session.timers
         self.tables[TableKind.TIMER].setToolTip(
             translate(
                 "PlcTables",
                 "Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms",
-            ).format(MAX_TIMER_MS)
+            ).format(layout.max_preset) if not layout.has_precision else translate(
+                "PlcTables",
+                "Presets in ticks (up to {0}); the precision code sets the tick: "
+                "0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, "
+                "4 = 1 s, 5 = 1 min",
+            ).format(layout.max_preset)
         )
 
     def changeEvent(self, event: QEvent) -> None:

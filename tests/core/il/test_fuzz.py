@@ -6,6 +6,7 @@ from hypothesis import strategies as st
 from ladderworks.core.il import parse, print_program
 from ladderworks.core.instructions import ALL
 from ladderworks.paths import EXAMPLES
+from tests.hypothesis_profiles import examples
 
 _NAMES = [spec.name for spec in ALL] + ["SUB", "FOO", "RD.XX"]
 _WORDS = st.one_of(
@@ -19,7 +20,7 @@ _TEXT = st.lists(_LINE, max_size=30).map("\n".join)
 _EXAMPLE_TEXTS = [p.read_text("utf-8") for p in sorted(EXAMPLES.glob("*.LAD"))]
 
 
-@settings(max_examples=1500, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(1500), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(_TEXT)
 def test_random_texts_never_raise(text: str) -> None:
     result = parse(text)
@@ -30,7 +31,7 @@ def test_random_texts_never_raise(text: str) -> None:
         assert again.ok and again.program == result.program
 
 
-@settings(max_examples=1500, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(1500), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.sampled_from(_EXAMPLE_TEXTS), st.data())
 def test_mutated_examples_never_raise(text: str, data: st.DataObject) -> None:
     chars = list(text)
@@ -50,7 +51,7 @@ def test_mutated_examples_never_raise(text: str, data: st.DataObject) -> None:
         assert parse(print_program(result.program)).program == result.program
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=examples(300), deadline=None)
 @given(st.binary(max_size=400))
 def test_random_bytes_never_raise(data: bytes) -> None:
     from ladderworks.core.il import parse_bytes

@@ -15,6 +15,7 @@ from ladderworks.core.ladder.model import WIRE, Coil, Contact, LadderNetwork
 from ladderworks.core.ladder.power import PowerFlow
 from tests.core.ladder.reference import run
 from tests.core.ladder.strategies import rungs
+from tests.hypothesis_profiles import examples
 
 POOL = [Address(Area.X, 0, bit) for bit in range(6)]
 
@@ -38,7 +39,7 @@ def _agree(network: LadderNetwork, values: dict[Address, bool]) -> None:
         assert sorted(result.writes, key=str) == sorted(drawn, key=str)  # chains: any order
 
 
-@settings(max_examples=500, deadline=None)
+@settings(max_examples=examples(500), deadline=None)
 @given(rungs(with_comments=False), st.randoms(use_true_random=False))
 def test_laid_out_networks_evaluate_like_their_code(rung: Rung, rnd: random.Random) -> None:
     network = layout_network(code_rung(rung))

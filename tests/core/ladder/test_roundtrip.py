@@ -17,6 +17,7 @@ from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.layout import layout_network
 from tests.core.ladder.reference import run
 from tests.core.ladder.strategies import EXAMPLES, programs, rungs, stack_code
+from tests.hypothesis_profiles import examples
 
 EXAMPLE_FILES = sorted(EXAMPLES.glob("*.LAD"))
 
@@ -49,13 +50,13 @@ def test_example_mnemonic_text_is_the_canonical_text(path: Path) -> None:
     assert print_program(back) == print_program(program)
 
 
-@settings(max_examples=500, deadline=None)
+@settings(max_examples=examples(500), deadline=None)
 @given(programs())
 def test_generated_programs_round_trip_through_the_picture(program: Program) -> None:
     assert _drawn_only(program) == program
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(programs())
 def test_generated_programs_round_trip_as_text(program: Program) -> None:
     back, _ = ladder_to_program(program_to_ladder(program))
@@ -64,7 +65,7 @@ def test_generated_programs_round_trip_as_text(program: Program) -> None:
     assert parse(text).program == program
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=examples(400), deadline=None)
 @given(rungs())
 def test_layout_then_decomposition_gives_the_standard_coding(rung) -> None:
     from ladderworks.core.ladder.logic import code_rung
@@ -75,7 +76,7 @@ def test_layout_then_decomposition_gives_the_standard_coding(rung) -> None:
     assert network_to_instructions(grid) == (code, [])
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=examples(400), deadline=None)
 @given(stack_code(), st.randoms(use_true_random=False))
 def test_any_stack_coding_round_trips_and_its_picture_means_the_same(
         code: list[Instruction], rnd: random.Random) -> None:

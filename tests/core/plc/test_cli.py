@@ -98,3 +98,37 @@ def test_bad_options_are_reported(capsys: pytest.CaptureFixture[str], argv: list
     code, _, err = run(capsys, "run", str(EXAMPLES / "alarm.LAD"), *argv)
     assert code == 2
     assert err.startswith("ladderworks-cli: ")
+
+
+def test_run_reads_the_parameter_file_beside_the_program(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    source = tmp_path / "timer.LAD"
+    source.write_text(TIMER)
+    argv = ["run", str(source), "--ms", "400", "--set", "R1.4=1", "--trace", "R1.7",
+            "--period", "48"]
+
+    def first_on() -> int:
+        code, text, err = run(capsys, *argv)
+        assert code == 0, err
+        return next(int(line.split(",")[0]) for line in text.splitlines()[1:]
+                    if line.endswith(",1"))
+
+    assert first_on() == 0  # no parameter file: preset 0
+    (tmp_path / "timer.LAD.prm").write_text("T0:4 = 200  # TMR 1\nT0:9 = 1\n")
+    assert first_on() == 192  # 200 ms rounded down to 48 ms ticks
+    _code, _, err = run(capsys, *argv)
+    assert err == (f"{tmp_path / 'timer.LAD.prm'}:2:1: prm-value '1' is not a value for 9 "
+                   "byte(s)\n")
+    other = tmp_path / "other.prm"
+    other.write_text("T0:4 = 100\n")
+    argv += ["--params", str(other)]
+    assert first_on() == 96
+    argv += ["--timer", "1=300"]  # an option wins over the file
+    assert first_on() == 288
+
+
+def test_run_with_a_missing_named_parameter_file(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code, _, err = run(capsys, "run", str(EXAMPLES / "alarm.LAD"), "--params",
+                       str(tmp_path / "none.prm"))
+    assert code == 2 and err.startswith("ladderworks-cli: ")

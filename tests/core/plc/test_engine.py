@@ -18,6 +18,7 @@ from tests.core.plc.conftest import (
     engine_for,
     stack_step,
 )
+from tests.hypothesis_profiles import examples
 
 SELF_HOLD = """
 RD X0.0
@@ -301,7 +302,7 @@ def random_program(rng: random.Random, networks: int) -> list[tuple[str, str | N
     return ops
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(seed=st.integers(0, 10**6), monitored=st.booleans())
 def test_generated_scan_matches_the_reference_interpreter(seed: int, monitored: bool) -> None:
     rng = random.Random(seed)

@@ -19,6 +19,7 @@ from tests.core.plc.conftest import (
     set_bit,
     stack_step,
 )
+from tests.hypothesis_profiles import examples
 
 
 def ladder(text: str) -> str:
@@ -288,7 +289,7 @@ def text_of(program: list[Op]) -> str:
                      else f"{name} {operand}" for name, operand, coils in program)
 
 
-@settings(max_examples=80, deadline=None)
+@settings(max_examples=examples(80), deadline=None)
 @given(seed=st.integers(0, 10**6), monitored=st.booleans())
 def test_generated_jumps_match_the_reference_interpreter(seed: int, monitored: bool) -> None:
     rng = random.Random(seed)

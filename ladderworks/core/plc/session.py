@@ -1,0 +1,408 @@
+"""PlcRun: the session policy of one simulated PLC, shared by the CLI, scenarios and the GUI.
+
+The policy, in one place:
+
+- The memory image belongs to the run, not to a program: X/F (machine inputs) and the K/D/T/C
+  tables survive loading a new program; a load is a cold start (Y, G, R, A and every
+  timer/counter/edge state cleared), then the PMC parameters are written over the tables.
+- Forced bits stay forced across a load; disabled elements are enabled again (their op
+  numbers belong to the old program); a running trace goes on with the new program.
+- A forced X/F bit is *held*: the machine side's writes are kept aside and the bit gets its
+  machine value back when the force is released.
+- Scan figures: the real-time runner's own, or min/avg/max of scans run on the virtual clock.
+
+`PlcRun` has no Qt: the GUI's `PlcSession` only adds a publish timer and signals.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Iterable
+from contextlib import AbstractContextManager, nullcontext
+from dataclasses import dataclass, field
+
+from ladderworks.core.address import Address, Area
+from ladderworks.core.alarms import ActiveAlarm, ActiveAlarms, AlarmTable
+from ladderworks.core.compiler import CompileResult, compile_program
+from ladderworks.core.compiler.binary import BinaryProgram
+from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
+from ladderworks.core.il.program import Program
+from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
+from ladderworks.core.plc.forcing import ForceEntry
+from ladderworks.core.plc.functions.counters import (
+    counter_preset_address,
+    counter_value_address,
+)
+from ladderworks.core.plc.memory import Memory
+from ladderworks.core.plc.parameters import PARAMETER_AREAS, PmcParameters
+from ladderworks.core.plc.runner import RealTimeRunner, ScanStats
+from ladderworks.core.plc.timer_table import TimerLayout, dialect_of, timer_layout
+from ladderworks.core.plc.trace import TraceSample, TraceSampler
+
+OpRef = int | tuple[int, int]
+# Areas the machine and the CNC write (the program only reads them): a released force gives
+# the bit back its machine value.
+MACHINE_AREAS = frozenset({Area.X, Area.F})
+
+
+@dataclass(frozen=True, slots=True)
+class PlcStatus:
+    """What the PLC control screen shows: running or not, scans and their times (ms)."""
+
+    loaded: bool = False
+    running: bool = False
+    scan_count: int = 0
+    now_ms: int = 0
+    period_ms: int = DEFAULT_PERIOD_MS
+    min_ms: float = 0.0
+    avg_ms: float = 0.0
+    max_ms: float = 0.0
+    overruns: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class PlcSnapshot:
+    """A consistent copy of the PLC between two scans: every area and the power flow."""
+
+    scan_count: int = 0
+    now_ms: int = 0
+    areas: dict[Area, bytes] = field(default_factory=dict)
+    power_flow: bytes = b""  # ST0 after each op (all 0 unless monitored)
+    monitored: bool = False
+    disabled: frozenset[int] = frozenset()
+
+    def bit(self, address: Address) -> int:
+        """The bit at a bit address (0 or 1)."""
+        assert address.bit is not None
+        return self.areas[address.area][address.byte] >> address.bit & 1
+
+    def read(self, address: Address, width: int = 1) -> int:
+        """The `width`-byte little-endian value at a byte address."""
+        data = self.areas[address.area]
+        return int.from_bytes(data[address.byte:address.byte + width], "little")
+
+
+class ScanFigures:
+    """Min/avg/max of scans run on the virtual clock (the runner keeps its own)."""
+
+    def __init__(self) -> None:
+        self.count = 0
+        self.total = 0.0
+        self.low = float("inf")
+        self.high = 0.0
+
+    def add(self, seconds: float) -> None:
+        """Count one scan that took `seconds`."""
+        self.count += 1
+        self.total += seconds
+        self.low = min(self.low, seconds)
+        self.high = max(self.high, seconds)
+
+
+class PlcRun:
+    """One PLC: the loaded program's engine, its memory, forces, trace, alarms and parameters."""
+
+    def __init__(self, *, realtime: bool = False, period_ms: int = DEFAULT_PERIOD_MS) -> None:
+        self.realtime = realtime  # start() runs a wall-clock thread; else the virtual clock
+        self.period_ms = period_ms
+        self.memory = Memory()
+        self.engine: ScanEngine | None = None
+        self.binary: BinaryProgram | None = None
+        self.program: Program | None = None  # the source of the binary, when known
+        self.parameters = PmcParameters()
+        self.alarm_table = AlarmTable()
+        self.trace: TraceSampler | None = None
+        self._alarms = ActiveAlarms(self.alarm_table)
+        self._runner: RealTimeRunner | None = None
+        self._running = False
+        self._figures = ScanFigures()
+        self._stopped_stats: ScanStats | None = None
+        self._monitors = 0
+        self._held: dict[Address, bool] = {}  # forced X/F bits: the machine's own value
+
+    # -- the program ---------------------------------------------------------------------
+
+    def load(self, binary: bytes | BinaryProgram,
+             program: Program | None = None) -> list[Diagnostic]:
+        """Load a binary (stops first): cold start, then the parameters; [] when loaded."""
+        try:
+            engine = ScanEngine(binary, period_ms=self.period_ms, memory=self.memory)
+        except DiagnosticError as error:
+            return list(error.diagnostics)
+        self.stop()
+        old = self.engine
+        self.engine = engine
+        self.binary = engine.program
+        self.program = program
+        engine.cold_start()
+        self.parameters.apply(self.memory)
+        engine.monitored = self._monitors > 0
+        if old is not None:
+            if old.trace is not None:
+                engine.trace = old.trace  # a running trace goes on with the new program
+            for address, value in old.force_table.forced().items():
+                engine.force(address, value)  # forced bits stay; disabled elements do not
+        self._figures = ScanFigures()
+        self._stopped_stats = None
+        self._alarms.clear()
+        return []
+
+    def load_program(self, program: Program) -> CompileResult:
+        """Compile a program and load it when it compiles."""
+        result = compile_program(program)
+        if result.binary is not None:
+            problems = self.load(result.binary, program)
+            if problems:
+                return CompileResult(None, result.diagnostics + problems)
+        return result
+
+    @property
+    def dialect(self) -> str:
+        """The loaded program's dialect ("seed" before a load)."""
+        return dialect_of(self.program if self.program is not None else self.binary)
+
+    # -- running -------------------------------------------------------------------------
+
+    @property
+    def running(self) -> bool:
+        """True while the PLC program is started."""
+        return self._running
+
+    @property
+    def threaded(self) -> bool:
+        """True while the real-time runner's thread scans."""
+        return self._runner is not None
+
+    def start(self) -> bool:
+        """Start scanning (a thread when real-time); False when no program is loaded."""
+        if self.engine is None:
+            return False
+        if not self._running:
+            self._running = True
+            if self.realtime:
+                self._runner = RealTimeRunner(self.engine)
+                self._runner.start()
+        return True
+
+    def stop(self) -> bool:
+        """Stop scanning (outputs Y go to 0, the safe state); False if it was not running."""
+        if not self._running:
+            return False
+        if self._runner is None and self.engine is not None:
+            self.engine.stop()
+        if self._runner is not None:
+            self._runner.stop()
+            self._stopped_stats = self._runner.stats()
+            self._runner = None
+        self._running = False
+        return True
+
+    def run_scans(self, count: int) -> int:
+        """Run `count` scans on the virtual clock (only while started and not threaded)."""
+        engine = self.engine
+        if engine is None or not self._running or self._runner is not None:
+            return 0
+        for _ in range(count):
+            began = time.perf_counter()
+            engine.scan()
+            self._figures.add(time.perf_counter() - began)
+        return count
+
+    def step(self, ms: int) -> int:
+        """Advance the virtual clock by `ms` (one scan per period); returns the scans run."""
+        engine = self.engine
+        if engine is None or not self._running or self._runner is not None:
+            return 0
+        return self.run_scans(-(-ms // engine.period_ms))
+
+    def status(self) -> PlcStatus:
+        """The figures now."""
+        engine = self.engine
+        if engine is None:
+            return PlcStatus(period_ms=self.period_ms)
+        stats = self._runner.stats() if self._runner is not None else self._stopped_stats
+        if stats is not None:
+            low, avg, high, overruns = stats.min_ms, stats.avg_ms, stats.max_ms, stats.overruns
+        else:
+            f = self._figures
+            low = f.low * 1e3 if f.count else 0.0
+            avg = f.total / f.count * 1e3 if f.count else 0.0
+            high, overruns = f.high * 1e3, 0
+        return PlcStatus(True, self._running, engine.scan_count, engine.now_ms,
+                         engine.period_ms, low, avg, high, overruns)
+
+    def snapshot(self) -> PlcSnapshot:
+        """A copy of memory and power flow taken between two scans."""
+        engine = self.engine
+        if engine is None:
+            return PlcSnapshot(areas=self.memory.snapshot())
+        with engine.lock:
+            return PlcSnapshot(engine.scan_count, engine.now_ms, self.memory.snapshot(),
+                               bytes(engine.power_flow), engine.monitored,
+                               engine.force_table.disabled)
+
+    def monitor(self, on: bool) -> None:
+        """A view starts (True) or stops (False) needing the power flow of every op."""
+        self._monitors = max(0, self._monitors + (1 if on else -1))
+        if self.engine is not None:
+            self.engine.monitored = self._monitors > 0
+
+    # -- memory as the machine sees it -----------------------------------------------------
+
+    def lock(self) -> AbstractContextManager[object]:
+        """The engine's lock (nothing to lock before a load)."""
+        return self.engine.lock if self.engine is not None else nullcontext()
+
+    def set_bit(self, address: Address, value: bool | int) -> None:
+        """Set a bit between two scans; on a held (forced X/F) bit, what it goes back to."""
+        with self.lock():
+            if address in self._held:
+                self._held[address] = bool(value)
+            else:
+                self.memory.set_bit(address, value)
+
+    def write(self, address: Address, value: int, width: int = 1) -> None:
+        """Store a value of `width` bytes at a byte address between two scans."""
+        with self.lock():
+            self.memory.write(address, value, width)
+
+    def bit(self, address: Address) -> int:
+        """The bit at a bit address now."""
+        with self.lock():
+            return self.memory.bit(address)
+
+    def read(self, address: Address, width: int = 1) -> int:
+        """The `width`-byte value at a byte address now."""
+        with self.lock():
+            return self.memory.read(address, width)
+
+    # -- forcing and disabling -----------------------------------------------------------
+
+    def force(self, address: Address, value: bool | int) -> bool:
+        """Hold a bit at 0 or 1 before and after the logic of every scan; False unloaded."""
+        if self.engine is None:
+            return False
+        with self.engine.lock:
+            if address.area in MACHINE_AREAS and address not in self._held:
+                self._held[address] = bool(self.memory.bit(address))
+            self.engine.force(address, value)
+            self.engine.force_table.apply(self.memory)
+        return True
+
+    def release(self, address: Address) -> bool:
+        """Stop forcing a bit (a held X/F bit gets its machine value back)."""
+        if self.engine is None:
+            return False
+        with self.engine.lock:
+            done = self.engine.release(address)
+            if address in self._held:
+                self.memory.set_bit(address, self._held.pop(address))
+        return done
+
+    def disable(self, op: OpRef) -> int:
+        """Make an element passive (PASİF) from the next scan; its op index."""
+        assert self.engine is not None
+        return self.engine.disable(op)
+
+    def enable(self, op: OpRef) -> int:
+        """Make a passive element act again."""
+        assert self.engine is not None
+        return self.engine.enable(op)
+
+    def release_all(self) -> None:
+        """Release every force and enable every element."""
+        if self.engine is None:
+            return
+        with self.engine.lock:
+            self.engine.release_all()
+            for address, value in self._held.items():
+                self.memory.set_bit(address, value)
+            self._held.clear()
+
+    def forces(self) -> list[ForceEntry]:
+        """Everything forced or disabled."""
+        return self.engine.forces() if self.engine is not None else []
+
+    # -- tracing -------------------------------------------------------------------------
+
+    def start_trace(self, addresses: Iterable[Address], period_ms: int,
+                    widths: list[int] | None = None) -> TraceSampler | None:
+        """Sample addresses every `period_ms` inside the scan loop (ring buffer)."""
+        if self.engine is None:
+            return None
+        self.trace = self.engine.start_trace(addresses, period_ms, widths=widths)
+        return self.trace
+
+    def stop_trace(self) -> None:
+        """Stop sampling (samples not taken yet stay available until taken)."""
+        if self.engine is not None:
+            self.engine.stop_trace()
+
+    def trace_samples(self) -> list[TraceSample]:
+        """Samples not taken yet, oldest first."""
+        return self.trace.take() if self.trace is not None else []
+
+    # -- PMC parameters: the T, C, K and D tables ----------------------------------------
+
+    @property
+    def timers(self) -> TimerLayout:
+        """Where the loaded program's TMR presets live (by its dialect)."""
+        return timer_layout(self.dialect)
+
+    def set_parameter(self, address: Address, value: int, width: int = 1) -> None:
+        """Set a PMC parameter: in memory now and in `parameters` (saved with the program)."""
+        with self.lock():
+            self.memory.write(address, value, width)
+            self.parameters.set(address, value, width)
+
+    def set_parameters(self, parameters: PmcParameters) -> None:
+        """Use these parameters (a program opened): T, C, K, D = defaults + these values."""
+        with self.lock():
+            self.parameters = parameters.copy()
+            self.memory.clear(*PARAMETER_AREAS)
+            self.parameters.apply(self.memory)
+
+    def timer_preset(self, number: int) -> int:
+        """TMR `number`'s preset (ms in seed programs, ticks in FANUC ones)."""
+        return self.read(self.timers.preset_address(number), self.timers.width)
+
+    def set_timer_preset(self, number: int, value: int) -> None:
+        """Change TMR `number`'s preset (a PMC parameter)."""
+        self.set_parameter(self.timers.preset_address(number), value, self.timers.width)
+
+    def counter(self, number: int) -> tuple[int, int]:
+        """CTR `number`'s (preset, current value) from the C table."""
+        return (self.read(counter_preset_address(number), 2),
+                self.read(counter_value_address(number), 2))
+
+    def set_counter_preset(self, number: int, preset: int) -> None:
+        """Change CTR `number`'s preset (a PMC parameter)."""
+        self.set_parameter(counter_preset_address(number), preset, 2)
+
+    def set_counter_value(self, number: int, value: int) -> None:
+        """Change CTR `number`'s current value (a PMC parameter)."""
+        self.set_parameter(counter_value_address(number), value, 2)
+
+    # -- alarms --------------------------------------------------------------------------
+
+    def set_alarm_table(self, table: AlarmTable) -> None:
+        """Use these alarm message texts (AlarmMsg.dat)."""
+        self.alarm_table = table
+        self._alarms.table = table
+
+    def alarms(self) -> list[ActiveAlarm]:
+        """The active alarm list, newest first."""
+        return self._alarms.alarms
+
+    def reset_alarms(self) -> None:
+        """The reset key: alarms whose bit dropped leave the list."""
+        self._alarms.reset()
+
+    def update_alarms(self) -> bool:
+        """Feed the alarm list every A-area change the engine logged; True if any."""
+        if self.engine is None:
+            return False
+        changes = self.engine.take_alarm_changes()
+        for now_ms, a_bytes in changes:
+            self._alarms.update(a_bytes, now_ms)
+        return bool(changes)
