@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import StrEnum
+from functools import cache
 
 
 class Kind(StrEnum):
@@ -11,7 +12,44 @@ class Kind(StrEnum):
 
     BASIC = "basic"  # bit logic on the result stack
     FUNCTION = "function"  # a functional instruction (box in the ladder)
-    END = "end"  # END1 / END2 / END
+    END = "end"  # END1 / END2 / END3 / END
+
+
+class Combine(StrEnum):
+    """How a basic instruction combines its bit with the result stack."""
+
+    NONE = ""  # not a contact (coils, functions)
+    READ = "read"  # RD, RD.NOT, RD.STK, RD.NOT.STK: starts a new value
+    AND = "and"  # AND, AND.NOT, AND.STK
+    OR = "or"  # OR, OR.NOT, OR.STK
+
+
+class Write(StrEnum):
+    """What a coil does with ST0."""
+
+    NONE = ""  # not a coil
+    OUT = "out"  # WRT / WRT.NOT: bit := ST0 (inverted for WRT.NOT)
+    SET = "set"  # SET: ST0 = 1 -> bit := 1
+    RESET = "reset"  # RST: ST0 = 1 -> bit := 0
+
+
+class Flow(StrEnum):
+    """The part a functional instruction plays in the program's structure."""
+
+    NONE = ""  # an ordinary box: runs in place
+    JUMP = "jump"  # JMP: skip to its JMPE (or n coils)
+    JUMP_END = "jump-end"  # JMPE
+    COMMON = "common"  # COM: gate coils (or n coils) to its COME
+    COMMON_END = "common-end"  # COME
+    LEVEL_END = "level-end"  # END1, END2, END3: end of a program level
+    PROGRAM_END = "program-end"  # END: end of the subprogram area
+    CALL = "call"  # CALL: run subprogram Pn when ACT = 1
+    CALL_ALWAYS = "call-always"  # CALLU: run subprogram Pn
+    SUBPROGRAM = "subprogram"  # SP: start of subprogram Pn
+    SUBPROGRAM_END = "subprogram-end"  # SPE
+    LABEL = "label"  # LBL Ln: jump target
+    LABEL_JUMP = "label-jump"  # JMPB: jump to LBL Ln of the same unit when ACT = 1
+    LABEL_JUMP_MAIN = "label-jump-main"  # JMPC: from a subprogram to LBL Ln of its level
 
 
 class ParamKind(StrEnum):
@@ -22,6 +60,9 @@ class ParamKind(StrEnum):
     VALUE = "value"  # a constant or an address, chosen by a format parameter
     MASK = "mask"  # up to 4 binary digits (MOVE masks), printed as 4 digits
     TABLE = "table"  # a list of constants, its length given by another parameter
+    PROGRAM = "program"  # a subprogram number, written `P5`
+    LABEL = "label"  # a jump label number, written `L12`
+    RAW = "raw"  # a constant or an address, kept as written (a `SUB n` we do not know)
 
 
 @dataclass(frozen=True, slots=True)
@@ -35,10 +76,15 @@ class Param:
     width: int | str = 1  # bytes of addressed data, or the name of the format param giving it
     choices: tuple[int, ...] = ()
     length_of: str = ""  # TABLE: the NUMBER param giving the number of entries
+    hi_pmc: int | None = None  # the upper limit in a FANUC (LADDER-III) program, if wider
+
+    def highest(self, dialect: str = "seed") -> int:
+        """The upper limit in a program of `dialect` ("seed" or "fanuc")."""
+        return self.hi_pmc if dialect == "fanuc" and self.hi_pmc is not None else self.hi
 
     def allows_address(self) -> bool:
         """True if an address may be written here."""
-        return self.kind in (ParamKind.ADDRESS, ParamKind.VALUE)
+        return self.kind in (ParamKind.ADDRESS, ParamKind.VALUE, ParamKind.RAW)
 
 
 @dataclass(frozen=True, slots=True)
@@ -56,11 +102,36 @@ class InstructionSpec:
     w1: bool = False  # has a W1 output left in ST0
     title: str = ""  # English title
     title_tr: str = ""  # Turkish title, the seed manual's words
-
+    opcode: int = 0  # the binary's opcode (basic: 1..; functional and END: FUNCTION_BASE + SUB)
+    negated: bool = False  # basic: reads or writes the inverted bit (RD.NOT, WRT.NOT, ...)
+    combine: Combine = Combine.NONE  # basic contacts and stack ops
+    write: Write = Write.NONE  # basic coils
+    flow: Flow = Flow.NONE  # functional: its part in the program's structure
+    level: int = 0  # LEVEL_END: the level it ends (1, 2, 3)
+    cnc: bool = False  # talks to the CNC: simulated without one (docs/instructions.md)
+    address_format: bool = False  # a `format` of 1001/1002/1004 makes the VALUE an address
+    mnemonic: str = ""  # the name written in the text when it differs from `name`
+    known: bool = True  # False for a `SUB n` that is not in the table
+    source: str = "seed"  # "seed": the seed manual's instruction; "pmc": FANUC 30i PMC
     @property
     def help_key(self) -> str:
         """Key of the instruction's entry in docs/instructions.md and the help browser."""
         return "instr-" + self.name.lower().replace(".", "-")
+
+    @property
+    def text_name(self) -> str:
+        """The mnemonic as written in program text (`AND` for the functional LOGAND)."""
+        return self.mnemonic or self.name
+
+    @property
+    def is_contact(self) -> bool:
+        """True for RD/AND/OR and their .NOT/.STK forms (they take a bit operand)."""
+        return self.combine is not Combine.NONE and self.operand
+
+    @property
+    def is_coil(self) -> bool:
+        """True for WRT, WRT.NOT, SET and RST."""
+        return self.write is not Write.NONE
 
     @property
     def is_function(self) -> bool:
@@ -87,11 +158,13 @@ class InstructionSpec:
 
 
 MAX32 = 99_999_999
+INT32 = 2**31  # FANUC binary data: -2^31 .. 2^32 - 1 accepted as written (signed or unsigned)
+UINT32 = 2**32 - 1
 FORMAT_124 = (1, 2, 4)
 
 
-def _num(name: str, lo: int, hi: int) -> Param:
-    return Param(name, ParamKind.NUMBER, lo, hi)
+def _num(name: str, lo: int, hi: int, hi_pmc: int | None = None) -> Param:
+    return Param(name, ParamKind.NUMBER, lo, hi, hi_pmc=hi_pmc)
 
 
 def _fmt(name: str = "format") -> Param:
@@ -109,41 +182,49 @@ def _value(name: str, width: int | str = 2) -> Param:
 # Binary arithmetic/compare format: thousands digit 0 = constant, 1 = address; units 1/2/4 bytes.
 ARITH_FORMATS = (1, 2, 4, 1001, 1002, 1004)
 
+_B = Kind.BASIC
+_READ, _AND, _OR = Combine.READ, Combine.AND, Combine.OR
+
 _BASIC: tuple[InstructionSpec, ...] = (
-    InstructionSpec("RD", Kind.BASIC, operand=True, pushes=0,
+    InstructionSpec("RD", _B, operand=True, combine=_READ, opcode=1,
                     title="Read", title_tr="OKU"),
-    InstructionSpec("RD.NOT", Kind.BASIC, operand=True, pushes=0,
+    InstructionSpec("RD.NOT", _B, operand=True, combine=_READ, negated=True, opcode=2,
                     title="Read inverted", title_tr="TERS OKU"),
-    InstructionSpec("WRT", Kind.BASIC, operand=True, writes=True,
+    InstructionSpec("WRT", _B, operand=True, writes=True, write=Write.OUT, opcode=3,
                     title="Write", title_tr="YAZ"),
-    InstructionSpec("WRT.NOT", Kind.BASIC, operand=True, writes=True,
-                    title="Write inverted", title_tr="TERS YAZ"),
-    InstructionSpec("AND", Kind.BASIC, operand=True, title="And", title_tr="VE"),
-    InstructionSpec("AND.NOT", Kind.BASIC, operand=True,
+    InstructionSpec("WRT.NOT", _B, operand=True, writes=True, write=Write.OUT, negated=True,
+                    opcode=4, title="Write inverted", title_tr="TERS YAZ"),
+    InstructionSpec("AND", _B, operand=True, combine=_AND, opcode=5,
+                    title="And", title_tr="VE"),
+    InstructionSpec("AND.NOT", _B, operand=True, combine=_AND, negated=True, opcode=6,
                     title="And inverted", title_tr="VE DEĞİL"),
-    InstructionSpec("OR", Kind.BASIC, operand=True, title="Or", title_tr="VEYA"),
-    InstructionSpec("OR.NOT", Kind.BASIC, operand=True,
+    InstructionSpec("OR", _B, operand=True, combine=_OR, opcode=7, title="Or", title_tr="VEYA"),
+    InstructionSpec("OR.NOT", _B, operand=True, combine=_OR, negated=True, opcode=8,
                     title="Or inverted", title_tr="VEYA DEĞİL"),
-    InstructionSpec("RD.STK", Kind.BASIC, operand=True, pushes=1,
+    InstructionSpec("RD.STK", _B, operand=True, pushes=1, combine=_READ, opcode=9,
                     title="Push and read", title_tr="İTEKLE VE OKU"),
-    InstructionSpec("RD.NOT.STK", Kind.BASIC, operand=True, pushes=1,
-                    title="Push and read inverted", title_tr="İTEKLE VE TERS OKU"),
-    InstructionSpec("AND.STK", Kind.BASIC, pushes=-1,
+    InstructionSpec("RD.NOT.STK", _B, operand=True, pushes=1, combine=_READ, negated=True,
+                    opcode=10, title="Push and read inverted", title_tr="İTEKLE VE TERS OKU"),
+    InstructionSpec("AND.STK", _B, pushes=-1, combine=_AND, opcode=11,
                     title="And with stack, pop", title_tr="YIĞIN VE"),
-    InstructionSpec("OR.STK", Kind.BASIC, pushes=-1,
+    InstructionSpec("OR.STK", _B, pushes=-1, combine=_OR, opcode=12,
                     title="Or with stack, pop", title_tr="YIĞIN VEYA"),
+    InstructionSpec("SET", _B, operand=True, writes=True, write=Write.SET, opcode=13,
+                    source="pmc", title="Set coil", title_tr="SET BOBİNİ"),
+    InstructionSpec("RST", _B, operand=True, writes=True, write=Write.RESET, opcode=14,
+                    source="pmc", title="Reset coil", title_tr="RESET BOBİNİ"),
 )
 
 _F = Kind.FUNCTION
 
 _FUNCTIONS: tuple[InstructionSpec, ...] = (
-    InstructionSpec("TMR", _F, 3, inputs=("ACT",), params=(_num("timer", 1, 100),), w1=True,
+    InstructionSpec("TMR", _F, 3, inputs=("ACT",), params=(_num("timer", 1, 100, 250),), w1=True,
                     title="Timer", title_tr="ZAMANLAYICI"),
     InstructionSpec("TMRB", _F, 24, inputs=("ACT",),
-                    params=(_num("timer", 1, 100), _num("preset", 0, MAX32)), w1=True,
+                    params=(_num("timer", 1, 100, 500), _num("preset", 0, MAX32)), w1=True,
                     title="Fixed timer", title_tr="STATİK ZAMANLAYICI"),
     InstructionSpec("TMRC", _F, 54, inputs=("ACT",),
-                    params=(_num("accuracy", 0, 1), _addr("preset", 2), _addr("register", 4)),
+                    params=(_num("accuracy", 0, 1, 7), _addr("preset", 2), _addr("register", 4)),
                     w1=True, title="Timer (preset at an address)", title_tr="ZAMANLAYICI"),
     InstructionSpec("DEC", _F, 4, inputs=("ACT",),
                     params=(_addr("code", 1), _num("spec", 0, 9911)), w1=True,
@@ -153,7 +234,7 @@ _FUNCTIONS: tuple[InstructionSpec, ...] = (
                             _addr("result", 1)),
                     title="Binary decode", title_tr="BINARY KOD ÇÖZÜCÜ"),
     InstructionSpec("CTR", _F, 5, inputs=("CN0", "UPDOWN", "RST", "ACT"),
-                    params=(_num("counter", 1, 20),), w1=True,
+                    params=(_num("counter", 1, 20, 100),), w1=True,
                     title="Counter", title_tr="SAYICI"),
     InstructionSpec("CTRC", _F, 55, inputs=("CN0", "UPDOWN", "RST", "ACT"),
                     params=(_addr("preset", 2), _addr("register", 4)), w1=True,
@@ -173,7 +254,7 @@ _FUNCTIONS: tuple[InstructionSpec, ...] = (
     InstructionSpec("CODB", _F, 27, inputs=("RST", "ACT"),
                     params=(_fmt(), _num("size", 1, 256), _addr("index", 1),
                             _addr("output", "format"),
-                            Param("table", ParamKind.TABLE, -MAX32, MAX32, length_of="size")),
+                            Param("table", ParamKind.TABLE, -INT32, UINT32, length_of="size")),
                     w1=True, title="Binary code conversion",
                     title_tr="BINARY KOD TRANSFORMASYON"),
     InstructionSpec("DCNV", _F, 14, inputs=("BYT", "CNV", "RST", "ACT"),
@@ -195,11 +276,11 @@ _FUNCTIONS: tuple[InstructionSpec, ...] = (
                     params=(_addr("data", 2),), w1=True,
                     title="Shift register", title_tr="KAYIT KAYDIRMA"),
     InstructionSpec("JMP", _F, 10, inputs=("ACT",), params=(_num("coils", 0, 9999),),
-                    title="Jump", title_tr="ATLA"),
-    InstructionSpec("JMPE", _F, 30, title="Jump end", title_tr="ATLAMA İPTAL"),
+                    flow=Flow.JUMP, title="Jump", title_tr="ATLA"),
+    InstructionSpec("JMPE", _F, 30, flow=Flow.JUMP_END, title="Jump end", title_tr="ATLAMA İPTAL"),
     InstructionSpec("COM", _F, 9, inputs=("ACT",), params=(_num("coils", 0, 9999),),
-                    title="Common line control", title_tr="ORTAK HAT KONTROLU"),
-    InstructionSpec("COME", _F, 29, title="Common line control end",
+                    flow=Flow.COMMON, title="Common line control", title_tr="ORTAK HAT KONTROLU"),
+    InstructionSpec("COME", _F, 29, flow=Flow.COMMON_END, title="Common line control end",
                     title_tr="ORTAK HAT KONTROLU İPTAL"),
     InstructionSpec("PARI", _F, 11, inputs=("O.E", "RST", "ACT"),
                     params=(_addr("data", 1),), w1=True,
@@ -211,7 +292,7 @@ _FUNCTIONS: tuple[InstructionSpec, ...] = (
     InstructionSpec("COMPB", _F, 32, inputs=("ACT",),
                     params=(Param("format", ParamKind.NUMBER, 1, 1004, choices=ARITH_FORMATS),
                             _value("input", "format"), _addr("compare", "format")),
-                    title="Binary compare", title_tr="BINARY MUKAYESE"),
+                    address_format=True, title="Binary compare", title_tr="BINARY MUKAYESE"),
     InstructionSpec("COIN", _F, 16, inputs=("BYT", "ACT"),
                     params=(_num("input_format", 0, 1), _value("input", 2),
                             _addr("compare", 2)), w1=True,
@@ -229,7 +310,7 @@ _FUNCTIONS: tuple[InstructionSpec, ...] = (
                             _addr("index", 2)), w1=True,
                     title="Indexed transfer", title_tr="INDEX DÜZELTME VERİ TRANSFERİ"),
     InstructionSpec("XMOVB", _F, 35, inputs=("RW", "RST", "ACT"),
-                    params=(_fmt(), _num("size", 1, 9999), _addr("table", "format"),
+                    params=(_fmt(), _value("size", 2), _addr("table", "format"),
                             _addr("data", "format"), _addr("index", 4)), w1=True,
                     title="Binary indexed transfer",
                     title_tr="BINARY INDEX DÜZELTME VERİ TRANSFERİ"),
@@ -248,7 +329,7 @@ def _arith_b(name: str, sub: int, title: str, title_tr: str) -> InstructionSpec:
         name, _F, sub, inputs=("RST", "ACT"),
         params=(Param("format", ParamKind.NUMBER, 1, 1004, choices=ARITH_FORMATS),
                 _addr("a", "format"), _value("b", "format"), _addr("result", "format")),
-        w1=True, title=title, title_tr=title_tr)
+        w1=True, address_format=True, title=title, title_tr=title_tr)
 
 
 _ARITHMETIC: tuple[InstructionSpec, ...] = (
@@ -264,25 +345,128 @@ _ARITHMETIC: tuple[InstructionSpec, ...] = (
                     params=(_num("constant", 0, 9999), _addr("output", 2)),
                     title="Constant (BCD)", title_tr="SABİT"),
     InstructionSpec("NUMEB", _F, 40, inputs=("ACT",),
-                    params=(_fmt(), _num("constant", -MAX32, MAX32), _addr("output", "format")),
+                    params=(_fmt(), _num("constant", -INT32, UINT32), _addr("output", "format")),
                     title="Binary constant", title_tr="BINARY SABİT"),
 )
 
 _ENDS: tuple[InstructionSpec, ...] = (
-    InstructionSpec("END1", Kind.END, 1, title="End of level 1", title_tr="1. SEVİYE SONU"),
-    InstructionSpec("END2", Kind.END, 2, title="End of level 2", title_tr="2. SEVİYE SONU"),
-    InstructionSpec("END", Kind.END, 64, title="End of program", title_tr="PROGRAM SONU"),
+    InstructionSpec("END1", Kind.END, 1, flow=Flow.LEVEL_END, level=1,
+                    title="End of level 1", title_tr="1. SEVİYE SONU"),
+    InstructionSpec("END2", Kind.END, 2, flow=Flow.LEVEL_END, level=2,
+                    title="End of level 2", title_tr="2. SEVİYE SONU"),
+    InstructionSpec("END3", Kind.END, 48, flow=Flow.LEVEL_END, level=3, source="pmc",
+                    title="End of level 3", title_tr="3. SEVİYE SONU"),
+    InstructionSpec("END", Kind.END, 64, flow=Flow.PROGRAM_END,
+                    title="End of program", title_tr="PROGRAM SONU"),
 )
 
+
+def _pmc(name: str, sub: int, *, inputs: tuple[str, ...] = ("ACT",),
+         params: tuple[Param, ...] = (), w1: bool = False, flow: Flow = Flow.NONE,
+         title: str, title_tr: str, **extra: object) -> InstructionSpec:
+    """A row of an instruction of the FANUC 30i PMC that the seed manual does not have."""
+    return InstructionSpec(name, _F, sub, inputs=inputs, params=params, w1=w1, flow=flow,
+                           title=title, title_tr=title_tr, source="pmc",
+                           **extra)  # type: ignore[arg-type]
+
+
+def _logic(name: str, sub: int, title: str, title_tr: str, mnemonic: str = "") -> InstructionSpec:
+    return _pmc(name, sub, params=(
+        Param("format", ParamKind.NUMBER, 1, 1004, choices=ARITH_FORMATS),
+        _addr("input", "format"), Param("operand", ParamKind.VALUE, -INT32, UINT32,
+                                        width="format"),
+        _addr("output", "format")), address_format=True, mnemonic=mnemonic,
+        title=title, title_tr=title_tr)
+
+
+def _range_cmp(name: str, sub: int, width: int, title: str, title_tr: str) -> InstructionSpec:
+    return _pmc(name, sub, params=(
+        Param("limit1", ParamKind.VALUE, -INT32, UINT32, width=width),
+        Param("limit2", ParamKind.VALUE, -INT32, UINT32, width=width),
+        Param("input", ParamKind.VALUE, -INT32, UINT32, width=width)), w1=True,
+        title=title, title_tr=title_tr)
+
+
+_PMC: tuple[InstructionSpec, ...] = (
+    _pmc("DIFU", 57, params=(_num("edge", 1, 2000),), w1=True,
+         title="Rising edge detection", title_tr="YÜKSELEN KENAR"),
+    _pmc("DIFD", 58, params=(_num("edge", 1, 2000),), w1=True,
+         title="Falling edge detection", title_tr="DÜŞEN KENAR"),
+    _pmc("MOVB", 43, params=(_addr("input", 1), _addr("output", 1)),
+         title="Transfer of 1 byte", title_tr="1 BAYT TRANSFERİ"),
+    _pmc("MOVW", 44, params=(_addr("input", 2), _addr("output", 2)),
+         title="Transfer of 2 bytes", title_tr="2 BAYT TRANSFERİ"),
+    _pmc("MOVN", 45, params=(_num("bytes", 1, 9999), _addr("input", "bytes"),
+                             _addr("output", "bytes")),
+         title="Transfer of n bytes", title_tr="N BAYT TRANSFERİ"),
+    _pmc("MOVD", 47, params=(_addr("input", 4), _addr("output", 4)),
+         title="Transfer of 4 bytes", title_tr="4 BAYT TRANSFERİ"),
+    _logic("LOGAND", 60, "Logical AND", "MANTIKSAL VE", mnemonic="AND"),
+    _logic("LOGOR", 61, "Logical OR", "MANTIKSAL VEYA", mnemonic="OR"),
+    _logic("EOR", 59, "Exclusive OR", "ÖZEL VEYA"),
+    _pmc("NOT", 62, params=(_fmt(), _addr("input", "format"), _addr("output", "format")),
+         title="Logical NOT", title_tr="MANTIKSAL DEĞİL"),
+    _pmc("TMRBF", 77, params=(_num("timer", 1, 500), _num("preset", 0, MAX32)), w1=True,
+         title="Fixed off-delay timer", title_tr="STATİK KAPANMA GECİKMELİ ZAMANLAYICI"),
+    _pmc("CTRB", 56, inputs=("CN0", "UPDOWN", "RST", "ACT"),
+         params=(_num("counter", 1, 100), _num("preset", 0, 32767)), w1=True,
+         title="Fixed counter", title_tr="STATİK SAYICI"),
+    _pmc("CALL", 65, params=(Param("program", ParamKind.PROGRAM, 1, 5000),), flow=Flow.CALL,
+         title="Conditional subprogram call", title_tr="ŞARTLI ALT PROGRAM ÇAĞRISI"),
+    _pmc("CALLU", 66, inputs=(), params=(Param("program", ParamKind.PROGRAM, 1, 5000),),
+         flow=Flow.CALL_ALWAYS,
+         title="Unconditional subprogram call", title_tr="ŞARTSIZ ALT PROGRAM ÇAĞRISI"),
+    _pmc("SP", 71, inputs=(), params=(Param("program", ParamKind.PROGRAM, 1, 5000),),
+         flow=Flow.SUBPROGRAM, title="Subprogram", title_tr="ALT PROGRAM"),
+    _pmc("SPE", 72, inputs=(), flow=Flow.SUBPROGRAM_END,
+         title="End of subprogram", title_tr="ALT PROGRAM SONU"),
+    _pmc("LBL", 69, inputs=(), params=(Param("label", ParamKind.LABEL, 1, 9999),),
+         flow=Flow.LABEL, title="Label", title_tr="ETİKET"),
+    _pmc("JMPB", 68, params=(Param("label", ParamKind.LABEL, 1, 9999),),
+         flow=Flow.LABEL_JUMP, title="Label jump", title_tr="ETİKETE ATLA"),
+    _pmc("JMPC", 73, params=(Param("label", ParamKind.LABEL, 1, 9999),),
+         flow=Flow.LABEL_JUMP_MAIN, title="Label jump to the main program",
+         title_tr="ANA PROGRAMDAKİ ETİKETE ATLA"),
+    _range_cmp("RNGB", 218, 1, "Range comparison, 1 byte", "ARALIK KARŞILAŞTIRMA (1 BAYT)"),
+    _range_cmp("RNGW", 219, 2, "Range comparison, 2 bytes", "ARALIK KARŞILAŞTIRMA (2 BAYT)"),
+    _range_cmp("RNGD", 220, 4, "Range comparison, 4 bytes", "ARALIK KARŞILAŞTIRMA (4 BAYT)"),
+    _pmc("AXCTL", 53, inputs=("RST", "ACT"),
+         params=(Param("group", ParamKind.NUMBER, 1, 1004), _addr("data", 8)), w1=True,
+         cnc=True, title="PMC axis control", title_tr="PMC EKSEN KONTROLÜ"),
+    _pmc("WINDR", 51, params=(_addr("control", 10),), w1=True, cnc=True,
+         title="Read CNC window data", title_tr="CNC PENCERE VERİSİ OKU"),
+    _pmc("WINDW", 52, params=(_addr("control", 10),), w1=True, cnc=True,
+         title="Write CNC window data", title_tr="CNC PENCERE VERİSİ YAZ"),
+    _pmc("EXIN", 42, params=(_addr("control", 4),), w1=True, cnc=True,
+         title="External data input", title_tr="HARİCİ VERİ GİRİŞİ"),
+    _pmc("DISPB", 41, params=(_num("messages", 0, 9999),), cnc=True,
+         title="Extended message display", title_tr="GENİŞLETİLMİŞ MESAJ GÖSTERİMİ"),
+)
+
+FUNCTION_OPCODE = 0x80  # the binary's opcode of every functional instruction and END
+
+
+def _with_opcode(spec: InstructionSpec) -> InstructionSpec:
+    return spec if spec.kind is Kind.BASIC else replace(spec, opcode=FUNCTION_OPCODE)
+
+
 BASIC: tuple[InstructionSpec, ...] = _BASIC
-FUNCTIONS: tuple[InstructionSpec, ...] = _FUNCTIONS + _ARITHMETIC
-ENDS: tuple[InstructionSpec, ...] = _ENDS
+SEED_FUNCTIONS: tuple[InstructionSpec, ...] = tuple(
+    _with_opcode(s) for s in _FUNCTIONS + _ARITHMETIC)
+PMC_FUNCTIONS: tuple[InstructionSpec, ...] = tuple(_with_opcode(s) for s in _PMC)
+FUNCTIONS: tuple[InstructionSpec, ...] = SEED_FUNCTIONS + PMC_FUNCTIONS
+ENDS: tuple[InstructionSpec, ...] = tuple(_with_opcode(s) for s in _ENDS)
 ALL: tuple[InstructionSpec, ...] = BASIC + FUNCTIONS + ENDS
 
 BY_NAME: dict[str, InstructionSpec] = {spec.name: spec for spec in ALL}
 BY_SUB: dict[int, InstructionSpec] = {
     spec.sub: spec for spec in FUNCTIONS + ENDS if spec.sub is not None
 }
+BY_OPCODE: dict[int, InstructionSpec] = {spec.opcode: spec for spec in BASIC}
+# Functional instructions whose text name clashes with a basic one (`AND`, `OR`): in the
+# one-line form the basic one has one operand, the functional one its four parameters.
+BY_MNEMONIC: dict[str, InstructionSpec] = {spec.mnemonic: spec for spec in FUNCTIONS
+                                           if spec.mnemonic}
 
 # The seed manual's order of the functional instructions (its table in section 5).
 MANUAL_ORDER: tuple[str, ...] = (
@@ -293,9 +477,39 @@ MANUAL_ORDER: tuple[str, ...] = (
 )
 
 
+# The FANUC 30i PMC instructions beyond the seed manual, in the palette's order.
+PMC_ORDER: tuple[str, ...] = (
+    "DIFU", "DIFD", "MOVB", "MOVW", "MOVN", "MOVD", "LOGAND", "LOGOR", "EOR", "NOT",
+    "TMRBF", "CTRB", "RNGB", "RNGW", "RNGD", "CALL", "CALLU", "SP", "SPE", "JMPB", "JMPC",
+    "LBL", "AXCTL", "WINDR", "WINDW", "EXIN", "DISPB",
+)
+
+
 def lookup(name: str) -> InstructionSpec | None:
     """The row for a mnemonic (case-insensitive), or None."""
     return BY_NAME.get(name.upper())
+
+
+@cache
+def unknown_sub(number: int, count: int) -> InstructionSpec:
+    """A row for a `SUB n` the table does not know: ACT, `count` parameters kept as written.
+
+    It is drawn as a box, compiled, and simulated as a CNC-side instruction with no CNC
+    (W1 = ACT); docs/instructions.md says so.
+    """
+    params = tuple(Param(f"p{k}", ParamKind.RAW, -INT32, UINT32) for k in range(1, count + 1))
+    return InstructionSpec(f"SUB.{number}", Kind.FUNCTION, number, inputs=("ACT",),
+                           params=params, w1=True, cnc=True, known=False, source="pmc",
+                           opcode=FUNCTION_OPCODE, title=f"SUB {number}",
+                           title_tr=f"SUB {number}")
+
+
+def spec_for(name: str, param_count: int = 0) -> InstructionSpec | None:
+    """The row for an instruction's name as stored in a Program (`SUB.219` for an unknown SUB)."""
+    spec = lookup(name)
+    if spec is None and name.upper().startswith("SUB.") and name[4:].isdigit():
+        return unknown_sub(int(name[4:]), param_count)
+    return spec
 
 
 def width_of(spec: InstructionSpec, param: Param, values: dict[str, object]) -> int:
@@ -309,12 +523,15 @@ def width_of(spec: InstructionSpec, param: Param, values: dict[str, object]) -> 
 
 
 def value_is_address(spec: InstructionSpec, values: dict[str, object]) -> bool | None:
-    """For instructions with a VALUE parameter: does the format say it is an address?"""
+    """For instructions with a VALUE parameter: does the format say it is an address?
+
+    None when nothing selects it: a constant or an address may be written (RNGW, XMOVB size).
+    """
     if "input_format" in values:
         return values["input_format"] == 1
     if "operand_format" in values:
         return values["operand_format"] == 1
     fmt = values.get("format")
-    if isinstance(fmt, int) and spec.name in ("COMPB", "ADDB", "SUBB", "MULB", "DIVB"):
+    if isinstance(fmt, int) and spec.address_format:
         return fmt >= 1000
     return None

@@ -27,6 +27,7 @@ from ladderworks.core.il.program import (
 from ladderworks.core.il.sections import read_views
 from ladderworks.core.il.textform import TextForm, decode_text, dominant_newline, split_with_ends
 from ladderworks.core.instructions import (
+    BY_MNEMONIC,
     BY_SUB,
     InstructionSpec,
     Kind,
@@ -251,6 +252,7 @@ class _FileParser:
         self.diagnostics: list[Diagnostic] = []
         self.firsts: dict[int, int] = {}
         self.labels = False
+        self.dialect = "seed"  # decided before the ladder is read: parameter ranges depend on it
 
     def run(self) -> ParseResult:
         has_any_section = any(_HEADER.match(line) for line in self.lines if "%@" in line)
@@ -335,7 +337,7 @@ class _FileParser:
         self.diagnostics = [Diagnostic("not-a-program", {}, 1, 1), *errors[:2]]
 
     def _result(self) -> ParseResult:
-        if self.program.framed or self.labels:
+        if self.program.framed or self.labels or self.dialect == FANUC:
             self.program.dialect = FANUC
         self.diagnostics.sort(key=lambda d: (d.line, d.column))
         return ParseResult(self.program, self.diagnostics)
@@ -345,11 +347,23 @@ class _FileParser:
     def _parse_ladder(self, start: int, stop: int) -> None:
         scanned: list[_Line] = []
         lines = self.lines
+        if self.program.framed or any(
+                line.endswith(":") and _LABEL.match(line) for line in lines[start:stop]):
+            self.dialect = FANUC
+        seen: dict[str, _Line] = {}  # many lines repeat: scan each text once, share its words
         for index in range(start, stop):
-            item = _scan_line(lines[index], index + 1)
+            text = lines[index]
+            known = seen.get(text)
+            if known is not None:
+                if known.kind != "blank":
+                    scanned.append(_Line(index + 1, known.kind, known.words, known.comment))
+                continue
+            item = _scan_line(text, index + 1)
             if isinstance(item, Diagnostic):
                 self.diagnostics.append(item)
-            elif item.kind != "blank":
+                continue
+            seen[text] = item
+            if item.kind != "blank":
                 scanned.append(item)
         builder = _NetworkBuilder(start)
         k = 0
@@ -377,6 +391,8 @@ class _FileParser:
                     self._error("unknown-instruction", line.number, head.column,
                                 name=head.text[:20])
                 continue
+            if spec.kind is Kind.BASIC and len(operands) > 1 and head.text.upper() in BY_MNEMONIC:
+                spec = BY_MNEMONIC[head.text.upper()]  # one-line `AND 1 R10 R11 R12`: LOGAND
             end_line = line.number
             if spec.name == "SUB" and len(operands) == 1 and operands[0].is_int:
                 number = _small_int(operands[0].text, 6)
@@ -563,9 +579,10 @@ class _FileParser:
                         param=param.name, text=token.text[:20], letter=letter)
             return None
         number = int(match.group(2))
-        if param.hi and not param.lo <= number <= param.hi:
+        hi = param.highest(self.dialect)
+        if hi and not param.lo <= number <= hi:
             self._error("param-range", line, token.column, name=spec.name, index=index,
-                        param=param.name, lo=param.lo, hi=param.hi, value=token.text)
+                        param=param.name, lo=param.lo, hi=hi, value=token.text)
             return None
         return ProgramRef(number) if letter == "P" else LabelRef(number)
 
@@ -589,19 +606,19 @@ class _FileParser:
                         param=param.name, text=token.text[:20])
             return None
         value = _small_int(token.text, MAX_NUMBER_DIGITS)
+        hi = param.highest(self.dialect)
         if value is None:
             self._error("param-range", line, token.column, name=spec.name, index=index,
-                        param=param.name, lo=param.lo, hi=param.hi,
-                        value=token.text[:20] + "…")
+                        param=param.name, lo=param.lo, hi=hi, value=token.text[:20] + "…")
             return None
         if param.choices and value not in param.choices:
             self._error("param-choice", line, token.column, name=spec.name, index=index,
                         param=param.name, value=value,
                         choices=", ".join(str(c) for c in param.choices))
             return None
-        if not param.lo <= value <= param.hi:
+        if not param.lo <= value <= hi:
             self._error("param-range", line, token.column, name=spec.name, index=index,
-                        param=param.name, lo=param.lo, hi=param.hi, value=value)
+                        param=param.name, lo=param.lo, hi=hi, value=value)
             return None
         return value
 

@@ -27,7 +27,7 @@ def format_params(spec: InstructionSpec, params: tuple[ParamValue, ...]) -> list
 def print_instruction(instruction: Instruction) -> str:
     """One instruction in the one-line form, with its trailing comment."""
     spec = instruction.spec
-    parts = [spec.name]
+    parts = [spec.text_name if spec.known else instruction.name]  # `SUB.219` for unknown SUB
     if instruction.operand is not None:
         parts.append(str(instruction.operand))
     parts.extend(format_params(spec, instruction.params))
@@ -35,6 +35,18 @@ def print_instruction(instruction: Instruction) -> str:
     if instruction.comment:
         text += "  // " + instruction.comment
     return text
+
+
+def instruction_lines(instruction: Instruction) -> list[str]:
+    """An instruction in the canonical text: one line, or `SUB n` + its parameter lines for a
+    SUB the table does not know (its one-line form would read as subtraction)."""
+    spec = instruction.spec
+    if spec.known or spec.sub is None:
+        return [print_instruction(instruction)]
+    lines = [f"SUB {spec.sub}", *format_params(spec, instruction.params)]
+    if instruction.comment:
+        lines[0] += "  // " + instruction.comment
+    return lines
 
 
 def fanuc_instruction_lines(instruction: Instruction) -> list[str]:
@@ -77,7 +89,7 @@ def print_program(program: Program) -> str:
             out.append(network.label + ":")
         for instruction in network.instructions:
             out.extend(_comment_lines(instruction.lead))
-            out.append(print_instruction(instruction))
+            out.extend(instruction_lines(instruction))
     if program.trailer:
         if program.networks:
             out.append("")
@@ -106,7 +118,7 @@ def _fresh_network(network: Network, fanuc: bool, first: bool) -> list[str]:
         out.append(network.label + ":")
     for instruction in network.instructions:
         out.extend(_comment_lines(instruction.lead))
-        out.append(print_instruction(instruction))
+        out.extend(instruction_lines(instruction))
     return out
 
 

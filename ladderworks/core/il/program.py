@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 from ladderworks.core.address import Address
 from ladderworks.core.il.textform import TextForm
-from ladderworks.core.instructions import InstructionSpec, Kind, lookup
+from ladderworks.core.instructions import InstructionSpec, Kind, spec_for
 
 if TYPE_CHECKING:
     from ladderworks.core.symbols import SymbolTable
@@ -54,7 +54,7 @@ class Instruction:
     @property
     def spec(self) -> InstructionSpec:
         """The instruction table row."""
-        spec = lookup(self.name)
+        spec = spec_for(self.name, len(self.params))
         assert spec is not None, self.name
         return spec
 

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from ladderworks.core.address import Address, Area
 from ladderworks.core.il import parse, parse_file, print_program
 from ladderworks.core.il.program import Instruction, Network, Program
-from ladderworks.core.instructions import ENDS, FUNCTIONS
+from ladderworks.core.instructions import ENDS, SEED_FUNCTIONS
 from ladderworks.core.ladder.logic import Leaf, Logic, Parallel, Rung, Series, code_rung
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox
 
@@ -82,7 +82,7 @@ def function_examples() -> dict[str, Instruction]:
 coils = st.builds(Coil, outputs, st.booleans(), comments, leads)
 _LOGIC = {True: logic_blocks(contacts(True)), False: logic_blocks(contacts(False))}
 _INPUTS = {True: logic_blocks(contacts(True), 4), False: logic_blocks(contacts(False), 4)}
-_NAMES = sorted(s.name for s in FUNCTIONS + ENDS)
+_NAMES = sorted(s.name for s in SEED_FUNCTIONS + ENDS)
 
 
 @st.composite
