@@ -92,3 +92,34 @@ def add_entry(table: SymbolTable, address_text: str, symbol: str,
         return False
     table.add(address, entry)
     return True
+
+
+def resolve(text: str, symbols: SymbolTable | None = None, *, width: int = 1) -> Address:
+    """An address typed as itself (`X21.7`, `D10`) or as a program symbol (`ESKIP`).
+
+    The address spelling wins; a text that is not a valid address is looked up in `symbols`.
+    Raises the address's AddressError when neither fits."""
+    try:
+        return parse_address(text, width=width)
+    except AddressError:
+        found = symbols.address_of(text.strip()) if symbols is not None else None
+        if found is None:
+            raise
+        return found
+
+
+def describe(address: Address, symbols: SymbolTable | None = None) -> str:
+    """The name to show for an address: the program's symbol, else the manual's signal name."""
+    if symbols is not None:
+        found = symbols.symbol(address)
+        if found:
+            return found
+    from ladderworks.core.signals import signal_at
+
+    signal = signal_at(address)
+    return signal.name if signal is not None else ""
+
+
+def looks_like_symbol(text: str) -> bool:
+    """True for text that may be a symbol: no spaces, no `=`, `,` or `@`, not empty."""
+    return bool(text) and not any(ch.isspace() or ch in "=,@" for ch in text)

@@ -34,6 +34,7 @@ from ladderworks.core.instructions import (
     Param,
     ParamKind,
     lookup,
+    spec_for,
     value_is_address,
     width_of,
 )
@@ -384,6 +385,12 @@ class _FileParser:
             head = line.words[0]
             operands = line.words[1:]
             spec = lookup(head.text)
+            if spec is None and head.text[:4].upper() == "SUB.":
+                spec = spec_for(head.text, len(operands))  # one-line unknown `SUB.219 p1 p2`
+                if spec is not None:
+                    self.diagnostics.append(Diagnostic("unknown-sub", {"number": spec.sub},
+                                                       line.number, head.column,
+                                                       Severity.WARNING))
             if spec is None:
                 if len(operands) == 0 and _ADDRESS_SHAPE.match(head.text):
                     self._error("stray-parameter", line.number, head.column, text=head.text[:20])
