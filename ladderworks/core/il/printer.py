@@ -170,11 +170,13 @@ def print_faithful(program: Program) -> str:
             verbatim(source.spans[i1][0], source.spans[i2 - 1][1])
             last_fresh = False
             continue
+        unused = list(range(i1, i2))
         for j in range(j1, j2):
             network = program.networks[j]
-            i = i1 + (j - j1)
-            old = source.keys[i] if i < i2 else None
-            if old is not None and old[:2] == new_keys[j][:2]:
+            # a changed network keeps the label and comment lines of the old one it replaces
+            i = next((k for k in unused if source.keys[k][:2] == new_keys[j][:2]), None)
+            if i is not None:
+                unused.remove(i)
                 verbatim(source.spans[i][0], source.heads[i])
                 body = Network(network.instructions)
                 fresh(_fresh_network(body, fanuc, True))
