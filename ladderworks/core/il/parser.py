@@ -403,6 +403,7 @@ class _FileParser:
             end_line = line.number
             if spec.name == "SUB" and len(operands) == 1 and operands[0].is_int:
                 number = _small_int(operands[0].text, 6)
+                number = number if number is not None and number >= 0 else None
                 sub_spec = BY_SUB.get(number) if number is not None else None
                 if sub_spec is None:
                     k = self._unknown_sub(line, number, scanned, k, builder)

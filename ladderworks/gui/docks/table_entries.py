@@ -24,7 +24,7 @@ from ladderworks.core.plc.functions.timers import (
     timer_tick,
 )
 
-TIMER_COUNT = AREA_SIZES[Area.T] // TIMER_BYTES  # 100
+TIMER_COUNT = 400 // TIMER_BYTES  # seed timers 1..100 in T0..T399 (the 30i T area is larger)
 COUNTER_COUNT = 20
 MAX_TIMER_MS = 99_999_999  # the manual's range of a timer preset
 DATA_WIDTHS = (1, 2, 4)
