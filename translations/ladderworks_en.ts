@@ -175,6 +175,26 @@
 <context>
     <name>Diagnostic</name>
     <message>
+        <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
+        <translation>{count} byte(s) here are not valid {encoding}; they are kept as they are</translation>
+    </message>
+    <message>
+        <source>this is not a ladder program (no %@ section and no instruction)</source>
+        <translation>this is not a ladder program (no %@ section and no instruction)</translation>
+    </message>
+    <message>
+        <source>line not understood in section {section}: &apos;{text}&apos;</source>
+        <translation>line not understood in section {section}: &apos;{text}&apos;</translation>
+    </message>
+    <message>
+        <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
+        <translation>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos;: the number is too long</source>
+        <translation>&apos;{text}&apos;: the number is too long</translation>
+    </message>
+    <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="18"/>
         <source>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</source>
         <translation>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</translation>
@@ -186,8 +206,8 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="22"/>
-        <source>&apos;{text}&apos;: byte number out of range for area {area} (0 to {last})</source>
-        <translation>&apos;{text}&apos;: byte number out of range for area {area} (0 to {last})</translation>
+        <source>&apos;{text}&apos;: byte number out of range for area {area} ({ranges})</source>
+        <translation>&apos;{text}&apos;: byte number out of range for area {area} ({ranges})</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="24"/>
@@ -231,8 +251,8 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="34"/>
-        <source>unknown section %@{number} (FANUC sections are %@0 to %@5)</source>
-        <translation>unknown section %@{number} (FANUC sections are %@0 to %@5)</translation>
+        <source>unknown section {header}: kept as it is</source>
+        <translation>unknown section {header}: kept as it is</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="36"/>

@@ -16,6 +16,7 @@ from ladderworks.core.il import parse_file, print_program
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
 from ladderworks.core.plc.parameters import ParameterFile, parameters_beside, read_parameter_file
 from ladderworks.core.plc.session import PlcRun
+from ladderworks.core.symbols import SymbolTable, looks_like_symbol, resolve
 
 _SET_RE = re.compile(r"^([^=@]+)=(-?\w+)(?:@(\d+))?$")
 _NUMBER_PAIR_RE = re.compile(r"^(\d+)=(\d+)$")
@@ -120,13 +121,29 @@ class _Target:
             engine.memory.write(self.address, value, self.width)
 
 
-def _target(text: str) -> _Target:
+def _symbols(name: str) -> SymbolTable | None:
+    """The symbol table of program FILE (None for a binary or an unreadable file)."""
+    if _SYMBOLS.get(name) is None and not Path(name).read_bytes().startswith(MAGIC):
+        _SYMBOLS[name] = parse_file(name).program.symbols
+    return _SYMBOLS.get(name)
+
+
+_SYMBOLS: dict[str, SymbolTable | None] = {}
+
+
+def _target(text: str, file: str | None = None) -> _Target:
+    """ADDR[:WIDTH], ADDR an address or a symbol of program `file` (`ESKIP`, `*ESP:1`)."""
     spelled, _, width_text = text.strip().partition(":")
     width = int(width_text) if width_text in ("1", "2", "4") else 0
     if width_text and not width:
         raise ValueError(f"'{text}': the width after ':' must be 1, 2 or 4")
     try:
-        address = parse_address(spelled, width=width or 1)
+        try:
+            address = parse_address(spelled, width=width or 1)
+        except AddressError:
+            if file is None or not looks_like_symbol(spelled):
+                raise
+            address = resolve(spelled, _symbols(file), width=width or 1)
     except AddressError as error:
         raise ValueError(f"'{text}': {error.code}") from None
     if address.bit is not None and width:
@@ -141,12 +158,13 @@ def _run(args: argparse.Namespace) -> int:
             match = _SET_RE.match(item.strip())
             if not match:
                 raise ValueError(f"--set '{item}': expected ADDR=VALUE or ADDR=VALUE@MS")
-            sets.append((int(match.group(3) or 0), _target(match.group(1)),
+            sets.append((int(match.group(3) or 0), _target(match.group(1), args.file),
                          _number(match.group(2), item)))
         timers = [_pair(item, "--timer", 1, 100) for item in args.timer]
         counters = [_pair(item, "--counter", 1, 20) for item in args.counter]
-        prints = [_target(text) for text in args.print_]
-        traced = [_target(text) for text in args.trace.split(",")] if args.trace else []
+        prints = [_target(text, args.file) for text in args.print_]
+        traced = ([_target(text, args.file) for text in args.trace.split(",")]
+                  if args.trace else [])
         if args.period <= 0 or args.scan_period <= 0:
             raise ValueError("periods must be at least 1 ms")
     except ValueError as error:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from enum import StrEnum
+from functools import lru_cache
 
 
 class AddressError(ValueError):
@@ -29,21 +30,33 @@ class Area(StrEnum):
     T = "T"
     C = "C"
     K = "K"
+    E = "E"
 
 
-# Number of bytes in each area; byte numbers run 0 .. size-1.
-AREA_SIZES: dict[Area, int] = {
-    Area.X: 128,  # machine -> PLC inputs X0..X127
-    Area.Y: 128,  # PLC -> machine outputs Y0..Y127
-    Area.F: 768,  # CNC -> PLC status F0..F767
-    Area.G: 768,  # PLC -> CNC commands G0..G767
-    Area.R: 9200,  # internal relays R0..R8999, system R9000..R9199
-    Area.A: 100,  # alarm message bits A0..A99 (800 alarms)
-    Area.D: 10000,  # data table D0..D9999
-    Area.T: 400,  # timer presets: 4 bytes (ms, binary) per timer 1..100
-    Area.C: 80,  # counters: 4 bytes per counter 1..20 (preset, current value)
-    Area.K: 100,  # keep relays K0..K99 (retained)
+# The byte numbers that exist in each area: the first PMC of a 30i/31i-A, PMC memory-B
+# (docs/address-map.md). The seed's own map (X/Y 0-127, F/G 0-767, R 0-8999 and system
+# relays from R9000, A 0-99, T 0-399, C 0-79, K 0-99, D 0-9999) lies inside it.
+_IO = ((0, 127), (200, 327), (400, 527), (600, 727), (1000, 1127))
+_PATHS = tuple((1000 * n, 1000 * n + 767) for n in range(10))  # F/G of paths 1 .. 10
+AREA_RANGES: dict[Area, tuple[tuple[int, int], ...]] = {
+    Area.X: _IO,  # machine -> PLC inputs
+    Area.Y: _IO,  # PLC -> machine outputs
+    Area.F: _PATHS,  # CNC -> PLC status, path n at 1000 x (n - 1)
+    Area.G: _PATHS,  # PLC -> CNC commands, path n at 1000 x (n - 1)
+    Area.R: ((0, 9499),),  # internal relays R0..R8999, system relays R9000..R9499
+    Area.A: ((0, 249), (9000, 9249)),  # message requests, message status
+    Area.D: ((0, 9999),),  # data table
+    Area.T: ((0, 499), (9000, 9499)),  # timer presets, timer precision codes
+    Area.C: ((0, 399), (5000, 5199)),  # counters (CTR), fixed counters (CTRB)
+    Area.K: ((0, 99), (900, 999)),  # keep relays: user, system
+    Area.E: ((0, 9999),),  # extra relays
 }
+
+# Number of bytes to allocate for each area: its highest byte number + 1.
+AREA_SIZES: dict[Area, int] = {area: ranges[-1][1] + 1 for area, ranges in AREA_RANGES.items()}
+
+# The longest byte number the parser converts; longer ones are out of range without int().
+MAX_BYTE_DIGITS = 6
 
 AREA_MEANING: dict[Area, str] = {
     Area.X: "machine to PLC input",
@@ -56,6 +69,7 @@ AREA_MEANING: dict[Area, str] = {
     Area.T: "timer preset",
     Area.C: "counter",
     Area.K: "keep relay",
+    Area.E: "extra relay",
 }
 
 # Areas the program may not write: inputs from the machine and the CNC.
@@ -112,13 +126,29 @@ def format_address(address: Address) -> str:
     return text
 
 
+def ranges_text(area: Area) -> str:
+    """The area's byte ranges as text: `0-127, 200-327, ...`."""
+    return ", ".join(f"{lo}-{hi}" for lo, hi in AREA_RANGES[area])
+
+
+def byte_in_range(area: Area, byte: int, width: int = 1) -> bool:
+    """True when bytes `byte` .. `byte + width - 1` all lie in one range of the area."""
+    last = byte + max(width, 1) - 1
+    return any(lo <= byte and last <= hi for lo, hi in AREA_RANGES[area])
+
+
 def parse_address(text: str, *, want_bit: bool | None = None, width: int = 1) -> Address:
     """Parse `X2.1`, `A021.0`, `R0100`; `want_bit` True/False demands a bit/byte address.
 
     `width` is the number of bytes the address must have room for (for 2- and 4-byte data).
     Raises AddressError with a code: bad-address, unknown-area, byte-range, bit-range,
-    bit-expected, byte-expected.
+    bit-expected, byte-expected. Results are cached (the parser calls this for every operand).
     """
+    return _parse_address(text, want_bit, width)
+
+
+@lru_cache(maxsize=65536)
+def _parse_address(text: str, want_bit: bool | None, width: int) -> Address:
     match = _ADDRESS_RE.match(text.strip())
     if not match:
         raise AddressError("bad-address", text=text)
@@ -127,17 +157,17 @@ def parse_address(text: str, *, want_bit: bool | None = None, width: int = 1) ->
         area = Area(letter.upper())
     except ValueError:
         raise AddressError("unknown-area", text=text, area=letter.upper()) from None
-    byte = int(byte_text)
-    size = AREA_SIZES[area]
-    if byte + max(width, 1) > size:
-        raise AddressError(
-            "byte-range", text=text, area=area.value, last=size - max(width, 1)
-        )
+    stripped = byte_text.lstrip("0") or "0"
+    byte = int(stripped) if len(stripped) <= MAX_BYTE_DIGITS else -1
+    if byte < 0 or not byte_in_range(area, byte, width):
+        last = AREA_SIZES[area] - max(width, 1)
+        raise AddressError("byte-range", text=text, area=area.value, last=last,
+                           ranges=ranges_text(area))
     bit: int | None = None
     if bit_text is not None:
-        bit = int(bit_text)
-        if bit > 7 or len(bit_text) > 1:
+        if len(bit_text) > 1 or int(bit_text) > 7:
             raise AddressError("bit-range", text=text)
+        bit = int(bit_text)
     if want_bit is True and bit is None:
         raise AddressError("bit-expected", text=text)
     if want_bit is False and bit is not None:

@@ -7,11 +7,13 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ladderworks.core.address import AREA_SIZES, Address, AddressError, Area, parse_address
+from ladderworks.core.address import Address, AddressError, Area, parse_address
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.il.parser import decode
+from ladderworks.core.il.program import Message
+from ladderworks.core.il.textform import split_lines
 
-A_BYTES = AREA_SIZES[Area.A]  # A0 .. A99
+A_BYTES = 100  # the alarm bits A0 .. A99 (the 30i's A area is larger; these are watched)
 ALARM_COUNT = A_BYTES * 8  # messages 000 .. 799
 
 _NUMBER_LINE = re.compile(r"^(\d+)(?:\s+(.*))?$")
@@ -24,6 +26,8 @@ def alarm_number(address: Address | str) -> int:
     where = address if isinstance(address, Address) else parse_address(address, want_bit=True)
     if where.area is not Area.A or where.bit is None:
         raise AddressError("bad-address", text=str(where))
+    if where.byte >= A_BYTES:
+        raise AddressError("byte-range", text=str(where), area="A", last=A_BYTES - 1)
     return where.byte * 8 + where.bit
 
 
@@ -44,6 +48,18 @@ class AlarmTable:
     """Alarm message texts by number (0 .. 799)."""
 
     messages: dict[int, str] = field(default_factory=dict)
+    numbers: dict[int, int] = field(default_factory=dict)  # %@4: alarm -> its message number
+
+    @classmethod
+    def from_messages(cls, messages: dict[Address, Message]) -> AlarmTable:
+        """The table of a program's `%@4` messages: text `NNNN text` (message number first)."""
+        table = cls()
+        for address, message in messages.items():
+            if address.area is Area.A and address.bit is not None and address.byte < A_BYTES:
+                number = address.byte * 8 + address.bit
+                table.messages[number] = f"{message.number} {message.text}".rstrip()
+                table.numbers[number] = message.number
+        return table
 
     def text_for(self, key: Address | str | int) -> str | None:
         """The message of a number, an A-area bit (`A21.0`, `A021.0`) or its text; None if none."""
@@ -78,7 +94,7 @@ def parse_alarm_text(text: str) -> tuple[AlarmTable, list[Diagnostic]]:
     table = AlarmTable()
     first_line: dict[int, int] = {}
     diagnostics: list[Diagnostic] = []
-    for line_no, raw in enumerate(text.splitlines(), start=1):
+    for line_no, raw in enumerate(split_lines(text), start=1):
         stripped = raw.strip()
         if not stripped or stripped.startswith(_COMMENT_PREFIXES):
             continue
@@ -105,7 +121,8 @@ def parse_alarm_text(text: str) -> tuple[AlarmTable, list[Diagnostic]]:
 def _parse_line(text: str, line: int, column: int) -> tuple[int, str] | Diagnostic:
     match = _NUMBER_LINE.match(text)
     if match:
-        number = int(match.group(1))
+        digits = match.group(1).lstrip("0")
+        number = int(digits or "0") if len(digits) <= 6 else ALARM_COUNT
         if number >= ALARM_COUNT:
             return Diagnostic("alarm-number", {"number": match.group(1)}, line=line,
                               column=column)
@@ -167,10 +184,11 @@ class ActiveAlarms:
         self._alarms: dict[int, ActiveAlarm] = {}
 
     def update(self, a_bytes: bytes | bytearray | memoryview, now_ms: int) -> list[ActiveAlarm]:
-        """Take the A area (100 bytes) at time `now_ms`; returns the alarms this update raised."""
-        current = bytes(a_bytes)
-        if len(current) != A_BYTES:
-            raise ValueError(f"the A area has {A_BYTES} bytes, got {len(current)}")
+        """Take the A area (its first 100 bytes are used) at time `now_ms`; returns the alarms
+        this update raised."""
+        if len(a_bytes) < A_BYTES:
+            raise ValueError(f"the A area has {A_BYTES} bytes, got {len(a_bytes)}")
+        current = bytes(a_bytes[:A_BYTES])
         if current == self._bits:
             return []
         raised: list[ActiveAlarm] = []

@@ -19,7 +19,7 @@ MESSAGES: dict[str, str] = {
     # addresses
     "bad-address": "'{text}' is not an address (expected e.g. X2.1 or R100)",
     "unknown-area": "'{text}': unknown area '{area}' (use X, Y, F, G, R, A, D, T, C or K)",
-    "byte-range": "'{text}': byte number out of range for area {area} (0 to {last})",
+    "byte-range": "'{text}': byte number out of range for area {area} ({ranges})",
     "bit-range": "'{text}': bit number must be 0 to 7",
     "bit-expected": "'{text}': a bit address is needed here (e.g. {text}.0)",
     "byte-expected": "'{text}': a byte address is needed here, without a bit",
@@ -29,7 +29,7 @@ MESSAGES: dict[str, str] = {
     "unexpected-text": "unexpected text '{text}'",
     "text-outside-section": "text outside any section: '{text}'",
     "duplicate-section": "section %@{number} appears twice",
-    "bad-section": "unknown section %@{number} (FANUC sections are %@0 to %@5)",
+    "bad-section": "unknown section {header}: kept as it is",
     "unknown-instruction": "unknown instruction '{name}'",
     "missing-operand": "{name} needs an address",
     "extra-operand": "{name} takes no operand, found '{text}'",
@@ -44,6 +44,12 @@ MESSAGES: dict[str, str] = {
     "stray-parameter": "a parameter line '{text}' without a SUB instruction before it",
     "bad-encoding": "the file is neither UTF-8 nor Turkish Windows (cp1254) text",
     "syntax": "syntax error at '{text}'",
+    "invalid-bytes": "{count} byte(s) here are not valid {encoding}; they are kept as they are",
+    "not-a-program": "this is not a ladder program (no %@ section and no instruction)",
+    "section-line": "line not understood in section {section}: '{text}'",
+    "param-kind-ref":
+        "{name}: parameter {index} ({param}) must be {letter} and a number, found '{text}'",
+    "number-too-long": "'{text}': the number is too long",
     # the ladder grid (network decomposition)
     "open-circuit": "open circuit: this element is not connected to the right side",
     "not-connected": "element not connected to the left rail",

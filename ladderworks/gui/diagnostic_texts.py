@@ -20,7 +20,7 @@ def diagnostic_templates() -> dict[str, str]:
         "unknown-area": translate(
             "Diagnostic", "'{text}': unknown area '{area}' (use X, Y, F, G, R, A, D, T, C or K)"),
         "byte-range": translate(
-            "Diagnostic", "'{text}': byte number out of range for area {area} (0 to {last})"),
+            "Diagnostic", "'{text}': byte number out of range for area {area} ({ranges})"),
         "bit-range": translate("Diagnostic", "'{text}': bit number must be 0 to 7"),
         "bit-expected": translate(
             "Diagnostic", "'{text}': a bit address is needed here (e.g. {text}.0)"),
@@ -32,7 +32,7 @@ def diagnostic_templates() -> dict[str, str]:
         "text-outside-section": translate("Diagnostic", "text outside any section: '{text}'"),
         "duplicate-section": translate("Diagnostic", 'section %@{number} appears twice'),
         "bad-section": translate(
-            "Diagnostic", 'unknown section %@{number} (FANUC sections are %@0 to %@5)'),
+            "Diagnostic", "unknown section {header}: kept as it is"),
         "unknown-instruction": translate("Diagnostic", "unknown instruction '{name}'"),
         "missing-operand": translate("Diagnostic", '{name} needs an address'),
         "extra-operand": translate("Diagnostic", "{name} takes no operand, found '{text}'"),
@@ -112,6 +112,21 @@ def diagnostic_templates() -> dict[str, str]:
         "alarm-duplicate": translate(
             "Diagnostic", 'message {number} appears again; the one on line {first} is used'),
         "alarm-empty": translate("Diagnostic", 'message {number} has no text'),
+        "invalid-bytes": translate(
+            "Diagnostic",
+            "{count} byte(s) here are not valid {encoding}; they are kept as they are"),
+        "not-a-program": translate(
+            "Diagnostic",
+            "this is not a ladder program (no %@ section and no instruction)"),
+        "section-line": translate(
+            "Diagnostic",
+            "line not understood in section {section}: '{text}'"),
+        "param-kind-ref": translate(
+            "Diagnostic",
+            "{name}: parameter {index} ({param}) must be {letter} and a number, found '{text}'"),
+        "number-too-long": translate(
+            "Diagnostic",
+            "'{text}': the number is too long"),
         "not-implemented": translate(
             "Diagnostic", '{name} is not implemented in the simulator yet'),
         "prm-line": translate(

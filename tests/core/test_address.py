@@ -41,7 +41,15 @@ def test_canonical_spelling_drops_leading_zeros() -> None:
         ("X2.8", "bit-range"),
         ("X2.10", "bit-range"),
         ("X128.0", "byte-range"),
-        ("A100.0", "byte-range"),
+        ("A250.0", "byte-range"),  # 30i: A0-A249 and A9000-A9249
+        ("A8999.0", "byte-range"),
+        ("X128.0", "byte-range"),
+        ("X999.0", "byte-range"),
+        ("G768.0", "byte-range"),
+        ("R9500", "byte-range"),
+        ("K100.0", "byte-range"),
+        ("X" + "9" * 5000, "byte-range"),  # no int() of thousands of digits
+        ("X1." + "9" * 5000, "bit-range"),
         ("2.1", "bad-address"),
         ("X", "bad-address"),
         ("X2.", "bad-address"),
@@ -76,5 +84,28 @@ def test_result_register() -> None:
     assert not parse_address("D9000").is_result_register()
 
 
-def test_alarm_area_holds_800_alarms() -> None:
-    assert AREA_SIZES[Area.A] * 8 == 800
+def test_alarm_message_file_covers_a0_to_a99() -> None:
+    # AlarmMsg.dat numbers 000-799 are A0.0-A99.7; the 30i A area itself is A0-A249, A9000-
+    from ladderworks.core.alarms import ALARM_COUNT
+
+    assert ALARM_COUNT == 800 and AREA_SIZES[Area.A] == 9250
+
+
+@pytest.mark.parametrize("text", [
+    "X0.0", "X127.7", "X200.0", "X327.7", "X1000.0", "X1127.7", "Y1032.1",
+    "F0", "F767", "G1008.4", "G2008.4", "F9767.7", "R0", "R7999.7", "R8999", "R9000.0",
+    "R9499.7", "E0", "E4204.1", "E9999.7", "A249.7", "A9000.0", "A9249.7", "T499",
+    "T9036.2", "T9499", "K99.7", "K900.1", "K999.7", "C399", "C5000", "C5199", "D9999",
+])
+def test_30i_memory_b_map(text: str) -> None:
+    assert str(parse_address(text)) == text
+
+
+def test_width_must_stay_in_one_range() -> None:
+    assert parse_address("X126", width=2).byte == 126
+    with pytest.raises(AddressError) as info:
+        parse_address("X127", width=2)  # X128 does not exist
+    assert info.value.code == "byte-range"
+    assert "1000-1127" in str(info.value.args_map["ranges"])
+    with pytest.raises(AddressError):
+        parse_address("G767", width=2)

@@ -117,8 +117,8 @@ def test_any_area_and_errors(qtbot: QtBot, spindle: tuple[PlcSession, BitDisplay
     assert not dock.rows[4].bits[0].isVisibleTo(dock)
     dock.set_address(4, "X12.3")
     assert "without a bit" in dock.rows[4].error.text()
-    dock.set_address(4, "X200")
-    assert "0 to 127" in dock.rows[4].error.text()
+    dock.set_address(4, "X128")  # the 30i map has X0-X127, X200-X327, ... (X200 exists)
+    assert "0-127, 200-327" in dock.rows[4].error.text()
     dock.set_address(4, "")
     assert not dock.rows[4].error.isVisibleTo(dock)
     assert dock.rows[4].value is None

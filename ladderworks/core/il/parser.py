@@ -1,4 +1,4 @@
-"""Parser from `.LAD` / `.MOD` text to a Program, with diagnostics instead of exceptions."""
+"""Parser from `.LAD` / `.MOD` / LADDER-III mnemonic text to a Program, with diagnostics."""
 
 from __future__ import annotations
 
@@ -10,28 +10,53 @@ from pathlib import Path
 
 import lark
 
+from ladderworks.core import instructions as _table
 from ladderworks.core.address import Address, AddressError, parse_address
-from ladderworks.core.diagnostics import Diagnostic, has_errors
-from ladderworks.core.il.program import Instruction, Network, ParamValue, Program, Section
+from ladderworks.core.diagnostics import Diagnostic, Severity, has_errors
+from ladderworks.core.il.program import (
+    FANUC,
+    FileSource,
+    Instruction,
+    LabelRef,
+    Network,
+    ParamValue,
+    Program,
+    ProgramRef,
+    Section,
+)
+from ladderworks.core.il.sections import read_views
+from ladderworks.core.il.textform import TextForm, decode_text, dominant_newline, split_with_ends
 from ladderworks.core.instructions import (
+    BY_MNEMONIC,
     BY_SUB,
     InstructionSpec,
     Kind,
     Param,
     ParamKind,
     lookup,
+    spec_for,
     value_is_address,
     width_of,
 )
 
-_SECTION_START = re.compile(r"^\s*%@\s*(\d+)\s*$")
+_HEADER = re.compile(r"^\s*%@(.*)$")
 _SECTION_END = re.compile(r"^\s*%\s*$")
+_NUMBERED = re.compile(r"^(\d+)(.*)$")
 _MASK = re.compile(r"^[01]{1,4}$")
+_LABEL = re.compile(r"^[ \t]*([Nn][0-9]+):[ \t]*$")
+_SAFE = re.compile(r"[A-Za-z0-9_.+\- \t]*")  # code the fast scanner splits at spaces/tabs
+_ADDRESS_SHAPE = re.compile(r"^[A-Za-z]\d+(\.\d+)?$")
+_REF = re.compile(r"^([PpLl])0*(\d{1,6})$")
+
+# Known section headers by number (the suffix after `%@n`); `%@2-E(...)` has options.
+_KNOWN_SUFFIXES: dict[int, tuple[str, ...]] = {
+    0: ("",), 1: ("",), 2: ("", "-C", "-C2", "-D"), 3: ("",), 4: ("",), 5: ("",)}
+MAX_NUMBER_DIGITS = 12  # a parameter with more digits is out of range (no int() of it)
 
 
 @dataclass(slots=True)
 class ParseResult:
-    """A parsed program with its diagnostics and the text encoding that was read."""
+    """A parsed program with its diagnostics and the text form that was read."""
 
     program: Program
     diagnostics: list[Diagnostic] = field(default_factory=list)
@@ -42,6 +67,11 @@ class ParseResult:
         """True when there is no error (warnings allowed)."""
         return not has_errors(self.diagnostics)
 
+    @property
+    def form(self) -> TextForm:
+        """Encoding, BOM and line end of the file (see core/il/textform.py)."""
+        return self.program.form
+
 
 @lru_cache(maxsize=1)
 def line_parser() -> lark.Lark:
@@ -51,31 +81,48 @@ def line_parser() -> lark.Lark:
 
 
 def decode(data: bytes) -> tuple[str, str]:
-    """Decode file bytes as UTF-8 (BOM allowed) or else Turkish Windows cp1254."""
-    if data.startswith(b"\xef\xbb\xbf"):
-        data = data[3:]
-    try:
-        return data.decode("utf-8"), "utf-8"
-    except UnicodeDecodeError:
-        return data.decode("cp1254", errors="replace"), "cp1254"
+    """Decode file bytes (BOM, UTF-8, or cp1254); returns the text and the codec name."""
+    text, form, _diagnostics = decode_text(data)
+    return text, form.encoding
+
+
+def _is_binary(data: bytes) -> bool:
+    """True for bytes that are not text: NULs (without a UTF-16 BOM) or many control bytes."""
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        return False
+    sample = data[:65536]
+    if b"\x00" in sample:
+        return True
+    controls = sum(1 for b in sample if b < 32 and b not in (9, 10, 12, 13))
+    return controls * 20 > len(sample)
 
 
 def parse_bytes(data: bytes) -> ParseResult:
-    """Parse file contents given as bytes."""
-    text, encoding = decode(data)
-    result = parse(text)
-    result.encoding = encoding
+    """Parse file contents given as bytes (any encoding LadderWorks reads)."""
+    text, form, diagnostics = decode_text(data)
+    if _is_binary(data):
+        program = Program()
+        lines, ends = split_with_ends(text)
+        program.source = FileSource(form, lines, ends, -1, -1)
+        return ParseResult(program, [Diagnostic("not-a-program", {}, 1, 1)], form.encoding)
+    result = _FileParser(text, form).run()
+    if diagnostics:
+        result.diagnostics = sorted(diagnostics + result.diagnostics,
+                                    key=lambda d: (d.line, d.column))
+    result.encoding = form.encoding
     return result
 
 
 def parse_file(path: str | Path) -> ParseResult:
-    """Parse a `.LAD` / `.MOD` file."""
+    """Parse a `.LAD` / `.MOD` / `.mnc` / `.txt` file."""
     return parse_bytes(Path(path).read_bytes())
 
 
 def parse(text: str) -> ParseResult:
     """Parse program text; never raises for bad input, returns diagnostics instead."""
-    return _FileParser(text).run()
+    _lines, ends = split_with_ends(text)
+    form = TextForm(newline=dominant_newline(ends), final_newline=not ends or ends[-1] != "")
+    return _FileParser(text, form).run()
 
 
 @dataclass(slots=True)
@@ -90,7 +137,7 @@ class _Line:
     """One parsed line of the ladder section."""
 
     number: int
-    kind: str  # "blank", "comment", "instruction", "parameter"
+    kind: str  # "blank", "comment", "instruction", "parameter", "label"
     words: list[_Token] = field(default_factory=list)
     comment: str | None = None
 
@@ -101,14 +148,64 @@ def _comment_text(raw: str) -> str:
     return body.rstrip()
 
 
+def _scan_fast(text: str, number: int) -> _Line | None:
+    """The common lines without lark; None for a line only the grammar can judge."""
+    stripped = text.lstrip(" \t")
+    if not stripped:
+        return _Line(number, "blank")
+    first = stripped[0]
+    if first == ";" or stripped.startswith("//"):
+        return _Line(number, "comment", comment=_comment_text(stripped))
+    if first == ",":
+        return _Line(number, "comment", comment=_comment_text(stripped.strip()))
+    cut = len(text)
+    if ";" in text or "/" in text:
+        semi = text.find(";")
+        if semi >= 0:
+            cut = semi
+        slash = text.find("//", 0, cut)
+        if slash >= 0:
+            cut = slash
+    code = text[:cut] if cut < len(text) else text
+    if _SAFE.fullmatch(code) is None:
+        label = _LABEL.match(text)
+        return _Line(number, "label", [_Token(label.group(1), 1, False)]) if label else None
+    words: list[_Token] = []
+    position = 0
+    for word in code.split():
+        head = word[0]
+        if head.isalpha() or head == "_":
+            if "+" in word or "-" in word:
+                return None
+            is_int = False
+        elif word.isdigit() or (head in "+-" and word[1:].isdigit()):
+            is_int = True
+        else:
+            return None
+        position = code.find(word, position)
+        words.append(_Token(word, position + 1, is_int))
+        position += len(word)
+    if not words:
+        return None
+    comment = _comment_text(text[cut:]).strip() if cut < len(text) else None
+    if words[0].is_int:
+        if len(words) > 1:
+            return None
+        return _Line(number, "parameter", words, comment)
+    return _Line(number, "instruction", words, comment)
+
+
 def _scan_line(text: str, number: int) -> _Line | Diagnostic:
-    """Run the lark grammar on one line."""
+    """One line of the ladder section: the fast scanner, else the lark grammar."""
+    fast = _scan_fast(text, number)
+    if fast is not None:
+        return fast
     try:
         tree = line_parser().parse(text)
     except lark.exceptions.UnexpectedInput as exc:
         column = getattr(exc, "column", 1) or 1
         bad = text[column - 1:].split()[0] if text[column - 1:].split() else text.strip()
-        return Diagnostic("syntax", {"text": bad}, number, column)
+        return Diagnostic("syntax", {"text": bad[:40]}, number, column)
     kind = tree.data
     if kind == "blank_line":
         return _Line(number, "blank")
@@ -117,6 +214,9 @@ def _scan_line(text: str, number: int) -> _Line | Diagnostic:
     if kind == "comment_line":
         raw = str(tree.children[0].children[0])
         return _Line(number, "comment", comment=_comment_text(raw))
+    if kind == "label_line":
+        tok = tree.children[0]
+        return _Line(number, "label", [_Token(str(tok)[:-1], tok.column, False)])
     statement = tree.children[0]
     comment: str | None = None
     if len(tree.children) > 1:
@@ -131,86 +231,142 @@ def _scan_line(text: str, number: int) -> _Line | Diagnostic:
     return _Line(number, "instruction", words, comment)
 
 
+def _header_kind(rest: str) -> tuple[int, str, bool]:
+    """(number, suffix, known) of a header's text after `%@` (number -1: not numbered)."""
+    match = _NUMBERED.match(rest.strip())
+    if match is None or len(match.group(1)) > 3:
+        return -1, rest.strip(), False
+    number, suffix = int(match.group(1)), match.group(2).strip()
+    known = suffix in _KNOWN_SUFFIXES.get(number, ()) or (
+        number == 2 and suffix.upper().startswith("-E(") and suffix.endswith(")"))
+    return number, suffix, known
+
+
 class _FileParser:
     """Splits the file into sections and parses the ladder section into networks."""
 
-    def __init__(self, text: str) -> None:
-        self.lines = text.splitlines()
+    def __init__(self, text: str, form: TextForm) -> None:
+        self.lines, ends = split_with_ends(text)
         self.program = Program()
+        self.source = FileSource(form, self.lines, ends, 0, len(self.lines))
+        self.program.source = self.source
         self.diagnostics: list[Diagnostic] = []
+        self.firsts: dict[int, int] = {}
+        self.labels = False
+        self.dialect = "seed"  # decided before the ladder is read: parameter ranges depend on it
 
     def run(self) -> ParseResult:
-        ladder_body: list[tuple[int, str]] | None = None
-        i = 0
-        seen_sections: set[int] = set()
-        has_any_section = any(_SECTION_START.match(line) for line in self.lines)
+        has_any_section = any(_HEADER.match(line) for line in self.lines if "%@" in line)
         if not has_any_section:
             self.diagnostics.append(Diagnostic("missing-start", {}, 1, 1))
-            body = [(n + 1, line) for n, line in enumerate(self.lines)]
-            if body and _SECTION_END.match(body[-1][1]):
-                body.pop()
-            self._parse_ladder(body)
+            stop = len(self.lines)
+            if stop and _SECTION_END.match(self.lines[-1]):
+                stop -= 1
+            self.source.ladder_stop = stop
+            self._parse_ladder(0, stop)
+            self._not_a_program()
             return self._result()
-        while i < len(self.lines):
-            line = self.lines[i]
-            start = _SECTION_START.match(line)
-            stripped = line.strip()
-            if start:
-                number = int(start.group(1))
-                if number > 5:
-                    self.diagnostics.append(Diagnostic("bad-section", {"number": number}, i + 1, 1))
-                if number in seen_sections:
+        self._split_sections()
+        return self._result()
+
+    def _split_sections(self) -> None:
+        lines = self.lines
+        ladder_found = False
+        seen: set[str] = set()
+        i = 0
+        while i < len(lines):
+            line = lines[i]
+            header = _HEADER.match(line) if "%@" in line else None
+            if header:
+                rest = header.group(1).strip()
+                if rest.upper() in ("A", "E"):
+                    self.program.framed = True
+                    i += 1
+                    continue
+                number, suffix, known = _header_kind(rest)
+                title = f"%@{rest}"
+                if not known:
+                    self.diagnostics.append(Diagnostic(
+                        "bad-section", {"number": rest[:20], "header": title[:40]}, i + 1, 1,
+                        Severity.WARNING))
+                key = title.upper()
+                if key in seen:
                     self.diagnostics.append(
-                        Diagnostic("duplicate-section", {"number": number}, i + 1, 1))
-                seen_sections.add(number)
+                        Diagnostic("duplicate-section", {"number": rest[:20]}, i + 1, 1))
+                seen.add(key)
                 j = i + 1
-                while j < len(self.lines) and not _SECTION_END.match(self.lines[j]):
-                    if _SECTION_START.match(self.lines[j]):
+                while j < len(lines) and not _SECTION_END.match(lines[j]):
+                    if "%@" in lines[j] and _HEADER.match(lines[j]):
                         break
                     j += 1
-                closed = j < len(self.lines) and bool(_SECTION_END.match(self.lines[j]))
+                closed = j < len(lines) and bool(_SECTION_END.match(lines[j]))
                 if not closed:
-                    self.diagnostics.append(
-                        Diagnostic("missing-end", {}, min(j, len(self.lines)), 1))
-                if number == 3 and ladder_body is None:
-                    ladder_body = [(n + 1, self.lines[n]) for n in range(i + 1, j)]
+                    self.diagnostics.append(Diagnostic("missing-end", {}, min(j, len(lines)), 1))
+                if number == 3 and not suffix and not ladder_found:
+                    ladder_found = True
+                    self.source.ladder_start, self.source.ladder_stop = i + 1, j
+                    self._parse_ladder(i + 1, j)
                 else:
-                    section = Section(number, self.lines[i + 1:j])
-                    (self.program.after if ladder_body is not None else self.program.before
+                    section = Section(number, lines[i + 1:j],
+                                      "" if not suffix and known else title)
+                    self.firsts[id(section)] = i + 2
+                    (self.program.after if ladder_found else self.program.before
                      ).append(section)
                 i = j + 1 if closed else j
                 continue
+            stripped = line.strip()
             if not stripped:
                 pass
             elif stripped.startswith(("//", ";", ",")):
-                target = self.program.header if ladder_body is None else self.program.footer
+                target = self.program.footer if ladder_found else self.program.header
                 target.append(_comment_text(stripped))
             else:
                 self.diagnostics.append(
                     Diagnostic("text-outside-section", {"text": stripped[:40]}, i + 1,
                                len(line) - len(line.lstrip()) + 1))
             i += 1
-        if ladder_body is None:
+        if not ladder_found:
             self.diagnostics.append(Diagnostic("missing-start", {}, 1, 1))
-            ladder_body = []
-        self._parse_ladder(ladder_body)
-        return self._result()
+            self.source.ladder_start = self.source.ladder_stop = -1
+        read_views(self.program, self.firsts, self.diagnostics)
+
+    def _not_a_program(self) -> None:
+        """Text with no section and no instruction that has errors is not a ladder program."""
+        errors = [d for d in self.diagnostics if d.is_error and d.code != "missing-start"]
+        if self.program.networks or not errors:
+            return
+        self.diagnostics = [Diagnostic("not-a-program", {}, 1, 1), *errors[:2]]
 
     def _result(self) -> ParseResult:
+        if self.program.framed or self.labels or self.dialect == FANUC:
+            self.program.dialect = FANUC
         self.diagnostics.sort(key=lambda d: (d.line, d.column))
         return ParseResult(self.program, self.diagnostics)
 
     # -- the ladder section -------------------------------------------------------------
 
-    def _parse_ladder(self, body: list[tuple[int, str]]) -> None:
+    def _parse_ladder(self, start: int, stop: int) -> None:
         scanned: list[_Line] = []
-        for number, text in body:
-            item = _scan_line(text, number)
+        lines = self.lines
+        if self.program.framed or any(
+                line.endswith(":") and _LABEL.match(line) for line in lines[start:stop]):
+            self.dialect = FANUC
+        seen: dict[str, _Line] = {}  # many lines repeat: scan each text once, share its words
+        for index in range(start, stop):
+            text = lines[index]
+            known = seen.get(text)
+            if known is not None:
+                if known.kind != "blank":
+                    scanned.append(_Line(index + 1, known.kind, known.words, known.comment))
+                continue
+            item = _scan_line(text, index + 1)
             if isinstance(item, Diagnostic):
                 self.diagnostics.append(item)
-            elif item.kind != "blank":
+                continue
+            seen[text] = item
+            if item.kind != "blank":
                 scanned.append(item)
-        builder = _NetworkBuilder()
+        builder = _NetworkBuilder(start)
         k = 0
         while k < len(scanned):
             line = scanned[k]
@@ -218,36 +374,79 @@ class _FileParser:
             if line.kind == "comment":
                 builder.comment(line.comment or "")
                 continue
+            if line.kind == "label":
+                self.labels = True
+                builder.label(line.words[0].text)
+                continue
             if line.kind == "parameter":
                 self._error("stray-parameter", line.number, line.words[0].column,
-                            text=line.words[0].text)
+                            text=line.words[0].text[:20])
                 continue
             head = line.words[0]
             operands = line.words[1:]
             spec = lookup(head.text)
+            if spec is None and head.text[:4].upper() == "SUB.":
+                spec = spec_for(head.text, len(operands))  # one-line unknown `SUB.219 p1 p2`
+                if spec is not None:
+                    self.diagnostics.append(Diagnostic("unknown-sub", {"number": spec.sub},
+                                                       line.number, head.column,
+                                                       Severity.WARNING))
             if spec is None:
-                if len(operands) == 0 and _looks_like_address(head.text):
-                    self._error("stray-parameter", line.number, head.column, text=head.text)
+                if len(operands) == 0 and _ADDRESS_SHAPE.match(head.text):
+                    self._error("stray-parameter", line.number, head.column, text=head.text[:20])
                 else:
                     self._error("unknown-instruction", line.number, head.column,
-                                name=head.text)
+                                name=head.text[:20])
                 continue
+            if spec.kind is Kind.BASIC and len(operands) > 1 and head.text.upper() in BY_MNEMONIC:
+                spec = BY_MNEMONIC[head.text.upper()]  # one-line `AND 1 R10 R11 R12`: LOGAND
+            end_line = line.number
             if spec.name == "SUB" and len(operands) == 1 and operands[0].is_int:
-                number = int(operands[0].text)
-                sub_spec = BY_SUB.get(number)
+                number = _small_int(operands[0].text, 6)
+                number = number if number is not None and number >= 0 else None
+                sub_spec = BY_SUB.get(number) if number is not None else None
                 if sub_spec is None:
-                    self._error("unknown-sub", line.number, operands[0].column, number=number)
+                    k = self._unknown_sub(line, number, scanned, k, builder)
                     continue
                 spec = sub_spec
                 operands = []
                 k = self._collect_params(spec, scanned, k, operands)
             elif spec.kind is not Kind.BASIC and not operands and spec.params:
                 k = self._collect_params(spec, scanned, k, operands)
+            if k > 0 and scanned[k - 1].number > end_line:
+                end_line = scanned[k - 1].number
             instruction = self._build(spec, line, operands)
             if instruction is not None:
-                builder.add(instruction)
-        self.program.networks = builder.finish()
-        self.program.trailer = builder.pending
+                builder.add(instruction, end_line)
+        self.program.networks = builder.networks
+        self.program.trailer = builder.finish_pending()
+        source = self.source
+        source.keys = [network.key() for network in builder.networks]
+        source.spans = builder.spans
+        source.heads = builder.heads
+        source.trailer = tuple(builder.pending)
+        source.trailer_span = (builder.cursor, stop)
+
+    def _unknown_sub(self, line: _Line, number: int | None, scanned: list[_Line], k: int,
+                     builder: _NetworkBuilder) -> int:
+        """`SUB n` the table does not know: every following parameter line is its parameter."""
+        column = line.words[1].column
+        text = line.words[1].text
+        make = getattr(_table, "unknown_sub", None)
+        if make is None or number is None:
+            self._error("unknown-sub", line.number, column, number=text[:20])
+            return k
+        operands: list[_Token] = []
+        while k < len(scanned) and _is_param_line(scanned[k]):
+            operands.append(scanned[k].words[0])
+            k += 1
+        self.diagnostics.append(Diagnostic("unknown-sub", {"number": number}, line.number,
+                                           column, Severity.WARNING))
+        spec = make(number, len(operands))
+        instruction = self._build(spec, line, operands)
+        if instruction is not None:
+            builder.add(instruction, scanned[k - 1].number if operands else line.number)
+        return k
 
     def _collect_params(self, spec: InstructionSpec, scanned: list[_Line], k: int,
                         out: list[_Token]) -> int:
@@ -256,11 +455,7 @@ class _FileParser:
         table = spec.table_param()
         while k < len(scanned):
             line = scanned[k]
-            if line.kind == "parameter" or (
-                line.kind == "instruction" and len(line.words) == 1
-                and lookup(line.words[0].text) is None
-                and _looks_like_address(line.words[0].text)
-            ):
+            if _is_param_line(line):
                 if len(out) >= needed:
                     if table is None:
                         break
@@ -284,7 +479,7 @@ class _FileParser:
             if not spec.operand:
                 if operands:
                     self._error("extra-operand", line.number, operands[0].column,
-                                name=spec.name, text=operands[0].text)
+                                name=spec.name, text=operands[0].text[:20])
                     return None
                 return Instruction(spec.name, comment=comment, line=line.number,
                                    column=head.column)
@@ -293,7 +488,7 @@ class _FileParser:
                 return None
             if len(operands) > 1:
                 self._error("extra-operand", line.number, operands[1].column,
-                            name=spec.name, text=operands[1].text)
+                            name=spec.name, text=operands[1].text[:20])
                 return None
             address = self._address(operands[0], line.number, want_bit=True, width=1)
             if address is None:
@@ -306,12 +501,14 @@ class _FileParser:
         return Instruction(spec.name, params=params, comment=comment, line=line.number,
                            column=head.column)
 
-    def _address(self, token: _Token, line: int, *, want_bit: bool,
+    def _address(self, token: _Token, line: int, *, want_bit: bool | None,
                  width: int) -> Address | None:
         try:
             return parse_address(token.text, want_bit=want_bit, width=width)
         except AddressError as exc:
-            self._error(exc.code, line, token.column, **exc.args_map)
+            args = {k: (v[:20] if isinstance(v, str) and k == "text" else v)
+                    for k, v in exc.args_map.items()}
+            self._error(exc.code, line, token.column, **args)
             return None
 
     def _params(self, spec: InstructionSpec, operands: list[_Token], line: int,
@@ -339,64 +536,113 @@ class _FileParser:
         if table is not None:
             for offset, token in enumerate(operands[len(fixed):]):
                 index = len(fixed) + offset + 1
-                value = self._number(spec, table, token, index, line)
-                if value is None:
+                number = self._number(spec, table, token, index, line)
+                if number is None:
                     ok = False
                     continue
-                out.append(value)
+                out.append(number)
         return tuple(out) if ok else None
 
     def _param(self, spec: InstructionSpec, param: Param, token: _Token, index: int,
                values: dict[str, object], line: int) -> ParamValue | None:
-        if param.kind is ParamKind.NUMBER:
+        kind = param.kind.value
+        if kind == "number":
             return self._number(spec, param, token, index, line)
-        if param.kind is ParamKind.MASK:
+        if kind == "mask":
             if not token.is_int or not _MASK.match(token.text):
                 self._error("param-mask", line, token.column, name=spec.name, index=index,
-                            param=param.name, text=token.text)
+                            param=param.name, text=token.text[:20])
                 return None
             return int(token.text, 2)
+        if kind in ("program", "label"):
+            return self._reference(spec, param, token, index, line, "P" if kind == "program"
+                                   else "L")
+        if kind == "raw":
+            return self._raw(token, line)
         width = width_of(spec, param, values)
         if param.kind is ParamKind.ADDRESS or (
             param.kind is ParamKind.VALUE and not token.is_int
         ):
             if token.is_int:
                 self._error("param-kind-address", line, token.column, name=spec.name,
-                            index=index, param=param.name, text=token.text)
+                            index=index, param=param.name, text=token.text[:20])
                 return None
             if param.kind is ParamKind.VALUE and value_is_address(spec, values) is False:
                 self._error("param-kind-number", line, token.column, name=spec.name,
-                            index=index, param=param.name, text=token.text)
+                            index=index, param=param.name, text=token.text[:20])
                 return None
             return self._address(token, line, want_bit=False, width=width)
         # a VALUE given as a constant
         if value_is_address(spec, values) is True:
             self._error("param-kind-address", line, token.column, name=spec.name,
-                        index=index, param=param.name, text=token.text)
+                        index=index, param=param.name, text=token.text[:20])
             return None
         return self._number(spec, param, token, index, line)
+
+    def _reference(self, spec: InstructionSpec, param: Param, token: _Token, index: int,
+                   line: int, letter: str) -> ProgramRef | LabelRef | None:
+        match = _REF.match(token.text)
+        if match is None or match.group(1).upper() != letter:
+            self._error("param-kind-ref", line, token.column, name=spec.name, index=index,
+                        param=param.name, text=token.text[:20], letter=letter)
+            return None
+        number = int(match.group(2))
+        hi = param.highest(self.dialect)
+        if hi and not param.lo <= number <= hi:
+            self._error("param-range", line, token.column, name=spec.name, index=index,
+                        param=param.name, lo=param.lo, hi=hi, value=token.text)
+            return None
+        return ProgramRef(number) if letter == "P" else LabelRef(number)
+
+    def _raw(self, token: _Token, line: int) -> ParamValue | None:
+        """A parameter of an unknown `SUB n`: an integer, an address, `Pn` or `Ln`."""
+        if token.is_int:
+            value = _small_int(token.text, MAX_NUMBER_DIGITS)
+            if value is None:
+                self._error("number-too-long", line, token.column, text=token.text[:20])
+            return value
+        match = _REF.match(token.text)
+        if match is not None:
+            number = int(match.group(2))
+            return ProgramRef(number) if match.group(1).upper() == "P" else LabelRef(number)
+        return self._address(token, line, want_bit=None, width=1)
 
     def _number(self, spec: InstructionSpec, param: Param, token: _Token, index: int,
                 line: int) -> int | None:
         if not token.is_int:
             self._error("param-kind-number", line, token.column, name=spec.name, index=index,
-                        param=param.name, text=token.text)
+                        param=param.name, text=token.text[:20])
             return None
-        value = int(token.text)
+        value = _small_int(token.text, MAX_NUMBER_DIGITS)
+        hi = param.highest(self.dialect)
+        if value is None:
+            self._error("param-range", line, token.column, name=spec.name, index=index,
+                        param=param.name, lo=param.lo, hi=hi, value=token.text[:20] + "…")
+            return None
         if param.choices and value not in param.choices:
             self._error("param-choice", line, token.column, name=spec.name, index=index,
                         param=param.name, value=value,
                         choices=", ".join(str(c) for c in param.choices))
             return None
-        if not param.lo <= value <= param.hi:
+        if not param.lo <= value <= hi:
             self._error("param-range", line, token.column, name=spec.name, index=index,
-                        param=param.name, lo=param.lo, hi=param.hi, value=value)
+                        param=param.name, lo=param.lo, hi=hi, value=value)
             return None
         return value
 
 
-def _looks_like_address(text: str) -> bool:
-    return bool(re.match(r"^[A-Za-z]\d+(\.\d+)?$", text))
+def _small_int(text: str, digits: int) -> int | None:
+    """The integer a token spells, or None when it has more than `digits` digits."""
+    body = text.lstrip("+-").lstrip("0")
+    return int(text) if len(body) <= digits else None
+
+
+def _is_param_line(line: _Line) -> bool:
+    """A parameter line: a number, or one address-shaped word that is no instruction."""
+    return line.kind == "parameter" or (
+        line.kind == "instruction" and len(line.words) == 1
+        and lookup(line.words[0].text) is None
+        and _ADDRESS_SHAPE.match(line.words[0].text) is not None)
 
 
 def _table_size(spec: InstructionSpec, operands: list[_Token]) -> int | None:
@@ -409,42 +655,64 @@ def _table_size(spec: InstructionSpec, operands: list[_Token]) -> int | None:
         if param.name == table.length_of and index < len(operands):
             token = operands[index]
             if token.is_int:
-                value = int(token.text)
-                return value if param.lo <= value <= param.hi else None
+                value = _small_int(token.text, MAX_NUMBER_DIGITS)
+                return value if value is not None and param.lo <= value <= param.hi else None
     return None
 
 
 class _NetworkBuilder:
-    """Groups instructions into networks: a new one starts at an RD after an output."""
+    """Groups instructions into networks: a label, or an RD after an output, starts one.
 
-    def __init__(self) -> None:
+    Also records which source lines each network came from (`spans`, 0-based, end exclusive):
+    from the end of the previous network to its last instruction or parameter line."""
+
+    def __init__(self, start: int) -> None:
         self.networks: list[Network] = []
         self.current: Network | None = None
         self.closed = False  # the current network has reached an output
         self.pending: list[str] = []
+        self.pending_label = ""
+        self.cursor = start  # first line index not yet in a network
+        self.spans: list[tuple[int, int]] = []
+        self.heads: list[int] = []
 
     def comment(self, text: str) -> None:
         self.pending.append(text)
 
-    def add(self, instruction: Instruction) -> None:
+    def label(self, text: str) -> None:
+        if self.pending_label:  # two labels in a row: the first one labels nothing
+            self.pending.append(self.pending_label + ":")
+        self.pending_label = text
+        self.closed = True
+
+    def add(self, instruction: Instruction, end_line: int) -> None:
         spec = instruction.spec
-        starts = instruction.name in ("RD", "RD.NOT") or (
+        starts = bool(self.pending_label) or instruction.name in ("RD", "RD.NOT") or (
             spec.kind is not Kind.BASIC and not spec.inputs
         )
         if self.current is None or (starts and self.closed):
-            self.current = Network(comments=self.pending)
+            self.current = Network(comments=self.pending, label=self.pending_label)
             self.pending = []
+            self.pending_label = ""
             self.networks.append(self.current)
+            self.spans.append((self.cursor, end_line))
+            self.heads.append(instruction.line - 1)
             self.closed = False
         elif self.pending:
             instruction = _with_lead(instruction, self.pending)
             self.pending = []
         self.current.instructions.append(instruction)
+        self.spans[-1] = (self.spans[-1][0], end_line)
+        self.cursor = end_line
         if spec.writes or spec.kind is not Kind.BASIC:
             self.closed = True
 
-    def finish(self) -> list[Network]:
-        return self.networks
+    def finish_pending(self) -> list[str]:
+        """Comment lines after the last network (a label there is kept as its text)."""
+        if self.pending_label:
+            self.pending.append(self.pending_label + ":")
+            self.pending_label = ""
+        return self.pending
 
 
 def _with_lead(instruction: Instruction, lead: list[str]) -> Instruction:

@@ -3,11 +3,40 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from ladderworks.core.address import Address
+from ladderworks.core.il.textform import TextForm
 from ladderworks.core.instructions import InstructionSpec, Kind, spec_for
 
-ParamValue = int | Address
+if TYPE_CHECKING:
+    from ladderworks.core.symbols import SymbolTable
+
+
+@dataclass(frozen=True, slots=True, order=True)
+class ProgramRef:
+    """A subprogram number as a parameter (`P5` in CALL, CALLU, SP)."""
+
+    number: int
+
+    def __str__(self) -> str:
+        return f"P{self.number}"
+
+
+@dataclass(frozen=True, slots=True, order=True)
+class LabelRef:
+    """A jump label as a parameter (`L5` in JMPB, JMPC, LBL)."""
+
+    number: int
+
+    def __str__(self) -> str:
+        return f"L{self.number}"
+
+
+ParamValue = int | Address | ProgramRef | LabelRef
+
+SEED = "seed"  # a LadderWorks (seed manual) program
+FANUC = "fanuc"  # a LADDER-III export: `%@A` framing or `N00012:` network labels
 
 
 @dataclass(frozen=True, slots=True)
@@ -52,11 +81,17 @@ class Network:
 
     instructions: list[Instruction] = field(default_factory=list)
     comments: list[str] = field(default_factory=list)  # comment lines before the network
+    label: str = ""  # LADDER-III network label without its colon (`N00012`), "" for none
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Network):
             return NotImplemented
-        return self.instructions == other.instructions and self.comments == other.comments
+        return (self.instructions == other.instructions and self.comments == other.comments
+                and self.label == other.label)
+
+    def key(self) -> tuple[object, ...]:
+        """What the network says, as a hashable value (equal keys print the same)."""
+        return (self.label, tuple(self.comments), tuple(self.instructions))
 
     @property
     def line(self) -> int:
@@ -66,10 +101,56 @@ class Network:
 
 @dataclass(slots=True)
 class Section:
-    """A FANUC section other than the ladder (`%@0`..`%@5`), kept verbatim."""
+    """A FANUC section other than the ladder (`%@0`..`%@5`, `%@2-C` ...), kept verbatim."""
 
     number: int
     lines: list[str] = field(default_factory=list)  # the body, between `%@n` and `%`
+    header: str = ""  # the header line as written (`%@2-C`); "" means `%@<number>`
+
+    @property
+    def title(self) -> str:
+        """The header line, `%@2-C` or `%@<number>`."""
+        return self.header.strip() or f"%@{self.number}"
+
+
+@dataclass(frozen=True, slots=True)
+class Message:
+    """A `%@4` message: the A bit that raises it, its number and its text."""
+
+    address: Address
+    number: int
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class IoModule:
+    """A `%@5` I/O module line: first byte address, group, base, slot and module name."""
+
+    address: str
+    group: int
+    base: int
+    slot: int
+    name: str
+
+
+@dataclass(slots=True, eq=False)
+class FileSource:
+    """The text a program was read from, kept so an unmodified part is written back as read.
+
+    `lines`/`ends` are every line of the file and its own line end. The ladder body is lines
+    `ladder_start` .. `ladder_stop - 1`; network k of the parse was lines `spans[k]` and said
+    `keys[k]`; the lines after the last network (comments, blanks) are `trailer_span`."""
+
+    form: TextForm
+    lines: list[str]
+    ends: list[str]
+    ladder_start: int = 0
+    ladder_stop: int = 0
+    keys: list[tuple[object, ...]] = field(default_factory=list)
+    spans: list[tuple[int, int]] = field(default_factory=list)
+    heads: list[int] = field(default_factory=list)  # first instruction line of each network
+    trailer: tuple[str, ...] = ()
+    trailer_span: tuple[int, int] = (0, 0)
 
 
 @dataclass(slots=True)
@@ -82,6 +163,15 @@ class Program:
     before: list[Section] = field(default_factory=list)  # sections before the ladder
     after: list[Section] = field(default_factory=list)  # sections after the ladder
     footer: list[str] = field(default_factory=list)  # comment lines after the last section
+    framed: bool = False  # wrapped in `%@A` ... `%@E` (LADDER-III "ALL" format)
+    dialect: str = SEED  # FANUC for a LADDER-III export (`%@A` or network labels)
+    source: FileSource | None = None  # the text it was read from (None: built in memory)
+    # views of the other sections, filled by the parser (read-only in the console)
+    title: dict[int, str] = field(default_factory=dict)  # %@1: item number -> text
+    system_params: dict[str, str] = field(default_factory=dict)  # %@0: item -> value
+    symbols: SymbolTable | None = None  # %@2: address <-> symbol, comments
+    messages: dict[Address, Message] = field(default_factory=dict)  # %@4 by A bit
+    io_modules: list[IoModule] = field(default_factory=list)  # %@5
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Program):
@@ -91,11 +181,21 @@ class Program:
             and self.header == other.header
             and self.trailer == other.trailer
             and self.footer == other.footer
-            and [(s.number, s.lines) for s in self.before]
-            == [(s.number, s.lines) for s in other.before]
-            and [(s.number, s.lines) for s in self.after]
-            == [(s.number, s.lines) for s in other.after]
+            and self.framed == other.framed
+            and [(s.title, s.lines) for s in self.before]
+            == [(s.title, s.lines) for s in other.before]
+            and [(s.title, s.lines) for s in self.after]
+            == [(s.title, s.lines) for s in other.after]
         )
+
+    @property
+    def form(self) -> TextForm:
+        """The text form to save in: the file's own, or UTF-8 with LF for a new program."""
+        return self.source.form if self.source is not None else TextForm()
+
+    def sections(self) -> list[Section]:
+        """Every section other than the ladder, in file order."""
+        return [*self.before, *self.after]
 
     def instructions(self) -> list[Instruction]:
         """Every instruction in order."""

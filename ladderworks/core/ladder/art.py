@@ -12,6 +12,7 @@ from ladderworks.core.ladder.model import (
     LadderNetwork,
     Wire,
 )
+from ladderworks.core.symbols import SymbolTable
 
 CELL = 9  # characters per cell; nodes sit between cells
 
@@ -55,9 +56,26 @@ def _box_rows(box: FunctionBox) -> list[tuple[str, str]]:
     return rows
 
 
-def draw_network(network: LadderNetwork) -> list[str]:
-    """The network as text lines: two lines per grid row (addresses, then symbols)."""
+def _symbol_notes(network: LadderNetwork, symbols: SymbolTable | None) -> list[str]:
+    """`   X21.7 ESKIP` for each element whose address has a program symbol."""
+    if symbols is None or not len(symbols):
+        return []
+    seen: list[str] = []
+    for _cell, element in network.elements():
+        if isinstance(element, Contact | Coil) and element.address is not None:
+            name = symbols.symbol(element.address)
+            note = f"   {element.address} {name}"
+            if name and note not in seen:
+                seen.append(note)
+    return seen
+
+
+def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None) -> list[str]:
+    """The network as text lines: two lines per grid row (addresses, then symbols), then each
+    element's program symbol with its address (`X21.7 ESKIP`) when `symbols` has them."""
     lines = ["// " + text for text in network.comments]
+    if network.label:
+        lines.append(network.label + ":")
     if network.listing is not None:
         lines.append("  (kept as instruction list: it has no ladder picture)")
         lines.extend("    " + print_instruction(ins) for ins in network.listing)
@@ -101,14 +119,15 @@ def draw_network(network: LadderNetwork) -> list[str]:
         notes.extend(f"   ({r},{c}) {name}: // {text}" for text in element.lead)
         if element.comment:
             notes.append(f"   ({r},{c}) {name}  {element.comment}")
-    return lines + notes
+    return lines + notes + _symbol_notes(network, symbols)
 
 
 def draw_document(doc: LadderDocument) -> str:
-    """Every network, one after another, numbered from 1."""
+    """Every network, one after another, numbered from 1 (symbols from the program's %@2)."""
+    symbols = doc.origin.symbols if doc.origin is not None else None
     out: list[str] = ["// " + text for text in doc.header]
     for index, network in enumerate(doc.networks, start=1):
         out.append(f"== network {index} " + "=" * 40)
-        out.extend(draw_network(network))
+        out.extend(draw_network(network, symbols))
     out.extend("// " + text for text in doc.trailer)
     return "\n".join(out) + "\n"

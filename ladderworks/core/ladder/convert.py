@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il.program import Network, Program
+from ladderworks.core.il.textform import split_lines
 from ladderworks.core.ladder.clipboard import MAGIC, copy_text, network_from_text
 from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.edits import EditRefused
@@ -15,7 +16,7 @@ DRAFT_MARK = "@grid "  # a saved draft network: comment lines `//@grid <grid tex
 
 def draft_lines(network: LadderNetwork) -> list[str]:
     """A network as draft comment lines (without the `//`), exactly as drawn."""
-    return [DRAFT_MARK + line for line in copy_text(network).splitlines()]
+    return [DRAFT_MARK + line for line in split_lines(copy_text(network))]
 
 
 def split_drafts(lines: list[str]) -> tuple[list[LadderNetwork], list[str]]:
@@ -50,11 +51,13 @@ def split_drafts(lines: list[str]) -> tuple[list[LadderNetwork], list[str]]:
 def program_to_ladder(program: Program) -> LadderDocument:
     """Lay out every network of a program (drafts saved in comments come back as drawn)."""
     doc = LadderDocument(header=list(program.header), footer=list(program.footer),
-                         before=list(program.before), after=list(program.after))
+                         before=list(program.before), after=list(program.after), origin=program)
     for network in program.networks:
         drafts, comments = split_drafts(network.comments)
         doc.networks.extend(drafts)
-        doc.networks.append(layout_network(network.instructions, comments))
+        laid = layout_network(network.instructions, comments)
+        laid.label = network.label
+        doc.networks.append(laid)
     drafts, trailer = split_drafts(program.trailer)
     doc.networks.extend(drafts)
     doc.trailer = trailer
@@ -65,9 +68,13 @@ def ladder_to_program(doc: LadderDocument) -> tuple[Program, list[Diagnostic]]:
     """The program text of a ladder document, with the diagnostics of each network.
 
     A network that cannot be coded (still being drawn, or wrong) is written as draft comment
-    lines before the next network (or at the end), so saving never loses a drawing."""
+    lines before the next network (or at the end), so saving never loses a drawing. The
+    program keeps the file, form, dialect and section views of the one the document came from
+    (`doc.origin`), so Save rewrites only the networks that changed."""
     program = Program(header=list(doc.header), footer=list(doc.footer),
                       before=list(doc.before), after=list(doc.after))
+    if doc.origin is not None:
+        _adopt(program, doc.origin)
     diagnostics: list[Diagnostic] = []
     pending: list[str] = []
     for index, network in enumerate(doc.networks):
@@ -78,7 +85,20 @@ def ladder_to_program(doc: LadderDocument) -> tuple[Program, list[Diagnostic]]:
         if not instructions:
             pending.extend(draft_lines(network))
             continue
-        program.networks.append(Network(instructions, pending + list(network.comments)))
+        program.networks.append(
+            Network(instructions, pending + list(network.comments), network.label))
         pending = []
     program.trailer = pending + list(doc.trailer)
     return program, diagnostics
+
+
+def _adopt(program: Program, origin: Program) -> None:
+    """Carry over what the ladder document does not hold: file, framing, dialect, views."""
+    program.source = origin.source
+    program.framed = origin.framed
+    program.dialect = origin.dialect
+    program.title = origin.title
+    program.system_params = origin.system_params
+    program.symbols = origin.symbols
+    program.messages = origin.messages
+    program.io_modules = origin.io_modules

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field, replace
 
 from ladderworks.core.address import Address
-from ladderworks.core.il.program import Instruction, ParamValue, Section
+from ladderworks.core.il.program import Instruction, ParamValue, Program, Section
 from ladderworks.core.instructions import InstructionSpec, Kind, lookup
 
 # Grid limits (FANUC-like). A network has `columns` contact columns (0 .. columns-1) and one
@@ -126,6 +126,7 @@ class LadderNetwork:
     comments: list[str] = field(default_factory=list)
     listing: tuple[Instruction, ...] | None = None
     source: tuple[Instruction, ...] | None = None
+    label: str = ""  # the LADDER-III network label it was read with (`N00012`), kept on save
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, LadderNetwork):
@@ -234,6 +235,7 @@ class LadderDocument:
     footer: list[str] = field(default_factory=list)
     before: list[Section] = field(default_factory=list)  # other FANUC sections, verbatim
     after: list[Section] = field(default_factory=list)
+    origin: Program | None = None  # the program it was laid out from: its file, form, symbols
 
 
 def flip(element: Contact | Coil) -> Contact | Coil:

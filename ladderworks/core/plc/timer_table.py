@@ -5,11 +5,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ladderworks.core.address import AREA_SIZES, Address, Area
+from ladderworks.core.instructions import BY_NAME
 from ladderworks.core.plc.functions.timers import effective_preset, timer_tick
 
 SEED = "seed"
 FANUC = "fanuc"
-FANUC_TIMERS = 250  # TMR 1..250 on a 30i PMC
 FANUC_PRECISION_BYTE = 9000  # T9000 + 2(n-1): the precision code of TMR n
 # FANUC precision codes: 0 = the timer's default tick (48 ms for 1..8, 8 ms after), then fixed.
 PRECISION_MS: dict[int, int] = {1: 1, 2: 10, 3: 100, 4: 1000, 5: 60_000}
@@ -64,6 +64,7 @@ class TimerLayout:
 def timer_layout(dialect: str) -> TimerLayout:
     """The timer layout of a dialect."""
     size = AREA_SIZES[Area.T]
+    count = BY_NAME["TMR"].param("timer").highest(dialect)  # seed 1..100, 30i memory-B 1..250
     if dialect == FANUC:
-        return TimerLayout(FANUC, 2, "ticks", min(FANUC_TIMERS, size // 2), 32767)
-    return TimerLayout(SEED, 4, "ms", size // 4, MAX_SEED_PRESET_MS)
+        return TimerLayout(FANUC, 2, "ticks", min(count, size // 2), 32767)
+    return TimerLayout(SEED, 4, "ms", min(count, size // 4), MAX_SEED_PRESET_MS)

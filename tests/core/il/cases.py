@@ -75,4 +75,44 @@ ADDB 2 R10 R12 R14
 %
 """
 
-ALL_TEXTS = [FANUC_FORM, ONE_LINE_FORM, SECTIONS, COMMENTS, BAD]
+LADDER_III = """;N
+%@A
+%@0
+2 BINARY
+%
+%@1
+2 TEST MACHINE * P001
+7 19/03/22 11:04
+%
+%@2-C
+X21.7   ESKIP
+G8.4    *ESP
+P3      C62297
+%
+%@3
+
+;--------------- module.lad \t(SIGNALS )
+N00000:
+RD         X21.7
+WRT        G54.0
+N00001:  ; a label with a comment
+RD.NOT     R10.0
+SUB 40
+2
+-25600
+D100
+N00002:
+RD  X21.0
+AND.NOT    X21.1
+WRT.NOT    G8.4
+%
+%@4
+A0.1\t1000 ALARM MESSAGE
+%
+%@5
+X03 1 0 1 /6
+%
+%@E
+"""
+
+ALL_TEXTS = [FANUC_FORM, ONE_LINE_FORM, SECTIONS, COMMENTS, BAD, LADDER_III]

@@ -1,0 +1,132 @@
+"""Read views of the sections other than the ladder: `%@0`, `%@1`, `%@2…`, `%@4`, `%@5`."""
+
+from __future__ import annotations
+
+import csv
+import re
+
+from ladderworks.core.address import AddressError, Area, parse_address
+from ladderworks.core.diagnostics import Diagnostic, Severity
+from ladderworks.core.il.program import IoModule, Message, Program, Section
+from ladderworks.core.symbols import SymbolTable, add_entry
+
+_COLUMNS_RE = re.compile(r"(SYM|ADR|CM1|CM2)\s*=\s*(\d{1,2})", re.IGNORECASE)
+_MESSAGE_RE = re.compile(r"^\s*(\S+)\s+(\d{1,6})(?:[ \t](.*))?$")
+_ITEM_RE = re.compile(r"^\s*(\d{1,6})(?:[ \t](.*))?$")
+_IO_RE = re.compile(r"^\s*([XYxy]\d{1,6})\s+(\d{1,4})\s+(\d{1,4})\s+(\d{1,4})\s*(.*)$")
+
+# the `%@2` variants read as `ADDRESS symbol [comment ...]`; `%@2-E(...)` is CSV
+_SYMBOL_KINDS = ("", "-C", "-C2")
+
+
+def _warn(out: list[Diagnostic], section: Section, line: int, text: str) -> None:
+    out.append(Diagnostic("section-line", {"section": section.title, "text": text[:40]},
+                          line, 1, Severity.WARNING))
+
+
+def _is_comment(line: str) -> bool:
+    stripped = line.strip()
+    return not stripped or stripped.startswith((";", "//"))
+
+
+def read_symbols(section: Section, first: int, table: SymbolTable,
+                 out: list[Diagnostic]) -> None:
+    """Add a `%@2`, `%@2-C`, `%@2-C2` or `%@2-E(...)` section's entries to `table`."""
+    kind = section.title[3:]
+    if kind.upper().startswith("-E"):
+        _read_csv_symbols(section, first, table, out)
+        return
+    for offset, line in enumerate(section.lines):
+        if _is_comment(line):
+            continue
+        words = line.split(None, 2)
+        comment = words[2].strip() if len(words) > 2 else ""
+        if len(words) < 2 or not add_entry(table, words[0], words[1], (comment,)):
+            _warn(out, section, first + offset, line.strip())
+
+
+def _read_csv_symbols(section: Section, first: int, table: SymbolTable,
+                      out: list[Diagnostic]) -> None:
+    columns = {name.upper(): int(number) - 1 for name, number in
+               _COLUMNS_RE.findall(section.title)}
+    sym, adr = columns.get("SYM", 0), columns.get("ADR", 1)
+    comments = [columns[c] for c in ("CM1", "CM2") if c in columns]
+    for offset, row in enumerate(csv.reader(section.lines)):
+        line = section.lines[offset] if offset < len(section.lines) else ""
+        if _is_comment(line):
+            continue
+        cells = [cell.strip() for cell in row]
+        if max(sym, adr) >= len(cells) or not add_entry(
+                table, cells[adr], cells[sym],
+                tuple(cells[c] for c in comments if c < len(cells))):
+            _warn(out, section, first + offset, line.strip())
+
+
+def read_messages(section: Section, first: int, program: Program,
+                  out: list[Diagnostic]) -> None:
+    """`%@4`: `A0.1<TAB>1000 TEXT` lines, an A bit's message number and text."""
+    for offset, line in enumerate(section.lines):
+        if _is_comment(line):
+            continue
+        match = _MESSAGE_RE.match(line)
+        address = None
+        if match:
+            try:
+                address = parse_address(match.group(1), want_bit=True)
+            except AddressError:
+                address = None
+        if match is None or address is None or address.area is not Area.A:
+            _warn(out, section, first + offset, line.strip())
+            continue
+        program.messages[address] = Message(address, int(match.group(2)),
+                                            (match.group(3) or "").rstrip())
+
+
+def read_items(section: Section, first: int, out: list[Diagnostic]) -> dict[int, str]:
+    """`%@0` / `%@1`: `n text` lines by item number (text as written, trailing spaces kept)."""
+    items: dict[int, str] = {}
+    for offset, line in enumerate(section.lines):
+        if _is_comment(line):
+            continue
+        match = _ITEM_RE.match(line)
+        if match is None:
+            _warn(out, section, first + offset, line.strip())
+            continue
+        items[int(match.group(1))] = match.group(2) or ""
+    return items
+
+
+def read_io_modules(section: Section, first: int, out: list[Diagnostic]) -> list[IoModule]:
+    """`%@5`: `X03 1 0 1 /6` lines (first byte, group, base, slot, module name)."""
+    modules: list[IoModule] = []
+    for offset, line in enumerate(section.lines):
+        if _is_comment(line):
+            continue
+        match = _IO_RE.match(line)
+        if match is None:
+            _warn(out, section, first + offset, line.strip())
+            continue
+        address, group, base, slot, name = match.groups()
+        modules.append(IoModule(address.upper(), int(group), int(base), int(slot),
+                                name.strip()))
+    return modules
+
+
+def read_views(program: Program, firsts: dict[int, int], out: list[Diagnostic]) -> None:
+    """Fill the program's views from its sections; `firsts[id(section)]` is its first line."""
+    table = SymbolTable()
+    for section in program.sections():
+        first = firsts.get(id(section), 1)
+        title = section.title.upper()
+        if section.number == 0:
+            program.system_params.update(
+                {str(k): v.strip() for k, v in read_items(section, first, out).items()})
+        elif section.number == 1:
+            program.title.update(read_items(section, first, out))
+        elif section.number == 2 and (title[3:] in _SYMBOL_KINDS or title.startswith("%@2-E")):
+            read_symbols(section, first, table, out)
+        elif section.number == 4:
+            read_messages(section, first, program, out)
+        elif section.number == 5:
+            program.io_modules.extend(read_io_modules(section, first, out))
+    program.symbols = table

@@ -1,0 +1,125 @@
+"""A program's symbol table (`%@2` sections): address <-> symbol and comments, P symbols."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from ladderworks.core.address import Address, AddressError, parse_address
+
+_PROGRAM_RE = re.compile(r"^[Pp]0*(\d{1,6})$")
+
+
+@dataclass(frozen=True, slots=True)
+class Symbol:
+    """An address's symbol and its comments, as the program's `%@2` section gives them."""
+
+    symbol: str
+    comments: tuple[str, ...] = ()
+
+    @property
+    def comment(self) -> str:
+        """The first comment, or ""."""
+        return self.comments[0] if self.comments else ""
+
+
+@dataclass(slots=True)
+class SymbolTable:
+    """Symbols by address and addresses by symbol; subprogram symbols (`P38`) by number."""
+
+    by_address: dict[Address, Symbol] = field(default_factory=dict)
+    by_symbol: dict[str, Address] = field(default_factory=dict)
+    programs: dict[int, Symbol] = field(default_factory=dict)
+    program_by_symbol: dict[str, int] = field(default_factory=dict)
+
+    def __len__(self) -> int:
+        return len(self.by_address) + len(self.programs)
+
+    def __iter__(self) -> Iterator[tuple[Address, Symbol]]:
+        return iter(sorted(self.by_address.items()))
+
+    def add(self, address: Address, symbol: Symbol) -> None:
+        """Record one entry (a later entry for the same address replaces the earlier)."""
+        self.by_address[address] = symbol
+        if symbol.symbol:
+            self.by_symbol.setdefault(symbol.symbol, address)
+
+    def add_program(self, number: int, symbol: Symbol) -> None:
+        """Record the symbol of subprogram `number`."""
+        self.programs[number] = symbol
+        if symbol.symbol:
+            self.program_by_symbol.setdefault(symbol.symbol, number)
+
+    def lookup(self, address: Address) -> Symbol | None:
+        """The program's symbol of an address (a bit falls back to nothing, not its byte)."""
+        return self.by_address.get(address)
+
+    def symbol(self, address: Address) -> str:
+        """The symbol text of an address, or ""."""
+        found = self.by_address.get(address)
+        return found.symbol if found is not None else ""
+
+    def address_of(self, symbol: str) -> Address | None:
+        """The address a symbol names (exact, then case-insensitive), or None."""
+        found = self.by_symbol.get(symbol)
+        if found is None:
+            upper = symbol.upper()
+            found = next((a for s, a in self.by_symbol.items() if s.upper() == upper), None)
+        return found
+
+    def program_symbol(self, number: int) -> str:
+        """The symbol of subprogram `P<number>`, or ""."""
+        found = self.programs.get(number)
+        return found.symbol if found is not None else ""
+
+    def program_of(self, symbol: str) -> int | None:
+        """The subprogram number a symbol names, or None."""
+        return self.program_by_symbol.get(symbol)
+
+
+def add_entry(table: SymbolTable, address_text: str, symbol: str,
+              comments: tuple[str, ...]) -> bool:
+    """Add `address_text` (an address or `Pn`) with its symbol; False if it is not one."""
+    entry = Symbol(symbol, tuple(c for c in comments if c))
+    program = _PROGRAM_RE.match(address_text)
+    if program:
+        table.add_program(int(program.group(1)), entry)
+        return True
+    try:
+        address = parse_address(address_text)
+    except AddressError:
+        return False
+    table.add(address, entry)
+    return True
+
+
+def resolve(text: str, symbols: SymbolTable | None = None, *, width: int = 1) -> Address:
+    """An address typed as itself (`X21.7`, `D10`) or as a program symbol (`ESKIP`).
+
+    The address spelling wins; a text that is not a valid address is looked up in `symbols`.
+    Raises the address's AddressError when neither fits."""
+    try:
+        return parse_address(text, width=width)
+    except AddressError:
+        found = symbols.address_of(text.strip()) if symbols is not None else None
+        if found is None:
+            raise
+        return found
+
+
+def describe(address: Address, symbols: SymbolTable | None = None) -> str:
+    """The name to show for an address: the program's symbol, else the manual's signal name."""
+    if symbols is not None:
+        found = symbols.symbol(address)
+        if found:
+            return found
+    from ladderworks.core.signals import signal_at
+
+    signal = signal_at(address)
+    return signal.name if signal is not None else ""
+
+
+def looks_like_symbol(text: str) -> bool:
+    """True for text that may be a symbol: no spaces, no `=`, `,` or `@`, not empty."""
+    return bool(text) and not any(ch.isspace() or ch in "=,@" for ch in text)
