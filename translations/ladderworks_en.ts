@@ -589,67 +589,87 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
         <source>one of {0}</source>
         <translation>one of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
         <source>{0} to {1}</source>
         <translation>{0} to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte address ({0} bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
         <source>byte address</source>
         <translation>byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
         <source>constant or byte address</source>
         <translation>constant or byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>up to 4 binary digits, e.g. 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <source>subprogram P{0} to P{1}</source>
+        <translation>subprogram P{0} to P{1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <source>label L{0} to L{1}</source>
+        <translation>label L{0} to L{1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <source>constant or address, kept as written</source>
+        <translation>constant or address, kept as written</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
         <source>values separated by spaces</source>
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="130"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="149"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="133"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="151"/>
+        <source>This instruction has no parameters.</source>
+        <translation>This instruction has no parameters.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="136"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="137"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="157"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="172"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="192"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -675,113 +695,114 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="336"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="370"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="648"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="337"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="376"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="652"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="347"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="351"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="630"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="642"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="352"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="634"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="646"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="659"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="668"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="361"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="672"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="375"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="381"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="377"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="373"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="386"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="392"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="391"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="402"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="408"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="418"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="447"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
         <location filename="../ladderworks/gui/editor/view.py" line="455"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="459"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="486"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="490"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Address, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="461"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="497"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="566"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="587"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="465"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="501"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="570"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="591"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="302"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="556"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="300"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="564"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="686"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="690"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="698"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="702"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="707"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="711"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="784"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="788"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -1004,113 +1025,113 @@
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="557"/>
+        <location filename="../ladderworks/gui/main_window.py" line="555"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="567"/>
+        <location filename="../ladderworks/gui/main_window.py" line="565"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="569"/>
+        <location filename="../ladderworks/gui/main_window.py" line="567"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="600"/>
-        <location filename="../ladderworks/gui/main_window.py" line="623"/>
+        <location filename="../ladderworks/gui/main_window.py" line="598"/>
+        <location filename="../ladderworks/gui/main_window.py" line="621"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="601"/>
+        <location filename="../ladderworks/gui/main_window.py" line="599"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="624"/>
+        <location filename="../ladderworks/gui/main_window.py" line="622"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="635"/>
+        <location filename="../ladderworks/gui/main_window.py" line="633"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="640"/>
+        <location filename="../ladderworks/gui/main_window.py" line="638"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="648"/>
+        <location filename="../ladderworks/gui/main_window.py" line="646"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="650"/>
+        <location filename="../ladderworks/gui/main_window.py" line="648"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="660"/>
+        <location filename="../ladderworks/gui/main_window.py" line="658"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="662"/>
+        <location filename="../ladderworks/gui/main_window.py" line="660"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="681"/>
+        <location filename="../ladderworks/gui/main_window.py" line="679"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="683"/>
+        <location filename="../ladderworks/gui/main_window.py" line="681"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="694"/>
+        <location filename="../ladderworks/gui/main_window.py" line="692"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="766"/>
+        <location filename="../ladderworks/gui/main_window.py" line="762"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="785"/>
+        <location filename="../ladderworks/gui/main_window.py" line="781"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="791"/>
+        <location filename="../ladderworks/gui/main_window.py" line="787"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Compile finished: {0} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="811"/>
+        <location filename="../ladderworks/gui/main_window.py" line="807"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="814"/>
+        <location filename="../ladderworks/gui/main_window.py" line="810"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="846"/>
+        <location filename="../ladderworks/gui/main_window.py" line="842"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="847"/>
+        <location filename="../ladderworks/gui/main_window.py" line="843"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -1118,154 +1139,209 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="42"/>
+        <location filename="../ladderworks/gui/translation.py" line="48"/>
         <source>Timer number</source>
         <translation>Timer number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="43"/>
+        <location filename="../ladderworks/gui/translation.py" line="49"/>
         <source>Preset</source>
         <translation>Preset</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="44"/>
+        <location filename="../ladderworks/gui/translation.py" line="50"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="45"/>
+        <location filename="../ladderworks/gui/translation.py" line="51"/>
         <source>Timer/counter register</source>
         <translation>Timer/counter register</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="46"/>
+        <location filename="../ladderworks/gui/translation.py" line="52"/>
         <source>Code signal</source>
         <translation>Code signal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="47"/>
+        <location filename="../ladderworks/gui/translation.py" line="53"/>
         <source>Decode specification</source>
         <translation>Decode specification</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="48"/>
+        <location filename="../ladderworks/gui/translation.py" line="54"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="49"/>
+        <location filename="../ladderworks/gui/translation.py" line="55"/>
         <source>First number</source>
         <translation>First number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="50"/>
+        <location filename="../ladderworks/gui/translation.py" line="56"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="51"/>
+        <location filename="../ladderworks/gui/translation.py" line="57"/>
         <source>Counter number</source>
         <translation>Counter number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="52"/>
+        <location filename="../ladderworks/gui/translation.py" line="58"/>
         <source>Number of positions</source>
         <translation>Number of positions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="53"/>
+        <location filename="../ladderworks/gui/translation.py" line="59"/>
         <source>Current position</source>
         <translation>Current position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="54"/>
+        <location filename="../ladderworks/gui/translation.py" line="60"/>
         <source>Target position</source>
         <translation>Target position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="55"/>
+        <location filename="../ladderworks/gui/translation.py" line="61"/>
         <source>Table size</source>
         <translation>Table size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="56"/>
+        <location filename="../ladderworks/gui/translation.py" line="62"/>
         <source>Index</source>
         <translation>Index</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="57"/>
+        <location filename="../ladderworks/gui/translation.py" line="63"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="58"/>
+        <location filename="../ladderworks/gui/translation.py" line="64"/>
         <source>Table values</source>
         <translation>Table values</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="59"/>
+        <location filename="../ladderworks/gui/translation.py" line="65"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="60"/>
+        <location filename="../ladderworks/gui/translation.py" line="66"/>
         <source>High 4-bit mask</source>
         <translation>High 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="61"/>
+        <location filename="../ladderworks/gui/translation.py" line="67"/>
         <source>Low 4-bit mask</source>
         <translation>Low 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="62"/>
+        <location filename="../ladderworks/gui/translation.py" line="68"/>
         <source>OR data</source>
         <translation>OR data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="63"/>
+        <location filename="../ladderworks/gui/translation.py" line="69"/>
         <source>Data</source>
         <translation>Data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="64"/>
+        <location filename="../ladderworks/gui/translation.py" line="70"/>
         <source>Number of coils</source>
         <translation>Number of coils</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="65"/>
+        <location filename="../ladderworks/gui/translation.py" line="71"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Input format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="66"/>
+        <location filename="../ladderworks/gui/translation.py" line="72"/>
         <source>Compared data</source>
         <translation>Compared data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="67"/>
+        <location filename="../ladderworks/gui/translation.py" line="73"/>
         <source>Searched data</source>
         <translation>Searched data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="68"/>
+        <location filename="../ladderworks/gui/translation.py" line="74"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="70"/>
+        <location filename="../ladderworks/gui/translation.py" line="76"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="71"/>
+        <location filename="../ladderworks/gui/translation.py" line="77"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="72"/>
+        <location filename="../ladderworks/gui/translation.py" line="78"/>
         <source>Constant</source>
         <translation>Constant</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="79"/>
+        <source>Edge number</source>
+        <translation>Edge number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="80"/>
+        <source>Number of bytes</source>
+        <translation>Number of bytes</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="81"/>
+        <source>Operand</source>
+        <translation>Operand</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="82"/>
+        <source>Limit 1</source>
+        <translation>Limit 1</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="83"/>
+        <source>Limit 2</source>
+        <translation>Limit 2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="84"/>
+        <source>Subprogram</source>
+        <translation>Subprogram</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="85"/>
+        <source>Label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="86"/>
+        <source>DI/DO group</source>
+        <translation>DI/DO group</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="87"/>
+        <source>Control data</source>
+        <translation>Control data</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="88"/>
+        <source>Number of messages</source>
+        <translation>Number of messages</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="91"/>
+        <source>Parameter {0}</source>
+        <translation>Parameter {0}</translation>
     </message>
 </context>
 <context>
@@ -1894,132 +1970,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="80"/>
+        <location filename="../ladderworks/gui/tools.py" line="86"/>
         <source>Select</source>
         <translation>Select</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="81"/>
+        <location filename="../ladderworks/gui/tools.py" line="87"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="82"/>
+        <location filename="../ladderworks/gui/tools.py" line="88"/>
         <source>NOT input</source>
         <translation>NOT input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="83"/>
+        <location filename="../ladderworks/gui/tools.py" line="89"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="84"/>
+        <location filename="../ladderworks/gui/tools.py" line="90"/>
         <source>NOT output</source>
         <translation>NOT output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="85"/>
+        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <source>SET coil</source>
+        <translation>SET coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <source>RST coil</source>
+        <translation>RST coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="93"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <location filename="../ladderworks/gui/tools.py" line="94"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <location filename="../ladderworks/gui/tools.py" line="95"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <location filename="../ladderworks/gui/tools.py" line="96"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <location filename="../ladderworks/gui/tools.py" line="97"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <location filename="../ladderworks/gui/tools.py" line="98"/>
         <source>Function</source>
         <translation>Function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <location filename="../ladderworks/gui/tools.py" line="99"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <location filename="../ladderworks/gui/tools.py" line="100"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <location filename="../ladderworks/gui/tools.py" line="108"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Click an element or drag over cells to select; right-click: cut, copy, paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="102"/>
+        <location filename="../ladderworks/gui/tools.py" line="110"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="104"/>
+        <location filename="../ladderworks/gui/tools.py" line="112"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="106"/>
+        <location filename="../ladderworks/gui/tools.py" line="114"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <location filename="../ladderworks/gui/tools.py" line="116"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
+        <translation>Click a cell to place a SET coil (bit := 1 while the logic is 1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="120"/>
+        <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
+        <translation>Click a cell to place an RST coil (bit := 0 while the logic is 1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="122"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Click a contact or coil to turn it into its inverse</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <location filename="../ladderworks/gui/tools.py" line="124"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <location filename="../ladderworks/gui/tools.py" line="126"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <location filename="../ladderworks/gui/tools.py" line="128"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Click the start of an empty row, type the comment, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <location filename="../ladderworks/gui/tools.py" line="130"/>
         <source>Click an element to delete it</source>
         <translation>Click an element to delete it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="119"/>
+        <location filename="../ladderworks/gui/tools.py" line="131"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Choose a function in the list, click the diagram, fill its table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="121"/>
+        <location filename="../ladderworks/gui/tools.py" line="133"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Click a cell to insert an empty row before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="123"/>
+        <location filename="../ladderworks/gui/tools.py" line="135"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Click a cell to insert an empty row after it</translation>
     </message>
@@ -2027,14 +2123,24 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="74"/>
+        <location filename="../ladderworks/gui/palette.py" line="91"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="75"/>
+        <location filename="../ladderworks/gui/palette.py" line="92"/>
         <source>Function:</source>
         <translation>Function:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="93"/>
+        <source>Seed manual instructions</source>
+        <translation>Seed manual instructions</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="94"/>
+        <source>FANUC PMC instructions</source>
+        <translation>FANUC PMC instructions</translation>
     </message>
 </context>
 </TS>

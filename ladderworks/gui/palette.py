@@ -53,6 +53,7 @@ class ToolPalette(QDockWidget):
                 self.functions.addItem(name, name)
         self.functions.setCurrentIndex(1)
         self.functions.currentIndexChanged.connect(self._on_function)
+        self.functions.activated.connect(self._on_function)  # chosen again: the tool again
         layout.addWidget(self.functions)
         layout.addStretch(1)
         body.setMaximumWidth(230)
