@@ -620,13 +620,13 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
-        <source>subprogram P{0} to P{1}</source>
-        <translation>subprogram P{0} to P{1}</translation>
+        <source>P{0} to P{1}</source>
+        <translation>P{0} to P{1}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
-        <source>label L{0} to L{1}</source>
-        <translation>label L{0} to L{1}</translation>
+        <source>L{0} to L{1}</source>
+        <translation>L{0} to L{1}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
@@ -639,7 +639,7 @@
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="149"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="148"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
@@ -2123,22 +2123,22 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="91"/>
+        <location filename="../ladderworks/gui/palette.py" line="101"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="92"/>
+        <location filename="../ladderworks/gui/palette.py" line="102"/>
         <source>Function:</source>
         <translation>Function:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="93"/>
+        <location filename="../ladderworks/gui/palette.py" line="103"/>
         <source>Seed manual instructions</source>
         <translation>Seed manual instructions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="94"/>
+        <location filename="../ladderworks/gui/palette.py" line="104"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC instructions</translation>
     </message>

@@ -620,18 +620,18 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
-        <source>subprogram P{0} to P{1}</source>
-        <translation>alt program P{0} ile P{1} arası</translation>
+        <source>P{0} to P{1}</source>
+        <translation>P{0} ile P{1} arası</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
-        <source>label L{0} to L{1}</source>
-        <translation>etiket L{0} ile L{1} arası</translation>
+        <source>L{0} to L{1}</source>
+        <translation>L{0} ile L{1} arası</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
         <source>constant or address, kept as written</source>
-        <translation>sabit veya adres, yazıldığı gibi saklanır</translation>
+        <translation>sabit veya adres, yazıldığı gibi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
@@ -639,7 +639,7 @@
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="149"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="148"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
@@ -2123,22 +2123,22 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="91"/>
+        <location filename="../ladderworks/gui/palette.py" line="101"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="92"/>
+        <location filename="../ladderworks/gui/palette.py" line="102"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="93"/>
+        <location filename="../ladderworks/gui/palette.py" line="103"/>
         <source>Seed manual instructions</source>
         <translation>Kılavuzdaki komutlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="94"/>
+        <location filename="../ladderworks/gui/palette.py" line="104"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC komutları</translation>
     </message>

@@ -44,10 +44,10 @@ def allowed_text(param: Param) -> str:
     if param.kind is ParamKind.MASK:
         return QCoreApplication.translate("FunctionDialog", "up to 4 binary digits, e.g. 1111")
     if param.kind is ParamKind.PROGRAM:
-        return QCoreApplication.translate("FunctionDialog", "subprogram P{0} to P{1}").format(
+        return QCoreApplication.translate("FunctionDialog", "P{0} to P{1}").format(
             param.lo, param.hi)
     if param.kind is ParamKind.LABEL:
-        return QCoreApplication.translate("FunctionDialog", "label L{0} to L{1}").format(
+        return QCoreApplication.translate("FunctionDialog", "L{0} to L{1}").format(
             param.lo, param.hi)
     if param.kind is ParamKind.RAW:
         return QCoreApplication.translate(
@@ -134,20 +134,20 @@ class FunctionDialog(QDialog):
         rows = sum(self.table.rowHeight(row) for row in range(self.table.rowCount()))
         header = self.table.horizontalHeader().sizeHint().height()
         self.table.setMinimumHeight(header + rows + 2 * self.table.frameWidth() + 2)
+        self.table.setVisible(bool(self._params))  # SPE: nothing to fill in
+        self._no_params.setVisible(not self._params)
         self.adjustSize()
         self.resize(max(self.width(), 560), self.height())
         if self._params:
             self.table.setCurrentCell(0, 1)
-        else:  # SPE, CALLU's P only ... : nothing to fill in
-            self.table.hide()
-        self._no_params.setVisible(not self._params)
 
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
         name, title = instruction_label(self.spec), instruction_title(self.spec)
         self.setWindowTitle(f"{name} — {title}")
         self._title.setText(QCoreApplication.translate(
-            "FunctionDialog", "{0} — {1}: fill in the parameters").format(name, title))
+            "FunctionDialog", "{0} — {1}: fill in the parameters").format(name, title)
+            if self._params else f"{name} — {title}")
         self._no_params.setText(QCoreApplication.translate(
             "FunctionDialog", "This instruction has no parameters."))
         self._comment_label.setText(QCoreApplication.translate(

@@ -7,7 +7,9 @@ from PySide6.QtGui import QAction, QFont, QStandardItemModel
 from PySide6.QtWidgets import (
     QComboBox,
     QDockWidget,
+    QFrame,
     QLabel,
+    QScrollArea,
     QSizePolicy,
     QToolButton,
     QVBoxLayout,
@@ -57,7 +59,14 @@ class ToolPalette(QDockWidget):
         layout.addWidget(self.functions)
         layout.addStretch(1)
         body.setMaximumWidth(230)
-        self.setWidget(body)
+        scroll = QScrollArea(self)  # fifteen tools: scroll rather than overlap on small screens
+        scroll.setObjectName("palette_scroll")
+        scroll.setWidget(body)
+        scroll.setWidgetResizable(True)
+        scroll.setFrameShape(QFrame.Shape.NoFrame)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        scroll.setMaximumWidth(body.maximumWidth() + scroll.verticalScrollBar().sizeHint().width())
+        self.setWidget(scroll)
         self.retranslate()
 
     def _add_group_title(self) -> None:

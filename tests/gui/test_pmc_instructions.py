@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QLineEdit
+from PySide6.QtWidgets import QLabel, QLineEdit
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.il import parse, print_program
@@ -147,7 +147,9 @@ def test_range_compare_box(drawer: Drawer, window: MainWindow) -> None:
 def test_subprogram_end_has_no_inputs_and_no_parameters(drawer: Drawer,
                                                         window: MainWindow) -> None:
     dialog = open_box(drawer, "SPE", 0, 0)
-    assert not dialog.table.isVisible() and dialog._no_params.isVisible()
+    note = dialog.findChild(QLabel, "function_no_params")
+    assert not dialog.table.isVisible() and note.isVisible()
+    assert dialog.windowTitle() == "SPE — End of subprogram"
     with drawer.qtbot.waitSignal(dialog.accepted):
         dialog.buttons.button(dialog.buttons.StandardButton.Ok).click()
     assert_program(window, "SPE")
@@ -157,7 +159,7 @@ def test_call_box_table_asks_for_a_subprogram(drawer: Drawer) -> None:
     drawer.element(0, 0, 0, "I", "X1.0")
     dialog = open_box(drawer, "CALL", 0, 1)
     assert dialog.table.item(0, 0).text() == "Subprogram"
-    assert dialog.table.item(0, 2).text() == "subprogram P1 to P5000"
+    assert dialog.table.item(0, 2).text() == "P1 to P5000"
     dialog.reject()
 
 

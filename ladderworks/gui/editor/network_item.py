@@ -193,7 +193,7 @@ class NetworkItem(QGraphicsItem):
             pin = box.pins[index] if index < len(box.pins) else index
             py = y + pin * CELL_H + CELL_H / 2
             painter.drawLine(QPointF(x, py), QPointF(x + 10, py))
-            painter.drawText(QRectF(x + 12, py - 7, 40, 14), Qt.AlignmentFlag.AlignLeft, name)
+            painter.drawText(QRectF(x + 12, py - 7, 60, 14), Qt.AlignmentFlag.AlignLeft, name)
         if box.has_output:
             py = y + CELL_H / 2
             painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
