@@ -175,22 +175,27 @@
 <context>
     <name>Diagnostic</name>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>{count} byte(s) here are not valid {encoding}; they are kept as they are</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>this is not a ladder program (no %@ section and no instruction)</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>line not understood in section {section}: &apos;{text}&apos;</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="127"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: the number is too long</translation>
     </message>
@@ -500,22 +505,22 @@
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="130"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="117"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="132"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="122"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
@@ -624,67 +629,87 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
         <source>one of {0}</source>
         <translation>one of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
         <source>{0} to {1}</source>
         <translation>{0} to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte address ({0} bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
         <source>byte address</source>
         <translation>byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
         <source>constant or byte address</source>
         <translation>constant or byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>up to 4 binary digits, e.g. 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <source>P{0} to P{1}</source>
+        <translation>P{0} to P{1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <source>L{0} to L{1}</source>
+        <translation>L{0} to L{1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <source>constant or address, kept as written</source>
+        <translation>constant or address, kept as written</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
         <source>values separated by spaces</source>
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="135"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="148"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="151"/>
+        <source>This instruction has no parameters.</source>
+        <translation>This instruction has no parameters.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="141"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="142"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="157"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="143"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="192"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -710,113 +735,114 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="333"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="367"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="645"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="337"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="376"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="652"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="344"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="639"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="352"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="634"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="646"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="357"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="656"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="665"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="361"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="672"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="372"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="381"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="374"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="373"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="392"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="388"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="399"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="408"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="409"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="418"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="444"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="448"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="455"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="459"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="483"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="490"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Address, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="458"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="494"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="563"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="584"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="465"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="501"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="570"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="591"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="299"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="553"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="300"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="557"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="564"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="683"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="690"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="702"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="704"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="711"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="781"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="788"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -1167,154 +1193,209 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="44"/>
+        <location filename="../ladderworks/gui/translation.py" line="50"/>
         <source>Timer number</source>
         <translation>Timer number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="45"/>
+        <location filename="../ladderworks/gui/translation.py" line="51"/>
         <source>Preset</source>
         <translation>Preset</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="46"/>
+        <location filename="../ladderworks/gui/translation.py" line="52"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="47"/>
+        <location filename="../ladderworks/gui/translation.py" line="53"/>
         <source>Timer/counter register</source>
         <translation>Timer/counter register</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="48"/>
+        <location filename="../ladderworks/gui/translation.py" line="54"/>
         <source>Code signal</source>
         <translation>Code signal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="49"/>
+        <location filename="../ladderworks/gui/translation.py" line="55"/>
         <source>Decode specification</source>
         <translation>Decode specification</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="50"/>
+        <location filename="../ladderworks/gui/translation.py" line="56"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="51"/>
+        <location filename="../ladderworks/gui/translation.py" line="57"/>
         <source>First number</source>
         <translation>First number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="52"/>
+        <location filename="../ladderworks/gui/translation.py" line="58"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="53"/>
+        <location filename="../ladderworks/gui/translation.py" line="59"/>
         <source>Counter number</source>
         <translation>Counter number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="54"/>
+        <location filename="../ladderworks/gui/translation.py" line="60"/>
         <source>Number of positions</source>
         <translation>Number of positions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="55"/>
+        <location filename="../ladderworks/gui/translation.py" line="61"/>
         <source>Current position</source>
         <translation>Current position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="56"/>
+        <location filename="../ladderworks/gui/translation.py" line="62"/>
         <source>Target position</source>
         <translation>Target position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="57"/>
+        <location filename="../ladderworks/gui/translation.py" line="63"/>
         <source>Table size</source>
         <translation>Table size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="58"/>
+        <location filename="../ladderworks/gui/translation.py" line="64"/>
         <source>Index</source>
         <translation>Index</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="59"/>
+        <location filename="../ladderworks/gui/translation.py" line="65"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="60"/>
+        <location filename="../ladderworks/gui/translation.py" line="66"/>
         <source>Table values</source>
         <translation>Table values</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="61"/>
+        <location filename="../ladderworks/gui/translation.py" line="67"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="62"/>
+        <location filename="../ladderworks/gui/translation.py" line="68"/>
         <source>High 4-bit mask</source>
         <translation>High 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="63"/>
+        <location filename="../ladderworks/gui/translation.py" line="69"/>
         <source>Low 4-bit mask</source>
         <translation>Low 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="64"/>
+        <location filename="../ladderworks/gui/translation.py" line="70"/>
         <source>OR data</source>
         <translation>OR data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="65"/>
+        <location filename="../ladderworks/gui/translation.py" line="71"/>
         <source>Data</source>
         <translation>Data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="66"/>
+        <location filename="../ladderworks/gui/translation.py" line="72"/>
         <source>Number of coils</source>
         <translation>Number of coils</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="67"/>
+        <location filename="../ladderworks/gui/translation.py" line="73"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Input format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="68"/>
+        <location filename="../ladderworks/gui/translation.py" line="74"/>
         <source>Compared data</source>
         <translation>Compared data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="69"/>
+        <location filename="../ladderworks/gui/translation.py" line="75"/>
         <source>Searched data</source>
         <translation>Searched data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="70"/>
+        <location filename="../ladderworks/gui/translation.py" line="76"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="72"/>
+        <location filename="../ladderworks/gui/translation.py" line="78"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="73"/>
+        <location filename="../ladderworks/gui/translation.py" line="79"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="74"/>
+        <location filename="../ladderworks/gui/translation.py" line="80"/>
         <source>Constant</source>
         <translation>Constant</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="81"/>
+        <source>Edge number</source>
+        <translation>Edge number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="82"/>
+        <source>Number of bytes</source>
+        <translation>Number of bytes</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="83"/>
+        <source>Operand</source>
+        <translation>Operand</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="84"/>
+        <source>Limit 1</source>
+        <translation>Limit 1</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="85"/>
+        <source>Limit 2</source>
+        <translation>Limit 2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="86"/>
+        <source>Subprogram</source>
+        <translation>Subprogram</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="87"/>
+        <source>Label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="88"/>
+        <source>DI/DO group</source>
+        <translation>DI/DO group</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="89"/>
+        <source>Control data</source>
+        <translation>Control data</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="90"/>
+        <source>Number of messages</source>
+        <translation>Number of messages</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="93"/>
+        <source>Parameter {0}</source>
+        <translation>Parameter {0}</translation>
     </message>
 </context>
 <context>
@@ -1972,132 +2053,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="80"/>
+        <location filename="../ladderworks/gui/tools.py" line="86"/>
         <source>Select</source>
         <translation>Select</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="81"/>
+        <location filename="../ladderworks/gui/tools.py" line="87"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="82"/>
+        <location filename="../ladderworks/gui/tools.py" line="88"/>
         <source>NOT input</source>
         <translation>NOT input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="83"/>
+        <location filename="../ladderworks/gui/tools.py" line="89"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="84"/>
+        <location filename="../ladderworks/gui/tools.py" line="90"/>
         <source>NOT output</source>
         <translation>NOT output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="85"/>
+        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <source>SET coil</source>
+        <translation>SET coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <source>RST coil</source>
+        <translation>RST coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="93"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <location filename="../ladderworks/gui/tools.py" line="94"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <location filename="../ladderworks/gui/tools.py" line="95"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <location filename="../ladderworks/gui/tools.py" line="96"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <location filename="../ladderworks/gui/tools.py" line="97"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <location filename="../ladderworks/gui/tools.py" line="98"/>
         <source>Function</source>
         <translation>Function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <location filename="../ladderworks/gui/tools.py" line="99"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <location filename="../ladderworks/gui/tools.py" line="100"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <location filename="../ladderworks/gui/tools.py" line="108"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Click an element or drag over cells to select; right-click: cut, copy, paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="102"/>
+        <location filename="../ladderworks/gui/tools.py" line="110"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="104"/>
+        <location filename="../ladderworks/gui/tools.py" line="112"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="106"/>
+        <location filename="../ladderworks/gui/tools.py" line="114"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <location filename="../ladderworks/gui/tools.py" line="116"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
+        <translation>Click a cell to place a SET coil (bit := 1 while the logic is 1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="120"/>
+        <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
+        <translation>Click a cell to place an RST coil (bit := 0 while the logic is 1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="122"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Click a contact or coil to turn it into its inverse</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <location filename="../ladderworks/gui/tools.py" line="124"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <location filename="../ladderworks/gui/tools.py" line="126"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <location filename="../ladderworks/gui/tools.py" line="128"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Click the start of an empty row, type the comment, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <location filename="../ladderworks/gui/tools.py" line="130"/>
         <source>Click an element to delete it</source>
         <translation>Click an element to delete it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="119"/>
+        <location filename="../ladderworks/gui/tools.py" line="131"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Choose a function in the list, click the diagram, fill its table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="121"/>
+        <location filename="../ladderworks/gui/tools.py" line="133"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Click a cell to insert an empty row before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="123"/>
+        <location filename="../ladderworks/gui/tools.py" line="135"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Click a cell to insert an empty row after it</translation>
     </message>
@@ -2105,14 +2206,24 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="74"/>
+        <location filename="../ladderworks/gui/palette.py" line="101"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="75"/>
+        <location filename="../ladderworks/gui/palette.py" line="102"/>
         <source>Function:</source>
         <translation>Function:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="103"/>
+        <source>Seed manual instructions</source>
+        <translation>Seed manual instructions</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="104"/>
+        <source>FANUC PMC instructions</source>
+        <translation>FANUC PMC instructions</translation>
     </message>
 </context>
 </TS>

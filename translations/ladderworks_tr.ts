@@ -175,22 +175,27 @@
 <context>
     <name>Diagnostic</name>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>buradaki {count} bayt geçerli {encoding} değil; olduğu gibi korunur</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>bu bir ladder programı değil (%@ bölümü ve komut yok)</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>{section} bölümünde anlaşılamayan satır: &apos;{text}&apos;</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. parametre ({param}) {letter} ve bir sayı olmalı, bulunan &apos;{text}&apos;</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="127"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: sayı çok uzun</translation>
     </message>
@@ -500,22 +505,22 @@
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="130"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="117"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="132"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="122"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
@@ -624,67 +629,87 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
         <source>one of {0}</source>
         <translation>şunlardan biri: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
         <source>{0} to {1}</source>
         <translation>{0} ile {1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte adresi ({0} byte)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
         <source>byte address</source>
         <translation>byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
         <source>constant or byte address</source>
         <translation>sabit veya byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>en çok 4 ikili hane, örneğin 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <source>P{0} to P{1}</source>
+        <translation>P{0} ile P{1} arası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <source>L{0} to L{1}</source>
+        <translation>L{0} ile L{1} arası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <source>constant or address, kept as written</source>
+        <translation>sabit veya adres, yazıldığı gibi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
         <source>values separated by spaces</source>
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="135"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="148"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="151"/>
+        <source>This instruction has no parameters.</source>
+        <translation>Bu komutun parametresi yok.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="141"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
         <source>Parameter</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="142"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="157"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="143"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
         <source>Allowed</source>
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="192"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
     </message>
@@ -710,113 +735,114 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="333"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="367"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="645"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="337"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="376"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="652"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="344"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="639"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="352"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="634"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="646"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="357"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="656"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="665"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="361"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="672"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="372"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="381"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="374"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="373"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="392"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="388"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="399"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="408"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="409"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="418"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="444"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="448"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="455"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="459"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="483"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="490"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Adres, örneğin X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="458"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="494"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="563"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="584"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="465"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="501"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="570"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="591"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="299"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="553"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="300"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="557"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="564"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="683"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="690"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="702"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="704"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="711"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="781"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="788"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
@@ -1167,154 +1193,209 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="44"/>
+        <location filename="../ladderworks/gui/translation.py" line="50"/>
         <source>Timer number</source>
         <translation>Zamanlayıcı numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="45"/>
+        <location filename="../ladderworks/gui/translation.py" line="51"/>
         <source>Preset</source>
         <translation>Ayar değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="46"/>
+        <location filename="../ladderworks/gui/translation.py" line="52"/>
         <source>Accuracy</source>
         <translation>Hassasiyet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="47"/>
+        <location filename="../ladderworks/gui/translation.py" line="53"/>
         <source>Timer/counter register</source>
         <translation>Zamanlayıcı/sayıcı kaydı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="48"/>
+        <location filename="../ladderworks/gui/translation.py" line="54"/>
         <source>Code signal</source>
         <translation>Kod sinyali</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="49"/>
+        <location filename="../ladderworks/gui/translation.py" line="55"/>
         <source>Decode specification</source>
         <translation>Kod çözme tanımı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="50"/>
+        <location filename="../ladderworks/gui/translation.py" line="56"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="51"/>
+        <location filename="../ladderworks/gui/translation.py" line="57"/>
         <source>First number</source>
         <translation>İlk sayı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="52"/>
+        <location filename="../ladderworks/gui/translation.py" line="58"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="53"/>
+        <location filename="../ladderworks/gui/translation.py" line="59"/>
         <source>Counter number</source>
         <translation>Sayıcı numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="54"/>
+        <location filename="../ladderworks/gui/translation.py" line="60"/>
         <source>Number of positions</source>
         <translation>Pozisyon sayısı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="55"/>
+        <location filename="../ladderworks/gui/translation.py" line="61"/>
         <source>Current position</source>
         <translation>Mevcut pozisyon</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="56"/>
+        <location filename="../ladderworks/gui/translation.py" line="62"/>
         <source>Target position</source>
         <translation>Hedef pozisyon</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="57"/>
+        <location filename="../ladderworks/gui/translation.py" line="63"/>
         <source>Table size</source>
         <translation>Tablo boyu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="58"/>
+        <location filename="../ladderworks/gui/translation.py" line="64"/>
         <source>Index</source>
         <translation>İndeks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="59"/>
+        <location filename="../ladderworks/gui/translation.py" line="65"/>
         <source>Output</source>
         <translation>Çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="60"/>
+        <location filename="../ladderworks/gui/translation.py" line="66"/>
         <source>Table values</source>
         <translation>Tablo değerleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="61"/>
+        <location filename="../ladderworks/gui/translation.py" line="67"/>
         <source>Input</source>
         <translation>Giriş</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="62"/>
+        <location filename="../ladderworks/gui/translation.py" line="68"/>
         <source>High 4-bit mask</source>
         <translation>Üst 4 bit maskesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="63"/>
+        <location filename="../ladderworks/gui/translation.py" line="69"/>
         <source>Low 4-bit mask</source>
         <translation>Alt 4 bit maskesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="64"/>
+        <location filename="../ladderworks/gui/translation.py" line="70"/>
         <source>OR data</source>
         <translation>VEYA verisi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="65"/>
+        <location filename="../ladderworks/gui/translation.py" line="71"/>
         <source>Data</source>
         <translation>Veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="66"/>
+        <location filename="../ladderworks/gui/translation.py" line="72"/>
         <source>Number of coils</source>
         <translation>Çıkış sayısı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="67"/>
+        <location filename="../ladderworks/gui/translation.py" line="73"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Giriş formatı (0 sabit, 1 adres)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="68"/>
+        <location filename="../ladderworks/gui/translation.py" line="74"/>
         <source>Compared data</source>
         <translation>Karşılaştırılan veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="69"/>
+        <location filename="../ladderworks/gui/translation.py" line="75"/>
         <source>Searched data</source>
         <translation>Aranan veri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="70"/>
+        <location filename="../ladderworks/gui/translation.py" line="76"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand formatı (0 sabit, 1 adres)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="72"/>
+        <location filename="../ladderworks/gui/translation.py" line="78"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="73"/>
+        <location filename="../ladderworks/gui/translation.py" line="79"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="74"/>
+        <location filename="../ladderworks/gui/translation.py" line="80"/>
         <source>Constant</source>
         <translation>Sabit</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="81"/>
+        <source>Edge number</source>
+        <translation>Kenar numarası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="82"/>
+        <source>Number of bytes</source>
+        <translation>Bayt sayısı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="83"/>
+        <source>Operand</source>
+        <translation>Operand</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="84"/>
+        <source>Limit 1</source>
+        <translation>Sınır 1</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="85"/>
+        <source>Limit 2</source>
+        <translation>Sınır 2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="86"/>
+        <source>Subprogram</source>
+        <translation>Alt program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="87"/>
+        <source>Label</source>
+        <translation>Etiket</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="88"/>
+        <source>DI/DO group</source>
+        <translation>DI/DO grubu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="89"/>
+        <source>Control data</source>
+        <translation>Kontrol verisi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="90"/>
+        <source>Number of messages</source>
+        <translation>Mesaj sayısı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="93"/>
+        <source>Parameter {0}</source>
+        <translation>Parametre {0}</translation>
     </message>
 </context>
 <context>
@@ -1972,132 +2053,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="80"/>
+        <location filename="../ladderworks/gui/tools.py" line="86"/>
         <source>Select</source>
         <translation>SEÇİM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="81"/>
+        <location filename="../ladderworks/gui/tools.py" line="87"/>
         <source>Input</source>
         <translation>GİRİŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="82"/>
+        <location filename="../ladderworks/gui/tools.py" line="88"/>
         <source>NOT input</source>
         <translation>GİRİŞ DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="83"/>
+        <location filename="../ladderworks/gui/tools.py" line="89"/>
         <source>Output</source>
         <translation>ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="84"/>
+        <location filename="../ladderworks/gui/tools.py" line="90"/>
         <source>NOT output</source>
         <translation>ÇIKIŞ DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="85"/>
+        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <source>SET coil</source>
+        <translation>SET ÇIKIŞ</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <source>RST coil</source>
+        <translation>RST ÇIKIŞ</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="93"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <location filename="../ladderworks/gui/tools.py" line="94"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <location filename="../ladderworks/gui/tools.py" line="95"/>
         <source>Line</source>
         <translation>ÇİZGİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <location filename="../ladderworks/gui/tools.py" line="96"/>
         <source>Comment</source>
         <translation>YORUM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <location filename="../ladderworks/gui/tools.py" line="97"/>
         <source>Delete</source>
         <translation>SİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <location filename="../ladderworks/gui/tools.py" line="98"/>
         <source>Function</source>
         <translation>FONKSİYON</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <location filename="../ladderworks/gui/tools.py" line="99"/>
         <source>Insert row before</source>
         <translation>ÖNCEYE SATIR GİR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <location filename="../ladderworks/gui/tools.py" line="100"/>
         <source>Insert row after</source>
         <translation>SONRAYA SATIR GİR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <location filename="../ladderworks/gui/tools.py" line="108"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Bir eleman seçmek için tıklayın veya hücreler üzerinde sürükleyin; sağ tık: kes, kopyala, yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="102"/>
+        <location filename="../ladderworks/gui/tools.py" line="110"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Kontak (RD / AND) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="104"/>
+        <location filename="../ladderworks/gui/tools.py" line="112"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>DEĞİL kontak (RD.NOT / AND.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="106"/>
+        <location filename="../ladderworks/gui/tools.py" line="114"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Çıkış (WRT) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <location filename="../ladderworks/gui/tools.py" line="116"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>DEĞİL çıkış (WRT.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
+        <translation>SET çıkış koymak için hücreye tıklayın (mantık 1 iken bit := 1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="120"/>
+        <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
+        <translation>RST çıkış koymak için hücreye tıklayın (mantık 1 iken bit := 0)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="122"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Tersine çevirmek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <location filename="../ladderworks/gui/tools.py" line="124"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Altına paralel eklemek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <location filename="../ladderworks/gui/tools.py" line="126"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Birinci noktaya, sonra ikinci noktaya tıklayın: yatay veya dikey çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <location filename="../ladderworks/gui/tools.py" line="128"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Boş bir satırın başına tıklayın, yorumu yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <location filename="../ladderworks/gui/tools.py" line="130"/>
         <source>Click an element to delete it</source>
         <translation>Silmek için elemanın üzerine tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="119"/>
+        <location filename="../ladderworks/gui/tools.py" line="131"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Listeden fonksiyonu seçin, diyagrama tıklayın, özellik tablosunu doldurun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="121"/>
+        <location filename="../ladderworks/gui/tools.py" line="133"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Önüne boş satır girmek için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="123"/>
+        <location filename="../ladderworks/gui/tools.py" line="135"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Arkasına boş satır girmek için hücreye tıklayın</translation>
     </message>
@@ -2105,14 +2206,24 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="74"/>
+        <location filename="../ladderworks/gui/palette.py" line="101"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="75"/>
+        <location filename="../ladderworks/gui/palette.py" line="102"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="103"/>
+        <source>Seed manual instructions</source>
+        <translation>Kılavuzdaki komutlar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="104"/>
+        <source>FANUC PMC instructions</source>
+        <translation>FANUC PMC komutları</translation>
     </message>
 </context>
 </TS>
