@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel, QLineEdit
 from pytestqt.qtbot import QtBot
@@ -163,14 +162,12 @@ def test_call_box_table_asks_for_a_subprogram(drawer: Drawer) -> None:
     dialog.reject()
 
 
-@pytest.mark.xfail(strict=True, reason="`P5` / `L3` are read by the parser on branch `file`")
 def test_call_box(drawer: Drawer, window: MainWindow) -> None:
     drawer.element(0, 0, 0, "I", "X1.0")
     place_box(drawer, "CALL", 0, 1, ["P5"])
     assert_program(window, "RD X1.0\nCALL P5")
 
 
-@pytest.mark.xfail(strict=True, reason="`P5` / `L3` are read by the parser on branch `file`")
 def test_label_box_on_the_rail(drawer: Drawer, window: MainWindow) -> None:
     place_box(drawer, "LBL", 0, 0, ["L3"])
     assert_program(window, "LBL L3")

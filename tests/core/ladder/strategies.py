@@ -69,18 +69,14 @@ def _fits(logic: Logic) -> bool:
 # One line of text per FANUC PMC instruction (the seed's come from all_functions.LAD).
 PMC_EXAMPLES: dict[str, str] = {
     "DIFU": "DIFU 5", "DIFD": "DIFD 6", "MOVB": "MOVB R10 R11", "MOVW": "MOVW D932 R5488",
-    "MOVN": "MOVN 4 R10 R20", "MOVD": "MOVD R10 R20", "LOGAND": "LOGAND 1 R10 255 R11",
-    "LOGOR": "LOGOR 1001 R10 R12 R11", "EOR": "EOR 1001 D5764 R5242 R5242",
+    "MOVN": "MOVN 4 R10 R20", "MOVD": "MOVD R10 R20", "LOGAND": "AND 1 R10 255 R11",
+    "LOGOR": "OR 1001 R10 R12 R11", "EOR": "EOR 1001 D5764 R5242 R5242",
     "NOT": "NOT 1 R14 G12", "TMRBF": "TMRBF 270 30000", "CTRB": "CTRB 2 15",
     "RNGB": "RNGB R1 R2 R3", "RNGW": "RNGW R6056 R6058 R14", "RNGD": "RNGD R1 R5 R9",
     "CALL": "CALL P5", "CALLU": "CALLU P7", "SP": "SP P5", "SPE": "SPE", "JMPB": "JMPB L3",
     "JMPC": "JMPC L4", "LBL": "LBL L3", "AXCTL": "AXCTL 1 R6076", "WINDR": "WINDR R200",
     "WINDW": "WINDW R200", "EXIN": "EXIN R5472", "DISPB": "DISPB 2",
 }
-# Written `P5` / `L3`: the parser reads these parameters on branch `file` (issue #14); until it
-# is merged the generated programs leave these instructions out (tests/core/ladder/
-# test_pmc_boxes.py checks them at the grid level).
-NEEDS_PARSER = frozenset({"CALL", "CALLU", "SP", "JMPB", "JMPC", "LBL"})
 
 
 @lru_cache(maxsize=1)
@@ -92,8 +88,6 @@ def function_examples() -> dict[str, Instruction]:
         if ins.spec.kind.value != "basic":
             found.setdefault(ins.name, ins)
     for name, text in PMC_EXAMPLES.items():
-        if name in NEEDS_PARSER:
-            continue
         result = parse(f"%@3\n{text}\n%\n")
         assert result.ok, result.diagnostics
         found[name] = result.program.instructions()[0]
@@ -113,7 +107,7 @@ coils = st.builds(Coil, outputs, st.booleans(), comments, leads,
                   ).map(_plain_set_reset)
 _LOGIC = {True: logic_blocks(contacts(True)), False: logic_blocks(contacts(False))}
 _INPUTS = {True: logic_blocks(contacts(True), 4), False: logic_blocks(contacts(False), 4)}
-_NAMES = sorted(s.name for s in FUNCTIONS + ENDS if s.name not in NEEDS_PARSER)
+_NAMES = sorted(s.name for s in FUNCTIONS + ENDS)
 
 
 @st.composite
