@@ -29,6 +29,7 @@ class Area(StrEnum):
     T = "T"
     C = "C"
     K = "K"
+    E = "E"
 
 
 # Number of bytes in each area; byte numbers run 0 .. size-1.
@@ -43,6 +44,7 @@ AREA_SIZES: dict[Area, int] = {
     Area.T: 400,  # timer presets: 4 bytes (ms, binary) per timer 1..100
     Area.C: 80,  # counters: 4 bytes per counter 1..20 (preset, current value)
     Area.K: 100,  # keep relays K0..K99 (retained)
+    Area.E: 10000,  # extra relays E0..E9999 (FANUC 30i)
 }
 
 AREA_MEANING: dict[Area, str] = {
@@ -56,6 +58,7 @@ AREA_MEANING: dict[Area, str] = {
     Area.T: "timer preset",
     Area.C: "counter",
     Area.K: "keep relay",
+    Area.E: "extra relay",
 }
 
 # Areas the program may not write: inputs from the machine and the CNC.
