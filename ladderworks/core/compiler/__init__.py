@@ -30,6 +30,7 @@ __all__ = [
     "decode",
     "disassemble",
     "encode",
+    "to_ops",
 ]
 
 

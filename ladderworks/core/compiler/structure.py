@@ -89,9 +89,8 @@ class _Builder:
         self.unit_of: list[Unit | None] = [None] * len(items)
 
     def build(self) -> Structure:
-        flows = [spec.flow for spec, _ in self.items]
-        level = 1 if Flow.LEVEL_END in flows and any(
-            spec.flow is Flow.LEVEL_END and spec.level == 1 for spec, _ in self.items) else 2
+        ends = [spec.level for spec, _ in self.items if spec.flow is Flow.LEVEL_END]
+        level = 1 if ends and ends[0] == 1 else 2  # no END1 first: the program is level 2
         current: Unit | None = Unit(f"L{level}", level, 0, 0, 0)
         sub_area = False
         ended = False
