@@ -3,6 +3,8 @@ that compiles always generates scan code that runs (issue #17 item 4)."""
 
 from __future__ import annotations
 
+from contextlib import suppress
+
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -36,11 +38,11 @@ def _network(draw: st.DrawFn) -> list[str]:
     if kind == "logic":
         return head + draw(_more) + [draw(_coil)] + ([draw(_coil)] if draw(st.booleans()) else [])
     if kind in ("jmp", "com"):
-        return head + [f"{kind.upper()} {draw(st.sampled_from([0, 0, 1, 2]))}"]
+        return [*head, f"{kind.upper()} {draw(st.sampled_from([0, 0, 1, 2]))}"]
     if kind in ("jmpe", "come", "spe", "end1", "end2", "end"):
         return [kind.upper()]
     if kind == "call":
-        return head + [f"CALL {draw(_program_number)}"]
+        return [*head, f"CALL {draw(_program_number)}"]
     if kind == "callu":
         return [f"CALLU {draw(_program_number)}"]
     if kind == "sp":
@@ -48,8 +50,8 @@ def _network(draw: st.DrawFn) -> list[str]:
     if kind == "lbl":
         return [f"LBL {draw(_label)}"]
     if kind in ("jmpb", "jmpc"):
-        return head + [f"{kind.upper()} {draw(_label)}"]
-    return head + ["SUB.250 R0 3", draw(_coil)]
+        return [*head, f"{kind.upper()} {draw(_label)}"]
+    return [*head, "SUB.250 R0 3", draw(_coil)]
 
 
 @st.composite
@@ -63,19 +65,19 @@ def _body(draw: st.DrawFn, program: int, programs: int) -> list[str]:
             lines += head + draw(_series) + [draw(_coil)]
         elif roll < 6:
             kind = draw(st.sampled_from(["JMP", "COM"]))
-            inner = head + [draw(_coil)]
-            lines += draw(_logic) + [f"{kind} 0"] + inner + [f"{kind}E"]
+            inner = [*head, draw(_coil)]
+            lines += [*draw(_logic), f"{kind} 0", *inner, f"{kind}E"]
         elif roll < 7 and program < programs:
             callee = draw(st.integers(program + 1, programs))
-            lines += (head + [f"CALL P{callee}"]) if draw(st.booleans()) else [f"CALLU P{callee}"]
+            lines += ([*head, f"CALL P{callee}"]) if draw(st.booleans()) else [f"CALLU P{callee}"]
         elif roll < 8:
             label = draw(st.integers(1, 3))
             if f"LBL L{label}" not in lines:
-                lines += [f"LBL L{label}"] + draw(_logic) + [draw(_coil)]
+                lines += [f"LBL L{label}", *draw(_logic), draw(_coil)]
                 target = draw(st.sampled_from([label, label, 1, 2, 3]))
-                lines += draw(_logic) + [f"JMPB L{target}"]
+                lines += [*draw(_logic), f"JMPB L{target}"]
         else:
-            lines += head + ["SUB.250 R0 3", draw(_coil)]
+            lines += [*head, "SUB.250 R0 3", draw(_coil)]
     return lines
 
 
@@ -83,7 +85,7 @@ def _body(draw: st.DrawFn, program: int, programs: int) -> list[str]:
 def _structured(draw: st.DrawFn) -> list[list[str]]:
     """A program with levels and subprograms, then maybe one line dropped or one added."""
     programs = draw(st.integers(0, 3))
-    lines = draw(_body(0, programs)) + ["END1"] + draw(_body(0, programs)) + ["END2"]
+    lines = [*draw(_body(0, programs)), "END1", *draw(_body(0, programs)), "END2"]
     for number in range(1, programs + 1):
         lines += [f"SP P{number}", *draw(_body(number, programs)), "SPE"]
     lines.append("END")
@@ -107,7 +109,5 @@ def test_check_errors_exactly_when_compile_refuses(networks: list[list[str]]) ->
         return
     engine = ScanEngine(result.binary)  # generates: never raises for a checked program
     engine.monitored = True
-    try:
-        engine.run_scans(2)
-    except ScanLoopError:
-        pass  # a backward JMPB on an always-true condition: the documented run-time stop
+    with suppress(ScanLoopError):  # a backward JMPB on an always-true condition: the
+        engine.run_scans(2)  # documented run-time stop
