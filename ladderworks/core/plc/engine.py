@@ -73,6 +73,7 @@ class ScanEngine:
         self.force_table = ForceTable()
         self.trace: TraceSampler | None = None
         self.power_flow = bytearray(len(self.program.ops))
+        self._flow = [0] * len(self.program.ops)  # what the monitored code writes
         # every change of the A area, with the time of the scan that made it (newest last)
         self.alarm_log: deque[tuple[int, bytes]] = deque(maxlen=ALARM_LOG_CAPACITY)
         self._alarm_bits = bytes(self.memory.areas[Area.A])
@@ -111,8 +112,9 @@ class ScanEngine:
             self._system_relays(now)
             self.force_table.apply(self.memory)
             try:
-                self._current.scan(ctx, self.power_flow,
-                                   self.scan_count % self.divisions == 0)
+                self._current.scan(ctx, self._flow, self.scan_count % self.divisions == 0)
+                if self._monitored:
+                    self.power_flow[:] = bytes(self._flow)
             finally:
                 self.force_table.apply(self.memory)
             alarms = self.memory.areas[Area.A]
@@ -161,6 +163,7 @@ class ScanEngine:
             for state in self._states:
                 state.clear()
             self.power_flow[:] = bytes(len(self.power_flow))
+            self._flow[:] = [0] * len(self._flow)
 
     # -- monitoring ----------------------------------------------------------------------
 
