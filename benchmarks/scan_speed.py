@@ -24,8 +24,11 @@ from ladderworks.core.il import parse, parse_file
 from ladderworks.core.plc.engine import ScanEngine
 
 STEPS = 35_000
-X22 = Path(__file__).resolve().parents[1].parent / "shared" / "real-programs" / \
-    "FANUC_STUDER_X22_P036.txt"
+_ROOT = Path(__file__).resolve().parents[1]
+# <repo root>/../shared (the main checkout), or two levels up from a worktree in /work/wt/
+X22 = next((base / "shared" / "real-programs" / "FANUC_STUDER_X22_P036.txt"
+            for base in (_ROOT.parent, _ROOT.parent.parent)
+            if (base / "shared" / "real-programs").is_dir()), _ROOT / "missing")
 SEED = 2024
 
 
