@@ -480,6 +480,81 @@
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
+        <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>LBL inside a JMP or COM range</source>
+        <translation>LBL inside a JMP or COM range</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>no LBL L{label} where this jump can reach it</source>
+        <translation>no LBL L{label} where this jump can reach it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>label L{label} is defined twice in this program unit</source>
+        <translation>label L{label} is defined twice in this program unit</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>JMPC is only allowed inside a subprogram</source>
+        <translation>JMPC is only allowed inside a subprogram</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>subprogram P{program} does not exist</source>
+        <translation>subprogram P{program} does not exist</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>calling P{program} here makes a subprogram call itself</source>
+        <translation>calling P{program} here makes a subprogram call itself</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>calls through P{program} nest deeper than {limit} subprograms</source>
+        <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>SP without a matching SPE</source>
+        <translation>SP without a matching SPE</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>SPE without an SP before it</source>
+        <translation>SPE without an SP before it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>subprogram P{program} is defined twice</source>
+        <translation>subprogram P{program} is defined twice</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>only subprograms (SP ... SPE) may follow the first SP</source>
+        <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>{name} cannot end level {level}</source>
+        <translation>{name} cannot end level {level}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>instruction after END, the end of the program</source>
+        <translation>instruction after END, the end of the program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
+        <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
+    </message>
+    <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>

@@ -480,6 +480,81 @@
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
+        <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {line}. satırda)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>LBL inside a JMP or COM range</source>
+        <translation>JMP veya COM aralığı içinde LBL</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>no LBL L{label} where this jump can reach it</source>
+        <translation>bu atlamanın ulaşabileceği yerde LBL L{label} yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>label L{label} is defined twice in this program unit</source>
+        <translation>L{label} etiketi bu program biriminde iki kez tanımlı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>JMPC is only allowed inside a subprogram</source>
+        <translation>JMPC yalnızca bir alt program içinde kullanılabilir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>subprogram P{program} does not exist</source>
+        <translation>P{program} alt programı yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>calling P{program} here makes a subprogram call itself</source>
+        <translation>burada P{program} çağrısı bir alt programın kendini çağırmasına yol açıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>calls through P{program} nest deeper than {limit} subprograms</source>
+        <translation>P{program} üzerinden çağrılar {limit} alt programdan daha derine iniyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>SP without a matching SPE</source>
+        <translation>eşleşen SPE olmadan SP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>SPE without an SP before it</source>
+        <translation>önünde SP olmayan SPE</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>subprogram P{program} is defined twice</source>
+        <translation>P{program} alt programı iki kez tanımlı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>only subprograms (SP ... SPE) may follow the first SP</source>
+        <translation>ilk SP'den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>{name} cannot end level {level}</source>
+        <translation>{name} {level}. seviyeyi bitiremez</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>instruction after END, the end of the program</source>
+        <translation>program sonu END'den sonra komut</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
+        <translation>L{label} etiketine geri atlama bir taramada {limit} kereden fazla tekrarlandı</translation>
+    </message>
+    <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>

@@ -132,3 +132,28 @@ def test_run_with_a_missing_named_parameter_file(
     code, _, err = run(capsys, "run", str(EXAMPLES / "alarm.LAD"), "--params",
                        str(tmp_path / "none.prm"))
     assert code == 2 and err.startswith("ladderworks-cli: ")
+
+
+def test_run_with_level_2_divisions(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.core.compiler import compile
+    from tests.core.plc.conftest import build
+
+    out = tmp_path / "levels.bin"
+    out.write_bytes(compile(build("RD.NOT R0.1\nWRT R0.1\nEND1\nRD.NOT R0.0\nWRT R0.0\nEND2")))
+    code, text, _ = run(capsys, "run", str(out), "--scans", "4", "--divisions", "2",
+                        "--trace", "R0.1,R0.0")
+    assert code == 0
+    assert text == "time_ms,R0.1,R0.0\n0,1,1\n8,0,1\n16,1,0\n24,0,0\n"
+    assert run(capsys, "run", str(out), "--divisions", "0")[0] == 2
+
+
+def test_an_endless_label_loop_stops_run_with_exit_1(tmp_path: Path,
+                                                    capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.core.compiler import compile
+    from tests.core.plc.conftest import build
+
+    out = tmp_path / "loop.bin"
+    out.write_bytes(compile(build("RD X0.0\nWRT Y0.0\nLBL L1\nRD R9091.1\nJMPB L1")))
+    code, _, err = run(capsys, "run", str(out), "--scans", "3")
+    assert code == 1
+    assert "endless-loop" in err and ":3:" in err
