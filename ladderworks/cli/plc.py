@@ -48,8 +48,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                      help="preset of counter N")
     run.add_argument("--params", metavar="PATH",
                      help="PMC parameter file (default: FILE.prm beside FILE, if there is one)")
-    run.add_argument("--print", nargs="+", action="extend", default=[], metavar="ADDR",
-                     dest="print_", help="print ADDR = VALUE lines at the end")
+    run.add_argument("--print", action="append", default=[], metavar="ADDR,...",
+                     dest="print_", help="print ADDR = VALUE lines at the end (repeatable)")
     run.add_argument("--trace", metavar="ADDR,...", help="print a CSV trace of these")
     run.add_argument("--period", type=int, default=DEFAULT_PERIOD_MS, metavar="MS",
                      help="trace sampling period in ms")
@@ -164,7 +164,7 @@ def _run(args: argparse.Namespace) -> int:
                          _number(match.group(2), item)))
         timers = [_pair(item, "--timer", 1, 100) for item in args.timer]
         counters = [_pair(item, "--counter", 1, 20) for item in args.counter]
-        prints = [_target(text, args.file) for text in args.print_]
+        prints = [_target(text, args.file) for item in args.print_ for text in item.split(",")]
         traced = ([_target(text, args.file) for text in args.trace.split(",")]
                   if args.trace else [])
         if args.period <= 0 or args.scan_period <= 0:

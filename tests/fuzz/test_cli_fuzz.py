@@ -139,3 +139,18 @@ def test_huge_inputs(command: str, name: str, tmp_path: Path) -> None:
 @pytest.mark.parametrize("crasher", sorted(CRASHERS.glob("*")), ids=lambda p: p.name)
 def test_kept_crashers(command: str, crasher: Path, tmp_path: Path) -> None:
     assert_clean(command, crasher.read_bytes(), tmp_path)
+
+
+def test_lines_end_only_at_cr_and_lf(tmp_path: Path) -> None:
+    code, output = run_cli("check", CRASHERS / "line-breaks-in-comments.LAD", tmp_path)
+    assert code == 1
+    assert output.strip().splitlines() == [f"{CRASHERS / 'line-breaks-in-comments.LAD'}:8:8: "
+                                           "extra-operand WRT takes no operand, found 'extra'"]
+
+
+@pytest.mark.parametrize("name", ["not-a-program.png", "not-a-program.svg"])
+def test_a_file_that_is_not_a_program_says_so(name: str, tmp_path: Path) -> None:
+    code, output = run_cli("check", CRASHERS / name, tmp_path)
+    lines = output.strip().splitlines()
+    assert code == 1 and 1 <= len(lines) <= 3
+    assert "not-a-program" in lines[0]
