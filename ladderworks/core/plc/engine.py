@@ -162,6 +162,7 @@ class ScanEngine:
             self.memory.clear(*CLEARED_AREAS)
             for state in self._states:
                 state.clear()
+            self._ctx.power_on()  # DIFU/DIFD edge memories are shared by number, not per call
             self.power_flow[:] = bytes(len(self.power_flow))
             self._flow[:] = [0] * len(self._flow)
 
