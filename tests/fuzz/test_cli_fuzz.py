@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 from ladderworks.cli import main
 from ladderworks.core.instructions import ALL, PMC_FUNCTIONS
 from ladderworks.paths import EXAMPLES
+from tests.hypothesis_profiles import examples
 
 CRASHERS = Path(__file__).resolve().parent.parent / "data" / "fuzz"
 COMMANDS = ("check", "format", "ladder", "mnemonic", "compile", "run")
@@ -83,7 +84,7 @@ def _mutate(data: bytes, draw: st.DrawFn) -> bytes:
     return bytes(chunk)
 
 
-_SETTINGS = settings(deadline=None, suppress_health_check=[
+_SETTINGS = settings(max_examples=examples(300), deadline=None, suppress_health_check=[
     HealthCheck.too_slow, HealthCheck.function_scoped_fixture, HealthCheck.data_too_large])
 
 
