@@ -170,10 +170,9 @@ def shaped(networks: list[Network]) -> str:
 
 
 def engine_of(text: str) -> ScanEngine | None:
-    """An engine for a program given as ladder lines with P numbers (built in code)."""
-    from tests.core.plc.conftest import build
-
-    return ScanEngine(compile_ladder(build(text)))
+    """An engine for a program given as ladder lines (with `P` numbers, levels and SP/SPE)."""
+    result = parse(f"%@3\n{text}\n%\n")
+    return ScanEngine(compile_ladder(result.program)) if result.ok else None
 
 
 def report(title: str, steps: int, figures: dict[str, float]) -> None:
