@@ -175,27 +175,27 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="138"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>{count} byte(s) here are not valid {encoding}; they are kept as they are</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="141"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>this is not a ladder program (no %@ section and no instruction)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="144"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>line not understood in section {section}: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="147"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="127"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="150"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: the number is too long</translation>
     </message>
@@ -306,296 +306,296 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="56"/>
-        <source>no functional instruction has the number SUB {number}</source>
-        <translation>no functional instruction has the number SUB {number}</translation>
+        <source>SUB {number} is not in the instruction table: kept with its parameters, drawn as a box, simulated as W1 = ACT</source>
+        <translation>SUB {number} is not in the instruction table: kept with its parameters, drawn as a box, simulated as W1 = ACT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="58"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="59"/>
         <source>a parameter line &apos;{text}&apos; without a SUB instruction before it</source>
         <translation>a parameter line &apos;{text}&apos; without a SUB instruction before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="60"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="61"/>
         <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
         <translation>the file is neither UTF-8 nor Turkish Windows (cp1254) text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="62"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
         <source>syntax error at &apos;{text}&apos;</source>
         <translation>syntax error at &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="64"/>
         <source>open circuit: this element is not connected to the right side</source>
         <translation>open circuit: this element is not connected to the right side</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="65"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="66"/>
         <source>element not connected to the left rail</source>
         <translation>element not connected to the left rail</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="66"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
         <source>a coil must be at the right end of the network</source>
         <translation>a coil must be at the right end of the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
         <source>a coil cannot sit straight on the left rail</source>
         <translation>a coil cannot sit straight on the left rail</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="69"/>
         <source>bridge circuit: a vertical link joins two branches in the middle</source>
         <translation>bridge circuit: a vertical link joins two branches in the middle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="70"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
         <source>short circuit: a wire bypasses the element</source>
         <translation>short circuit: a wire bypasses the element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
         <source>the logic needs more than 8 stack levels (ST8)</source>
         <translation>the logic needs more than 8 stack levels (ST8)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="73"/>
         <source>power would flow right to left here; ladder flows left to right only</source>
         <translation>power would flow right to left here; ladder flows left to right only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="74"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="75"/>
         <source>the network has no coil or function</source>
         <translation>the network has no coil or function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="75"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
         <source>{name} needs its {count} control inputs connected</source>
         <translation>{name} needs its {count} control inputs connected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
         <source>this element has no address yet</source>
         <translation>this element has no address yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="78"/>
         <source>coils hang on different points of the logic; join them to one point</source>
         <translation>coils hang on different points of the logic; join them to one point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
         <source>only coils may follow the output of {name}</source>
         <translation>only coils may follow the output of {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="81"/>
         <source>one function box per network: put {name} in a network of its own</source>
         <translation>one function box per network: put {name} in a network of its own</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="82"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
         <source>cell ({row}, {col}) is outside the grid</source>
         <translation>cell ({row}, {col}) is outside the grid</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="84"/>
         <source>only coils go in the coil column (cell ({row}, {col}))</source>
         <translation>only coils go in the coil column (cell ({row}, {col}))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="85"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="86"/>
         <source>{name} does not fit here: a box needs two contact columns</source>
         <translation>{name} does not fit here: a box needs two contact columns</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="88"/>
         <source>there is no suitable element at cell ({row}, {col})</source>
         <translation>there is no suitable element at cell ({row}, {col})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
         <source>a line must be horizontal or vertical</source>
         <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="94"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="100"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="103"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="104"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="106"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="110"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="113"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="116"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="119"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="123"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="125"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="128"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="132"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="134"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="130"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="153"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="132"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="155"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="158"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="160"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>

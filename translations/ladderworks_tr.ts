@@ -175,27 +175,27 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="138"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>buradaki {count} bayt geçerli {encoding} değil; olduğu gibi korunur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="141"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>bu bir ladder programı değil (%@ bölümü ve komut yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="144"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>{section} bölümünde anlaşılamayan satır: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="147"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. parametre ({param}) {letter} ve bir sayı olmalı, bulunan &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="127"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="150"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: sayı çok uzun</translation>
     </message>
@@ -306,296 +306,296 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="56"/>
-        <source>no functional instruction has the number SUB {number}</source>
-        <translation>SUB {number} numaralı fonksiyon yok</translation>
+        <source>SUB {number} is not in the instruction table: kept with its parameters, drawn as a box, simulated as W1 = ACT</source>
+        <translation>SUB {number} komut tablosunda yok: parametreleriyle korunur, kutu olarak çizilir, W1 = ACT olarak simüle edilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="58"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="59"/>
         <source>a parameter line &apos;{text}&apos; without a SUB instruction before it</source>
         <translation>önünde SUB komutu olmayan parametre satırı &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="60"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="61"/>
         <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
         <translation>dosya ne UTF-8 ne de Türkçe Windows (cp1254) metni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="62"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
         <source>syntax error at &apos;{text}&apos;</source>
         <translation>&apos;{text}&apos; yerinde yazım hatası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="64"/>
         <source>open circuit: this element is not connected to the right side</source>
         <translation>açık devre: bu eleman sağ tarafa bağlı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="65"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="66"/>
         <source>element not connected to the left rail</source>
         <translation>eleman sol baraya bağlı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="66"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
         <source>a coil must be at the right end of the network</source>
         <translation>çıkış (bobin) devrenin sağ ucunda olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
         <source>a coil cannot sit straight on the left rail</source>
         <translation>çıkış (bobin) doğrudan sol baraya bağlanamaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="69"/>
         <source>bridge circuit: a vertical link joins two branches in the middle</source>
         <translation>köprü devre: dikey çizgi iki kolu ortadan birleştiriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="70"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
         <source>short circuit: a wire bypasses the element</source>
         <translation>kısa devre: bir çizgi elemanı atlıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
         <source>the logic needs more than 8 stack levels (ST8)</source>
         <translation>mantık 8&apos;den fazla yığın seviyesi (ST8) gerektiriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="73"/>
         <source>power would flow right to left here; ladder flows left to right only</source>
         <translation>burada enerji sağdan sola akardı; ladder yalnız soldan sağa akar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="74"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="75"/>
         <source>the network has no coil or function</source>
         <translation>devrede çıkış veya fonksiyon yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="75"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
         <source>{name} needs its {count} control inputs connected</source>
         <translation>{name} fonksiyonunun {count} kontrol girişi bağlanmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
         <source>this element has no address yet</source>
         <translation>bu elemanın henüz adresi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="78"/>
         <source>coils hang on different points of the logic; join them to one point</source>
         <translation>çıkışlar mantığın farklı noktalarına bağlı; tek noktaya bağlayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
         <source>only coils may follow the output of {name}</source>
         <translation>{name} çıkışından sonra yalnız çıkış (bobin) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="81"/>
         <source>one function box per network: put {name} in a network of its own</source>
         <translation>her devrede bir fonksiyon kutusu olur: {name} için ayrı bir devre kullanın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="82"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
         <source>cell ({row}, {col}) is outside the grid</source>
         <translation>({row}, {col}) hücresi ızgaranın dışında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="84"/>
         <source>only coils go in the coil column (cell ({row}, {col}))</source>
         <translation>çıkış sütununa yalnız çıkış konur (({row}, {col}) hücresi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="85"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="86"/>
         <source>{name} does not fit here: a box needs two contact columns</source>
         <translation>{name} buraya sığmıyor: fonksiyon kutusu iki kontak sütunu ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="88"/>
         <source>there is no suitable element at cell ({row}, {col})</source>
         <translation>({row}, {col}) hücresinde uygun eleman yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
         <source>a line must be horizontal or vertical</source>
         <translation>çizgi yatay veya dikey olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>panoda ladder elemanı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="94"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
         <source>JMP without a matching JMPE</source>
         <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
         <source>JMPE without a JMP before it</source>
         <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
         <source>COM without a matching COME</source>
         <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
         <source>COME without a COM before it</source>
         <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="100"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
         <source>coil {address} is written more than once</source>
         <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="103"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="104"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="106"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {line}. satırda)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>JMP veya COM aralığı içinde LBL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde LBL L{label} yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="110"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>L{label} etiketi bu program biriminde iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC yalnızca bir alt program içinde kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="113"/>
         <source>subprogram P{program} does not exist</source>
         <translation>P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>burada P{program} çağrısı bir alt programın kendini çağırmasına yol açıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="116"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>P{program} üzerinden çağrılar {limit} alt programdan daha derine iniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
         <source>SP without a matching SPE</source>
         <translation>eşleşen SPE olmadan SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="119"/>
         <source>SPE without an SP before it</source>
         <translation>önünde SP olmayan SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>P{program} alt programı iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
-        <translation>ilk SP'den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
+        <translation>ilk SP&apos;den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="123"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} {level}. seviyeyi bitiremez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
         <source>instruction after END, the end of the program</source>
-        <translation>program sonu END'den sonra komut</translation>
+        <translation>program sonu END&apos;den sonra komut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="125"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>L{label} etiketine geri atlama bir taramada {limit} kereden fazla tekrarlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="128"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="132"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="134"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="130"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="153"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="132"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="155"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="158"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="160"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>

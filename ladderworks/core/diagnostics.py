@@ -40,7 +40,8 @@ MESSAGES: dict[str, str] = {
     "param-choice": "{name}: parameter {index} ({param}) must be one of {choices}, found {value}",
     "param-mask":
         "{name}: parameter {index} ({param}) must be up to 4 binary digits, found '{text}'",
-    "unknown-sub": "no functional instruction has the number SUB {number}",
+    "unknown-sub": ("SUB {number} is not in the instruction table: kept with its parameters,"
+                    " drawn as a box, simulated as W1 = ACT"),
     "stray-parameter": "a parameter line '{text}' without a SUB instruction before it",
     "bad-encoding": "the file is neither UTF-8 nor Turkish Windows (cp1254) text",
     "syntax": "syntax error at '{text}'",

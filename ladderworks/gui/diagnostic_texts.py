@@ -54,7 +54,8 @@ def diagnostic_templates() -> dict[str, str]:
             '{name}: parameter {index} ({param}) must be up to 4 binary'
             " digits, found '{text}'"),
         "unknown-sub": translate(
-            "Diagnostic", 'no functional instruction has the number SUB {number}'),
+            "Diagnostic", "SUB {number} is not in the instruction table: kept with its"
+            " parameters, drawn as a box, simulated as W1 = ACT"),
         "stray-parameter": translate(
             "Diagnostic", "a parameter line '{text}' without a SUB instruction before it"),
         "bad-encoding": translate(

@@ -84,7 +84,7 @@ def _mutate(data: bytes, draw: st.DrawFn) -> bytes:
     return bytes(chunk)
 
 
-_SETTINGS = settings(max_examples=examples(300), deadline=None, suppress_health_check=[
+_SETTINGS = settings(max_examples=examples(200), deadline=None, suppress_health_check=[
     HealthCheck.too_slow, HealthCheck.function_scoped_fixture, HealthCheck.data_too_large])
 
 

@@ -47,7 +47,8 @@ def _box_rows(box: FunctionBox) -> list[tuple[str, str]]:
     for i in range(box.height):
         pin = pin_names.get(i, "")
         if i == 0:
-            label = "+" + f" {box.name} ".center(inner, "-") + "+"
+            title = box.spec.text_name if box.spec.known else f"SUB {box.spec.sub}"
+            label = "+" + f" {title} ".center(inner, "-") + "+"
         else:
             label = "|" + " " * inner + "|"
         param = words[i] if i < len(words) else ""
