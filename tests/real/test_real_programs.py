@@ -11,8 +11,9 @@ from ladderworks.core.address import Address, Area
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.diagnostics import has_errors
 from ladderworks.core.il import parse_file
+from ladderworks.core.il.printer import encode_program
 from ladderworks.core.ladder.art import draw_document
-from ladderworks.core.ladder.convert import program_to_ladder
+from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
 from ladderworks.core.plc.engine import ScanEngine
 from tests.real import PROGRAMS, real_program
 
@@ -77,3 +78,12 @@ def test_no_error_diagnostics_from_check(compiled: tuple[str, bytes]) -> None:
     from ladderworks.core.compiler import check
 
     assert not has_errors(check(result.program)), name
+
+
+def test_through_the_ladder_grid_and_back_byte_for_byte(compiled: tuple[str, bytes]) -> None:
+    name, _ = compiled
+    path = real_program(name)
+    document = program_to_ladder(parse_file(path).program)
+    program, diagnostics = ladder_to_program(document)
+    assert diagnostics == []  # FANUC boxes checked with the 30i ranges (TMRB 245 is valid)
+    assert encode_program(program) == path.read_bytes()

@@ -118,11 +118,18 @@ def parse_file(path: str | Path) -> ParseResult:
     return parse_bytes(Path(path).read_bytes())
 
 
-def parse(text: str) -> ParseResult:
-    """Parse program text; never raises for bad input, returns diagnostics instead."""
+def parse(text: str, dialect: str | None = None) -> ParseResult:
+    """Parse program text; never raises for bad input, returns diagnostics instead.
+
+    `dialect` "fanuc" reads the text as part of a FANUC program (its 30i ranges) even without
+    framing or labels, as the ladder editor does for a network of an open LADDER-III program.
+    """
     _lines, ends = split_with_ends(text)
     form = TextForm(newline=dominant_newline(ends), final_newline=not ends or ends[-1] != "")
-    return _FileParser(text, form).run()
+    parser = _FileParser(text, form)
+    if dialect == FANUC:
+        parser.dialect = FANUC
+    return parser.run()
 
 
 @dataclass(slots=True)
@@ -348,7 +355,7 @@ class _FileParser:
     def _parse_ladder(self, start: int, stop: int) -> None:
         scanned: list[_Line] = []
         lines = self.lines
-        if self.program.framed or any(
+        if self.program.framed or self.dialect == FANUC or any(
                 line.endswith(":") and _LABEL.match(line) for line in lines[start:stop]):
             self.dialect = FANUC
         seen: dict[str, _Line] = {}  # many lines repeat: scan each text once, share its words

@@ -77,10 +77,11 @@ def ladder_to_program(doc: LadderDocument) -> tuple[Program, list[Diagnostic]]:
         _adopt(program, doc.origin)
     diagnostics: list[Diagnostic] = []
     pending: list[str] = []
+    dialect = doc.origin.dialect if doc.origin is not None else "seed"
     for index, network in enumerate(doc.networks):
         if network.is_empty() and not network.comments:
             continue
-        instructions, found = network_to_instructions(network, index)
+        instructions, found = network_to_instructions(network, index, dialect)
         diagnostics.extend(found)
         if not instructions:
             pending.extend(draft_lines(network))

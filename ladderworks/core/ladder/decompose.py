@@ -132,9 +132,11 @@ def _reduce(edges: list[_Edge], left: int, target: int) -> Logic | _Edge:
     return min(inner or edges, key=lambda e: e.cell)
 
 
-def read_grid(network: LadderNetwork, index: int | None = None
+def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "seed"
               ) -> tuple[Rung | None, list[Diagnostic]]:
-    """The network's meaning, or None with diagnostics at the cells (None, [] when empty)."""
+    """The network's meaning, or None with diagnostics at the cells (None, [] when empty).
+
+    Box parameters are checked with the ranges of the program's `dialect` ("seed"/"fanuc")."""
     diags: list[Diagnostic] = []
 
     def report(code: str, cell: Cell, **args: object) -> None:
@@ -173,7 +175,7 @@ def read_grid(network: LadderNetwork, index: int | None = None
     output: int | None = None
     if box is not None:
         br, bc = box_anchor
-        problems = _box_param_problems(box)
+        problems = _box_param_problems(box, dialect)
         for problem in problems:
             report(problem.code, box_anchor, **problem.args)
         targets = [nets.net((br + p, bc)) for p in box.pins]
@@ -294,13 +296,13 @@ def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
     return rung, diags
 
 
-def _box_param_problems(box: FunctionBox) -> list[Diagnostic]:
+def _box_param_problems(box: FunctionBox, dialect: str = "seed") -> list[Diagnostic]:
     """The parser's complaints about a box's parameters (count, kinds, ranges)."""
     from ladderworks.core.il.printer import print_instruction
     from ladderworks.core.ladder.edits import function_params
 
     words = print_instruction(Instruction(box.name, params=box.params)).split()
-    return function_params(box.name, words[1:])[1]
+    return function_params(box.name, words[1:], dialect)[1]
 
 
 def _cycle_edge(edges: list[_Edge]) -> _Edge | None:
@@ -342,7 +344,8 @@ def _check_depth(rung: Rung, report: Callable[..., None]) -> None:
             depth = 0
 
 
-def network_to_instructions(network: LadderNetwork, index: int | None = None
+def network_to_instructions(network: LadderNetwork, index: int | None = None,
+                            dialect: str = "seed"
                             ) -> tuple[list[Instruction] | None, list[Diagnostic]]:
     """The instruction list of a drawn network, or None with the diagnostics at the cells.
 
@@ -350,7 +353,7 @@ def network_to_instructions(network: LadderNetwork, index: int | None = None
     means exactly the same gives its original coding back."""
     if network.listing is not None:
         return list(network.listing), []
-    rung, diags = read_grid(network, index)
+    rung, diags = read_grid(network, index, dialect)
     if rung is None:
         return None, diags
     code = code_rung(rung)

@@ -316,16 +316,17 @@ def set_params(network: LadderNetwork, row: int, col: int,
     return _change(network, work)
 
 
-def function_params(name: str, texts: list[str]) -> tuple[tuple[ParamValue, ...] | None,
-                                                           list[Diagnostic]]:
-    """Check parameter texts for a functional instruction exactly as the parser would."""
+def function_params(name: str, texts: list[str], dialect: str = "seed"
+                    ) -> tuple[tuple[ParamValue, ...] | None, list[Diagnostic]]:
+    """Check parameter texts for a functional instruction exactly as the parser would, with
+    the ranges of a program of `dialect` ("fanuc": the 30i ranges of a LADDER-III program)."""
     from ladderworks.core.il import parse
     from ladderworks.core.il.printer import print_instruction
     from ladderworks.core.il.program import Instruction
 
     head = print_instruction(Instruction(name))  # as the text names it (`AND` for LOGAND)
     text = "%@3\n" + " ".join([head, *texts]) + "\n%\n"
-    result = parse(text)
+    result = parse(text, dialect)
     if not result.ok:
         return None, [d for d in result.diagnostics if d.is_error]
     instructions = result.program.instructions()
