@@ -61,7 +61,7 @@ def implementation_of(spec: InstructionSpec,
         except (KeyError, LookupError):
             found = None
         if found is not None:
-            return found  # type: ignore[no-any-return]
+            return found
     return cnc_stub if not spec.known else None
 
 
