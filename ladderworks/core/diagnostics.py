@@ -1,4 +1,4 @@
-"""Diagnostics: errors and warnings as data (code, arguments, position), with English texts."""
+"""Errors and warnings as data (code, arguments, position); English texts marked for translation."""
 
 from __future__ import annotations
 
