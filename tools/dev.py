@@ -109,7 +109,8 @@ def commands(python: Path, name: str, args: list[str]) -> list[list[str]]:
     if name == "lint":
         return [[py, "-m", "ruff", "check", *LINTED]]
     if name == "test":
-        return [[py, "-m", "ruff", "check", *LINTED], [py, "-m", "pytest", "-q", *args]]
+        return [[py, "-m", "ruff", "check", *LINTED], [py, "-m", "mypy", "ladderworks"],
+                [py, "-m", "pytest", "-q", *args]]
     if name == "bench":
         return [[py, str(script), *args]
                 for script in sorted((CHECKOUT / "benchmarks").glob("*.py"))]

@@ -1,4 +1,4 @@
-"""Refresh translations/*.ts from the GUI sources with lupdate; list what is unfinished."""
+"""Refresh translations/*.ts with lupdate (GUI, core diagnostics); list what is unfinished."""
 
 from __future__ import annotations
 
@@ -11,6 +11,12 @@ import PySide6
 
 ROOT = Path(__file__).resolve().parent.parent
 LUPDATE = Path(PySide6.__file__).parent / "lupdate"
+
+
+def translated_sources() -> list[Path]:
+    """The files lupdate reads: the GUI, and the core's diagnostic templates (QT_TRANSLATE_NOOP)."""
+    gui = sorted((ROOT / "ladderworks" / "gui").rglob("*.py"))
+    return [*gui, ROOT / "ladderworks" / "core" / "diagnostics.py"]
 
 
 def unfinished(ts: Path) -> list[tuple[str, str]]:
@@ -52,7 +58,7 @@ def main() -> int:
             if "\t" in line:
                 english, turkish = line.split("\t", 1)
                 pairs[english] = turkish
-    sources = sorted(str(p) for p in (ROOT / "ladderworks" / "gui").rglob("*.py"))
+    sources = [str(p) for p in translated_sources()]
     for language in ("tr", "en"):
         ts = ROOT / "translations" / f"ladderworks_{language}.ts"
         command = [str(LUPDATE), "-silent", "-no-obsolete", *sources, "-ts", str(ts)]

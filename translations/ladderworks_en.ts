@@ -49,47 +49,47 @@
         <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="209"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="207"/>
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="210"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="208"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="212"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="210"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="212"/>
         <source>Alarm file...</source>
         <translation>Alarm file...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="217"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="215"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="216"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="219"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="217"/>
         <source>PLC time</source>
         <translation>PLC time</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="218"/>
         <source>Clock</source>
         <translation>Clock</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="219"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -175,429 +175,464 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="74"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>{count} byte(s) here are not valid {encoding}; they are kept as they are</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="76"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>this is not a ladder program (no %@ section and no instruction)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="78"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>line not understood in section {section}: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="147"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="80"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="84"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: the number is too long</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="18"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="26"/>
         <source>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</source>
         <translation>&apos;{text}&apos; is not an address (expected e.g. X2.1 or R100)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="20"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="28"/>
         <source>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</source>
         <translation>&apos;{text}&apos;: unknown area &apos;{area}&apos; (use X, Y, F, G, R, A, D, T, C or K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="22"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="30"/>
         <source>&apos;{text}&apos;: byte number out of range for area {area} ({ranges})</source>
         <translation>&apos;{text}&apos;: byte number out of range for area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="24"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="32"/>
         <source>&apos;{text}&apos;: bit number must be 0 to 7</source>
         <translation>&apos;{text}&apos;: bit number must be 0 to 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="25"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="33"/>
         <source>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</source>
         <translation>&apos;{text}&apos;: a bit address is needed here (e.g. {text}.0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="27"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="35"/>
         <source>&apos;{text}&apos;: a byte address is needed here, without a bit</source>
         <translation>&apos;{text}&apos;: a byte address is needed here, without a bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="29"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="37"/>
+        <source>&apos;{text}&apos;: the width after &apos;:&apos; must be 1, 2 or 4</source>
+        <translation>&apos;{text}&apos;: the width after &apos;:&apos; must be 1, 2 or 4</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="39"/>
+        <source>&apos;{text}&apos;: a bit address takes no width</source>
+        <translation>&apos;{text}&apos;: a bit address takes no width</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="41"/>
         <source>the ladder section must begin with %@3</source>
         <translation>the ladder section must begin with %@3</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="30"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="42"/>
         <source>the ladder section must end with a line &apos;%&apos;</source>
         <translation>the ladder section must end with a line &apos;%&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="31"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="43"/>
         <source>unexpected text &apos;{text}&apos;</source>
         <translation>unexpected text &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="32"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="44"/>
         <source>text outside any section: &apos;{text}&apos;</source>
         <translation>text outside any section: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="33"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="45"/>
         <source>section %@{number} appears twice</source>
         <translation>section %@{number} appears twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="34"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="46"/>
         <source>unknown section {header}: kept as it is</source>
         <translation>unknown section {header}: kept as it is</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="36"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="47"/>
         <source>unknown instruction &apos;{name}&apos;</source>
         <translation>unknown instruction &apos;{name}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="37"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="48"/>
         <source>{name} needs an address</source>
         <translation>{name} needs an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="38"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="49"/>
         <source>{name} takes no operand, found &apos;{text}&apos;</source>
         <translation>{name} takes no operand, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="39"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="50"/>
         <source>{name} needs {expected} parameters, found {found}</source>
         <translation>{name} needs {expected} parameters, found {found}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="40"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="52"/>
         <source>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="42"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="54"/>
         <source>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be an address, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="44"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="56"/>
         <source>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</source>
         <translation>{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="48"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="58"/>
         <source>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</source>
         <translation>{name}: parameter {index} ({param}) must be one of {choices}, found {value}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="52"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="62"/>
         <source>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be up to 4 binary digits, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="56"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="66"/>
         <source>SUB {number} is not in the instruction table: kept with its parameters, drawn as a box, simulated as W1 = ACT</source>
         <translation>SUB {number} is not in the instruction table: kept with its parameters, drawn as a box, simulated as W1 = ACT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="59"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="69"/>
         <source>a parameter line &apos;{text}&apos; without a SUB instruction before it</source>
         <translation>a parameter line &apos;{text}&apos; without a SUB instruction before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="61"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="71"/>
         <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
         <translation>the file is neither UTF-8 nor Turkish Windows (cp1254) text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="73"/>
         <source>syntax error at &apos;{text}&apos;</source>
         <translation>syntax error at &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="64"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="86"/>
         <source>open circuit: this element is not connected to the right side</source>
         <translation>open circuit: this element is not connected to the right side</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="66"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="88"/>
         <source>element not connected to the left rail</source>
         <translation>element not connected to the left rail</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="89"/>
         <source>a coil must be at the right end of the network</source>
         <translation>a coil must be at the right end of the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="91"/>
         <source>a coil cannot sit straight on the left rail</source>
         <translation>a coil cannot sit straight on the left rail</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="69"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="92"/>
         <source>bridge circuit: a vertical link joins two branches in the middle</source>
         <translation>bridge circuit: a vertical link joins two branches in the middle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="94"/>
         <source>short circuit: a wire bypasses the element</source>
         <translation>short circuit: a wire bypasses the element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="95"/>
         <source>the logic needs more than 8 stack levels (ST8)</source>
         <translation>the logic needs more than 8 stack levels (ST8)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="73"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="97"/>
         <source>power would flow right to left here; ladder flows left to right only</source>
         <translation>power would flow right to left here; ladder flows left to right only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="75"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="99"/>
         <source>the network has no coil or function</source>
         <translation>the network has no coil or function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="100"/>
         <source>{name} needs its {count} control inputs connected</source>
         <translation>{name} needs its {count} control inputs connected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="102"/>
         <source>this element has no address yet</source>
         <translation>this element has no address yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="78"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="103"/>
         <source>coils hang on different points of the logic; join them to one point</source>
         <translation>coils hang on different points of the logic; join them to one point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="105"/>
         <source>only coils may follow the output of {name}</source>
         <translation>only coils may follow the output of {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="81"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="106"/>
         <source>one function box per network: put {name} in a network of its own</source>
         <translation>one function box per network: put {name} in a network of its own</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="109"/>
         <source>cell ({row}, {col}) is outside the grid</source>
         <translation>cell ({row}, {col}) is outside the grid</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="84"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="110"/>
         <source>only coils go in the coil column (cell ({row}, {col}))</source>
         <translation>only coils go in the coil column (cell ({row}, {col}))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="86"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="112"/>
         <source>{name} does not fit here: a box needs two contact columns</source>
         <translation>{name} does not fit here: a box needs two contact columns</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="88"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="114"/>
         <source>there is no suitable element at cell ({row}, {col})</source>
         <translation>there is no suitable element at cell ({row}, {col})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="116"/>
         <source>a line must be horizontal or vertical</source>
         <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="117"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="119"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="120"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="94"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="121"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="123"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="125"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="100"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="127"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="103"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="130"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="106"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="110"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="113"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="116"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="119"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="123"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="125"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="128"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="132"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="153"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="158"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="160"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <source>&apos;{text}&apos; is not a number</source>
+        <translation>&apos;{text}&apos; is not a number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <source>{value} is out of range ({low} to {high})</source>
+        <translation>{value} is out of range ({low} to {high})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
+        <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
+        <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
+        <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
 </context>
 <context>
@@ -1567,22 +1602,22 @@
         <translation>Compile a program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="285"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="288"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="289"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="291"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="292"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="294"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="295"/>
         <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>
@@ -1661,19 +1696,6 @@
     </message>
 </context>
 <context>
-    <name>PlcDocks</name>
-    <message>
-        <location filename="../ladderworks/gui/docks/dock_menus.py" line="55"/>
-        <source>&apos;{0}&apos;: the width after &apos;:&apos; must be 1, 2 or 4</source>
-        <translation>&apos;{0}&apos;: the width after &apos;:&apos; must be 1, 2 or 4</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/dock_menus.py" line="58"/>
-        <source>&apos;{0}&apos;: a bit address takes no width</source>
-        <translation>&apos;{0}&apos;: a bit address takes no width</translation>
-    </message>
-</context>
-<context>
     <name>PlcOnline</name>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="58"/>
@@ -1748,31 +1770,6 @@
 </context>
 <context>
     <name>PlcTables</name>
-    <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="47"/>
-        <source>&apos;{0}&apos; is not a number</source>
-        <translation>&apos;{0}&apos; is not a number</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="49"/>
-        <source>{0} is out of range ({1} to {2})</source>
-        <translation>{0} is out of range ({1} to {2})</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="53"/>
-        <source>{0} bytes: a value has 1, 2 or 4 bytes</source>
-        <translation>{0} bytes: a value has 1, 2 or 4 bytes</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="57"/>
-        <source>&apos;{0}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
-        <translation>&apos;{0}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="61"/>
-        <source>TMRB {0}: its preset is fixed in the program and cannot be changed here</source>
-        <translation>TMRB {0}: its preset is fixed in the program and cannot be changed here</translation>
-    </message>
     <message>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="107"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="183"/>
@@ -1874,8 +1871,8 @@
         <translation>Address (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="81"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="58"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="229"/>
         <source>INSERT</source>
         <translation>INSERT</translation>
     </message>
@@ -1885,42 +1882,42 @@
         <translation>TMRB: the preset is fixed in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="232"/>
         <source>DELETE</source>
         <translation>DELETE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="263"/>
         <source>PLC tables</source>
         <translation>PLC tables</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="288"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="265"/>
         <source>Timers (TMR)</source>
         <translation>Timers (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="266"/>
         <source>Counters (CTR)</source>
         <translation>Counters (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="267"/>
         <source>Data table (D)</source>
         <translation>Data table (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="291"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="268"/>
         <source>Keep relays (K)</source>
         <translation>Keep relays (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="275"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="278"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</translation>
     </message>
@@ -1984,143 +1981,143 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="148"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="167"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="168"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="178"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="179"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="190"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="202"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="203"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="318"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="319"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="331"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="332"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="335"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="343"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="336"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="344"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="341"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="342"/>
         <source>Cannot write {0}</source>
         <translation>Cannot write {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="350"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="351"/>
         <source>Export time chart as CSV</source>
         <translation>Export time chart as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="352"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="353"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="362"/>
         <source>Export time chart as PNG</source>
         <translation>Export time chart as PNG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="383"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="383"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="384"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="384"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="389"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="389"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="399"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="400"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="402"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="403"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="404"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>

@@ -8,7 +8,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from ladderworks.core.address import Address, AddressError, parse_address
+from ladderworks.core.address import Address, AddressError
 from ladderworks.core.compiler import compile_program, disassemble
 from ladderworks.core.compiler.binary import MAGIC
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
@@ -16,7 +16,7 @@ from ladderworks.core.il import parse_file, print_program
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
 from ladderworks.core.plc.parameters import ParameterFile, parameters_beside, read_parameter_file
 from ladderworks.core.plc.session import PlcRun
-from ladderworks.core.symbols import SymbolTable, looks_like_symbol, resolve
+from ladderworks.core.symbols import SymbolTable, parse_target
 
 _SET_RE = re.compile(r"^([^=@]+)=(-?\w+)(?:@(\d+))?$")
 _NUMBER_PAIR_RE = re.compile(r"^(\d+)=(\d+)$")
@@ -135,22 +135,16 @@ _SYMBOLS: dict[str, SymbolTable | None] = {}
 
 def _target(text: str, file: str | None = None) -> _Target:
     """ADDR[:WIDTH], ADDR an address or a symbol of program `file` (`ESKIP`, `*ESP:1`)."""
-    spelled, _, width_text = text.strip().partition(":")
-    width = int(width_text) if width_text in ("1", "2", "4") else 0
-    if width_text and not width:
-        raise ValueError(f"'{text}': the width after ':' must be 1, 2 or 4")
+
+    def address_of(name: str) -> Address | None:
+        symbols = _symbols(file) if file is not None else None
+        return symbols.address_of(name) if symbols is not None else None
+
     try:
-        try:
-            address = parse_address(spelled, width=width or 1)
-        except AddressError:
-            if file is None or not looks_like_symbol(spelled):
-                raise
-            address = resolve(spelled, _symbols(file), width=width or 1)
+        target = parse_target(text, address_of)
     except AddressError as error:
-        raise ValueError(f"'{text}': {error.code}") from None
-    if address.bit is not None and width:
-        raise ValueError(f"'{text}': a bit address takes no width")
-    return _Target(text.strip(), address, width or 1)
+        raise ValueError(error.diagnostic.message()) from None
+    return _Target(target.text, target.address, target.width)
 
 
 def _run(args: argparse.Namespace) -> int:

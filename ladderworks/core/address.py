@@ -7,14 +7,11 @@ from dataclasses import dataclass
 from enum import StrEnum
 from functools import lru_cache
 
+from ladderworks.core.diagnostics import Refused
 
-class AddressError(ValueError):
-    """An address that cannot be parsed or is out of range; `code` and `args` name the reason."""
 
-    def __init__(self, code: str, **args: object) -> None:
-        self.code = code
-        self.args_map = dict(args)
-        super().__init__(f"{code}: {args}")
+class AddressError(Refused, ValueError):
+    """An address that cannot be parsed or is out of range; its `diagnostic` says why."""
 
 
 class Area(StrEnum):

@@ -1,7 +1,8 @@
-"""Diagnostics: errors and warnings as data (code, arguments, position), with English texts."""
+"""Errors and warnings as data (code, arguments, position); English texts marked for translation."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from enum import StrEnum
 
@@ -13,105 +14,174 @@ class Severity(StrEnum):
     WARNING = "warning"
 
 
-# English message templates by code. The GUI holds the same templates behind tr() so they are
-# translated; tests check that every code here has a GUI text. Arguments fill the {names}.
+def QT_TRANSLATE_NOOP(context: str, text: str) -> str:
+    """Mark `text` for translation in `context` (lupdate finds Qt's name); returns it."""
+    return text
+
+
+# English message templates by code, each marked once for translation (lupdate extracts them
+# into the "Diagnostic" context; the GUI translates them at display). Arguments fill {names}.
 MESSAGES: dict[str, str] = {
     # addresses
-    "bad-address": "'{text}' is not an address (expected e.g. X2.1 or R100)",
-    "unknown-area": "'{text}': unknown area '{area}' (use X, Y, F, G, R, A, D, T, C or K)",
-    "byte-range": "'{text}': byte number out of range for area {area} ({ranges})",
-    "bit-range": "'{text}': bit number must be 0 to 7",
-    "bit-expected": "'{text}': a bit address is needed here (e.g. {text}.0)",
-    "byte-expected": "'{text}': a byte address is needed here, without a bit",
+    "bad-address": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not an address (expected e.g. X2.1 or R100)"),
+    "unknown-area": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}': unknown area '{area}' (use X, Y, F, G, R, A, D, T, C or K)"),
+    "byte-range": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}': byte number out of range for area {area} ({ranges})"),
+    "bit-range": QT_TRANSLATE_NOOP("Diagnostic", "'{text}': bit number must be 0 to 7"),
+    "bit-expected": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}': a bit address is needed here (e.g. {text}.0)"),
+    "byte-expected": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}': a byte address is needed here, without a bit"),
+    "target-width": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}': the width after ':' must be 1, 2 or 4"),
+    "bit-width": QT_TRANSLATE_NOOP("Diagnostic", "'{text}': a bit address takes no width"),
     # the text format
-    "missing-start": "the ladder section must begin with %@3",
-    "missing-end": "the ladder section must end with a line '%'",
-    "unexpected-text": "unexpected text '{text}'",
-    "text-outside-section": "text outside any section: '{text}'",
-    "duplicate-section": "section %@{number} appears twice",
-    "bad-section": "unknown section {header}: kept as it is",
-    "unknown-instruction": "unknown instruction '{name}'",
-    "missing-operand": "{name} needs an address",
-    "extra-operand": "{name} takes no operand, found '{text}'",
-    "param-count": "{name} needs {expected} parameters, found {found}",
-    "param-kind-number": "{name}: parameter {index} ({param}) must be a number, found '{text}'",
-    "param-kind-address": "{name}: parameter {index} ({param}) must be an address, found '{text}'",
-    "param-range": "{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}",
-    "param-choice": "{name}: parameter {index} ({param}) must be one of {choices}, found {value}",
-    "param-mask":
-        "{name}: parameter {index} ({param}) must be up to 4 binary digits, found '{text}'",
-    "unknown-sub": ("SUB {number} is not in the instruction table: kept with its parameters,"
-                    " drawn as a box, simulated as W1 = ACT"),
-    "stray-parameter": "a parameter line '{text}' without a SUB instruction before it",
-    "bad-encoding": "the file is neither UTF-8 nor Turkish Windows (cp1254) text",
-    "syntax": "syntax error at '{text}'",
-    "invalid-bytes": "{count} byte(s) here are not valid {encoding}; they are kept as they are",
-    "not-a-program": "this is not a ladder program (no %@ section and no instruction)",
-    "section-line": "line not understood in section {section}: '{text}'",
-    "param-kind-ref":
-        "{name}: parameter {index} ({param}) must be {letter} and a number, found '{text}'",
-    "number-too-long": "'{text}': the number is too long",
+    "missing-start": QT_TRANSLATE_NOOP("Diagnostic", "the ladder section must begin with %@3"),
+    "missing-end": QT_TRANSLATE_NOOP("Diagnostic", "the ladder section must end with a line '%'"),
+    "unexpected-text": QT_TRANSLATE_NOOP("Diagnostic", "unexpected text '{text}'"),
+    "text-outside-section": QT_TRANSLATE_NOOP("Diagnostic", "text outside any section: '{text}'"),
+    "duplicate-section": QT_TRANSLATE_NOOP("Diagnostic", "section %@{number} appears twice"),
+    "bad-section": QT_TRANSLATE_NOOP("Diagnostic", "unknown section {header}: kept as it is"),
+    "unknown-instruction": QT_TRANSLATE_NOOP("Diagnostic", "unknown instruction '{name}'"),
+    "missing-operand": QT_TRANSLATE_NOOP("Diagnostic", "{name} needs an address"),
+    "extra-operand": QT_TRANSLATE_NOOP("Diagnostic", "{name} takes no operand, found '{text}'"),
+    "param-count": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} needs {expected} parameters, found {found}"),
+    "param-kind-number": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name}: parameter {index} ({param}) must be a number, found '{text}'"),
+    "param-kind-address": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name}: parameter {index} ({param}) must be an address, found '{text}'"),
+    "param-range": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name}: parameter {index} ({param}) must be {lo} to {hi}, found {value}"),
+    "param-choice": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "{name}: parameter {index} ({param}) must be one of {choices},"
+        " found {value}"),
+    "param-mask": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "{name}: parameter {index} ({param}) must be up to 4 binary digits,"
+        " found '{text}'"),
+    "unknown-sub": QT_TRANSLATE_NOOP(
+        "Diagnostic", "SUB {number} is not in the instruction table: kept with its parameters,"
+        " drawn as a box, simulated as W1 = ACT"),
+    "stray-parameter": QT_TRANSLATE_NOOP(
+        "Diagnostic", "a parameter line '{text}' without a SUB instruction before it"),
+    "bad-encoding": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the file is neither UTF-8 nor Turkish Windows (cp1254) text"),
+    "syntax": QT_TRANSLATE_NOOP("Diagnostic", "syntax error at '{text}'"),
+    "invalid-bytes": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{count} byte(s) here are not valid {encoding}; they are kept as they are"),
+    "not-a-program": QT_TRANSLATE_NOOP(
+        "Diagnostic", "this is not a ladder program (no %@ section and no instruction)"),
+    "section-line": QT_TRANSLATE_NOOP(
+        "Diagnostic", "line not understood in section {section}: '{text}'"),
+    "param-kind-ref": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "{name}: parameter {index} ({param}) must be {letter} and a number,"
+        " found '{text}'"),
+    "number-too-long": QT_TRANSLATE_NOOP("Diagnostic", "'{text}': the number is too long"),
     # the ladder grid (network decomposition)
-    "open-circuit": "open circuit: this element is not connected to the right side",
-    "not-connected": "element not connected to the left rail",
-    "coil-not-right": "a coil must be at the right end of the network",
-    "coil-on-rail": "a coil cannot sit straight on the left rail",
-    "bridge": "bridge circuit: a vertical link joins two branches in the middle",
-    "short-circuit": "short circuit: a wire bypasses the element",
-    "stack-depth": "the logic needs more than 8 stack levels (ST8)",
-    "reverse-flow": "power would flow right to left here; ladder flows left to right only",
-    "empty-network": "the network has no coil or function",
-    "box-inputs": "{name} needs its {count} control inputs connected",
-    "no-address": "this element has no address yet",
-    "coil-branch": "coils hang on different points of the logic; join them to one point",
-    "box-output": "only coils may follow the output of {name}",
-    "box-twice": "one function box per network: put {name} in a network of its own",
+    "open-circuit": QT_TRANSLATE_NOOP(
+        "Diagnostic", "open circuit: this element is not connected to the right side"),
+    "not-connected": QT_TRANSLATE_NOOP("Diagnostic", "element not connected to the left rail"),
+    "coil-not-right": QT_TRANSLATE_NOOP(
+        "Diagnostic", "a coil must be at the right end of the network"),
+    "coil-on-rail": QT_TRANSLATE_NOOP("Diagnostic", "a coil cannot sit straight on the left rail"),
+    "bridge": QT_TRANSLATE_NOOP(
+        "Diagnostic", "bridge circuit: a vertical link joins two branches in the middle"),
+    "short-circuit": QT_TRANSLATE_NOOP("Diagnostic", "short circuit: a wire bypasses the element"),
+    "stack-depth": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the logic needs more than 8 stack levels (ST8)"),
+    "reverse-flow": QT_TRANSLATE_NOOP(
+        "Diagnostic", "power would flow right to left here; ladder flows left to right only"),
+    "empty-network": QT_TRANSLATE_NOOP("Diagnostic", "the network has no coil or function"),
+    "box-inputs": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} needs its {count} control inputs connected"),
+    "no-address": QT_TRANSLATE_NOOP("Diagnostic", "this element has no address yet"),
+    "coil-branch": QT_TRANSLATE_NOOP(
+        "Diagnostic", "coils hang on different points of the logic; join them to one point"),
+    "box-output": QT_TRANSLATE_NOOP("Diagnostic", "only coils may follow the output of {name}"),
+    "box-twice": QT_TRANSLATE_NOOP(
+        "Diagnostic", "one function box per network: put {name} in a network of its own"),
     # ladder edits (refused edits; nothing was changed)
-    "edit-outside": "cell ({row}, {col}) is outside the grid",
-    "edit-coil-column": "only coils go in the coil column (cell ({row}, {col}))",
-    "edit-box-room": "{name} does not fit here: a box needs two contact columns",
-    "edit-no-element": "there is no suitable element at cell ({row}, {col})",
-    "edit-line": "a line must be horizontal or vertical",
-    "grid-text": "the clipboard does not hold ladder elements",
+    "edit-outside": QT_TRANSLATE_NOOP("Diagnostic", "cell ({row}, {col}) is outside the grid"),
+    "edit-coil-column": QT_TRANSLATE_NOOP(
+        "Diagnostic", "only coils go in the coil column (cell ({row}, {col}))"),
+    "edit-box-room": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} does not fit here: a box needs two contact columns"),
+    "edit-no-element": QT_TRANSLATE_NOOP(
+        "Diagnostic", "there is no suitable element at cell ({row}, {col})"),
+    "edit-line": QT_TRANSLATE_NOOP("Diagnostic", "a line must be horizontal or vertical"),
+    "grid-text": QT_TRANSLATE_NOOP("Diagnostic", "the clipboard does not hold ladder elements"),
     # the compiler
-    "stack-underflow": "{name} with nothing pushed on the stack",
-    "write-input": "{name} writes to {address}, an input area",
-    "write-result-register": "{name} writes to {address}, part of the read-only R9000-R9005",
-    "jmp-without-jmpe": "JMP without a matching JMPE",
-    "jmpe-without-jmp": "JMPE without a JMP before it",
-    "com-without-come": "COM without a matching COME",
-    "come-without-com": "COME without a COM before it",
-    "no-logic": "{name} without a logic result before it (start with RD)",
-    "coil-twice": "coil {address} is written more than once",
-    "dangling-logic": "logic at the end of the program is not written to any coil",
-    "bad-binary": "not a LadderWorks binary: {reason}",
+    "stack-underflow": QT_TRANSLATE_NOOP("Diagnostic", "{name} with nothing pushed on the stack"),
+    "write-input": QT_TRANSLATE_NOOP("Diagnostic", "{name} writes to {address}, an input area"),
+    "write-result-register": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} writes to {address}, part of the read-only R9000-R9005"),
+    "jmp-without-jmpe": QT_TRANSLATE_NOOP("Diagnostic", "JMP without a matching JMPE"),
+    "jmpe-without-jmp": QT_TRANSLATE_NOOP("Diagnostic", "JMPE without a JMP before it"),
+    "com-without-come": QT_TRANSLATE_NOOP("Diagnostic", "COM without a matching COME"),
+    "come-without-com": QT_TRANSLATE_NOOP("Diagnostic", "COME without a COM before it"),
+    "no-logic": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} without a logic result before it (start with RD)"),
+    "coil-twice": QT_TRANSLATE_NOOP("Diagnostic", "coil {address} is written more than once"),
+    "dangling-logic": QT_TRANSLATE_NOOP(
+        "Diagnostic", "logic at the end of the program is not written to any coil"),
+    "bad-binary": QT_TRANSLATE_NOOP("Diagnostic", "not a LadderWorks binary: {reason}"),
     # program structure (levels, subprograms, labels)
-    "coil-mixed": "coil {address} is written by WRT and by SET/RST (also on line {line})",
-    "label-in-range": "LBL inside a JMP or COM range",
-    "label-missing": "no LBL L{label} where this jump can reach it",
-    "label-twice": "label L{label} is defined twice in this program unit",
-    "jmpc-in-main": "JMPC is only allowed inside a subprogram",
-    "call-missing": "subprogram P{program} does not exist",
-    "call-recursion": "calling P{program} here makes a subprogram call itself",
-    "call-depth": "calls through P{program} nest deeper than {limit} subprograms",
-    "sp-without-spe": "SP without a matching SPE",
-    "spe-without-sp": "SPE without an SP before it",
-    "sp-twice": "subprogram P{program} is defined twice",
-    "outside-subprogram": "only subprograms (SP ... SPE) may follow the first SP",
-    "level-end-order": "{name} cannot end level {level}",
-    "after-end": "instruction after END, the end of the program",
-    "endless-loop": "a backward jump to L{label} repeated more than {limit} times in one scan",
+    "coil-mixed": QT_TRANSLATE_NOOP(
+        "Diagnostic", "coil {address} is written by WRT and by SET/RST (also on line {line})"),
+    "label-in-range": QT_TRANSLATE_NOOP("Diagnostic", "LBL inside a JMP or COM range"),
+    "label-missing": QT_TRANSLATE_NOOP(
+        "Diagnostic", "no LBL L{label} where this jump can reach it"),
+    "label-twice": QT_TRANSLATE_NOOP(
+        "Diagnostic", "label L{label} is defined twice in this program unit"),
+    "jmpc-in-main": QT_TRANSLATE_NOOP("Diagnostic", "JMPC is only allowed inside a subprogram"),
+    "call-missing": QT_TRANSLATE_NOOP("Diagnostic", "subprogram P{program} does not exist"),
+    "call-recursion": QT_TRANSLATE_NOOP(
+        "Diagnostic", "calling P{program} here makes a subprogram call itself"),
+    "call-depth": QT_TRANSLATE_NOOP(
+        "Diagnostic", "calls through P{program} nest deeper than {limit} subprograms"),
+    "sp-without-spe": QT_TRANSLATE_NOOP("Diagnostic", "SP without a matching SPE"),
+    "spe-without-sp": QT_TRANSLATE_NOOP("Diagnostic", "SPE without an SP before it"),
+    "sp-twice": QT_TRANSLATE_NOOP("Diagnostic", "subprogram P{program} is defined twice"),
+    "outside-subprogram": QT_TRANSLATE_NOOP(
+        "Diagnostic", "only subprograms (SP ... SPE) may follow the first SP"),
+    "level-end-order": QT_TRANSLATE_NOOP("Diagnostic", "{name} cannot end level {level}"),
+    "after-end": QT_TRANSLATE_NOOP("Diagnostic", "instruction after END, the end of the program"),
+    "endless-loop": QT_TRANSLATE_NOOP(
+        "Diagnostic", "a backward jump to L{label} repeated more than {limit} times in one scan"),
     # the alarm message file (AlarmMsg.dat)
-    "alarm-line": "not an alarm message line: '{text}' (expected 'NNN text' or 'A00.0 text')",
-    "alarm-number": "alarm number {number} is out of range (000 to 799)",
-    "alarm-address": "'{text}' is not an alarm bit (A0.0 to A99.7)",
-    "alarm-duplicate": "message {number} appears again; the one on line {first} is used",
-    "alarm-empty": "message {number} has no text",
-    "not-implemented": "{name} is not implemented in the simulator yet",
+    "alarm-line": QT_TRANSLATE_NOOP(
+        "Diagnostic", "not an alarm message line: '{text}' (expected 'NNN text' or 'A00.0 text')"),
+    "alarm-number": QT_TRANSLATE_NOOP(
+        "Diagnostic", "alarm number {number} is out of range (000 to 799)"),
+    "alarm-address": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not an alarm bit (A0.0 to A99.7)"),
+    "alarm-duplicate": QT_TRANSLATE_NOOP(
+        "Diagnostic", "message {number} appears again; the one on line {first} is used"),
+    "alarm-empty": QT_TRANSLATE_NOOP("Diagnostic", "message {number} has no text"),
+    "not-implemented": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} is not implemented in the simulator yet"),
     # the PMC parameter file (PROGRAM.LAD.prm)
-    "prm-line": "not a parameter line: '{text}' (expected ADDRESS = VALUE, e.g. T0:4 = 1000)",
-    "prm-area": "'{text}': PMC parameters are in the T, C, K and D areas only",
-    "prm-value": "'{text}' is not a value for {width} byte(s)",
+    "prm-line": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "not a parameter line: '{text}'"
+        " (expected ADDRESS = VALUE, e.g. T0:4 = 1000)"),
+    "prm-area": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}': PMC parameters are in the T, C, K and D areas only"),
+    "prm-value": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a value for {width} byte(s)"),
+    # values typed in the PMC tables (timers, counters, keep relays, data)
+    "not-a-number": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a number"),
+    "out-of-range": QT_TRANSLATE_NOOP("Diagnostic", "{value} is out of range ({low} to {high})"),
+    "value-width": QT_TRANSLATE_NOOP("Diagnostic", "{value} bytes: a value has 1, 2 or 4 bytes"),
+    "bit-pattern": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}': type up to 8 binary digits (0 and 1), bit 7 first"),
+    "preset-fixed": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "TMRB {number}: its preset is fixed in the program and cannot be changed here"),
 }
 
 
@@ -132,10 +202,11 @@ class Diagnostic:
         """True for errors (not warnings)."""
         return self.severity is Severity.ERROR
 
-    def message(self, templates: dict[str, str] | None = None) -> str:
-        """The message text, from `templates` (a translated table) or the English one."""
-        table = templates if templates is not None else MESSAGES
-        template = table.get(self.code) or MESSAGES.get(self.code) or self.code
+    def message(self, translate: Callable[[str, str], str] | None = None) -> str:
+        """The message text: English, or through `translate(context, template)` (Qt's)."""
+        template = MESSAGES.get(self.code, self.code)
+        if translate is not None:
+            template = translate("Diagnostic", template) or template
         try:
             return template.format(**self.args)
         except (KeyError, IndexError, ValueError):
@@ -147,11 +218,33 @@ class Diagnostic:
 
 
 class DiagnosticError(Exception):
-    """Raised where a caller wants an exception; carries the diagnostics."""
+    """Raised where a caller wants an exception; carries the diagnostics (the first says why)."""
 
     def __init__(self, diagnostics: list[Diagnostic]) -> None:
         self.diagnostics = diagnostics
         super().__init__("; ".join(d.message() for d in diagnostics[:3]))
+
+    @property
+    def diagnostic(self) -> Diagnostic:
+        """The (first) diagnostic: what the user is shown."""
+        return self.diagnostics[0]
+
+    @property
+    def code(self) -> str:
+        """The first diagnostic's code."""
+        return self.diagnostic.code
+
+    @property
+    def args_map(self) -> dict[str, object]:
+        """The first diagnostic's arguments (`args` is the exception's own tuple)."""
+        return self.diagnostic.args
+
+
+class Refused(DiagnosticError):
+    """One diagnostic as an exception: a value, an address or an edit that was refused."""
+
+    def __init__(self, code: str, **args: object) -> None:
+        super().__init__([Diagnostic(code, dict(args))])
 
 
 def has_errors(diagnostics: list[Diagnostic]) -> bool:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, AddressError, parse_address
@@ -106,6 +106,41 @@ def resolve(text: str, symbols: SymbolTable | None = None, *, width: int = 1) ->
         if found is None:
             raise
         return found
+
+
+@dataclass(frozen=True, slots=True)
+class Target:
+    """An address with the width read or written there, as typed: `D10:2`, `ESKIP`, `*ESP:1`."""
+
+    text: str
+    address: Address
+    width: int = 1
+
+
+def parse_target(text: str,
+                 address_of: Callable[[str], Address | None] | None = None) -> Target:
+    """`ADDR[:W]`: an address or a symbol (looked up by `address_of`), width 1, 2 or 4 bytes.
+
+    Raises AddressError: the address's own codes, `target-width` for another width after the
+    colon, `bit-width` for a bit address with a width."""
+    typed = text.strip()
+    spelled, colon, width_text = typed.partition(":")
+    width = 1
+    if colon:
+        if width_text.strip() not in ("1", "2", "4"):
+            raise AddressError("target-width", text=typed)
+        width = int(width_text)
+    try:
+        address = parse_address(spelled, width=width)
+    except AddressError:
+        name = spelled.strip()
+        found = address_of(name) if address_of is not None and looks_like_symbol(name) else None
+        if found is None:
+            raise
+        address = found
+    if address.bit is not None and colon:
+        raise AddressError("bit-width", text=typed)
+    return Target(typed, address, width)
 
 
 def describe(address: Address, symbols: SymbolTable | None = None) -> str:

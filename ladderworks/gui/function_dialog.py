@@ -158,8 +158,8 @@ class FunctionDialog(QDialog):
             QCoreApplication.translate("FunctionDialog", "Allowed"),
         ])
         for row, param in enumerate(self._params):
-            self.table.item(row, 0).setText(param_label(param.name))
-            self.table.item(row, 2).setText(allowed_text(param))
+            self._cell(row, 0).setText(param_label(param.name))
+            self._cell(row, 2).setText(allowed_text(param))
 
     def show_help(self) -> InstructionHelp:
         """The Help button: this instruction's reference entry, beside the dialog."""
@@ -173,20 +173,20 @@ class FunctionDialog(QDialog):
         """Type `text` into the row of parameter `name`."""
         for row, param in enumerate(self._params):
             if param.name == name:
-                self.table.item(row, 1).setText(text)
+                self._cell(row, 1).setText(text)
                 return
         raise KeyError(name)
 
     def values(self) -> list[str]:
         """The typed values, row by row."""
-        return [self.table.item(row, 1).text() for row in range(self.table.rowCount())]
+        return [self._cell(row, 1).text() for row in range(self.table.rowCount())]
 
     def accept(self) -> None:
         """Check with the core; on an error show the warning, mark the row and stay open."""
         self.table.setCurrentCell(-1, -1)
         instruction, diagnostics = check_function(self.spec, self.values())
         for row in range(self.table.rowCount()):
-            self.table.item(row, 1).setBackground(QColor(Qt.GlobalColor.transparent))
+            self._cell(row, 1).setBackground(QColor(Qt.GlobalColor.transparent))
         if instruction is None:
             messages = [diagnostic_text(d) for d in diagnostics] or [
                 QCoreApplication.translate("FunctionDialog", "The parameters are not valid")]
@@ -194,13 +194,19 @@ class FunctionDialog(QDialog):
             self.warning.show()
             bad = self._bad_row(diagnostics)
             if bad is not None:
-                self.table.item(bad, 1).setBackground(QColor("#ffd6d6"))
+                self._cell(bad, 1).setBackground(QColor("#ffd6d6"))
                 self.table.setCurrentCell(bad, 1)
             return
         self.warning.hide()
         self.instruction = instruction
         self.comment_text = self.comment.text().strip()
         super().accept()
+
+    def _cell(self, row: int, column: int) -> QTableWidgetItem:
+        """The table's item at (row, column): every cell gets one when the dialog is built."""
+        item = self.table.item(row, column)
+        assert item is not None, (row, column)
+        return item
 
     def _bad_row(self, diagnostics: list[Diagnostic]) -> int | None:
         for diagnostic in diagnostics:

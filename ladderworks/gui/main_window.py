@@ -74,17 +74,17 @@ class MainWindow(QMainWindow):
         self.actions_by_name: dict[str, QAction] = {}
         self._texts: list[tuple[QAction | QMenu | QToolBar, Callable[[], str]]] = []
         self._make_actions()
-        self.palette = ToolPalette([self.tool_actions[tool] for tool in Tool], self)
-        self.palette.function_chosen.connect(self._on_function_chosen)
-        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.palette)
+        self.tool_palette = ToolPalette([self.tool_actions[tool] for tool in Tool], self)
+        self.tool_palette.function_chosen.connect(self._on_function_chosen)
+        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.tool_palette)
         self.errors = ErrorListDock(self)
         self.errors.activated.connect(self.go_to_diagnostic)
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.errors)
         self.signals_dock = SignalListDock(self)
         self.signals_dock.address_chosen.connect(self.use_signal)
         self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.signals_dock)
-        self.tabifyDockWidget(self.palette, self.signals_dock)
-        self.palette.raise_()
+        self.tabifyDockWidget(self.tool_palette, self.signals_dock)
+        self.tool_palette.raise_()
         self._make_menus()
         self._make_status_bar()
         named = self.actions_by_name
@@ -105,7 +105,7 @@ class MainWindow(QMainWindow):
         self.editor.hover_changed.connect(self._show_hover)
         self.editor.message.connect(self._show_message)
         self.set_tool(Tool.SELECT)
-        self.editor.set_function(self.palette.current_function())
+        self.editor.set_function(self.tool_palette.current_function())
         self.retranslate()
         self.resize(1200, 800)
         self._first_show = True
@@ -343,7 +343,7 @@ class MainWindow(QMainWindow):
             ],
         )
         for dock, name in (
-            (self.palette, "action_dock_palette"),
+            (self.tool_palette, "action_dock_palette"),
             (self.errors, "action_dock_errors"),
             (self.signals_dock, "action_dock_signals"),
         ):
@@ -866,7 +866,7 @@ class MainWindow(QMainWindow):
                     return "RD.NOT" if element.negated else "RD"
                 if isinstance(element, Coil):
                     return "WRT.NOT" if element.negated else "WRT"
-        return self.palette.current_function()
+        return self.tool_palette.current_function()
 
     def show_instruction_help(self, name: str | None = None) -> InstructionHelp:
         """Help > Instruction reference (F1): `name`'s entry, or the element at the cursor's."""

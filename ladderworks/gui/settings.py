@@ -34,7 +34,7 @@ class Settings:
         value = self._store.value("files/recent", [])
         if isinstance(value, str):
             return [value] if value else []
-        return [str(item) for item in (value or [])]
+        return [str(item) for item in value] if isinstance(value, list | tuple) else []
 
     def add_recent_file(self, path: str) -> list[str]:
         """Put `path` first in the recent list and return the list."""

@@ -188,6 +188,7 @@ class UiLanguage:
         if language not in LANGUAGES:
             language = "en"
         app = QCoreApplication.instance()
+        assert app is not None, "translators need the application"
         for translator in self._translators:
             app.removeTranslator(translator)
         self._translators = []

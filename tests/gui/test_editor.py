@@ -46,7 +46,7 @@ def test_address_refusal_is_in_turkish_when_the_ui_is(drawer: Drawer, window: Ma
 
 def test_function_table_refuses_a_wrong_parameter(drawer: Drawer, window: MainWindow,
                                                   qtbot: QtBot) -> None:
-    window.palette.set_function("TMRB")
+    window.tool_palette.set_function("TMRB")
     assert window.current_tool() is Tool.FUNCTION
     drawer.click(0, 0, 2)
     dialog = window.editor.function_dialog

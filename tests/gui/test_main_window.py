@@ -42,7 +42,8 @@ def test_every_action_and_dock_has_an_object_name_listed_in_ui_md(window: MainWi
     undocumented = sorted({a.objectName() for a in reachable} - names
                           - {f"action_recent_{i}" for i in range(8)})
     assert not undocumented, f"menu actions not in docs/ui.md: {undocumented}"
-    console = (window, window.palette, window.errors, window.findChild(QToolBar, "toolbar_main"))
+    console = (window, window.tool_palette, window.errors,
+               window.findChild(QToolBar, "toolbar_main"))
     own = [a for a in window.findChildren(QAction) if a.parent() in console
            and a.objectName().startswith(("action_", "tool_"))]
     assert len(own) > 40
@@ -71,7 +72,7 @@ def test_language_switches_live_and_is_remembered(window: MainWindow, settings: 
     titles = [a.text().replace("&", "") for a in window.menuBar().actions()]
     assert titles[:3] == ["Dosya", "Düzen", "Görünüm"]
     assert window.errors.windowTitle() == "Hatalar"
-    assert window.palette.functions.itemText(1) == "TMR — ZAMANLAYICI"  # 0: group title
+    assert window.tool_palette.functions.itemText(1) == "TMR — ZAMANLAYICI"  # 0: group title
     assert settings.language() == "tr"
     with qtbot.waitSignal(window.language_changed):
         window.actions_by_name["action_language_en"].trigger()
@@ -187,7 +188,7 @@ def test_compile_lists_errors_and_double_click_jumps_to_the_cell(
     item = window.errors.tree.topLevelItem(index)
     window.errors.tree.itemDoubleClicked.emit(item, 0)
     assert editor.cursor_cell == (target.network, *target.cell)
-    assert editor.items[target.network].error_cells
+    assert editor.network_items[target.network].error_cells
 
 
 def test_new_after_changes_starts_empty(window: MainWindow) -> None:

@@ -50,7 +50,7 @@ def test_spindle_override_compile_start_watch_stop(qtbot: QtBot, window: MainWin
     assert control.indicator.text() == "STOPPED"
     shot(window, "plc_control_finished.png")
 
-    control.actions["action_plc_start"].trigger()
+    control.control_actions["action_plc_start"].trigger()
     assert session.running and control.indicator.text() == "RUNNING"
     set_switch(session, 5)
     session.step(16)
@@ -82,7 +82,7 @@ def test_spindle_override_compile_start_watch_stop(qtbot: QtBot, window: MainWin
     assert checked_coils == 8
     shot(window, "plc_diagnostic_live.png")
 
-    control.actions["action_plc_stop"].trigger()
+    control.control_actions["action_plc_stop"].trigger()
     count = session.status().scan_count
     assert not session.running and control.indicator.text() == "STOPPED"
     assert session.step(100) == 0 and session.status().scan_count == count
@@ -99,7 +99,7 @@ def test_compile_errors_are_shown_inline(qtbot: QtBot, window: MainWindow) -> No
     assert control.editor.converted_lines == 2  # converted up to the first error
     assert "Compile failed" in control.message.text()
     assert docks.session.binary is None
-    control.actions["action_plc_start"].trigger()
+    control.control_actions["action_plc_start"].trigger()
     assert not docks.session.running
 
 

@@ -19,7 +19,7 @@ COIL = 10  # the coil column of a new network
 
 def open_box(d: Drawer, name: str, row: int, col: int) -> FunctionDialog:
     """Choose `name` in the palette's function list, click a cell: the property table."""
-    combo = d.window.palette.functions
+    combo = d.window.tool_palette.functions
     combo.setCurrentIndex(combo.findData(name))  # what choosing it in the drop-down does
     d.key("F")  # the function tool (already chosen when the list changed)
     assert d.window.current_tool() is Tool.FUNCTION
@@ -61,7 +61,7 @@ def assert_program(window: MainWindow, text: str) -> None:
 
 
 def test_palette_lists_the_seed_then_the_pmc_instructions(window: MainWindow) -> None:
-    combo = window.palette.functions
+    combo = window.tool_palette.functions
     names = [combo.itemData(i) for i in range(combo.count())]
     assert names[0] is None and names[1] == "TMR"
     pmc = names.index(None, 1)

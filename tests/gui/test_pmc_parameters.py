@@ -29,9 +29,9 @@ def open_with_dialog(window: MainWindow, monkeypatch: pytest.MonkeyPatch, path: 
 def compile_into_plc(qtbot: QtBot, window: MainWindow) -> None:
     """PLC control: take the console's program, compile; wait until the PLC has it."""
     control = window.plc_docks.control
-    control.actions["action_plc_take_console"].trigger()
+    control.control_actions["action_plc_take_console"].trigger()
     with qtbot.waitSignal(window.plc_docks.session.program_loaded, timeout=10_000):
-        control.actions["action_plc_control_compile"].trigger()
+        control.control_actions["action_plc_control_compile"].trigger()
 
 
 def tables_of(window: MainWindow) -> PlcTablesDock:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field
 
 from ladderworks.core.compiler.binary import (
     FORMAT_VERSION,
@@ -87,6 +87,4 @@ def disassemble(data: bytes) -> Program:
             current = op.source.network
         networks[-1].instructions.append(Instruction(
             op.name, op.operand, op.params, line=op.source.line, column=op.source.column))
-    if "dialect" in {f.name for f in fields(Program)}:
-        return Program(networks=networks, dialect=binary.dialect)  # type: ignore[call-arg]
-    return Program(networks=networks)
+    return Program(networks=networks, dialect=binary.dialect)

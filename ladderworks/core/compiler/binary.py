@@ -117,9 +117,9 @@ def _encode_param(value: ParamValue, kind: ParamKind | None) -> bytes:
             AREA_CODES.index(value.area.value), value.byte,
             _NO_BIT if value.bit is None else value.bit)
         return bytes([_TAG_ADDRESS]) + payload
-    tag = {ParamKind.PROGRAM: _TAG_PROGRAM, ParamKind.LABEL: _TAG_LABEL}.get(
-        kind, _TAG_INT)  # type: ignore[arg-type]
-    return _PARAM.pack(tag, int(getattr(value, "number", value)))
+    tag = _TAG_PROGRAM if kind is ParamKind.PROGRAM else (
+        _TAG_LABEL if kind is ParamKind.LABEL else _TAG_INT)
+    return _PARAM.pack(tag, value if isinstance(value, int) else value.number)
 
 
 def encode(ops: list[Op] | tuple[Op, ...], dialect: str = "seed") -> bytes:

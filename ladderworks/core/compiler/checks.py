@@ -61,7 +61,7 @@ def implementation_of(spec: InstructionSpec,
         except (KeyError, LookupError):
             found = None
         if found is not None:
-            return found  # type: ignore[no-any-return]
+            return found
     return cnc_stub if not spec.known else None
 
 
@@ -259,13 +259,20 @@ class _Checker:
                      found=len(ins.params))
             return
         outputs = output_params(spec.name)
-        for number, (param, value) in enumerate(zip(fixed, ins.params, strict=False), 1):
+        for number, (param, raw) in enumerate(zip(fixed, ins.params, strict=False), 1):
             info: dict[str, object] = {"name": spec.name, "index": number, "param": param.name}
+            value: int | Address
             if param.kind in (ParamKind.PROGRAM, ParamKind.LABEL):
-                value = number_of(value)  # type: ignore[assignment]
-                if value is None:
+                target = number_of(raw)
+                if target is None:
                     self.report("param-kind-number", ins, network, {**info, "text": "?"})
                     continue
+                value = target
+            elif isinstance(raw, int | Address):
+                value = raw
+            else:  # a P/L reference where a number or an address belongs
+                self.report("param-kind-number", ins, network, {**info, "text": str(raw)})
+                continue
             address_wanted = param.kind is ParamKind.ADDRESS or (
                 param.kind is ParamKind.VALUE and value_is_address(spec, values) is True)
             if isinstance(value, Address):
@@ -294,11 +301,11 @@ class _Checker:
                 self.report("param-range", ins, network,
                             {**info, "lo": param.lo, "hi": hi, "value": value})
         if table is not None:
-            for offset, value in enumerate(ins.params[len(fixed):]):
-                if isinstance(value, Address) or not table.lo <= value <= table.hi:
+            for offset, item in enumerate(ins.params[len(fixed):]):
+                if not isinstance(item, int) or not table.lo <= item <= table.hi:
                     self.add("param-range", ins, network, name=spec.name,
                              index=len(fixed) + offset + 1, param=table.name, lo=table.lo,
-                             hi=table.hi, value=str(value))
+                             hi=table.hi, value=str(item))
 
 
 def check(program: Program, dialect: str | None = None) -> list[Diagnostic]:

@@ -146,16 +146,16 @@ class _Builder:
                 ended = True
                 continue
             if flow is Flow.LABEL:
-                number = _target(spec, params)
-                if number is not None:
-                    if number in current.labels:
-                        self.problems.append(Problem("label-twice", index, {"label": number}))
+                label = _target(spec, params)
+                if label is not None:
+                    if label in current.labels:
+                        self.problems.append(Problem("label-twice", index, {"label": label}))
                     else:
-                        current.labels[number] = index
+                        current.labels[label] = index
             elif flow in (Flow.CALL, Flow.CALL_ALWAYS):
-                number = _target(spec, params)
-                if number is not None:
-                    current.calls.append((index, number))
+                called = _target(spec, params)
+                if called is not None:
+                    current.calls.append((index, called))
         if current is not None:
             if current.level == 0:
                 self.problems.append(Problem("sp-without-spe", current.start))

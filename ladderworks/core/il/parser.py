@@ -219,23 +219,42 @@ def _scan_line(text: str, number: int) -> _Line | Diagnostic:
     if kind == "comma_comment_line":
         return _Line(number, "comment", comment=_comment_text(str(tree.children[0]).strip()))
     if kind == "comment_line":
-        raw = str(tree.children[0].children[0])
+        raw = str(_branch(tree.children[0]).children[0])
         return _Line(number, "comment", comment=_comment_text(raw))
     if kind == "label_line":
-        tok = tree.children[0]
-        return _Line(number, "label", [_Token(str(tok)[:-1], tok.column, False)])
-    statement = tree.children[0]
+        tok = _leaf(tree.children[0])
+        return _Line(number, "label", [_Token(str(tok)[:-1], _column(tok), False)])
+    statement = _branch(tree.children[0])
     comment: str | None = None
     if len(tree.children) > 1:
-        comment = _comment_text(str(tree.children[1].children[0])).strip()
+        comment = _comment_text(str(_branch(tree.children[1]).children[0])).strip()
     if statement.data == "parameter_line":
-        tok = statement.children[0]
-        return _Line(number, "parameter", [_Token(str(tok), tok.column, True)], comment)
-    words = [_Token(str(statement.children[0]), statement.children[0].column, False)]
-    for operand in statement.children[1:]:
-        tok = operand.children[0]
-        words.append(_Token(str(tok), tok.column, operand.data == "int_operand"))
+        tok = _leaf(statement.children[0])
+        return _Line(number, "parameter", [_Token(str(tok), _column(tok), True)], comment)
+    name = _leaf(statement.children[0])
+    words = [_Token(str(name), _column(name), False)]
+    for child in statement.children[1:]:
+        operand = _branch(child)
+        tok = _leaf(operand.children[0])
+        words.append(_Token(str(tok), _column(tok), operand.data == "int_operand"))
     return _Line(number, "instruction", words, comment)
+
+
+def _branch(node: lark.Tree[lark.Token] | lark.Token) -> lark.Tree[lark.Token]:
+    """A subtree the line grammar puts at this place."""
+    assert isinstance(node, lark.Tree), node
+    return node
+
+
+def _leaf(node: lark.Tree[lark.Token] | lark.Token) -> lark.Token:
+    """A token the line grammar puts at this place."""
+    assert isinstance(node, lark.Token), node
+    return node
+
+
+def _column(token: lark.Token) -> int:
+    """The token's 1-based column (the line parser tracks positions, so it is always set)."""
+    return token.column or 1
 
 
 def _header_kind(rest: str) -> tuple[int, str, bool]:

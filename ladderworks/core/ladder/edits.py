@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from ladderworks.core.address import Address, AddressError, parse_address
-from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.diagnostics import Diagnostic, DiagnosticError, Refused
 from ladderworks.core.il.program import ParamValue
 from ladderworks.core.ladder.model import (
     MAX_ROWS,
@@ -22,12 +22,11 @@ from ladderworks.core.ladder.model import (
 )
 
 
-class EditRefused(Exception):
+class EditRefused(Refused):
     """An edit that cannot be made; `diagnostic` says why (show it, nothing was changed)."""
 
     def __init__(self, code: str, cell: Cell | None = None, **args: object) -> None:
-        self.diagnostic = Diagnostic(code, dict(args), cell=cell)
-        super().__init__(self.diagnostic.message())
+        DiagnosticError.__init__(self, [Diagnostic(code, dict(args), cell=cell)])
 
 
 @dataclass(frozen=True, slots=True)
@@ -133,7 +132,7 @@ def add_parallel(network: LadderNetwork, row: int, col: int,
         raise EditRefused("edit-no-element", (row, col), row=row, col=col)
     (row, col), old = found
     new = element if element is not None else (
-        Contact() if isinstance(old, Contact) else Coil(write=old.write))
+        Coil(write=old.write) if isinstance(old, Coil) else Contact())
     work = network.copy()
     if row + 1 < work.rows and work.element_at(row + 1, col) is not None:
         _insert_row(work, row + 1)

@@ -137,6 +137,7 @@ class _Generator:
         self.unit_count = 0
         self.chunk_count = 0
         self.guarded = False
+        self.chunk_depth = 0  # the deepest stack level the chunk uses
         self.unit_numbers = {u.name: n for n, u in enumerate(self.structure.units())}
         self.unit_number = 0
         self.chunk_of_label: dict[int, int] = {}

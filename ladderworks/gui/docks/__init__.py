@@ -3,12 +3,16 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QEvent, QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QMainWindow
 
 from ladderworks.core.il import Program
 from ladderworks.gui.plc_session import PlcSession
+
+if TYPE_CHECKING:
+    from ladderworks.gui.docks.online import OnlineMode
 
 
 @dataclass(slots=True)
@@ -19,7 +23,7 @@ class PlcDocks:
     control: QDockWidget
     diagnostic: QDockWidget
     force_list: QDockWidget
-    online: QObject
+    online: OnlineMode | None  # on-line mode needs the console's editor
     others: dict[str, QDockWidget] = field(default_factory=dict)  # issue 8's docks by name
 
 
@@ -74,8 +78,8 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
     _Retranslate(window, [control, diagnostic, force_list]
                  + ([online] if online is not None else []))
     plc_menu = find_menu(window, "menu_plc")
-    actions = [control.actions[name] for name in ("action_plc_control_compile", "action_plc_start",
-                                                  "action_plc_stop")]
+    actions = [control.control_actions[name]
+               for name in ("action_plc_control_compile", "action_plc_start", "action_plc_stop")]
     for action in actions:
         register_action(window, action)
     if online is not None:
@@ -100,5 +104,4 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
     app = QCoreApplication.instance()
     if app is not None:
         app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
-    window.plc_docks = PlcDocks(session, control, diagnostic, force_list, online, others)
-    return window.plc_docks
+    return PlcDocks(session, control, diagnostic, force_list, online, others)

@@ -197,10 +197,8 @@ class AlarmDock(QDockWidget):
 
     def shown_rows(self) -> list[list[str]]:
         """The texts of the list, row by row (for tests and for copying)."""
-        return [
-            [self.tree.topLevelItem(row).text(column) for column in range(COLUMNS)]
-            for row in range(self.tree.topLevelItemCount())
-        ]
+        items = (self.tree.topLevelItem(row) for row in range(self.tree.topLevelItemCount()))
+        return [[item.text(column) for column in range(COLUMNS)] for item in items if item]
 
     # -- language ------------------------------------------------------------------------------
 

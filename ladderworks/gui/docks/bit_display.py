@@ -336,6 +336,8 @@ class BitDisplayDock(QDockWidget):
     def _fit_width(self) -> None:
         """Ask for the width the rows need in this language, so no column is cut off."""
         holder = self._scroll.widget()
+        if holder is None:  # no widget before setWidget (ours is set in __init__)
+            return
         holder.adjustSize()
         bar = self._scroll.verticalScrollBar().sizeHint().width()
         frame = 2 * self._scroll.frameWidth()

@@ -152,15 +152,16 @@ def network_power(network: LadderNetwork, value: Callable[[Address], int],
             else:
                 coil = next((e for e in network.cells.values() if isinstance(e, Coil)
                              and e.address is not None and e.write is Write.OUT), None)
-                out = coil is not None and bool(value(coil.address)) != coil.negated
+                out = (coil is not None and coil.address is not None
+                       and bool(value(coil.address)) != coil.negated)
             if out and index not in disabled:
                 power.box_out.add(anchor)
     for r, c in power.closed:
         edges.append((nets.net((r, c)), nets.net((r, c + 1))))
     for anchor in power.box_out:
-        box = network.cells[anchor]
-        assert isinstance(box, FunctionBox)
-        edges.append((nets.net((0, 0)), nets.net((anchor[0], anchor[1] + box.width))))
+        powered_box = network.cells[anchor]
+        assert isinstance(powered_box, FunctionBox)
+        edges.append((nets.net((0, 0)), nets.net((anchor[0], anchor[1] + powered_box.width))))
     powered = powered_nets(nets.net((0, 0)), edges)
     for r in range(network.rows):
         for k in range(network.columns + 1):

@@ -47,7 +47,7 @@ class DiagnosticView(QGraphicsView):
         self.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.MinimalViewportUpdate)
         self.setDragMode(QGraphicsView.DragMode.ScrollHandDrag)
         self.live = LivePower(self.scene_)
-        self.items: list[NetworkItem] = []
+        self.network_items: list[NetworkItem] = []
         self.networks: list[LadderNetwork] = []
         self.layout_ = Layout()
         self.paints = 0  # viewport paint events (the benchmark's repaint rate)
@@ -57,19 +57,19 @@ class DiagnosticView(QGraphicsView):
                       ops: list[list[int]]) -> None:
         """Draw `networks` (coded as `ops` of `binary`) with power overlays."""
         self.live.detach()
-        for item in self.items:
+        for item in self.network_items:
             self.scene_.removeItem(item)
         self.networks = networks
         self.layout_ = Layout()
         self.layout_.rebuild(networks)
-        self.items = []
+        self.network_items = []
         for index, (network, top) in enumerate(zip(networks, self.layout_.tops, strict=True)):
             item = NetworkItem(network, index + 1, describe_signal)
             item.setPos(0, top)
             self.scene_.addItem(item)
-            self.items.append(item)
+            self.network_items.append(item)
         self.live.attach(networks, self.layout_.tops, binary, ops)
-        width = max((item.boundingRect().width() for item in self.items), default=600.0)
+        width = max((item.boundingRect().width() for item in self.network_items), default=600.0)
         self.scene_.setSceneRect(QRectF(0, 0, width, max(self.layout_.total_height(), CELL_H)))
 
     def visible_rect(self) -> QRectF:

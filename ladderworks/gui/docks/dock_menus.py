@@ -7,7 +7,6 @@ from PySide6.QtGui import QAction
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QMenu
 
 from ladderworks.core.address import AddressError
-from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 
 translate = QCoreApplication.translate
@@ -51,10 +50,4 @@ def insert_before(menu: QMenu | None, action: QAction, before_name: str) -> None
 
 def address_error_text(error: AddressError) -> str:
     """An address error in the current UI language (the console's diagnostic texts)."""
-    if error.code == "width":
-        return translate("PlcDocks", "'{0}': the width after ':' must be 1, 2 or 4").format(
-            error.args_map.get("text", ""))
-    if error.code == "bit-width":
-        return translate("PlcDocks", "'{0}': a bit address takes no width").format(
-            error.args_map.get("text", ""))
-    return diagnostic_text(Diagnostic(error.code, dict(error.args_map)))
+    return diagnostic_text(error.diagnostic)

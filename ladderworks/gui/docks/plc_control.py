@@ -77,7 +77,7 @@ class PlcControlDock(QDockWidget):
         self.toolbar.setObjectName("plcControlToolbar")
         self.run_bar = QToolBar(body)
         self.run_bar.setObjectName("plcRunToolbar")
-        self.actions: dict[str, QAction] = {}
+        self.control_actions: dict[str, QAction] = {}
         for name, slot, bar in (
                 ("action_plc_open_mod", self.open_dialog, self.toolbar),
                 ("action_plc_take_console", self.take_console_program, self.toolbar),
@@ -88,7 +88,7 @@ class PlcControlDock(QDockWidget):
             action.setObjectName(name)
             action.triggered.connect(lambda _checked=False, s=slot: s())
             bar.addAction(action)
-            self.actions[name] = action
+            self.control_actions[name] = action
         layout.addWidget(self.toolbar)
         layout.addWidget(self.run_bar)
         self.setMinimumWidth(440)
@@ -129,7 +129,7 @@ class PlcControlDock(QDockWidget):
             "action_plc_stop": translate("PlcControl", "STOP"),
         }
         for name, text in texts.items():
-            self.actions[name].setText(text)
+            self.control_actions[name].setText(text)
         self._show_status(self.session.status())
 
     # -- the program text ------------------------------------------------------------------
@@ -275,10 +275,11 @@ class PlcControlDock(QDockWidget):
 
     def _update_actions(self) -> None:
         running = self.session.running
-        self.actions["action_plc_start"].setEnabled(self.session.engine is not None
+        self.control_actions["action_plc_start"].setEnabled(self.session.engine is not None
                                                     and not running)
-        self.actions["action_plc_stop"].setEnabled(running)
-        self.actions["action_plc_control_compile"].setEnabled(not running and not self.compiling)
+        self.control_actions["action_plc_stop"].setEnabled(running)
+        self.control_actions["action_plc_control_compile"].setEnabled(
+            not running and not self.compiling)
 
     def _show_status(self, status: PlcStatus) -> None:
         if not status.loaded:

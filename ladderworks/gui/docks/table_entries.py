@@ -11,6 +11,7 @@ from enum import StrEnum
 
 from ladderworks.core.address import AREA_SIZES, Address, Area
 from ladderworks.core.compiler.binary import BinaryProgram
+from ladderworks.core.diagnostics import Refused
 from ladderworks.core.plc.functions.counters import (
     MAX_PRESET,
     counter_preset_address,
@@ -32,13 +33,8 @@ class TableKind(StrEnum):
     KEEP = "keep"
 
 
-class TableError(ValueError):
-    """A value the table refuses; `code` and `args` name the reason (translated by the dock)."""
-
-    def __init__(self, code: str, **args: object) -> None:
-        self.code = code
-        self.args_map = dict(args)
-        super().__init__(f"{code}: {args}")
+class TableError(Refused, ValueError):
+    """A value the table refuses; its `diagnostic` says why (translated by the dock)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -208,13 +204,13 @@ def parse_int(text: str) -> int:
     try:
         return int(spelled, 0) if spelled.lower().startswith(("0x", "0b")) else int(spelled)
     except ValueError:
-        raise TableError("not-number", text=text.strip()) from None
+        raise TableError("not-a-number", text=text.strip()) from None
 
 
 def check_range(value: int, low: int, high: int) -> int:
     """`value` if low <= value <= high; raises TableError `range`."""
     if not low <= value <= high:
-        raise TableError("range", value=value, low=low, high=high)
+        raise TableError("out-of-range", value=value, low=low, high=high)
     return value
 
 
@@ -253,7 +249,7 @@ def data_width(text: str) -> int:
     """A data width: 1, 2 or 4 bytes."""
     width = parse_int(text)
     if width not in DATA_WIDTHS:
-        raise TableError("width", value=width)
+        raise TableError("value-width", value=width)
     return width
 
 
@@ -273,5 +269,5 @@ def keep_bits(text: str) -> int:
     """A keep-relay byte typed as up to 8 binary digits (bit 7 first)."""
     spelled = text.strip().replace(" ", "")
     if not spelled or len(spelled) > 8 or set(spelled) - {"0", "1"}:
-        raise TableError("bits", text=text.strip())
+        raise TableError("bit-pattern", text=text.strip())
     return int(spelled, 2)

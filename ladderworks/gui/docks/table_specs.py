@@ -141,7 +141,7 @@ class TimerSpec(TableSpec):
         """A new preset or precision code."""
         assert isinstance(row, TimerRow)
         if row.fixed:
-            raise TableError("fixed", number=row.number)
+            raise TableError("preset-fixed", number=row.number)
         layout = session.timers
         where = layout.precision_address(row.number)
         if column == 3 and where is not None:
@@ -160,7 +160,7 @@ class TimerSpec(TableSpec):
         """Preset 0; TMRB refused."""
         assert isinstance(row, TimerRow)
         if row.fixed:
-            raise TableError("fixed", number=row.number)
+            raise TableError("preset-fixed", number=row.number)
         session.set_timer_preset(row.number, 0)
         self.listed.discard(row.number)
 

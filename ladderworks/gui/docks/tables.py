@@ -31,6 +31,7 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.compiler.binary import BinaryProgram
+from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.dock_menus import add_dock
 from ladderworks.gui.docks.table_entries import DATA_WIDTHS, TableError, TableKind
 from ladderworks.gui.docks.table_model import PlcTableModel
@@ -38,30 +39,6 @@ from ladderworks.gui.docks.table_specs import Row, TableSpec, table_specs
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 
 translate = QCoreApplication.translate
-
-
-def table_error_text(error: TableError) -> str:
-    """A refused value in the current UI language."""
-    args = error.args_map
-    if error.code == "not-number":
-        return translate("PlcTables", "'{0}' is not a number").format(args.get("text", ""))
-    if error.code == "range":
-        return translate("PlcTables", "{0} is out of range ({1} to {2})").format(
-            args.get("value"), args.get("low"), args.get("high")
-        )
-    if error.code == "width":
-        return translate("PlcTables", "{0} bytes: a value has 1, 2 or 4 bytes").format(
-            args.get("value")
-        )
-    if error.code == "bits":
-        return translate(
-            "PlcTables", "'{0}': type up to 8 binary digits (0 and 1), bit 7 first"
-        ).format(args.get("text", ""))
-    if error.code == "fixed":
-        return translate(
-            "PlcTables", "TMRB {0}: its preset is fixed in the program and cannot be changed here"
-        ).format(args.get("number"))
-    return error.code
 
 
 class InsertRowDialog(QDialog):
@@ -218,16 +195,16 @@ class PlcTablesDock(QDockWidget):
         model = self.models[kind]
         if model.setData(model.index(row, column), text):
             return None
-        return table_error_text(model.last_error) if model.last_error else None
+        return diagnostic_text(model.last_error.diagnostic) if model.last_error else None
 
     def _refused(self, error: TableError) -> None:
-        self._say(table_error_text(error), error=True)
+        self._say(diagnostic_text(error.diagnostic), error=True)
 
     def _outcome(self, error: TableError | None) -> str | None:
         if error is None:
             self._say("")
             return None
-        problem = table_error_text(error)
+        problem = diagnostic_text(error.diagnostic)
         self._say(problem, error=True)
         return problem
 
@@ -235,7 +212,7 @@ class PlcTablesDock(QDockWidget):
         """INSERT with the form's texts: validate, store, list the row; or the reason not."""
         error = self.models[kind].run("insert", list(texts) + [""] * 3)
         if error is not None:
-            return table_error_text(error)
+            return diagnostic_text(error.diagnostic)
         self._say("")
         return None
 

@@ -121,10 +121,11 @@ class TimeChartDock(QDockWidget):
         for side in ("left", "bottom"):
             item.getAxis(side).setTextPen("k")
             item.getAxis(side).setPen("k")
-        self.cursor = pg.InfiniteLine(angle=90, movable=True, pen=pg.mkPen("#e07000", width=1.5))
-        self.cursor.setZValue(10)
-        self.cursor.sigPositionChanged.connect(self._show_cursor)
-        item.addItem(self.cursor, ignoreBounds=True)
+        self.time_cursor = pg.InfiniteLine(angle=90, movable=True,
+                                           pen=pg.mkPen("#e07000", width=1.5))
+        self.time_cursor.setZValue(10)
+        self.time_cursor.sigPositionChanged.connect(self._show_cursor)
+        item.addItem(self.time_cursor, ignoreBounds=True)
         layout.addWidget(self.plot, 1)
         self.cursor_label = QLabel(body)
         self.cursor_label.setObjectName("timeChartCursor")
@@ -264,8 +265,8 @@ class TimeChartDock(QDockWidget):
             curve.setData(xs, ys)
             if self.record.signals[lane].is_bit:
                 next(fills).setData(xs, ys)
-        if self.record.times and self.cursor.value() < self.record.times[0]:
-            self.cursor.setValue(self.record.times[0])
+        if self.record.times and self.time_cursor.value() < self.record.times[0]:
+            self.time_cursor.setValue(self.record.times[0])
         self._show_cursor()
 
     # -- zoom, pan, cursor -----------------------------------------------------------------
@@ -296,11 +297,11 @@ class TimeChartDock(QDockWidget):
 
     def set_cursor(self, time_ms: float) -> None:
         """Put the cursor at `time_ms`."""
-        self.cursor.setValue(time_ms)
+        self.time_cursor.setValue(time_ms)
 
     def cursor_values(self) -> dict[str, int | None]:
         """Each lane's value at the cursor, by lane label (None outside the record)."""
-        at = self.cursor.value()
+        at = self.time_cursor.value()
         return {
             signal.label: self.record.value_at(lane, at)
             for lane, signal in enumerate(self.record.signals)
@@ -315,7 +316,7 @@ class TimeChartDock(QDockWidget):
             for label, value in self.cursor_values().items()
         )
         self.cursor_label.setText(
-            translate("TimeChart", "Cursor {0} ms:").format(round(self.cursor.value()))
+            translate("TimeChart", "Cursor {0} ms:").format(round(self.time_cursor.value()))
             + "   "
             + values
         )

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 
-from PySide6.QtCore import QCoreApplication, QEvent, QPoint, QPointF, QRectF, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, QObject, QPoint, QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import (
     QAction,
     QBrush,
@@ -113,7 +113,7 @@ class LadderEditor(QGraphicsView):
         self.undo_stack = QUndoStack(self)
         self.document = LadderDocument()
         self.networks: list[LadderNetwork] = []
-        self.items: list[NetworkItem] = []
+        self.network_items: list[NetworkItem] = []
         self.layout_ = Layout()
         self.tool = Tool.SELECT
         self.function_name = "TMR"
@@ -165,12 +165,12 @@ class LadderEditor(QGraphicsView):
         self.document = document
         self.networks = [net for net in document.networks]
         self.networks.append(LadderNetwork())
-        for item in self.items:
+        for item in self.network_items:
             self._scene.removeItem(item)
-        self.items = [self._make_item(net, i) for i, net in enumerate(self.networks)]
+        self.network_items = [self._make_item(net, i) for i, net in enumerate(self.networks)]
         self.layout_ = Layout()
         self.layout_.rebuild(self.networks)
-        for item, top in zip(self.items, self.layout_.tops, strict=True):
+        for item, top in zip(self.network_items, self.layout_.tops, strict=True):
             item.setPos(0, top)
             self._scene.addItem(item)
         self._renumber(0)
@@ -211,29 +211,29 @@ class LadderEditor(QGraphicsView):
         return NetworkItem(network, index + 1, describe_signal)
 
     def _renumber(self, start: int) -> None:
-        last = len(self.items) - 1
-        for index in range(start, len(self.items)):
-            item = self.items[index]
+        last = len(self.network_items) - 1
+        for index in range(start, len(self.network_items)):
+            item = self.network_items[index]
             item.number = index + 1
             item.is_new = index == last and self.networks[index].is_empty()
             item.update()
 
     def _relayout(self, start: int) -> None:
         self.layout_.rebuild(self.networks, start)
-        for index in range(start, len(self.items)):
-            self.items[index].setPos(0, self.layout_.tops[index])
+        for index in range(start, len(self.network_items)):
+            self.network_items[index].setPos(0, self.layout_.tops[index])
         self._update_scene_rect()
         self._place_overlays()
 
     def _update_scene_rect(self) -> None:
-        width = max((item.boundingRect().width() for item in self.items[:50]), default=800)
+        width = max((item.boundingRect().width() for item in self.network_items[:50]), default=800)
         widest = max(width, *(LEFT + (n.columns + 1) * CELL_W + 8 for n in self.networks))
         self._scene.setSceneRect(QRectF(-4, -4, widest + 8, self.layout_.total_height() + 40))
 
     def network_changed(self, index: int) -> None:
         """A command changed network `index`: repaint and restack from it."""
-        self.items[index].error_cells = set()
-        self.items[index].refresh()
+        self.network_items[index].error_cells = set()
+        self.network_items[index].refresh()
         self._relayout(index)
         self._renumber(index)
         self.drawing_changed.emit()
@@ -242,7 +242,7 @@ class LadderEditor(QGraphicsView):
         """Insert a network (used by undo commands)."""
         self.networks.insert(index, network)
         item = self._make_item(network, index)
-        self.items.insert(index, item)
+        self.network_items.insert(index, item)
         self._scene.addItem(item)
         self._relayout(index)
         self._renumber(max(index - 1, 0))
@@ -250,7 +250,7 @@ class LadderEditor(QGraphicsView):
     def remove_network(self, index: int) -> LadderNetwork:
         """Remove a network (used by undo commands); returns it."""
         network = self.networks.pop(index)
-        item = self.items.pop(index)
+        item = self.network_items.pop(index)
         self._scene.removeItem(item)
         if self.cursor_cell[0] >= len(self.networks):
             self.cursor_cell = (len(self.networks) - 1, 0, 0)
@@ -260,7 +260,7 @@ class LadderEditor(QGraphicsView):
 
     def mark_diagnostics(self, diagnostics: list[Diagnostic]) -> None:
         """Outline the cells the diagnostics point at."""
-        for item in self.items:
+        for item in self.network_items:
             if item.error_cells:
                 item.error_cells = set()
                 item.update()
@@ -268,9 +268,9 @@ class LadderEditor(QGraphicsView):
             if (
                 diagnostic.network is not None
                 and diagnostic.cell is not None
-                and 0 <= diagnostic.network < len(self.items)
+                and 0 <= diagnostic.network < len(self.network_items)
             ):
-                item = self.items[diagnostic.network]
+                item = self.network_items[diagnostic.network]
                 item.error_cells.add(diagnostic.cell)
                 item.update()
 
@@ -591,7 +591,7 @@ class LadderEditor(QGraphicsView):
             translate("LadderEditor", "Comment"),
         )
 
-    def eventFilter(self, watched: object, event: QEvent) -> bool:
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """ENTER in the inline editor commits it, ESC cancels it."""
         if watched is self.inline_editor and event.type() == QEvent.Type.KeyPress:
             assert isinstance(event, QKeyEvent)

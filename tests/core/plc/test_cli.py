@@ -100,6 +100,17 @@ def test_bad_options_are_reported(capsys: pytest.CaptureFixture[str], argv: list
     assert err.startswith("ladderworks-cli: ")
 
 
+@pytest.mark.parametrize(("target", "says"), [
+    ("D10:3", "'D10:3': the width after ':' must be 1, 2 or 4"),
+    ("R1.4:2", "'R1.4:2': a bit address takes no width"),
+    ("Q1", "'Q1': unknown area 'Q'"),
+])
+def test_bad_targets_are_explained_in_words(capsys: pytest.CaptureFixture[str], target: str,
+                                           says: str) -> None:
+    code, _, err = run(capsys, "run", str(EXAMPLES / "alarm.LAD"), "--print", target)
+    assert code == 2 and says in err
+
+
 def test_run_reads_the_parameter_file_beside_the_program(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     source = tmp_path / "timer.LAD"
