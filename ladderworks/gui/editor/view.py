@@ -28,7 +28,7 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core import ladder as core
-from ladderworks.core.address import Address
+from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program
 from ladderworks.core.instructions import lookup
@@ -45,6 +45,7 @@ from ladderworks.core.ladder import (
     convert,
 )
 from ladderworks.core.signals import signal_at
+from ladderworks.core.symbols import SymbolTable, resolve
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
 from ladderworks.gui.editor.geometry import (
@@ -62,6 +63,7 @@ from ladderworks.gui.editor.geometry import (
 )
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.function_dialog import FunctionDialog
+from ladderworks.gui.symbol_text import name_and_text
 from ladderworks.gui.tools import KEY_TOOLS, Tool
 
 ZOOM_STEP = 1.2
@@ -111,6 +113,7 @@ class LadderEditor(QGraphicsView):
         self.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
         self.undo_stack = QUndoStack(self)
         self.document = LadderDocument()
+        self.symbols: SymbolTable | None = None  # the program's `%@2` symbols
         self.networks: list[LadderNetwork] = []
         self.items: list[NetworkItem] = []
         self.layout_ = Layout()
@@ -162,6 +165,7 @@ class LadderEditor(QGraphicsView):
         self._close_inline()
         self.undo_stack.clear()
         self.document = document
+        self.symbols = document.origin.symbols if document.origin is not None else None
         self.networks = [net for net in document.networks]
         self.networks.append(LadderNetwork())
         for item in self.items:
@@ -207,7 +211,18 @@ class LadderEditor(QGraphicsView):
         return all(net.is_empty() for net in self.networks)
 
     def _make_item(self, network: LadderNetwork, index: int) -> NetworkItem:
-        return NetworkItem(network, index + 1, describe_signal)
+        return NetworkItem(network, index + 1, self.describe_address)
+
+    def describe_address(self, address: object) -> tuple[str, str] | None:
+        """(symbol, comment) of the program, else (signal name, description) of the manual."""
+        return name_and_text(address, self.symbols)
+
+    def resolve_address(self, text: str) -> str:
+        """The address a typed text names: itself, or the address of a program symbol."""
+        try:
+            return str(resolve(text, self.symbols))
+        except AddressError:
+            return text
 
     def _renumber(self, start: int) -> None:
         last = len(self.items) - 1
@@ -480,7 +495,7 @@ class LadderEditor(QGraphicsView):
             ("address", index, row, col),
             text,
             rect,
-            translate("LadderEditor", "Address, e.g. X2.1 (// comment)"),
+            translate("LadderEditor", "Address or symbol, e.g. X2.1 (// comment)"),
         )
 
     def open_comment_editor(self, index: int, line: int) -> None:
@@ -541,6 +556,7 @@ class LadderEditor(QGraphicsView):
         if not address_text:
             self._close_inline()
             return
+        address_text = self.resolve_address(address_text)
         try:
             core.edits.to_address(address_text, (row, col))
         except EditRefused as refused:
@@ -780,14 +796,16 @@ class LadderEditor(QGraphicsView):
         parts = [
             translate("LadderEditor", "N{0} row {1} col {2}").format(index + 1, row + 1, col + 1)
         ]
+        if self.networks[index].label:
+            parts.append(self.networks[index].label)
         found = self.networks[index].element_at(row, col)
         if found is not None:
             element = found[1]
             if isinstance(element, Contact | Coil) and element.address is not None:
                 parts.append(str(element.address))
-                described = describe_signal(element.address)
+                described = self.describe_address(element.address)
                 if described is not None:
-                    parts.append(f"{described[0]} — {described[1]}")
+                    parts.append(" — ".join(text for text in described if text))
                 if element.comment:
                     parts.append(element.comment)
             elif isinstance(element, FunctionBox):
