@@ -13,6 +13,7 @@ from PySide6.QtGui import (
     QKeyEvent,
     QMouseEvent,
     QPainter,
+    QPaintEvent,
     QPen,
     QUndoStack,
 )
@@ -61,6 +62,7 @@ from ladderworks.gui.editor.geometry import (
     grid_top,
     node_point,
 )
+from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.function_dialog import FunctionDialog
 from ladderworks.gui.symbol_text import name_and_text
@@ -115,7 +117,7 @@ class LadderEditor(QGraphicsView):
         self.document = LadderDocument()
         self.symbols: SymbolTable | None = None  # the program's `%@2` symbols
         self.networks: list[LadderNetwork] = []
-        self.items: list[NetworkItem] = []
+        self.items = LazyItems(self._make_item)  # made when shown (a real program: 10,000+)
         self.layout_ = Layout()
         self.tool = Tool.SELECT
         self.function_name = "TMR"
@@ -168,15 +170,11 @@ class LadderEditor(QGraphicsView):
         self.symbols = document.origin.symbols if document.origin is not None else None
         self.networks = [net for net in document.networks]
         self.networks.append(LadderNetwork())
-        for item in self.items:
+        for _index, item in self.items.made():
             self._scene.removeItem(item)
-        self.items = [self._make_item(net, i) for i, net in enumerate(self.networks)]
+        self.items.reset(len(self.networks))
         self.layout_ = Layout()
         self.layout_.rebuild(self.networks)
-        for item, top in zip(self.items, self.layout_.tops, strict=True):
-            item.setPos(0, top)
-            self._scene.addItem(item)
-        self._renumber(0)
         self.selection = None
         self.line_start = None
         self.cursor_cell = (0, 0, 0)
@@ -210,8 +208,27 @@ class LadderEditor(QGraphicsView):
         """True when nothing is drawn."""
         return all(net.is_empty() for net in self.networks)
 
-    def _make_item(self, network: LadderNetwork, index: int) -> NetworkItem:
-        return NetworkItem(network, index + 1, self.describe_address)
+    def _make_item(self, index: int) -> NetworkItem:
+        item = NetworkItem(self.networks[index], index + 1, self.describe_address)
+        item.is_new = index == len(self.networks) - 1 and self.networks[index].is_empty()
+        item.setPos(0, self.layout_.tops[index])
+        self._scene.addItem(item)
+        return item
+
+    def make_visible_items(self) -> None:
+        """Make the items of the networks in (and just around) the viewport."""
+        if not self.networks or not self.layout_.tops:
+            return
+        shown = self.mapToScene(self.viewport().rect()).boundingRect()
+        first = self.layout_.network_at(shown.top() - CELL_H)
+        last = self.layout_.network_at(shown.bottom() + CELL_H)
+        for index in range(first, min(last, len(self.networks) - 1) + 1):
+            self.items[index]
+
+    def paintEvent(self, event: QPaintEvent) -> None:
+        """Make the visible networks' items, then paint."""
+        self.make_visible_items()
+        super().paintEvent(event)
 
     def describe_address(self, address: object) -> tuple[str, str] | None:
         """(symbol, comment) of the program, else (signal name, description) of the manual."""
@@ -226,22 +243,20 @@ class LadderEditor(QGraphicsView):
 
     def _renumber(self, start: int) -> None:
         last = len(self.items) - 1
-        for index in range(start, len(self.items)):
-            item = self.items[index]
+        for index, item in self.items.made(start):
             item.number = index + 1
             item.is_new = index == last and self.networks[index].is_empty()
             item.update()
 
     def _relayout(self, start: int) -> None:
         self.layout_.rebuild(self.networks, start)
-        for index in range(start, len(self.items)):
-            self.items[index].setPos(0, self.layout_.tops[index])
+        for index, item in self.items.made(start):
+            item.setPos(0, self.layout_.tops[index])
         self._update_scene_rect()
         self._place_overlays()
 
     def _update_scene_rect(self) -> None:
-        width = max((item.boundingRect().width() for item in self.items[:50]), default=800)
-        widest = max(width, *(LEFT + (n.columns + 1) * CELL_W + 8 for n in self.networks))
+        widest = max(800, *(LEFT + (n.columns + 1) * CELL_W + 8 for n in self.networks))
         self._scene.setSceneRect(QRectF(-4, -4, widest + 8, self.layout_.total_height() + 40))
 
     def network_changed(self, index: int) -> None:
@@ -255,9 +270,7 @@ class LadderEditor(QGraphicsView):
     def insert_network(self, index: int, network: LadderNetwork) -> None:
         """Insert a network (used by undo commands)."""
         self.networks.insert(index, network)
-        item = self._make_item(network, index)
-        self.items.insert(index, item)
-        self._scene.addItem(item)
+        self.items.insert(index)
         self._relayout(index)
         self._renumber(max(index - 1, 0))
 
@@ -265,7 +278,8 @@ class LadderEditor(QGraphicsView):
         """Remove a network (used by undo commands); returns it."""
         network = self.networks.pop(index)
         item = self.items.pop(index)
-        self._scene.removeItem(item)
+        if item is not None:
+            self._scene.removeItem(item)
         if self.cursor_cell[0] >= len(self.networks):
             self.cursor_cell = (len(self.networks) - 1, 0, 0)
         self._relayout(min(index, len(self.networks) - 1))
@@ -274,7 +288,7 @@ class LadderEditor(QGraphicsView):
 
     def mark_diagnostics(self, diagnostics: list[Diagnostic]) -> None:
         """Outline the cells the diagnostics point at."""
-        for item in self.items:
+        for _index, item in self.items.made():
             if item.error_cells:
                 item.error_cells = set()
                 item.update()
