@@ -603,6 +603,7 @@ class MainWindow(QMainWindow):
     def _program_shown(self, program: Program) -> None:
         """A program is now shown: its symbols and messages go to the docks."""
         self.program_info = program
+        self.signals_dock.set_symbols(program.symbols)
         session = getattr(getattr(self, "plc_docks", None), "session", None)
         if session is not None:
             session.set_symbols(program.symbols)
