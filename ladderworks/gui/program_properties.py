@@ -39,11 +39,14 @@ TITLE_ITEMS: dict[int, Callable[[], str]] = {
 
 
 def title_rows(program: Program) -> list[tuple[str, str, str]]:
-    """(item number, meaning, text) of each `%@1` title line, by item number."""
+    """(item number, meaning, text) of the ten title items (empty when absent) and any other
+    `%@1` line, by item number; nothing for a program without a title."""
+    if not program.title:
+        return []
     rows = []
-    for number in sorted(program.title):
+    for number in sorted(set(program.title) | set(TITLE_ITEMS)):
         meaning = TITLE_ITEMS.get(number)
-        rows.append((str(number), meaning() if meaning else "", program.title[number]))
+        rows.append((str(number), meaning() if meaning else "", program.title.get(number, "")))
     return rows
 
 

@@ -29,6 +29,11 @@ _COLUMNS = 4  # address, name, English, Turkish (a program symbol: address, symb
 MAX_SYMBOL_ROWS = 500  # program symbols listed for one query (a real program has 12,000+)
 
 
+def _order(found: tuple[Address, Symbol]) -> tuple[str, int, int]:
+    address = found[0]
+    return address.area.value, address.byte, -1 if address.bit is None else address.bit
+
+
 def symbol_matches(symbols: SymbolTable, query: str) -> list[tuple[Address, Symbol]]:
     """The program's symbols whose symbol, address or comment contains `query`, best first
     (exact symbol, then symbol prefix, then the rest, by address)."""
@@ -44,7 +49,7 @@ def symbol_matches(symbols: SymbolTable, query: str) -> list[tuple[Address, Symb
             groups[1].append((address, entry))
         elif folded in name or any(folded in fold(c) for c in entry.comments):
             groups[2].append((address, entry))
-    return [found for group in groups for found in sorted(group, key=lambda f: f[0])]
+    return [found for group in groups for found in sorted(group, key=_order)]
 
 
 class SignalListDock(QDockWidget):
