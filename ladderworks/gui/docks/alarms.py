@@ -210,6 +210,7 @@ class AlarmDock(QDockWidget):
                     self.message_of(alarm),
                 ]
             )
+            item.setToolTip(4, item.text(4))  # the whole message when the column is narrow
             if alarm.active:
                 item.setForeground(0, QBrush(QColor("#c00000")))
             else:
