@@ -54,52 +54,52 @@
         <translation>(no message {0} in the alarm file)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="219"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="220"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="237"/>
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="240"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="242"/>
         <source>Alarm file...</source>
         <translation>Alarm file...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="245"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
         <source>PLC time</source>
         <translation>PLC time</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
         <source>Clock</source>
         <translation>Clock</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -185,27 +185,27 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>{count} byte(s) here are not valid {encoding}; they are kept as they are</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="140"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>this is not a ladder program (no %@ section and no instruction)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="143"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>line not understood in section {section}: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="146"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="127"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="149"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: the number is too long</translation>
     </message>
@@ -491,46 +491,121 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
+        <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
+        <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="107"/>
+        <source>LBL inside a JMP or COM range</source>
+        <translation>LBL inside a JMP or COM range</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
+        <source>no LBL L{label} where this jump can reach it</source>
+        <translation>no LBL L{label} where this jump can reach it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
+        <source>label L{label} is defined twice in this program unit</source>
+        <translation>label L{label} is defined twice in this program unit</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <source>JMPC is only allowed inside a subprogram</source>
+        <translation>JMPC is only allowed inside a subprogram</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
+        <source>subprogram P{program} does not exist</source>
+        <translation>subprogram P{program} does not exist</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="113"/>
+        <source>calling P{program} here makes a subprogram call itself</source>
+        <translation>calling P{program} here makes a subprogram call itself</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
+        <source>calls through P{program} nest deeper than {limit} subprograms</source>
+        <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="117"/>
+        <source>SP without a matching SPE</source>
+        <translation>SP without a matching SPE</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
+        <source>SPE without an SP before it</source>
+        <translation>SPE without an SP before it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="119"/>
+        <source>subprogram P{program} is defined twice</source>
+        <translation>subprogram P{program} is defined twice</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
+        <source>only subprograms (SP ... SPE) may follow the first SP</source>
+        <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="122"/>
+        <source>{name} cannot end level {level}</source>
+        <translation>{name} cannot end level {level}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="123"/>
+        <source>instruction after END, the end of the program</source>
+        <translation>instruction after END, the end of the program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
+        <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
+        <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="127"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="131"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="133"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="134"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="136"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="130"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="152"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="132"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="154"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="157"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="159"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
@@ -639,67 +714,87 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
         <source>one of {0}</source>
         <translation>one of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
         <source>{0} to {1}</source>
         <translation>{0} to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte address ({0} bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
         <source>byte address</source>
         <translation>byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
         <source>constant or byte address</source>
         <translation>constant or byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>up to 4 binary digits, e.g. 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <source>P{0} to P{1}</source>
+        <translation>P{0} to P{1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <source>L{0} to L{1}</source>
+        <translation>L{0} to L{1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <source>constant or address, kept as written</source>
+        <translation>constant or address, kept as written</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
         <source>values separated by spaces</source>
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="135"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="148"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="151"/>
+        <source>This instruction has no parameters.</source>
+        <translation>This instruction has no parameters.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="141"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="142"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="157"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="143"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="192"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -725,113 +820,114 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="362"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="396"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="675"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="366"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="405"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="682"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="373"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="377"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="377"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="657"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="669"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="381"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="664"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="676"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="386"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="686"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="390"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="693"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="702"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="401"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="410"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="403"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="402"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="421"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="417"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="426"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="428"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="437"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="438"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="447"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="473"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="480"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="477"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="481"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="484"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="488"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="487"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="523"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="593"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="614"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="494"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="530"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="600"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="621"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="328"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="583"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="329"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="590"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="512"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="519"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="587"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="594"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="713"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="720"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="725"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="732"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="734"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="741"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="811"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="818"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -1187,154 +1283,209 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="44"/>
+        <location filename="../ladderworks/gui/translation.py" line="50"/>
         <source>Timer number</source>
         <translation>Timer number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="45"/>
+        <location filename="../ladderworks/gui/translation.py" line="51"/>
         <source>Preset</source>
         <translation>Preset</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="46"/>
+        <location filename="../ladderworks/gui/translation.py" line="52"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="47"/>
+        <location filename="../ladderworks/gui/translation.py" line="53"/>
         <source>Timer/counter register</source>
         <translation>Timer/counter register</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="48"/>
+        <location filename="../ladderworks/gui/translation.py" line="54"/>
         <source>Code signal</source>
         <translation>Code signal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="49"/>
+        <location filename="../ladderworks/gui/translation.py" line="55"/>
         <source>Decode specification</source>
         <translation>Decode specification</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="50"/>
+        <location filename="../ladderworks/gui/translation.py" line="56"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="51"/>
+        <location filename="../ladderworks/gui/translation.py" line="57"/>
         <source>First number</source>
         <translation>First number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="52"/>
+        <location filename="../ladderworks/gui/translation.py" line="58"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="53"/>
+        <location filename="../ladderworks/gui/translation.py" line="59"/>
         <source>Counter number</source>
         <translation>Counter number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="54"/>
+        <location filename="../ladderworks/gui/translation.py" line="60"/>
         <source>Number of positions</source>
         <translation>Number of positions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="55"/>
+        <location filename="../ladderworks/gui/translation.py" line="61"/>
         <source>Current position</source>
         <translation>Current position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="56"/>
+        <location filename="../ladderworks/gui/translation.py" line="62"/>
         <source>Target position</source>
         <translation>Target position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="57"/>
+        <location filename="../ladderworks/gui/translation.py" line="63"/>
         <source>Table size</source>
         <translation>Table size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="58"/>
+        <location filename="../ladderworks/gui/translation.py" line="64"/>
         <source>Index</source>
         <translation>Index</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="59"/>
+        <location filename="../ladderworks/gui/translation.py" line="65"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="60"/>
+        <location filename="../ladderworks/gui/translation.py" line="66"/>
         <source>Table values</source>
         <translation>Table values</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="61"/>
+        <location filename="../ladderworks/gui/translation.py" line="67"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="62"/>
+        <location filename="../ladderworks/gui/translation.py" line="68"/>
         <source>High 4-bit mask</source>
         <translation>High 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="63"/>
+        <location filename="../ladderworks/gui/translation.py" line="69"/>
         <source>Low 4-bit mask</source>
         <translation>Low 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="64"/>
+        <location filename="../ladderworks/gui/translation.py" line="70"/>
         <source>OR data</source>
         <translation>OR data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="65"/>
+        <location filename="../ladderworks/gui/translation.py" line="71"/>
         <source>Data</source>
         <translation>Data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="66"/>
+        <location filename="../ladderworks/gui/translation.py" line="72"/>
         <source>Number of coils</source>
         <translation>Number of coils</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="67"/>
+        <location filename="../ladderworks/gui/translation.py" line="73"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Input format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="68"/>
+        <location filename="../ladderworks/gui/translation.py" line="74"/>
         <source>Compared data</source>
         <translation>Compared data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="69"/>
+        <location filename="../ladderworks/gui/translation.py" line="75"/>
         <source>Searched data</source>
         <translation>Searched data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="70"/>
+        <location filename="../ladderworks/gui/translation.py" line="76"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="72"/>
+        <location filename="../ladderworks/gui/translation.py" line="78"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="73"/>
+        <location filename="../ladderworks/gui/translation.py" line="79"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="74"/>
+        <location filename="../ladderworks/gui/translation.py" line="80"/>
         <source>Constant</source>
         <translation>Constant</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="81"/>
+        <source>Edge number</source>
+        <translation>Edge number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="82"/>
+        <source>Number of bytes</source>
+        <translation>Number of bytes</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="83"/>
+        <source>Operand</source>
+        <translation>Operand</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="84"/>
+        <source>Limit 1</source>
+        <translation>Limit 1</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="85"/>
+        <source>Limit 2</source>
+        <translation>Limit 2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="86"/>
+        <source>Subprogram</source>
+        <translation>Subprogram</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="87"/>
+        <source>Label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="88"/>
+        <source>DI/DO group</source>
+        <translation>DI/DO group</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="89"/>
+        <source>Control data</source>
+        <translation>Control data</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="90"/>
+        <source>Number of messages</source>
+        <translation>Number of messages</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="93"/>
+        <source>Parameter {0}</source>
+        <translation>Parameter {0}</translation>
     </message>
 </context>
 <context>
@@ -2227,132 +2378,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="80"/>
+        <location filename="../ladderworks/gui/tools.py" line="86"/>
         <source>Select</source>
         <translation>Select</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="81"/>
+        <location filename="../ladderworks/gui/tools.py" line="87"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="82"/>
+        <location filename="../ladderworks/gui/tools.py" line="88"/>
         <source>NOT input</source>
         <translation>NOT input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="83"/>
+        <location filename="../ladderworks/gui/tools.py" line="89"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="84"/>
+        <location filename="../ladderworks/gui/tools.py" line="90"/>
         <source>NOT output</source>
         <translation>NOT output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="85"/>
+        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <source>SET coil</source>
+        <translation>SET coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <source>RST coil</source>
+        <translation>RST coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="93"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <location filename="../ladderworks/gui/tools.py" line="94"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <location filename="../ladderworks/gui/tools.py" line="95"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <location filename="../ladderworks/gui/tools.py" line="96"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <location filename="../ladderworks/gui/tools.py" line="97"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <location filename="../ladderworks/gui/tools.py" line="98"/>
         <source>Function</source>
         <translation>Function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <location filename="../ladderworks/gui/tools.py" line="99"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <location filename="../ladderworks/gui/tools.py" line="100"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <location filename="../ladderworks/gui/tools.py" line="108"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Click an element or drag over cells to select; right-click: cut, copy, paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="102"/>
+        <location filename="../ladderworks/gui/tools.py" line="110"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="104"/>
+        <location filename="../ladderworks/gui/tools.py" line="112"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="106"/>
+        <location filename="../ladderworks/gui/tools.py" line="114"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <location filename="../ladderworks/gui/tools.py" line="116"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
+        <translation>Click a cell to place a SET coil (bit := 1 while the logic is 1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="120"/>
+        <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
+        <translation>Click a cell to place an RST coil (bit := 0 while the logic is 1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="122"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Click a contact or coil to turn it into its inverse</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <location filename="../ladderworks/gui/tools.py" line="124"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <location filename="../ladderworks/gui/tools.py" line="126"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <location filename="../ladderworks/gui/tools.py" line="128"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Click the start of an empty row, type the comment, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <location filename="../ladderworks/gui/tools.py" line="130"/>
         <source>Click an element to delete it</source>
         <translation>Click an element to delete it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="119"/>
+        <location filename="../ladderworks/gui/tools.py" line="131"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Choose a function in the list, click the diagram, fill its table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="121"/>
+        <location filename="../ladderworks/gui/tools.py" line="133"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Click a cell to insert an empty row before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="123"/>
+        <location filename="../ladderworks/gui/tools.py" line="135"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Click a cell to insert an empty row after it</translation>
     </message>
@@ -2360,14 +2531,24 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="74"/>
+        <location filename="../ladderworks/gui/palette.py" line="101"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="75"/>
+        <location filename="../ladderworks/gui/palette.py" line="102"/>
         <source>Function:</source>
         <translation>Function:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="103"/>
+        <source>Seed manual instructions</source>
+        <translation>Seed manual instructions</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="104"/>
+        <source>FANUC PMC instructions</source>
+        <translation>FANUC PMC instructions</translation>
     </message>
 </context>
 </TS>

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ladderworks.core.il.printer import print_instruction
 from ladderworks.core.il.program import Instruction
+from ladderworks.core.instructions import Write
 from ladderworks.core.ladder.model import (
     Coil,
     Contact,
@@ -25,6 +26,8 @@ def _symbol(element: Contact | Coil | Wire) -> str:
     if isinstance(element, Wire):
         return "-" * CELL
     mark = "/" if element.negated else " "
+    if isinstance(element, Coil) and element.write is not Write.OUT:  # SET / RST: (S) / (R)
+        mark = "S" if element.write is Write.SET else "R"
     return f"---{'|' if isinstance(element, Contact) else '('}{mark}" \
            f"{'|' if isinstance(element, Contact) else ')'}---"
 
