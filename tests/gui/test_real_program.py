@@ -15,6 +15,7 @@ from ladderworks.core.address import Address, Area, parse_address
 from ladderworks.core.il import Program, parse
 from ladderworks.core.ladder import Contact
 from ladderworks.gui.docks.tables import TableKind
+from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.settings import Settings
 from ladderworks.gui.tools import Tool
@@ -80,6 +81,7 @@ def test_open_lists_mnemonic_files_and_shows_the_ladder_with_labels(
     assert len(editor.networks) > 3000
     assert editor.networks[4].label == "N00004"
     assert "N00004" in editor.describe_cell(4, 0, 0)
+    assert isinstance(editor.items[4], LabelledNetworkItem)  # paints N00004 under `N5`
     # only the networks on screen have graphics items
     QApplication.processEvents()
     editor.viewport().repaint()

@@ -63,6 +63,7 @@ from ladderworks.gui.editor.geometry import (
     grid_top,
     node_point,
 )
+from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.function_dialog import FunctionDialog
@@ -210,7 +211,7 @@ class LadderEditor(QGraphicsView):
         return all(net.is_empty() for net in self.networks)
 
     def _make_item(self, index: int) -> NetworkItem:
-        item = NetworkItem(self.networks[index], index + 1, self.describe_address)
+        item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
         item.is_new = index == len(self.networks) - 1 and self.networks[index].is_empty()
         item.setPos(0, self.layout_.tops[index])
         self._scene.addItem(item)
