@@ -141,6 +141,8 @@ class SignalListDock(QDockWidget):
     def set_symbols(self, symbols: SymbolTable | None) -> None:
         """The open program's symbols are searched too (listed before the manual's signals)."""
         self.symbols = symbols
+        if not self.query.text().strip():
+            return  # an empty query lists the manual's signals only: nothing changes
         if self.isVisible():
             self.show_matches(self.query.text())
         else:

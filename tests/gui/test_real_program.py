@@ -54,6 +54,7 @@ def opened(qapp: QApplication, tmp_path_factory: pytest.TempPathFactory
         patch.setattr(QMessageBox, "question", staticmethod(
             lambda *_a, **_k: (_ for _ in ()).throw(AssertionError("unexpected question"))))
         window.actions_by_name["action_open"].trigger()
+        filters.append(str(window.editor.loading))  # a large program lays out in the background
         yield window, filters
         window.plc_docks.session.stop()
         window.editor.undo_stack.setClean()
@@ -71,8 +72,10 @@ def _cell_of(window: MainWindow, address: Address) -> tuple[int, int, int]:
 
 
 def test_open_lists_mnemonic_files_and_shows_the_ladder_with_labels(
-        opened: tuple[MainWindow, list[str]]) -> None:
+        qtbot: QtBot, opened: tuple[MainWindow, list[str]]) -> None:
     window, filters = opened
+    assert filters[1] == "True"  # the first networks were shown before all were laid out
+    qtbot.waitUntil(lambda: not window.editor.loading, timeout=60000)
     assert filters and all(f"*.{ext}" in filters[0] for ext in ("mnc", "LAD", "MOD", "txt"))
     assert "All files (*)" in filters[0]
     assert window.pages.currentWidget() is window.editor
@@ -146,6 +149,7 @@ def test_typing_a_symbol_as_the_address_puts_its_address(
         qtbot: QtBot, opened: tuple[MainWindow, list[str]]) -> None:
     window, _ = opened
     editor = window.editor
+    editor.finish_loading()
     last = len(editor.networks) - 1
     editor.setFocus()
     editor.move_cursor(last, 0, 0)

@@ -66,6 +66,7 @@ from ladderworks.gui.editor.geometry import (
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
+from ladderworks.gui.editor.progressive import ProgressiveLoader
 from ladderworks.gui.function_dialog import FunctionDialog
 from ladderworks.gui.symbol_text import name_and_text
 from ladderworks.gui.tools import KEY_TOOLS, Tool
@@ -120,6 +121,7 @@ class LadderEditor(QGraphicsView):
         self.symbols: SymbolTable | None = None  # the program's `%@2` symbols
         self.networks: list[LadderNetwork] = []
         self.items = LazyItems(self._make_item)  # made when shown (a real program: 10,000+)
+        self.loader = ProgressiveLoader(self)
         self.layout_ = Layout()
         self.tool = Tool.SELECT
         self.function_name = "TMR"
@@ -161,11 +163,36 @@ class LadderEditor(QGraphicsView):
     # -- the document ------------------------------------------------------------------------
 
     def set_program(self, program: Program) -> None:
-        """Show a program as ladder (clears undo); every program the parser accepts lays out."""
-        self.set_document(convert.program_to_ladder(program))
+        """Show a program as ladder (clears undo); every program the parser accepts lays out.
 
-    def set_document(self, document: LadderDocument) -> None:
+        A large program shows its first networks at once; the rest are laid out in the
+        background (`loading`; `finish_loading()` waits for them)."""
+        document = self.loader.head(program)
+        self.set_document(document, keep_pending=True)
+        self.loader.start()
+
+    @property
+    def loading(self) -> bool:
+        """True while a large program's networks are still being laid out."""
+        return self.loader.loading
+
+    def finish_loading(self) -> None:
+        """Lay out every network still pending now."""
+        self.loader.finish()
+
+    def append_networks(self, networks: list[LadderNetwork]) -> None:
+        """Add laid-out networks before the empty network at the end (background loading)."""
+        at = len(self.networks) - 1
+        self.networks[at:at] = networks
+        for _network in networks:
+            self.items.insert(at)
+        self._relayout(at)
+        self._renumber(at)
+
+    def set_document(self, document: LadderDocument, *, keep_pending: bool = False) -> None:
         """Show a ladder document (clears undo)."""
+        if not keep_pending:
+            self.loader.cancel()
         self._close_inline()
         self.undo_stack.clear()
         self.document = document
@@ -189,6 +216,7 @@ class LadderEditor(QGraphicsView):
 
     def ladder_document(self) -> LadderDocument:
         """The document with the drawn networks (the empty network at the end left out)."""
+        self.finish_loading()
         doc = self.document
         nets = list(self.networks)
         if nets and is_blank(nets[-1]):
@@ -208,6 +236,7 @@ class LadderEditor(QGraphicsView):
 
     def is_empty(self) -> bool:
         """True when nothing is drawn."""
+        self.finish_loading()
         return all(net.is_empty() for net in self.networks)
 
     def _make_item(self, index: int) -> NetworkItem:
@@ -807,6 +836,8 @@ class LadderEditor(QGraphicsView):
 
     def go_to(self, diagnostic: Diagnostic) -> None:
         """Jump to a diagnostic's network and cell."""
+        if diagnostic.network is not None and diagnostic.network >= len(self.networks) - 1:
+            self.finish_loading()
         if diagnostic.network is None or not 0 <= diagnostic.network < len(self.networks):
             return
         row, col = diagnostic.cell if diagnostic.cell is not None else (0, 0)
