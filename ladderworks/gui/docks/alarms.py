@@ -76,8 +76,9 @@ class AlarmDock(QDockWidget):
         toolbar.addAction(self.file_action)
         self.file_label = QLabel(body)
         self.file_label.setObjectName("alarmFileLabel")
-        toolbar.addWidget(self.file_label)
+        self.file_label.setWordWrap(True)  # its own line: never hidden in a narrow dock
         layout.addWidget(toolbar)
+        layout.addWidget(self.file_label)
         self.tree = QTreeWidget(body)
         self.tree.setObjectName("alarmList")
         self.tree.setColumnCount(COLUMNS)
