@@ -221,7 +221,8 @@ class LadderEditor(QGraphicsView):
         nets = list(self.networks)
         if nets and is_blank(nets[-1]):
             nets.pop()
-        return LadderDocument(nets, doc.header, doc.trailer, doc.footer, doc.before, doc.after)
+        return LadderDocument(nets, doc.header, doc.trailer, doc.footer, doc.before, doc.after,
+                              doc.origin)
 
     def program(self) -> tuple[Program | None, list[Diagnostic]]:
         """The program drawn (None when a network cannot be coded) and the diagnostics."""
