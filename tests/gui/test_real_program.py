@@ -102,6 +102,8 @@ def test_the_ladder_shows_x21_7_with_its_symbol_eskip(
     qtbot.keyClick(editor, Qt.Key.Key_Left)
     status = window.findChild(type(window.cell_label), "status_cell")
     assert status is not None and "X21.7" in status.text() and "ESKIP" in status.text()
+    qtbot.mouseMove(editor.viewport(), editor.cell_point(index, row, col))
+    qtbot.waitUntil(lambda: editor.viewport().toolTip().startswith("X21.7  ESKIP"))
     item = editor.items[index]
     assert item.describe(ESKIP) == ("ESKIP", "")  # drawn under the address
     # the program's symbol (here the same name as the manual's) comes first

@@ -68,7 +68,7 @@ from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.editor.progressive import ProgressiveLoader
 from ladderworks.gui.function_dialog import FunctionDialog
-from ladderworks.gui.symbol_text import name_and_text
+from ladderworks.gui.symbol_text import name_and_text, tooltip
 from ladderworks.gui.tools import KEY_TOOLS, Tool
 
 ZOOM_STEP = 1.2
@@ -845,6 +845,15 @@ class LadderEditor(QGraphicsView):
         self.move_cursor(diagnostic.network, row, col)
         self.setFocus()
 
+    def tooltip_at(self, index: int, row: int, col: int) -> str:
+        """Tooltip of a cell's contact or coil: address, symbol, its comments; else ""."""
+        found = self.networks[index].element_at(row, col)
+        if found is None or not isinstance(found[1], Contact | Coil) or found[1].address is None:
+            return ""
+        element = found[1]
+        text = tooltip(element.address, self.symbols)
+        return text + (f"\n// {element.comment}" if element.comment else "")
+
     def describe_cell(self, index: int, row: int, col: int) -> str:
         """Status-bar text: the cell, and the address with its signal name and comment."""
         parts = [
@@ -949,6 +958,7 @@ class LadderEditor(QGraphicsView):
             net = self.networks[hit.network]
             if hit.row < net.rows:
                 self.hover_changed.emit(self.describe_cell(hit.network, hit.row, hit.col))
+                self.viewport().setToolTip(self.tooltip_at(hit.network, hit.row, hit.col))
         super().mouseMoveEvent(event)
 
     def mouseReleaseEvent(self, event: QMouseEvent) -> None:
