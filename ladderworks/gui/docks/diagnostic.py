@@ -25,6 +25,7 @@ from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
 from ladderworks.gui.docks.live_ladder import LivePower
 from ladderworks.gui.editor.geometry import CELL_H, Layout, cell_origin
+from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 from ladderworks.gui.symbol_text import name_and_text
@@ -66,7 +67,7 @@ class DiagnosticView(QGraphicsView):
         self.layout_.rebuild(networks)
         self.items = []
         for index, (network, top) in enumerate(zip(networks, self.layout_.tops, strict=True)):
-            item = NetworkItem(network, index + 1, self.describe_address)
+            item = LabelledNetworkItem(network, index + 1, self.describe_address)
             item.setPos(0, top)
             self.scene_.addItem(item)
             self.items.append(item)
