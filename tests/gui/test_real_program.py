@@ -207,3 +207,12 @@ def test_bit_display_takes_and_shows_symbols(opened: tuple[MainWindow, list[str]
     row = bits.rows[0]
     assert row.address == Address(Area.X, 21)
     assert "ESKIP" in row.bits[7].toolTip()
+
+
+def test_time_chart_takes_a_symbol_and_names_its_lane(opened: tuple[MainWindow, list[str]]) -> None:
+    window, _ = opened
+    chart = window.plc_docks.others["time_chart"]
+    chart.signals_edit.setText("ESKIP R0.0")
+    signals = chart.parse_signals()
+    assert signals is not None and signals[0].address == ESKIP
+    assert chart.lane_name(signals[0]) == "X21.7 ESKIP"

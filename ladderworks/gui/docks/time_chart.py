@@ -151,7 +151,7 @@ class TimeChartDock(QDockWidget):
         signals: list[TracedSignal] = []
         for text in texts:
             try:
-                signals.append(parse_traced(text))
+                signals.append(parse_traced(text, self.session.symbols))
             except AddressError as error:
                 self._say(address_error_text(error), error=True)
                 return None

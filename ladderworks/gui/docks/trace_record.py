@@ -7,8 +7,9 @@ from bisect import bisect_right
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from ladderworks.core.address import Address, AddressError, parse_address
+from ladderworks.core.address import Address, AddressError
 from ladderworks.core.plc.trace import TraceSample
+from ladderworks.core.symbols import SymbolTable, resolve
 
 
 @dataclass(frozen=True, slots=True)
@@ -35,16 +36,17 @@ class TracedSignal:
         return 1 if self.is_bit else (1 << (8 * self.width)) - 1
 
 
-def parse_traced(text: str) -> TracedSignal:
-    """`R1.4`, `R100`, `D10:2` (a 2-byte value), `D20:4`; raises AddressError (its codes, or
-    `width` for a width other than 1, 2 or 4, `bit-width` for a bit with a width)."""
+def parse_traced(text: str, symbols: SymbolTable | None = None) -> TracedSignal:
+    """`R1.4`, `R100`, `D10:2` (a 2-byte value), `D20:4`, or a program symbol (`ESKIP`); raises
+    AddressError (its codes, or `width` for a width other than 1, 2 or 4, `bit-width` for a
+    bit with a width)."""
     spelled, colon, width_text = text.strip().partition(":")
     width = 1
     if colon:
         if width_text.strip() not in ("1", "2", "4"):
             raise AddressError("width", text=text.strip())
         width = int(width_text)
-    address = parse_address(spelled, width=width)
+    address = resolve(spelled, symbols, width=width)
     if address.bit is not None and colon:
         raise AddressError("bit-width", text=text.strip())
     return TracedSignal(address, width)
