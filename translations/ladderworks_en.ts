@@ -4,102 +4,102 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="105"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="139"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="140"/>
         <source>Alarm message file</source>
         <translation>Alarm message file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="141"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm files (*.dat);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="149"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>The program&apos;s messages (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="152"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm file... uses an AlarmMsg.dat instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
         <source>No alarm file</source>
         <translation>No alarm file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="157"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} messages</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="161"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="162"/>
         <source>{0} lines with problems</source>
         <translation>{0} lines with problems</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="169"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="187"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(no message {0} in the alarm file)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="221"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="240"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="242"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="243"/>
         <source>Alarm file...</source>
         <translation>Alarm file...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
         <source>PLC time</source>
         <translation>PLC time</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
         <source>Clock</source>
         <translation>Clock</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="250"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -820,114 +820,114 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="366"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="405"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="682"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="713"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="377"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="408"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="381"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="664"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="676"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="707"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="390"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="693"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="702"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="421"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="724"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="733"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="410"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="441"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="402"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="433"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="443"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="421"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="426"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="457"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="437"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="468"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="447"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="478"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="480"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="511"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="484"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="488"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="515"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="519"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="494"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="530"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="600"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="621"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="525"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="561"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="631"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="652"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="329"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="590"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="621"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="519"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="550"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="594"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="720"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="751"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="732"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="763"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="741"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="772"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="818"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="860"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -1605,67 +1605,67 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="149"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="150"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="151"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="152"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="153"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="154"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="155"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="197"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="198"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="199"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="200"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="202"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="211"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="212"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="256"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="266"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="275"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
@@ -2181,27 +2181,27 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="156"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="158"/>
         <source>{0} signals</source>
         <translation>{0} signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="163"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
         <source>Signals</source>
         <translation>Signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="171"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="166"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
         <source>English</source>
         <translation>English</translation>
     </message>
@@ -2211,22 +2211,22 @@
         <translation>program symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="158"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program symbols, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Address, symbol, name or words, e.g. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="166"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
         <source>Turkish</source>
         <translation>Turkish</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Double-click: use the address for the contact or coil at the cursor</translation>
     </message>
