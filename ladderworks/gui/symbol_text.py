@@ -24,11 +24,6 @@ def name_and_text(address: object, symbols: SymbolTable | None) -> tuple[str, st
     return signal.name, own or signal.english
 
 
-def short_name(address: Address, symbols: SymbolTable | None) -> str:
-    """The name shown beside an address (`ESKIP`), or ""."""
-    return describe(address, symbols)
-
-
 def labelled(address: Address, symbols: SymbolTable | None) -> str:
     """The address with its name: `X21.7 ESKIP` (just `X21.7` when it has none)."""
     name = describe(address, symbols)
