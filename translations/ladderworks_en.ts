@@ -4,92 +4,102 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="101"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="105"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="140"/>
         <source>Alarm message file</source>
         <translation>Alarm message file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm files (*.dat);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="149"/>
+        <source>The program&apos;s messages (%@4): {0}</source>
+        <translation>The program&apos;s messages (%@4): {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="152"/>
+        <source>Alarm file... uses an AlarmMsg.dat instead</source>
+        <translation>Alarm file... uses an AlarmMsg.dat instead</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
         <source>No alarm file</source>
         <translation>No alarm file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} messages</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="134"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="162"/>
         <source>{0} lines with problems</source>
         <translation>{0} lines with problems</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="141"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="169"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="187"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(no message {0} in the alarm file)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="221"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="207"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="236"/>
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="208"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="237"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="210"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="212"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
         <source>Alarm file...</source>
         <translation>Alarm file...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="215"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="244"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="216"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="245"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="217"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
         <source>PLC time</source>
         <translation>PLC time</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
         <source>Clock</source>
         <translation>Clock</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="219"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -97,77 +107,77 @@
 <context>
     <name>BitDisplay</name>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="257"/>
         <source>Forced to {0}</source>
         <translation>Forced to {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="260"/>
         <source>Click: force to the other value; right-click: force menu</source>
         <translation>Click: force to the other value; right-click: force menu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="273"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="278"/>
         <source>Load a program to force inputs</source>
         <translation>Load a program to force inputs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="295"/>
         <source>Force to 1</source>
         <translation>Force to 1</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="295"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="300"/>
         <source>Force to 0</source>
         <translation>Force to 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="305"/>
         <source>Release the force</source>
         <translation>Release the force</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="319"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="319"/>
         <source>Stopped</source>
         <translation>Stopped</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="326"/>
         <source>PLC bit display</source>
         <translation>PLC bit display</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="322"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="327"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="324"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="329"/>
         <source>Byte</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="325"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="330"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="326"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="331"/>
         <source>Dec</source>
         <translation>Dec</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="333"/>
         <source>e.g. X12</source>
         <translation>e.g. X12</translation>
     </message>
@@ -686,52 +696,52 @@
 <context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="58"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="59"/>
         <source>Forced and passive</source>
         <translation>Forced and passive</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
         <source>Kind</source>
         <translation>Kind</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
         <source>Signal / element</source>
         <translation>Signal / element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
         <source>Release all</source>
         <translation>Release all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="71"/>
         <source>FORCED</source>
         <translation>FORCED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="75"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="78"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>network {0}, line {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="77"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="80"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="86"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
         <source>Release</source>
         <translation>Release</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="94"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} forced, {1} passive</translation>
     </message>
@@ -845,114 +855,114 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="337"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="376"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="652"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="713"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="408"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="352"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="634"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="646"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="707"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="361"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="672"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="421"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="724"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="733"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="381"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="441"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="373"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="433"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="443"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="392"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="457"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="408"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="468"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="418"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="478"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="511"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="455"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="459"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="515"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="519"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="490"/>
-        <source>Address, e.g. X2.1 (// comment)</source>
-        <translation>Address, e.g. X2.1 (// comment)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="465"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="501"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="570"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="591"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="525"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="561"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="631"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="652"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="300"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="621"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="564"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="550"/>
+        <source>Address or symbol, e.g. X2.1 (// comment)</source>
+        <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="690"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="751"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="702"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="763"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="711"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="772"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="788"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="860"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -960,342 +970,347 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <location filename="../ladderworks/gui/main_window.py" line="149"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="147"/>
+        <location filename="../ladderworks/gui/main_window.py" line="150"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="148"/>
+        <location filename="../ladderworks/gui/main_window.py" line="151"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="151"/>
+        <location filename="../ladderworks/gui/main_window.py" line="154"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="157"/>
+        <location filename="../ladderworks/gui/main_window.py" line="160"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/main_window.py" line="165"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="167"/>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="170"/>
+        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <source>Program &amp;properties...</source>
+        <translation>Program &amp;properties...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="178"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="183"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/main_window.py" line="188"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="181"/>
+        <location filename="../ladderworks/gui/main_window.py" line="189"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="182"/>
+        <location filename="../ladderworks/gui/main_window.py" line="190"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="183"/>
+        <location filename="../ladderworks/gui/main_window.py" line="191"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="184"/>
+        <location filename="../ladderworks/gui/main_window.py" line="192"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/main_window.py" line="195"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="192"/>
+        <location filename="../ladderworks/gui/main_window.py" line="200"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <location filename="../ladderworks/gui/main_window.py" line="207"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="214"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="213"/>
+        <location filename="../ladderworks/gui/main_window.py" line="221"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="218"/>
+        <location filename="../ladderworks/gui/main_window.py" line="226"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="220"/>
+        <location filename="../ladderworks/gui/main_window.py" line="228"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="221"/>
+        <location filename="../ladderworks/gui/main_window.py" line="229"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="224"/>
+        <location filename="../ladderworks/gui/main_window.py" line="232"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="230"/>
+        <location filename="../ladderworks/gui/main_window.py" line="238"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
+        <location filename="../ladderworks/gui/main_window.py" line="244"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="240"/>
+        <location filename="../ladderworks/gui/main_window.py" line="248"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="243"/>
+        <location filename="../ladderworks/gui/main_window.py" line="251"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="252"/>
+        <location filename="../ladderworks/gui/main_window.py" line="260"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="256"/>
+        <location filename="../ladderworks/gui/main_window.py" line="264"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="293"/>
+        <location filename="../ladderworks/gui/main_window.py" line="301"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="297"/>
+        <location filename="../ladderworks/gui/main_window.py" line="305"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="314"/>
+        <location filename="../ladderworks/gui/main_window.py" line="324"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="334"/>
+        <location filename="../ladderworks/gui/main_window.py" line="344"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="355"/>
+        <location filename="../ladderworks/gui/main_window.py" line="365"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="359"/>
+        <location filename="../ladderworks/gui/main_window.py" line="369"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="365"/>
+        <location filename="../ladderworks/gui/main_window.py" line="375"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="370"/>
+        <location filename="../ladderworks/gui/main_window.py" line="380"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="375"/>
+        <location filename="../ladderworks/gui/main_window.py" line="385"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="487"/>
+        <location filename="../ladderworks/gui/main_window.py" line="497"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="512"/>
+        <location filename="../ladderworks/gui/main_window.py" line="522"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="513"/>
+        <location filename="../ladderworks/gui/main_window.py" line="523"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="541"/>
-        <location filename="../ladderworks/gui/main_window.py" line="560"/>
+        <location filename="../ladderworks/gui/main_window.py" line="552"/>
+        <location filename="../ladderworks/gui/main_window.py" line="571"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="542"/>
-        <location filename="../ladderworks/gui/main_window.py" line="561"/>
+        <location filename="../ladderworks/gui/main_window.py" line="553"/>
+        <location filename="../ladderworks/gui/main_window.py" line="572"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <location filename="../ladderworks/gui/main_window.py" line="558"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <location filename="../ladderworks/gui/main_window.py" line="558"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="586"/>
+        <location filename="../ladderworks/gui/main_window.py" line="599"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="596"/>
+        <location filename="../ladderworks/gui/main_window.py" line="628"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="598"/>
-        <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
-        <translation>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="630"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</source>
+        <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="629"/>
-        <location filename="../ladderworks/gui/main_window.py" line="653"/>
         <location filename="../ladderworks/gui/main_window.py" line="663"/>
+        <location filename="../ladderworks/gui/main_window.py" line="687"/>
+        <location filename="../ladderworks/gui/main_window.py" line="697"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="630"/>
+        <location filename="../ladderworks/gui/main_window.py" line="664"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="654"/>
-        <location filename="../ladderworks/gui/main_window.py" line="664"/>
+        <location filename="../ladderworks/gui/main_window.py" line="688"/>
+        <location filename="../ladderworks/gui/main_window.py" line="698"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="675"/>
+        <location filename="../ladderworks/gui/main_window.py" line="709"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="680"/>
+        <location filename="../ladderworks/gui/main_window.py" line="714"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="688"/>
+        <location filename="../ladderworks/gui/main_window.py" line="722"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="690"/>
+        <location filename="../ladderworks/gui/main_window.py" line="724"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="700"/>
+        <location filename="../ladderworks/gui/main_window.py" line="734"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="702"/>
+        <location filename="../ladderworks/gui/main_window.py" line="736"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="721"/>
+        <location filename="../ladderworks/gui/main_window.py" line="755"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="723"/>
+        <location filename="../ladderworks/gui/main_window.py" line="757"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="734"/>
+        <location filename="../ladderworks/gui/main_window.py" line="768"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="804"/>
+        <location filename="../ladderworks/gui/main_window.py" line="839"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="823"/>
+        <location filename="../ladderworks/gui/main_window.py" line="858"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="829"/>
+        <location filename="../ladderworks/gui/main_window.py" line="864"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Compile finished: {0} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="849"/>
+        <location filename="../ladderworks/gui/main_window.py" line="884"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="852"/>
+        <location filename="../ladderworks/gui/main_window.py" line="887"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="884"/>
+        <location filename="../ladderworks/gui/main_window.py" line="919"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="885"/>
+        <location filename="../ladderworks/gui/main_window.py" line="920"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -1625,67 +1640,67 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="150"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="151"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="145"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="152"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="153"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="154"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="155"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="198"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="200"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="202"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="204"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="212"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="256"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="266"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="275"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
@@ -1923,6 +1938,231 @@
     </message>
 </context>
 <context>
+    <name>ProgramProperties</name>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="28"/>
+        <source>Machine-tool builder</source>
+        <translation>Machine-tool builder</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="29"/>
+        <source>Machine-tool name</source>
+        <translation>Machine-tool name</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="30"/>
+        <source>PMC &amp; NC type</source>
+        <translation>PMC &amp; NC type</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
+        <source>Program number</source>
+        <translation>Program number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
+        <source>Edition</source>
+        <translation>Edition</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
+        <source>Drawing number</source>
+        <translation>Drawing number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
+        <source>Date</source>
+        <translation>Date</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
+        <source>Designed by</source>
+        <translation>Designed by</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
+        <source>ROM written by</source>
+        <translation>ROM written by</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
+        <source>Remarks</source>
+        <translation>Remarks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
+        <source>FANUC LADDER-III export</source>
+        <translation>FANUC LADDER-III export</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
+        <source>LadderWorks (seed manual)</source>
+        <translation>LadderWorks (seed manual)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
+        <source>yes</source>
+        <translation>yes</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="62"/>
+        <source>File</source>
+        <translation>File</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="63"/>
+        <source>(not saved)</source>
+        <translation>(not saved)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="64"/>
+        <source>Dialect</source>
+        <translation>Dialect</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
+        <source>Encoding</source>
+        <translation>Encoding</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="66"/>
+        <source>Byte order mark</source>
+        <translation>Byte order mark</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="67"/>
+        <source>Line ends</source>
+        <translation>Line ends</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
+        <source>Framed in %@A … %@E</source>
+        <translation>Framed in %@A … %@E</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
+        <source>Networks</source>
+        <translation>Networks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
+        <source>Steps</source>
+        <translation>Steps</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="72"/>
+        <source>Symbols (%@2)</source>
+        <translation>Symbols (%@2)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="74"/>
+        <source>Messages (%@4)</source>
+        <translation>Messages (%@4)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="115"/>
+        <source>Program properties</source>
+        <translation>Program properties</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="120"/>
+        <source>General</source>
+        <translation>General</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="121"/>
+        <source>Property</source>
+        <translation>Property</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="122"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
+        <source>Value</source>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="124"/>
+        <source>Title (%@1)</source>
+        <translation>Title (%@1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
+        <source>Item</source>
+        <translation>Item</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
+        <source>Meaning</source>
+        <translation>Meaning</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="126"/>
+        <source>Text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="128"/>
+        <source>System parameters (%@0)</source>
+        <translation>System parameters (%@0)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="131"/>
+        <source>I/O modules (%@5)</source>
+        <translation>I/O modules (%@5)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <source>Group</source>
+        <translation>Group</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <source>Base</source>
+        <translation>Base</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <source>Slot</source>
+        <translation>Slot</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="134"/>
+        <source>Module</source>
+        <translation>Module</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="137"/>
+        <source>Sections</source>
+        <translation>Sections</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <source>Header</source>
+        <translation>Header</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <source>Lines</source>
+        <translation>Lines</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="139"/>
+        <source>First line</source>
+        <translation>First line</translation>
+    </message>
+</context>
+<context>
     <name>QtLibraries</name>
     <message>
         <location filename="../ladderworks/gui/qt_libraries.py" line="71"/>
@@ -1938,42 +2178,52 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="97"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="158"/>
         <source>{0} signals</source>
         <translation>{0} signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="101"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
         <source>Signals</source>
         <translation>Signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="103"/>
-        <source>Address, name or words, e.g. G8.4, SPL, acil</source>
-        <translation>Address, name or words, e.g. G8.4, SPL, acil</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="106"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="107"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="171"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="104"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
         <source>English</source>
         <translation>English</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="104"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="106"/>
+        <source>program symbol</source>
+        <translation>program symbol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
+        <source>{0} program symbols, {1}</source>
+        <translation>{0} program symbols, {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
+        <translation>Address, symbol, name or words, e.g. G8.4, SPL, acil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
         <source>Turkish</source>
         <translation>Turkish</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="110"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Double-click: use the address for the contact or coil at the cursor</translation>
     </message>

@@ -4,92 +4,102 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="101"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="105"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="140"/>
         <source>Alarm message file</source>
         <translation>Alarm mesaj dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm dosyaları (*.dat);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="149"/>
+        <source>The program&apos;s messages (%@4): {0}</source>
+        <translation>Programın mesajları (%@4): {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="152"/>
+        <source>Alarm file... uses an AlarmMsg.dat instead</source>
+        <translation>Alarm dosyası... bunun yerine bir AlarmMsg.dat kullanır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
         <source>No alarm file</source>
         <translation>Alarm dosyası yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} mesaj</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="134"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="162"/>
         <source>{0} lines with problems</source>
         <translation>{0} satırda sorun var</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="141"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="169"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="187"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(alarm dosyasında {0} numaralı mesaj yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="221"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>Bit yeniden 0: RESET bu alarmı siler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="207"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="236"/>
         <source>Alarms</source>
         <translation>ALARMLAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="208"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="237"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="210"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="212"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
         <source>Alarm file...</source>
         <translation>Alarm dosyası...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="215"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="244"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="216"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="245"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="217"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
         <source>PLC time</source>
         <translation>PLC zamanı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
         <source>Clock</source>
         <translation>Saat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="219"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
@@ -97,77 +107,77 @@
 <context>
     <name>BitDisplay</name>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="257"/>
         <source>Forced to {0}</source>
         <translation>{0} değerine zorlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="260"/>
         <source>Click: force to the other value; right-click: force menu</source>
         <translation>Tıklama: diğer değere zorla; sağ tuş: zorlama menüsü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="273"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="278"/>
         <source>Load a program to force inputs</source>
         <translation>Girişleri zorlamak için bir program yükleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="295"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="295"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="300"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="305"/>
         <source>Release the force</source>
         <translation>Zorlamayı kaldır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="319"/>
         <source>Live</source>
         <translation>Canlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="319"/>
         <source>Stopped</source>
         <translation>Durduruldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="326"/>
         <source>PLC bit display</source>
         <translation>PLC BIT GÖSTERİMİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="322"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="327"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="324"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="329"/>
         <source>Byte</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="325"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="330"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="326"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="331"/>
         <source>Dec</source>
         <translation>Ondalık</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="333"/>
         <source>e.g. X12</source>
         <translation>örn. X12</translation>
     </message>
@@ -686,52 +696,52 @@
 <context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="58"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="59"/>
         <source>Forced and passive</source>
         <translation>Zorlananlar ve pasifler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
         <source>Kind</source>
         <translation>Tür</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
         <source>Signal / element</source>
         <translation>Sinyal / eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
         <source>Release all</source>
         <translation>Hepsini bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="71"/>
         <source>FORCED</source>
         <translation>ZORLANMIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="75"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="78"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>devre {0}, satır {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="77"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="80"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="86"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
         <source>Release</source>
         <translation>Bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="94"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} zorlanmış, {1} pasif</translation>
     </message>
@@ -845,114 +855,114 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="337"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="376"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="652"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="713"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="408"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="352"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="634"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="646"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="707"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="361"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="672"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="421"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="724"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="733"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="381"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="441"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="373"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="433"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="443"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="392"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="457"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="408"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="468"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="418"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="478"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="511"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="455"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="459"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="515"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="519"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="490"/>
-        <source>Address, e.g. X2.1 (// comment)</source>
-        <translation>Adres, örneğin X2.1 (// yorum)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="465"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="501"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="570"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="591"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="525"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="561"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="631"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="652"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="300"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="621"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="564"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="550"/>
+        <source>Address or symbol, e.g. X2.1 (// comment)</source>
+        <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="690"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="751"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="702"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="763"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="711"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="772"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="788"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="860"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
@@ -960,342 +970,347 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <location filename="../ladderworks/gui/main_window.py" line="149"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="147"/>
+        <location filename="../ladderworks/gui/main_window.py" line="150"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="148"/>
+        <location filename="../ladderworks/gui/main_window.py" line="151"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="151"/>
+        <location filename="../ladderworks/gui/main_window.py" line="154"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="157"/>
+        <location filename="../ladderworks/gui/main_window.py" line="160"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/main_window.py" line="165"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="167"/>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="170"/>
+        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <source>Program &amp;properties...</source>
+        <translation>Program &amp;özellikleri...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="178"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="183"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/main_window.py" line="188"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="181"/>
+        <location filename="../ladderworks/gui/main_window.py" line="189"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="182"/>
+        <location filename="../ladderworks/gui/main_window.py" line="190"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="183"/>
+        <location filename="../ladderworks/gui/main_window.py" line="191"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="184"/>
+        <location filename="../ladderworks/gui/main_window.py" line="192"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/main_window.py" line="195"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="192"/>
+        <location filename="../ladderworks/gui/main_window.py" line="200"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <location filename="../ladderworks/gui/main_window.py" line="207"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="214"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="213"/>
+        <location filename="../ladderworks/gui/main_window.py" line="221"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="218"/>
+        <location filename="../ladderworks/gui/main_window.py" line="226"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="220"/>
+        <location filename="../ladderworks/gui/main_window.py" line="228"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="221"/>
+        <location filename="../ladderworks/gui/main_window.py" line="229"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="224"/>
+        <location filename="../ladderworks/gui/main_window.py" line="232"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="230"/>
+        <location filename="../ladderworks/gui/main_window.py" line="238"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
+        <location filename="../ladderworks/gui/main_window.py" line="244"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="240"/>
+        <location filename="../ladderworks/gui/main_window.py" line="248"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="243"/>
+        <location filename="../ladderworks/gui/main_window.py" line="251"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="252"/>
+        <location filename="../ladderworks/gui/main_window.py" line="260"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="256"/>
+        <location filename="../ladderworks/gui/main_window.py" line="264"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="293"/>
+        <location filename="../ladderworks/gui/main_window.py" line="301"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="297"/>
+        <location filename="../ladderworks/gui/main_window.py" line="305"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="314"/>
+        <location filename="../ladderworks/gui/main_window.py" line="324"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="334"/>
+        <location filename="../ladderworks/gui/main_window.py" line="344"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="355"/>
+        <location filename="../ladderworks/gui/main_window.py" line="365"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="359"/>
+        <location filename="../ladderworks/gui/main_window.py" line="369"/>
         <source>&amp;Tools</source>
         <translation>&amp;Takımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="365"/>
+        <location filename="../ladderworks/gui/main_window.py" line="375"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="370"/>
+        <location filename="../ladderworks/gui/main_window.py" line="380"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="375"/>
+        <location filename="../ladderworks/gui/main_window.py" line="385"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="487"/>
+        <location filename="../ladderworks/gui/main_window.py" line="497"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="512"/>
+        <location filename="../ladderworks/gui/main_window.py" line="522"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="513"/>
+        <location filename="../ladderworks/gui/main_window.py" line="523"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="541"/>
-        <location filename="../ladderworks/gui/main_window.py" line="560"/>
+        <location filename="../ladderworks/gui/main_window.py" line="552"/>
+        <location filename="../ladderworks/gui/main_window.py" line="571"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="542"/>
-        <location filename="../ladderworks/gui/main_window.py" line="561"/>
+        <location filename="../ladderworks/gui/main_window.py" line="553"/>
+        <location filename="../ladderworks/gui/main_window.py" line="572"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <location filename="../ladderworks/gui/main_window.py" line="558"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <location filename="../ladderworks/gui/main_window.py" line="558"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="586"/>
+        <location filename="../ladderworks/gui/main_window.py" line="599"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="596"/>
+        <location filename="../ladderworks/gui/main_window.py" line="628"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="598"/>
-        <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
-        <translation>Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
+        <location filename="../ladderworks/gui/main_window.py" line="630"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</source>
+        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="629"/>
-        <location filename="../ladderworks/gui/main_window.py" line="653"/>
         <location filename="../ladderworks/gui/main_window.py" line="663"/>
+        <location filename="../ladderworks/gui/main_window.py" line="687"/>
+        <location filename="../ladderworks/gui/main_window.py" line="697"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="630"/>
+        <location filename="../ladderworks/gui/main_window.py" line="664"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="654"/>
-        <location filename="../ladderworks/gui/main_window.py" line="664"/>
+        <location filename="../ladderworks/gui/main_window.py" line="688"/>
+        <location filename="../ladderworks/gui/main_window.py" line="698"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="675"/>
+        <location filename="../ladderworks/gui/main_window.py" line="709"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="680"/>
+        <location filename="../ladderworks/gui/main_window.py" line="714"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="688"/>
+        <location filename="../ladderworks/gui/main_window.py" line="722"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="690"/>
+        <location filename="../ladderworks/gui/main_window.py" line="724"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="700"/>
+        <location filename="../ladderworks/gui/main_window.py" line="734"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="702"/>
+        <location filename="../ladderworks/gui/main_window.py" line="736"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="721"/>
+        <location filename="../ladderworks/gui/main_window.py" line="755"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="723"/>
+        <location filename="../ladderworks/gui/main_window.py" line="757"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="734"/>
+        <location filename="../ladderworks/gui/main_window.py" line="768"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="804"/>
+        <location filename="../ladderworks/gui/main_window.py" line="839"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="823"/>
+        <location filename="../ladderworks/gui/main_window.py" line="858"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="829"/>
+        <location filename="../ladderworks/gui/main_window.py" line="864"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Derleme bitti (compile finish): {0} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="849"/>
+        <location filename="../ladderworks/gui/main_window.py" line="884"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="852"/>
+        <location filename="../ladderworks/gui/main_window.py" line="887"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="884"/>
+        <location filename="../ladderworks/gui/main_window.py" line="919"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="885"/>
+        <location filename="../ladderworks/gui/main_window.py" line="920"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -1625,67 +1640,67 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="150"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="151"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="145"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="152"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="153"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="154"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="155"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="198"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="200"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="202"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="204"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="212"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="256"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="266"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="275"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
@@ -1923,6 +1938,231 @@
     </message>
 </context>
 <context>
+    <name>ProgramProperties</name>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="28"/>
+        <source>Machine-tool builder</source>
+        <translation>Takım tezgâhı üreticisi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="29"/>
+        <source>Machine-tool name</source>
+        <translation>Takım tezgâhı adı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="30"/>
+        <source>PMC &amp; NC type</source>
+        <translation>PMC ve NC tipi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
+        <source>Program number</source>
+        <translation>Program numarası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
+        <source>Edition</source>
+        <translation>Sürüm</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
+        <source>Drawing number</source>
+        <translation>Çizim numarası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
+        <source>Date</source>
+        <translation>Tarih</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
+        <source>Designed by</source>
+        <translation>Tasarlayan</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
+        <source>ROM written by</source>
+        <translation>ROM&apos;a yazan</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
+        <source>Remarks</source>
+        <translation>Notlar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
+        <source>FANUC LADDER-III export</source>
+        <translation>FANUC LADDER-III dışa aktarımı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
+        <source>LadderWorks (seed manual)</source>
+        <translation>LadderWorks (temel kılavuz)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
+        <source>yes</source>
+        <translation>evet</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
+        <source>no</source>
+        <translation>hayır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="62"/>
+        <source>File</source>
+        <translation>Dosya</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="63"/>
+        <source>(not saved)</source>
+        <translation>(kaydedilmedi)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="64"/>
+        <source>Dialect</source>
+        <translation>Lehçe</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
+        <source>Encoding</source>
+        <translation>Kodlama</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="66"/>
+        <source>Byte order mark</source>
+        <translation>Bayt sırası işareti (BOM)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="67"/>
+        <source>Line ends</source>
+        <translation>Satır sonları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
+        <source>Framed in %@A … %@E</source>
+        <translation>%@A … %@E çerçeveli</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
+        <source>Networks</source>
+        <translation>Devreler</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
+        <source>Steps</source>
+        <translation>Adımlar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="72"/>
+        <source>Symbols (%@2)</source>
+        <translation>Semboller (%@2)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="74"/>
+        <source>Messages (%@4)</source>
+        <translation>Mesajlar (%@4)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="115"/>
+        <source>Program properties</source>
+        <translation>Program özellikleri</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="120"/>
+        <source>General</source>
+        <translation>Genel</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="121"/>
+        <source>Property</source>
+        <translation>Özellik</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="122"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
+        <source>Value</source>
+        <translation>Değer</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="124"/>
+        <source>Title (%@1)</source>
+        <translation>Başlık (%@1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
+        <source>Item</source>
+        <translation>Öğe</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
+        <source>Meaning</source>
+        <translation>Anlamı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="126"/>
+        <source>Text</source>
+        <translation>Metin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="128"/>
+        <source>System parameters (%@0)</source>
+        <translation>Sistem parametreleri (%@0)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="131"/>
+        <source>I/O modules (%@5)</source>
+        <translation>G/Ç modülleri (%@5)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <source>Group</source>
+        <translation>Grup</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <source>Base</source>
+        <translation>Taban</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <source>Slot</source>
+        <translation>Yuva</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="134"/>
+        <source>Module</source>
+        <translation>Modül</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="137"/>
+        <source>Sections</source>
+        <translation>Bölümler</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <source>Header</source>
+        <translation>Başlık satırı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <source>Lines</source>
+        <translation>Satırlar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="139"/>
+        <source>First line</source>
+        <translation>İlk satır</translation>
+    </message>
+</context>
+<context>
     <name>QtLibraries</name>
     <message>
         <location filename="../ladderworks/gui/qt_libraries.py" line="71"/>
@@ -1938,42 +2178,52 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="97"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="158"/>
         <source>{0} signals</source>
         <translation>{0} sinyal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="101"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
         <source>Signals</source>
         <translation>Sinyaller</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="103"/>
-        <source>Address, name or words, e.g. G8.4, SPL, acil</source>
-        <translation>Adres, ad veya kelime, örn. G8.4, SPL, acil</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="106"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="107"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="171"/>
         <source>Name</source>
         <translation>Ad</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="104"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
         <source>English</source>
         <translation>İngilizce</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="104"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="106"/>
+        <source>program symbol</source>
+        <translation>program sembolü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
+        <source>{0} program symbols, {1}</source>
+        <translation>{0} program sembolü, {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
+        <translation>Adres, sembol, ad veya sözcükler, örn. G8.4, SPL, acil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
         <source>Turkish</source>
         <translation>Türkçe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="110"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Çift tıklama: adresi imleçteki kontak veya bobine ver</translation>
     </message>

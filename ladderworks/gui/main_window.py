@@ -9,6 +9,7 @@ from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
 from PySide6.QtGui import QAction, QActionGroup, QCloseEvent, QKeySequence, QShowEvent
 from PySide6.QtWidgets import (
     QApplication,
+    QDialog,
     QDockWidget,
     QFileDialog,
     QLabel,
@@ -47,6 +48,7 @@ class MainWindow(QMainWindow):
 
     language_changed = Signal(str)
     file_saved = Signal(str)
+    program_opened = Signal(object)  # the Program now shown (its symbols, messages, sections)
 
     def __init__(
         self, settings: Settings, language: UiLanguage, parent: QWidget | None = None
@@ -60,6 +62,7 @@ class MainWindow(QMainWindow):
         self.dialect = "seed"  # of the open program: how its parameter file names timers
         self.failed_path: Path | None = None  # a file that did not parse: never overwritten
         self.last_warning = ""
+        self.program_info = Program()  # the program as opened: title, sections, symbols
         self.setWindowIcon(icon("ladderworks"))
 
         self.editor = LadderEditor(self)
@@ -166,6 +169,11 @@ class MainWindow(QMainWindow):
             "action_clear_recent",
             lambda: translate("MainWindow", "Clear the list"),
             self._clear_recent,
+        )
+        a(
+            "action_program_properties",
+            lambda: translate("MainWindow", "Program &properties..."),
+            self.show_program_properties,
         )
         a("action_quit", lambda: translate("MainWindow", "&Quit"), self.close, key.Quit)
         undo = ed.undo_stack.createUndoAction(self)
@@ -302,6 +310,8 @@ class MainWindow(QMainWindow):
             None,
             "action_import_mod",
             "action_export_mod",
+            None,
+            "action_program_properties",
             None,
             "action_quit",
         ):
@@ -524,6 +534,7 @@ class MainWindow(QMainWindow):
         self.failed_path = None
         self.encoding = "utf-8"
         self.editor.set_program(Program())
+        self._program_shown(Program())
         self.text_view.setPlainText("")
         self.text_view.document().setModified(False)
         self.errors.set_diagnostics([])
@@ -573,12 +584,14 @@ class MainWindow(QMainWindow):
             self.failed_path = None
             self.editor.set_program(result.program)
             self.pages.setCurrentWidget(self.editor)
+            self._program_shown(result.program)
         else:
             self.failed_path = path
             text = path.read_bytes().decode(self.encoding, errors="replace")
             if text.startswith("\ufeff"):
                 text = text[1:]
             self.editor.set_program(Program())
+            self._program_shown(Program())
             self.text_view.setPlainText(text)
             self.text_view.document().setModified(False)
             self.pages.setCurrentWidget(self.text_view)
@@ -586,6 +599,25 @@ class MainWindow(QMainWindow):
             self._show_message(translate("MainWindow", "The file has errors: it is shown as text"))
         self._update_title()
         return True
+
+    def _program_shown(self, program: Program) -> None:
+        """A program is now shown: its symbols and messages go to the docks."""
+        self.program_info = program
+        self.signals_dock.set_symbols(program.symbols)
+        session = getattr(getattr(self, "plc_docks", None), "session", None)
+        if session is not None:
+            session.set_symbols(program.symbols)
+        self.program_opened.emit(program)
+
+    def show_program_properties(self) -> QDialog:
+        """File › Program properties: title, system parameters, I/O modules, sections, form."""
+        from ladderworks.gui.program_properties import ProgramPropertiesDialog
+
+        dialog = ProgramPropertiesDialog(self.program_info, self.path, self)
+        dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose, True)
+        self.properties_dialog = dialog
+        dialog.open()
+        return dialog
 
     def open_dialog(self) -> None:
         """File > Open."""
@@ -597,7 +629,9 @@ class MainWindow(QMainWindow):
             str(self.path.parent if self.path else ""),
             translate(
                 "MainWindow",
-                "Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)",
+                "Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT)"
+                ";;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC)"
+                ";;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)",
             ),
         )
         if name:
@@ -784,6 +818,7 @@ class MainWindow(QMainWindow):
         self.failed_path = None
         self.editor.set_program(result.program)
         self.pages.setCurrentWidget(self.editor)
+        self._program_shown(result.program)
         if modified:
             self.editor.mark_modified()
         self._update_title()

@@ -33,10 +33,13 @@ Public API (stable; docks of issues 7 and 8 build on it)::
     session.parameters -> PmcParameters; session.set_parameters(parameters)
     session.alarm_table = AlarmTable(...); session.alarms() -> list[ActiveAlarm]
     session.reset_alarms()
+    # the open program's symbols (`%@2`), for every dock that names an address
+    session.symbols -> SymbolTable | None; session.set_symbols(symbols)
 
 Signals: `program_loaded(BinaryProgram)`, `running_changed(bool)`, `status_changed(PlcStatus)`,
 `snapshot_ready(PlcSnapshot)`, `forces_changed(list[ForceEntry])`,
-`alarms_changed(list[ActiveAlarm])`, `parameters_changed(PmcParameters)`.
+`alarms_changed(list[ActiveAlarm])`, `parameters_changed(PmcParameters)`,
+`symbols_changed(SymbolTable | None)`.
 
 The policy (cold start, machine inputs, held bits, forces and trace over a reload, PMC
 parameters, scan figures) is the core's `PlcRun` (`session.run`); this adapter only runs the
@@ -73,6 +76,7 @@ from ladderworks.core.plc.session import (
 )
 from ladderworks.core.plc.timer_table import TimerLayout
 from ladderworks.core.plc.trace import TraceSample, TraceSampler
+from ladderworks.core.symbols import SymbolTable
 
 __all__ = ["MACHINE_AREAS", "PUBLISH_MS", "PlcSession", "PlcSnapshot", "PlcStatus"]
 
@@ -89,6 +93,7 @@ class PlcSession(QObject):
     forces_changed = Signal(list)
     alarms_changed = Signal(list)
     parameters_changed = Signal(object)  # the PmcParameters now
+    symbols_changed = Signal(object)  # the open program's SymbolTable, or None
 
     def __init__(self, parent: QObject | None = None, *, realtime: bool = True,
                  period_ms: int = DEFAULT_PERIOD_MS, publish_ms: int = PUBLISH_MS) -> None:
@@ -97,6 +102,7 @@ class PlcSession(QObject):
         self._timer = QTimer(self)
         self._timer.setInterval(publish_ms)
         self._timer.timeout.connect(self.publish)
+        self.symbols: SymbolTable | None = None
 
     # -- what the run holds ----------------------------------------------------------------
 
@@ -347,6 +353,13 @@ class PlcSession(QObject):
     def set_counter_preset(self, number: int, preset: int) -> None:
         """Change CTR `number`'s preset in the C table (a PMC parameter)."""
         self.set_parameter(counter_preset_address(number), preset, 2)
+
+    # -- symbols -------------------------------------------------------------------------
+
+    def set_symbols(self, symbols: SymbolTable | None) -> None:
+        """The open program's symbols: the docks name addresses with them from now on."""
+        self.symbols = symbols
+        self.symbols_changed.emit(symbols)
 
     # -- alarms --------------------------------------------------------------------------
 

@@ -1,4 +1,5 @@
-"""The signal list dock: search the F/G/X/Y signals of the manual and use one in the ladder."""
+"""The signal list dock: search the program's symbols and the F/G/X/Y signals of the manual,
+and use one in the ladder."""
 
 from __future__ import annotations
 
@@ -16,13 +17,39 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core.address import Address
 from ladderworks.core.signals import Signal as PlcSignal
-from ladderworks.core.signals import load_signals, search
+from ladderworks.core.signals import fold, load_signals, search
+from ladderworks.core.symbols import Symbol, SymbolTable
 from ladderworks.gui.translation import ui_is_turkish
 
 translate = QCoreApplication.translate
 
-_COLUMNS = 4  # address, name, English, Turkish
+_COLUMNS = 4  # address, name, English, Turkish (a program symbol: address, symbol, comment)
+MAX_SYMBOL_ROWS = 500  # program symbols listed for one query (a real program has 12,000+)
+
+
+def _order(found: tuple[Address, Symbol]) -> tuple[str, int, int]:
+    address = found[0]
+    return address.area.value, address.byte, -1 if address.bit is None else address.bit
+
+
+def symbol_matches(symbols: SymbolTable, query: str) -> list[tuple[Address, Symbol]]:
+    """The program's symbols whose symbol, address or comment contains `query`, best first
+    (exact symbol, then symbol prefix, then the rest, by address)."""
+    folded = fold(query.strip())
+    if not folded:
+        return []
+    groups: tuple[list[tuple[Address, Symbol]], ...] = ([], [], [])
+    for address, entry in symbols.by_address.items():
+        name = fold(entry.symbol)
+        if name == folded or fold(str(address)) == folded:
+            groups[0].append((address, entry))
+        elif name.startswith(folded):
+            groups[1].append((address, entry))
+        elif folded in name or any(folded in fold(c) for c in entry.comments):
+            groups[2].append((address, entry))
+    return [found for group in groups for found in sorted(group, key=_order)]
 
 
 class SignalListDock(QDockWidget):
@@ -57,23 +84,37 @@ class SignalListDock(QDockWidget):
         layout.addWidget(self.table, 1)
         self.setWidget(body)
         self._shown: list[PlcSignal] = []
+        self._addresses: list[Address] = []  # the address of each row (symbols first)
+        self.symbols: SymbolTable | None = None  # the open program's `%@2` symbols
         self._stale = True  # rows not filled for the current query/language yet
         self.retranslate()
 
     def show_matches(self, query: str) -> list[PlcSignal]:
         """Fill the table with the signals matching `query` (all of them when it is empty)."""
         found = list(search(query)) if query.strip() else list(load_signals())
+        named = (symbol_matches(self.symbols, query)[:MAX_SYMBOL_ROWS]
+                 if self.symbols is not None else [])
         self._shown = found
+        self._addresses = [address for address, _entry in named]
+        self._addresses += [signal.address for signal in found]
         self._stale = False
         self.table.setUpdatesEnabled(False)
         self.table.clearContents()
-        self.table.setRowCount(len(found))
+        self.table.setRowCount(len(named) + len(found))
         turkish_first = ui_is_turkish()
-        for row, signal in enumerate(found):
+        rows: list[tuple[tuple[str, ...], str]] = []
+        program = translate("SignalList", "program symbol")
+        for address, entry in named:
+            comment = " / ".join(entry.comments)
+            rows.append(((str(address), entry.symbol, comment, program),
+                         "\n".join(t for t in (entry.symbol, *entry.comments) if t)))
+        for signal in found:
             own, other = ((signal.turkish, signal.english) if turkish_first
                           else (signal.english, signal.turkish))
-            tip = "\n".join(t for t in (own, other, signal.notes) if t)
-            for column, text in enumerate((str(signal.address), signal.name, own, other)):
+            rows.append(((str(signal.address), signal.name, own, other),
+                         "\n".join(t for t in (own, other, signal.notes) if t)))
+        for row, (texts, tip) in enumerate(rows):
+            for column, text in enumerate(texts):
                 item = QTableWidgetItem(text)
                 item.setToolTip(tip)
                 self.table.setItem(row, column, item)
@@ -84,23 +125,46 @@ class SignalListDock(QDockWidget):
         return found
 
     def signal_at_row(self, row: int) -> PlcSignal | None:
-        """The signal shown in a row."""
+        """The manual's signal shown in a row (None for a program symbol's row)."""
+        row -= len(self._addresses) - len(self._shown)
         return self._shown[row] if 0 <= row < len(self._shown) else None
 
+    def address_at_row(self, row: int) -> Address | None:
+        """The address shown in a row (a program symbol's or a signal's)."""
+        return self._addresses[row] if 0 <= row < len(self._addresses) else None
+
+    def row_texts(self, row: int) -> list[str]:
+        """The texts of one row (for tests)."""
+        items = [self.table.item(row, c) for c in range(_COLUMNS)]
+        return [item.text() if item is not None else "" for item in items]
+
+    def set_symbols(self, symbols: SymbolTable | None) -> None:
+        """The open program's symbols are searched too (listed before the manual's signals)."""
+        self.symbols = symbols
+        if not self.query.text().strip():
+            return  # an empty query lists the manual's signals only: nothing changes
+        if self.isVisible():
+            self.show_matches(self.query.text())
+        else:
+            self._stale = True
+
     def _on_double_click(self, row: int, _column: int) -> None:
-        signal = self.signal_at_row(row)
-        if signal is not None:
-            self.address_chosen.emit(signal.address)
+        address = self.address_at_row(row)
+        if address is not None:
+            self.address_chosen.emit(address)
 
     def _show_count(self) -> None:
-        self.count_label.setText(
-            translate("SignalList", "{0} signals").format(len(self._shown)))
+        named = len(self._addresses) - len(self._shown)
+        text = translate("SignalList", "{0} signals").format(len(self._shown))
+        if named > 0:
+            text = translate("SignalList", "{0} program symbols, {1}").format(named, text)
+        self.count_label.setText(text)
 
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
         self.setWindowTitle(translate("SignalList", "Signals"))
         self.query.setPlaceholderText(
-            translate("SignalList", "Address, name or words, e.g. G8.4, SPL, acil"))
+            translate("SignalList", "Address, symbol, name or words, e.g. G8.4, SPL, acil"))
         english, turkish = translate("SignalList", "English"), translate("SignalList", "Turkish")
         self.table.setHorizontalHeaderLabels([
             translate("SignalList", "Address"),

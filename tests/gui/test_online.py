@@ -57,7 +57,7 @@ def test_disable_and_force_change_the_engine_and_the_force_list(qtbot: QtBot,
     online.force_selected(1)  # force X2.1 = 1: the switch reads position 1
     assert force_list.table.rowCount() == 2
     assert force_list.table.item(0, 0).text() == "FORCED"
-    assert force_list.table.item(0, 1).text() == "X2.1"
+    assert force_list.table.item(0, 1).text() == "X2.1 FP_Din_1"  # the address and its name
     assert force_list.table.item(0, 2).text() == "1"
     assert (0, 0) in online.live.overlays[0].power.forced
     button = force_list.table.cellWidget(1, 3)

@@ -7,8 +7,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
-
-import lark
+from typing import TYPE_CHECKING
 
 from ladderworks.core import instructions as _table
 from ladderworks.core.address import Address, AddressError, parse_address
@@ -38,6 +37,9 @@ from ladderworks.core.instructions import (
     value_is_address,
     width_of,
 )
+
+if TYPE_CHECKING:
+    import lark
 
 _HEADER = re.compile(r"^\s*%@(.*)$")
 _SECTION_END = re.compile(r"^\s*%\s*$")
@@ -75,7 +77,10 @@ class ParseResult:
 
 @lru_cache(maxsize=1)
 def line_parser() -> lark.Lark:
-    """The lark parser for one line, loaded once from grammar.lark."""
+    """The lark parser for one line, loaded once from grammar.lark (lark is imported only
+    when a line needs it: the fast scanner reads the common lines, and `check` starts faster)."""
+    import lark
+
     grammar = resources.files("ladderworks.core.il").joinpath("grammar.lark").read_text("utf-8")
     return lark.Lark(grammar, start="line", parser="lalr", maybe_placeholders=False)
 
@@ -207,6 +212,8 @@ def _scan_line(text: str, number: int) -> _Line | Diagnostic:
     fast = _scan_fast(text, number)
     if fast is not None:
         return fast
+    import lark
+
     try:
         tree = line_parser().parse(text)
     except lark.exceptions.UnexpectedInput as exc:

@@ -20,8 +20,9 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks import paths
-from ladderworks.core.alarms import ActiveAlarm, format_number, load_alarm_file
+from ladderworks.core.alarms import ActiveAlarm, AlarmTable, format_number, load_alarm_file
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.il.program import Program
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.dock_menus import add_dock, find_menu, insert_before, register_action
 from ladderworks.gui.plc_session import PlcSession
@@ -56,6 +57,8 @@ class AlarmDock(QDockWidget):
         self.session = session
         self.alarm_file: Path | None = None
         self.file_problems: list[Diagnostic] = []
+        self.program_messages = 0  # > 0 while the open program's `%@4` messages are used
+        self._file_table: AlarmTable | None = None  # the alarm file's table meanwhile
         self._seen: dict[tuple[int, int], datetime] = {}
         self.file_action = QAction(self)
         self.file_action.setObjectName("action_alarm_file")
@@ -73,8 +76,9 @@ class AlarmDock(QDockWidget):
         toolbar.addAction(self.file_action)
         self.file_label = QLabel(body)
         self.file_label.setObjectName("alarmFileLabel")
-        toolbar.addWidget(self.file_label)
+        self.file_label.setWordWrap(True)  # its own line: never hidden in a narrow dock
         layout.addWidget(toolbar)
+        layout.addWidget(self.file_label)
         self.tree = QTreeWidget(body)
         self.tree.setObjectName("alarmList")
         self.tree.setColumnCount(COLUMNS)
@@ -105,11 +109,28 @@ class AlarmDock(QDockWidget):
             self.file_label.setStyleSheet("color:#c00000;")
             return False
         self.session.set_alarm_table(table)
+        self.program_messages = 0
         self.alarm_file = Path(path)
         self.file_problems = problems
         self._show_file()
         self._fill()
         return True
+
+    def use_program(self, program: Program) -> None:
+        """A program was opened: its `%@4` messages are the texts; without them, the file's."""
+        if program.messages:
+            if not self.program_messages:
+                self._file_table = self.session.alarm_table
+            table = AlarmTable.from_messages(program.messages)
+            self.session.set_alarm_table(table)
+            self.program_messages = len(table)
+        elif self.program_messages:
+            self.session.set_alarm_table(self._file_table or AlarmTable())
+            self.program_messages = 0
+        else:
+            return
+        self._show_file()
+        self._fill()
 
     def open_dialog(self) -> None:
         """File → Alarm file: choose an AlarmMsg.dat."""
@@ -124,6 +145,13 @@ class AlarmDock(QDockWidget):
             self.load_file(path)
 
     def _show_file(self) -> None:
+        if self.program_messages:
+            self.file_label.setText(translate(
+                "AlarmPanel", "The program's messages (%@4): {0}").format(self.program_messages))
+            self.file_label.setStyleSheet("")
+            self.file_label.setToolTip(translate(
+                "AlarmPanel", "Alarm file... uses an AlarmMsg.dat instead"))
+            return
         if self.alarm_file is None:
             self.file_label.setText(translate("AlarmPanel", "No alarm file"))
             return
@@ -183,6 +211,7 @@ class AlarmDock(QDockWidget):
                     self.message_of(alarm),
                 ]
             )
+            item.setToolTip(4, item.text(4))  # the whole message when the column is narrow
             if alarm.active:
                 item.setForeground(0, QBrush(QColor("#c00000")))
             else:
@@ -233,6 +262,9 @@ def install(window: QMainWindow, session: PlcSession) -> AlarmDock:
     """Add the alarm panel to the console, File → Alarm file and PLC → RESET to its menus."""
     dock = AlarmDock(session, window)
     add_dock(window, dock, "action_dock_alarms")
+    opened = getattr(window, "program_opened", None)
+    if opened is not None:
+        opened.connect(dock.use_program)
     for action in (dock.file_action, dock.reset_action):
         register_action(window, action)
     insert_before(find_menu(window, "menu_file"), dock.file_action, "action_quit")

@@ -21,9 +21,9 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.address import INPUT_AREAS, Address, AddressError, parse_address
 from ladderworks.core.plc.forcing import ForceEntry
-from ladderworks.core.signals import signal_at
 from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
+from ladderworks.gui.symbol_text import tooltip
 
 translate = QCoreApplication.translate
 
@@ -154,6 +154,7 @@ class BitDisplayDock(QDockWidget):
         self.setWidget(body)
         session.snapshot_ready.connect(self._on_snapshot)
         session.forces_changed.connect(self._on_forces)
+        session.symbols_changed.connect(lambda _symbols: self._refresh_tooltips())
         self._on_forces(session.forces())
         self.retranslate()
 
@@ -195,9 +196,13 @@ class BitDisplayDock(QDockWidget):
         try:
             address = parse_address(text, want_bit=False)
         except AddressError as error:
-            row.set_error(address_error_text(error))
-            self._show_row(row, None)
-            return
+            named = (self.session.symbols.address_of(text)
+                     if self.session.symbols is not None else None)
+            if named is None:
+                row.set_error(address_error_text(error))
+                self._show_row(row, None)
+                return
+            address = Address(named.area, named.byte)  # a symbol: its byte is shown
         row.address = address
         row.edit.setText(str(address))
         row.set_error("")
@@ -234,6 +239,10 @@ class BitDisplayDock(QDockWidget):
                     value = None if row.value is None else row.value >> button.bit & 1
                     button.show_value(value, self._forced.get(row.address.with_bit(button.bit)))
 
+    def _refresh_tooltips(self) -> None:
+        for row in self.rows:
+            self._set_tooltips(row)
+
     def _set_tooltips(self, row: BitRow) -> None:
         for button in row.bits:
             button.setToolTip(
@@ -242,11 +251,7 @@ class BitDisplayDock(QDockWidget):
 
     def bit_tooltip(self, address: Address) -> str:
         """The signal name and descriptions of a bit, whether it can be forced, and its force."""
-        lines = [str(address)]
-        signal = signal_at(address)
-        if signal is not None:
-            lines[0] += f"  {signal.name}"
-            lines += [text for text in (signal.turkish, signal.english, signal.notes) if text]
+        lines = [tooltip(address, self.session.symbols)]
         forced = self._forced.get(address)
         if forced is not None:
             lines.append(translate("BitDisplay", "Forced to {0}").format(int(forced)))

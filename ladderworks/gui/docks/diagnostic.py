@@ -21,12 +21,14 @@ from ladderworks.core.address import Address, AddressError, parse_address
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork
+from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
 from ladderworks.gui.docks.live_ladder import LivePower
 from ladderworks.gui.editor.geometry import CELL_H, Layout, cell_origin
+from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.network_item import NetworkItem
-from ladderworks.gui.editor.view import describe_signal
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
+from ladderworks.gui.symbol_text import name_and_text
 
 translate = QCoreApplication.translate
 
@@ -48,6 +50,7 @@ class DiagnosticView(QGraphicsView):
         self.setDragMode(QGraphicsView.DragMode.ScrollHandDrag)
         self.live = LivePower(self.scene_)
         self.network_items: list[NetworkItem] = []
+        self.symbols: SymbolTable | None = None  # the program's symbols, named under addresses
         self.networks: list[LadderNetwork] = []
         self.layout_ = Layout()
         self.paints = 0  # viewport paint events (the benchmark's repaint rate)
@@ -64,13 +67,17 @@ class DiagnosticView(QGraphicsView):
         self.layout_.rebuild(networks)
         self.network_items = []
         for index, (network, top) in enumerate(zip(networks, self.layout_.tops, strict=True)):
-            item = NetworkItem(network, index + 1, describe_signal)
+            item = LabelledNetworkItem(network, index + 1, self.describe_address)
             item.setPos(0, top)
             self.scene_.addItem(item)
             self.network_items.append(item)
         self.live.attach(networks, self.layout_.tops, binary, ops)
         width = max((item.boundingRect().width() for item in self.network_items), default=600.0)
         self.scene_.setSceneRect(QRectF(0, 0, width, max(self.layout_.total_height(), CELL_H)))
+
+    def describe_address(self, address: object) -> tuple[str, str] | None:
+        """(symbol, comment) of the program, else (signal name, description) of the manual."""
+        return name_and_text(address, self.symbols)
 
     def visible_rect(self) -> QRectF:
         """The part of the scene on screen."""
@@ -156,6 +163,7 @@ class DiagnosticDock(QDockWidget):
         if program is None or not program_matches(program, binary):
             program = program_of(binary)
         networks = [layout_network(net.instructions, net.comments) for net in program.networks]
+        self.view.symbols = self.session.symbols
         self.view.show_networks(networks, binary, binary_networks(binary))
         self.hits = []
         self.hit_index = -1

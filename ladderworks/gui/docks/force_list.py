@@ -18,6 +18,7 @@ from ladderworks.core.il import print_instruction
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.plc.forcing import ForceEntry
 from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.symbol_text import labelled
 
 translate = QCoreApplication.translate
 
@@ -65,7 +66,9 @@ class ForceListDock(QDockWidget):
     def describe(self, entry: ForceEntry) -> tuple[str, str, str]:
         """(kind, what, value) shown for one entry."""
         if entry.kind == "force":
-            return (translate("ForceList", "FORCED"), str(entry.address),
+            where = (labelled(entry.address, self.session.symbols)
+                     if entry.address is not None else "")
+            return (translate("ForceList", "FORCED"), where,
                     str(int(bool(entry.value))))
         binary = self.session.binary
         text = f"op {entry.op}"

@@ -15,6 +15,7 @@ from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.gui.docks.table_entries import Areas, ProgramUse, TableError
 from ladderworks.gui.docks.table_specs import Row, TableSpec
 from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.symbol_text import tooltip
 
 Index = QModelIndex | QPersistentModelIndex
 _READ_ONLY = QBrush(QColor("#eeeeee"))
@@ -68,13 +69,26 @@ class PlcTableModel(QAbstractTableModel):
         row = self._rows[index.row()]
         if role in (Qt.ItemDataRole.DisplayRole, Qt.ItemDataRole.EditRole):
             texts = self.spec.texts(row, self.session)
-            return texts[index.column()] if index.column() < len(texts) else ""
+            text = texts[index.column()] if index.column() < len(texts) else ""
+            if role == Qt.ItemDataRole.DisplayRole and index.column() == 0:
+                symbol = self._symbol(row)
+                return f"{text} {symbol}" if symbol else text
+            return text
         if role == Qt.ItemDataRole.BackgroundRole:
             editable = self.spec.editable(row, index.column(), self.session)
             return None if editable else _READ_ONLY
         if role == Qt.ItemDataRole.ToolTipRole:
-            return self.spec.tooltip(row) or None
+            address = getattr(row, "address", None)
+            named = (tooltip(address, self.session.symbols)
+                     if address is not None and self._symbol(row) else "")
+            return "\n".join(t for t in (named, self.spec.tooltip(row)) if t) or None
         return None
+
+    def _symbol(self, row: Row) -> str:
+        """The program's symbol of a row's address (D, K ... rows), or ""."""
+        address = getattr(row, "address", None)
+        symbols = self.session.symbols
+        return symbols.symbol(address) if symbols is not None and address is not None else ""
 
     def flags(self, index: Index) -> Qt.ItemFlag:
         """Editable cells as the spec says."""

@@ -27,7 +27,7 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.address import AddressError
-from ladderworks.core.signals import signal_at
+from ladderworks.core.symbols import describe
 from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
@@ -152,7 +152,7 @@ class TimeChartDock(QDockWidget):
         signals: list[TracedSignal] = []
         for text in texts:
             try:
-                signals.append(parse_traced(text))
+                signals.append(parse_traced(text, self.session.symbols))
             except AddressError as error:
                 self._say(address_error_text(error), error=True)
                 return None
@@ -214,8 +214,8 @@ class TimeChartDock(QDockWidget):
 
     def lane_name(self, signal: TracedSignal) -> str:
         """The lane's label: the address and, for a named signal, its short name."""
-        found = signal_at(signal.address)
-        return f"{signal.label} {found.name}" if found is not None else signal.label
+        name = describe(signal.address, self.session.symbols)
+        return f"{signal.label} {name}" if name else signal.label
 
     def lane_base(self, lane: int) -> float:
         """The y of a lane's 0 level (the first lane on top)."""

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 from ladderworks.core.address import Address
 from ladderworks.core.plc.trace import TraceSample
-from ladderworks.core.symbols import parse_target
+from ladderworks.core.symbols import SymbolTable, parse_target
 
 
 @dataclass(frozen=True, slots=True)
@@ -36,10 +36,10 @@ class TracedSignal:
         return 1 if self.is_bit else (1 << (8 * self.width)) - 1
 
 
-def parse_traced(text: str) -> TracedSignal:
-    """`R1.4`, `R100`, `D10:2` (a 2-byte value), `D20:4`; raises AddressError (see
-    `parse_target`)."""
-    target = parse_target(text)
+def parse_traced(text: str, symbols: SymbolTable | None = None) -> TracedSignal:
+    """`R1.4`, `R100`, `D10:2` (a 2-byte value), `D20:4`, or a program symbol (`ESKIP`); raises
+    AddressError (see `parse_target`)."""
+    target = parse_target(text, symbols.address_of if symbols is not None else None)
     return TracedSignal(target.address, target.width)
 
 

@@ -14,6 +14,7 @@ from PySide6.QtGui import (
     QKeyEvent,
     QMouseEvent,
     QPainter,
+    QPaintEvent,
     QPen,
     QUndoStack,
 )
@@ -29,7 +30,7 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core import ladder as core
-from ladderworks.core.address import Address
+from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Instruction, Program, print_instruction
 from ladderworks.core.instructions import Write, lookup
@@ -46,6 +47,7 @@ from ladderworks.core.ladder import (
     convert,
 )
 from ladderworks.core.signals import signal_at
+from ladderworks.core.symbols import SymbolTable, resolve
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
 from ladderworks.gui.editor.geometry import (
@@ -61,8 +63,12 @@ from ladderworks.gui.editor.geometry import (
     grid_top,
     node_point,
 )
+from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
+from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
+from ladderworks.gui.editor.progressive import ProgressiveLoader
 from ladderworks.gui.function_dialog import FunctionDialog
+from ladderworks.gui.symbol_text import name_and_text, tooltip
 from ladderworks.gui.tools import KEY_TOOLS, Tool
 
 ZOOM_STEP = 1.2
@@ -112,8 +118,10 @@ class LadderEditor(QGraphicsView):
         self.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
         self.undo_stack = QUndoStack(self)
         self.document = LadderDocument()
+        self.symbols: SymbolTable | None = None  # the program's `%@2` symbols
         self.networks: list[LadderNetwork] = []
-        self.network_items: list[NetworkItem] = []
+        self.network_items = LazyItems(self._make_item)  # made when shown (a real program: 10,000+)
+        self.loader = ProgressiveLoader(self)
         self.layout_ = Layout()
         self.tool = Tool.SELECT
         self.function_name = "TMR"
@@ -155,25 +163,47 @@ class LadderEditor(QGraphicsView):
     # -- the document ------------------------------------------------------------------------
 
     def set_program(self, program: Program) -> None:
-        """Show a program as ladder (clears undo); every program the parser accepts lays out."""
-        self.set_document(convert.program_to_ladder(program))
+        """Show a program as ladder (clears undo); every program the parser accepts lays out.
 
-    def set_document(self, document: LadderDocument) -> None:
+        A large program shows its first networks at once; the rest are laid out in the
+        background (`loading`; `finish_loading()` waits for them)."""
+        document = self.loader.head(program)
+        self.set_document(document, keep_pending=True)
+        self.loader.start()
+
+    @property
+    def loading(self) -> bool:
+        """True while a large program's networks are still being laid out."""
+        return self.loader.loading
+
+    def finish_loading(self) -> None:
+        """Lay out every network still pending now."""
+        self.loader.finish()
+
+    def append_networks(self, networks: list[LadderNetwork]) -> None:
+        """Add laid-out networks before the empty network at the end (background loading)."""
+        at = len(self.networks) - 1
+        self.networks[at:at] = networks
+        for _network in networks:
+            self.network_items.insert(at)
+        self._relayout(at)
+        self._renumber(at)
+
+    def set_document(self, document: LadderDocument, *, keep_pending: bool = False) -> None:
         """Show a ladder document (clears undo)."""
+        if not keep_pending:
+            self.loader.cancel()
         self._close_inline()
         self.undo_stack.clear()
         self.document = document
+        self.symbols = document.origin.symbols if document.origin is not None else None
         self.networks = [net for net in document.networks]
         self.networks.append(LadderNetwork())
-        for item in self.network_items:
+        for _index, item in self.network_items.made():
             self._scene.removeItem(item)
-        self.network_items = [self._make_item(net, i) for i, net in enumerate(self.networks)]
+        self.network_items.reset(len(self.networks))
         self.layout_ = Layout()
         self.layout_.rebuild(self.networks)
-        for item, top in zip(self.network_items, self.layout_.tops, strict=True):
-            item.setPos(0, top)
-            self._scene.addItem(item)
-        self._renumber(0)
         self.selection = None
         self.line_start = None
         self.cursor_cell = (0, 0, 0)
@@ -186,11 +216,13 @@ class LadderEditor(QGraphicsView):
 
     def ladder_document(self) -> LadderDocument:
         """The document with the drawn networks (the empty network at the end left out)."""
+        self.finish_loading()
         doc = self.document
         nets = list(self.networks)
         if nets and is_blank(nets[-1]):
             nets.pop()
-        return LadderDocument(nets, doc.header, doc.trailer, doc.footer, doc.before, doc.after)
+        return LadderDocument(nets, doc.header, doc.trailer, doc.footer, doc.before, doc.after,
+                              doc.origin)
 
     def program(self) -> tuple[Program | None, list[Diagnostic]]:
         """The program drawn (None when a network cannot be coded) and the diagnostics."""
@@ -205,29 +237,58 @@ class LadderEditor(QGraphicsView):
 
     def is_empty(self) -> bool:
         """True when nothing is drawn."""
+        self.finish_loading()
         return all(net.is_empty() for net in self.networks)
 
-    def _make_item(self, network: LadderNetwork, index: int) -> NetworkItem:
-        return NetworkItem(network, index + 1, describe_signal)
+    def _make_item(self, index: int) -> NetworkItem:
+        item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
+        item.is_new = index == len(self.networks) - 1 and self.networks[index].is_empty()
+        item.setPos(0, self.layout_.tops[index])
+        self._scene.addItem(item)
+        return item
+
+    def make_visible_items(self) -> None:
+        """Make the items of the networks in (and just around) the viewport."""
+        if not self.networks or not self.layout_.tops:
+            return
+        shown = self.mapToScene(self.viewport().rect()).boundingRect()
+        first = self.layout_.network_at(shown.top() - CELL_H)
+        last = self.layout_.network_at(shown.bottom() + CELL_H)
+        for index in range(first, min(last, len(self.networks) - 1) + 1):
+            self.network_items[index]
+
+    def paintEvent(self, event: QPaintEvent) -> None:
+        """Make the visible networks' items, then paint."""
+        self.make_visible_items()
+        super().paintEvent(event)
+
+    def describe_address(self, address: object) -> tuple[str, str] | None:
+        """(symbol, comment) of the program, else (signal name, description) of the manual."""
+        return name_and_text(address, self.symbols)
+
+    def resolve_address(self, text: str) -> str:
+        """The address a typed text names: itself, or the address of a program symbol."""
+        try:
+            return str(resolve(text, self.symbols))
+        except AddressError:
+            return text
 
     def _renumber(self, start: int) -> None:
         last = len(self.network_items) - 1
-        for index in range(start, len(self.network_items)):
-            item = self.network_items[index]
+        for index, item in self.network_items.made(start):
             item.number = index + 1
             item.is_new = index == last and self.networks[index].is_empty()
             item.update()
 
     def _relayout(self, start: int) -> None:
         self.layout_.rebuild(self.networks, start)
-        for index in range(start, len(self.network_items)):
-            self.network_items[index].setPos(0, self.layout_.tops[index])
+        for index, item in self.network_items.made(start):
+            item.setPos(0, self.layout_.tops[index])
         self._update_scene_rect()
         self._place_overlays()
 
     def _update_scene_rect(self) -> None:
-        width = max((item.boundingRect().width() for item in self.network_items[:50]), default=800)
-        widest = max(width, *(LEFT + (n.columns + 1) * CELL_W + 8 for n in self.networks))
+        widest = max(800, *(LEFT + (n.columns + 1) * CELL_W + 8 for n in self.networks))
         self._scene.setSceneRect(QRectF(-4, -4, widest + 8, self.layout_.total_height() + 40))
 
     def network_changed(self, index: int) -> None:
@@ -241,9 +302,7 @@ class LadderEditor(QGraphicsView):
     def insert_network(self, index: int, network: LadderNetwork) -> None:
         """Insert a network (used by undo commands)."""
         self.networks.insert(index, network)
-        item = self._make_item(network, index)
-        self.network_items.insert(index, item)
-        self._scene.addItem(item)
+        self.network_items.insert(index)
         self._relayout(index)
         self._renumber(max(index - 1, 0))
 
@@ -251,7 +310,8 @@ class LadderEditor(QGraphicsView):
         """Remove a network (used by undo commands); returns it."""
         network = self.networks.pop(index)
         item = self.network_items.pop(index)
-        self._scene.removeItem(item)
+        if item is not None:
+            self._scene.removeItem(item)
         if self.cursor_cell[0] >= len(self.networks):
             self.cursor_cell = (len(self.networks) - 1, 0, 0)
         self._relayout(min(index, len(self.networks) - 1))
@@ -260,7 +320,7 @@ class LadderEditor(QGraphicsView):
 
     def mark_diagnostics(self, diagnostics: list[Diagnostic]) -> None:
         """Outline the cells the diagnostics point at."""
-        for item in self.network_items:
+        for _index, item in self.network_items.made():
             if item.error_cells:
                 item.error_cells = set()
                 item.update()
@@ -487,7 +547,7 @@ class LadderEditor(QGraphicsView):
             ("address", index, row, col),
             text,
             rect,
-            translate("LadderEditor", "Address, e.g. X2.1 (// comment)"),
+            translate("LadderEditor", "Address or symbol, e.g. X2.1 (// comment)"),
         )
 
     def open_comment_editor(self, index: int, line: int) -> None:
@@ -548,6 +608,7 @@ class LadderEditor(QGraphicsView):
         if not address_text:
             self._close_inline()
             return
+        address_text = self.resolve_address(address_text)
         try:
             core.edits.to_address(address_text, (row, col))
         except EditRefused as refused:
@@ -776,25 +837,41 @@ class LadderEditor(QGraphicsView):
 
     def go_to(self, diagnostic: Diagnostic) -> None:
         """Jump to a diagnostic's network and cell."""
+        if diagnostic.network is not None and diagnostic.network >= len(self.networks) - 1:
+            self.finish_loading()
         if diagnostic.network is None or not 0 <= diagnostic.network < len(self.networks):
             return
         row, col = diagnostic.cell if diagnostic.cell is not None else (0, 0)
         self.move_cursor(diagnostic.network, row, col)
         self.setFocus()
 
+    def tooltip_at(self, index: int, row: int, col: int) -> str:
+        """Tooltip of a cell's contact or coil: address, symbol, its comments; else ""."""
+        found = self.networks[index].element_at(row, col)
+        if found is None or not isinstance(found[1], Contact | Coil) or found[1].address is None:
+            return ""
+        element = found[1]
+        address = element.address
+        if address is None:
+            return ""
+        text = tooltip(address, self.symbols)
+        return text + (f"\n// {element.comment}" if element.comment else "")
+
     def describe_cell(self, index: int, row: int, col: int) -> str:
         """Status-bar text: the cell, and the address with its signal name and comment."""
         parts = [
             translate("LadderEditor", "N{0} row {1} col {2}").format(index + 1, row + 1, col + 1)
         ]
+        if self.networks[index].label:
+            parts.append(self.networks[index].label)
         found = self.networks[index].element_at(row, col)
         if found is not None:
             element = found[1]
             if isinstance(element, Contact | Coil) and element.address is not None:
                 parts.append(str(element.address))
-                described = describe_signal(element.address)
+                described = self.describe_address(element.address)
                 if described is not None:
-                    parts.append(f"{described[0]} — {described[1]}")
+                    parts.append(" — ".join(text for text in described if text))
                 if element.comment:
                     parts.append(element.comment)
             elif isinstance(element, FunctionBox):
@@ -884,6 +961,7 @@ class LadderEditor(QGraphicsView):
             net = self.networks[hit.network]
             if hit.row < net.rows:
                 self.hover_changed.emit(self.describe_cell(hit.network, hit.row, hit.col))
+                self.viewport().setToolTip(self.tooltip_at(hit.network, hit.row, hit.col))
         super().mouseMoveEvent(event)
 
     def mouseReleaseEvent(self, event: QMouseEvent) -> None:

@@ -1,0 +1,146 @@
+"""Open the 37,883-step FANUC_STUDER_S41_F036 in the console: ms to parse, lay out and paint,
+ms for `ladderworks-cli check`, resident memory; run from the repository root."""
+
+from __future__ import annotations
+
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from PySide6.QtCore import QEvent, QObject, QSettings  # noqa: E402
+from PySide6.QtWidgets import QApplication  # noqa: E402
+
+NAME = "FANUC_STUDER_S41_F036"
+
+
+def _program() -> Path | None:
+    for base in ROOT.parents:
+        candidate = base / "shared" / "real-programs" / f"{NAME}.txt"
+        if candidate.exists():
+            return candidate
+    return None
+
+
+class PaintWatch(QObject):
+    """Notes when the view's viewport has been painted."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.painted = False
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        """Any paint event counts."""
+        if event.type() == QEvent.Type.Paint:
+            self.painted = True
+        return False
+
+
+def _rss_mb() -> float:
+    """The current resident set size in MB (from /proc, else the peak)."""
+    try:
+        for line in Path("/proc/self/status").read_text().splitlines():
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) / 1024
+    except OSError:
+        pass
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+def _check_ms(path: Path) -> float:
+    """Wall ms of `python3 -m ladderworks.cli check FILE` (process start included)."""
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "ladderworks.cli", "check", str(path)], cwd=ROOT,
+                   stdout=subprocess.DEVNULL, check=False)
+    return (time.perf_counter() - start) * 1000
+
+
+def main() -> int:
+    """Run the measurement and print the figures."""
+    path = _program()
+    if path is None:
+        print(f"no ../shared/real-programs/{NAME}.txt beside the repository", file=sys.stderr)
+        return 1
+    app = QApplication.instance() or QApplication(sys.argv)
+    from ladderworks.core.il import parse_file
+    from ladderworks.gui.main_window import MainWindow
+    from ladderworks.gui.refcount_guard import guard_singletons
+    from ladderworks.gui.settings import Settings
+    from ladderworks.gui.translation import UiLanguage
+
+    guard_singletons()
+    import ladderworks.gui.main_window as main_window
+
+    parsed: list[float] = []
+
+    def timed_parse(name: object) -> object:
+        began = time.perf_counter()
+        found = parse_file(name)  # type: ignore[arg-type]
+        parsed.append(time.perf_counter() - began)
+        return found
+
+    main_window.parse_file = timed_parse  # type: ignore[assignment]
+    start = time.perf_counter()
+    result = parse_file(path)
+    parse_ms = (time.perf_counter() - start) * 1000
+    steps = sum(len(n.instructions) for n in result.program.networks)
+    del result
+    with tempfile.TemporaryDirectory() as tmp:
+        settings = Settings(QSettings(str(Path(tmp) / "s.ini"), QSettings.Format.IniFormat))
+        language = UiLanguage()
+        language.apply("en")
+        window = MainWindow(settings, language)
+        window.resize(1200, 800)
+        window.show()
+        app.processEvents()
+        watch = PaintWatch()
+        window.editor.viewport().installEventFilter(watch)
+        watch.painted = False
+        start = time.perf_counter()
+        window.load(path)
+        loaded = time.perf_counter() - start
+        window.editor.viewport().update()
+        while not watch.painted:
+            app.processEvents()
+        painted = time.perf_counter() - start
+        while window.editor.loading:  # the rest is laid out in the background
+            app.processEvents()
+        laid_out = time.perf_counter() - start
+        rss = _rss_mb()
+        count = len(window.editor.networks) - 1
+        made = window.editor.network_items.made_count()
+        start = time.perf_counter()
+        bar = window.editor.verticalScrollBar()
+        bar.setValue(bar.maximum() // 2)
+        watch.painted = False
+        while not watch.painted:
+            app.processEvents()
+        scrolled = time.perf_counter() - start
+        window.editor.undo_stack.setClean()
+        window.close()
+    check = _check_ms(path)
+    load = os.getloadavg()
+    print(f"{NAME}: {steps} steps, {count} networks ({made} graphics items made)")
+    print(f"parse alone (first):    {parse_ms:7.0f} ms")
+    print(f"open to painted:        {painted * 1000:7.0f} ms (goal under 500 ms)")
+    print(f"  parse inside open:    {parsed[0] * 1000:7.0f} ms")
+    print(f"  GUI (lay out, items, paint): {(painted - parsed[0]) * 1000:4.0f} ms "
+          f"(load() returned after {loaded * 1000:.0f} ms)")
+    print(f"all laid out (background): {laid_out * 1000:4.0f} ms")
+    print(f"scroll to the middle:   {scrolled * 1000:7.0f} ms")
+    print(f"check (CLI process):    {check:7.0f} ms (goal under 300 ms)")
+    print(f"resident memory open:   {rss:7.0f} MB (goal under 400 MB)")
+    print(f"load average:           {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} "
+          f"on {os.cpu_count()} cores")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

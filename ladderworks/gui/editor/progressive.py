@@ -1,0 +1,82 @@
+"""Opening a large program: the first networks are laid out at once, the rest in the background
+(a few hundred at a time between events), so the ladder is on screen before all is laid out."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QObject, QTimer
+
+from ladderworks.core.il import Network, Program
+from ladderworks.core.ladder import LadderDocument, convert
+
+if TYPE_CHECKING:
+    from ladderworks.gui.editor.view import LadderEditor
+
+AT_ONCE = 300  # a program with more networks than this lays the rest out in the background
+CHUNK = 400  # networks laid out per step in the background
+
+
+class ProgressiveLoader(QObject):
+    """Lays out a program's networks into an editor: the head now, the rest step by step."""
+
+    def __init__(self, editor: LadderEditor) -> None:
+        super().__init__(editor)
+        self.editor = editor
+        self.pending: list[Network] = []
+        self.trailer: list[str] = []
+        self._timer = QTimer(self)
+        self._timer.setSingleShot(True)
+        self._timer.setInterval(0)
+        self._timer.timeout.connect(self.step)
+
+    @property
+    def loading(self) -> bool:
+        """True while networks are still to be laid out."""
+        return bool(self.pending)
+
+    def head(self, program: Program) -> LadderDocument:
+        """The document of the first networks (all of a small program); the rest is pending."""
+        self.cancel()
+        if len(program.networks) <= AT_ONCE:
+            return convert.program_to_ladder(program)
+        first = Program(networks=program.networks[:AT_ONCE], header=program.header,
+                        before=program.before, after=program.after, footer=program.footer)
+        document = convert.program_to_ladder(first)
+        document.origin = program
+        self.pending = list(program.networks[AT_ONCE:])
+        self.trailer = list(program.trailer)
+        return document
+
+    def start(self) -> None:
+        """Begin the background steps (after the editor shows the head)."""
+        if self.pending:
+            self._timer.start()
+
+    def cancel(self) -> None:
+        """Forget what is pending (another program is shown)."""
+        self.pending = []
+        self.trailer = []
+        self._timer.stop()
+
+    def step(self) -> None:
+        """Lay out the next chunk and append it before the editor's empty last network."""
+        if not self.pending:
+            return
+        chunk, self.pending = self.pending[:CHUNK], self.pending[CHUNK:]
+        last = not self.pending
+        part = convert.program_to_ladder(
+            Program(networks=chunk, trailer=self.trailer if last else []))
+        self.editor.append_networks(part.networks)
+        if last:
+            self.editor.document.trailer = part.trailer
+            self.trailer = []
+        else:
+            self._timer.start()
+
+    def finish(self) -> None:
+        """Lay out everything pending now."""
+        self._timer.stop()
+        while self.pending:
+            self.step()
+        self._timer.stop()
