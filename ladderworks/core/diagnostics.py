@@ -45,6 +45,7 @@ MESSAGES: dict[str, str] = {
     "bad-encoding": "the file is neither UTF-8 nor Turkish Windows (cp1254) text",
     "syntax": "syntax error at '{text}'",
     "invalid-bytes": "{count} byte(s) here are not valid {encoding}; they are kept as they are",
+    "damaged-draft": "a saved drawing ({lines} line(s)) is damaged: it is kept as comment text",
     "not-a-program": "this is not a ladder program (no %@ section and no instruction)",
     "section-line": "line not understood in section {section}: '{text}'",
     "param-kind-ref":

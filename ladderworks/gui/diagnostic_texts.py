@@ -115,6 +115,9 @@ def diagnostic_templates() -> dict[str, str]:
         "invalid-bytes": translate(
             "Diagnostic",
             "{count} byte(s) here are not valid {encoding}; they are kept as they are"),
+        "damaged-draft": translate(
+            "Diagnostic",
+            "a saved drawing ({lines} line(s)) is damaged: it is kept as comment text"),
         "not-a-program": translate(
             "Diagnostic",
             "this is not a ladder program (no %@ section and no instruction)"),

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.il.program import Network, Program
 from ladderworks.core.il.textform import split_lines
 from ladderworks.core.ladder.clipboard import MAGIC, copy_text, network_from_text
@@ -19,6 +19,18 @@ def draft_lines(network: LadderNetwork) -> list[str]:
     return [DRAFT_MARK + line for line in split_lines(copy_text(network))]
 
 
+def read_draft(lines: list[str]) -> LadderNetwork | None:
+    """The network a draft block (lines starting with DRAFT_MARK) holds; None when damaged.
+
+    Damaged means anything that is not a valid drawing: bad JSON, non-finite or huge numbers,
+    wrong shapes, nesting too deep to read."""
+    try:
+        return network_from_text("\n".join(line[len(DRAFT_MARK):] for line in lines))
+    except (EditRefused, ValueError, TypeError, KeyError, OverflowError, RecursionError,
+            MemoryError):
+        return None
+
+
 def split_drafts(lines: list[str]) -> tuple[list[LadderNetwork], list[str]]:
     """Draft networks found in comment lines, and the other comment lines.
 
@@ -30,10 +42,11 @@ def split_drafts(lines: list[str]) -> tuple[list[LadderNetwork], list[str]]:
     def close() -> None:
         if not block:
             return
-        try:
-            drafts.append(network_from_text("\n".join(b[len(DRAFT_MARK):] for b in block)))
-        except EditRefused:
+        network = read_draft(block)
+        if network is None:
             rest.extend(block)
+        else:
+            drafts.append(network)
         block.clear()
 
     for line in lines:
@@ -46,6 +59,39 @@ def split_drafts(lines: list[str]) -> tuple[list[LadderNetwork], list[str]]:
             rest.append(line)
     close()
     return drafts, rest
+
+
+def _draft_text(line: str) -> str | None:
+    """A file line's draft text (after `//` or `;`), or None when it is no draft line."""
+    text = line.lstrip()
+    for marker in ("//", ";"):
+        if text.startswith(marker + DRAFT_MARK):
+            return text[len(marker):]
+    return None
+
+
+def damaged_drafts(lines: list[str]) -> list[Diagnostic]:
+    """A `damaged-draft` warning at the first line of each draft block in a file's lines that
+    does not hold a valid drawing (it is kept as comment text and saved back unchanged)."""
+    found: list[Diagnostic] = []
+    block: list[str] = []
+    start = 0
+
+    def close() -> None:
+        if block and read_draft(block) is None:
+            found.append(Diagnostic("damaged-draft", {"lines": len(block)}, start + 1, 1,
+                                    Severity.WARNING))
+        block.clear()
+
+    for number, line in enumerate(lines):
+        text = _draft_text(line)
+        if text is None or text[len(DRAFT_MARK):].startswith(MAGIC):
+            close()
+            start = number
+        if text is not None:
+            block.append(text)
+    close()
+    return found
 
 
 def program_to_ladder(program: Program) -> LadderDocument:
