@@ -14,12 +14,21 @@ from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QApplication, QMessageBox, QWidget
 from pytestqt.qtbot import QtBot
 
+from ladderworks.gui import questions
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.refcount_guard import guard_singletons
 from ladderworks.gui.settings import Settings
 from ladderworks.gui.translation import UiLanguage
 
 guard_singletons()  # PySide6 6.12.0 loses a reference to None on every void Qt call
+
+
+@pytest.fixture(autouse=True)
+def data_folder(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """The user's data folder (recovery copies) in a temporary folder."""
+    folder = tmp_path / "xdg-data"
+    monkeypatch.setenv("XDG_DATA_HOME", str(folder))
+    return folder
 
 
 @pytest.fixture
@@ -43,6 +52,7 @@ def window(qtbot: QtBot, settings: Settings,
         raise AssertionError("unexpected blocking question")
 
     monkeypatch.setattr(QMessageBox, "question", no_question)
+    monkeypatch.setattr(questions, "ask", no_question)
     language = UiLanguage()
     language.apply("en")
     win = MainWindow(settings, language)
