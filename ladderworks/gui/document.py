@@ -15,7 +15,7 @@ from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult, parse_bytes
 from ladderworks.core.il.printer import encode_program, print_faithful
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text
-from ladderworks.core.ladder.convert import damaged_drafts
+from ladderworks.core.ladder.convert import Kept, adopt_origin, damaged_drafts
 from ladderworks.gui.files import atomic_write_bytes, write_target
 from ladderworks.gui.parameter_document import ParameterDocument
 
@@ -66,6 +66,7 @@ class ProgramDocument(QObject):
         self.form = TextForm()
         self.origin: Program | None = None
         self.disk: DiskState | None = None
+        self.kept: Kept = []  # the networks as read, to save an unchanged one as it was
         self.watcher = QFileSystemWatcher(self)
         self.watcher.fileChanged.connect(self._on_file_changed)
         undo_stack.cleanChanged.connect(self.modified_changed)
@@ -112,6 +113,7 @@ class ProgramDocument(QObject):
         self.form = TextForm()
         self.origin = None
         self.disk = None
+        self.kept = []
         self._watch(None)
 
     def read(self, path: Path) -> tuple[ParseResult, bytes]:
@@ -147,6 +149,8 @@ class ProgramDocument(QObject):
 
     def encode(self, program: Program) -> bytes:
         """The bytes Save writes for `program` in the document's form; EncodeError."""
+        if program.source is None and self.origin is not None:
+            adopt_origin(program, self.origin)  # the file it was read from: a faithful save
         if program.form == self.form:
             return encode_program(program)
         return encode_text(print_faithful(program), self.form)

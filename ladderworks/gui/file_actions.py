@@ -10,10 +10,11 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QCoreApplication, QLocale
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
-from ladderworks.core.diagnostics import has_errors
+from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.il.parser import parse_bytes
 from ladderworks.core.il.textform import EncodeError
+from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
 from ladderworks.core.plc.parameters import format_parameters, parameters_beside
 from ladderworks.core.plc.timer_table import dialect_of
 from ladderworks.gui import questions
@@ -132,7 +133,7 @@ class FileActions:
         return True
 
     def _show_result(self: MainWindow, path: Path | None, program: Program, ok: bool,
-                     diagnostics: list) -> None:
+                     diagnostics: list[Diagnostic]) -> None:
         """Show a read program: as ladder, or (it did not parse) its text, never overwritten."""
         self.dialect = dialect_of(program)
         self.errors.set_diagnostics(diagnostics)
@@ -140,7 +141,8 @@ class FileActions:
             self.errors.show()
         if ok:
             self.failed_path = None
-            self.editor.set_program(program)
+            self.document.kept = []
+            self.editor.set_document(program_to_ladder(program, self.document.kept))
             self.pages.setCurrentWidget(self.editor)
         else:
             self.failed_path = path
@@ -185,6 +187,13 @@ class FileActions:
         if self.path is None:
             return self.save_as_dialog()
         return self.save_to(self.path)
+
+    def _program_to_save(self: MainWindow) -> tuple[Program, list[Diagnostic]]:
+        """The drawn program (unfinished networks as drafts, unchanged ones as read)."""
+        program, diagnostics = ladder_to_program(self.editor.ladder_document(),
+                                                 self.document.kept)
+        self.editor.mark_diagnostics(diagnostics)
+        return program, diagnostics
 
     def _may_write(self: MainWindow, path: Path) -> bool | None:
         """Ask before writing `path` (changed outside, read-only): True to go on, False when
@@ -238,7 +247,7 @@ class FileActions:
             text = text if text.endswith("\n") else text + "\n"
             data = self._encoded(path, lambda: self.document.encode_text(text))
         else:
-            program, diagnostics = self.editor.saved_program()
+            program, diagnostics = self._program_to_save()
             self.dialect = dialect_of(program)
             drafts = has_errors(diagnostics)
             self.errors.set_diagnostics(diagnostics)
@@ -347,10 +356,10 @@ class FileActions:
             if self.pages.currentWidget() is self.text_view:
                 data = document.encode_text(self.text_view.toPlainText())
             else:
-                data = document.encode(self.editor.saved_program()[0])
+                data = document.encode(self._program_to_save()[0])
         except EncodeError:  # a character the file cannot hold: the copy is UTF-8
             text = (self.text_view.toPlainText() if self.pages.currentWidget() is self.text_view
-                    else print_program(self.editor.saved_program()[0]))
+                    else print_program(self._program_to_save()[0]))
             data = text.encode("utf-8", errors="surrogateescape")
         parameters = self.parameters.session.parameters
         return Snapshot(data, document.path,
@@ -392,6 +401,7 @@ class FileActions:
             self.parameters.reset()
         self.parameters.session.set_parameters(found.parameters)
         self._show_result(copy.original, result.program, result.ok, result.diagnostics)
+        self.failed_path = None  # the original on disk is not the text that failed
         self.editor.mark_modified()
         self.text_view.document().setModified(True)
         self._update_title()

@@ -128,3 +128,29 @@ class Drawer:
 def drawer(qtbot: QtBot, window: MainWindow) -> Drawer:
     """Drawing helper on the window's editor."""
     return Drawer(qtbot, window)
+
+
+class Answers:
+    """Answers to the file questions (`questions.ask`), in order; records each question."""
+
+    def __init__(self) -> None:
+        self.queue: list[str] = []
+        self.asked: list[tuple[str, str, list[str]]] = []
+
+    def __call__(self, _parent: object, title: str, text: str,
+                 choices: list[tuple[str, str, object]]) -> str:
+        keys = [key for key, _label, _role in choices]
+        self.asked.append((title, text, keys))
+        if not self.queue:
+            raise AssertionError(f"unexpected question: {title}: {text}")
+        answer = self.queue.pop(0)
+        assert answer in keys, (answer, keys)
+        return answer
+
+
+@pytest.fixture
+def answers(window: MainWindow, monkeypatch: pytest.MonkeyPatch) -> Answers:
+    """Queue the answers a test gives to the window's file questions."""
+    given = Answers()
+    monkeypatch.setattr(questions, "ask", given)
+    return given

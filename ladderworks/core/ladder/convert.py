@@ -94,8 +94,15 @@ def damaged_drafts(lines: list[str]) -> list[Diagnostic]:
     return found
 
 
-def program_to_ladder(program: Program) -> LadderDocument:
-    """Lay out every network of a program (drafts saved in comments come back as drawn)."""
+Kept = list[tuple[LadderNetwork, Network]]  # each network as laid out, and the one it came from
+KEPT_LOOKAHEAD = 64  # how far ahead an unchanged network is looked for after an edit
+
+
+def program_to_ladder(program: Program, kept: Kept | None = None) -> LadderDocument:
+    """Lay out every network of a program (drafts saved in comments come back as drawn).
+
+    `kept`, when given, receives a copy of each laid-out network with the network it came
+    from, so ladder_to_program can write an unchanged one exactly as it was read."""
     doc = LadderDocument(header=list(program.header), footer=list(program.footer),
                          before=list(program.before), after=list(program.after), origin=program)
     for network in program.networks:
@@ -104,27 +111,46 @@ def program_to_ladder(program: Program) -> LadderDocument:
         laid = layout_network(network.instructions, comments)
         laid.label = network.label
         doc.networks.append(laid)
+        if kept is not None:
+            kept.append((laid.copy(), network))
     drafts, trailer = split_drafts(program.trailer)
     doc.networks.extend(drafts)
     doc.trailer = trailer
     return doc
 
 
-def ladder_to_program(doc: LadderDocument) -> tuple[Program, list[Diagnostic]]:
+def _unchanged(network: LadderNetwork, kept: Kept, start: int) -> int | None:
+    """The index in `kept` (from `start`, a little way ahead) of a network drawn as read."""
+    for index in range(start, min(len(kept), start + KEPT_LOOKAHEAD)):
+        if kept[index][0] == network:
+            return index
+    return None
+
+
+def ladder_to_program(doc: LadderDocument,
+                      kept: Kept | None = None) -> tuple[Program, list[Diagnostic]]:
     """The program text of a ladder document, with the diagnostics of each network.
 
     A network that cannot be coded (still being drawn, or wrong) is written as draft comment
     lines before the next network (or at the end), so saving never loses a drawing. The
     program keeps the file, form, dialect and section views of the one the document came from
-    (`doc.origin`), so Save rewrites only the networks that changed."""
+    (`doc.origin`), so Save rewrites only the networks that changed; a network still as it
+    was read (see `kept` of program_to_ladder) keeps its instructions as read."""
     program = Program(header=list(doc.header), footer=list(doc.footer),
                       before=list(doc.before), after=list(doc.after))
     if doc.origin is not None:
-        _adopt(program, doc.origin)
+        adopt_origin(program, doc.origin)
     diagnostics: list[Diagnostic] = []
     pending: list[str] = []
+    next_kept = 0
     for index, network in enumerate(doc.networks):
         if network.is_empty() and not network.comments:
+            continue
+        if kept and (position := _unchanged(network, kept, next_kept)) is not None:
+            next_kept = position + 1
+            program.networks.append(Network(list(kept[position][1].instructions),
+                                            pending + list(network.comments), network.label))
+            pending = []
             continue
         instructions, found = network_to_instructions(network, index)
         diagnostics.extend(found)
@@ -138,7 +164,7 @@ def ladder_to_program(doc: LadderDocument) -> tuple[Program, list[Diagnostic]]:
     return program, diagnostics
 
 
-def _adopt(program: Program, origin: Program) -> None:
+def adopt_origin(program: Program, origin: Program) -> None:
     """Carry over what the ladder document does not hold: file, framing, dialect, views."""
     program.source = origin.source
     program.framed = origin.framed
