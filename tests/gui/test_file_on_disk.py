@@ -7,8 +7,8 @@ import stat
 from pathlib import Path
 
 import pytest
-from pytestqt.qtbot import QtBot
 from PySide6.QtWidgets import QFileDialog
+from pytestqt.qtbot import QtBot
 
 from ladderworks.gui.files import default_mode
 from ladderworks.gui.main_window import MainWindow
