@@ -175,22 +175,27 @@
 <context>
     <name>Diagnostic</name>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>{count} byte(s) here are not valid {encoding}; they are kept as they are</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>this is not a ladder program (no %@ section and no instruction)</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>line not understood in section {section}: &apos;{text}&apos;</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="127"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="130"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: the number is too long</translation>
     </message>
@@ -500,22 +505,27 @@
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
+        <source>a saved drawing ({lines} line(s)) is damaged: it is kept as comment text</source>
+        <translation>a saved drawing ({lines} line(s)) is damaged: it is kept as comment text</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="133"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="117"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="138"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="122"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="140"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
@@ -824,342 +834,365 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <location filename="../ladderworks/gui/main_window.py" line="141"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="147"/>
+        <location filename="../ladderworks/gui/main_window.py" line="142"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="148"/>
+        <location filename="../ladderworks/gui/main_window.py" line="143"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="151"/>
+        <location filename="../ladderworks/gui/main_window.py" line="146"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="157"/>
+        <location filename="../ladderworks/gui/main_window.py" line="152"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/main_window.py" line="157"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="167"/>
+        <location filename="../ladderworks/gui/main_window.py" line="162"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="170"/>
+        <location filename="../ladderworks/gui/main_window.py" line="165"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/main_window.py" line="175"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="181"/>
+        <location filename="../ladderworks/gui/main_window.py" line="176"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="182"/>
+        <location filename="../ladderworks/gui/main_window.py" line="177"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="183"/>
+        <location filename="../ladderworks/gui/main_window.py" line="178"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="184"/>
+        <location filename="../ladderworks/gui/main_window.py" line="179"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/main_window.py" line="182"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="192"/>
+        <location filename="../ladderworks/gui/main_window.py" line="187"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <location filename="../ladderworks/gui/main_window.py" line="194"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="201"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="213"/>
+        <location filename="../ladderworks/gui/main_window.py" line="208"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="218"/>
+        <location filename="../ladderworks/gui/main_window.py" line="213"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="220"/>
+        <location filename="../ladderworks/gui/main_window.py" line="215"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="221"/>
+        <location filename="../ladderworks/gui/main_window.py" line="216"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="224"/>
+        <location filename="../ladderworks/gui/main_window.py" line="219"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="230"/>
+        <location filename="../ladderworks/gui/main_window.py" line="225"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
+        <location filename="../ladderworks/gui/main_window.py" line="231"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="240"/>
+        <location filename="../ladderworks/gui/main_window.py" line="235"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="243"/>
+        <location filename="../ladderworks/gui/main_window.py" line="238"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="252"/>
+        <location filename="../ladderworks/gui/main_window.py" line="247"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="256"/>
+        <location filename="../ladderworks/gui/main_window.py" line="251"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="293"/>
+        <location filename="../ladderworks/gui/main_window.py" line="288"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="297"/>
+        <location filename="../ladderworks/gui/main_window.py" line="292"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="314"/>
+        <location filename="../ladderworks/gui/main_window.py" line="309"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="334"/>
+        <location filename="../ladderworks/gui/main_window.py" line="329"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="355"/>
+        <location filename="../ladderworks/gui/main_window.py" line="350"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="359"/>
+        <location filename="../ladderworks/gui/main_window.py" line="354"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="365"/>
+        <location filename="../ladderworks/gui/main_window.py" line="360"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="370"/>
+        <location filename="../ladderworks/gui/main_window.py" line="365"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="375"/>
+        <location filename="../ladderworks/gui/main_window.py" line="370"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="487"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="376"/>
+        <location filename="../ladderworks/gui/main_window.py" line="474"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="512"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="78"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="513"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="68"/>
+        <source>{0} was changed by another program</source>
+        <translation>{0} was changed by another program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="79"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="541"/>
-        <location filename="../ladderworks/gui/main_window.py" line="560"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="107"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="125"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="542"/>
-        <location filename="../ladderworks/gui/main_window.py" line="561"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="108"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="126"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="113"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="547"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="113"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="586"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="596"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="164"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="598"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="166"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="629"/>
-        <location filename="../ladderworks/gui/main_window.py" line="653"/>
-        <location filename="../ladderworks/gui/main_window.py" line="663"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="235"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="630"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="235"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="654"/>
-        <location filename="../ladderworks/gui/main_window.py" line="664"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
+        <source>{0} is read-only and is not replaced.</source>
+        <translation>{0} is read-only and is not replaced.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="289"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="342"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="675"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <source>Recover unsaved work</source>
+        <translation>Recover unsaved work</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="409"/>
+        <source>Recovered unsaved work from {0}</source>
+        <translation>Recovered unsaved work from {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="267"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="680"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="272"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="688"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="297"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="690"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="298"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="700"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="306"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="702"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="307"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="721"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="324"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="341"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="723"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="325"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="734"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="804"/>
+        <location filename="../ladderworks/gui/main_window.py" line="555"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="823"/>
+        <location filename="../ladderworks/gui/main_window.py" line="574"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="829"/>
+        <location filename="../ladderworks/gui/main_window.py" line="580"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Compile finished: {0} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="849"/>
+        <location filename="../ladderworks/gui/main_window.py" line="600"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="852"/>
+        <location filename="../ladderworks/gui/main_window.py" line="603"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="884"/>
+        <location filename="../ladderworks/gui/main_window.py" line="635"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="885"/>
+        <location filename="../ladderworks/gui/main_window.py" line="636"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -1780,6 +1813,89 @@
         <location filename="../ladderworks/gui/qt_libraries.py" line="75"/>
         <source>On Debian or Ubuntu, install them with:</source>
         <translation>On Debian or Ubuntu, install them with:</translation>
+    </message>
+</context>
+<context>
+    <name>Questions</name>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="37"/>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="41"/>
+        <source>Save As...</source>
+        <translation>Save As...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="46"/>
+        <source>File changed on disk</source>
+        <translation>File changed on disk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="46"/>
+        <source>{0} was changed by another program since you opened it. Reload it (your unsaved changes are lost), keep your version (overwrite the other change), or save yours under another name?</source>
+        <translation>{0} was changed by another program since you opened it. Reload it (your unsaved changes are lost), keep your version (overwrite the other change), or save yours under another name?</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="51"/>
+        <source>Reload</source>
+        <translation>Reload</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="52"/>
+        <source>Keep mine</source>
+        <translation>Keep mine</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="58"/>
+        <source>Read-only file</source>
+        <translation>Read-only file</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="58"/>
+        <source>{0} is read-only and is not replaced. Save the program under another name?</source>
+        <translation>{0} is read-only and is not replaced. Save the program under another name?</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="66"/>
+        <source>Character not in the file&apos;s encoding</source>
+        <translation>Character not in the file&apos;s encoding</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="66"/>
+        <source>Line {0}, column {1}: the character &apos;{2}&apos; (U+{3:04X}) cannot be written in {4}, the encoding of {5}. Save the whole file as UTF-8 instead?</source>
+        <translation>Line {0}, column {1}: the character &apos;{2}&apos; (U+{3:04X}) cannot be written in {4}, the encoding of {5}. Save the whole file as UTF-8 instead?</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="71"/>
+        <source>Save as UTF-8</source>
+        <translation>Save as UTF-8</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="76"/>
+        <source>Recover unsaved work</source>
+        <translation>Recover unsaved work</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="76"/>
+        <source>LadderWorks ended without saving {0}. A recovery copy from {1} was found. Restore it?</source>
+        <translation>LadderWorks ended without saving {0}. A recovery copy from {1} was found. Restore it?</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="80"/>
+        <source>Restore</source>
+        <translation>Restore</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="81"/>
+        <source>Discard</source>
+        <translation>Discard</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="82"/>
+        <source>Not now</source>
+        <translation>Not now</translation>
     </message>
 </context>
 <context>

@@ -98,6 +98,7 @@ def test_kill_after_an_unsaved_edit_then_recover(qtbot: QtBot, window: MainWindo
     restored = _second_window(qtbot, settings)
     assert restored.offer_recovery()
     title, text, keys = answers.asked[0]
+    assert title == "Recover unsaved work"
     assert keys == ["restore", "discard", "later"] and str(path) in text
     assert restored.path == path and restored.is_modified()
     program = restored.editor.program()[0]
