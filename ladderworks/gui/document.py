@@ -43,6 +43,29 @@ class DiskState:
         return other is not None and (other.size, other.digest) == (self.size, self.digest)
 
 
+# Qt drops lone surrogates, so a kept invalid byte (U+DC80..U+DCFF after surrogateescape) is
+# shown in the text view as a private-use character of plane 16 and mapped back on save.
+_BAD_BYTE = 0xDC00
+_SHOWN_BAD_BYTE = 0x10FC00
+
+
+def bad_bytes_shown(text: str) -> str:
+    """Text for a Qt text widget: each kept invalid byte as a visible private-use character."""
+    if text.isascii():
+        return text
+    return "".join(chr(_SHOWN_BAD_BYTE + ord(ch) - _BAD_BYTE) if "\udc80" <= ch <= "\udcff"
+                   else ch for ch in text)
+
+
+def bad_bytes_back(text: str) -> str:
+    """Text from a Qt text widget with the invalid bytes it showed back as they were."""
+    if text.isascii():
+        return text
+    low, high = chr(_SHOWN_BAD_BYTE + 0x80), chr(_SHOWN_BAD_BYTE + 0xFF)
+    return "".join(chr(_BAD_BYTE + ord(ch) - _SHOWN_BAD_BYTE) if low <= ch <= high else ch
+                   for ch in text)
+
+
 def same_file(a: Path, b: Path) -> bool:
     """True when two paths name the same file (through symlinks)."""
     return write_target(a) == write_target(b)
@@ -157,6 +180,7 @@ class ProgramDocument(QObject):
 
     def encode_text(self, text: str) -> bytes:
         """Text from the text view as bytes in the document's form (its line ends); EncodeError."""
+        text = bad_bytes_back(text)
         if self.form.newline != "\n":
             text = text.replace("\n", self.form.newline)
         return encode_text(text, self.form)

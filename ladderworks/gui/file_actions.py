@@ -19,7 +19,13 @@ from ladderworks.core.plc.parameters import format_parameters, parameters_beside
 from ladderworks.core.plc.timer_table import dialect_of
 from ladderworks.gui import questions
 from ladderworks.gui.diagnostic_texts import diagnostic_text
-from ladderworks.gui.document import DiskState, ProgramDocument, same_file
+from ladderworks.gui.document import (
+    DiskState,
+    ProgramDocument,
+    bad_bytes_back,
+    bad_bytes_shown,
+    same_file,
+)
 from ladderworks.gui.files import ReadOnlyFile, atomic_write_bytes, is_read_only
 from ladderworks.gui.recovery import Autosaver, RecoveredCopy, RecoveryStore, Snapshot
 
@@ -148,6 +154,7 @@ class FileActions:
             self.failed_path = path
             source = program.source
             text = "\n".join(source.lines) + "\n" if source is not None else ""
+            text = bad_bytes_shown(text)
             self.editor.set_program(Program())
             self.text_view.setPlainText(text)
             self.text_view.document().setModified(False)
@@ -358,7 +365,8 @@ class FileActions:
             else:
                 data = document.encode(self._program_to_save()[0])
         except EncodeError:  # a character the file cannot hold: the copy is UTF-8
-            text = (self.text_view.toPlainText() if self.pages.currentWidget() is self.text_view
+            text = (bad_bytes_back(self.text_view.toPlainText())
+                    if self.pages.currentWidget() is self.text_view
                     else print_program(self._program_to_save()[0]))
             data = text.encode("utf-8", errors="surrogateescape")
         parameters = self.parameters.session.parameters

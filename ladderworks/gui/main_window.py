@@ -23,6 +23,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step
+from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
@@ -516,7 +517,7 @@ class MainWindow(FileActions, QMainWindow):
         text = self.program_text()
         if text is None:
             return
-        self.text_view.setPlainText(text)
+        self.text_view.setPlainText(bad_bytes_shown(text))
         self.text_view.document().setModified(False)
         self.pages.setCurrentWidget(self.text_view)
 
@@ -527,7 +528,7 @@ class MainWindow(FileActions, QMainWindow):
         from ladderworks.core.il import parse
 
         modified = self.text_view.document().isModified()
-        result = parse(self.text_view.toPlainText())
+        result = parse(bad_bytes_back(self.text_view.toPlainText()))
         self.errors.set_diagnostics(result.diagnostics)
         if not result.ok:
             self.errors.show()

@@ -155,3 +155,18 @@ def test_a_damaged_draft_is_shown_as_text_and_saved_unchanged(
     assert not window.is_modified()
     _save(window, qtbot)
     assert path.read_bytes() == DAMAGED
+
+
+def test_invalid_bytes_in_a_file_shown_as_text_are_visible_and_kept(
+        window: MainWindow, qtbot: QtBot, monkeypatch: pytest.MonkeyPatch,
+        tmp_path: Path) -> None:
+    path = tmp_path / "broken.LAD"
+    path.write_bytes("%@3\r\nRD X2.1 // ÇÖZÜCÜ \xff\r\nAND Q9.9\r\nWRT Y0.0\r\n%\r\n"
+                     .encode("utf-8", errors="surrogateescape").replace(b"\xc3\xbf", b"\xff"))
+    assert window.load(path)
+    assert window.pages.currentWidget() is window.text_view
+    shown = window.text_view.toPlainText().splitlines()[1]
+    assert shown.startswith("RD X2.1 // ÇÖZÜCÜ ") and len(shown) == len("RD X2.1 // ÇÖZÜCÜ ") + 1
+    target = tmp_path / "elsewhere.LAD"
+    _save_as(window, qtbot, monkeypatch, target)  # the broken file itself is never overwritten
+    assert target.read_bytes() == path.read_bytes()
