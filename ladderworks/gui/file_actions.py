@@ -7,7 +7,7 @@ from dataclasses import asdict
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QCoreApplication, QLocale
+from PySide6.QtCore import QCoreApplication, QDateTime, QLocale
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
@@ -30,19 +30,51 @@ from ladderworks.gui.files import ReadOnlyFile, atomic_write_bytes, is_read_only
 from ladderworks.gui.recovery import Autosaver, RecoveredCopy, RecoveryStore, Snapshot
 
 if TYPE_CHECKING:
-    from ladderworks.gui.main_window import MainWindow
+    from PySide6.QtCore import SignalInstance
+    from PySide6.QtWidgets import QMainWindow, QStackedWidget
+
+    from ladderworks.gui.editor.view import LadderEditor
+    from ladderworks.gui.error_list import ErrorListDock
+    from ladderworks.gui.parameter_document import ParameterDocument
+    from ladderworks.gui.text_view import ProgramTextView
+
+    _Window = QMainWindow
+else:
+    _Window = object
 
 translate = QCoreApplication.translate
 
 
-class FileActions:
-    """File > New / Open / Save / Save As / Import / Export, and recovery, for MainWindow."""
+def _when(copy: RecoveredCopy) -> str:
+    """When a recovery copy was written, in the UI language's short date and time."""
+    moment = QDateTime.fromSecsSinceEpoch(int(copy.saved_at.timestamp()))
+    return QLocale().toString(moment, QLocale.FormatType.ShortFormat)
+
+
+class FileActions(_Window):
+    """File > New / Open / Save / Save As / Import / Export, and recovery: MainWindow's part
+    that asks the ProgramDocument to read and write (a mixin, so the public names stay)."""
 
     document: ProgramDocument
     recovery: RecoveryStore
     autosaver: Autosaver
+    _last_save_result: bool
+    if TYPE_CHECKING:  # what MainWindow provides
+        editor: LadderEditor
+        text_view: ProgramTextView
+        pages: QStackedWidget
+        errors: ErrorListDock
+        parameters: ParameterDocument
+        failed_path: Path | None
+        dialect: str
+        file_saved: SignalInstance
 
-    def _install_file_state(self: MainWindow) -> None:
+        def warn(self, title: str, text: str) -> None: ...
+        def _show_message(self, text: str) -> None: ...
+        def _update_title(self, *_args: object) -> None: ...
+        def _remember(self, path: Path) -> None: ...
+
+    def _install_file_state(self) -> None:
         """Create the document, its watcher and the autosaver (called once by __init__)."""
         self.document = ProgramDocument(
             self.editor.undo_stack, self.text_view.document(), self.parameters,
@@ -66,15 +98,15 @@ class FileActions:
         """The encoding the program is saved in."""
         return self.document.form.encoding
 
-    def is_modified(self: MainWindow) -> bool:
+    def is_modified(self) -> bool:
         """True when there are unsaved changes."""
         return self.document.is_modified()
 
-    def _on_changed_outside(self: MainWindow, name: str) -> None:
+    def _on_changed_outside(self, name: str) -> None:
         self._show_message(translate(
             "MainWindow", "{0} was changed by another program").format(Path(name).name))
 
-    def maybe_save(self: MainWindow) -> bool:
+    def maybe_save(self) -> bool:
         """Ask to save unsaved changes; False when the user cancels."""
         if not self.is_modified():
             return True
@@ -90,7 +122,7 @@ class FileActions:
 
     # -- opening -------------------------------------------------------------------------
 
-    def new_file(self: MainWindow) -> None:
+    def new_file(self) -> None:
         """Start an empty program."""
         self.document.reset()
         self.failed_path = None
@@ -104,7 +136,7 @@ class FileActions:
         self.recovery.remove()
         self._update_title()
 
-    def _open_parameters(self: MainWindow, path: Path) -> None:
+    def _open_parameters(self, path: Path) -> None:
         """Read the PMC parameter file beside the program (the defaults when there is none)."""
         try:
             problems = self.parameters.open(path)
@@ -122,7 +154,7 @@ class FileActions:
             ).format(path.name + ".prm", len(problems), first.line,
                      diagnostic_text(first)))
 
-    def load(self: MainWindow, path: str | Path) -> bool:
+    def load(self, path: str | Path) -> bool:
         """Open a `.LAD` / `.MOD` file: as ladder, or as text with its errors listed."""
         path = Path(path)
         try:
@@ -138,7 +170,7 @@ class FileActions:
         self.recovery.remove()
         return True
 
-    def _show_result(self: MainWindow, path: Path | None, program: Program, ok: bool,
+    def _show_result(self, path: Path | None, program: Program, ok: bool,
                      diagnostics: list[Diagnostic]) -> None:
         """Show a read program: as ladder, or (it did not parse) its text, never overwritten."""
         self.dialect = dialect_of(program)
@@ -163,7 +195,7 @@ class FileActions:
             self._show_message(translate("MainWindow", "The file has errors: it is shown as text"))
         self._update_title()
 
-    def open_dialog(self: MainWindow) -> None:
+    def open_dialog(self) -> None:
         """File > Open."""
         if not self.maybe_save():
             return
@@ -178,7 +210,7 @@ class FileActions:
 
     # -- saving --------------------------------------------------------------------------
 
-    def program_text(self: MainWindow) -> str | None:
+    def program_text(self) -> str | None:
         """The current program as `.LAD` text, or None when it cannot be made (errors listed)."""
         if self.pages.currentWidget() is self.text_view:
             return None
@@ -189,20 +221,20 @@ class FileActions:
             return None
         return print_program(program)
 
-    def save(self: MainWindow) -> bool:
+    def save(self) -> bool:
         """File > Save (Save As when the program has no file yet)."""
         if self.path is None:
             return self.save_as_dialog()
         return self.save_to(self.path)
 
-    def _program_to_save(self: MainWindow) -> tuple[Program, list[Diagnostic]]:
+    def _program_to_save(self) -> tuple[Program, list[Diagnostic]]:
         """The drawn program (unfinished networks as drafts, unchanged ones as read)."""
         program, diagnostics = ladder_to_program(self.editor.ladder_document(),
                                                  self.document.kept)
         self.editor.mark_diagnostics(diagnostics)
         return program, diagnostics
 
-    def _may_write(self: MainWindow, path: Path) -> bool | None:
+    def _may_write(self, path: Path) -> bool | None:
         """Ask before writing `path` (changed outside, read-only): True to go on, False when
         declined, None when another way was taken (reload, Save As) — its result is final."""
         if self.path is not None and same_file(path, self.path) and \
@@ -223,7 +255,7 @@ class FileActions:
             return False
         return True
 
-    def _encoded(self: MainWindow, path: Path, make: Callable[[], bytes]) -> bytes | None:
+    def _encoded(self, path: Path, make: Callable[[], bytes]) -> bytes | None:
         """`make()`'s bytes; a character the encoding lacks asks to use UTF-8 (None: declined)."""
         try:
             return make()
@@ -233,7 +265,7 @@ class FileActions:
             self.document.use_utf8()
             return make()
 
-    def save_to(self: MainWindow, path: str | Path) -> bool:
+    def save_to(self, path: str | Path) -> bool:
         """Write the program to `path` atomically, in the file's own form; a file that failed to
         parse is kept; a file changed outside or read-only asks first."""
         path = Path(path)
@@ -280,7 +312,7 @@ class FileActions:
         self.file_saved.emit(str(path))
         return True
 
-    def _write(self: MainWindow, path: Path, data: bytes) -> bool:
+    def _write(self, path: Path, data: bytes) -> bool:
         """Write the program and its PMC parameters; warn and False when it fails."""
         name = path
         try:
@@ -298,14 +330,14 @@ class FileActions:
             return False
         return True
 
-    def save_as_dialog(self: MainWindow) -> bool:
+    def save_as_dialog(self) -> bool:
         """File > Save As."""
         name, _ = QFileDialog.getSaveFileName(
             self, translate("MainWindow", "Save program"), str(self.path or "program.LAD"),
             translate("MainWindow", "Ladder programs (*.LAD *.lad);;All files (*)"))
         return bool(name) and self.save_to(name)
 
-    def import_mod_dialog(self: MainWindow) -> None:
+    def import_mod_dialog(self) -> None:
         """File > Import .MOD: open mnemonic text as a new, untitled ladder."""
         if not self.maybe_save():
             return
@@ -315,7 +347,7 @@ class FileActions:
         if name:
             self.import_mod(name)
 
-    def import_mod(self: MainWindow, path: str | Path) -> bool:
+    def import_mod(self, path: str | Path) -> bool:
         """Read a `.MOD` file into the editor; it is saved as a new `.LAD`."""
         if not self.load(path):
             return False
@@ -324,7 +356,7 @@ class FileActions:
         self._update_title()
         return True
 
-    def export_mod_dialog(self: MainWindow) -> None:
+    def export_mod_dialog(self) -> None:
         """File > Export .MOD."""
         base = self.path.with_suffix(".MOD") if self.path else Path("program.MOD")
         name, _ = QFileDialog.getSaveFileName(
@@ -333,7 +365,7 @@ class FileActions:
         if name:
             self.export_mod(name)
 
-    def export_mod(self: MainWindow, path: str | Path) -> bool:
+    def export_mod(self, path: str | Path) -> bool:
         """Write the program as mnemonic text to `path` (in the program's encoding)."""
         path = Path(path)
         text = self.program_text()
@@ -354,7 +386,7 @@ class FileActions:
 
     # -- recovery ------------------------------------------------------------------------
 
-    def recovery_snapshot(self: MainWindow) -> Snapshot | None:
+    def recovery_snapshot(self) -> Snapshot | None:
         """The unsaved work to copy (None when nothing is unsaved)."""
         if not self.is_modified():
             return None
@@ -374,7 +406,7 @@ class FileActions:
                         format_parameters(parameters, self.dialect) if parameters else None,
                         asdict(document.disk) if document.disk is not None else None)
 
-    def offer_recovery(self: MainWindow) -> bool:
+    def offer_recovery(self) -> bool:
         """Offer each copy left by a session that crashed or was killed; True when one was
         restored into this window (the others are offered again at the next start)."""
         for copy in self.recovery.orphans():
@@ -382,8 +414,7 @@ class FileActions:
                 copy.lock.unlock()
                 continue
             name = str(copy.original) if copy.original else translate("MainWindow", "Untitled")
-            when = QLocale().toString(copy.saved_at.astimezone().replace(tzinfo=None),
-                                      QLocale.FormatType.ShortFormat)
+            when = _when(copy)
             answer = questions.restore(self, name, when)
             if (answer == "restore" and self.restore(copy)) or answer == "discard":
                 self.recovery.discard(copy)
@@ -391,7 +422,7 @@ class FileActions:
                 copy.lock.unlock()
         return self.is_modified()
 
-    def restore(self: MainWindow, copy: RecoveredCopy) -> bool:
+    def restore(self, copy: RecoveredCopy) -> bool:
         """Show a recovered copy as unsaved changes to its original file."""
         try:
             result = parse_bytes(copy.data_path.read_bytes())
@@ -415,6 +446,5 @@ class FileActions:
         self._update_title()
         self.autosaver.save_now()
         self._show_message(translate("MainWindow", "Recovered unsaved work from {0}").format(
-            QLocale().toString(copy.saved_at.astimezone().replace(tzinfo=None),
-                               QLocale.FormatType.ShortFormat)))
+            _when(copy)))
         return True

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from PySide6.QtCore import QCoreApplication
-from PySide6.QtWidgets import QMessageBox, QWidget
+from PySide6.QtWidgets import QAbstractButton, QMessageBox, QWidget
 
 from ladderworks.core.il.textform import EncodeError
 
@@ -22,7 +22,7 @@ def ask(parent: QWidget | None, title: str, text: str,
     box = QMessageBox(QMessageBox.Icon.Question, title, text, QMessageBox.StandardButton.NoButton,
                       parent)
     box.setObjectName("question_box")
-    buttons = {}
+    buttons: dict[QAbstractButton, str] = {}
     for index, (key, label, role) in enumerate(choices):
         button = box.addButton(label, role)
         button.setObjectName(f"button_{key}")

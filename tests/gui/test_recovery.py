@@ -8,9 +8,11 @@ import signal
 import subprocess
 import sys
 import threading
+from datetime import datetime
 from pathlib import Path
 
 import pytest
+from PySide6.QtCore import QDateTime, QLocale
 from pytestqt.qtbot import QtBot
 
 from ladderworks.gui.main_window import MainWindow
@@ -22,6 +24,7 @@ from tests.gui.conftest import Answers, _forget_changes
 from tests.gui.test_file_form import _invert_first_contact, _save
 
 SOURCE = (EXAMPLES / "or_single.LAD").read_bytes()
+SAVED_AT = "2026-11-24T03:00:00+00:00"
 
 
 def _copies(folder: Path) -> list[str]:
@@ -117,10 +120,12 @@ def test_a_recovered_copy_can_be_discarded_or_kept_for_later(
     folder.mkdir(parents=True)
     (folder / "1-dead.LAD").write_bytes(SOURCE)
     (folder / "1-dead.json").write_text(json.dumps(
-        {"original": None, "saved_at": "2026-11-24T03:00:00+00:00", "disk": None}))
+        {"original": None, "saved_at": SAVED_AT, "disk": None}))
     answers.queue = [answer]
     assert not window.offer_recovery()
-    assert "Untitled" in answers.asked[0][1]
+    moment = QDateTime.fromSecsSinceEpoch(int(datetime.fromisoformat(SAVED_AT).timestamp()))
+    assert "Untitled" in answers.asked[0][1]  # what ...
+    assert QLocale().toString(moment, QLocale.FormatType.ShortFormat) in answers.asked[0][1]
     assert not window.is_modified()
     expected = [] if answer == "discard" else ["1-dead.LAD", "1-dead.json"]
     assert _copies(folder) == expected
