@@ -136,11 +136,13 @@ class Answers:
     def __init__(self) -> None:
         self.queue: list[str] = []
         self.asked: list[tuple[str, str, list[str]]] = []
+        self.labels: list[list[str]] = []  # the buttons' texts of each question
 
     def __call__(self, _parent: object, title: str, text: str,
                  choices: list[tuple[str, str, object]]) -> str:
         keys = [key for key, _label, _role in choices]
         self.asked.append((title, text, keys))
+        self.labels.append([label for _key, label, _role in choices])
         if not self.queue:
             raise AssertionError(f"unexpected question: {title}: {text}")
         answer = self.queue.pop(0)

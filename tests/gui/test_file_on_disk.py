@@ -129,3 +129,18 @@ def test_a_new_file_gets_the_normal_mode(window: MainWindow, qtbot: QtBot, tmp_p
         assert stat.S_IMODE(target.stat().st_mode) == 0o644
     finally:
         os.umask(old)
+
+
+def test_the_questions_speak_turkish(window: MainWindow, answers: Answers,
+                                     tmp_path: Path) -> None:
+    path = _program(tmp_path)
+    path.chmod(0o444)
+    assert window.load(path)
+    window.set_language("tr")
+    _invert_first_contact(window)
+    answers.queue = ["cancel"]
+    window.actions_by_name["action_save"].trigger()
+    title, text, _keys = answers.asked[0]
+    assert title == "Salt okunur dosya" and "salt okunurdur" in text
+    assert answers.labels[0] == ["Farklı Kaydet...", "İptal"]
+    assert path.read_bytes() == SOURCE
