@@ -85,6 +85,7 @@ class FileActions(_Window):
         self.autosaver = Autosaver(self.recovery, self.recovery_snapshot, self)
         self.autosaver.failed.connect(self._show_message)
         self.editor.undo_stack.indexChanged.connect(self.autosaver.edited)
+        self.parameters.session.parameters_changed.connect(self.autosaver.edited)
 
     # -- state ---------------------------------------------------------------------------
 

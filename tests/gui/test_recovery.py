@@ -129,3 +129,24 @@ def test_a_recovered_copy_can_be_discarded_or_kept_for_later(
     assert not window.is_modified()
     expected = [] if answer == "discard" else ["1-dead.LAD", "1-dead.json"]
     assert _copies(folder) == expected
+
+
+def test_a_changed_pmc_parameter_is_copied_and_restored(qtbot: QtBot, window: MainWindow,
+                                                        answers: Answers, settings: Settings,
+                                                        tmp_path: Path) -> None:
+    from ladderworks.core.address import parse_address
+
+    path = tmp_path / "machine.LAD"
+    path.write_bytes(SOURCE)
+    assert window.load(path)
+    window.autosaver.pause.setInterval(10)
+    with qtbot.waitSignal(window.autosaver.copied, timeout=10000) as copied:
+        window.parameters.session.set_parameter(parse_address("D10"), 42)
+    assert "D10" in Path(copied.args[0] + ".prm").read_text("utf-8")
+    # this window's session is gone as if killed: its lock is released, its copy stays
+    window.recovery._lock.unlock()  # type: ignore[union-attr]
+    answers.queue = ["restore"]
+    restored = _second_window(qtbot, settings)
+    assert restored.offer_recovery()
+    assert restored.parameters.session.parameters.get(parse_address("D10")) == 42
+    assert restored.is_modified() and restored.path == path
