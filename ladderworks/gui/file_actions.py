@@ -81,6 +81,7 @@ class FileActions(_Window):
             lambda: self.pages.currentWidget() is self.text_view, self)
         self.document.modified_changed.connect(self._update_title)
         self.document.changed_outside.connect(self._on_changed_outside)
+        self._last_save_result = False
         self.recovery = RecoveryStore()
         self.autosaver = Autosaver(self.recovery, self.recovery_snapshot, self)
         self.autosaver.failed.connect(self._show_message)
@@ -370,13 +371,17 @@ class FileActions(_Window):
         """Write the program as mnemonic text to `path` (in the program's encoding)."""
         path = Path(path)
         text = self.program_text()
-        if text is None or not self._may_write(path):
+        if text is None:
             return False
         data = self._encoded(path, lambda: self.document.encode_text(text))
         if data is None:
             return False
         try:
             atomic_write_bytes(path, data)
+        except ReadOnlyFile:
+            self.warn(translate("MainWindow", "Export .MOD"), translate(
+                "MainWindow", "{0} is read-only and is not replaced.").format(path))
+            return False
         except OSError as error:
             self.warn(translate("MainWindow", "Export .MOD"),
                       translate("MainWindow", "Cannot write {0}: {1}").format(

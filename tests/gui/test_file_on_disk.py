@@ -144,3 +144,12 @@ def test_the_questions_speak_turkish(window: MainWindow, answers: Answers,
     assert title == "Salt okunur dosya" and "salt okunurdur" in text
     assert answers.labels[0] == ["Farklı Kaydet...", "İptal"]
     assert path.read_bytes() == SOURCE
+
+
+def test_export_never_replaces_a_read_only_file(window: MainWindow, tmp_path: Path) -> None:
+    assert window.load(EXAMPLES / "or_single.LAD")
+    target = tmp_path / "out.MOD"
+    target.write_bytes(b"old")
+    target.chmod(0o444)
+    assert not window.export_mod(target)
+    assert target.read_bytes() == b"old" and "read-only" in window.last_warning
