@@ -175,27 +175,27 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="138"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>{count} byte(s) here are not valid {encoding}; they are kept as they are</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="144"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>this is not a ladder program (no %@ section and no instruction)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="147"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>line not understood in section {section}: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="127"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="150"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="130"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="153"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: the number is too long</translation>
     </message>
@@ -306,226 +306,301 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/diagnostic_texts.py" line="56"/>
-        <source>no functional instruction has the number SUB {number}</source>
-        <translation>no functional instruction has the number SUB {number}</translation>
+        <source>SUB {number} is not in the instruction table: kept with its parameters, drawn as a box, simulated as W1 = ACT</source>
+        <translation>SUB {number} is not in the instruction table: kept with its parameters, drawn as a box, simulated as W1 = ACT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="58"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="59"/>
         <source>a parameter line &apos;{text}&apos; without a SUB instruction before it</source>
         <translation>a parameter line &apos;{text}&apos; without a SUB instruction before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="60"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="61"/>
         <source>the file is neither UTF-8 nor Turkish Windows (cp1254) text</source>
         <translation>the file is neither UTF-8 nor Turkish Windows (cp1254) text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="62"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
         <source>syntax error at &apos;{text}&apos;</source>
         <translation>syntax error at &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="63"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="64"/>
         <source>open circuit: this element is not connected to the right side</source>
         <translation>open circuit: this element is not connected to the right side</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="65"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="66"/>
         <source>element not connected to the left rail</source>
         <translation>element not connected to the left rail</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="66"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
         <source>a coil must be at the right end of the network</source>
         <translation>a coil must be at the right end of the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="67"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
         <source>a coil cannot sit straight on the left rail</source>
         <translation>a coil cannot sit straight on the left rail</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="68"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="69"/>
         <source>bridge circuit: a vertical link joins two branches in the middle</source>
         <translation>bridge circuit: a vertical link joins two branches in the middle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="70"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
         <source>short circuit: a wire bypasses the element</source>
         <translation>short circuit: a wire bypasses the element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="71"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
         <source>the logic needs more than 8 stack levels (ST8)</source>
         <translation>the logic needs more than 8 stack levels (ST8)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="72"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="73"/>
         <source>power would flow right to left here; ladder flows left to right only</source>
         <translation>power would flow right to left here; ladder flows left to right only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="74"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="75"/>
         <source>the network has no coil or function</source>
         <translation>the network has no coil or function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="75"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
         <source>{name} needs its {count} control inputs connected</source>
         <translation>{name} needs its {count} control inputs connected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="76"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
         <source>this element has no address yet</source>
         <translation>this element has no address yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="77"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="78"/>
         <source>coils hang on different points of the logic; join them to one point</source>
         <translation>coils hang on different points of the logic; join them to one point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="79"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
         <source>only coils may follow the output of {name}</source>
         <translation>only coils may follow the output of {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="80"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="81"/>
         <source>one function box per network: put {name} in a network of its own</source>
         <translation>one function box per network: put {name} in a network of its own</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="82"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
         <source>cell ({row}, {col}) is outside the grid</source>
         <translation>cell ({row}, {col}) is outside the grid</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="83"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="84"/>
         <source>only coils go in the coil column (cell ({row}, {col}))</source>
         <translation>only coils go in the coil column (cell ({row}, {col}))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="85"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="86"/>
         <source>{name} does not fit here: a box needs two contact columns</source>
         <translation>{name} does not fit here: a box needs two contact columns</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="87"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="88"/>
         <source>there is no suitable element at cell ({row}, {col})</source>
         <translation>there is no suitable element at cell ({row}, {col})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="89"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
         <source>a line must be horizontal or vertical</source>
         <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="90"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="91"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="92"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="93"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="94"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="95"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="96"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="97"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="98"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="99"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="100"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="101"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="102"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="103"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="104"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="106"/>
+        <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
+        <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
+        <source>LBL inside a JMP or COM range</source>
+        <translation>LBL inside a JMP or COM range</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
+        <source>no LBL L{label} where this jump can reach it</source>
+        <translation>no LBL L{label} where this jump can reach it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="110"/>
+        <source>label L{label} is defined twice in this program unit</source>
+        <translation>label L{label} is defined twice in this program unit</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
+        <source>JMPC is only allowed inside a subprogram</source>
+        <translation>JMPC is only allowed inside a subprogram</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="113"/>
+        <source>subprogram P{program} does not exist</source>
+        <translation>subprogram P{program} does not exist</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
+        <source>calling P{program} here makes a subprogram call itself</source>
+        <translation>calling P{program} here makes a subprogram call itself</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="116"/>
+        <source>calls through P{program} nest deeper than {limit} subprograms</source>
+        <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
+        <source>SP without a matching SPE</source>
+        <translation>SP without a matching SPE</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="119"/>
+        <source>SPE without an SP before it</source>
+        <translation>SPE without an SP before it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
+        <source>subprogram P{program} is defined twice</source>
+        <translation>subprogram P{program} is defined twice</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
+        <source>only subprograms (SP ... SPE) may follow the first SP</source>
+        <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="123"/>
+        <source>{name} cannot end level {level}</source>
+        <translation>{name} cannot end level {level}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
+        <source>instruction after END, the end of the program</source>
+        <translation>instruction after END, the end of the program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="125"/>
+        <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
+        <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="128"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="132"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="134"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="141"/>
         <source>a saved drawing ({lines} line(s)) is damaged: it is kept as comment text</source>
         <translation>a saved drawing ({lines} line(s)) is damaged: it is kept as comment text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="133"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="156"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="158"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="138"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="161"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="140"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="163"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
@@ -634,67 +709,87 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="32"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
         <source>one of {0}</source>
         <translation>one of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
         <source>{0} to {1}</source>
         <translation>{0} to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="38"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte address ({0} bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
         <source>byte address</source>
         <translation>byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
         <source>constant or byte address</source>
         <translation>constant or byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>up to 4 binary digits, e.g. 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <source>P{0} to P{1}</source>
+        <translation>P{0} to P{1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <source>L{0} to L{1}</source>
+        <translation>L{0} to L{1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <source>constant or address, kept as written</source>
+        <translation>constant or address, kept as written</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
         <source>values separated by spaces</source>
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="135"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="148"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="138"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="151"/>
+        <source>This instruction has no parameters.</source>
+        <translation>This instruction has no parameters.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="141"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="142"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="157"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="143"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="192"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -720,113 +815,114 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="333"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="367"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="645"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="337"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="376"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="652"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="344"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="348"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="639"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="352"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="634"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="646"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="357"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="656"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="665"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="361"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="672"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="372"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="381"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="374"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="373"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="383"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="392"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="388"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="399"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="408"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="409"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="418"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="444"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="451"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="448"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="455"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="459"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="483"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="490"/>
         <source>Address, e.g. X2.1 (// comment)</source>
         <translation>Address, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="458"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="494"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="563"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="584"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="465"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="501"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="570"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="591"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="299"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="553"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="300"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="560"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="557"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="564"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="683"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="690"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="702"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="704"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="711"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="781"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="788"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -834,365 +930,367 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="141"/>
+        <location filename="../ladderworks/gui/main_window.py" line="142"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="142"/>
+        <location filename="../ladderworks/gui/main_window.py" line="143"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="143"/>
+        <location filename="../ladderworks/gui/main_window.py" line="144"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <location filename="../ladderworks/gui/main_window.py" line="147"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="152"/>
+        <location filename="../ladderworks/gui/main_window.py" line="153"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="157"/>
+        <location filename="../ladderworks/gui/main_window.py" line="158"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/main_window.py" line="163"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="165"/>
+        <location filename="../ladderworks/gui/main_window.py" line="166"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="170"/>
+        <location filename="../ladderworks/gui/main_window.py" line="171"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="176"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="176"/>
+        <location filename="../ladderworks/gui/main_window.py" line="177"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="177"/>
+        <location filename="../ladderworks/gui/main_window.py" line="178"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="178"/>
+        <location filename="../ladderworks/gui/main_window.py" line="179"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="179"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="182"/>
+        <location filename="../ladderworks/gui/main_window.py" line="183"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/main_window.py" line="188"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="194"/>
+        <location filename="../ladderworks/gui/main_window.py" line="195"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="201"/>
+        <location filename="../ladderworks/gui/main_window.py" line="202"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="208"/>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="213"/>
+        <location filename="../ladderworks/gui/main_window.py" line="214"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="215"/>
+        <location filename="../ladderworks/gui/main_window.py" line="216"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="216"/>
+        <location filename="../ladderworks/gui/main_window.py" line="217"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="219"/>
+        <location filename="../ladderworks/gui/main_window.py" line="220"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="225"/>
+        <location filename="../ladderworks/gui/main_window.py" line="226"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="231"/>
+        <location filename="../ladderworks/gui/main_window.py" line="232"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="235"/>
+        <location filename="../ladderworks/gui/main_window.py" line="236"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="238"/>
+        <location filename="../ladderworks/gui/main_window.py" line="239"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="247"/>
+        <location filename="../ladderworks/gui/main_window.py" line="248"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="251"/>
+        <location filename="../ladderworks/gui/main_window.py" line="252"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="288"/>
+        <location filename="../ladderworks/gui/main_window.py" line="289"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="292"/>
+        <location filename="../ladderworks/gui/main_window.py" line="293"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="309"/>
+        <location filename="../ladderworks/gui/main_window.py" line="310"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="329"/>
+        <location filename="../ladderworks/gui/main_window.py" line="330"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="350"/>
+        <location filename="../ladderworks/gui/main_window.py" line="351"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="354"/>
+        <location filename="../ladderworks/gui/main_window.py" line="355"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="360"/>
+        <location filename="../ladderworks/gui/main_window.py" line="361"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="365"/>
+        <location filename="../ladderworks/gui/main_window.py" line="366"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="370"/>
+        <location filename="../ladderworks/gui/main_window.py" line="371"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="376"/>
-        <location filename="../ladderworks/gui/main_window.py" line="474"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="422"/>
+        <location filename="../ladderworks/gui/main_window.py" line="475"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="78"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="118"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="68"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="108"/>
         <source>{0} was changed by another program</source>
         <translation>{0} was changed by another program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="79"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="119"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="107"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="125"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="147"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="165"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="108"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="126"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="148"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="166"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="438"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="113"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="153"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="113"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="153"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="197"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="164"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="205"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="166"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="207"/>
         <source>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="235"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="276"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="325"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="329"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="235"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="276"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="325"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="382"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="289"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="342"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="330"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="387"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="437"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="409"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="267"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="308"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="272"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="313"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="297"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="298"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="306"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="307"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="324"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="341"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="365"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="382"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="386"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="325"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="366"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="555"/>
+        <location filename="../ladderworks/gui/main_window.py" line="556"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="574"/>
+        <location filename="../ladderworks/gui/main_window.py" line="575"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="580"/>
+        <location filename="../ladderworks/gui/main_window.py" line="581"/>
         <source>Compile finished: {0} bytes</source>
         <translation>Compile finished: {0} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="600"/>
+        <location filename="../ladderworks/gui/main_window.py" line="601"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="603"/>
+        <location filename="../ladderworks/gui/main_window.py" line="604"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="635"/>
+        <location filename="../ladderworks/gui/main_window.py" line="636"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="636"/>
+        <location filename="../ladderworks/gui/main_window.py" line="637"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -1200,154 +1298,209 @@
 <context>
     <name>Param</name>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="44"/>
+        <location filename="../ladderworks/gui/translation.py" line="50"/>
         <source>Timer number</source>
         <translation>Timer number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="45"/>
+        <location filename="../ladderworks/gui/translation.py" line="51"/>
         <source>Preset</source>
         <translation>Preset</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="46"/>
+        <location filename="../ladderworks/gui/translation.py" line="52"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="47"/>
+        <location filename="../ladderworks/gui/translation.py" line="53"/>
         <source>Timer/counter register</source>
         <translation>Timer/counter register</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="48"/>
+        <location filename="../ladderworks/gui/translation.py" line="54"/>
         <source>Code signal</source>
         <translation>Code signal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="49"/>
+        <location filename="../ladderworks/gui/translation.py" line="55"/>
         <source>Decode specification</source>
         <translation>Decode specification</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="50"/>
+        <location filename="../ladderworks/gui/translation.py" line="56"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="51"/>
+        <location filename="../ladderworks/gui/translation.py" line="57"/>
         <source>First number</source>
         <translation>First number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="52"/>
+        <location filename="../ladderworks/gui/translation.py" line="58"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="53"/>
+        <location filename="../ladderworks/gui/translation.py" line="59"/>
         <source>Counter number</source>
         <translation>Counter number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="54"/>
+        <location filename="../ladderworks/gui/translation.py" line="60"/>
         <source>Number of positions</source>
         <translation>Number of positions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="55"/>
+        <location filename="../ladderworks/gui/translation.py" line="61"/>
         <source>Current position</source>
         <translation>Current position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="56"/>
+        <location filename="../ladderworks/gui/translation.py" line="62"/>
         <source>Target position</source>
         <translation>Target position</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="57"/>
+        <location filename="../ladderworks/gui/translation.py" line="63"/>
         <source>Table size</source>
         <translation>Table size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="58"/>
+        <location filename="../ladderworks/gui/translation.py" line="64"/>
         <source>Index</source>
         <translation>Index</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="59"/>
+        <location filename="../ladderworks/gui/translation.py" line="65"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="60"/>
+        <location filename="../ladderworks/gui/translation.py" line="66"/>
         <source>Table values</source>
         <translation>Table values</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="61"/>
+        <location filename="../ladderworks/gui/translation.py" line="67"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="62"/>
+        <location filename="../ladderworks/gui/translation.py" line="68"/>
         <source>High 4-bit mask</source>
         <translation>High 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="63"/>
+        <location filename="../ladderworks/gui/translation.py" line="69"/>
         <source>Low 4-bit mask</source>
         <translation>Low 4-bit mask</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="64"/>
+        <location filename="../ladderworks/gui/translation.py" line="70"/>
         <source>OR data</source>
         <translation>OR data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="65"/>
+        <location filename="../ladderworks/gui/translation.py" line="71"/>
         <source>Data</source>
         <translation>Data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="66"/>
+        <location filename="../ladderworks/gui/translation.py" line="72"/>
         <source>Number of coils</source>
         <translation>Number of coils</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="67"/>
+        <location filename="../ladderworks/gui/translation.py" line="73"/>
         <source>Input format (0 constant, 1 address)</source>
         <translation>Input format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="68"/>
+        <location filename="../ladderworks/gui/translation.py" line="74"/>
         <source>Compared data</source>
         <translation>Compared data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="69"/>
+        <location filename="../ladderworks/gui/translation.py" line="75"/>
         <source>Searched data</source>
         <translation>Searched data</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="70"/>
+        <location filename="../ladderworks/gui/translation.py" line="76"/>
         <source>Operand format (0 constant, 1 address)</source>
         <translation>Operand format (0 constant, 1 address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="72"/>
+        <location filename="../ladderworks/gui/translation.py" line="78"/>
         <source>Operand A</source>
         <translation>Operand A</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="73"/>
+        <location filename="../ladderworks/gui/translation.py" line="79"/>
         <source>Operand B</source>
         <translation>Operand B</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/translation.py" line="74"/>
+        <location filename="../ladderworks/gui/translation.py" line="80"/>
         <source>Constant</source>
         <translation>Constant</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="81"/>
+        <source>Edge number</source>
+        <translation>Edge number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="82"/>
+        <source>Number of bytes</source>
+        <translation>Number of bytes</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="83"/>
+        <source>Operand</source>
+        <translation>Operand</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="84"/>
+        <source>Limit 1</source>
+        <translation>Limit 1</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="85"/>
+        <source>Limit 2</source>
+        <translation>Limit 2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="86"/>
+        <source>Subprogram</source>
+        <translation>Subprogram</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="87"/>
+        <source>Label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="88"/>
+        <source>DI/DO group</source>
+        <translation>DI/DO group</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="89"/>
+        <source>Control data</source>
+        <translation>Control data</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="90"/>
+        <source>Number of messages</source>
+        <translation>Number of messages</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="93"/>
+        <source>Parameter {0}</source>
+        <translation>Parameter {0}</translation>
     </message>
 </context>
 <context>
@@ -2088,132 +2241,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="80"/>
+        <location filename="../ladderworks/gui/tools.py" line="86"/>
         <source>Select</source>
         <translation>Select</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="81"/>
+        <location filename="../ladderworks/gui/tools.py" line="87"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="82"/>
+        <location filename="../ladderworks/gui/tools.py" line="88"/>
         <source>NOT input</source>
         <translation>NOT input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="83"/>
+        <location filename="../ladderworks/gui/tools.py" line="89"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="84"/>
+        <location filename="../ladderworks/gui/tools.py" line="90"/>
         <source>NOT output</source>
         <translation>NOT output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="85"/>
+        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <source>SET coil</source>
+        <translation>SET coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <source>RST coil</source>
+        <translation>RST coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="93"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <location filename="../ladderworks/gui/tools.py" line="94"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <location filename="../ladderworks/gui/tools.py" line="95"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <location filename="../ladderworks/gui/tools.py" line="96"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <location filename="../ladderworks/gui/tools.py" line="97"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <location filename="../ladderworks/gui/tools.py" line="98"/>
         <source>Function</source>
         <translation>Function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <location filename="../ladderworks/gui/tools.py" line="99"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <location filename="../ladderworks/gui/tools.py" line="100"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <location filename="../ladderworks/gui/tools.py" line="108"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Click an element or drag over cells to select; right-click: cut, copy, paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="102"/>
+        <location filename="../ladderworks/gui/tools.py" line="110"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="104"/>
+        <location filename="../ladderworks/gui/tools.py" line="112"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="106"/>
+        <location filename="../ladderworks/gui/tools.py" line="114"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <location filename="../ladderworks/gui/tools.py" line="116"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
+        <translation>Click a cell to place a SET coil (bit := 1 while the logic is 1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="120"/>
+        <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
+        <translation>Click a cell to place an RST coil (bit := 0 while the logic is 1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/tools.py" line="122"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Click a contact or coil to turn it into its inverse</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <location filename="../ladderworks/gui/tools.py" line="124"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <location filename="../ladderworks/gui/tools.py" line="126"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <location filename="../ladderworks/gui/tools.py" line="128"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Click the start of an empty row, type the comment, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <location filename="../ladderworks/gui/tools.py" line="130"/>
         <source>Click an element to delete it</source>
         <translation>Click an element to delete it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="119"/>
+        <location filename="../ladderworks/gui/tools.py" line="131"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Choose a function in the list, click the diagram, fill its table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="121"/>
+        <location filename="../ladderworks/gui/tools.py" line="133"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Click a cell to insert an empty row before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="123"/>
+        <location filename="../ladderworks/gui/tools.py" line="135"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Click a cell to insert an empty row after it</translation>
     </message>
@@ -2221,14 +2394,24 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="74"/>
+        <location filename="../ladderworks/gui/palette.py" line="101"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="75"/>
+        <location filename="../ladderworks/gui/palette.py" line="102"/>
         <source>Function:</source>
         <translation>Function:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="103"/>
+        <source>Seed manual instructions</source>
+        <translation>Seed manual instructions</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="104"/>
+        <source>FANUC PMC instructions</source>
+        <translation>FANUC PMC instructions</translation>
     </message>
 </context>
 </TS>

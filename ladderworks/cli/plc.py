@@ -38,6 +38,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     length.add_argument("--scans", type=int, metavar="N", help="run N scans (default 1)")
     run.add_argument("--scan-period", type=int, default=DEFAULT_PERIOD_MS, metavar="MS",
                      help=f"scan period in ms (default {DEFAULT_PERIOD_MS})")
+    run.add_argument("--divisions", type=int, default=1, metavar="N",
+                     help="level-2 divisions: level 1 runs N times per pass of levels 2 and 3")
     run.add_argument("--set", action="append", default=[], metavar="ADDR=VALUE[@MS]",
                      help="set a bit or byte (ADDR:2, ADDR:4 for wider values) at time MS")
     run.add_argument("--timer", action="append", default=[], metavar="N=MS",
@@ -46,8 +48,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                      help="preset of counter N")
     run.add_argument("--params", metavar="PATH",
                      help="PMC parameter file (default: FILE.prm beside FILE, if there is one)")
-    run.add_argument("--print", nargs="+", action="extend", default=[], metavar="ADDR",
-                     dest="print_", help="print ADDR = VALUE lines at the end")
+    run.add_argument("--print", action="append", default=[], metavar="ADDR,...",
+                     dest="print_", help="print ADDR = VALUE lines at the end (repeatable)")
     run.add_argument("--trace", metavar="ADDR,...", help="print a CSV trace of these")
     run.add_argument("--period", type=int, default=DEFAULT_PERIOD_MS, metavar="MS",
                      help="trace sampling period in ms")
@@ -162,11 +164,13 @@ def _run(args: argparse.Namespace) -> int:
                          _number(match.group(2), item)))
         timers = [_pair(item, "--timer", 1, 100) for item in args.timer]
         counters = [_pair(item, "--counter", 1, 20) for item in args.counter]
-        prints = [_target(text, args.file) for text in args.print_]
+        prints = [_target(text, args.file) for item in args.print_ for text in item.split(",")]
         traced = ([_target(text, args.file) for text in args.trace.split(",")]
                   if args.trace else [])
         if args.period <= 0 or args.scan_period <= 0:
             raise ValueError("periods must be at least 1 ms")
+        if args.divisions < 1:
+            raise ValueError("--divisions must be at least 1")
     except ValueError as error:
         return _error(str(error))
     binary = _load_program_binary(args.file)
@@ -175,7 +179,7 @@ def _run(args: argparse.Namespace) -> int:
     parameters = _parameters(args.file, args.params)
     if parameters is None:
         return 2
-    plc = PlcRun(period_ms=args.scan_period)
+    plc = PlcRun(period_ms=args.scan_period, divisions=args.divisions)
     plc.set_parameters(parameters.parameters)
     problems = plc.load(binary)
     if problems or plc.engine is None:
@@ -196,11 +200,17 @@ def _run(args: argparse.Namespace) -> int:
     if scans is None and end_ms is None:
         scans = 1
     done = 0
+    stopped = False
     while (scans is not None and done < scans) or (end_ms is not None and engine.now_ms < end_ms):
         while pending and pending[0][0] <= engine.now_ms:
             _, target, value = pending.pop(0)
             target.write(engine, value)
-        plc.run_scans(1)
+        try:
+            plc.run_scans(1)
+        except DiagnosticError as error:  # a run-time stop (an endless label loop)
+            _report(args.file, error.diagnostics)
+            stopped = True
+            break
         done += 1
     if trace is not None:
         print("time_ms," + ",".join(t.text for t in traced))
@@ -208,7 +218,7 @@ def _run(args: argparse.Namespace) -> int:
             print(f"{sample.time_ms}," + ",".join(str(v) for v in sample.values))
     for target in prints:
         print(f"{target.text} = {target.read(engine)}")
-    return 0
+    return 1 if stopped else 0
 
 
 def _parameters(program: str, named: str | None) -> ParameterFile | None:

@@ -40,7 +40,8 @@ MESSAGES: dict[str, str] = {
     "param-choice": "{name}: parameter {index} ({param}) must be one of {choices}, found {value}",
     "param-mask":
         "{name}: parameter {index} ({param}) must be up to 4 binary digits, found '{text}'",
-    "unknown-sub": "no functional instruction has the number SUB {number}",
+    "unknown-sub": ("SUB {number} is not in the instruction table: kept with its parameters,"
+                    " drawn as a box, simulated as W1 = ACT"),
     "stray-parameter": "a parameter line '{text}' without a SUB instruction before it",
     "bad-encoding": "the file is neither UTF-8 nor Turkish Windows (cp1254) text",
     "syntax": "syntax error at '{text}'",
@@ -85,6 +86,22 @@ MESSAGES: dict[str, str] = {
     "coil-twice": "coil {address} is written more than once",
     "dangling-logic": "logic at the end of the program is not written to any coil",
     "bad-binary": "not a LadderWorks binary: {reason}",
+    # program structure (levels, subprograms, labels)
+    "coil-mixed": "coil {address} is written by WRT and by SET/RST (also on line {line})",
+    "label-in-range": "LBL inside a JMP or COM range",
+    "label-missing": "no LBL L{label} where this jump can reach it",
+    "label-twice": "label L{label} is defined twice in this program unit",
+    "jmpc-in-main": "JMPC is only allowed inside a subprogram",
+    "call-missing": "subprogram P{program} does not exist",
+    "call-recursion": "calling P{program} here makes a subprogram call itself",
+    "call-depth": "calls through P{program} nest deeper than {limit} subprograms",
+    "sp-without-spe": "SP without a matching SPE",
+    "spe-without-sp": "SPE without an SP before it",
+    "sp-twice": "subprogram P{program} is defined twice",
+    "outside-subprogram": "only subprograms (SP ... SPE) may follow the first SP",
+    "level-end-order": "{name} cannot end level {level}",
+    "after-end": "instruction after END, the end of the program",
+    "endless-loop": "a backward jump to L{label} repeated more than {limit} times in one scan",
     # the alarm message file (AlarmMsg.dat)
     "alarm-line": "not an alarm message line: '{text}' (expected 'NNN text' or 'A00.0 text')",
     "alarm-number": "alarm number {number} is out of range (000 to 799)",

@@ -54,7 +54,8 @@ def diagnostic_templates() -> dict[str, str]:
             '{name}: parameter {index} ({param}) must be up to 4 binary'
             " digits, found '{text}'"),
         "unknown-sub": translate(
-            "Diagnostic", 'no functional instruction has the number SUB {number}'),
+            "Diagnostic", "SUB {number} is not in the instruction table: kept with its"
+            " parameters, drawn as a box, simulated as W1 = ACT"),
         "stray-parameter": translate(
             "Diagnostic", "a parameter line '{text}' without a SUB instruction before it"),
         "bad-encoding": translate(
@@ -102,6 +103,28 @@ def diagnostic_templates() -> dict[str, str]:
         "dangling-logic": translate(
             "Diagnostic", 'logic at the end of the program is not written to any coil'),
         "bad-binary": translate("Diagnostic", 'not a LadderWorks binary: {reason}'),
+        "coil-mixed": translate(
+            "Diagnostic", "coil {address} is written by WRT and by SET/RST (also on line {line})"),
+        "label-in-range": translate("Diagnostic", "LBL inside a JMP or COM range"),
+        "label-missing": translate("Diagnostic", "no LBL L{label} where this jump can reach it"),
+        "label-twice": translate(
+            "Diagnostic", "label L{label} is defined twice in this program unit"),
+        "jmpc-in-main": translate("Diagnostic", "JMPC is only allowed inside a subprogram"),
+        "call-missing": translate("Diagnostic", "subprogram P{program} does not exist"),
+        "call-recursion": translate(
+            "Diagnostic", "calling P{program} here makes a subprogram call itself"),
+        "call-depth": translate(
+            "Diagnostic", "calls through P{program} nest deeper than {limit} subprograms"),
+        "sp-without-spe": translate("Diagnostic", "SP without a matching SPE"),
+        "spe-without-sp": translate("Diagnostic", "SPE without an SP before it"),
+        "sp-twice": translate("Diagnostic", "subprogram P{program} is defined twice"),
+        "outside-subprogram": translate(
+            "Diagnostic", "only subprograms (SP ... SPE) may follow the first SP"),
+        "level-end-order": translate("Diagnostic", "{name} cannot end level {level}"),
+        "after-end": translate("Diagnostic", "instruction after END, the end of the program"),
+        "endless-loop": translate(
+            "Diagnostic",
+            "a backward jump to L{label} repeated more than {limit} times in one scan"),
         "alarm-line": translate(
             "Diagnostic",
             "not an alarm message line: '{text}' (expected 'NNN text' or"

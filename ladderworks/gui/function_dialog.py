@@ -17,12 +17,13 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.il import Instruction, parse
+from ladderworks.core.il import Instruction
 from ladderworks.core.il.printer import print_instruction
 from ladderworks.core.instructions import InstructionSpec, Param, ParamKind
+from ladderworks.core.ladder.edits import function_params
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.help_browser import InstructionHelp
-from ladderworks.gui.translation import instruction_title, param_label
+from ladderworks.gui.translation import instruction_label, instruction_title, param_label
 
 
 def allowed_text(param: Param) -> str:
@@ -42,20 +43,25 @@ def allowed_text(param: Param) -> str:
         return QCoreApplication.translate("FunctionDialog", "constant or byte address")
     if param.kind is ParamKind.MASK:
         return QCoreApplication.translate("FunctionDialog", "up to 4 binary digits, e.g. 1111")
+    if param.kind is ParamKind.PROGRAM:
+        return QCoreApplication.translate("FunctionDialog", "P{0} to P{1}").format(
+            param.lo, param.hi)
+    if param.kind is ParamKind.LABEL:
+        return QCoreApplication.translate("FunctionDialog", "L{0} to L{1}").format(
+            param.lo, param.hi)
+    if param.kind is ParamKind.RAW:
+        return QCoreApplication.translate(
+            "FunctionDialog", "constant or address, kept as written")
     return QCoreApplication.translate("FunctionDialog", "values separated by spaces")
 
 
 def check_function(spec: InstructionSpec, values: list[str]) -> tuple[
         Instruction | None, list[Diagnostic]]:
     """Build the instruction from typed values, checked by the core's parser."""
-    words = " ".join(value.strip() for value in values if value.strip())
-    result = parse(f"%@3\n{spec.name} {words}\n%\n")
-    diagnostics = [d for d in result.diagnostics if d.is_error]
-    instructions = result.program.instructions()
-    if diagnostics or not instructions:
+    params, diagnostics = function_params(spec.name, [v.strip() for v in values if v.strip()])
+    if params is None or diagnostics:
         return None, diagnostics
-    found = instructions[0]
-    return Instruction(found.name, found.operand, found.params), []
+    return Instruction(spec.name, params=params), []
 
 
 def _value_text(param: Param, value: object) -> str:
@@ -74,10 +80,13 @@ class FunctionDialog(QDialog):
         self.spec = spec
         self.instruction: Instruction | None = None
         self.comment_text = comment
-        self.setWindowTitle(f"{spec.name} — {spec.title}")
         layout = QVBoxLayout(self)
         self._title = QLabel(self)
+        self._title.setWordWrap(True)
         layout.addWidget(self._title)
+        self._no_params = QLabel(self)
+        self._no_params.setObjectName("function_no_params")
+        layout.addWidget(self._no_params)
         self.table = QTableWidget(self)
         self.table.setObjectName("function_table")
         self.table.setColumnCount(3)
@@ -125,6 +134,8 @@ class FunctionDialog(QDialog):
         rows = sum(self.table.rowHeight(row) for row in range(self.table.rowCount()))
         header = self.table.horizontalHeader().sizeHint().height()
         self.table.setMinimumHeight(header + rows + 2 * self.table.frameWidth() + 2)
+        self.table.setVisible(bool(self._params))  # SPE: nothing to fill in
+        self._no_params.setVisible(not self._params)
         self.adjustSize()
         self.resize(max(self.width(), 560), self.height())
         if self._params:
@@ -132,9 +143,13 @@ class FunctionDialog(QDialog):
 
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
+        name, title = instruction_label(self.spec), instruction_title(self.spec)
+        self.setWindowTitle(f"{name} — {title}")
         self._title.setText(QCoreApplication.translate(
-            "FunctionDialog", "{0} — {1}: fill in the parameters").format(
-            self.spec.name, instruction_title(self.spec)))
+            "FunctionDialog", "{0} — {1}: fill in the parameters").format(name, title)
+            if self._params else f"{name} — {title}")
+        self._no_params.setText(QCoreApplication.translate(
+            "FunctionDialog", "This instruction has no parameters."))
         self._comment_label.setText(QCoreApplication.translate(
             "FunctionDialog", "Comment (shown with the box, written after // in the file):"))
         self.table.setHorizontalHeaderLabels([

@@ -3,18 +3,20 @@
 from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication, QEvent, QSize, Qt, Signal
-from PySide6.QtGui import QAction
+from PySide6.QtGui import QAction, QFont, QStandardItemModel
 from PySide6.QtWidgets import (
     QComboBox,
     QDockWidget,
+    QFrame,
     QLabel,
+    QScrollArea,
     QSizePolicy,
     QToolButton,
     QVBoxLayout,
     QWidget,
 )
 
-from ladderworks.core.instructions import MANUAL_ORDER, lookup
+from ladderworks.core.instructions import MANUAL_ORDER, PMC_ORDER, lookup
 from ladderworks.gui.translation import instruction_title
 
 
@@ -46,14 +48,39 @@ class ToolPalette(QDockWidget):
         layout.addWidget(self._function_label)
         self.functions = QComboBox(body)
         self.functions.setObjectName("function_combo")
-        for name in MANUAL_ORDER:
-            self.functions.addItem(name, name)
+        self._groups: list[int] = []  # rows of the group titles (not choosable)
+        for group in (MANUAL_ORDER, PMC_ORDER):
+            self._add_group_title()
+            for name in group:
+                self.functions.addItem(name, name)
+        self.functions.setCurrentIndex(1)
         self.functions.currentIndexChanged.connect(self._on_function)
+        self.functions.activated.connect(self._on_function)  # chosen again: the tool again
         layout.addWidget(self.functions)
         layout.addStretch(1)
         body.setMaximumWidth(230)
-        self.setWidget(body)
+        scroll = QScrollArea(self)  # fifteen tools: scroll rather than overlap on small screens
+        scroll.setObjectName("palette_scroll")
+        scroll.setWidget(body)
+        scroll.setWidgetResizable(True)
+        scroll.setFrameShape(QFrame.Shape.NoFrame)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        scroll.setMaximumWidth(body.maximumWidth() + scroll.verticalScrollBar().sizeHint().width())
+        self.setWidget(scroll)
         self.retranslate()
+
+    def _add_group_title(self) -> None:
+        """A bold, disabled row naming the group of instructions below it."""
+        row = self.functions.count()
+        self.functions.addItem("", None)
+        model = self.functions.model()
+        assert isinstance(model, QStandardItemModel)
+        item = model.item(row)
+        item.setEnabled(False)
+        font = QFont(item.font())
+        font.setBold(True)
+        item.setFont(font)
+        self._groups.append(row)
 
     def current_function(self) -> str:
         """The instruction name chosen in the drop-down."""
@@ -73,7 +100,13 @@ class ToolPalette(QDockWidget):
         """Set the texts in the current UI language."""
         self.setWindowTitle(QCoreApplication.translate("ToolPalette", "Tools"))
         self._function_label.setText(QCoreApplication.translate("ToolPalette", "Function:"))
+        titles = [QCoreApplication.translate("ToolPalette", "Seed manual instructions"),
+                  QCoreApplication.translate("ToolPalette", "FANUC PMC instructions")]
+        for row, title in zip(self._groups, titles, strict=True):
+            self.functions.setItemText(row, f"— {title} —")
         for index in range(self.functions.count()):
+            if index in self._groups:
+                continue
             spec = lookup(str(self.functions.itemData(index)))
             assert spec is not None
             title = instruction_title(spec)

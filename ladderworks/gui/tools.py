@@ -18,6 +18,8 @@ class Tool(StrEnum):
     INPUT_NOT = "input_not"
     OUTPUT = "output"
     OUTPUT_NOT = "output_not"
+    SET_COIL = "set_coil"
+    RESET_COIL = "reset_coil"
     INVERT = "invert"
     OR = "or"
     LINE = "line"
@@ -35,6 +37,8 @@ TOOL_ICONS: dict[Tool, str] = {
     Tool.INPUT_NOT: "contact_not",
     Tool.OUTPUT: "coil",
     Tool.OUTPUT_NOT: "coil_not",
+    Tool.SET_COIL: "coil_set",
+    Tool.RESET_COIL: "coil_reset",
     Tool.INVERT: "invert",
     Tool.OR: "or",
     Tool.LINE: "line",
@@ -51,6 +55,8 @@ TOOL_KEYS: dict[Tool, str] = {
     Tool.INPUT_NOT: "N",
     Tool.OUTPUT: "O",
     Tool.OUTPUT_NOT: "W",
+    Tool.SET_COIL: "E",  # sEt: S is the select tool
+    Tool.RESET_COIL: "U",  # Unset: R is the OR tool
     Tool.INVERT: "T",
     Tool.OR: "R",
     Tool.LINE: "L",
@@ -82,6 +88,8 @@ def tool_name(tool: Tool) -> str:
         Tool.INPUT_NOT: QCoreApplication.translate("Tool", "NOT input"),
         Tool.OUTPUT: QCoreApplication.translate("Tool", "Output"),
         Tool.OUTPUT_NOT: QCoreApplication.translate("Tool", "NOT output"),
+        Tool.SET_COIL: QCoreApplication.translate("Tool", "SET coil"),
+        Tool.RESET_COIL: QCoreApplication.translate("Tool", "RST coil"),
         Tool.INVERT: QCoreApplication.translate("Tool", "NOT"),
         Tool.OR: QCoreApplication.translate("Tool", "OR"),
         Tool.LINE: QCoreApplication.translate("Tool", "Line"),
@@ -107,6 +115,10 @@ def tool_help(tool: Tool) -> str:
             "Tool", "Click a cell to place a coil (WRT), type its address, ENTER"),
         Tool.OUTPUT_NOT: QCoreApplication.translate(
             "Tool", "Click a cell to place a NOT coil (WRT.NOT)"),
+        Tool.SET_COIL: QCoreApplication.translate(
+            "Tool", "Click a cell to place a SET coil (bit := 1 while the logic is 1)"),
+        Tool.RESET_COIL: QCoreApplication.translate(
+            "Tool", "Click a cell to place an RST coil (bit := 0 while the logic is 1)"),
         Tool.INVERT: QCoreApplication.translate(
             "Tool", "Click a contact or coil to turn it into its inverse"),
         Tool.OR: QCoreApplication.translate(

@@ -38,6 +38,12 @@ def instruction_title(spec: InstructionSpec) -> str:
     return spec.title_tr if ui_is_turkish() else spec.title
 
 
+def instruction_label(spec: InstructionSpec) -> str:
+    """An instruction's name as the ladder shows it: `AND` for LOGAND, `SUB 219` for a SUB
+    the table does not know."""
+    return spec.text_name if spec.known else f"SUB {spec.sub}"
+
+
 def param_label(name: str) -> str:
     """A parameter's name in the current UI language."""
     labels = {
@@ -72,7 +78,19 @@ def param_label(name: str) -> str:
         "a": QCoreApplication.translate("Param", "Operand A"),
         "b": QCoreApplication.translate("Param", "Operand B"),
         "constant": QCoreApplication.translate("Param", "Constant"),
+        "edge": QCoreApplication.translate("Param", "Edge number"),
+        "bytes": QCoreApplication.translate("Param", "Number of bytes"),
+        "operand": QCoreApplication.translate("Param", "Operand"),
+        "limit1": QCoreApplication.translate("Param", "Limit 1"),
+        "limit2": QCoreApplication.translate("Param", "Limit 2"),
+        "program": QCoreApplication.translate("Param", "Subprogram"),
+        "label": QCoreApplication.translate("Param", "Label"),
+        "group": QCoreApplication.translate("Param", "DI/DO group"),
+        "control": QCoreApplication.translate("Param", "Control data"),
+        "messages": QCoreApplication.translate("Param", "Number of messages"),
     }
+    if name not in labels and name[:1] == "p" and name[1:].isdigit():  # SUB n: p1, p2, ...
+        return QCoreApplication.translate("Param", "Parameter {0}").format(name[1:])
     return labels.get(name, name)
 
 

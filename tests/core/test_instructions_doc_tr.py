@@ -16,8 +16,6 @@ TEXT_EN = (DOCS / "instructions.md").read_text(encoding="utf-8")
 TEXT_TR = (DOCS / "instructions_tr.md").read_text(encoding="utf-8")
 ANCHOR = re.compile(r'<a id="(instr-[^"]+)"></a>')
 LAD_BLOCK = re.compile(r"```lad\n(.*?)```", flags=re.S)
-PENDING_BLOCK = re.compile(r"```lad pending\n(.*?)```", flags=re.S)  # not run yet: see
-# tests/core/functions/test_reference_doc.py
 MARK = re.compile(r"\[(seed|pmc|choice)\b")
 ENGLISH_LINE_STARTS = ("Control inputs", "Parameters", "Behaviour", "Example", "As ADD",
                        "Marks used", "Errors", "Data formats", "Error outputs")
@@ -85,7 +83,6 @@ def test_each_entry_keeps_its_examples_and_marks() -> None:
     assert english.keys() == turkish.keys()
     for key, text in english.items():
         assert LAD_BLOCK.findall(turkish[key]) == LAD_BLOCK.findall(text), key
-        assert PENDING_BLOCK.findall(turkish[key]) == PENDING_BLOCK.findall(text), key
         assert sorted(MARK.findall(turkish[key])) == sorted(MARK.findall(text)), key
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import subprocess
 import sys
 
-from ladderworks.paths import ROOT
+from ladderworks.paths import CHECKOUT
 
 SCRIPT = """
 import importlib, pkgutil, sys
@@ -23,7 +23,7 @@ print(" ".join(loaded))
 
 
 def test_core_and_cli_modules_load_no_qt() -> None:
-    done = subprocess.run([sys.executable, "-c", SCRIPT], cwd=ROOT, capture_output=True,
+    done = subprocess.run([sys.executable, "-c", SCRIPT], cwd=CHECKOUT, capture_output=True,
                           text=True, timeout=120, check=True)
     count, loaded = [*done.stdout.splitlines(), "", ""][:2]
     assert int(count) > 40  # every module was imported, not just the packages

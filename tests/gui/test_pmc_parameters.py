@@ -13,7 +13,7 @@ from pytestqt.qtbot import QtBot
 from ladderworks.gui.docks.table_entries import TableKind
 from ladderworks.gui.docks.tables import PlcTablesDock
 from ladderworks.gui.main_window import MainWindow
-from ladderworks.paths import ROOT
+from ladderworks.paths import CHECKOUT
 from tests.gui.test_plc_tables import type_into_cell
 
 PROGRAM = "%@3\nRD R1.4\nTMR 1\nWRT R1.7\n%\n"
@@ -44,7 +44,7 @@ def tables_of(window: MainWindow) -> PlcTablesDock:
 
 def run_cli(*argv: str) -> str:
     """`ladderworks-cli ARGS` in a fresh process."""
-    done = subprocess.run([sys.executable, "-m", "ladderworks.cli", *argv], cwd=ROOT,
+    done = subprocess.run([sys.executable, "-m", "ladderworks.cli", *argv], cwd=CHECKOUT,
                           capture_output=True, text=True, timeout=120, check=True)
     return done.stdout
 

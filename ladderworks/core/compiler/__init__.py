@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 from ladderworks.core.compiler.binary import (
     FORMAT_VERSION,
@@ -13,7 +13,7 @@ from ladderworks.core.compiler.binary import (
     decode,
     encode,
 )
-from ladderworks.core.compiler.checks import check
+from ladderworks.core.compiler.checks import check, dialect_of
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError, has_errors
 from ladderworks.core.il.program import Instruction, Network, Program
 
@@ -30,6 +30,7 @@ __all__ = [
     "decode",
     "disassemble",
     "encode",
+    "to_ops",
 ]
 
 
@@ -57,11 +58,14 @@ def to_ops(program: Program) -> list[Op]:
 
 
 def compile_program(program: Program) -> CompileResult:
-    """Check and compile; never raises for a bad program."""
+    """Check and compile; never raises for a bad program.
+
+    The checks are the whole set `check` runs: a program they pass always compiles.
+    """
     diagnostics = check(program)
     if has_errors(diagnostics):
         return CompileResult(None, diagnostics)
-    return CompileResult(encode(to_ops(program)), diagnostics)
+    return CompileResult(encode(to_ops(program), dialect_of(program)), diagnostics)
 
 
 def compile(program: Program) -> bytes:
@@ -83,4 +87,6 @@ def disassemble(data: bytes) -> Program:
             current = op.source.network
         networks[-1].instructions.append(Instruction(
             op.name, op.operand, op.params, line=op.source.line, column=op.source.column))
+    if "dialect" in {f.name for f in fields(Program)}:
+        return Program(networks=networks, dialect=binary.dialect)  # type: ignore[call-arg]
     return Program(networks=networks)

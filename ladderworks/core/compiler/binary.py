@@ -9,39 +9,54 @@ from dataclasses import dataclass
 from ladderworks.core.address import AREA_SIZES, Address, Area
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.il.program import ParamValue
-from ladderworks.core.instructions import BY_SUB, InstructionSpec, Kind, lookup
+from ladderworks.core.instructions import (
+    BASIC,
+    BY_OPCODE,
+    BY_SUB,
+    FUNCTION_OPCODE,
+    InstructionSpec,
+    Kind,
+    ParamKind,
+    spec_for,
+    unknown_sub,
+)
 
 MAGIC = b"LWPC"
-FORMAT_VERSION = 2
+FORMAT_VERSION = 3
 
 # Older versions this LadderWorks refuses, with what changed (the program must be compiled again).
 RETIRED_VERSIONS: dict[int, str] = {
     1: "JMP had no coil count then",
+    2: "16-bit network sizes and source lines, no area E, no dialect flag",
 }
 
-_HEADER = struct.Struct("<4sHHIII")  # magic, version, header size, ops, param bytes, crc32
-_OP = struct.Struct("<BBHI")  # opcode, a, b, c
-_PARAM = struct.Struct("<Bi")  # tag, payload
-_PARAM_ADDRESS = struct.Struct("<BHB")  # area code, byte, bit (0xFF = none)
-_SOURCE = struct.Struct("<IHIH")  # network, instruction index, line, column
+_PREFIX = struct.Struct("<4sH")  # magic, version: the same in every version
+# magic, version, header size, ops, param bytes, flags, reserved, crc32
+_HEADER = struct.Struct("<4sHHIIHHI")
+_OP = struct.Struct("<BBHII")  # opcode, a, b, c, d
+_PARAM = struct.Struct("<Bq")  # tag, payload
+_PARAM_ADDRESS = struct.Struct("<BIB2x")  # area code, byte, bit (0xFF = none)
+_SOURCE = struct.Struct("<IIII")  # network, instruction index, line, column
 
 HEADER_SIZE = _HEADER.size
 OP_SIZE = _OP.size
 PARAM_SIZE = _PARAM.size
 SOURCE_SIZE = _SOURCE.size
 
-# Opcodes of the basic instructions; a functional instruction or END is FUNCTION_OPCODE + SUB.
-BASIC_OPCODES: dict[str, int] = {
-    "RD": 1, "RD.NOT": 2, "WRT": 3, "WRT.NOT": 4, "AND": 5, "AND.NOT": 6, "OR": 7,
-    "OR.NOT": 8, "RD.STK": 9, "RD.NOT.STK": 10, "AND.STK": 11, "OR.STK": 12,
-}
-BASIC_NAMES: dict[int, str] = {code: name for name, code in BASIC_OPCODES.items()}
-FUNCTION_OPCODE = 0x80
+FLAG_FANUC = 0x0001  # header flag: the program is in the FANUC (LADDER-III) dialect
+U32 = 2**32 - 1
 
-AREA_CODES: str = "XYFGRADTCK"  # area code n is AREA_CODES[n]
+# Opcodes of the basic instructions (from the table); a functional one or END is FUNCTION_OPCODE.
+BASIC_OPCODES: dict[str, int] = {spec.name: spec.opcode for spec in BASIC}
+BASIC_NAMES: dict[int, str] = {code: name for name, code in BASIC_OPCODES.items()}
+
+_FIRST_AREAS = "XYFGRADTCK"  # the codes of format version 2; new areas are appended
+AREA_CODES: str = _FIRST_AREAS + "".join(a.value for a in Area if a.value not in _FIRST_AREAS)
 
 _TAG_INT = 0
 _TAG_ADDRESS = 1
+_TAG_PROGRAM = 2
+_TAG_LABEL = 3
 _NO_BIT = 0xFF
 
 
@@ -75,7 +90,7 @@ class Op:
     @property
     def spec(self) -> InstructionSpec:
         """The instruction table row."""
-        spec = lookup(self.name)
+        spec = spec_for(self.name, len(self.params))
         assert spec is not None
         return spec
 
@@ -86,6 +101,7 @@ class BinaryProgram:
 
     ops: tuple[Op, ...]
     version: int = FORMAT_VERSION
+    dialect: str = "seed"  # "fanuc" for a LADDER-III program (header flag), else "seed"
 
     def op_at_line(self, line: int) -> int | None:
         """Index of the first op compiled from source line `line`, or None."""
@@ -95,17 +111,19 @@ class BinaryProgram:
         return None
 
 
-def _encode_param(value: ParamValue) -> bytes:
+def _encode_param(value: ParamValue, kind: ParamKind | None) -> bytes:
     if isinstance(value, Address):
         payload = _PARAM_ADDRESS.pack(
             AREA_CODES.index(value.area.value), value.byte,
             _NO_BIT if value.bit is None else value.bit)
         return bytes([_TAG_ADDRESS]) + payload
-    return _PARAM.pack(_TAG_INT, value)
+    tag = {ParamKind.PROGRAM: _TAG_PROGRAM, ParamKind.LABEL: _TAG_LABEL}.get(
+        kind, _TAG_INT)  # type: ignore[arg-type]
+    return _PARAM.pack(tag, int(getattr(value, "number", value)))
 
 
-def encode(ops: list[Op] | tuple[Op, ...]) -> bytes:
-    """The bytes of a binary holding `ops`."""
+def encode(ops: list[Op] | tuple[Op, ...], dialect: str = "seed") -> bytes:
+    """The bytes of a binary holding `ops` (`dialect` goes in the header's flags)."""
     records = bytearray()
     params = bytearray()
     sources = bytearray()
@@ -117,18 +135,21 @@ def encode(ops: list[Op] | tuple[Op, ...]) -> bytes:
                 area = AREA_CODES.index(op.operand.area.value)
                 byte = op.operand.byte
                 bit = op.operand.bit or 0
-            records += _OP.pack(BASIC_OPCODES[spec.name], area, byte, bit)
+            records += _OP.pack(spec.opcode, area, bit, byte, 0)
         else:
             assert spec.sub is not None
-            records += _OP.pack(FUNCTION_OPCODE, len(op.params), spec.sub, len(params))
-            for value in op.params:
-                params += _encode_param(value)
+            records += _OP.pack(spec.opcode, 0, spec.sub, len(op.params), len(params))
+            kinds = [p.kind for p in spec.params]
+            for k, value in enumerate(op.params):
+                params += _encode_param(value, kinds[k] if k < len(kinds) else None)
         src = op.source
-        sources += _SOURCE.pack(src.network, src.instruction, src.line, src.column)
+        sources += _SOURCE.pack(*(min(max(v, 0), U32) for v in (
+            src.network, src.instruction, src.line, src.column)))
     body = bytes(records) + bytes(params) + bytes(sources)
-    header = _HEADER.pack(MAGIC, FORMAT_VERSION, HEADER_SIZE, len(ops), len(params),
-                          zlib.crc32(body))
-    return header + body
+    flags = FLAG_FANUC if dialect == "fanuc" else 0
+    fields = (MAGIC, FORMAT_VERSION, HEADER_SIZE, len(ops), len(params), flags, 0)
+    head = _HEADER.pack(*fields, 0)[:-4]
+    return head + zlib.crc32(body, zlib.crc32(head)).to_bytes(4, "little") + body
 
 
 def _decode_area(code: int, where: str) -> Area:
@@ -139,8 +160,8 @@ def _decode_area(code: int, where: str) -> Area:
 
 def _decode_param(data: bytes, offset: int, where: str) -> ParamValue:
     tag, number = _PARAM.unpack_from(data, offset)
-    if tag == _TAG_INT:
-        return number
+    if tag in (_TAG_INT, _TAG_PROGRAM, _TAG_LABEL):
+        return int(number)
     if tag != _TAG_ADDRESS:
         raise BinaryFormatError(f"unknown parameter tag {tag} in {where}")
     code, byte, bit = _PARAM_ADDRESS.unpack_from(data, offset + 1)
@@ -155,9 +176,9 @@ def decode(data: bytes) -> BinaryProgram:
     if not isinstance(data, bytes | bytearray | memoryview):
         raise BinaryFormatError("not bytes")
     data = bytes(data)
-    if len(data) < HEADER_SIZE:
+    if len(data) < _PREFIX.size:
         raise BinaryFormatError(f"too short ({len(data)} bytes)")
-    magic, version, header_size, count, param_bytes, crc = _HEADER.unpack_from(data)
+    magic, version = _PREFIX.unpack_from(data)
     if magic != MAGIC:
         raise BinaryFormatError("wrong magic number (not a compiled LadderWorks program)")
     if version in RETIRED_VERSIONS:
@@ -167,43 +188,40 @@ def decode(data: bytes) -> BinaryProgram:
     if version != FORMAT_VERSION:
         raise BinaryFormatError(f"format version {version} is not supported "
                                 f"(this LadderWorks reads version {FORMAT_VERSION})")
+    if len(data) < HEADER_SIZE:
+        raise BinaryFormatError(f"too short ({len(data)} bytes)")
+    _, _, header_size, count, param_bytes, flags, _, crc = _HEADER.unpack_from(data)
     if header_size != HEADER_SIZE:
         raise BinaryFormatError(f"unexpected header size {header_size}")
     expected = HEADER_SIZE + count * (OP_SIZE + SOURCE_SIZE) + param_bytes
     if len(data) != expected:
         raise BinaryFormatError(f"length {len(data)} bytes, the header says {expected}")
     body = data[HEADER_SIZE:]
-    if zlib.crc32(body) != crc:
+    if zlib.crc32(body, zlib.crc32(data[:HEADER_SIZE - 4])) != crc:
         raise BinaryFormatError("checksum mismatch (the file is damaged)")
     params_at = HEADER_SIZE + count * OP_SIZE
     sources_at = params_at + param_bytes
     ops: list[Op] = []
     for index in range(count):
         where = f"op {index}"
-        opcode, a, b, c = _OP.unpack_from(data, HEADER_SIZE + index * OP_SIZE)
-        network, instruction, line, column = _SOURCE.unpack_from(
-            data, sources_at + index * SOURCE_SIZE)
-        source = SourcePosition(network, instruction, line, column)
-        if opcode in BASIC_NAMES:
-            name = BASIC_NAMES[opcode]
-            spec = lookup(name)
-            assert spec is not None
+        opcode, a, b, c, d = _OP.unpack_from(data, HEADER_SIZE + index * OP_SIZE)
+        source = SourcePosition(*_SOURCE.unpack_from(data, sources_at + index * SOURCE_SIZE))
+        basic = BY_OPCODE.get(opcode)
+        if basic is not None:
             operand: Address | None = None
-            if spec.operand:
+            if basic.operand:
                 area = _decode_area(a, where)
-                if b >= AREA_SIZES[area] or c > 7:
+                if c >= AREA_SIZES[area] or b > 7:
                     raise BinaryFormatError(f"address out of range in {where}")
-                operand = Address(area, b, c)
-            ops.append(Op(name, operand, (), source))
+                operand = Address(area, c, b)
+            ops.append(Op(basic.name, operand, (), source))
             continue
         if opcode != FUNCTION_OPCODE:
             raise BinaryFormatError(f"unknown opcode {opcode} in {where}")
-        fspec = BY_SUB.get(b)
-        if fspec is None:
-            raise BinaryFormatError(f"unknown SUB number {b} in {where}")
-        if c % PARAM_SIZE or c + a * PARAM_SIZE > param_bytes:
+        fspec = BY_SUB.get(b) or unknown_sub(b, c)
+        if d % PARAM_SIZE or d + c * PARAM_SIZE > param_bytes:
             raise BinaryFormatError(f"parameter data out of bounds in {where}")
-        values = tuple(_decode_param(data, params_at + c + k * PARAM_SIZE, where)
-                       for k in range(a))
+        values = tuple(_decode_param(data, params_at + d + k * PARAM_SIZE, where)
+                       for k in range(c))
         ops.append(Op(fspec.name, None, values, source))
-    return BinaryProgram(tuple(ops), version)
+    return BinaryProgram(tuple(ops), version, "fanuc" if flags & FLAG_FANUC else "seed")

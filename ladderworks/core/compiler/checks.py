@@ -1,17 +1,37 @@
-"""Compile checks: stack use, writes to inputs, jump/common-line pairs, parameters, coils."""
+"""Compile checks: the one set run by `check`, by `compile` and by the engine on a binary.
+
+Everything the code generator could refuse is found here: stack use, control inputs, writes
+to inputs, JMP/COM pairs, the program structure (levels, SP/SPE, CALL, labels), parameters and
+implementations. Dispatch is on the instruction table's fields, never on spelling.
+"""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 from ladderworks.core.address import INPUT_AREAS, Address, AddressError, parse_address
+from ladderworks.core.compiler.structure import analyse, number_of
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.il.program import Instruction, Program
-from ladderworks.core.instructions import Kind, ParamKind, lookup, value_is_address, width_of
-from ladderworks.core.plc.functions import load_all
+from ladderworks.core.instructions import (
+    Combine,
+    Flow,
+    InstructionSpec,
+    Kind,
+    ParamKind,
+    Write,
+    spec_for,
+    value_is_address,
+    width_of,
+)
+from ladderworks.core.plc import functions
+from ladderworks.core.plc.functions import FunctionImpl, load_all
 
 MAX_PUSHES = 8  # ST0..ST8: eight levels above ST0
 
-# Functional instructions the code generator turns into control flow, not REGISTRY calls.
-CONTROL_FLOW = frozenset({"JMP", "JMPE", "COM", "COME"})
+# Flows the code generator turns into control flow, not function calls.
+CONTROL_FLOWS = frozenset(Flow) - {Flow.NONE}
 
 # Parameters a functional instruction writes to (its outputs), by name.
 _OUTPUT_PARAMS = frozenset({"output", "result", "register"})
@@ -22,15 +42,48 @@ def output_params(name: str) -> frozenset[str]:
     return _OUTPUT_PARAMS | {"data"} if name == "SFT" else _OUTPUT_PARAMS
 
 
+def cnc_stub(ctx: object, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
+    """A CNC-side or unknown instruction with no CNC: W1 = ACT (docs/instructions.md)."""
+    return bool(inputs[-1]) if inputs else False
+
+
+def implementation_of(spec: InstructionSpec,
+                      registry: dict[str, FunctionImpl]) -> FunctionImpl | None:
+    """The implementation of a functional instruction: the registry's, else `impl_for`'s (the
+    functions package's generic entry, when it has one), else the CNC stub for an unknown SUB."""
+    impl = registry.get(spec.name)
+    if impl is not None:
+        return impl
+    impl_for: Callable[[InstructionSpec], Any] | None = getattr(functions, "impl_for", None)
+    if impl_for is not None and (spec.cnc or not spec.known):
+        try:
+            found = impl_for(spec)
+        except (KeyError, LookupError):
+            found = None
+        if found is not None:
+            return found  # type: ignore[no-any-return]
+    return cnc_stub if not spec.known else None
+
+
+def dialect_of(program: object) -> str:
+    """The program's dialect: "fanuc" for LADDER-III exports, else "seed"."""
+    dialect = getattr(program, "dialect", "seed")
+    return dialect if isinstance(dialect, str) else "seed"
+
+
 class _Checker:
     """Walks the program once, collecting diagnostics."""
 
-    def __init__(self) -> None:
+    def __init__(self, program: Program, dialect: str | None) -> None:
         self.out: list[Diagnostic] = []
-        self.coils: dict[Address, Instruction] = {}
-        self.jumps: list[tuple[int, Instruction]] = []
-        self.commons: list[tuple[int, Instruction]] = []
+        self.coils: dict[Address, tuple[Write, Instruction]] = {}
         self.registry = load_all()
+        self.dialect = dialect or dialect_of(program)
+        self.flat: list[tuple[int, Instruction, InstructionSpec | None]] = [
+            (n, ins, spec_for(ins.name, len(ins.params)))
+            for n, network in enumerate(program.networks) for ins in network.instructions]
+        self.jumps: list[tuple[int, Instruction, int | None]] = []  # network, JMP, coils left
+        self.commons: list[tuple[int, Instruction, int | None]] = []
 
     def add(self, code: str, ins: Instruction, network: int, *,
             warning: bool = False, **args: object) -> None:
@@ -42,100 +95,158 @@ class _Checker:
             code, dict(args), ins.line, ins.column,
             Severity.WARNING if warning else Severity.ERROR, network))
 
-    def run(self, program: Program) -> list[Diagnostic]:
-        for index, network in enumerate(program.networks):
-            self.network(index, network.instructions)
-        for at, ins in self.jumps:
-            self.add("jmp-without-jmpe", ins, at)
-        for at, ins in self.commons:
-            self.add("com-without-come", ins, at)
+    def run(self) -> list[Diagnostic]:
+        known = [(n, ins, spec) for n, ins, spec in self.flat if spec is not None]
+        structure = analyse([(spec, ins.params) for _, ins, spec in known])
+        bounds = {k for unit in structure.units() for k in (unit.start, unit.end)}
+        previous_network = -1
+        depth, logic = 0, False
+        last: tuple[Instruction, InstructionSpec | None] | None = None
+        broken = -1  # a network with an unknown instruction is not checked further
+        position = 0  # index among the known instructions (the structure's items)
+        for n, ins, spec in self.flat:
+            if n != previous_network:
+                self.end_network(previous_network, last, logic)
+                previous_network, depth, logic = n, 0, False
+            if spec is None:
+                self.add("unknown-instruction", ins, n, name=ins.name)
+                broken = n
+                continue
+            if position in bounds:
+                self.close_ranges()
+            position += 1
+            if n == broken:
+                continue
+            last = (ins, spec)
+            depth, logic = self.instruction(n, ins, spec, depth, logic)
+        self.end_network(previous_network, last, logic)
+        self.close_ranges()
+        for problem in structure.problems:
+            network, ins, _ = known[problem.index]
+            self.report(problem.code, ins, network, problem.args, warning=problem.warning)
+        self.out.sort(key=lambda d: (d.line, d.column))
         return self.out
 
-    def network(self, index: int, instructions: list[Instruction]) -> None:
-        depth = 0
-        logic = False
-        for ins in instructions:
-            spec = lookup(ins.name)
-            if spec is None:
-                self.add("unknown-instruction", ins, index, name=ins.name)
-                return
-            if spec.kind is Kind.BASIC:
-                if spec.operand and ins.operand is None:
-                    self.add("missing-operand", ins, index, name=spec.name)
-                    continue
-                if spec.operand and not isinstance(ins.operand, Address):
-                    self.add("bad-address", ins, index, text=str(ins.operand))
-                    continue
-                if spec.name in ("RD", "RD.NOT"):
-                    logic = True
-                    continue
-                if not logic:
-                    self.add("no-logic", ins, index, name=spec.name)
-                    logic = True
-                if spec.pushes > 0:
-                    depth += 1
-                    if depth > MAX_PUSHES:
-                        self.add("stack-depth", ins, index)
-                elif spec.pushes < 0:
-                    if depth == 0:
-                        self.add("stack-underflow", ins, index, name=spec.name)
-                    else:
-                        depth -= 1
-                elif spec.writes:
-                    assert ins.operand is not None
-                    self.write(ins, index, spec.name, ins.operand, coil=True)
-                continue
-            if spec.kind is Kind.END:
-                continue
-            count = len(spec.inputs)
-            if count:
-                if not logic:
-                    self.add("no-logic", ins, index, name=spec.name)
-                elif depth < count - 1:
-                    self.add("box-inputs", ins, index, name=spec.name, count=count)
-                depth = max(0, depth - (count - 1))
-            logic = spec.w1 or logic
-            self.function(ins, index)
-        if instructions and logic:
-            last = lookup(instructions[-1].name)
-            if last is not None and last.kind is Kind.BASIC and not last.writes:
-                self.add("dangling-logic", instructions[-1], index, warning=True)
+    def end_network(self, network: int, last: tuple[Instruction, InstructionSpec | None] | None,
+                    logic: bool) -> None:
+        if network < 0 or not logic or last is None:
+            return
+        ins, spec = last
+        if spec is not None and spec.kind is Kind.BASIC and spec.write is Write.NONE:
+            self.add("dangling-logic", ins, network, warning=True)
 
-    def write(self, ins: Instruction, network: int, name: str, address: Address, *,
-              coil: bool) -> None:
+    def instruction(self, n: int, ins: Instruction, spec: InstructionSpec, depth: int,
+                    logic: bool) -> tuple[int, bool]:
+        if spec.kind is Kind.BASIC:
+            if spec.operand and ins.operand is None:
+                self.add("missing-operand", ins, n, name=spec.name)
+                return depth, logic
+            if spec.operand and not isinstance(ins.operand, Address):
+                self.add("bad-address", ins, n, text=str(ins.operand))
+                return depth, logic
+            if spec.combine is Combine.READ and spec.pushes == 0:
+                return depth, True
+            if not logic:
+                self.add("no-logic", ins, n, name=spec.name)
+                logic = True
+            if spec.pushes > 0:
+                depth += 1
+                if depth > MAX_PUSHES:
+                    self.add("stack-depth", ins, n)
+            elif spec.pushes < 0:
+                if depth == 0:
+                    self.add("stack-underflow", ins, n, name=spec.name)
+                else:
+                    depth -= 1
+            elif spec.write is not Write.NONE:
+                assert ins.operand is not None
+                self.write(ins, n, spec.name, ins.operand, spec.write)
+                self.count_coil()
+            return depth, logic
+        if spec.kind is Kind.END:
+            return depth, logic
+        count = len(spec.inputs)
+        if count:
+            if not logic:
+                self.add("no-logic", ins, n, name=spec.name)
+            elif depth < count - 1:
+                self.add("box-inputs", ins, n, name=spec.name, count=count)
+            depth = max(0, depth - (count - 1))
+        logic = spec.w1 or logic
+        self.function(ins, spec, n)
+        return depth, logic
+
+    def count_coil(self) -> None:
+        """A coil counts for the innermost JMP n and COM n ranges (as the generated code)."""
+        for ranges in (self.jumps, self.commons):
+            if ranges and ranges[-1][2] is not None:
+                network, ins, left = ranges[-1]
+                assert left is not None
+                if left <= 1:
+                    ranges.pop()
+                else:
+                    ranges[-1] = (network, ins, left - 1)
+
+    def write(self, ins: Instruction, network: int, name: str, address: Address,
+              kind: Write | None) -> None:
         if address.area in INPUT_AREAS:
             self.add("write-input", ins, network, name=name, address=str(address))
         elif address.is_result_register():
             self.add("write-result-register", ins, network, name=name, address=str(address))
-        elif coil:
-            if address in self.coils:
-                self.add("coil-twice", ins, network, warning=True, address=str(address))
-            self.coils[address] = ins
+        elif kind is not None:
+            before = self.coils.get(address)
+            if before is not None:
+                if kind is Write.OUT and before[0] is Write.OUT:
+                    self.add("coil-twice", ins, network, warning=True, address=str(address))
+                elif (kind is Write.OUT) != (before[0] is Write.OUT):
+                    self.add("coil-mixed", ins, network, warning=True, address=str(address),
+                             line=before[1].line)
+            if before is None or kind is Write.OUT:
+                self.coils[address] = (kind, ins)
 
-    def function(self, ins: Instruction, network: int) -> None:
-        spec = ins.spec
-        if spec.name == "JMP":
-            if ins.params and ins.params[0] == 0:  # JMP n > 0 ends after n coils, no JMPE
-                self.jumps.append((network, ins))
-        elif spec.name == "JMPE":
+    def function(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
+        flow = spec.flow
+        coils = ins.params[0] if ins.params and isinstance(ins.params[0], int) else 0
+        if flow is Flow.JUMP:
+            self.jumps.append((network, ins, coils if coils > 0 else None))
+        elif flow is Flow.JUMP_END:
+            while self.jumps and self.jumps[-1][2] is not None:
+                self.jumps.pop()
             if self.jumps:
                 self.jumps.pop()
             else:
                 self.add("jmpe-without-jmp", ins, network)
-        elif spec.name == "COM":
-            if ins.params and ins.params[0] == 0:  # COM n > 0 ends after n coils, no COME
-                self.commons.append((network, ins))
-        elif spec.name == "COME":
-            if self.commons:
-                self.commons.pop()
+        elif flow is Flow.COMMON:
+            self.commons.append((network, ins, coils if coils > 0 else None))
+        elif flow is Flow.COMMON_END:
+            for k in range(len(self.commons) - 1, -1, -1):
+                if self.commons[k][2] is None:
+                    del self.commons[k]
+                    break
             else:
                 self.add("come-without-com", ins, network)
-        elif spec.name not in self.registry:
-            self.add("not-implemented", ins, network, name=spec.name)
-        self.params(ins, network)
+        elif flow is Flow.LABEL:
+            if self.jumps or self.commons:
+                self.add("label-in-range", ins, network)
+        elif flow is Flow.NONE:
+            if not spec.known:
+                self.add("unknown-sub", ins, network, warning=True, number=spec.sub)
+            elif implementation_of(spec, self.registry) is None:
+                self.add("not-implemented", ins, network, name=spec.name)
+        self.params(ins, spec, network)
 
-    def params(self, ins: Instruction, network: int) -> None:
-        spec = ins.spec
+    def close_ranges(self) -> None:
+        """At the end of a unit: its JMP 0 / COM 0 ranges must be closed."""
+        for network, ins, left in self.jumps:
+            if left is None:
+                self.add("jmp-without-jmpe", ins, network)
+        for network, ins, left in self.commons:
+            if left is None:
+                self.add("com-without-come", ins, network)
+        self.jumps.clear()
+        self.commons.clear()
+
+    def params(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
         fixed = spec.fixed_params()
         table = spec.table_param()
         values = ins.param_map()
@@ -150,6 +261,11 @@ class _Checker:
         outputs = output_params(spec.name)
         for number, (param, value) in enumerate(zip(fixed, ins.params, strict=False), 1):
             info: dict[str, object] = {"name": spec.name, "index": number, "param": param.name}
+            if param.kind in (ParamKind.PROGRAM, ParamKind.LABEL):
+                value = number_of(value)  # type: ignore[assignment]
+                if value is None:
+                    self.report("param-kind-number", ins, network, {**info, "text": "?"})
+                    continue
             address_wanted = param.kind is ParamKind.ADDRESS or (
                 param.kind is ParamKind.VALUE and value_is_address(spec, values) is True)
             if isinstance(value, Address):
@@ -165,17 +281,18 @@ class _Checker:
                     self.report(exc.code, ins, network, exc.args_map)
                     continue
                 if param.name in outputs:
-                    self.write(ins, network, spec.name, value, coil=False)
+                    self.write(ins, network, spec.name, value, None)
                 continue
+            hi = param.highest(self.dialect)
             if address_wanted:
                 self.report("param-kind-address", ins, network, {**info, "text": str(value)})
             elif param.choices and value not in param.choices:
                 self.report("param-choice", ins, network, {
                     **info, "value": value,
                     "choices": ", ".join(str(c) for c in param.choices)})
-            elif not param.lo <= value <= param.hi:
+            elif not param.lo <= value <= hi:
                 self.report("param-range", ins, network,
-                            {**info, "lo": param.lo, "hi": param.hi, "value": value})
+                            {**info, "lo": param.lo, "hi": hi, "value": value})
         if table is not None:
             for offset, value in enumerate(ins.params[len(fixed):]):
                 if isinstance(value, Address) or not table.lo <= value <= table.hi:
@@ -184,6 +301,10 @@ class _Checker:
                              hi=table.hi, value=str(value))
 
 
-def check(program: Program) -> list[Diagnostic]:
-    """Every compile diagnostic of `program` (errors and warnings), in program order."""
-    return _Checker().run(program)
+def check(program: Program, dialect: str | None = None) -> list[Diagnostic]:
+    """Every compile diagnostic of `program` (errors and warnings), in program order.
+
+    `compile` runs exactly these; a program they pass always compiles and generates.
+    `dialect` overrides the program's own ("seed" or "fanuc": the ranges of numbers).
+    """
+    return _Checker(program, dialect).run()

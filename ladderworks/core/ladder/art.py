@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ladderworks.core.il.printer import print_instruction
 from ladderworks.core.il.program import Instruction
+from ladderworks.core.instructions import Write
 from ladderworks.core.ladder.model import (
     Coil,
     Contact,
@@ -25,6 +26,8 @@ def _symbol(element: Contact | Coil | Wire) -> str:
     if isinstance(element, Wire):
         return "-" * CELL
     mark = "/" if element.negated else " "
+    if isinstance(element, Coil) and element.write is not Write.OUT:  # SET / RST: (S) / (R)
+        mark = "S" if element.write is Write.SET else "R"
     return f"---{'|' if isinstance(element, Contact) else '('}{mark}" \
            f"{'|' if isinstance(element, Contact) else ')'}---"
 
@@ -44,7 +47,8 @@ def _box_rows(box: FunctionBox) -> list[tuple[str, str]]:
     for i in range(box.height):
         pin = pin_names.get(i, "")
         if i == 0:
-            label = "+" + f" {box.name} ".center(inner, "-") + "+"
+            title = box.spec.text_name if box.spec.known else f"SUB {box.spec.sub}"
+            label = "+" + f" {title} ".center(inner, "-") + "+"
         else:
             label = "|" + " " * inner + "|"
         param = words[i] if i < len(words) else ""

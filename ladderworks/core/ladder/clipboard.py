@@ -6,10 +6,17 @@ import json
 from dataclasses import dataclass
 from typing import Any
 
-from ladderworks.core.address import Address, AddressError, parse_address
+from ladderworks.core.address import AddressError, parse_address
 from ladderworks.core.il.program import ParamValue
-from ladderworks.core.instructions import lookup
-from ladderworks.core.ladder.edits import Edit, EditRefused, _change, _grow, _put
+from ladderworks.core.instructions import Write, spec_for
+from ladderworks.core.ladder.edits import (
+    Edit,
+    EditRefused,
+    _change,
+    _grow,
+    _put,
+    function_params,
+)
 from ladderworks.core.ladder.model import (
     DEFAULT_COLUMNS,
     MAX_COLUMNS,
@@ -57,12 +64,14 @@ def _element_record(element: Element) -> dict[str, Any]:
     if isinstance(element, FunctionBox):
         record: dict[str, Any] = {
             "kind": "box", "name": element.name,
-            "params": [str(p) if isinstance(p, Address) else p for p in element.params],
+            "params": [p if isinstance(p, int) else str(p) for p in element.params],
             "pins": list(element.pins), "height": element.height}
     else:
         record = {"kind": "contact" if isinstance(element, Contact) else "coil",
                   "address": str(element.address) if element.address else None,
                   "not": element.negated}
+        if isinstance(element, Coil) and element.write is not Write.OUT:
+            record["write"] = element.write.value
     if element.comment:
         record["comment"] = element.comment
     if element.lead:
@@ -78,6 +87,16 @@ def _parse_param(value: object) -> ParamValue:
     return parse_address(value)
 
 
+def _parse_params(name: str, values: list[object]) -> tuple[ParamValue, ...]:
+    """A box's parameters as the parser reads them (`P5`, `L3` included); a draft's invalid
+    parameters one by one (numbers and addresses)."""
+    if all(isinstance(v, int | str) and not isinstance(v, bool) for v in values):
+        params, problems = function_params(name, [str(v) for v in values])
+        if params is not None and not problems:
+            return params
+    return tuple(_parse_param(p) for p in values)
+
+
 def _element_from(record: dict[str, Any]) -> Element:
     kind = record.get("kind")
     comment = str(record.get("comment", ""))
@@ -86,12 +105,13 @@ def _element_from(record: dict[str, Any]) -> Element:
         return WIRE
     if kind == "box":
         name = str(record["name"])
-        if lookup(name) is None:
+        values = list(record.get("params", []))
+        if spec_for(name, len(values)) is None:
             raise ValueError(name)
-        params = tuple(_parse_param(p) for p in record.get("params", []))
+        params = _parse_params(name, values)
         pins = tuple(int(p) for p in record.get("pins", []))
         height = int(record.get("height", 1))
-        default = FunctionBox.new(name)
+        default = FunctionBox.new(name, params)
         if (len(pins) != len(default.pins) or any(p >= height for p in pins)
                 or not 1 <= height <= MAX_ROWS):  # a damaged draft must not fill the memory
             raise ValueError("pins")
@@ -99,8 +119,12 @@ def _element_from(record: dict[str, Any]) -> Element:
     if kind in ("contact", "coil"):
         text = record.get("address")
         address = parse_address(str(text), want_bit=True) if text else None
-        cls = Contact if kind == "contact" else Coil
-        return cls(address, bool(record.get("not", False)), comment, lead)
+        if kind == "contact":
+            return Contact(address, bool(record.get("not", False)), comment, lead)
+        write = Write(str(record.get("write", Write.OUT.value)))
+        if write is Write.NONE:
+            raise ValueError(write)
+        return Coil(address, bool(record.get("not", False)), comment, lead, write)
     raise ValueError(kind)
 
 

@@ -246,7 +246,8 @@ def read_grid(network: LadderNetwork, index: int | None = None
             report("bridge", result.cell)
             return None, diags
         blocks.append(result)
-    rung = Rung(box=box, inputs=blocks, coils=[coil for _, coil, _ in coils])
+    rung = Rung(box=box, inputs=blocks, coils=[coil for _, coil, _ in coils],
+                box_cell=box_anchor, coil_cells=[cell for cell, _, _ in coils])
     _check_depth(rung, report)
     if has_errors(diags):
         return None, diags
@@ -285,7 +286,8 @@ def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
         return None, diags
     groups = [[coil for _, coil, net in coils if net == o] for o in order]
     rung = Rung(logic=blocks[0], coils=groups[0], chain=list(zip(blocks[1:], groups[1:],
-                                                                   strict=True)))
+                                                                   strict=True)),
+                coil_cells=[cell for o in order for cell, _, net in coils if net == o])
     _check_depth(rung, report)
     if has_errors(diags):
         return None, diags

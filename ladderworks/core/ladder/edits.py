@@ -132,7 +132,8 @@ def add_parallel(network: LadderNetwork, row: int, col: int,
     if found is None or not isinstance(found[1], Contact | Coil):
         raise EditRefused("edit-no-element", (row, col), row=row, col=col)
     (row, col), old = found
-    new = element if element is not None else (Contact() if isinstance(old, Contact) else Coil())
+    new = element if element is not None else (
+        Contact() if isinstance(old, Contact) else Coil(write=old.write))
     work = network.copy()
     if row + 1 < work.rows and work.element_at(row + 1, col) is not None:
         _insert_row(work, row + 1)
@@ -319,8 +320,11 @@ def function_params(name: str, texts: list[str]) -> tuple[tuple[ParamValue, ...]
                                                            list[Diagnostic]]:
     """Check parameter texts for a functional instruction exactly as the parser would."""
     from ladderworks.core.il import parse
+    from ladderworks.core.il.printer import print_instruction
+    from ladderworks.core.il.program import Instruction
 
-    text = "%@3\n" + " ".join([name, *texts]) + "\n%\n"
+    head = print_instruction(Instruction(name))  # as the text names it (`AND` for LOGAND)
+    text = "%@3\n" + " ".join([head, *texts]) + "\n%\n"
     result = parse(text)
     if not result.ok:
         return None, [d for d in result.diagnostics if d.is_error]

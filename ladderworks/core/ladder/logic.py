@@ -5,8 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ladderworks.core.il.program import Instruction
-from ladderworks.core.instructions import Kind
-from ladderworks.core.ladder.model import Coil, Contact, FunctionBox
+from ladderworks.core.instructions import BASIC, Combine, InstructionSpec, Kind, Write
+from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox
 
 MAX_PUSHES = 8  # ST0 plus ST1..ST8: at most eight values pushed under ST0
 
@@ -61,11 +61,29 @@ class Rung:
     # an output chain (coil networks): after the coils, each block is put in series with the
     # result so far and its own coils written (`WRT y / AND b / WRT z`)
     chain: list[tuple[Logic, list[Coil]]] = field(default_factory=list)
+    # where the box and the coils are drawn (coils in coding order: `coils`, then the chain's);
+    # empty when the rung was read from text
+    box_cell: Cell | None = field(default=None, compare=False)
+    coil_cells: list[Cell] = field(default_factory=list, compare=False)
 
 
-def _contact_instruction(contact: Contact, op: str, push: bool) -> Instruction:
-    name = op + (".NOT" if contact.negated else "") + (".STK" if push else "")
-    return Instruction(name, contact.address, comment=contact.comment, lead=contact.lead)
+def _basic(combine: Combine, write: Write, negated: bool, pushes: int, operand: bool
+           ) -> InstructionSpec:
+    """The basic instruction with this meaning (the table's fields, not its spelling)."""
+    for spec in BASIC:
+        if (spec.combine, spec.write, spec.negated, spec.pushes, spec.operand) == (
+                combine, write, negated, pushes, operand):
+            return spec
+    raise KeyError((combine, write, negated, pushes))
+
+
+def _contact_instruction(contact: Contact, combine: Combine, push: bool) -> Instruction:
+    spec = _basic(combine, Write.NONE, contact.negated, 1 if push else 0, True)
+    return Instruction(spec.name, contact.address, comment=contact.comment, lead=contact.lead)
+
+
+def _stack_instruction(combine: Combine) -> Instruction:
+    return Instruction(_basic(combine, Write.NONE, False, -1, False).name)
 
 
 def code_logic(logic: Logic, push: bool = False,
@@ -77,17 +95,17 @@ def code_logic(logic: Logic, push: bool = False,
         cells = []
     if isinstance(logic, Leaf):
         cells.append(logic.cell)
-        return [_contact_instruction(logic.contact, "RD", push)]
+        return [_contact_instruction(logic.contact, Combine.READ, push)]
     out = code_logic(logic.items[0], push, cells)
-    op, stack_op = ("AND", "AND.STK") if isinstance(logic, Series) else ("OR", "OR.STK")
+    combine = Combine.AND if isinstance(logic, Series) else Combine.OR
     for item in logic.items[1:]:
         if isinstance(item, Leaf):
             cells.append(item.cell)
-            out.append(_contact_instruction(item.contact, op, False))
+            out.append(_contact_instruction(item.contact, combine, False))
         else:
             out.extend(code_logic(item, True, cells))
             cells.append(None)
-            out.append(Instruction(stack_op))
+            out.append(_stack_instruction(combine))
     return out
 
 
@@ -98,10 +116,14 @@ def first_cell(logic: Logic) -> tuple[int, int]:
     return min(first_cell(item) for item in logic.items)
 
 
+def coil_spec(coil: Coil) -> InstructionSpec:
+    """The coil's row of the table: WRT, WRT.NOT, SET or RST."""
+    return _basic(Combine.NONE, coil.write, coil.negated and coil.write is Write.OUT, 0, True)
+
+
 def coil_instruction(coil: Coil) -> Instruction:
-    """WRT / WRT.NOT of a coil, with its comments."""
-    return Instruction("WRT.NOT" if coil.negated else "WRT", coil.address,
-                       comment=coil.comment, lead=coil.lead)
+    """WRT / WRT.NOT / SET / RST of a coil, with its comments."""
+    return Instruction(coil_spec(coil).name, coil.address, comment=coil.comment, lead=coil.lead)
 
 
 def box_instruction(box: FunctionBox) -> Instruction:
@@ -111,28 +133,37 @@ def box_instruction(box: FunctionBox) -> Instruction:
 
 def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
               ) -> list[Instruction]:
-    """The standard coding of a whole network (`cells` as in `code_logic`)."""
+    """The standard coding of a whole network. `cells`, if given, receives the drawn cell of
+    each instruction: contacts, the box and the coils (when the rung was read from the grid);
+    None for stack operations."""
     if cells is None:
         cells = []
+    coil_cells = iter(rung.coil_cells)
     out: list[Instruction] = []
+
+    def write(coils: list[Coil]) -> None:
+        for coil in coils:
+            out.append(coil_instruction(coil))
+            cells.append(next(coil_cells, None))
+
     if rung.box is not None:
         for index, logic in enumerate(rung.inputs):
             out.extend(code_logic(logic, index > 0, cells))
         out.append(box_instruction(rung.box))
+        cells.append(rung.box_cell)
     elif rung.logic is not None:
         out.extend(code_logic(rung.logic, False, cells))
-    out.extend(coil_instruction(coil) for coil in rung.coils)
+    write(rung.coils)
     for block, coils in rung.chain:
         for item in block.items if isinstance(block, Series) else (block,):
             if isinstance(item, Leaf):
                 cells.append(item.cell)
-                out.append(_contact_instruction(item.contact, "AND", False))
+                out.append(_contact_instruction(item.contact, Combine.AND, False))
             else:
                 out.extend(code_logic(item, True, cells))
                 cells.append(None)
-                out.append(Instruction("AND.STK"))
-        out.extend(coil_instruction(coil) for coil in coils)
-    cells.extend([None] * (len(out) - len(cells)))
+                out.append(_stack_instruction(Combine.AND))
+        write(coils)
     return out
 
 
@@ -165,7 +196,7 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
     for ins in instructions:
         spec = ins.spec
         name = ins.name
-        if spec.kind is Kind.BASIC and spec.writes:
+        if spec.is_coil:
             if phase == "logic":
                 if rung.box is None and len(stack) != 1:
                     raise Undrawable(name)
@@ -180,7 +211,7 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             phase = "coils"
             if ins.operand is None:
                 raise Undrawable(name)
-            coil = Coil(ins.operand, name == "WRT.NOT", ins.comment, ins.lead)
+            coil = Coil(ins.operand, spec.negated, ins.comment, ins.lead, spec.write)
             (rung.chain[-1][1] if rung.chain else rung.coils).append(coil)
             continue
         if phase == "coils" and rung.box is None and spec.kind is Kind.BASIC:
@@ -196,28 +227,23 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             stack = []
             phase = "coils" if spec.w1 else "closed"
             continue
-        if name in ("AND.STK", "OR.STK"):
-            if len(stack) < 2:
+        if not spec.is_contact:  # AND.STK / OR.STK: join the top two values
+            if len(stack) < 2 or spec.combine is Combine.READ:
                 raise Undrawable(name)
             b = stack.pop()
             a = stack.pop()
-            stack.append(series(a, b) if name == "AND.STK" else parallel(a, b))
+            stack.append(series(a, b) if spec.combine is Combine.AND else parallel(a, b))
             continue
-        contact = Contact(ins.operand, name.startswith(("RD.NOT", "AND.NOT", "OR.NOT")),
-                          ins.comment, ins.lead)
-        if name in ("RD", "RD.NOT"):
-            if stack:
-                raise Undrawable(name)
-            stack.append(Leaf(contact))
-        elif name in ("RD.STK", "RD.NOT.STK"):
-            if not stack:
+        contact = Contact(ins.operand, spec.negated, ins.comment, ins.lead)
+        if spec.combine is Combine.READ:
+            if bool(stack) != (spec.pushes > 0):  # RD starts the logic, RD.STK pushes onto it
                 raise Undrawable(name)
             stack.append(Leaf(contact))
         else:
             if not stack:
                 raise Undrawable(name)
             top = stack.pop()
-            stack.append(series(top, Leaf(contact)) if name.startswith("AND")
+            stack.append(series(top, Leaf(contact)) if spec.combine is Combine.AND
                          else parallel(top, Leaf(contact)))
     if rung.box is None and rung.logic is None:
         raise Undrawable("no output")

@@ -7,7 +7,7 @@ from dataclasses import dataclass, field, replace
 
 from ladderworks.core.address import Address
 from ladderworks.core.il.program import Instruction, ParamValue, Program, Section
-from ladderworks.core.instructions import InstructionSpec, Kind, lookup
+from ladderworks.core.instructions import InstructionSpec, Kind, Write, lookup, spec_for
 
 # Grid limits (FANUC-like). A network has `columns` contact columns (0 .. columns-1) and one
 # coil column (index `columns`) at the right. New networks get DEFAULT_COLUMNS; a network laid
@@ -33,12 +33,13 @@ class Contact:
 
 @dataclass(frozen=True, slots=True)
 class Coil:
-    """An output coil: WRT, or WRT.NOT when `negated`. Belongs in the coil column."""
+    """An output coil in the coil column: WRT (WRT.NOT when `negated`), SET or RST (`write`)."""
 
     address: Address | None = None
-    negated: bool = False
+    negated: bool = False  # WRT.NOT; SET and RST have no inverted form
     comment: str = ""
     lead: tuple[str, ...] = ()
+    write: Write = Write.OUT  # what the coil does with ST0: OUT (WRT), SET, RESET (RST)
 
 
 @dataclass(frozen=True, slots=True)
@@ -69,14 +70,14 @@ class FunctionBox:
     def new(cls, name: str, params: tuple[ParamValue, ...] = (), comment: str = "",
             lead: tuple[str, ...] = ()) -> FunctionBox:
         """A box with one row per control input (at least one row)."""
-        spec = lookup(name)
+        spec = spec_for(name.upper(), len(params))
         count = len(spec.inputs) if spec is not None else 0
         return cls(name.upper(), params, comment, lead, tuple(range(count)), max(1, count))
 
     @property
     def spec(self) -> InstructionSpec:
-        """The instruction table row."""
-        spec = lookup(self.name)
+        """The instruction table row (`spec_for`: a `SUB.n` the table lacks has RAW params)."""
+        spec = spec_for(self.name, len(self.params))
         assert spec is not None, self.name
         return spec
 
@@ -239,11 +240,13 @@ class LadderDocument:
 
 
 def flip(element: Contact | Coil) -> Contact | Coil:
-    """The same element with NOT toggled."""
+    """The NOT tool: contact NO⇄NC, coil WRT⇄WRT.NOT, SET⇄RST (they have no inverted form)."""
+    if isinstance(element, Coil) and element.write is not Write.OUT:
+        return replace(element, write=Write.RESET if element.write is Write.SET else Write.SET)
     return replace(element, negated=not element.negated)
 
 
 def is_end(name: str) -> bool:
-    """True for END1 / END2 / END."""
+    """True for END1 / END2 / END3 / END."""
     spec = lookup(name)
     return spec is not None and spec.kind is Kind.END

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from ladderworks.core.address import Address
+from ladderworks.core.instructions import Write
 from ladderworks.core.ladder.decompose import NodeNets
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork
 
@@ -45,11 +46,25 @@ class PowerFlow:
         return self._nets.net((row, node)) in self._powered
 
     def coils(self) -> list[tuple[Cell, Coil, bool]]:
-        """Each coil with the value it writes (WRT.NOT writes the inverse of its power)."""
+        """Each coil with the power it gets (inverted for WRT.NOT): what WRT/WRT.NOT write;
+        a SET or RST coil acts only when it is True."""
         out = []
         for (r, c), element in self.network.elements():
             if isinstance(element, Coil):
                 out.append(((r, c), element, self.node(r, c) != element.negated))
+        return out
+
+    def writes(self) -> list[tuple[Address, bool]]:
+        """The bits the coils change, top to bottom: WRT always, SET (→ 1) and RST (→ 0)
+        only when they get power."""
+        out: list[tuple[Address, bool]] = []
+        for _, coil, power in self.coils():
+            if coil.address is None:
+                continue
+            if coil.write is Write.OUT:
+                out.append((coil.address, power))
+            elif power:
+                out.append((coil.address, coil.write is Write.SET))
         return out
 
     def pins(self, anchor: Cell) -> list[bool]:

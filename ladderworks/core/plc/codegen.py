@@ -3,6 +3,12 @@
 Every stack level ST0..ST8 is a local variable (its depth is known at each op), every area a
 local bytearray, and each contact a shift-and-mask on a constant byte index. In fast mode a run
 of contacts becomes one expression; in monitored mode each op's result is stored in `M[op]`.
+
+The code is flat by construction: a JMP range is a guard `if not sk:` over its ops (`sk` is the
+id of the jump being taken, one variable per program unit), never a nested block, so any number
+of nested JMP/COM ranges generates. Each level and each subprogram is its own function, cut
+into chunk functions of at most CHUNK_OPS ops; a unit with labels (LBL) runs its chunks from a
+small dispatch loop, so JMPB can go backward. Dispatch is on the instruction table's fields.
 """
 
 from __future__ import annotations
@@ -13,22 +19,46 @@ from typing import Any
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.compiler.binary import BinaryFormatError, Op
-from ladderworks.core.compiler.checks import MAX_PUSHES
-from ladderworks.core.instructions import Kind
-from ladderworks.core.plc.functions import FunctionContext, FunctionImpl
+from ladderworks.core.compiler.checks import MAX_PUSHES, implementation_of
+from ladderworks.core.compiler.structure import LOOP_LIMIT, Unit, analyse, number_of
+from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
+from ladderworks.core.instructions import Combine, Flow, Kind, Write
+from ladderworks.core.plc.functions import FunctionImpl
 
-ScanFunction = Callable[[FunctionContext, bytearray], None]
+ScanFunction = Callable[..., None]  # scan(ctx, M, full=True)
 
 _AREA_NAMES = tuple(area.value for area in Area)
 _MAX_NESTING = 40  # parentheses per expression before it is stored in its variable
 _MAX_TERMS = 64  # operators per expression (Python's compiler recurses on long chains)
-_CONTACTS = frozenset({"RD", "RD.NOT", "AND", "AND.NOT", "OR", "OR.NOT", "RD.STK",
-                       "RD.NOT.STK"})
+CHUNK_OPS = 1500  # ops per generated function (keeps every function small for Python)
+SYSTEM_RELAY = 9091  # R9091.2/.3/.4: level 1/2/3 running
+_LEVEL_BITS = {1: 4, 2: 8, 3: 16}
+
+
+class ScanLoopError(DiagnosticError):
+    """A backward label jump repeated more than LOOP_LIMIT times in one scan (run stopped)."""
+
+    def __init__(self, label: int, line: int) -> None:
+        super().__init__([Diagnostic("endless-loop", {"label": label, "limit": LOOP_LIMIT},
+                                     line, 0)])
+
+
+class JumpToMain(Exception):
+    """JMPC: leave the subprograms and continue at a label of the level's main program."""
+
+    def __init__(self, label: int) -> None:
+        super().__init__(label)
+        self.label = label
 
 
 @dataclass(slots=True)
 class GeneratedScan:
-    """The generated source and the compiled scan function `scan(ctx, M)`."""
+    """The generated source and the compiled scan function `scan(ctx, M, full=True)`.
+
+    `M` is a list of one int per op (the monitored mode's power flow: a list, because storing
+    into a list is about 3x faster than into a bytearray); `full` False runs level 1 only
+    (a scan between two level-2 passes).
+    """
 
     source: str
     scan: ScanFunction
@@ -36,26 +66,25 @@ class GeneratedScan:
 
 @dataclass(slots=True)
 class _Range:
-    """An open JMP or COM range: COM's gate variable and the coils left (None: up to the end
-    instruction, JMPE or COME)."""
+    """An open JMP or COM range: its id (JMP) or gate variable (COM), and the coils left
+    (None: up to the end instruction, JMPE or COME)."""
 
-    variable: str
+    ident: int
     left: int | None
 
 
-def _count_coil(ranges: list[_Range]) -> bool:
-    """Count one coil in the innermost of `ranges`; True when it was that range's last coil.
+def _count_coil(ranges: list[_Range]) -> _Range | None:
+    """Count one coil in the innermost of `ranges`; the range it ended, if any.
 
     A coil counts only for the innermost open range (JMP and COM alike): a counted range
     nested inside another counts its own coils, and the outer one goes on counting after it.
     """
     if not ranges or ranges[-1].left is None:
-        return False
+        return None
     ranges[-1].left -= 1
     if ranges[-1].left > 0:
-        return False
-    ranges.pop()
-    return True
+        return None
+    return ranges.pop()
 
 
 def _counted(coils: object) -> int | None:
@@ -85,6 +114,10 @@ def _bit_expr(address: Address, inverted: bool) -> str:
     return f"({byte} & 1)"
 
 
+_DEFAULTS = ", ".join(f"{a}={a}" for a in _AREA_NAMES) + \
+    ", FN=FN, ST=ST, PA=PA, SK=SK, CM=CM, SV=SV"
+
+
 class _Generator:
     def __init__(self, ops: tuple[Op, ...], registry: dict[str, FunctionImpl],
                  disabled: Collection[int], monitored: bool) -> None:
@@ -92,21 +125,39 @@ class _Generator:
         self.registry = registry
         self.disabled = disabled
         self.monitored = monitored
-        self.lines: list[str] = []
-        self.indent = 1
+        self.structure = analyse([(op.spec, op.params) for op in ops])
+        self.out: list[str] = []  # every finished function
+        self.lines: list[str] = []  # the chunk being generated
         self.values: list[_Value] = [_Value("0")]
         self.impls: list[FunctionImpl] = []
         self.calls: list[int] = []  # op index of each function call
+        self.jumps: list[_Range] = []
         self.commons: list[_Range] = []
-        self.common_vars = 0
-        self.jumps: list[_Range] = []  # each an `if not act:` block of the scan code
-        self.jump_ended = False  # the op just generated was the last coil of a JMP n range
-        self.max_depth = 0
+        self.common_count = 0
+        self.unit_count = 0
+        self.chunk_count = 0
+        self.guarded = False
+        self.unit_numbers = {u.name: n for n, u in enumerate(self.structure.units())}
+        self.unit_number = 0
+        self.chunk_of_label: dict[int, int] = {}
+
+    # -- emitting --------------------------------------------------------------------------
 
     def emit(self, line: str) -> None:
-        self.lines.append("    " * self.indent + line)
+        """A line of an op's code: inside the `if not sk:` guard when a JMP range is open."""
+        if self.jumps and not self.guarded:
+            self.lines.append("    if not sk:")
+            self.guarded = True
+            self.uses_sk = True
+        self.lines.append(("        " if self.guarded else "    ") + line)
+
+    def emit_base(self, line: str) -> None:
+        """A line outside any guard (range ends)."""
+        self.guarded = False
+        self.lines.append("    " + line)
 
     def var(self, depth: int) -> str:
+        self.chunk_depth = max(self.chunk_depth, depth)
         return f"s{depth}"
 
     def store(self, depth: int) -> str:
@@ -125,93 +176,197 @@ class _Generator:
     def fail(self, index: int, reason: str) -> BinaryFormatError:
         return BinaryFormatError(f"{reason} at op {index}")
 
+    # -- chunks and units ------------------------------------------------------------------
+
+    def start_chunk(self, carried: int) -> None:
+        """Begin a chunk function; `carried` stack levels come from the previous chunk."""
+        self.lines = []
+        self.guarded = False
+        self.uses_sk = bool(self.jumps)
+        self.chunk_depth = 0
+        self.chunk_commons: set[int] = {r.ident for r in self.commons}
+        self.chunk_opened: set[int] = set()
+        self.carried = carried
+        self.values = [_Value(self.var(d)) for d in range(carried)] or [_Value("0")]
+
+    def end_chunk(self, unit: int, mid_network: bool, result: str) -> str:
+        """Finish the chunk: its prelude, body and return; the function's name."""
+        if mid_network:
+            self.store_all()
+            self.guarded = False
+            names = ", ".join(self.var(d) for d in range(len(self.values)))
+            self.lines.append(f"    SV[0] = ({names},)")
+        name = f"c{self.chunk_count}"
+        self.chunk_count += 1
+        head = [f"def {name}(ctx, M, {_DEFAULTS}):"]
+        head.append("    " + " = ".join(f"s{d}" for d in range(self.chunk_depth + 1)) + " = 0")
+        if self.carried:
+            head.append("    " + ", ".join(f"s{d}" for d in range(self.carried)) + ", = SV[0]")
+        if self.uses_sk:
+            head.append(f"    sk = SK[{unit}]")
+        for ident in sorted(self.chunk_commons):
+            head.append(f"    cm{ident} = 1" if ident in self.chunk_opened
+                        else f"    cm{ident} = CM[{ident}]")
+        self.out += [*head, *self.lines, f"    return {result}", ""]
+        return name
+
     def run(self) -> str:
-        previous_network = -1
-        for index, op in enumerate(self.ops):
-            if op.source.network != previous_network:
-                previous_network = op.source.network
-                self.values = [_Value("0")]
-            self.op(index, op)
-            if self.monitored and op.name != "JMP":  # JMP records its ACT before the jump
-                self.store_all()
-                self.emit(f"M[{index}] = {self.var(len(self.values) - 1)}")
-            if self.jump_ended:
-                self.end_counted_jump(index)
-        if any(jump.left is None for jump in self.jumps):
-            raise self.fail(len(self.ops), "JMP without JMPE")
-        # a JMP n with fewer than n coils after it skips to the end of the program
-        head = [f"def scan(ctx, M, {', '.join(f'{a}={a}' for a in _AREA_NAMES)}, "
-                "FN=FN, ST=ST, PA=PA):"]
-        depths = [self.var(d) for d in range(self.max_depth + 1)]
-        head.append("    " + " = ".join(depths) + " = 0")
-        if self.common_vars:
-            head.append("    " + " = ".join(f"cm{k}" for k in range(self.common_vars)) + " = 1")
+        units: dict[str, int] = {}
+        for unit in self.structure.units():
+            units[unit.name] = self.unit(unit)
+        body = ["def scan(ctx, M, full=True, R=R):"]
+        levels = self.structure.levels
         if self.monitored:
-            head.append("    M[:] = ZERO")
-        return "\n".join([*head, *self.lines, "    return None", ""])
+            first = levels.get(1)
+            if first is not None:
+                body += ["    if not full:", f"        M[{first.start}:{first.end}] = "
+                         f"ZERO[{first.start}:{first.end}]", "    else:", "        M[:] = ZERO"]
+            else:
+                body.append("    M[:] = ZERO")
+        for level in sorted(levels):
+            indent = "    " if level == 1 else "        "
+            if level > 1:
+                body.append("    if full:")
+            body.append(f"{indent}R[{SYSTEM_RELAY}] = R[{SYSTEM_RELAY}] & 227 | "
+                        f"{_LEVEL_BITS.get(level, 0)}")
+            body.append(f"{indent}U{units[levels[level].name]}(ctx, M)")
+        body.append(f"    R[{SYSTEM_RELAY}] &= 227")
+        return "\n".join([*self.out, *body, ""])
+
+    def unit(self, unit: Unit) -> int:
+        """Generate a unit's chunks and its function `U<n>`; returns n."""
+        number = self.unit_numbers[unit.name]
+        self.unit_number = number
+        self.current_unit = unit
+        self.unit_count = max(self.unit_count, number + 1)
+        self.jumps, self.commons, self.jump_ids = [], [], 0
+        labelled = bool(unit.labels)
+        starts, chunk_of_label = _chunk_plan(self.ops, unit)
+        self.chunk_of_label = chunk_of_label
+        label_starts = set(unit.labels.values())
+        chunks: list[str] = []
+        first_common = self.common_count
+        self.start_chunk(0)
+        previous = -1
+        for index in range(unit.start, unit.end):
+            op = self.ops[index]
+            new_network = op.source.network != previous
+            previous = op.source.network
+            at_label = index in label_starts
+            if index in starts and index != unit.start:
+                mid = not new_network and not at_label
+                depth = len(self.values) if mid else 0
+                result = str(len(chunks) + 1) if labelled else "None"
+                chunks.append(self.end_chunk(number, mid, result))
+                self.start_chunk(depth)
+            if at_label:
+                self.values = [_Value(self.var(d)) for d in range(len(self.values))]
+            elif new_network:
+                self.values = [_Value("0")]
+            self.op(index, op, labelled)
+        result = str(len(chunks) + 1) if labelled else "None"
+        chunks.append(self.end_chunk(number, False, result))
+        head = [f"def U{number}(ctx, M, SK=SK, CM=CM, ONES=ONES):"]
+        if self.jump_ids:
+            head.append(f"    SK[{number}] = 0")
+        if self.common_count > first_common:
+            head.append(f"    CM[{first_common}:{self.common_count}] = "
+                        f"ONES[{first_common}:{self.common_count}]")
+        if not labelled:
+            self.out += [*head, *(f"    {name}(ctx, M)" for name in chunks), ""]
+            return number
+        table = f"CH{number}"
+        labels = f"LB{number}"
+        self.out.append(f"{table} = ({', '.join(chunks)},)")
+        self.out.append(f"{labels} = {chunk_of_label!r}")
+        catch = unit.level > 0
+        self.out += [*head, "    pc = 0", "    n = 0", f"    while pc < {len(chunks)}:"]
+        pad = "            " if catch else "        "
+        if catch:
+            self.out.append("        try:")
+        self.out += [f"{pad}while pc < {len(chunks)}:",
+                     f"{pad}    nxt = {table}[pc](ctx, M)",
+                     f"{pad}    if nxt <= pc:",
+                     f"{pad}        n += 1",
+                     f"{pad}        if n > {LOOP_LIMIT}:",
+                     f"{pad}            LOOP({number}, nxt, {labels})",
+                     f"{pad}    pc = nxt"]
+        if catch:
+            self.out += ["        except JM as jump:", f"            pc = {labels}[jump.label]"]
+        self.out.append("")
+        return number
+
+    # -- ops -------------------------------------------------------------------------------
 
     def live_after(self, index: int) -> bool:
         """Whether the op after `index` goes on using this network's stack values."""
         nxt = self.ops[index + 1] if index + 1 < len(self.ops) else None
-        return (nxt is not None and nxt.source.network == self.ops[index].source.network
-                and nxt.name not in ("RD", "RD.NOT"))
+        if nxt is None or nxt.source.network != self.ops[index].source.network:
+            return False
+        spec = nxt.spec
+        return not (spec.combine is Combine.READ and spec.pushes == 0 and spec.operand)
 
-    def end_counted_jump(self, index: int) -> None:
-        """Close the block of a JMP n after its n-th coil (op `index`).
-
-        When the network goes on after that coil, its stack values read 0 if the jump was
-        taken (the skipped contacts were not evaluated).
-        """
-        self.jump_ended = False
-        live = self.live_after(index)
+    def close_jumps(self, ended: list[_Range], index: int, live: bool) -> None:
+        """End JMP ranges (the lowest id first opened): the taken one stops skipping; after a
+        counted range ending inside a network, its stack values read 0 if it was taken."""
         if live:
             self.store_all()
-        self.indent -= 1
+        low = min(r.ident for r in ended)
+        test = f"sk == {low}" if len(ended) == 1 else f"sk >= {low}"
+        self.emit_base(f"if {test}:")
+        self.lines.append(f"        sk = SK[{self.unit_number}] = 0")
         if live:
-            self.emit("else:")
-            self.emit("    " + " = ".join(self.var(d) for d in range(len(self.values))) + " = 0")
+            self.lines.append("        " + " = ".join(
+                self.var(d) for d in range(len(self.values))) + " = 0")
 
-    def count_coil(self) -> None:
-        """Count a coil (written or disabled) in the innermost COM and JMP ranges."""
-        _count_coil(self.commons)
-        if _count_coil(self.jumps):
-            self.jump_ended = True
-
-    def op(self, index: int, op: Op) -> None:
+    def op(self, index: int, op: Op, labelled: bool) -> None:
         spec = op.spec
         off = index in self.disabled
-        name = spec.name
+        ended: list[_Range] = []
         if spec.kind is Kind.BASIC:
-            if name in _CONTACTS:
+            if spec.write is not Write.NONE:
                 assert op.operand is not None
-                term = "0" if off else _bit_expr(op.operand, ".NOT" in name)
-                if off and name.startswith("OR"):
-                    return
-                if name.endswith(".STK"):
-                    if len(self.values) > MAX_PUSHES:
-                        raise self.fail(index, "stack deeper than ST8")
-                    self.values.append(_Value(term))
-                    self.max_depth = max(self.max_depth, len(self.values) - 1)
-                elif name.startswith("RD"):
-                    self.values[-1] = _Value(term)
-                elif name.startswith("AND"):
-                    self.values[-1] = self.combine(self.values[-1], "&", _Value(term))
-                else:
-                    self.values[-1] = self.combine(self.values[-1], "|", _Value(term))
-                return
-            if name in ("AND.STK", "OR.STK"):
-                if len(self.values) < 2:
-                    raise self.fail(index, f"{name} with nothing pushed")
-                top = self.values.pop()
-                operator = "&" if name == "AND.STK" else "|"
-                self.values[-1] = self.combine(self.values[-1], operator, top)
-                return
+                ended = self.write(index, op.operand, spec.write, spec.negated, off)
+            else:
+                self.logic(index, op, off)
+        elif spec.kind is Kind.FUNCTION:
+            ended = self.function(index, op, off, labelled)
+        if self.monitored and spec.flow not in (Flow.JUMP, Flow.LABEL_JUMP,
+                                                Flow.LABEL_JUMP_MAIN, Flow.CALL):
+            top = len(self.values) - 1
+            for depth in range(top):
+                self.store(depth)
+            name = self.var(top)
+            value = self.values[top].expr
+            self.emit(f"M[{index}] = {name}" if value == name
+                      else f"M[{index}] = {name} = {value}")
+            self.values[top] = _Value(name)
+        if ended:
+            self.close_jumps(ended, index, self.live_after(index))
+
+    def logic(self, index: int, op: Op, off: bool) -> None:
+        spec = op.spec
+        if spec.operand:
             assert op.operand is not None
-            self.write(index, op.operand, name == "WRT.NOT", off)
+            term = "0" if off else _bit_expr(op.operand, spec.negated)
+            if spec.pushes > 0:
+                if len(self.values) > MAX_PUSHES:
+                    raise self.fail(index, "stack deeper than ST8")
+                self.values.append(_Value(term))
+                self.var(len(self.values) - 1)
+            elif spec.combine is Combine.READ:
+                self.values[-1] = _Value(term)
+            elif off and spec.combine is Combine.OR:
+                return
+            else:
+                operator = "&" if spec.combine is Combine.AND else "|"
+                self.values[-1] = self.combine(self.values[-1], operator, _Value(term))
             return
-        if spec.kind is Kind.END:
-            return
-        self.function(index, op, off)
+        if len(self.values) < 2:
+            raise self.fail(index, f"{spec.name} with nothing pushed")
+        top = self.values.pop()
+        operator = "&" if spec.combine is Combine.AND else "|"
+        self.values[-1] = self.combine(self.values[-1], operator, top)
 
     def combine(self, left: _Value, operator: str, right: _Value) -> _Value:
         left_expr, right_expr = left.expr, right.expr
@@ -229,10 +384,17 @@ class _Generator:
             value = _Value(self.var(depth))
         return value
 
-    def write(self, index: int, address: Address, inverted: bool, off: bool) -> None:
+    def count_coil(self) -> list[_Range]:
+        """Count a coil (written or disabled) in the innermost COM and JMP ranges; the JMP
+        range it ended, if any."""
+        _count_coil(self.commons)
+        ended = _count_coil(self.jumps)
+        return [ended] if ended is not None else []
+
+    def write(self, index: int, address: Address, kind: Write, inverted: bool,
+              off: bool) -> list[_Range]:
         if off:
-            self.count_coil()  # a disabled coil still counts in a COM or JMP range
-            return
+            return self.count_coil()  # a disabled coil still counts in a COM or JMP range
         depth = len(self.values) - 1
         for lower in range(depth):
             self.store(lower)
@@ -245,7 +407,7 @@ class _Generator:
             condition = self.store(depth)
             if inverted:
                 condition = f"({condition} ^ 1)"
-            condition = f"{self.commons[-1].variable} & {condition}"
+            condition = f"cm{self.commons[-1].ident} & {condition}"
             inverted = False
         elif value.expr == self.var(depth):
             condition = value.expr
@@ -255,15 +417,18 @@ class _Generator:
         else:
             condition = value.expr
         on, off_line = f"{byte} |= {mask}", f"{byte} &= {0xFF ^ mask}"
+        if kind is Write.RESET:
+            on = off_line
         if inverted:
             on, off_line = off_line, on
         self.emit(f"if {condition}:")
         self.emit(f"    {on}")
-        self.emit("else:")
-        self.emit(f"    {off_line}")
-        self.count_coil()
+        if kind is Write.OUT:
+            self.emit("else:")
+            self.emit(f"    {off_line}")
+        return self.count_coil()
 
-    def function(self, index: int, op: Op, off: bool) -> None:
+    def function(self, index: int, op: Op, off: bool, labelled: bool) -> list[_Range]:
         spec = op.spec
         count = len(spec.inputs)
         if count and len(self.values) < count:
@@ -271,54 +436,111 @@ class _Generator:
         self.store_all()
         first = len(self.values) - count if count else len(self.values) - 1
         inputs = [self.var(d) for d in range(first, len(self.values))]
-        name = spec.name
-        if name == "JMP":
-            if self.monitored:
-                self.emit(f"M[{index}] = {inputs[-1]}")
-            self.emit(f"if not {inputs[-1]}:" if not off else "if 1:")
-            self.indent += 1
-            self.emit("pass")
-            self.jumps.append(_Range("", _counted(op.params[0] if op.params else 0)))
-        elif name == "JMPE":
+        act = inputs[-1] if inputs else "1"
+        flow = spec.flow
+        ended: list[_Range] = []
+        if flow in (Flow.JUMP, Flow.LABEL_JUMP, Flow.LABEL_JUMP_MAIN, Flow.CALL) \
+                and self.monitored:
+            self.emit(f"M[{index}] = {act}")
+        target = number_of(op.params[0]) if op.params else None
+        if flow is Flow.JUMP:
+            self.jump_ids += 1
+            if not off:
+                self.emit(f"if {act}:")
+                self.emit(f"    sk = SK[{self.unit_number}] = {self.jump_ids}")
+                self.uses_sk = True
+            self.guarded = False  # the ops after the JMP test `sk` afresh
+            self.jumps.append(_Range(self.jump_ids, _counted(op.params[0] if op.params else 0)))
+        elif flow is Flow.JUMP_END:
             # ends the innermost JMP 0, and any JMP n opened inside it that is still counting
             while self.jumps and self.jumps[-1].left is not None:
-                self.jumps.pop()
-                self.indent -= 1
+                ended.append(self.jumps.pop())
             if not self.jumps:
                 raise self.fail(index, "JMPE without JMP")
-            self.jumps.pop()
-            self.indent -= 1
-        elif name == "COM":
-            variable = f"cm{self.common_vars}"
-            self.common_vars += 1
-            act = "1" if off else inputs[-1]
+            ended.append(self.jumps.pop())
+        elif flow is Flow.COMMON:
+            ident = self.common_count
+            self.common_count += 1
+            self.chunk_commons.add(ident)
+            self.chunk_opened.add(ident)
+            gate = "1" if off else act
             if self.commons:
-                act = f"{act} & {self.commons[-1].variable}"
-            self.emit(f"{variable} = {act}")
-            self.commons.append(_Range(variable, _counted(op.params[0] if op.params else 0)))
-        elif name == "COME":
+                gate = f"{gate} & cm{self.commons[-1].ident}"
+            self.emit(f"cm{ident} = CM[{ident}] = {gate}")
+            self.commons.append(_Range(ident, _counted(op.params[0] if op.params else 0)))
+        elif flow is Flow.COMMON_END:
             for k in range(len(self.commons) - 1, -1, -1):
                 if self.commons[k].left is None:
                     del self.commons[k]
                     break
-        else:
-            impl = self.registry.get(name)
+        elif flow in (Flow.CALL, Flow.CALL_ALWAYS):
+            if not off and target in self.structure.subprograms:
+                callee = self.structure.subprograms[target]
+                name = f"U{self.unit_numbers[callee.name]}"
+                self.emit(f"if {act}:" if flow is Flow.CALL else "if 1:")
+                self.emit(f"    {name}(ctx, M)")
+        elif flow is Flow.LABEL_JUMP:
+            if not off and target is not None and labelled and target in self.chunk_of_label:
+                self.emit(f"if {act}:")
+                self.emit(f"    return {self.chunk_of_label[target]}")
+        elif flow is Flow.LABEL_JUMP_MAIN:
+            if not off and target is not None:
+                self.emit(f"if {act}:")
+                self.emit(f"    raise JM({target})")
+        elif flow is Flow.NONE:
+            impl = implementation_of(spec, self.registry)
             if impl is None:
-                raise BinaryFormatError(f"{name} at op {index} is not implemented")
+                raise BinaryFormatError(f"{spec.name} at op {index} is not implemented")
             call = len(self.impls)
             self.impls.append(impl)
             self.calls.append(index)
-            target = self.var(first)
+            out = self.var(first)
             if off:
-                self.emit(f"{target} = 0")
+                self.emit(f"{out} = 0")
             else:
-                self.emit(f"{target} = FN[{call}](ctx, ST[{call}], ({', '.join(inputs)},), "
+                self.emit(f"{out} = FN[{call}](ctx, ST[{call}], ({', '.join(inputs)},), "
                           f"PA[{call}])")
         del self.values[first + 1:]
-        if name in ("JMP", "JMPE", "COM", "COME"):
-            self.values[first] = _Value("0")
-        else:
+        if flow is Flow.NONE:
             self.values[first] = _Value(self.var(first))
+        else:
+            self.values[first] = _Value("0")
+        return ended
+
+
+
+def _chunk_plan(ops: tuple[Op, ...], unit: Unit) -> tuple[set[int], dict[int, int]]:
+    """Where a unit's chunks start (op indices), and the chunk each of its labels starts.
+
+    A chunk ends after CHUNK_OPS ops (at a network start if one comes in the last quarter);
+    in a unit with labels every LBL starts a chunk (the dispatch loop's jump targets).
+    """
+    starts = {unit.start}
+    chunk_of_label: dict[int, int] = {}
+    by_index = {index: label for label, index in unit.labels.items()}
+    size = 0
+    for index in range(unit.start, unit.end):
+        network_start = index == unit.start or \
+            ops[index].source.network != ops[index - 1].source.network
+        if index != unit.start and (index in by_index or size >= CHUNK_OPS or (
+                network_start and size >= CHUNK_OPS * 3 // 4)):
+            starts.add(index)
+            size = 0
+        if index in by_index:
+            chunk_of_label[by_index[index]] = len(starts) - 1
+        size += 1
+    return starts, chunk_of_label
+
+
+def _loop(ops: tuple[Op, ...], units: list[Unit]) -> Callable[..., None]:
+    """The dispatch loop's stop: raise ScanLoopError naming the label jumped to."""
+
+    def loop(unit: int, chunk: int, labels: dict[int, int]) -> None:
+        label = next((k for k, v in labels.items() if v == chunk), 0)
+        index = units[unit].labels.get(label, 0)
+        raise ScanLoopError(label, ops[index].source.line if index < len(ops) else 0)
+
+    return loop
 
 
 def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
@@ -339,7 +561,14 @@ def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
     namespace["FN"] = tuple(generator.impls)
     namespace["ST"] = tuple(states[index] for index in generator.calls)
     namespace["PA"] = tuple(ops[index].params for index in generator.calls)
-    namespace["ZERO"] = bytes(len(ops))
+    namespace["ZERO"] = [0] * len(ops)
+    namespace["SK"] = [0] * max(1, generator.unit_count)
+    namespace["CM"] = [1] * max(1, generator.common_count)
+    namespace["ONES"] = [1] * max(1, generator.common_count)
+    namespace["SV"] = [()]
+    namespace["JM"] = JumpToMain
+    namespace["LOOP"] = _loop(ops, generator.structure.units())
     code = compile(source, "<ladder scan>", "exec")
     exec(code, namespace)
     return GeneratedScan(source, namespace["scan"])
+

@@ -5,6 +5,7 @@ from __future__ import annotations
 import threading
 from collections import deque
 from collections.abc import Iterable
+from dataclasses import fields
 from typing import Any
 
 from ladderworks.core.address import Address, Area
@@ -23,7 +24,8 @@ ALARM_LOG_CAPACITY = 4096  # A-area changes kept until a view takes them
 # Kept on a cold start (and across stop): keep relays, data table, timer and counter tables.
 RETAINED_AREAS: frozenset[Area] = frozenset({Area.K, Area.D, Area.T, Area.C})
 # Cleared on a cold start; X and F are the machine's and CNC's, never touched by the engine.
-CLEARED_AREAS: tuple[Area, ...] = (Area.Y, Area.G, Area.R, Area.A)
+CLEARED_AREAS: tuple[Area, ...] = tuple(
+    area for area in Area if area not in RETAINED_AREAS and area not in (Area.X, Area.F))
 
 # System relay R9091: .0 always 0, .1 always 1, .5 a 200 ms clock, .6 a 1 s clock.
 SYSTEM_RELAY = 9091
@@ -33,10 +35,17 @@ def load_binary(data: bytes) -> BinaryProgram:
     """Decode a binary and re-run the compile checks on it (a hand-made or damaged file
     cannot reach the scan); raises DiagnosticError (BinaryFormatError for a bad file)."""
     binary = decode(data)
-    errors = [d for d in check(disassemble(data)) if d.is_error]
+    errors = [d for d in check(disassemble(data), binary.dialect) if d.is_error]
     if errors:
         raise DiagnosticError(errors)
     return binary
+
+
+def _context(memory: Memory, period_ms: int, dialect: str) -> FunctionContext:
+    """The functions' context; `dialect` is set when FunctionContext has the field."""
+    names = {f.name for f in fields(FunctionContext)}
+    extra: dict[str, Any] = {"dialect": dialect} if "dialect" in names else {}
+    return FunctionContext(memory, 0, period_ms, **extra)
 
 
 class ScanEngine:
@@ -49,9 +58,12 @@ class ScanEngine:
     """
 
     def __init__(self, binary: bytes | BinaryProgram, *, period_ms: int = DEFAULT_PERIOD_MS,
-                 memory: Memory | None = None) -> None:
+                 memory: Memory | None = None, divisions: int = 1) -> None:
         if period_ms <= 0:
             raise ValueError("the scan period must be at least 1 ms")
+        if divisions < 1:
+            raise ValueError("level 2 needs at least 1 division")
+        self.divisions = divisions  # scans (level-1 runs) per pass of levels 2 and 3
         self.program = binary if isinstance(binary, BinaryProgram) else load_binary(binary)
         self.memory = memory if memory is not None else Memory()
         self.period_ms = period_ms
@@ -61,6 +73,7 @@ class ScanEngine:
         self.force_table = ForceTable()
         self.trace: TraceSampler | None = None
         self.power_flow = bytearray(len(self.program.ops))
+        self._flow = [0] * len(self.program.ops)  # what the monitored code writes
         # every change of the A area, with the time of the scan that made it (newest last)
         self.alarm_log: deque[tuple[int, bytes]] = deque(maxlen=ALARM_LOG_CAPACITY)
         self._alarm_bits = bytes(self.memory.areas[Area.A])
@@ -68,7 +81,7 @@ class ScanEngine:
         self._registry = load_all()
         self._states: list[dict[str, Any]] = [{} for _ in self.program.ops]
         self._variants: dict[tuple[bool, frozenset[int]], GeneratedScan] = {}
-        self._ctx = FunctionContext(self.memory, 0, period_ms)
+        self._ctx = _context(self.memory, period_ms, self.program.dialect)
         self._current = self._variant()
 
     # -- the scan ------------------------------------------------------------------------
@@ -98,8 +111,12 @@ class ScanEngine:
             ctx.scan_ms = self.period_ms
             self._system_relays(now)
             self.force_table.apply(self.memory)
-            self._current.scan(ctx, self.power_flow)
-            self.force_table.apply(self.memory)
+            try:
+                self._current.scan(ctx, self._flow, self.scan_count % self.divisions == 0)
+                if self._monitored:
+                    self.power_flow[:] = bytes(self._flow)
+            finally:
+                self.force_table.apply(self.memory)
             alarms = self.memory.areas[Area.A]
             if alarms != self._alarm_bits:  # ~100 ns: the alarm panel misses no pulse
                 self._alarm_bits = bytes(alarms)
@@ -145,7 +162,9 @@ class ScanEngine:
             self.memory.clear(*CLEARED_AREAS)
             for state in self._states:
                 state.clear()
+            self._ctx.power_on()  # DIFU/DIFD edge memories are shared by number, not per call
             self.power_flow[:] = bytes(len(self.power_flow))
+            self._flow[:] = [0] * len(self._flow)
 
     # -- monitoring ----------------------------------------------------------------------
 

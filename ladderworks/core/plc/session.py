@@ -102,9 +102,11 @@ class ScanFigures:
 class PlcRun:
     """One PLC: the loaded program's engine, its memory, forces, trace, alarms and parameters."""
 
-    def __init__(self, *, realtime: bool = False, period_ms: int = DEFAULT_PERIOD_MS) -> None:
+    def __init__(self, *, realtime: bool = False, period_ms: int = DEFAULT_PERIOD_MS,
+                 divisions: int = 1) -> None:
         self.realtime = realtime  # start() runs a wall-clock thread; else the virtual clock
         self.period_ms = period_ms
+        self.divisions = divisions  # level 2 and 3 run every `divisions` scans (docs/engine.md)
         self.memory = Memory()
         self.engine: ScanEngine | None = None
         self.binary: BinaryProgram | None = None
@@ -126,7 +128,8 @@ class PlcRun:
              program: Program | None = None) -> list[Diagnostic]:
         """Load a binary (stops first): cold start, then the parameters; [] when loaded."""
         try:
-            engine = ScanEngine(binary, period_ms=self.period_ms, memory=self.memory)
+            engine = ScanEngine(binary, period_ms=self.period_ms, memory=self.memory,
+                                divisions=self.divisions)
         except DiagnosticError as error:
             return list(error.diagnostics)
         self.stop()

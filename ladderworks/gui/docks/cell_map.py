@@ -11,8 +11,9 @@ from dataclasses import dataclass, field
 from ladderworks.core.address import Address
 from ladderworks.core.compiler.binary import BinaryProgram, Op
 from ladderworks.core.il.program import Instruction, Network, Program
+from ladderworks.core.instructions import Write
 from ladderworks.core.ladder.decompose import NodeNets, read_grid
-from ladderworks.core.ladder.logic import code_logic
+from ladderworks.core.ladder.logic import code_rung
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork, Wire
 from ladderworks.core.ladder.power import powered_nets
 
@@ -52,38 +53,25 @@ def program_matches(program: Program, binary: BinaryProgram) -> bool:
 
 
 def standard_cells(network: LadderNetwork) -> list[tuple[Cell | None, Instruction]]:
-    """The standard coding of a drawn network, each instruction with the cell it comes from
-    (None for stack operations); [] when the network cannot be coded."""
+    """The core's standard coding of a drawn network (output chains included), each
+    instruction with the cell it comes from (None for stack operations); [] when the network
+    cannot be coded."""
     rung, _ = read_grid(network)
     if rung is None:
         return []
     cells: list[Cell | None] = []
-    code: list[Instruction] = []
-    box_cell = None
-    coil_cells = sorted(cell for cell, element in network.cells.items()
-                        if isinstance(element, Coil))
-    if rung.box is not None:
-        box_cell = next(cell for cell, element in network.cells.items()
-                        if isinstance(element, FunctionBox))
-        for index, logic in enumerate(rung.inputs):
-            code.extend(code_logic(logic, index > 0, cells))
-        code.append(Instruction(rung.box.name, params=rung.box.params))
-        cells.append(box_cell)
-    elif rung.logic is not None:
-        code.extend(code_logic(rung.logic, False, cells))
-    for cell, coil in zip(coil_cells, rung.coils, strict=False):
-        code.append(Instruction("WRT.NOT" if coil.negated else "WRT", coil.address))
-        cells.append(cell)
+    code = code_rung(rung, cells)
     return list(zip(cells, code, strict=True))
 
 
 def _same_element(element: object, op: Op) -> bool:
+    spec = op.spec
     if isinstance(element, Contact):
-        return (op.spec.operand and not op.spec.writes and op.operand == element.address
-                and (".NOT" in op.name) == element.negated)
+        return (spec.is_contact and op.operand == element.address
+                and spec.negated == element.negated)
     if isinstance(element, Coil):
-        return op.spec.writes and op.operand == element.address and (
-            op.name == "WRT.NOT") == element.negated
+        return (spec.is_coil and op.operand == element.address and spec.write is element.write
+                and spec.negated == element.negated)
     if isinstance(element, FunctionBox):
         return op.name == element.name and tuple(op.params) == tuple(element.params)
     return False
@@ -133,8 +121,9 @@ def network_power(network: LadderNetwork, value: Callable[[Address], int],
     """Power through a drawn network for the bit values `value` (memory after a scan).
 
     A contact passes power left to right when closed; a disabled contact is open, as the
-    engine runs it. A coil is energised when its bit is 1. A box's output is the engine's
-    recorded result of its op (`flow`, when monitored), else the bit of its first coil."""
+    engine runs it. A WRT / WRT.NOT coil is energised when its bit is 1; a SET or RST coil
+    when power reaches it (that is when it acts). A box's output is the engine's recorded
+    result of its op (`flow`, when monitored), else the bit of its first WRT coil."""
     cells = cells or {}
     forced = forced or {}
     power = NetworkPower()
@@ -162,7 +151,7 @@ def network_power(network: LadderNetwork, value: Callable[[Address], int],
                 out = bool(flow[index])
             else:
                 coil = next((e for e in network.cells.values() if isinstance(e, Coil)
-                             and e.address is not None), None)
+                             and e.address is not None and e.write is Write.OUT), None)
                 out = coil is not None and bool(value(coil.address)) != coil.negated
             if out and index not in disabled:
                 power.box_out.add(anchor)
@@ -180,8 +169,10 @@ def network_power(network: LadderNetwork, value: Callable[[Address], int],
     for anchor, box in boxes:
         power.box_pins[anchor] = [(anchor[0] + p, anchor[1]) in power.nodes for p in box.pins]
     for (r, c), element in network.cells.items():
-        if (isinstance(element, Coil) and element.address is not None
-                and bool(value(element.address)) and (r, c) not in off):
+        if not isinstance(element, Coil) or element.address is None or (r, c) in off:
+            continue
+        on = bool(value(element.address)) if element.write is Write.OUT else (r, c) in power.nodes
+        if on:
             power.coils.add((r, c))
     return power
 

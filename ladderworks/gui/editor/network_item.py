@@ -10,7 +10,7 @@ from PySide6.QtWidgets import QGraphicsItem, QStyleOptionGraphicsItem, QWidget
 
 from ladderworks.core.il import print_instruction
 from ladderworks.core.il.printer import format_params
-from ladderworks.core.instructions import lookup
+from ladderworks.core.instructions import Write
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
 from ladderworks.gui.editor.geometry import (
     CELL_H,
@@ -23,6 +23,7 @@ from ladderworks.gui.editor.geometry import (
     network_height,
     network_width,
 )
+from ladderworks.gui.translation import instruction_label
 
 INK = QColor("#1a1a1a")
 RAIL = QColor("#1f4e79")
@@ -173,6 +174,10 @@ class NetworkItem(QGraphicsItem):
         painter.drawArc(QRectF(right - 14, mid - 11, 14, 22), -80 * 16, 160 * 16)
         if element.negated:
             painter.drawLine(QPointF(left, mid + 11), QPointF(right, mid - 11))
+        if element.write is not Write.OUT:  # (S) / (R), as LADDER-III draws them
+            painter.setFont(label_font)
+            painter.drawText(QRectF(left, mid - 9, right - left, 18), Qt.AlignmentFlag.AlignCenter,
+                             "S" if element.write is Write.SET else "R")
         self._labels(painter, element, x, y, label_font, small_font)
 
     def _paint_box(self, painter: QPainter, box: FunctionBox, x: float, y: float,
@@ -188,7 +193,7 @@ class NetworkItem(QGraphicsItem):
             pin = box.pins[index] if index < len(box.pins) else index
             py = y + pin * CELL_H + CELL_H / 2
             painter.drawLine(QPointF(x, py), QPointF(x + 10, py))
-            painter.drawText(QRectF(x + 12, py - 7, 40, 14), Qt.AlignmentFlag.AlignLeft, name)
+            painter.drawText(QRectF(x + 12, py - 7, 60, 14), Qt.AlignmentFlag.AlignLeft, name)
         if box.has_output:
             py = y + CELL_H / 2
             painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
@@ -196,9 +201,8 @@ class NetworkItem(QGraphicsItem):
                              Qt.AlignmentFlag.AlignRight, "W1")
         painter.setFont(label_font)
         painter.drawText(QRectF(rect.left(), rect.top() + 2, rect.width(), 16),
-                         Qt.AlignmentFlag.AlignHCenter, box.name)
-        spec = lookup(box.name)
-        params = " ".join(format_params(spec, box.params) if spec else map(str, box.params))
+                         Qt.AlignmentFlag.AlignHCenter, instruction_label(box.spec))
+        params = " ".join(format_params(box.spec, box.params))
         painter.setFont(small_font)
         metrics = QFontMetricsF(small_font)
         if params:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 
 from PySide6.QtCore import QCoreApplication, QEvent, QPoint, QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import (
@@ -30,8 +31,8 @@ from PySide6.QtWidgets import (
 from ladderworks.core import ladder as core
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, has_errors
-from ladderworks.core.il import Program
-from ladderworks.core.instructions import lookup
+from ladderworks.core.il import Instruction, Program, print_instruction
+from ladderworks.core.instructions import Write, lookup
 from ladderworks.core.ladder import (
     Coil,
     Contact,
@@ -328,6 +329,9 @@ class LadderEditor(QGraphicsView):
             self._place_bit(index, row, col, Contact(negated=tool is Tool.INPUT_NOT))
         elif tool in (Tool.OUTPUT, Tool.OUTPUT_NOT):
             self._place_bit(index, row, col, Coil(negated=tool is Tool.OUTPUT_NOT))
+        elif tool in (Tool.SET_COIL, Tool.RESET_COIL):
+            write = Write.SET if tool is Tool.SET_COIL else Write.RESET
+            self._place_bit(index, row, col, Coil(write=write))
         elif tool is Tool.INVERT:
             self.run_edit(
                 index, lambda n: core.invert(n, row, col), translate("LadderEditor", "NOT")
@@ -362,7 +366,12 @@ class LadderEditor(QGraphicsView):
         if found is not None and type(found[1]) is type(element):
             old = found[1]
             assert isinstance(old, Contact | Coil)
-            if old.negated != element.negated:
+            if isinstance(old, Coil) and isinstance(element, Coil) and old.write != element.write:
+                kind = replace(old, negated=element.negated, write=element.write)
+                self.run_edit(
+                    index, lambda n: core.replace_element(n, row, col, kind),
+                    translate("LadderEditor", "Place coil"))
+            elif old.negated != element.negated:
                 self.run_edit(
                     index, lambda n: core.invert(n, row, col), translate("LadderEditor", "NOT")
                 )
@@ -423,11 +432,9 @@ class LadderEditor(QGraphicsView):
         self, index: int, row: int, col: int, name: str, box: FunctionBox | None = None
     ) -> None:
         """The function property table; on OK the box is placed (or its parameters set)."""
-        spec = lookup(name)
+        spec = box.spec if box is not None else lookup(name)
         if spec is None:
             return
-        from ladderworks.core.il import Instruction
-
         current = Instruction(box.name, params=box.params) if box is not None else None
         dialog = FunctionDialog(spec, current, self, box.comment if box is not None else "")
         self.function_dialog = dialog
@@ -791,8 +798,7 @@ class LadderEditor(QGraphicsView):
                 if element.comment:
                     parts.append(element.comment)
             elif isinstance(element, FunctionBox):
-                spec = element.spec
-                parts.append(f"{spec.name} {' '.join(str(p) for p in element.params)}")
+                parts.append(print_instruction(Instruction(element.name, params=element.params)))
         return "  |  ".join(parts)
 
     # -- zoom ---------------------------------------------------------------------------------

@@ -88,11 +88,22 @@ def test_source_map_points_at_network_instruction_and_line() -> None:
     assert binary.op_at_line(8) == 6
 
 
-def test_header_holds_magic_version_and_checksum() -> None:
+def resign(data: bytearray) -> bytes:
+    """`data` with its checksum made valid again (CRC-32 of header bytes 0-19, then the body)."""
+    head = bytes(data[:HEADER_SIZE - 4])
+    data[HEADER_SIZE - 4:HEADER_SIZE] = zlib.crc32(
+        bytes(data[HEADER_SIZE:]), zlib.crc32(head)).to_bytes(4, "little")
+    return bytes(data)
+
+
+def test_header_holds_magic_version_flags_and_checksum() -> None:
     data = compile(parse(MIXED).program)
-    magic, version, header_size, count, _params, crc = struct.unpack_from("<4sHHIII", data)
-    assert (magic, version, header_size, count) == (MAGIC, FORMAT_VERSION, HEADER_SIZE, 21)
-    assert crc == zlib.crc32(data[HEADER_SIZE:])
+    magic, version, header_size, count, _params, flags, _, crc = struct.unpack_from(
+        "<4sHHIIHHI", data)
+    assert (magic, version, header_size, count, flags) == (
+        MAGIC, FORMAT_VERSION, HEADER_SIZE, 21, 0)
+    assert crc == zlib.crc32(data[HEADER_SIZE:], zlib.crc32(data[:HEADER_SIZE - 4]))
+    assert resign(bytearray(data)) == data
 
 
 def reason(data: bytes) -> str:
@@ -130,7 +141,7 @@ def test_version_1_binary_with_a_bare_jmp_is_refused_with_the_reason() -> None:
     # version 1 wrote JMP (SUB 10) with no parameter: op record a = 0
     op = struct.pack("<BBHI", 0x80, 0, 10, 0)
     body = struct.pack("<BBHI", 1, 0, 0, 0) + op + struct.pack("<IHIH", 0, 0, 2, 1) * 2
-    header = struct.pack("<4sHHIII", MAGIC, 1, HEADER_SIZE, 2, 0, zlib.crc32(body))
+    header = struct.pack("<4sHHIII", MAGIC, 1, 20, 2, 0, zlib.crc32(body))
     text = reason(header + body)
     assert "version 1 is no longer supported" in text
     assert "JMP" in text and "compile the program again" in text
@@ -149,8 +160,7 @@ def test_jmp_keeps_its_coil_count_in_the_binary() -> None:
 def test_bad_opcode_with_a_valid_checksum_is_refused() -> None:
     data = bytearray(compile(parse(MIXED).program))
     data[HEADER_SIZE] = 0x55
-    data[16:20] = zlib.crc32(bytes(data[HEADER_SIZE:])).to_bytes(4, "little")
-    assert "unknown opcode 85" in reason(bytes(data))
+    assert "unknown opcode 85" in reason(resign(data))
 
 
 def test_random_damage_with_a_valid_checksum_never_crashes_the_engine() -> None:
@@ -162,9 +172,8 @@ def test_random_damage_with_a_valid_checksum_never_crashes_the_engine() -> None:
         data = bytearray(good)
         for _ in range(rng.randint(1, 4)):
             data[rng.randrange(len(data))] = rng.randrange(256)
-        data[16:20] = zlib.crc32(bytes(data[HEADER_SIZE:])).to_bytes(4, "little")
         try:
-            ScanEngine(bytes(data)).run_scans(3)
+            ScanEngine(resign(data)).run_scans(3)
         except DiagnosticError as error:  # BinaryFormatError or a failed check
             assert error.diagnostics
 

@@ -105,7 +105,7 @@ def test_ring_counter_counts_stations_1_to_12(binary: bytes) -> None:
 def test_cli_runs_ten_thousand_scans(capsys: pytest.CaptureFixture[str]) -> None:
     code = main(["run", str(EXAMPLE), "--scans", "10000", "--set", "X41=2",
                  "--set", f"F26={0x11}", "--set", "F7.3=1",
-                 "--print", "D200:2", "R230", "R232", "R231.0"])
+                 "--print", "D200:2,R230,R232,R231.0"])
     assert code == 0
     lines = capsys.readouterr().out.splitlines()
     assert "D200:2 = 10000" in lines

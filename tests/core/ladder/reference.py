@@ -1,4 +1,4 @@
-"""A tiny reference stack machine for the basic instructions (RD … OR.STK, WRT), for tests."""
+"""A tiny reference stack machine for the basic instructions (RD … OR.STK, WRT, SET, RST)."""
 
 from __future__ import annotations
 
@@ -18,8 +18,8 @@ class Run:
 
 
 def run(instructions: list[Instruction], value: Callable[[Address], bool]) -> Run:
-    """Execute RD/AND/OR(.NOT)(.STK)/AND.STK/OR.STK/WRT(.NOT); a function records its inputs
-    (the whole stack) and leaves W1 = 0 in ST0."""
+    """Execute RD/AND/OR(.NOT)(.STK)/AND.STK/OR.STK/WRT(.NOT)/SET/RST; a function records its
+    inputs (the whole stack) and leaves W1 = 0 in ST0. SET/RST write only when ST0 = 1."""
     out = Run()
     stack: list[bool] = []
     for ins in instructions:
@@ -35,6 +35,10 @@ def run(instructions: list[Instruction], value: Callable[[Address], bool]) -> Ru
             continue
         if name.startswith("WRT"):
             out.writes.append((ins.operand, stack[-1] != name.endswith(".NOT")))
+            continue
+        if name in ("SET", "RST"):
+            if stack[-1]:
+                out.writes.append((ins.operand, name == "SET"))
             continue
         assert ins.operand is not None
         bit = value(ins.operand) != (".NOT" in name)

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from ladderworks.core.address import Address, Area
 from ladderworks.core.il import parse, parse_file, print_program
 from ladderworks.core.il.program import Instruction, Network, Program
-from ladderworks.core.instructions import ENDS, SEED_FUNCTIONS
+from ladderworks.core.instructions import ENDS, FUNCTIONS, Write
 from ladderworks.core.ladder.logic import Leaf, Logic, Parallel, Rung, Series, code_rung
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox
 
@@ -66,23 +66,48 @@ def _fits(logic: Logic) -> bool:
     return w <= 8 and h <= 12 and pushes <= 6
 
 
+# One line of text per FANUC PMC instruction (the seed's come from all_functions.LAD).
+PMC_EXAMPLES: dict[str, str] = {
+    "DIFU": "DIFU 5", "DIFD": "DIFD 6", "MOVB": "MOVB R10 R11", "MOVW": "MOVW D932 R5488",
+    "MOVN": "MOVN 4 R10 R20", "MOVD": "MOVD R10 R20", "LOGAND": "AND 1 R10 255 R11",
+    "LOGOR": "OR 1001 R10 R12 R11", "EOR": "EOR 1001 D5764 R5242 R5242",
+    "NOT": "NOT 1 R14 G12", "TMRBF": "TMRBF 270 30000", "CTRB": "CTRB 2 15",
+    "RNGB": "RNGB R1 R2 R3", "RNGW": "RNGW R6056 R6058 R14", "RNGD": "RNGD R1 R5 R9",
+    "CALL": "CALL P5", "CALLU": "CALLU P7", "SP": "SP P5", "SPE": "SPE", "JMPB": "JMPB L3",
+    "JMPC": "JMPC L4", "LBL": "LBL L3", "AXCTL": "AXCTL 1 R6076", "WINDR": "WINDR R200",
+    "WINDW": "WINDW R200", "EXIN": "EXIN R5472", "DISPB": "DISPB 2",
+}
+
+
 @lru_cache(maxsize=1)
 def function_examples() -> dict[str, Instruction]:
-    """One real instruction per functional instruction (from all_functions.LAD)."""
+    """One real instruction per functional instruction (all_functions.LAD, PMC_EXAMPLES)."""
     program = parse_file(EXAMPLES / "all_functions.LAD").program
     found: dict[str, Instruction] = {}
     for ins in program.instructions():
         if ins.spec.kind.value != "basic":
             found.setdefault(ins.name, ins)
+    for name, text in PMC_EXAMPLES.items():
+        result = parse(f"%@3\n{text}\n%\n")
+        assert result.ok, result.diagnostics
+        found[name] = result.program.instructions()[0]
     for spec in ENDS:
         found.setdefault(spec.name, Instruction(spec.name))
     return found
 
 
-coils = st.builds(Coil, outputs, st.booleans(), comments, leads)
+def _plain_set_reset(coil: Coil) -> Coil:
+    """SET and RST have no inverted form."""
+    return coil if coil.write is Write.OUT else Coil(coil.address, False, coil.comment,
+                                                     coil.lead, coil.write)
+
+
+coils = st.builds(Coil, outputs, st.booleans(), comments, leads,
+                  st.sampled_from([Write.OUT, Write.OUT, Write.SET, Write.RESET])
+                  ).map(_plain_set_reset)
 _LOGIC = {True: logic_blocks(contacts(True)), False: logic_blocks(contacts(False))}
 _INPUTS = {True: logic_blocks(contacts(True), 4), False: logic_blocks(contacts(False), 4)}
-_NAMES = sorted(s.name for s in SEED_FUNCTIONS + ENDS)
+_NAMES = sorted(s.name for s in FUNCTIONS + ENDS)
 
 
 @st.composite

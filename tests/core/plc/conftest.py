@@ -8,7 +8,9 @@ from pathlib import Path
 
 from ladderworks.core.address import Address, Area, parse_address
 from ladderworks.core.compiler import compile
-from ladderworks.core.il import parse, parse_file
+from ladderworks.core.il import Instruction, Network, Program, parse, parse_file
+from ladderworks.core.il.program import ParamValue
+from ladderworks.core.instructions import Combine, Kind, spec_for
 from ladderworks.core.plc.engine import ScanEngine
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "resources" / "examples"
@@ -76,3 +78,43 @@ def assert_matches_reference(text: str, reference_scan: Callable[[ScanEngine], N
         engine.scan()
         reference_scan(reference)
         assert engine.memory.areas[Area.R][0:3] == reference.memory.areas[Area.R][0:3], text
+
+
+def build(text: str) -> Program:
+    """A Program built in code from lines `NAME [operand | params...]` (`P5`, `L3` are numbers).
+
+    Needed while the parser does not read P/L parameters. A new network starts at each RD and
+    at each instruction without control inputs (SP, SPE, LBL, CALLU, END1 ...).
+    """
+    networks: list[Network] = []
+    for line_number, line in enumerate(text.strip().splitlines(), 1):
+        words = line.split()
+        if not words:
+            continue
+        name, args = words[0], words[1:]
+        spec = spec_for(name, len(args))
+        assert spec is not None, name
+        operand = None
+        params: list[ParamValue] = []
+        if spec.kind is Kind.BASIC:
+            operand = parse_address(args[0]) if args else None
+        else:
+            for word in args:
+                if word[0] in "PL" and word[1:].isdigit():
+                    params.append(int(word[1:]))
+                elif word.lstrip("-").isdigit():
+                    params.append(int(word))
+                else:
+                    params.append(parse_address(word))
+        new = (spec.kind is Kind.BASIC and spec.combine is Combine.READ and spec.pushes == 0) \
+            or (spec.kind is not Kind.BASIC and not spec.inputs)
+        if new or not networks:
+            networks.append(Network())
+        networks[-1].instructions.append(
+            Instruction(name, operand, tuple(params), line=line_number, column=1))
+    return Program(networks=networks)
+
+
+def engine_of(text: str, **options: object) -> ScanEngine:
+    """An engine running the program `build(text)`."""
+    return ScanEngine(compile(build(text)), **options)  # type: ignore[arg-type]

@@ -26,7 +26,7 @@ def test_compile_then_disasm_then_run_the_binary(tmp_path: Path,
     assert code == 0
     assert text.startswith("%@3\nRD.NOT X2.1\nAND.NOT X2.3\n")
     code, text, _ = run(capsys, "run", str(out), "--set", "X2.1=1", "--set", "X2.5=1",
-                        "--print", "G30", "R102")
+                        "--print", "G30", "--print", "R102")
     assert (code, text) == (0, "G30 = 100\nR102 = 32\n")
 
 
@@ -66,7 +66,7 @@ def test_run_wide_values_and_counter_preset(tmp_path: Path,
     code, text, _ = run(capsys, "run", str(source), "--scans", "4", "--counter", "2=1",
                         "--set", "R0.3=1@8", "--set", "D10:4=70000", "--set", "D20:2=0x1234",
                         "--set", "D30=007",
-                        "--print", "C4:2", "C6:2", "R1.0", "D10:4", "D20:2", "D20", "D30")
+                        "--print", "C4:2,C6:2,R1.0,D10:4,D20:2,D20,D30")
     assert code == 0
     assert text.splitlines() == ["C4:2 = 1", "C6:2 = 1", "R1.0 = 1", "D10:4 = 70000",
                                  "D20:2 = 4660", "D20 = 52", "D30 = 7"]
@@ -132,3 +132,49 @@ def test_run_with_a_missing_named_parameter_file(
     code, _, err = run(capsys, "run", str(EXAMPLES / "alarm.LAD"), "--params",
                        str(tmp_path / "none.prm"))
     assert code == 2 and err.startswith("ladderworks-cli: ")
+
+
+def test_run_with_level_2_divisions(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.core.compiler import compile
+    from tests.core.plc.conftest import build
+
+    out = tmp_path / "levels.bin"
+    out.write_bytes(compile(build("RD.NOT R0.1\nWRT R0.1\nEND1\nRD.NOT R0.0\nWRT R0.0\nEND2")))
+    code, text, _ = run(capsys, "run", str(out), "--scans", "4", "--divisions", "2",
+                        "--trace", "R0.1,R0.0")
+    assert code == 0
+    assert text == "time_ms,R0.1,R0.0\n0,1,1\n8,0,1\n16,1,0\n24,0,0\n"
+    assert run(capsys, "run", str(out), "--divisions", "0")[0] == 2
+
+
+def test_an_endless_label_loop_stops_run_with_exit_1(tmp_path: Path,
+                                                    capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.core.compiler import compile
+    from tests.core.plc.conftest import build
+
+    out = tmp_path / "loop.bin"
+    out.write_bytes(compile(build("RD X0.0\nWRT Y0.0\nLBL L1\nRD R9091.1\nJMPB L1")))
+    code, _, err = run(capsys, "run", str(out), "--scans", "3")
+    assert code == 1
+    assert "endless-loop" in err and ":3:" in err
+
+
+@pytest.mark.parametrize("argv", [
+    ["run", "--print", "G30", "--scans", "3", "--set", "X2.1=1", "--set", "X2.3=1", "{FILE}"],
+    ["run", "{FILE}", "--print", "G30", "--scans", "3", "--set", "X2.1=1", "--set", "X2.3=1"],
+    ["run", "--scans", "3", "{FILE}", "--set", "X2.1=1", "--set", "X2.3=1", "--print", "G30"],
+])
+def test_options_before_or_after_the_file(argv: list[str],
+                                          capsys: pytest.CaptureFixture[str]) -> None:
+    spindle = str(EXAMPLES / "spindle_override.LAD")
+    code, text, err = run(capsys, *[spindle if a == "{FILE}" else a for a in argv])
+    assert (code, text, err) == (0, "G30 = 60\n", "")
+
+
+@pytest.mark.parametrize("command", ["compile", "check", "format", "ladder", "mnemonic"])
+def test_every_command_takes_options_before_the_file(
+        command: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    spindle = str(EXAMPLES / "spindle_override.LAD")
+    options = ["-o", str(tmp_path / "out.bin")] if command == "compile" else []
+    assert run(capsys, command, *options, spindle)[0] == 0
+    assert run(capsys, command, spindle, *options)[0] == 0
