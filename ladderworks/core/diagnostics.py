@@ -73,6 +73,8 @@ MESSAGES: dict[str, str] = {
     "syntax": QT_TRANSLATE_NOOP("Diagnostic", "syntax error at '{text}'"),
     "invalid-bytes": QT_TRANSLATE_NOOP(
         "Diagnostic", "{count} byte(s) here are not valid {encoding}; they are kept as they are"),
+    "damaged-draft": QT_TRANSLATE_NOOP(
+        "Diagnostic", "a saved drawing ({lines} line(s)) is damaged: it is kept as comment text"),
     "not-a-program": QT_TRANSLATE_NOOP(
         "Diagnostic", "this is not a ladder program (no %@ section and no instruction)"),
     "section-line": QT_TRANSLATE_NOOP(

@@ -62,7 +62,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     options = parse_arguments(QCoreApplication.arguments()[1:])
     window = create_window()
     window.show()
-    if options.files:
+    restored = window.offer_recovery()  # copies left by a session that crashed or was killed
+    if options.files and not restored:
         window.load(options.files[0])
     if options.quit_after is not None:
         QTimer.singleShot(options.quit_after, window.close)

@@ -11,7 +11,6 @@ from PySide6.QtWidgets import (
     QApplication,
     QDialog,
     QDockWidget,
-    QFileDialog,
     QLabel,
     QMainWindow,
     QMenu,
@@ -23,14 +22,13 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, has_errors
-from ladderworks.core.il import Program, parse_file, print_program
+from ladderworks.core.il import Program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
-from ladderworks.core.plc.timer_table import dialect_of
 from ladderworks.gui import compile_step
-from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.error_list import ErrorListDock
-from ladderworks.gui.files import atomic_write
+from ladderworks.gui.file_actions import FileActions
 from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.parameter_document import ParameterDocument
@@ -43,7 +41,7 @@ from ladderworks.gui.translation import UiLanguage
 translate = QCoreApplication.translate
 
 
-class MainWindow(QMainWindow):
+class MainWindow(FileActions, QMainWindow):
     """The ladder console: one program, shown as ladder (or as text when it has errors)."""
 
     language_changed = Signal(str)
@@ -57,8 +55,6 @@ class MainWindow(QMainWindow):
         self.setObjectName("main_window")
         self.settings = settings
         self.language = language
-        self.path: Path | None = None
-        self.encoding = "utf-8"
         self.dialect = "seed"  # of the open program: how its parameter file names timers
         self.failed_path: Path | None = None  # a file that did not parse: never overwritten
         self.last_warning = ""
@@ -102,6 +98,7 @@ class MainWindow(QMainWindow):
         # PMC parameters (T/C/K/D set in the PLC tables) are saved with the program
         self.parameters = ParameterDocument(self.plc_docks.session)
         self.plc_docks.session.parameters_changed.connect(self._update_title)
+        self._install_file_state()
 
         self.editor.undo_stack.cleanChanged.connect(self._update_title)
         self.editor.tool_requested.connect(self.set_tool)
@@ -485,14 +482,6 @@ class MainWindow(QMainWindow):
 
     # -- documents -----------------------------------------------------------------------
 
-    def is_modified(self) -> bool:
-        """True when there are unsaved changes."""
-        if self.parameters.modified:
-            return True
-        if self.pages.currentWidget() is self.text_view:
-            return self.text_view.document().isModified()
-        return not self.editor.undo_stack.isClean()
-
     def _update_title(self, *_args: object) -> None:
         name = self.path.name if self.path else translate("MainWindow", "Untitled")
         star = "*" if self.is_modified() else ""
@@ -507,98 +496,6 @@ class MainWindow(QMainWindow):
         box.setObjectName("warning_box")
         box.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose, True)
         box.open()
-
-    def maybe_save(self) -> bool:
-        """Ask to save unsaved changes; False when the user cancels."""
-        if not self.is_modified():
-            return True
-        buttons = (
-            QMessageBox.StandardButton.Save
-            | QMessageBox.StandardButton.Discard
-            | QMessageBox.StandardButton.Cancel
-        )
-        answer = QMessageBox.question(
-            self,
-            translate("MainWindow", "Unsaved changes"),
-            translate("MainWindow", "The program has unsaved changes. Save them?"),
-            buttons,
-            QMessageBox.StandardButton.Save,
-        )
-        if answer == QMessageBox.StandardButton.Save:
-            return self.save()
-        return answer == QMessageBox.StandardButton.Discard
-
-    def new_file(self) -> None:
-        """Start an empty program."""
-        self.path = None
-        self.failed_path = None
-        self.encoding = "utf-8"
-        self.editor.set_program(Program())
-        self._program_shown(Program())
-        self.text_view.setPlainText("")
-        self.text_view.document().setModified(False)
-        self.errors.set_diagnostics([])
-        self.pages.setCurrentWidget(self.editor)
-        self.dialect = "seed"
-        self.parameters.reset()
-        self._update_title()
-
-    def _open_parameters(self, path: Path) -> None:
-        """Read the PMC parameter file beside the program (the defaults when there is none)."""
-        try:
-            problems = self.parameters.open(path)
-        except OSError as error:
-            self.parameters.reset()
-            self.warn(translate("MainWindow", "Open"),
-                      translate("MainWindow", "Cannot read {0}: {1}").format(
-                          path.name + ".prm", error.strerror or str(error)))
-            return
-        if problems:
-            first = problems[0]
-            self.warn(translate("MainWindow", "PMC parameters"), translate(
-                "MainWindow",
-                "{0}: {1} lines not understood (kept as they are); line {2}: {3}",
-            ).format(path.name + ".prm", len(problems), first.line,
-                     diagnostic_text(first)))
-
-    def load(self, path: str | Path) -> bool:
-        """Open a `.LAD` / `.MOD` file: as ladder, or as text with its errors listed."""
-        path = Path(path)
-        try:
-            result = parse_file(path)
-        except OSError as error:
-            self.warn(
-                translate("MainWindow", "Open"),
-                translate("MainWindow", "Cannot read {0}: {1}").format(
-                    path, error.strerror or str(error)
-                ),
-            )
-            return False
-        self.path = path
-        self.encoding = result.encoding
-        self.dialect = dialect_of(result.program)
-        self._open_parameters(path)
-        self.errors.set_diagnostics(result.diagnostics)
-        self._remember(path)
-        if result.ok:
-            self.failed_path = None
-            self.editor.set_program(result.program)
-            self.pages.setCurrentWidget(self.editor)
-            self._program_shown(result.program)
-        else:
-            self.failed_path = path
-            text = path.read_bytes().decode(self.encoding, errors="replace")
-            if text.startswith("\ufeff"):
-                text = text[1:]
-            self.editor.set_program(Program())
-            self._program_shown(Program())
-            self.text_view.setPlainText(text)
-            self.text_view.document().setModified(False)
-            self.pages.setCurrentWidget(self.text_view)
-            self.errors.show()
-            self._show_message(translate("MainWindow", "The file has errors: it is shown as text"))
-        self._update_title()
-        return True
 
     def _program_shown(self, program: Program) -> None:
         """A program is now shown: its symbols and messages go to the docks."""
@@ -618,155 +515,6 @@ class MainWindow(QMainWindow):
         self.properties_dialog = dialog
         dialog.open()
         return dialog
-
-    def open_dialog(self) -> None:
-        """File > Open."""
-        if not self.maybe_save():
-            return
-        name, _ = QFileDialog.getOpenFileName(
-            self,
-            translate("MainWindow", "Open program"),
-            str(self.path.parent if self.path else ""),
-            translate(
-                "MainWindow",
-                "Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT)"
-                ";;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC)"
-                ";;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)",
-            ),
-        )
-        if name:
-            self.load(name)
-
-    def program_text(self) -> str | None:
-        """The current program as `.LAD` text, or None when it cannot be made (errors listed)."""
-        if self.pages.currentWidget() is self.text_view:
-            return None
-        program, diagnostics = self.editor.program()
-        if program is None:
-            self.errors.set_diagnostics(diagnostics)
-            self.errors.show()
-            return None
-        return print_program(program)
-
-    def save(self) -> bool:
-        """File > Save (Save As when the program has no file yet)."""
-        if self.path is None:
-            return self.save_as_dialog()
-        return self.save_to(self.path)
-
-    def save_to(self, path: str | Path) -> bool:
-        """Write the program to `path` atomically; a file that failed to parse is kept."""
-        path = Path(path)
-        if self.pages.currentWidget() is self.text_view:
-            if self.failed_path is not None and path.resolve() == self.failed_path.resolve():
-                self.warn(
-                    translate("MainWindow", "Save"),
-                    translate(
-                        "MainWindow",
-                        "{0} did not parse and is not overwritten. Fix the errors and use "
-                        "Show as ladder, or save under another name.",
-                    ).format(path.name),
-                )
-                return False
-            drafts = False
-            text = self.text_view.toPlainText()
-            if not text.endswith("\n"):
-                text += "\n"
-        else:
-            program, diagnostics = self.editor.saved_program()
-            self.dialect = dialect_of(program)
-            text = print_program(program)
-            drafts = has_errors(diagnostics)
-            self.errors.set_diagnostics(diagnostics)
-            if drafts:
-                self.errors.show()
-        try:
-            atomic_write(path, text, self.encoding)
-        except OSError as error:
-            self.warn(
-                translate("MainWindow", "Save"),
-                translate("MainWindow", "Cannot write {0}: {1}").format(
-                    path, error.strerror or str(error)
-                ),
-            )
-            return False
-        try:
-            self.parameters.save(path, self.dialect)
-        except OSError as error:
-            self.warn(
-                translate("MainWindow", "Save"),
-                translate("MainWindow", "Cannot write {0}: {1}").format(
-                    path.name + ".prm", error.strerror or str(error)
-                ),
-            )
-            return False
-        self.path = path
-        self.editor.undo_stack.setClean()
-        self.text_view.document().setModified(False)
-        self._remember(path)
-        self._update_title()
-        if drafts:
-            self._show_message(translate(
-                "MainWindow",
-                "Saved {0}; networks with errors are kept as drawings (see the error list)",
-            ).format(path.name))
-        else:
-            self._show_message(translate("MainWindow", "Saved {0}").format(path.name))
-        self.file_saved.emit(str(path))
-        return True
-
-    def save_as_dialog(self) -> bool:
-        """File > Save As."""
-        name, _ = QFileDialog.getSaveFileName(
-            self,
-            translate("MainWindow", "Save program"),
-            str(self.path or "program.LAD"),
-            translate("MainWindow", "Ladder programs (*.LAD *.lad);;All files (*)"),
-        )
-        return bool(name) and self.save_to(name)
-
-    def import_mod_dialog(self) -> None:
-        """File > Import .MOD: open mnemonic text as a new, untitled ladder."""
-        if not self.maybe_save():
-            return
-        name, _ = QFileDialog.getOpenFileName(
-            self,
-            translate("MainWindow", "Import .MOD"),
-            "",
-            translate("MainWindow", "Mnemonic programs (*.MOD *.mod);;All files (*)"),
-        )
-        if name:
-            self.import_mod(name)
-
-    def import_mod(self, path: str | Path) -> bool:
-        """Read a `.MOD` file into the editor; it is saved as a new `.LAD`."""
-        if not self.load(path):
-            return False
-        self.path = None
-        self.failed_path = None
-        self._update_title()
-        return True
-
-    def export_mod_dialog(self) -> None:
-        """File > Export .MOD."""
-        base = self.path.with_suffix(".MOD") if self.path else Path("program.MOD")
-        name, _ = QFileDialog.getSaveFileName(
-            self,
-            translate("MainWindow", "Export .MOD"),
-            str(base),
-            translate("MainWindow", "Mnemonic programs (*.MOD);;All files (*)"),
-        )
-        if name:
-            self.export_mod(name)
-
-    def export_mod(self, path: str | Path) -> bool:
-        """Write the program as mnemonic text to `path`."""
-        text = self.program_text()
-        if text is None:
-            return False
-        atomic_write(path, text, self.encoding)
-        self._show_message(translate("MainWindow", "Exported {0}").format(Path(path).name))
-        return True
 
     def _remember(self, path: Path) -> None:
         self.settings.add_recent_file(str(path))
@@ -799,7 +547,7 @@ class MainWindow(QMainWindow):
         text = self.program_text()
         if text is None:
             return
-        self.text_view.setPlainText(text)
+        self.text_view.setPlainText(bad_bytes_shown(text))
         self.text_view.document().setModified(False)
         self.pages.setCurrentWidget(self.text_view)
 
@@ -810,7 +558,7 @@ class MainWindow(QMainWindow):
         from ladderworks.core.il import parse
 
         modified = self.text_view.document().isModified()
-        result = parse(self.text_view.toPlainText())
+        result = parse(bad_bytes_back(self.text_view.toPlainText()))
         self.errors.set_diagnostics(result.diagnostics)
         if not result.ok:
             self.errors.show()
@@ -940,6 +688,8 @@ class MainWindow(QMainWindow):
             event.ignore()
             return
         self.settings.set_window_state(self.saveGeometry(), self.saveState())
+        self.autosaver.timer.stop()
+        self.recovery.close()  # saved or discarded: the recovery copy goes
         if self.help_window is not None:
             self.help_window.close()
         event.accept()

@@ -14,12 +14,21 @@ from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QApplication, QMessageBox, QWidget
 from pytestqt.qtbot import QtBot
 
+from ladderworks.gui import questions
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.refcount_guard import guard_singletons
 from ladderworks.gui.settings import Settings
 from ladderworks.gui.translation import UiLanguage
 
 guard_singletons()  # PySide6 6.12.0 loses a reference to None on every void Qt call
+
+
+@pytest.fixture(autouse=True)
+def data_folder(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """The user's data folder (recovery copies) in a temporary folder."""
+    folder = tmp_path / "xdg-data"
+    monkeypatch.setenv("XDG_DATA_HOME", str(folder))
+    return folder
 
 
 @pytest.fixture
@@ -32,6 +41,7 @@ def _forget_changes(win: MainWindow) -> None:
     """Closing at the end of a test: nothing to save."""
     win.editor.undo_stack.setClean()
     win.text_view.document().setModified(False)
+    win.parameters.saved = win.parameters.session.parameters.copy()
 
 
 @pytest.fixture
@@ -43,6 +53,7 @@ def window(qtbot: QtBot, settings: Settings,
         raise AssertionError("unexpected blocking question")
 
     monkeypatch.setattr(QMessageBox, "question", no_question)
+    monkeypatch.setattr(questions, "ask", no_question)
     language = UiLanguage()
     language.apply("en")
     win = MainWindow(settings, language)
@@ -118,3 +129,31 @@ class Drawer:
 def drawer(qtbot: QtBot, window: MainWindow) -> Drawer:
     """Drawing helper on the window's editor."""
     return Drawer(qtbot, window)
+
+
+class Answers:
+    """Answers to the file questions (`questions.ask`), in order; records each question."""
+
+    def __init__(self) -> None:
+        self.queue: list[str] = []
+        self.asked: list[tuple[str, str, list[str]]] = []
+        self.labels: list[list[str]] = []  # the buttons' texts of each question
+
+    def __call__(self, _parent: object, title: str, text: str,
+                 choices: list[tuple[str, str, object]]) -> str:
+        keys = [key for key, _label, _role in choices]
+        self.asked.append((title, text, keys))
+        self.labels.append([label for _key, label, _role in choices])
+        if not self.queue:
+            raise AssertionError(f"unexpected question: {title}: {text}")
+        answer = self.queue.pop(0)
+        assert answer in keys, (answer, keys)
+        return answer
+
+
+@pytest.fixture
+def answers(window: MainWindow, monkeypatch: pytest.MonkeyPatch) -> Answers:
+    """Queue the answers a test gives to the window's file questions."""
+    given = Answers()
+    monkeypatch.setattr(questions, "ask", given)
+    return given

@@ -112,7 +112,8 @@ def _element_from(record: dict[str, Any]) -> Element:
         pins = tuple(int(p) for p in record.get("pins", []))
         height = int(record.get("height", 1))
         default = FunctionBox.new(name, params)
-        if len(pins) != len(default.pins) or any(p >= height for p in pins) or height < 1:
+        if (len(pins) != len(default.pins) or any(p >= height for p in pins)
+                or not 1 <= height <= MAX_ROWS):  # a damaged draft must not fill the memory
             raise ValueError("pins")
         return FunctionBox(default.name, params, comment, lead, pins, height)
     if kind in ("contact", "coil"):

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.il.program import Network, Program
 from ladderworks.core.il.textform import split_lines
 from ladderworks.core.ladder.clipboard import MAGIC, copy_text, network_from_text
@@ -19,6 +19,18 @@ def draft_lines(network: LadderNetwork) -> list[str]:
     return [DRAFT_MARK + line for line in split_lines(copy_text(network))]
 
 
+def read_draft(lines: list[str]) -> LadderNetwork | None:
+    """The network a draft block (lines starting with DRAFT_MARK) holds; None when damaged.
+
+    Damaged means anything that is not a valid drawing: bad JSON, non-finite or huge numbers,
+    wrong shapes, nesting too deep to read."""
+    try:
+        return network_from_text("\n".join(line[len(DRAFT_MARK):] for line in lines))
+    except (EditRefused, ValueError, TypeError, KeyError, OverflowError, RecursionError,
+            MemoryError):
+        return None
+
+
 def split_drafts(lines: list[str]) -> tuple[list[LadderNetwork], list[str]]:
     """Draft networks found in comment lines, and the other comment lines.
 
@@ -30,10 +42,11 @@ def split_drafts(lines: list[str]) -> tuple[list[LadderNetwork], list[str]]:
     def close() -> None:
         if not block:
             return
-        try:
-            drafts.append(network_from_text("\n".join(b[len(DRAFT_MARK):] for b in block)))
-        except EditRefused:
+        network = read_draft(block)
+        if network is None:
             rest.extend(block)
+        else:
+            drafts.append(network)
         block.clear()
 
     for line in lines:
@@ -48,8 +61,48 @@ def split_drafts(lines: list[str]) -> tuple[list[LadderNetwork], list[str]]:
     return drafts, rest
 
 
-def program_to_ladder(program: Program) -> LadderDocument:
-    """Lay out every network of a program (drafts saved in comments come back as drawn)."""
+def _draft_text(line: str) -> str | None:
+    """A file line's draft text (after `//` or `;`), or None when it is no draft line."""
+    text = line.lstrip()
+    for marker in ("//", ";"):
+        if text.startswith(marker + DRAFT_MARK):
+            return text[len(marker):]
+    return None
+
+
+def damaged_drafts(lines: list[str]) -> list[Diagnostic]:
+    """A `damaged-draft` warning at the first line of each draft block in a file's lines that
+    does not hold a valid drawing (it is kept as comment text and saved back unchanged)."""
+    found: list[Diagnostic] = []
+    block: list[str] = []
+    start = 0
+
+    def close() -> None:
+        if block and read_draft(block) is None:
+            found.append(Diagnostic("damaged-draft", {"lines": len(block)}, start + 1, 1,
+                                    Severity.WARNING))
+        block.clear()
+
+    for number, line in enumerate(lines):
+        text = _draft_text(line)
+        if text is None or text[len(DRAFT_MARK):].startswith(MAGIC):
+            close()
+            start = number
+        if text is not None:
+            block.append(text)
+    close()
+    return found
+
+
+Kept = list[tuple[LadderNetwork, Network]]  # each network as laid out, and the one it came from
+KEPT_LOOKAHEAD = 64  # how far ahead an unchanged network is looked for after an edit
+
+
+def program_to_ladder(program: Program, kept: Kept | None = None) -> LadderDocument:
+    """Lay out every network of a program (drafts saved in comments come back as drawn).
+
+    `kept`, when given, receives a copy of each laid-out network with the network it came
+    from, so ladder_to_program can write an unchanged one exactly as it was read."""
     doc = LadderDocument(header=list(program.header), footer=list(program.footer),
                          before=list(program.before), after=list(program.after), origin=program)
     for network in program.networks:
@@ -58,28 +111,47 @@ def program_to_ladder(program: Program) -> LadderDocument:
         laid = layout_network(network.instructions, comments)
         laid.label = network.label
         doc.networks.append(laid)
+        if kept is not None:
+            kept.append((laid.copy(), network))
     drafts, trailer = split_drafts(program.trailer)
     doc.networks.extend(drafts)
     doc.trailer = trailer
     return doc
 
 
-def ladder_to_program(doc: LadderDocument) -> tuple[Program, list[Diagnostic]]:
+def _unchanged(network: LadderNetwork, kept: Kept, start: int) -> int | None:
+    """The index in `kept` (from `start`, a little way ahead) of a network drawn as read."""
+    for index in range(start, min(len(kept), start + KEPT_LOOKAHEAD)):
+        if kept[index][0] == network:
+            return index
+    return None
+
+
+def ladder_to_program(doc: LadderDocument,
+                      kept: Kept | None = None) -> tuple[Program, list[Diagnostic]]:
     """The program text of a ladder document, with the diagnostics of each network.
 
     A network that cannot be coded (still being drawn, or wrong) is written as draft comment
     lines before the next network (or at the end), so saving never loses a drawing. The
     program keeps the file, form, dialect and section views of the one the document came from
-    (`doc.origin`), so Save rewrites only the networks that changed."""
+    (`doc.origin`), so Save rewrites only the networks that changed; a network still as it
+    was read (see `kept` of program_to_ladder) keeps its instructions as read."""
     program = Program(header=list(doc.header), footer=list(doc.footer),
                       before=list(doc.before), after=list(doc.after))
     if doc.origin is not None:
-        _adopt(program, doc.origin)
+        adopt_origin(program, doc.origin)
     diagnostics: list[Diagnostic] = []
     pending: list[str] = []
+    next_kept = 0
     dialect = doc.origin.dialect if doc.origin is not None else "seed"
     for index, network in enumerate(doc.networks):
         if network.is_empty() and not network.comments:
+            continue
+        if kept and (position := _unchanged(network, kept, next_kept)) is not None:
+            next_kept = position + 1
+            program.networks.append(Network(list(kept[position][1].instructions),
+                                            pending + list(network.comments), network.label))
+            pending = []
             continue
         instructions, found = network_to_instructions(network, index, dialect)
         diagnostics.extend(found)
@@ -93,7 +165,7 @@ def ladder_to_program(doc: LadderDocument) -> tuple[Program, list[Diagnostic]]:
     return program, diagnostics
 
 
-def _adopt(program: Program, origin: Program) -> None:
+def adopt_origin(program: Program, origin: Program) -> None:
     """Carry over what the ladder document does not hold: file, framing, dialect, views."""
     program.source = origin.source
     program.framed = origin.framed

@@ -1,0 +1,199 @@
+"""The open program's file: path, text form, disk state, modified state, load and save."""
+
+from __future__ import annotations
+
+import hashlib
+import os
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+from PySide6.QtCore import QFileSystemWatcher, QObject, Signal
+from PySide6.QtGui import QTextDocument, QUndoStack
+
+from ladderworks.core.il import Program
+from ladderworks.core.il.parser import ParseResult, parse_bytes
+from ladderworks.core.il.printer import encode_program, print_faithful
+from ladderworks.core.il.textform import UTF8, TextForm, encode_text
+from ladderworks.core.ladder.convert import Kept, adopt_origin, damaged_drafts
+from ladderworks.gui.files import atomic_write_bytes, write_target
+from ladderworks.gui.parameter_document import ParameterDocument
+
+
+@dataclass(frozen=True, slots=True)
+class DiskState:
+    """What the file on disk was when it was read or written: time, size and content hash."""
+
+    mtime_ns: int
+    size: int
+    digest: str
+
+    @classmethod
+    def of(cls, path: Path, data: bytes | None = None) -> DiskState | None:
+        """The state of `path` now (None when it does not exist or cannot be read)."""
+        try:
+            info = os.stat(path)
+            content = data if data is not None else Path(path).read_bytes()
+        except OSError:
+            return None
+        return cls(info.st_mtime_ns, info.st_size, hashlib.sha256(content).hexdigest())
+
+    def same_content(self, other: DiskState | None) -> bool:
+        """True when `other` holds the same bytes (a touch without a change is no change)."""
+        return other is not None and (other.size, other.digest) == (self.size, self.digest)
+
+
+# Qt drops lone surrogates, so a kept invalid byte (U+DC80..U+DCFF after surrogateescape) is
+# shown in the text view as a private-use character of plane 16 and mapped back on save.
+_BAD_BYTE = 0xDC00
+_SHOWN_BAD_BYTE = 0x10FC00
+
+
+def bad_bytes_shown(text: str) -> str:
+    """Text for a Qt text widget: each kept invalid byte as a visible private-use character."""
+    if text.isascii():
+        return text
+    return "".join(chr(_SHOWN_BAD_BYTE + ord(ch) - _BAD_BYTE) if "\udc80" <= ch <= "\udcff"
+                   else ch for ch in text)
+
+
+def bad_bytes_back(text: str) -> str:
+    """Text from a Qt text widget with the invalid bytes it showed back as they were."""
+    if text.isascii():
+        return text
+    low, high = chr(_SHOWN_BAD_BYTE + 0x80), chr(_SHOWN_BAD_BYTE + 0xFF)
+    return "".join(chr(_BAD_BYTE + ord(ch) - _SHOWN_BAD_BYTE) if low <= ch <= high else ch
+                   for ch in text)
+
+
+def same_file(a: Path, b: Path) -> bool:
+    """True when two paths name the same file (through symlinks)."""
+    return write_target(a) == write_target(b)
+
+
+class ProgramDocument(QObject):
+    """The program's file state; MainWindow asks it to read, encode and write."""
+
+    changed_outside = Signal(str)  # the path: another program changed the file on disk
+    modified_changed = Signal()
+
+    def __init__(self, undo_stack: QUndoStack, text: QTextDocument,
+                 parameters: ParameterDocument, showing_text: Callable[[], bool],
+                 parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self.undo_stack = undo_stack
+        self.text = text
+        self.parameters = parameters
+        self._showing_text = showing_text
+        self.path: Path | None = None
+        self.form = TextForm()
+        self.origin: Program | None = None
+        self.disk: DiskState | None = None
+        self.kept: Kept = []  # the networks as read, to save an unchanged one as it was
+        self.watcher = QFileSystemWatcher(self)
+        self.watcher.fileChanged.connect(self._on_file_changed)
+        undo_stack.cleanChanged.connect(self.modified_changed)
+        text.modificationChanged.connect(self.modified_changed)
+        parameters.session.parameters_changed.connect(self.modified_changed)
+
+    # -- state --------------------------------------------------------------------------
+
+    def is_modified(self) -> bool:
+        """True when there are unsaved changes (ladder or text, and the PMC parameters)."""
+        if self.parameters.modified:
+            return True
+        if self._showing_text():
+            return self.text.isModified()
+        return not self.undo_stack.isClean()
+
+    def changed_on_disk(self) -> bool:
+        """True when the file now differs from what was read or last written."""
+        if self.path is None or self.disk is None:
+            return False
+        now = DiskState.of(self.path)
+        return now is not None and not self.disk.same_content(now)
+
+    def _watch(self, path: Path | None) -> None:
+        if self.watcher.files():
+            self.watcher.removePaths(self.watcher.files())
+        if path is not None and path.exists():
+            self.watcher.addPath(str(path))
+
+    def _on_file_changed(self, name: str) -> None:
+        if self.path is None or Path(name) != self.path:
+            return
+        if not self.path.exists():
+            return  # removed (or being replaced): asked about on save
+        self._watch(self.path)  # a replaced file is dropped from the watch list
+        if self.changed_on_disk():
+            self.changed_outside.emit(name)
+
+    # -- reading ------------------------------------------------------------------------
+
+    def reset(self) -> None:
+        """A new, untitled program in UTF-8 with LF line ends."""
+        self.path = None
+        self.form = TextForm()
+        self.origin = None
+        self.disk = None
+        self.kept = []
+        self._watch(None)
+
+    def read(self, path: Path) -> tuple[ParseResult, bytes]:
+        """Read and parse `path` (OSError); it becomes the document's file."""
+        data = path.read_bytes()
+        result = parse_bytes(data)
+        if result.program.source is not None:
+            result.diagnostics = sorted(
+                result.diagnostics + damaged_drafts(result.program.source.lines),
+                key=lambda d: (d.line, d.column))
+        self.path = path
+        self.form = result.program.form
+        self.origin = result.program
+        self.disk = DiskState.of(path, data)
+        self._watch(path)
+        return result, data
+
+    def adopt(self, path: Path | None, result: ParseResult, disk: DiskState | None) -> None:
+        """Take a program read elsewhere (a recovery copy) as the one of `path`."""
+        self.path = path
+        self.form = result.program.form
+        self.origin = result.program
+        self.disk = disk
+        self._watch(path)
+
+    def detach(self) -> None:
+        """Forget the file (an imported `.MOD` is saved as a new program)."""
+        self.path = None
+        self.disk = None
+        self._watch(None)
+
+    # -- writing ------------------------------------------------------------------------
+
+    def encode(self, program: Program) -> bytes:
+        """The bytes Save writes for `program` in the document's form; EncodeError."""
+        if program.source is None and self.origin is not None:
+            adopt_origin(program, self.origin)  # the file it was read from: a faithful save
+        if program.form == self.form:
+            return encode_program(program)
+        return encode_text(print_faithful(program), self.form)
+
+    def encode_text(self, text: str) -> bytes:
+        """Text from the text view as bytes in the document's form (its line ends); EncodeError."""
+        text = bad_bytes_back(text)
+        if self.form.newline != "\n":
+            text = text.replace("\n", self.form.newline)
+        return encode_text(text, self.form)
+
+    def use_utf8(self) -> None:
+        """Save in UTF-8 from now on (the user's answer to a character the encoding lacks)."""
+        self.form = replace(self.form, encoding=UTF8,
+                            bom=b"\xef\xbb\xbf" if self.form.bom else b"")
+
+    def write(self, path: Path, data: bytes) -> None:
+        """Write atomically (ReadOnlyFile, OSError); `path` becomes the document's file."""
+        atomic_write_bytes(path, data)
+        self.path = path
+        self.disk = DiskState.of(path, data)
+        self._watch(path)
+

@@ -1,0 +1,462 @@
+"""The main window's File glue: open, save, save as, questions, autosave and recovery."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import asdict
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QCoreApplication, QDateTime, QLocale
+from PySide6.QtWidgets import QFileDialog, QMessageBox
+
+from ladderworks.core.diagnostics import Diagnostic, has_errors
+from ladderworks.core.il import Program, print_program
+from ladderworks.core.il.parser import parse_bytes
+from ladderworks.core.il.textform import EncodeError
+from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
+from ladderworks.core.plc.parameters import format_parameters, parameters_beside
+from ladderworks.core.plc.timer_table import dialect_of
+from ladderworks.gui import questions
+from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.document import (
+    DiskState,
+    ProgramDocument,
+    bad_bytes_back,
+    bad_bytes_shown,
+    same_file,
+)
+from ladderworks.gui.files import ReadOnlyFile, atomic_write_bytes, is_read_only
+from ladderworks.gui.recovery import Autosaver, RecoveredCopy, RecoveryStore, Snapshot
+
+if TYPE_CHECKING:
+    from PySide6.QtCore import SignalInstance
+    from PySide6.QtWidgets import QMainWindow, QStackedWidget
+
+    from ladderworks.gui.editor.view import LadderEditor
+    from ladderworks.gui.error_list import ErrorListDock
+    from ladderworks.gui.parameter_document import ParameterDocument
+    from ladderworks.gui.text_view import ProgramTextView
+
+    _Window = QMainWindow
+else:
+    _Window = object
+
+translate = QCoreApplication.translate
+
+
+def _when(copy: RecoveredCopy) -> str:
+    """When a recovery copy was written, in the UI language's short date and time."""
+    moment = QDateTime.fromSecsSinceEpoch(int(copy.saved_at.timestamp()))
+    return QLocale().toString(moment, QLocale.FormatType.ShortFormat)
+
+
+class FileActions(_Window):
+    """File > New / Open / Save / Save As / Import / Export, and recovery: MainWindow's part
+    that asks the ProgramDocument to read and write (a mixin, so the public names stay)."""
+
+    document: ProgramDocument
+    recovery: RecoveryStore
+    autosaver: Autosaver
+    _last_save_result: bool
+    if TYPE_CHECKING:  # what MainWindow provides
+        editor: LadderEditor
+        text_view: ProgramTextView
+        pages: QStackedWidget
+        errors: ErrorListDock
+        parameters: ParameterDocument
+        failed_path: Path | None
+        dialect: str
+        file_saved: SignalInstance
+
+        def warn(self, title: str, text: str) -> None: ...
+        def _show_message(self, text: str) -> None: ...
+        def _update_title(self, *_args: object) -> None: ...
+        def _remember(self, path: Path) -> None: ...
+        def _program_shown(self, program: Program) -> None: ...
+
+    def _install_file_state(self) -> None:
+        """Create the document, its watcher and the autosaver (called once by __init__)."""
+        self.document = ProgramDocument(
+            self.editor.undo_stack, self.text_view.document(), self.parameters,
+            lambda: self.pages.currentWidget() is self.text_view, self)
+        self.document.modified_changed.connect(self._update_title)
+        self.document.changed_outside.connect(self._on_changed_outside)
+        self._last_save_result = False
+        self.recovery = RecoveryStore()
+        self.autosaver = Autosaver(self.recovery, self.recovery_snapshot, self)
+        self.autosaver.failed.connect(self._show_message)
+        self.editor.undo_stack.indexChanged.connect(self.autosaver.edited)
+        self.parameters.session.parameters_changed.connect(self.autosaver.edited)
+
+    # -- state ---------------------------------------------------------------------------
+
+    @property
+    def path(self) -> Path | None:
+        """The program's file (None: untitled)."""
+        return self.document.path
+
+    @property
+    def encoding(self) -> str:
+        """The encoding the program is saved in."""
+        return self.document.form.encoding
+
+    def is_modified(self) -> bool:
+        """True when there are unsaved changes."""
+        return self.document.is_modified()
+
+    def _on_changed_outside(self, name: str) -> None:
+        self._show_message(translate(
+            "MainWindow", "{0} was changed by another program").format(Path(name).name))
+
+    def maybe_save(self) -> bool:
+        """Ask to save unsaved changes; False when the user cancels."""
+        if not self.is_modified():
+            return True
+        buttons = (QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
+                   | QMessageBox.StandardButton.Cancel)
+        answer = QMessageBox.question(
+            self, translate("MainWindow", "Unsaved changes"),
+            translate("MainWindow", "The program has unsaved changes. Save them?"),
+            buttons, QMessageBox.StandardButton.Save)
+        if answer == QMessageBox.StandardButton.Save:
+            return self.save()
+        return answer == QMessageBox.StandardButton.Discard
+
+    # -- opening -------------------------------------------------------------------------
+
+    def new_file(self) -> None:
+        """Start an empty program."""
+        self.document.reset()
+        self.failed_path = None
+        self.editor.set_program(Program())
+        self._program_shown(Program())
+        self.text_view.setPlainText("")
+        self.text_view.document().setModified(False)
+        self.errors.set_diagnostics([])
+        self.pages.setCurrentWidget(self.editor)
+        self.dialect = "seed"
+        self.parameters.reset()
+        self.recovery.remove()
+        self._update_title()
+
+    def _open_parameters(self, path: Path) -> None:
+        """Read the PMC parameter file beside the program (the defaults when there is none)."""
+        try:
+            problems = self.parameters.open(path)
+        except OSError as error:
+            self.parameters.reset()
+            self.warn(translate("MainWindow", "Open"),
+                      translate("MainWindow", "Cannot read {0}: {1}").format(
+                          path.name + ".prm", error.strerror or str(error)))
+            return
+        if problems:
+            first = problems[0]
+            self.warn(translate("MainWindow", "PMC parameters"), translate(
+                "MainWindow",
+                "{0}: {1} lines not understood (kept as they are); line {2}: {3}",
+            ).format(path.name + ".prm", len(problems), first.line,
+                     diagnostic_text(first)))
+
+    def load(self, path: str | Path) -> bool:
+        """Open a `.LAD` / `.MOD` file: as ladder, or as text with its errors listed."""
+        path = Path(path)
+        try:
+            result, _data = self.document.read(path)
+        except OSError as error:
+            self.warn(translate("MainWindow", "Open"),
+                      translate("MainWindow", "Cannot read {0}: {1}").format(
+                          path, error.strerror or str(error)))
+            return False
+        self._open_parameters(path)
+        self._show_result(path, result.program, result.ok, result.diagnostics)
+        self._remember(path)
+        self.recovery.remove()
+        return True
+
+    def _show_result(self, path: Path | None, program: Program, ok: bool,
+                     diagnostics: list[Diagnostic]) -> None:
+        """Show a read program: as ladder, or (it did not parse) its text, never overwritten."""
+        self.dialect = dialect_of(program)
+        self.errors.set_diagnostics(diagnostics)
+        if any(d.code in ("invalid-bytes", "damaged-draft") for d in diagnostics):
+            self.errors.show()
+        if ok:
+            self.failed_path = None
+            self.document.kept = []
+            self.editor.set_document(program_to_ladder(program, self.document.kept))
+            self.pages.setCurrentWidget(self.editor)
+            self._program_shown(program)
+        else:
+            self.failed_path = path
+            source = program.source
+            text = "\n".join(source.lines) + "\n" if source is not None else ""
+            text = bad_bytes_shown(text)
+            self.editor.set_program(Program())
+            self._program_shown(Program())
+            self.text_view.setPlainText(text)
+            self.text_view.document().setModified(False)
+            self.pages.setCurrentWidget(self.text_view)
+            self.errors.show()
+            self._show_message(translate("MainWindow", "The file has errors: it is shown as text"))
+        self._update_title()
+
+    def open_dialog(self) -> None:
+        """File > Open."""
+        if not self.maybe_save():
+            return
+        name, _ = QFileDialog.getOpenFileName(
+            self, translate("MainWindow", "Open program"),
+            str(self.path.parent if self.path else ""),
+            translate(
+                "MainWindow",
+                "Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT)"
+                ";;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC)"
+                ";;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)"))
+        if name:
+            self.load(name)
+
+    # -- saving --------------------------------------------------------------------------
+
+    def program_text(self) -> str | None:
+        """The current program as `.LAD` text, or None when it cannot be made (errors listed)."""
+        if self.pages.currentWidget() is self.text_view:
+            return None
+        program, diagnostics = self.editor.program()
+        if program is None:
+            self.errors.set_diagnostics(diagnostics)
+            self.errors.show()
+            return None
+        return print_program(program)
+
+    def save(self) -> bool:
+        """File > Save (Save As when the program has no file yet)."""
+        if self.path is None:
+            return self.save_as_dialog()
+        return self.save_to(self.path)
+
+    def _program_to_save(self) -> tuple[Program, list[Diagnostic]]:
+        """The drawn program (unfinished networks as drafts, unchanged ones as read)."""
+        program, diagnostics = ladder_to_program(self.editor.ladder_document(),
+                                                 self.document.kept)
+        self.editor.mark_diagnostics(diagnostics)
+        return program, diagnostics
+
+    def _may_write(self, path: Path) -> bool | None:
+        """Ask before writing `path` (changed outside, read-only): True to go on, False when
+        declined, None when another way was taken (reload, Save As) — its result is final."""
+        if self.path is not None and same_file(path, self.path) and \
+                self.document.changed_on_disk():
+            answer = questions.changed_outside(self, path)
+            if answer == "reload":
+                self.load(path)
+                return None
+            if answer == "save_as":
+                self._last_save_result = self.save_as_dialog()
+                return None
+            if answer != "keep":
+                return False
+        if is_read_only(path):
+            if questions.read_only(self, path) == "save_as":
+                self._last_save_result = self.save_as_dialog()
+                return None
+            return False
+        return True
+
+    def _encoded(self, path: Path, make: Callable[[], bytes]) -> bytes | None:
+        """`make()`'s bytes; a character the encoding lacks asks to use UTF-8 (None: declined)."""
+        try:
+            return make()
+        except EncodeError as error:
+            if questions.encoding(self, path, error) != "utf8":
+                return None
+            self.document.use_utf8()
+            return make()
+
+    def save_to(self, path: str | Path) -> bool:
+        """Write the program to `path` atomically, in the file's own form; a file that failed to
+        parse is kept; a file changed outside or read-only asks first."""
+        path = Path(path)
+        showing_text = self.pages.currentWidget() is self.text_view
+        if showing_text and self.failed_path is not None and same_file(path, self.failed_path):
+            self.warn(translate("MainWindow", "Save"), translate(
+                "MainWindow",
+                "{0} did not parse and is not overwritten. Fix the errors and use "
+                "Show as ladder, or save under another name.").format(path.name))
+            return False
+        self._last_save_result = False
+        go_on = self._may_write(path)
+        if not go_on:
+            return go_on is None and self._last_save_result
+        drafts = False
+        if showing_text:
+            text = self.text_view.toPlainText()
+            text = text if text.endswith("\n") else text + "\n"
+            data = self._encoded(path, lambda: self.document.encode_text(text))
+        else:
+            program, diagnostics = self._program_to_save()
+            self.dialect = dialect_of(program)
+            drafts = has_errors(diagnostics)
+            self.errors.set_diagnostics(diagnostics)
+            if drafts:
+                self.errors.show()
+            data = self._encoded(path, lambda: self.document.encode(program))
+        if data is None:
+            return False
+        if not self._write(path, data):
+            return False
+        self.editor.undo_stack.setClean()
+        self.text_view.document().setModified(False)
+        self._remember(path)
+        self._update_title()
+        self.recovery.remove()
+        if drafts:
+            self._show_message(translate(
+                "MainWindow",
+                "Saved {0}; networks with errors are kept as drawings (see the error list)",
+            ).format(path.name))
+        else:
+            self._show_message(translate("MainWindow", "Saved {0}").format(path.name))
+        self.file_saved.emit(str(path))
+        return True
+
+    def _write(self, path: Path, data: bytes) -> bool:
+        """Write the program and its PMC parameters; warn and False when it fails."""
+        name = path
+        try:
+            self.document.write(path, data)
+            name = path.with_name(path.name + ".prm")
+            self.parameters.save(path, self.dialect)
+        except ReadOnlyFile:
+            self.warn(translate("MainWindow", "Save"), translate(
+                "MainWindow", "{0} is read-only and is not replaced.").format(name))
+            return False
+        except OSError as error:
+            self.warn(translate("MainWindow", "Save"),
+                      translate("MainWindow", "Cannot write {0}: {1}").format(
+                          name, error.strerror or str(error)))
+            return False
+        return True
+
+    def save_as_dialog(self) -> bool:
+        """File > Save As."""
+        name, _ = QFileDialog.getSaveFileName(
+            self, translate("MainWindow", "Save program"), str(self.path or "program.LAD"),
+            translate("MainWindow", "Ladder programs (*.LAD *.lad);;All files (*)"))
+        return bool(name) and self.save_to(name)
+
+    def import_mod_dialog(self) -> None:
+        """File > Import .MOD: open mnemonic text as a new, untitled ladder."""
+        if not self.maybe_save():
+            return
+        name, _ = QFileDialog.getOpenFileName(
+            self, translate("MainWindow", "Import .MOD"), "",
+            translate("MainWindow", "Mnemonic programs (*.MOD *.mod);;All files (*)"))
+        if name:
+            self.import_mod(name)
+
+    def import_mod(self, path: str | Path) -> bool:
+        """Read a `.MOD` file into the editor; it is saved as a new `.LAD`."""
+        if not self.load(path):
+            return False
+        self.document.detach()
+        self.failed_path = None
+        self._update_title()
+        return True
+
+    def export_mod_dialog(self) -> None:
+        """File > Export .MOD."""
+        base = self.path.with_suffix(".MOD") if self.path else Path("program.MOD")
+        name, _ = QFileDialog.getSaveFileName(
+            self, translate("MainWindow", "Export .MOD"), str(base),
+            translate("MainWindow", "Mnemonic programs (*.MOD);;All files (*)"))
+        if name:
+            self.export_mod(name)
+
+    def export_mod(self, path: str | Path) -> bool:
+        """Write the program as mnemonic text to `path` (in the program's encoding)."""
+        path = Path(path)
+        text = self.program_text()
+        if text is None:
+            return False
+        data = self._encoded(path, lambda: self.document.encode_text(text))
+        if data is None:
+            return False
+        try:
+            atomic_write_bytes(path, data)
+        except ReadOnlyFile:
+            self.warn(translate("MainWindow", "Export .MOD"), translate(
+                "MainWindow", "{0} is read-only and is not replaced.").format(path))
+            return False
+        except OSError as error:
+            self.warn(translate("MainWindow", "Export .MOD"),
+                      translate("MainWindow", "Cannot write {0}: {1}").format(
+                          path, error.strerror or str(error)))
+            return False
+        self._show_message(translate("MainWindow", "Exported {0}").format(path.name))
+        return True
+
+    # -- recovery ------------------------------------------------------------------------
+
+    def recovery_snapshot(self) -> Snapshot | None:
+        """The unsaved work to copy (None when nothing is unsaved)."""
+        if not self.is_modified():
+            return None
+        document = self.document
+        try:
+            if self.pages.currentWidget() is self.text_view:
+                data = document.encode_text(self.text_view.toPlainText())
+            else:
+                data = document.encode(self._program_to_save()[0])
+        except EncodeError:  # a character the file cannot hold: the copy is UTF-8
+            text = (bad_bytes_back(self.text_view.toPlainText())
+                    if self.pages.currentWidget() is self.text_view
+                    else print_program(self._program_to_save()[0]))
+            data = text.encode("utf-8", errors="surrogateescape")
+        parameters = self.parameters.session.parameters
+        return Snapshot(data, document.path,
+                        format_parameters(parameters, self.dialect) if parameters else None,
+                        asdict(document.disk) if document.disk is not None else None)
+
+    def offer_recovery(self) -> bool:
+        """Offer each copy left by a session that crashed or was killed; True when one was
+        restored into this window (the others are offered again at the next start)."""
+        for copy in self.recovery.orphans():
+            if self.is_modified():
+                copy.lock.unlock()
+                continue
+            name = str(copy.original) if copy.original else translate("MainWindow", "Untitled")
+            when = _when(copy)
+            answer = questions.restore(self, name, when)
+            if (answer == "restore" and self.restore(copy)) or answer == "discard":
+                self.recovery.discard(copy)
+            else:
+                copy.lock.unlock()
+        return self.is_modified()
+
+    def restore(self, copy: RecoveredCopy) -> bool:
+        """Show a recovered copy as unsaved changes to its original file."""
+        try:
+            result = parse_bytes(copy.data_path.read_bytes())
+            found = parameters_beside(copy.data_path)
+        except OSError as error:
+            self.warn(translate("MainWindow", "Recover unsaved work"),
+                      translate("MainWindow", "Cannot read {0}: {1}").format(
+                          copy.data_path, error.strerror or str(error)))
+            return False
+        disk = DiskState(**copy.disk) if copy.disk else None  # type: ignore[arg-type]
+        self.document.adopt(copy.original, result, disk)
+        if copy.original is not None:
+            self._open_parameters(copy.original)
+        else:
+            self.parameters.reset()
+        self.parameters.session.set_parameters(found.parameters)
+        self._show_result(copy.original, result.program, result.ok, result.diagnostics)
+        self.failed_path = None  # the original on disk is not the text that failed
+        self.editor.mark_modified()
+        self.text_view.document().setModified(True)
+        self._update_title()
+        self.autosaver.save_now()
+        self._show_message(translate("MainWindow", "Recovered unsaved work from {0}").format(
+            _when(copy)))
+        return True
