@@ -14,7 +14,7 @@ from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.il.parser import parse_bytes
 from ladderworks.core.il.textform import EncodeError
-from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
+from ladderworks.core.ladder.convert import ladder_to_program
 from ladderworks.core.plc.parameters import format_parameters, parameters_beside
 from ladderworks.core.plc.timer_table import dialect_of
 from ladderworks.gui import questions
@@ -184,7 +184,7 @@ class FileActions(_Window):
         if ok:
             self.failed_path = None
             self.document.kept = []
-            self.editor.set_document(program_to_ladder(program, self.document.kept))
+            self.editor.set_program(program, self.document.kept)
             self.pages.setCurrentWidget(self.editor)
             self._program_shown(program)
         else:

@@ -11,10 +11,11 @@ from pytestqt.qtbot import QtBot
 
 from ladderworks.core.il import parse_bytes
 from ladderworks.gui.main_window import MainWindow
-from ladderworks.paths import CHECKOUT, EXAMPLES
+from ladderworks.paths import EXAMPLES
 from tests.gui.conftest import Answers, Drawer
+from tests.real_programs import real_programs_dir
 
-REAL = CHECKOUT.parent.parent / "shared" / "real-programs" / "FANUC_STUDER_X22_P036.txt"
+REAL = real_programs_dir() / "FANUC_STUDER_X22_P036.txt"
 TURKISH = (EXAMPLES / "or_single.LAD").read_text("utf-8")
 
 
@@ -43,8 +44,6 @@ def _invert_first_contact(window: MainWindow, network: int = 0) -> None:
 def test_real_program_saves_byte_for_byte(window: MainWindow, qtbot: QtBot,
                                           monkeypatch: pytest.MonkeyPatch,
                                           tmp_path: Path) -> None:
-    if not REAL.exists():
-        pytest.fail(f"the real program {REAL} is missing")
     assert window.load(REAL)
     target = tmp_path / "copy.txt"
     _save_as(window, qtbot, monkeypatch, target)

@@ -27,9 +27,7 @@ ESKIP = parse_address("X21.7")
 
 
 def _x22() -> Path:
-    folder = real_programs_dir()
-    assert folder is not None, "../shared/real-programs is missing"
-    return folder / f"{X22}.txt"
+    return real_programs_dir() / f"{X22}.txt"
 
 
 @pytest.fixture(scope="module")

@@ -25,6 +25,7 @@ class ProgressiveLoader(QObject):
         self.editor = editor
         self.pending: list[Network] = []
         self.trailer: list[str] = []
+        self.kept: convert.Kept | None = None  # receives each network as first laid out
         self._timer = QTimer(self)
         self._timer.setSingleShot(True)
         self._timer.setInterval(0)
@@ -35,14 +36,18 @@ class ProgressiveLoader(QObject):
         """True while networks are still to be laid out."""
         return bool(self.pending)
 
-    def head(self, program: Program) -> LadderDocument:
-        """The document of the first networks (all of a small program); the rest is pending."""
+    def head(self, program: Program, kept: convert.Kept | None = None) -> LadderDocument:
+        """The document of the first networks (all of a small program); the rest is pending.
+
+        `kept` receives every network as laid out (now and in the background steps), so Save
+        writes an unchanged network exactly as it was read."""
         self.cancel()
+        self.kept = kept
         if len(program.networks) <= AT_ONCE:
-            return convert.program_to_ladder(program)
+            return convert.program_to_ladder(program, kept)
         first = Program(networks=program.networks[:AT_ONCE], header=program.header,
                         before=program.before, after=program.after, footer=program.footer)
-        document = convert.program_to_ladder(first)
+        document = convert.program_to_ladder(first, kept)
         document.origin = program
         self.pending = list(program.networks[AT_ONCE:])
         self.trailer = list(program.trailer)
@@ -66,7 +71,7 @@ class ProgressiveLoader(QObject):
         chunk, self.pending = self.pending[:CHUNK], self.pending[CHUNK:]
         last = not self.pending
         part = convert.program_to_ladder(
-            Program(networks=chunk, trailer=self.trailer if last else []))
+            Program(networks=chunk, trailer=self.trailer if last else []), self.kept)
         self.editor.append_networks(part.networks)
         if last:
             self.editor.document.trailer = part.trailer

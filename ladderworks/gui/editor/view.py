@@ -46,6 +46,7 @@ from ladderworks.core.ladder import (
     Wire,
     convert,
 )
+from ladderworks.core.ladder.convert import Kept
 from ladderworks.core.signals import signal_at
 from ladderworks.core.symbols import SymbolTable, resolve
 from ladderworks.gui.diagnostic_texts import diagnostic_text
@@ -162,12 +163,13 @@ class LadderEditor(QGraphicsView):
 
     # -- the document ------------------------------------------------------------------------
 
-    def set_program(self, program: Program) -> None:
+    def set_program(self, program: Program, kept: Kept | None = None) -> None:
         """Show a program as ladder (clears undo); every program the parser accepts lays out.
 
         A large program shows its first networks at once; the rest are laid out in the
-        background (`loading`; `finish_loading()` waits for them)."""
-        document = self.loader.head(program)
+        background (`loading`; `finish_loading()` waits for them). `kept` receives each
+        network as laid out with the one it came from (the document's faithful Save)."""
+        document = self.loader.head(program, kept)
         self.set_document(document, keep_pending=True)
         self.loader.start()
 
