@@ -175,27 +175,27 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
         <source>{count} byte(s) here are not valid {encoding}; they are kept as they are</source>
         <translation>buradaki {count} bayt geçerli {encoding} değil; olduğu gibi korunur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="140"/>
         <source>this is not a ladder program (no %@ section and no instruction)</source>
         <translation>bu bir ladder programı değil (%@ bölümü ve komut yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="121"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="143"/>
         <source>line not understood in section {section}: &apos;{text}&apos;</source>
         <translation>{section} bölümünde anlaşılamayan satır: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="146"/>
         <source>{name}: parameter {index} ({param}) must be {letter} and a number, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. parametre ({param}) {letter} ve bir sayı olmalı, bulunan &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="127"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="149"/>
         <source>&apos;{text}&apos;: the number is too long</source>
         <translation>&apos;{text}&apos;: sayı çok uzun</translation>
     </message>
@@ -480,122 +480,122 @@
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {line}. satırda)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="107"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>JMP veya COM aralığı içinde LBL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="108"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde LBL L{label} yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>L{label} etiketi bu program biriminde iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC yalnızca bir alt program içinde kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
         <source>subprogram P{program} does not exist</source>
         <translation>P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="113"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>burada P{program} çağrısı bir alt programın kendini çağırmasına yol açıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="115"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>P{program} üzerinden çağrılar {limit} alt programdan daha derine iniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="117"/>
         <source>SP without a matching SPE</source>
         <translation>eşleşen SPE olmadan SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="118"/>
         <source>SPE without an SP before it</source>
         <translation>önünde SP olmayan SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="119"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>P{program} alt programı iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="120"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
-        <translation>ilk SP'den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
+        <translation>ilk SP&apos;den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="122"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} {level}. seviyeyi bitiremez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="123"/>
         <source>instruction after END, the end of the program</source>
-        <translation>program sonu END'den sonra komut</translation>
+        <translation>program sonu END&apos;den sonra komut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="0"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="124"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>L{label} etiketine geri atlama bir taramada {limit} kereden fazla tekrarlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="105"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="127"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="109"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="131"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="111"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="133"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="112"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="134"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="114"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="136"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="130"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="152"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="132"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="154"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="135"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="157"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/diagnostic_texts.py" line="137"/>
+        <location filename="../ladderworks/gui/diagnostic_texts.py" line="159"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
@@ -1984,145 +1984,154 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="149"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="167"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="169"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="178"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="180"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="191"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="202"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="204"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="318"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="320"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="331"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="333"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="61"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="335"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="343"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="337"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="345"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="64"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="341"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="343"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="350"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="352"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="352"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="101"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="110"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="363"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="365"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="384"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="383"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="384"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="389"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="389"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="399"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="401"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="402"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="404"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="404"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="406"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="77"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>{0} okunamıyor: {1}</translation>
     </message>
 </context>
 <context>
@@ -2299,6 +2308,49 @@
         <location filename="../ladderworks/gui/palette.py" line="104"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC komutları</translation>
+    </message>
+</context>
+<context>
+    <name>TraceFiles</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="48"/>
+        <source>LADDER-III...</source>
+        <translation>LADDER-III...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="50"/>
+        <source>Export the samples as a LADDER-III signal-trace result</source>
+        <translation>Örnekleri LADDER-III sinyal izleme sonucu olarak dışa aktar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
+        <source>Import...</source>
+        <translation>İçe aktar...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="53"/>
+        <source>Show a LADDER-III trace result or a CSV trace</source>
+        <translation>Bir LADDER-III izleme sonucunu ya da CSV izlemesini göster</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="82"/>
+        <source>{0}, line {1}: not a trace file</source>
+        <translation>{0}, satır {1}: izleme dosyası değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="93"/>
+        <source>Imported {0}: {1} samples</source>
+        <translation>{0} içe aktarıldı: {1} örnek</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="100"/>
+        <source>Export as LADDER-III trace result</source>
+        <translation>LADDER-III izleme sonucu olarak dışa aktar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
+        <source>Import a trace</source>
+        <translation>Bir izleme içe aktar</translation>
     </message>
 </context>
 </TS>
