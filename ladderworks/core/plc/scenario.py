@@ -1,10 +1,11 @@
 """Scenario files: FANUC PMC simulator signal-operation files plus EXPECT and WAITFOR checks.
 
 A file is `PMC SIGNAL DATA`, then one command a line (docs/scenarios.md):
-`REMARK,text`, `SET,wait,ADDR,VALUE[,TYPE][,ADDR,VALUE[,TYPE]]...`, `EXPECT,wait,ADDR,VALUE[,TYPE]`
-and `WAITFOR,timeout,ADDR,VALUE[,TYPE]`. A wait is in ms after the previous line, rounded up to
-the scan period. A line at time T acts at T: SET writes before the scan at T, EXPECT reads after
-it. `run_scenario` plays a parsed scenario on a `PlcRun`, so the session policy is shared.
+`REMARK,text`, `SET,wait,ADDR,VALUE[,TYPE][,ADDR,VALUE[,TYPE]]...`, `EXPECT,wait,ADDR,VALUE[,TYPE]`,
+`WAITFOR,timeout,ADDR,VALUE[,TYPE]`, `FORCE,wait,BIT,VALUE` and `RELEASE,wait,BIT`.
+A wait is in ms after the previous line, rounded up to the scan period. A line at time T acts
+at T: SET writes before the scan at T, EXPECT reads after it. `run_scenario` plays a parsed
+scenario on a `PlcRun`, so the session policy is shared.
 """
 
 from __future__ import annotations
@@ -24,18 +25,21 @@ HEADER = "PMC SIGNAL DATA"
 TYPES: dict[str, int] = {"BIT": 0, "B": 1, "BYTE": 1, "1": 1, "WORD": 2, "W": 2, "2": 2,
                          "DWORD": 4, "D": 4, "4": 4}
 COMMANDS = {"S": "SET", "SET": "SET", "R": "REMARK", "REMARK": "REMARK",
-            "E": "EXPECT", "EXPECT": "EXPECT", "W": "WAITFOR", "WAITFOR": "WAITFOR"}
+            "E": "EXPECT", "EXPECT": "EXPECT", "W": "WAITFOR", "WAITFOR": "WAITFOR",
+            "FORCE": "FORCE", "RELEASE": "RELEASE"}
 
 # English texts of the scenario diagnostics (the GUI has them behind tr())
 MESSAGES: dict[str, str] = {
     "scenario-header": "the first line must be '" + HEADER + "'",
-    "scenario-command": "unknown command '{text}' (use REMARK, SET, EXPECT or WAITFOR)",
+    "scenario-command":
+        "unknown command '{text}' (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)",
     "scenario-wait": "'{text}' is not a wait in ms",
     "scenario-negative": "negative wait {text} ms",
     "scenario-fields": "{command} needs {expected}",
     "scenario-address": "'{text}' is neither an address nor a symbol of the program",
     "scenario-value": "'{text}' is not a value for {target}",
     "scenario-type": "unknown type '{text}' (use BIT, BYTE, WORD or DWORD)",
+    "scenario-bit": "'{text}': only bits can be forced",
 }
 
 
@@ -221,7 +225,8 @@ class _Reader:
         return items
 
 
-_NEEDS = {"SET": "a wait and at least one ADDR,VALUE",
+_NEEDS = {"SET": "a wait and at least one ADDR,VALUE", "FORCE": "a wait, a bit and 0 or 1",
+          "RELEASE": "a wait and a forced bit",
           "EXPECT": "a wait, ADDR and VALUE", "WAITFOR": "a timeout, ADDR and VALUE"}
 
 
@@ -250,6 +255,8 @@ def parse_scenario(text: str, name: str = "scenario",
             if not scenario.remark:  # later REMARK lines are ignored, as the simulator does
                 scenario.remark = raw.split(",", 1)[1].strip() if "," in raw else ""
             continue
+        if command == "RELEASE" and len(fields) == 3:
+            fields.append("0")  # RELEASE,wait,ADDR: read as an item with no value
         if len(fields) < 4:
             reader.error("scenario-fields", number, 1, command=command,
                          expected=_NEEDS[command])
@@ -261,6 +268,9 @@ def parse_scenario(text: str, name: str = "scenario",
                          expected=_NEEDS[command])
             continue
         if wait is None or not items:
+            continue
+        if command in ("FORCE", "RELEASE") and items[0][0].address.bit is None:
+            reader.error("scenario-bit", number, 3, text=items[0][0].text)
             continue
         scenario.steps.append(Step(number, command, wait, tuple(items)))
     scenario.diagnostics = reader.diagnostics
@@ -309,12 +319,17 @@ def run_scenario(plc: PlcRun, scenario: Scenario,
     try:
         for step in scenario.steps:
             target_time = at + rounded(step.wait_ms, period)
-            if step.command == "SET":
+            if step.command in ("SET", "FORCE", "RELEASE"):
                 at = target_time
                 while engine.now_ms < at:
                     plc.run_scans(1)
                 for target, value in step.items:
-                    target.write(plc, value)
+                    if step.command == "FORCE":
+                        plc.force(target.address, value)
+                    elif step.command == "RELEASE":
+                        plc.release(target.address)
+                    else:
+                        target.write(plc, value)
                 continue
             target, expected = step.items[0]
             if step.command == "EXPECT":

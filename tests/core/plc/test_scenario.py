@@ -109,3 +109,42 @@ def test_parse_errors_do_not_run() -> None:
 
 def test_compiled_binary_loads() -> None:
     assert compile_program(parse(TIMER).program).binary is not None
+
+
+def test_force_and_release_lines() -> None:
+    plc = loaded("%@3\nRD X2.1\nWRT Y0.0\n%\n")
+    result = run_scenario(plc, parse_scenario(
+        "PMC SIGNAL DATA\nSET,0,X2.1,1\nFORCE,8,X2.1,0\nEXPECT,0,Y0.0,0\nRELEASE,8,X2.1\n"
+        "EXPECT,0,Y0.0,1\n"))
+    assert result.passed, result.failures()
+    bad = parse_scenario("PMC SIGNAL DATA\nFORCE,0,X2,1\n")
+    assert [d.code for d in bad.diagnostics] == ["scenario-bit"]
+
+
+def test_recorder_writes_changes_and_forces_that_replay_the_same() -> None:
+    from ladderworks.core.plc.recorder import ScenarioRecorder
+
+    text = "%@3\nRD X2.1\nOR Y0.0\nAND.NOT X2.2\nWRT Y0.0\nRD X2.3\nWRT Y0.1\nMOVB X40 Y1\n%\n"
+    plc = loaded(text)
+    plc.start()
+    recorder = ScenarioRecorder(plc, "recorded")
+    recorder.start()
+    plc.run_scans(3)
+    plc.set_bit(parse_address("X2.1"), 1)
+    plc.run_scans(2)
+    plc.set_bit(parse_address("X2.1"), 0)
+    plc.force(parse_address("X2.3"), 1)
+    plc.write(parse_address("X40"), 0x5A)
+    plc.run_scans(4)
+    plc.release(parse_address("X2.3"))
+    plc.run_scans(1)
+    recorder.stop()
+    written = recorder.text()
+    assert written.splitlines() == [
+        "PMC SIGNAL DATA", "REMARK,recorded", "SET,24,X2.1,1", "SET,16,X2.1,0",
+        "FORCE,0,X2.3,1", "SET,0,X40,0x5A,BYTE", "RELEASE,32,X2.3",
+        "EXPECT,0,Y0,1,BYTE", "EXPECT,0,Y1,90,BYTE"]
+    again = loaded(text)
+    result = run_scenario(again, parse_scenario(written))
+    assert result.passed, result.failures()
+    assert again.memory.areas == plc.memory.areas
