@@ -1939,6 +1939,125 @@
     </message>
 </context>
 <context>
+    <name>Scenario</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="88"/>
+        <source>Run scenario</source>
+        <translation>Run scenario</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="181"/>
+        <source>Scenario files (*.csv);;All files (*)</source>
+        <translation>Scenario files (*.csv);;All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="99"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>Cannot read {0}: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="115"/>
+        <source>Load (compile) a PLC program first</source>
+        <translation>Load (compile) a PLC program first</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="140"/>
+        <source>passed</source>
+        <translation>passed</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="141"/>
+        <source>FAILED</source>
+        <translation>FAILED</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="147"/>
+        <source>{0}: all {1} checks passed</source>
+        <translation>{0}: all {1} checks passed</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="150"/>
+        <source>{0}: {1} of {2} checks failed</source>
+        <translation>{0}: {1} of {2} checks failed</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="180"/>
+        <source>Save the recorded scenario</source>
+        <translation>Save the recorded scenario</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="188"/>
+        <source>recorded in LadderWorks</source>
+        <translation>recorded in LadderWorks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
+        <source>Recording inputs and forces...</source>
+        <translation>Recording inputs and forces...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="200"/>
+        <source>Recorded {0} changes</source>
+        <translation>Recorded {0} changes</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="208"/>
+        <source>Cannot write {0}: {1}</source>
+        <translation>Cannot write {0}: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="211"/>
+        <source>Saved {0}</source>
+        <translation>Saved {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="222"/>
+        <source>PLC scenario</source>
+        <translation>PLC scenario</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="223"/>
+        <source>Run scenario...</source>
+        <translation>Run scenario...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="224"/>
+        <source>Record scenario</source>
+        <translation>Record scenario</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
+        <source>Check</source>
+        <translation>Check</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
+        <source>Expected</source>
+        <translation>Expected</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
+        <source>Got</source>
+        <translation>Got</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
+        <source>Time (ms)</source>
+        <translation>Time (ms)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
+        <source>Result</source>
+        <translation>Result</translation>
+    </message>
+</context>
+<context>
     <name>SignalList</name>
     <message>
         <location filename="../ladderworks/gui/signal_list.py" line="97"/>
@@ -2038,8 +2157,8 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="354"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="101"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="110"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
@@ -2338,17 +2457,17 @@
         <translation>{0}, line {1}: not a trace file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="93"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="90"/>
         <source>Imported {0}: {1} samples</source>
         <translation>Imported {0}: {1} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="100"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="107"/>
         <source>Export as LADDER-III trace result</source>
         <translation>Export as LADDER-III trace result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="116"/>
         <source>Import a trace</source>
         <translation>Import a trace</translation>
     </message>

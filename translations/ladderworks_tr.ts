@@ -1939,6 +1939,125 @@
     </message>
 </context>
 <context>
+    <name>Scenario</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="88"/>
+        <source>Run scenario</source>
+        <translation>Senaryo çalıştır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="181"/>
+        <source>Scenario files (*.csv);;All files (*)</source>
+        <translation>Senaryo dosyaları (*.csv);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="99"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>{0} okunamıyor: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="115"/>
+        <source>Load (compile) a PLC program first</source>
+        <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="140"/>
+        <source>passed</source>
+        <translation>geçti</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="141"/>
+        <source>FAILED</source>
+        <translation>BAŞARISIZ</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="147"/>
+        <source>{0}: all {1} checks passed</source>
+        <translation>{0}: {1} denetimin tümü geçti</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="150"/>
+        <source>{0}: {1} of {2} checks failed</source>
+        <translation>{0}: {2} denetimden {1} tanesi başarısız</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="180"/>
+        <source>Save the recorded scenario</source>
+        <translation>Kaydedilen senaryoyu sakla</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="188"/>
+        <source>recorded in LadderWorks</source>
+        <translation>LadderWorks ile kaydedildi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
+        <source>Recording inputs and forces...</source>
+        <translation>Girişler ve zorlamalar kaydediliyor...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="200"/>
+        <source>Recorded {0} changes</source>
+        <translation>{0} değişiklik kaydedildi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="208"/>
+        <source>Cannot write {0}: {1}</source>
+        <translation>{0} yazılamıyor: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="211"/>
+        <source>Saved {0}</source>
+        <translation>{0} kaydedildi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="222"/>
+        <source>PLC scenario</source>
+        <translation>PLC senaryosu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="223"/>
+        <source>Run scenario...</source>
+        <translation>Senaryo çalıştır...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="224"/>
+        <source>Record scenario</source>
+        <translation>Senaryo kaydet</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
+        <source>Line</source>
+        <translation>Satır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
+        <source>Check</source>
+        <translation>Denetim</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
+        <source>Expected</source>
+        <translation>Beklenen</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
+        <source>Got</source>
+        <translation>Okunan</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
+        <source>Time (ms)</source>
+        <translation>Zaman (ms)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
+        <source>Result</source>
+        <translation>Sonuç</translation>
+    </message>
+</context>
+<context>
     <name>SignalList</name>
     <message>
         <location filename="../ladderworks/gui/signal_list.py" line="97"/>
@@ -2038,8 +2157,8 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="354"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="101"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="110"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
@@ -2338,17 +2457,17 @@
         <translation>{0}, satır {1}: izleme dosyası değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="93"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="90"/>
         <source>Imported {0}: {1} samples</source>
         <translation>{0} içe aktarıldı: {1} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="100"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="107"/>
         <source>Export as LADDER-III trace result</source>
         <translation>LADDER-III izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="116"/>
         <source>Import a trace</source>
         <translation>Bir izleme içe aktar</translation>
     </message>

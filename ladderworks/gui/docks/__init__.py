@@ -97,6 +97,9 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
     for name, module in (("bit_display", bit_display), ("time_chart", time_chart),
                          ("alarms", alarms), ("tables", tables)):
         others[name] = module.install(window, session)
+    from ladderworks.gui.docks import scenario  # after the time chart: it shows its runs there
+
+    others["scenario"] = scenario.install(window, session)
     app = QCoreApplication.instance()
     if app is not None:
         app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program

@@ -86,12 +86,19 @@ def import_trace(dock: TimeChartDock, path: str | Path) -> bool:
     record.period_ms = period
     record.extend(TraceSample(index, time_ms, tuple(column[index] for column in table.columns))
                   for index, time_ms in enumerate(table.times))
-    dock.record = record
-    dock.signals_edit.setText(" ".join(s.label for s in signals))
-    dock._make_lanes()
-    dock.fit()
+    show_record(dock, record)
     dock._say(translate("TraceFiles", "Imported {0}: {1} samples").format(path, len(record)))
     return True
+
+
+def show_record(dock: TimeChartDock, record: TraceRecord) -> None:
+    """Show a finished record (an imported file, a scenario's run) instead of live samples."""
+    if dock.sampling:
+        dock.stop()
+    dock.record = record
+    dock.signals_edit.setText(" ".join(s.label for s in record.signals))
+    dock._make_lanes()
+    dock.fit()
 
 
 def export_dialog(dock: TimeChartDock) -> None:
