@@ -1590,67 +1590,87 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="157"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="158"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="145"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="159"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="160"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="161"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="162"/>
+        <source>Why?</source>
+        <translation>Why?</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="163"/>
+        <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
+        <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="166"/>
+        <source>Back to live</source>
+        <translation>Back to live</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="167"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="210"/>
+        <source>PAST — scan {0} at {1} ms (not live)</source>
+        <translation>PAST — scan {0} at {1} ms (not live)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="216"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="218"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="220"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="204"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="261"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="305"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="315"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="324"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
@@ -2251,6 +2271,34 @@
         <location filename="../ladderworks/gui/docks/trace_files.py" line="77"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
+    </message>
+</context>
+<context>
+    <name>TimeTravel</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="46"/>
+        <source>Keep scan history (time travel)</source>
+        <translation>Keep scan history (time travel)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="47"/>
+        <source>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</source>
+        <translation>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="101"/>
+        <source>Turn on PLC › Keep scan history and give a bit address</source>
+        <translation>Turn on PLC › Keep scan history and give a bit address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="109"/>
+        <source>{0} did not change in the scans kept</source>
+        <translation>{0} did not change in the scans kept</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="116"/>
+        <source>{0} went to {1} in scan {2} at {3} ms</source>
+        <translation>{0} went to {1} in scan {2} at {3} ms</translation>
     </message>
 </context>
 <context>

@@ -1590,67 +1590,87 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="157"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="158"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="145"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="159"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="160"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="161"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="162"/>
+        <source>Why?</source>
+        <translation>Neden?</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="163"/>
+        <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
+        <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="166"/>
+        <source>Back to live</source>
+        <translation>Canlıya dön</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="167"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="210"/>
+        <source>PAST — scan {0} at {1} ms (not live)</source>
+        <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="216"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="218"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="220"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="204"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="261"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="305"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="315"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="324"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
@@ -2251,6 +2271,34 @@
         <location filename="../ladderworks/gui/docks/trace_files.py" line="77"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
+    </message>
+</context>
+<context>
+    <name>TimeTravel</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="46"/>
+        <source>Keep scan history (time travel)</source>
+        <translation>Tarama geçmişini tut (zamanda yolculuk)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="47"/>
+        <source>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</source>
+        <translation>Her taramanın enerji akışını ve değerlerini tut: zaman kartının imleci PLC teşhiste önceki bir taramayı gösterir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="101"/>
+        <source>Turn on PLC › Keep scan history and give a bit address</source>
+        <translation>PLC › Tarama geçmişini tut seçeneğini açın ve bir bit adresi verin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="109"/>
+        <source>{0} did not change in the scans kept</source>
+        <translation>{0}, tutulan taramalarda değişmedi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="116"/>
+        <source>{0} went to {1} in scan {2} at {3} ms</source>
+        <translation>{0}, {2}. taramada ({3} ms) {1} oldu</translation>
     </message>
 </context>
 <context>

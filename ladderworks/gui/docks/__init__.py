@@ -71,8 +71,9 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
         dock.hide()
     window.tabifyDockWidget(control, diagnostic)
     online = OnlineMode(editor, session, window) if editor is not None else None
-    _Retranslate(window, [control, diagnostic, force_list]
-                 + ([online] if online is not None else []))
+    retranslated: list[object] = [control, diagnostic, force_list]
+    retranslated += [online] if online is not None else []
+    _Retranslate(window, retranslated)  # the same list: time travel joins it below
     plc_menu = find_menu(window, "menu_plc")
     actions = [control.actions[name] for name in ("action_plc_control_compile", "action_plc_start",
                                                   "action_plc_stop")]
@@ -100,6 +101,12 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
     from ladderworks.gui.docks import scenario  # after the time chart: it shows its runs there
 
     others["scenario"] = scenario.install(window, session)
+    from ladderworks.gui.docks import time_travel  # the chart's cursor shows past scans
+
+    chart = others["time_chart"]
+    window.time_travel = time_travel.install(
+        window, session, diagnostic, chart if isinstance(chart, time_chart.TimeChartDock) else None)
+    retranslated.append(window.time_travel)
     app = QCoreApplication.instance()
     if app is not None:
         app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
