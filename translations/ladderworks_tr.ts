@@ -1636,6 +1636,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="210"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="141"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
@@ -1696,72 +1697,73 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="58"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="59"/>
         <source>On-line mode</source>
         <translation>On-line mod</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
         <source>Make passive (disable)</source>
         <translation>Pasif hale getir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
         <source>Make active again</source>
         <translation>Tekrar aktif yap</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
         <source>Release the force</source>
         <translation>Zorlamayı bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="83"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="87"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="88"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>On-line mod için PLC&apos;de derlenmiş bir program gerekir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="93"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>Çizim PLC&apos;deki program değil: önce PLC kontrol ekranında derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="101"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="102"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="150"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>On-line: çizim çalışan PLC&apos;yi gösteriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="120"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: çizim değişti; artık PLC&apos;nin çalıştırdığı program değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="173"/>
         <source>Select a contact, coil or function first</source>
         <translation>Önce bir kontak, çıkış veya fonksiyon seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="160"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="177"/>
         <source>This element has no op in the PLC program</source>
         <translation>Bu elemanın PLC programında karşılığı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="200"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Sinyalini zorlamak için bir kontak veya çıkış seçin</translation>
     </message>
@@ -2276,27 +2278,27 @@
 <context>
     <name>TimeTravel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="46"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="49"/>
         <source>Keep scan history (time travel)</source>
         <translation>Tarama geçmişini tut (zamanda yolculuk)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="47"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="50"/>
         <source>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</source>
         <translation>Her taramanın enerji akışını ve değerlerini tut: zaman kartının imleci PLC teşhiste önceki bir taramayı gösterir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="101"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="111"/>
         <source>Turn on PLC › Keep scan history and give a bit address</source>
         <translation>PLC › Tarama geçmişini tut seçeneğini açın ve bir bit adresi verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="119"/>
         <source>{0} did not change in the scans kept</source>
         <translation>{0}, tutulan taramalarda değişmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="116"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="126"/>
         <source>{0} went to {1} in scan {2} at {3} ms</source>
         <translation>{0}, {2}. taramada ({3} ms) {1} oldu</translation>
     </message>

@@ -8,7 +8,7 @@ from ladderworks.core.address import parse_address
 from ladderworks.core.il import parse
 from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.main_window import MainWindow
-from tests.gui.plc_docks_help import plc_docks
+from tests.gui.plc_docks_help import plc_docks, set_switch
 
 LATCH = "%@3\nRD X2.1\nOR Y0.0\nAND.NOT X2.2\nWRT Y0.0\n%\n"
 
@@ -63,3 +63,22 @@ def test_cursor_back_shows_the_earlier_state_then_live_and_why(qtbot: QtBot,
 def engine_ops(session: object) -> list[str]:
     engine = session.engine  # type: ignore[attr-defined]
     return [f"{op.name} {op.operand}" for op in engine.program.ops]
+
+
+def test_online_drawing_shows_the_past_too(qtbot: QtBot, window: MainWindow) -> None:
+    from tests.gui.test_online import online_window
+
+    docks = online_window(window)
+    session, online = docks.session, docks.online
+    window.time_travel.enable(True)
+    set_switch(session, 0)
+    session.step(16)  # scans at 0 and 8 ms: position 0, R102.0 on
+    set_switch(session, 1)
+    session.step(8)
+    assert window.time_travel.show_time(8)
+    assert online.past is not None and online.past.now_ms == 8
+    assert window.editor.networks[0].coil_column is not None
+    assert online.live.overlays[0].power.coils == {(0, window.editor.networks[0].coil_column)}
+    docks.diagnostic.show_past(docks.diagnostic.session.snapshot())
+    docks.diagnostic.back_to_live()
+    assert online.past is None and online.live.overlays[0].power.coils == set()

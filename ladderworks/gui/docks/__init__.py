@@ -105,7 +105,8 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
 
     chart = others["time_chart"]
     window.time_travel = time_travel.install(
-        window, session, diagnostic, chart if isinstance(chart, time_chart.TimeChartDock) else None)
+        window, session, diagnostic, chart if isinstance(chart, time_chart.TimeChartDock) else None,
+        online)
     retranslated.append(window.time_travel)
     app = QCoreApplication.instance()
     if app is not None:

@@ -13,6 +13,7 @@ from ladderworks.core.plc.history import ScanHistory, Why
 from ladderworks.core.plc.session import PlcSnapshot
 from ladderworks.gui.docks.diagnostic import DiagnosticDock
 from ladderworks.gui.docks.dock_menus import find_menu, register_action
+from ladderworks.gui.docks.online import OnlineMode
 from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.plc_session import PlcSession
 
@@ -30,12 +31,14 @@ class TimeTravel(QObject):
         self.diagnostic = diagnostic
         self.chart = chart
         self.history: ScanHistory | None = None
+        self.online: OnlineMode | None = None  # the console's on-line drawing, if any
         self.action = QAction(self)
         self.action.setObjectName(ACTION)
         self.action.setCheckable(True)
         self.action.toggled.connect(self.enable)
         session.program_loaded.connect(self._on_program)
         diagnostic.why_requested.connect(self.why)
+        diagnostic.live_requested.connect(self._live)
         if chart is not None:
             chart.cursor.sigPositionChanged.connect(lambda _line: self.show_time(
                 chart.cursor.value()))
@@ -68,6 +71,10 @@ class TimeTravel(QObject):
         if self.action.isChecked() != on:
             self.action.setChecked(on)
 
+    def _live(self) -> None:
+        if self.online is not None:
+            self.online.back_to_live()
+
     def _attach(self) -> None:
         engine = self.session.engine
         if engine is not None and self.history is not None:
@@ -89,8 +96,11 @@ class TimeTravel(QObject):
             frame = self.history.frame(scan) if scan is not None else None
         if frame is None:
             return False
-        self.diagnostic.show_past(PlcSnapshot(frame.scan, frame.time_ms, frame.areas,
-                                              frame.power_flow, True, frozenset()))
+        snapshot = PlcSnapshot(frame.scan, frame.time_ms, frame.areas, frame.power_flow, True,
+                               frozenset())
+        self.diagnostic.show_past(snapshot)
+        if self.online is not None:
+            self.online.show_past(snapshot)
         return True
 
     def why(self, address: Address) -> Why | None:
@@ -120,9 +130,10 @@ class TimeTravel(QObject):
 
 
 def install(window: QMainWindow, session: PlcSession, diagnostic: DiagnosticDock,
-            chart: TimeChartDock | None) -> TimeTravel:
+            chart: TimeChartDock | None, online: OnlineMode | None = None) -> TimeTravel:
     """Add PLC › Keep scan history (time travel)."""
     travel = TimeTravel(session, diagnostic, chart, window)
+    travel.online = online
     register_action(window, travel.action)
     menu = find_menu(window, "menu_plc")
     if menu is not None:
