@@ -300,7 +300,8 @@ CheckListener = Callable[[CheckResult], None]
 
 def run_scenario(plc: PlcRun, scenario: Scenario,
                  on_check: CheckListener | None = None) -> ScenarioResult:
-    """Play the steps on a loaded `plc` from its current time (cold-start it first)."""
+    """Play the steps on a loaded `plc` from its current time (cold-start it first); the plc
+    runs on the virtual clock (ValueError for a real-time one)."""
     result = ScenarioResult(scenario)
     engine = plc.engine
     if engine is None or not scenario.ok:
@@ -311,10 +312,14 @@ def run_scenario(plc: PlcRun, scenario: Scenario,
     start_ms = engine.now_ms
     at = start_ms
 
+    def scan() -> None:
+        if not plc.run_scans(1):  # a real-time PlcRun scans on its own thread
+            raise ValueError("scenarios run on the virtual clock, not a real-time PlcRun")
+
     def scan_through(limit: int) -> None:
         """Run every scan due at or before `limit` ms."""
         while engine.now_ms <= limit:
-            plc.run_scans(1)
+            scan()
 
     try:
         for step in scenario.steps:
@@ -322,7 +327,7 @@ def run_scenario(plc: PlcRun, scenario: Scenario,
             if step.command in ("SET", "FORCE", "RELEASE"):
                 at = target_time
                 while engine.now_ms < at:
-                    plc.run_scans(1)
+                    scan()
                 for target, value in step.items:
                     if step.command == "FORCE":
                         plc.force(target.address, value)
@@ -345,7 +350,7 @@ def run_scenario(plc: PlcRun, scenario: Scenario,
                     seen = engine.now_ms - period
                     if got == expected or seen >= target_time:
                         break
-                    plc.run_scans(1)
+                    scan()
                 at = seen
                 check = CheckResult(step.line, step.command, target.text, expected, got,
                                     seen - start_ms, got == expected)

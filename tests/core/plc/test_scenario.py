@@ -148,3 +148,14 @@ def test_recorder_writes_changes_and_forces_that_replay_the_same() -> None:
     result = run_scenario(again, parse_scenario(written))
     assert result.passed, result.failures()
     assert again.memory.areas == plc.memory.areas
+
+
+def test_a_real_time_plc_is_refused() -> None:
+    program = parse(TIMER).program
+    plc = PlcRun(realtime=True)
+    assert plc.load_program(program).binary is not None
+    try:
+        with pytest.raises(ValueError, match="virtual clock"):
+            run_scenario(plc, parse_scenario("PMC SIGNAL DATA\nEXPECT,8,R1.7,0\n"))
+    finally:
+        plc.stop()
