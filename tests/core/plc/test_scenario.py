@@ -3,14 +3,17 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from ladderworks.core.address import parse_address
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.il import parse, parse_file
-from ladderworks.core.plc.scenario import parse_scenario, rounded, run_scenario
+from ladderworks.core.plc.scenario import Step, parse_scenario, rounded, run_scenario
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.core.symbols import Symbol, SymbolTable
 from tests.core.plc.conftest import EXAMPLES
+from tests.hypothesis_profiles import examples
 
 TIMER = "%@3\nRD R1.4\nTMR 1\nWRT R1.7\n%\n"
 
@@ -159,3 +162,25 @@ def test_a_real_time_plc_is_refused() -> None:
             run_scenario(plc, parse_scenario("PMC SIGNAL DATA\nEXPECT,8,R1.7,0\n"))
     finally:
         plc.stop()
+
+
+_FIELDS = st.one_of(
+    st.sampled_from(["SET", "S", "EXPECT", "WAITFOR", "FORCE", "RELEASE", "REMARK", "R", "BYTE",
+                     "WORD", "DWORD", "BIT", "X2.1", "R1.7", "D10", "T0", "Q9", "X2.9", "",
+                     "0x", "0xFF", "-", "İŞ", "9" * 400]),
+    st.integers(-10**6, 10**6).map(str),
+    st.text(max_size=8),
+)
+_LINES = st.lists(st.lists(_FIELDS, max_size=8).map(",".join), max_size=12)
+
+
+@settings(max_examples=examples(150))
+@given(_LINES)
+def test_any_text_reads_and_runs_without_a_crash(lines: list[str]) -> None:
+    scenario = parse_scenario("\n".join(["PMC SIGNAL DATA", *lines]))
+    for step in scenario.steps:
+        assert step.wait_ms >= 0 and step.items
+    capped = [Step(s.line, s.command, min(s.wait_ms, 80), s.items) for s in scenario.steps]
+    scenario.steps = capped
+    result = run_scenario(loaded(TIMER), scenario)
+    assert result.passed in (True, False)
