@@ -30,7 +30,7 @@ def ten_minutes() -> str:
     for second in range(MINUTES * 60):
         lines.append(f"SET,{0 if second == 0 else 1000},X8.4,{second % 2},,"
                      f"X10,{second * 37 % 256},BYTE")
-    lines.append("EXPECT,0,X8.4,1")
+    lines.append("EXPECT,1000,X8.4,1")  # the end of the tenth minute
     return "\n".join(lines) + "\n"
 
 
