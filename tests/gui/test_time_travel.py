@@ -7,6 +7,7 @@ from pytestqt.qtbot import QtBot
 from ladderworks.core.address import parse_address
 from ladderworks.core.il import parse
 from ladderworks.gui.docks.time_chart import TimeChartDock
+from ladderworks.gui.docks.time_travel import TimeTravel
 from ladderworks.gui.main_window import MainWindow
 from tests.gui.plc_docks_help import plc_docks, set_switch
 
@@ -20,7 +21,7 @@ def test_cursor_back_shows_the_earlier_state_then_live_and_why(qtbot: QtBot,
     assert session.load_program(parse(LATCH).program).ok
     session.start()
     dock.show()
-    travel = window.time_travel
+    travel = time_travel(window)
     travel.action.trigger()
     assert travel.history is not None and dock.why_button.isVisible()
     chart = docks.others["time_chart"]
@@ -70,15 +71,21 @@ def test_online_drawing_shows_the_past_too(qtbot: QtBot, window: MainWindow) -> 
 
     docks = online_window(window)
     session, online = docks.session, docks.online
-    window.time_travel.enable(True)
+    time_travel(window).enable(True)
     set_switch(session, 0)
     session.step(16)  # scans at 0 and 8 ms: position 0, R102.0 on
     set_switch(session, 1)
     session.step(8)
-    assert window.time_travel.show_time(8)
+    assert time_travel(window).show_time(8)
     assert online.past is not None and online.past.now_ms == 8
     assert window.editor.networks[0].coil_column is not None
     assert online.live.overlays[0].power.coils == {(0, window.editor.networks[0].coil_column)}
     docks.diagnostic.show_past(docks.diagnostic.session.snapshot())
     docks.diagnostic.back_to_live()
     assert online.past is None and online.live.overlays[0].power.coils == set()
+
+
+def time_travel(window: MainWindow) -> TimeTravel:
+    travel = plc_docks(window).time_travel
+    assert isinstance(travel, TimeTravel)
+    return travel

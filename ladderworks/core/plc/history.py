@@ -95,7 +95,7 @@ class ScanHistory:
     def record(self, engine: ScanEngine) -> None:
         """Keep the state after the scan just run (called by the engine, under its lock)."""
         scan, now = engine.scan_count, engine.now_ms
-        sources: dict[Area | str, bytearray] = dict(engine.memory.areas)
+        sources: dict[Area | str, bytearray] = {k: v for k, v in engine.memory.areas.items()}
         sources[FLOW] = engine.power_flow
         segment = self.segments[-1] if self.segments else None
         if (segment is None or scan - segment.scan >= self.keyframe_every

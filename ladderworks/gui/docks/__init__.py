@@ -21,6 +21,7 @@ class PlcDocks:
     force_list: QDockWidget
     online: QObject
     others: dict[str, QDockWidget] = field(default_factory=dict)  # issue 8's docks by name
+    time_travel: QObject | None = None  # PLC › Keep scan history (gui/docks/time_travel.py)
 
 
 class _Retranslate(QObject):
@@ -104,12 +105,13 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
     from ladderworks.gui.docks import time_travel  # the chart's cursor shows past scans
 
     chart = others["time_chart"]
-    window.time_travel = time_travel.install(
+    travel = time_travel.install(
         window, session, diagnostic, chart if isinstance(chart, time_chart.TimeChartDock) else None,
         online)
-    retranslated.append(window.time_travel)
+    retranslated.append(travel)
     app = QCoreApplication.instance()
     if app is not None:
         app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
-    window.plc_docks = PlcDocks(session, control, diagnostic, force_list, online, others)
+    window.plc_docks = PlcDocks(session, control, diagnostic, force_list, online, others,
+                                 travel)
     return window.plc_docks

@@ -3,6 +3,7 @@ diagnostic view (marked as the past), "why" jumps to the scan where a bit change
 
 from __future__ import annotations
 
+import pyqtgraph as pg
 from PySide6.QtCore import QCoreApplication, QObject
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import QMainWindow
@@ -39,9 +40,9 @@ class TimeTravel(QObject):
         session.program_loaded.connect(self._on_program)
         diagnostic.why_requested.connect(self.why)
         diagnostic.live_requested.connect(self._live)
-        if chart is not None:
-            chart.cursor.sigPositionChanged.connect(lambda _line: self.show_time(
-                chart.cursor.value()))
+        if chart is not None:  # the chart's `cursor` is its pg.InfiniteLine
+            line: pg.InfiniteLine = chart.cursor  # type: ignore[assignment]
+            line.sigPositionChanged.connect(lambda _line: self.show_time(line.value()))
         self.retranslate()
 
     def retranslate(self) -> None:
