@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from PySide6.QtCore import Qt
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
@@ -56,7 +57,13 @@ def test_cursor_back_shows_the_earlier_state_then_live_and_why(qtbot: QtBot,
     assert "Y0.0 went to 1 in scan 5 at 40 ms" in dock.message.text()
     assert (network, cell) in dock.hits and cell in overlay.marked
     assert round(chart.cursor.value()) == 40
+    slider = travel.slider
+    assert slider.isVisible() and (slider.minimum(), slider.maximum()) == (0, 12)
+    dock.back_to_live()
+    qtbot.keyClick(slider, Qt.Key.Key_Home)  # the slider: to the first scan kept
+    assert dock.past is not None and dock.past.scan_count == 0
     travel.action.trigger()
+    assert not slider.isVisible()
     assert travel.history is None and dock.past is None and session.engine is not None
     assert session.engine.history is None
 

@@ -4,9 +4,9 @@ diagnostic view (marked as the past), "why" jumps to the scan where a bit change
 from __future__ import annotations
 
 import pyqtgraph as pg
-from PySide6.QtCore import QCoreApplication, QObject
+from PySide6.QtCore import QCoreApplication, QObject, Qt
 from PySide6.QtGui import QAction
-from PySide6.QtWidgets import QMainWindow
+from PySide6.QtWidgets import QMainWindow, QSlider
 
 from ladderworks.core.address import Address
 from ladderworks.core.compiler.binary import BinaryProgram
@@ -40,6 +40,15 @@ class TimeTravel(QObject):
         session.program_loaded.connect(self._on_program)
         diagnostic.why_requested.connect(self.why)
         diagnostic.live_requested.connect(self._live)
+        # a slider over the scans kept, under the diagnostic's search bar
+        self.slider = QSlider(Qt.Orientation.Horizontal, diagnostic)
+        self.slider.setObjectName("diagnosticHistorySlider")
+        self.slider.hide()
+        self.slider.valueChanged.connect(self.show_scan)  # set by code with signals blocked
+        body_layout = diagnostic.widget().layout()
+        if body_layout is not None:
+            body_layout.insertWidget(1, self.slider)  # type: ignore[attr-defined]
+        session.snapshot_ready.connect(self._update_slider)
         if chart is not None:  # the chart's `cursor` is its pg.InfiniteLine
             line: pg.InfiniteLine = chart.cursor  # type: ignore[assignment]
             line.sigPositionChanged.connect(lambda _line: self.show_time(line.value()))
@@ -69,6 +78,7 @@ class TimeTravel(QObject):
             self.session.monitor(False)
             self.diagnostic.back_to_live()
         self.diagnostic.why_button.setVisible(on)
+        self.slider.setVisible(on)
         if self.action.isChecked() != on:
             self.action.setChecked(on)
 
@@ -88,15 +98,36 @@ class TimeTravel(QObject):
             self._attach()
             self.diagnostic.back_to_live()
 
+    def _update_slider(self, _snapshot: object = None) -> None:
+        """The slider spans the scans kept (its handle stays put while in the past)."""
+        history = self.history
+        if history is None or history.first_scan is None or history.last_scan is None:
+            return
+        self.slider.blockSignals(True)
+        self.slider.setRange(history.first_scan, history.last_scan)
+        if self.diagnostic.past is None:
+            self.slider.setValue(history.last_scan)
+        self.slider.blockSignals(False)
+
     def show_time(self, time_ms: float) -> bool:
         """Show the scan run at `time_ms` (or the last one before it) as the past."""
         if self.history is None:
             return False
         with self.session.run.lock():
             scan = self.history.scan_at(time_ms)
-            frame = self.history.frame(scan) if scan is not None else None
+        return scan is not None and self.show_scan(scan)
+
+    def show_scan(self, scan: int) -> bool:
+        """Show a kept scan as the past (False when it is not kept)."""
+        if self.history is None:
+            return False
+        with self.session.run.lock():
+            frame = self.history.frame(scan)
         if frame is None:
             return False
+        self.slider.blockSignals(True)
+        self.slider.setValue(frame.scan)
+        self.slider.blockSignals(False)
         snapshot = PlcSnapshot(frame.scan, frame.time_ms, frame.areas, frame.power_flow, True,
                                frozenset())
         self.diagnostic.show_past(snapshot)
