@@ -68,8 +68,9 @@ def _test(args: argparse.Namespace) -> int:
         for text in result.failures():
             print(text)
         state = "passed" if result.passed else "FAILED"
+        speed = result.virtual_ms / 1000 / result.seconds if result.seconds > 0 else 0.0
         print(f"{name}: {state} ({len(result.checks)} checks, {result.virtual_ms} ms "
-              f"in {result.seconds:.3f} s)")
+              f"in {result.seconds:.3f} s, {speed:.0f}x real time)")
     if args.junit:
         write_junit(Path(args.junit), args.file, results)
     failed = sum(not r.passed for r in results)

@@ -129,6 +129,9 @@ class ScenarioDock(QDockWidget):
             record.period_ms = plc.engine.period_ms
             record.extend(trace.take())
             trace_files.show_record(self.chart, record)
+            failing = self.failing_times()
+            if failing:  # the first failure at once
+                self.chart.set_cursor(failing[0])
         self.finished.emit(result)
         return result
 
