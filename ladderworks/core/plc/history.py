@@ -23,7 +23,7 @@ if TYPE_CHECKING:
 BLOCK = 64
 KEYFRAME_EVERY = 256
 DEFAULT_BUDGET = 200 * 1024 * 1024
-_ENTRY_OVERHEAD = 120  # bytes of Python objects per kept scan, beyond the data
+_ENTRY_OVERHEAD = 200  # bytes of Python objects per kept scan, beyond the data (measured)
 _BLOCK_OVERHEAD = 90  # per changed block (tuple, bytes object header)
 FLOW = "flow"  # the key of the power flow among the areas of a delta
 
