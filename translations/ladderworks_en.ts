@@ -611,41 +611,86 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
+        <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
+        <translation>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <source>&apos;{text}&apos; is not a wait in ms</source>
+        <translation>&apos;{text}&apos; is not a wait in ms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <source>negative wait {text} ms</source>
+        <translation>negative wait {text} ms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <source>{command} needs {expected}</source>
+        <translation>{command} needs {expected}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
+        <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <source>&apos;{text}&apos; is not a value for {target}</source>
+        <translation>&apos;{text}&apos; is not a value for {target}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
+        <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
+        <source>&apos;{text}&apos;: only bits can be forced</source>
+        <translation>&apos;{text}&apos;: only bits can be forced</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="196"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
@@ -860,114 +905,114 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="397"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="436"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="713"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="399"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="438"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="715"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="408"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="410"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="412"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="695"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="707"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="414"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="697"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="709"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="421"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="724"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="733"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="423"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="726"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="735"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="441"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="443"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="433"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="443"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="435"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="445"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="454"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="457"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="459"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="468"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="470"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="478"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="480"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="511"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="513"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="515"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="519"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="517"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="521"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="525"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="561"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="631"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="652"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="527"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="563"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="633"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="654"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="360"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="621"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="362"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="623"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="550"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="552"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="751"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="753"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="763"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="765"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="772"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="774"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="863"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="865"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -1670,67 +1715,88 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="164"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="165"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="166"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="167"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="168"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="169"/>
+        <source>Why?</source>
+        <translation>Why?</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="170"/>
+        <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
+        <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="173"/>
+        <source>Back to live</source>
+        <translation>Back to live</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="174"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="198"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="141"/>
+        <source>PAST — scan {0} at {1} ms (not live)</source>
+        <translation>PAST — scan {0} at {1} ms (not live)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="224"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="200"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="226"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="202"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="228"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="212"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="256"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="313"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="323"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="275"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="332"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
@@ -1743,72 +1809,73 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="58"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="59"/>
         <source>On-line mode</source>
         <translation>On-line mode</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
         <source>Make passive (disable)</source>
         <translation>Make passive (disable)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
         <source>Make active again</source>
         <translation>Make active again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
         <source>Force to 1</source>
         <translation>Force to 1</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
         <source>Force to 0</source>
         <translation>Force to 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
         <source>Release the force</source>
         <translation>Release the force</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="83"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="87"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="88"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>On-line needs a compiled program in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="93"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>The drawing is not the program in the PLC: compile it in the PLC control screen first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="101"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="102"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="150"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>On-line: the drawing shows the running PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="120"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: the drawing was changed; it is no longer the program the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="173"/>
         <source>Select a contact, coil or function first</source>
         <translation>Select a contact, coil or function first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="160"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="177"/>
         <source>This element has no op in the PLC program</source>
         <translation>This element has no op in the PLC program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="200"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Select a contact or coil to force its signal</translation>
     </message>
@@ -2289,6 +2356,125 @@
     </message>
 </context>
 <context>
+    <name>Scenario</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="88"/>
+        <source>Run scenario</source>
+        <translation>Run scenario</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
+        <source>Scenario files (*.csv);;All files (*)</source>
+        <translation>Scenario files (*.csv);;All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="99"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>Cannot read {0}: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="115"/>
+        <source>Load (compile) a PLC program first</source>
+        <translation>Load (compile) a PLC program first</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="143"/>
+        <source>passed</source>
+        <translation>passed</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="144"/>
+        <source>FAILED</source>
+        <translation>FAILED</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="150"/>
+        <source>{0}: all {1} checks passed</source>
+        <translation>{0}: all {1} checks passed</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="153"/>
+        <source>{0}: {1} of {2} checks failed</source>
+        <translation>{0}: {1} of {2} checks failed</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="183"/>
+        <source>Save the recorded scenario</source>
+        <translation>Save the recorded scenario</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
+        <source>recorded in LadderWorks</source>
+        <translation>recorded in LadderWorks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="194"/>
+        <source>Recording inputs and forces...</source>
+        <translation>Recording inputs and forces...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="203"/>
+        <source>Recorded {0} changes</source>
+        <translation>Recorded {0} changes</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="211"/>
+        <source>Cannot write {0}: {1}</source>
+        <translation>Cannot write {0}: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="214"/>
+        <source>Saved {0}</source>
+        <translation>Saved {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="225"/>
+        <source>PLC scenario</source>
+        <translation>PLC scenario</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
+        <source>Run scenario...</source>
+        <translation>Run scenario...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
+        <source>Record scenario</source>
+        <translation>Record scenario</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <source>Check</source>
+        <translation>Check</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
+        <source>Expected</source>
+        <translation>Expected</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
+        <source>Got</source>
+        <translation>Got</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <source>Time (ms)</source>
+        <translation>Time (ms)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <source>Result</source>
+        <translation>Result</translation>
+    </message>
+</context>
+<context>
     <name>SignalList</name>
     <message>
         <location filename="../ladderworks/gui/signal_list.py" line="158"/>
@@ -2344,145 +2530,182 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="150"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="170"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="179"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="181"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="192"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="205"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="319"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="321"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="334"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="61"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="336"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="338"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="346"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="64"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="342"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="344"/>
         <source>Cannot write {0}</source>
         <translation>Cannot write {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="353"/>
         <source>Export time chart as CSV</source>
         <translation>Export time chart as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="353"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="355"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
         <source>Export time chart as PNG</source>
         <translation>Export time chart as PNG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="366"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="383"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="384"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="389"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="400"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="402"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="403"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="77"/>
+        <source>Cannot read {0}: {1}</source>
+        <translation>Cannot read {0}: {1}</translation>
+    </message>
+</context>
+<context>
+    <name>TimeTravel</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="59"/>
+        <source>Keep scan history (time travel)</source>
+        <translation>Keep scan history (time travel)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="60"/>
+        <source>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</source>
+        <translation>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="143"/>
+        <source>Turn on PLC › Keep scan history and give a bit address</source>
+        <translation>Turn on PLC › Keep scan history and give a bit address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="151"/>
+        <source>{0} did not change in the scans kept</source>
+        <translation>{0} did not change in the scans kept</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="158"/>
+        <source>{0} went to {1} in scan {2} at {3} ms</source>
+        <translation>{0} went to {1} in scan {2} at {3} ms</translation>
     </message>
 </context>
 <context>
@@ -2659,6 +2882,49 @@
         <location filename="../ladderworks/gui/palette.py" line="104"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC instructions</translation>
+    </message>
+</context>
+<context>
+    <name>TraceFiles</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="48"/>
+        <source>LADDER-III...</source>
+        <translation>LADDER-III...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="50"/>
+        <source>Export the samples as a LADDER-III signal-trace result</source>
+        <translation>Export the samples as a LADDER-III signal-trace result</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
+        <source>Import...</source>
+        <translation>Import...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="53"/>
+        <source>Show a LADDER-III trace result or a CSV trace</source>
+        <translation>Show a LADDER-III trace result or a CSV trace</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="82"/>
+        <source>{0}, line {1}: not a trace file</source>
+        <translation>{0}, line {1}: not a trace file</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="90"/>
+        <source>Imported {0}: {1} samples</source>
+        <translation>Imported {0}: {1} samples</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="107"/>
+        <source>Export as LADDER-III trace result</source>
+        <translation>Export as LADDER-III trace result</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="116"/>
+        <source>Import a trace</source>
+        <translation>Import a trace</translation>
     </message>
 </context>
 </TS>

@@ -167,6 +167,21 @@ MESSAGES: dict[str, str] = {
     "alarm-empty": QT_TRANSLATE_NOOP("Diagnostic", "message {number} has no text"),
     "not-implemented": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} is not implemented in the simulator yet"),
+    # scenario files (docs/scenarios.md)
+    "scenario-header": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),
+    "scenario-command": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "unknown command '{text}' (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)"),
+    "scenario-wait": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a wait in ms"),
+    "scenario-negative": QT_TRANSLATE_NOOP("Diagnostic", "negative wait {text} ms"),
+    "scenario-fields": QT_TRANSLATE_NOOP("Diagnostic", "{command} needs {expected}"),
+    "scenario-address": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is neither an address nor a symbol of the program"),
+    "scenario-value": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a value for {target}"),
+    "scenario-type": QT_TRANSLATE_NOOP(
+        "Diagnostic", "unknown type '{text}' (use BIT, BYTE, WORD or DWORD)"),
+    "scenario-bit": QT_TRANSLATE_NOOP("Diagnostic", "'{text}': only bits can be forced"),
     # the PMC parameter file (PROGRAM.LAD.prm)
     "prm-line": QT_TRANSLATE_NOOP(
         "Diagnostic",

@@ -15,6 +15,7 @@ from ladderworks.core.diagnostics import DiagnosticError
 from ladderworks.core.plc.codegen import GeneratedScan, generate
 from ladderworks.core.plc.forcing import ForceEntry, ForceTable
 from ladderworks.core.plc.functions import FunctionContext, load_all
+from ladderworks.core.plc.history import ScanHistory
 from ladderworks.core.plc.memory import Memory
 from ladderworks.core.plc.trace import DEFAULT_CAPACITY, TraceSampler
 
@@ -72,6 +73,7 @@ class ScanEngine:
         self.lock = threading.RLock()
         self.force_table = ForceTable()
         self.trace: TraceSampler | None = None
+        self.history: ScanHistory | None = None  # set to keep every scan (needs monitored)
         self.power_flow = bytearray(len(self.program.ops))
         self._flow = [0] * len(self.program.ops)  # what the monitored code writes
         # every change of the A area, with the time of the scan that made it (newest last)
@@ -123,6 +125,8 @@ class ScanEngine:
                 self.alarm_log.append((now, self._alarm_bits))
             if self.trace is not None:
                 self.trace.sample(self.memory, now)
+            if self.history is not None:  # time travel (core/plc/history.py), off by default
+                self.history.record(self)
             self.scan_count += 1
             self.now_ms = now + self.period_ms
 

@@ -17,7 +17,7 @@ The policy, in one place:
 from __future__ import annotations
 
 import time
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, field
 
@@ -121,6 +121,9 @@ class PlcRun:
         self._stopped_stats: ScanStats | None = None
         self._monitors = 0
         self._held: dict[Address, bool] = {}  # forced X/F bits: the machine's own value
+        # told of every input change from outside: (kind, address, value, width), kind being
+        # "set", "write", "force" or "release" (the scenario recorder listens here)
+        self.input_listeners: list[Callable[[str, Address, int, int], None]] = []
 
     # -- the program ---------------------------------------------------------------------
 
@@ -252,6 +255,10 @@ class PlcRun:
 
     # -- memory as the machine sees it -----------------------------------------------------
 
+    def _told(self, kind: str, address: Address, value: int, width: int = 1) -> None:
+        for listener in self.input_listeners:
+            listener(kind, address, value, width)
+
     def lock(self) -> AbstractContextManager[object]:
         """The engine's lock (nothing to lock before a load)."""
         return self.engine.lock if self.engine is not None else nullcontext()
@@ -263,11 +270,13 @@ class PlcRun:
                 self._held[address] = bool(value)
             else:
                 self.memory.set_bit(address, value)
+            self._told("set", address, int(bool(value)))
 
     def write(self, address: Address, value: int, width: int = 1) -> None:
         """Store a value of `width` bytes at a byte address between two scans."""
         with self.lock():
             self.memory.write(address, value, width)
+            self._told("write", address, value, width)
 
     def bit(self, address: Address) -> int:
         """The bit at a bit address now."""
@@ -290,6 +299,7 @@ class PlcRun:
                 self._held[address] = bool(self.memory.bit(address))
             self.engine.force(address, value)
             self.engine.force_table.apply(self.memory)
+            self._told("force", address, int(bool(value)))
         return True
 
     def release(self, address: Address) -> bool:
@@ -300,6 +310,8 @@ class PlcRun:
             done = self.engine.release(address)
             if address in self._held:
                 self.memory.set_bit(address, self._held.pop(address))
+            if done:
+                self._told("release", address, 0)
         return done
 
     def disable(self, op: OpRef) -> int:
@@ -317,7 +329,10 @@ class PlcRun:
         if self.engine is None:
             return
         with self.engine.lock:
+            forced = list(self.engine.force_table.forced())
             self.engine.release_all()
+            for address in forced:
+                self._told("release", address, 0)
             for address, value in self._held.items():
                 self.memory.set_bit(address, value)
             self._held.clear()

@@ -25,6 +25,7 @@ class PlcDocks:
     force_list: QDockWidget
     online: OnlineMode | None  # on-line mode needs the console's editor
     others: dict[str, QDockWidget] = field(default_factory=dict)  # issue 8's docks by name
+    time_travel: QObject | None = None  # PLC › Keep scan history (gui/docks/time_travel.py)
 
 
 class _Retranslate(QObject):
@@ -75,8 +76,9 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
         dock.hide()
     window.tabifyDockWidget(control, diagnostic)
     online = OnlineMode(editor, session, window) if editor is not None else None
-    _Retranslate(window, [control, diagnostic, force_list]
-                 + ([online] if online is not None else []))
+    retranslated: list[object] = [control, diagnostic, force_list]
+    retranslated += [online] if online is not None else []
+    _Retranslate(window, retranslated)  # the same list: time travel joins it below
     plc_menu = find_menu(window, "menu_plc")
     actions = [control.control_actions[name]
                for name in ("action_plc_control_compile", "action_plc_start", "action_plc_stop")]
@@ -101,7 +103,17 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
     for name, module in (("bit_display", bit_display), ("time_chart", time_chart),
                          ("alarms", alarms), ("tables", tables)):
         others[name] = module.install(window, session)
+    from ladderworks.gui.docks import scenario  # after the time chart: it shows its runs there
+
+    others["scenario"] = scenario.install(window, session)
+    from ladderworks.gui.docks import time_travel  # the chart's cursor shows past scans
+
+    chart = others["time_chart"]
+    travel = time_travel.install(
+        window, session, diagnostic, chart if isinstance(chart, time_chart.TimeChartDock) else None,
+        online)
+    retranslated.append(travel)
     app = QCoreApplication.instance()
     if app is not None:
         app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
-    return PlcDocks(session, control, diagnostic, force_list, online, others)
+    return PlcDocks(session, control, diagnostic, force_list, online, others, travel)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt
+from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, Signal
 from PySide6.QtGui import QBrush, QColor, QPainter
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -98,6 +98,9 @@ class DiagnosticView(QGraphicsView):
 class DiagnosticDock(QDockWidget):
     """PLC TEŞHİS (PLC diagnostic): watch the ladder while the PLC runs; no editing."""
 
+    why_requested = Signal(object)  # the Address in the search box (time travel answers)
+    live_requested = Signal()
+
     def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("plcDiagnosticDock")
@@ -120,7 +123,18 @@ class DiagnosticDock(QDockWidget):
         self.follow.setObjectName("diagnosticFollow")
         self.state = QLabel(body)
         self.state.setObjectName("diagnosticState")
-        for widget in (self.search, self.find_button, self.written_button, self.follow):
+        # time travel (gui/docks/time_travel.py): "why" and one click back to live
+        self.past: PlcSnapshot | None = None
+        self.why_button = QPushButton(body)
+        self.why_button.setObjectName("diagnosticWhy")
+        self.why_button.clicked.connect(self._why)
+        self.why_button.hide()
+        self.live_button = QPushButton(body)
+        self.live_button.setObjectName("diagnosticLive")
+        self.live_button.clicked.connect(self.back_to_live)
+        self.live_button.hide()
+        for widget in (self.search, self.find_button, self.written_button, self.why_button,
+                       self.live_button, self.follow):
             bar.addWidget(widget)
         bar.addWidget(self.state, 1)
         layout.addLayout(bar)
@@ -152,6 +166,11 @@ class DiagnosticDock(QDockWidget):
         self.find_button.setText(translate("PlcDiagnostic", "Find"))
         self.written_button.setText(translate("PlcDiagnostic", "Where written"))
         self.follow.setText(translate("PlcDiagnostic", "Follow"))
+        self.why_button.setText(translate("PlcDiagnostic", "Why?"))
+        self.why_button.setToolTip(translate(
+            "PlcDiagnostic", "Go to the scan where the address last changed and mark the "
+            "contacts that changed it"))
+        self.live_button.setText(translate("PlcDiagnostic", "Back to live"))
         self.follow.setToolTip(translate(
             "PlcDiagnostic", "Keep the searched address in view while the PLC runs"))
         self._show_state()
@@ -178,7 +197,7 @@ class DiagnosticDock(QDockWidget):
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
         self._snapshot = snapshot
-        if not self.isVisible():
+        if not self.isVisible() or self.past is not None:
             return
         self._repaint()
         if self.follow.isChecked() and self.hits:
@@ -186,7 +205,7 @@ class DiagnosticDock(QDockWidget):
             self.view.ensureVisible(self.view.cell_rect(network, cell), 40, 40)
 
     def _repaint(self) -> None:
-        snapshot = self._snapshot or self.session.snapshot()
+        snapshot = self.past or self._snapshot or self.session.snapshot()
         forced = (self.session.engine.force_table.forced()
                   if self.session.engine is not None else {})
         self.view.live.update(snapshot, forced, self.view.visible_rect())
@@ -194,6 +213,13 @@ class DiagnosticDock(QDockWidget):
 
     def _show_state(self) -> None:
         status = self.session.status()
+        self.state.setStyleSheet("")
+        if self.past is not None:
+            self.state.setText(translate(
+                "PlcDiagnostic", "PAST — scan {0} at {1} ms (not live)").format(
+                    self.past.scan_count, self.past.now_ms))
+            self.state.setStyleSheet("background:#ffe08a; color:#6b3e00; font-weight:bold;")
+            return
         if not status.loaded:
             text = translate("PlcDiagnostic", "No program loaded")
         elif status.running:
@@ -201,6 +227,37 @@ class DiagnosticDock(QDockWidget):
         else:
             text = translate("PlcDiagnostic", "STOPPED")
         self.state.setText(text)
+
+    # -- time travel ---------------------------------------------------------------------
+
+    def show_past(self, snapshot: PlcSnapshot) -> None:
+        """Show an earlier scan's power flow and values, marked as the past."""
+        self.past = snapshot
+        self.live_button.show()
+        self._repaint()
+
+    def back_to_live(self) -> None:
+        """Show the running PLC again."""
+        was_past = self.past is not None
+        self.past = None
+        self.live_button.hide()
+        self._repaint()
+        if was_past:
+            self.live_requested.emit()
+
+    def mark_ops(self, ops: tuple[int, ...] | list[int]) -> None:
+        """Mark the cells of these ops (the contacts "why" found) and show the first."""
+        hits = [found for op in ops if (found := self.view.live.cell_of(op)) is not None]
+        self.hits = hits
+        self.hit_index = -1
+        self._mark(hits)
+        if hits:
+            self._go_next("")
+
+    def _why(self) -> None:
+        address = self._address()
+        if address is not None:
+            self.why_requested.emit(address)
 
     # -- search --------------------------------------------------------------------------
 

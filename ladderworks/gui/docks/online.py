@@ -45,6 +45,7 @@ class OnlineMode(QObject):
         editor.context_actions.append(None)
         editor.context_actions.extend(self.actions[n] for n in ACTION_NAMES[1:])
         editor.undo_stack.indexChanged.connect(self._edited)
+        self.past: PlcSnapshot | None = None  # time travel: an earlier scan shown instead
         session.snapshot_ready.connect(self._on_snapshot)
         session.program_loaded.connect(self._on_program)
         session.forces_changed.connect(lambda _entries: self.refresh())
@@ -124,13 +125,29 @@ class OnlineMode(QObject):
             self.set_online(True)
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
-        if self.online:
+        if self.online and self.past is None:
             self._update(snapshot)
 
     def refresh(self) -> None:
         """Repaint the power flow now."""
         if self.online:
-            self._update(self.session.snapshot())
+            self._update(self.past or self.session.snapshot())
+
+    def show_past(self, snapshot: PlcSnapshot) -> None:
+        """Time travel: show an earlier scan's power flow, marked as the past."""
+        self.past = snapshot
+        self.refresh()
+        if self.online:
+            self._say(translate("PlcDiagnostic", "PAST — scan {0} at {1} ms (not live)").format(
+                snapshot.scan_count, snapshot.now_ms))
+
+    def back_to_live(self) -> None:
+        """Show the running PLC again."""
+        if self.past is not None:
+            self.past = None
+            self.refresh()
+            if self.online:
+                self._say(translate("PlcOnline", "On-line: the drawing shows the running PLC"))
 
     def _update(self, snapshot: PlcSnapshot) -> None:
         forced = (self.session.engine.force_table.forced()

@@ -28,6 +28,7 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.address import AddressError
 from ladderworks.core.symbols import describe
+from ladderworks.gui.docks import trace_files
 from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
@@ -135,6 +136,7 @@ class TimeChartDock(QDockWidget):
         self.setWidget(body)
         session.snapshot_ready.connect(self._take_samples)
         session.program_loaded.connect(self._on_program_loaded)
+        trace_files.add_actions(self)  # LADDER-III export and trace import
         self.retranslate()
         self._update_actions()
 
@@ -403,6 +405,7 @@ class TimeChartDock(QDockWidget):
             translate("TimeChart", "Save the chart as a PNG picture")
         )
         self.plot.getPlotItem().setLabel("bottom", translate("TimeChart", "time (ms)"))
+        trace_files.retranslate(self)
         self._show_cursor()
 
     def changeEvent(self, event: QEvent) -> None:

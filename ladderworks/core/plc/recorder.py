@@ -1,0 +1,99 @@
+"""The scenario recorder: input changes and forces made during a run, as a scenario file."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ladderworks.core.address import Address, Area
+from ladderworks.core.plc.scenario import HEADER
+from ladderworks.core.plc.session import PlcRun
+
+_TYPES = {1: "BYTE", 2: "WORD", 4: "DWORD"}
+
+
+@dataclass(frozen=True, slots=True)
+class Recorded:
+    """One change: at `time_ms` (the scan that first sees it), what and to which value."""
+
+    time_ms: int
+    kind: str  # "set", "write", "force" or "release"
+    address: Address
+    value: int
+    width: int = 1
+
+    def fields(self) -> list[str]:
+        """The command's fields after the wait."""
+        if self.kind == "force":
+            return [str(self.address), str(self.value)]
+        if self.kind == "release":
+            return [str(self.address)]
+        if self.address.bit is not None:
+            return [str(self.address), str(self.value)]
+        return [str(self.address), f"0x{self.value:X}", _TYPES.get(self.width, "BYTE")]
+
+
+_COMMANDS = {"set": "SET", "write": "SET", "force": "FORCE", "release": "RELEASE"}
+
+
+class ScenarioRecorder:
+    """Listens to a PlcRun's input changes from `start()` to `stop()`; `text()` is the file."""
+
+    def __init__(self, plc: PlcRun, remark: str = "") -> None:
+        self.plc = plc
+        self.remark = remark
+        self.events: list[Recorded] = []
+        self.start_ms = 0
+        self.end_ms: int | None = None
+        self.recording = False
+
+    def _now(self) -> int:
+        return self.plc.engine.now_ms if self.plc.engine is not None else 0
+
+    def start(self) -> None:
+        """Begin recording at the PLC's time now."""
+        self.events = []
+        self.start_ms = self._now()
+        self.end_ms = None
+        if not self.recording:
+            self.plc.input_listeners.append(self._record)
+            self.recording = True
+
+    def stop(self) -> None:
+        """Stop recording; the end time is the last scan run."""
+        if self.recording:
+            self.plc.input_listeners.remove(self._record)
+            self.recording = False
+        self.end_ms = self._now()
+
+    def _record(self, kind: str, address: Address, value: int, width: int) -> None:
+        self.events.append(Recorded(self._now(), kind, address, value, width))
+
+    def text(self, expect: list[tuple[Address, int]] | None = None) -> str:
+        """The scenario: one line per change, then an EXPECT of each (address, width) given
+        (default: every Y byte that is not 0 at the end) at the last scan recorded."""
+        lines = [HEADER]
+        if self.remark:
+            lines.append(f"REMARK,{self.remark}")
+        last = self.start_ms
+        for event in self.events:
+            wait = max(event.time_ms - last, 0)
+            lines.append(",".join([_COMMANDS[event.kind], str(wait), *event.fields()]))
+            last = event.time_ms
+        end = self.end_ms if self.end_ms is not None else self._now()
+        period = self.plc.period_ms if self.plc.engine is None else self.plc.engine.period_ms
+        checked_at = max(end - period, last)
+        if end > self.start_ms:
+            targets = expect if expect is not None else self._outputs()
+            wait = checked_at - last
+            for address, width in targets:
+                value = (self.plc.bit(address) if address.bit is not None
+                         else self.plc.read(address, width))
+                kind = "" if address.bit is not None else "," + _TYPES.get(width, "BYTE")
+                lines.append(f"EXPECT,{wait},{address},{value}{kind}")
+                wait = 0
+        return "\n".join(lines) + "\n"
+
+    def _outputs(self) -> list[tuple[Address, int]]:
+        data = self.plc.memory.areas[Area.Y]
+        found = [(Address(Area.Y, byte), 1) for byte, value in enumerate(data) if value]
+        return found or [(Address(Area.Y, 0), 1)]

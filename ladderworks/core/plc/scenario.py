@@ -1,0 +1,349 @@
+"""Scenario files: FANUC PMC simulator signal-operation files plus EXPECT and WAITFOR checks.
+
+A file is `PMC SIGNAL DATA`, then one command a line (docs/scenarios.md):
+`REMARK,text`, `SET,wait,ADDR,VALUE[,TYPE][,ADDR,VALUE[,TYPE]]...`, `EXPECT,wait,ADDR,VALUE[,TYPE]`,
+`WAITFOR,timeout,ADDR,VALUE[,TYPE]`, `FORCE,wait,BIT,VALUE` and `RELEASE,wait,BIT`.
+A wait is in ms after the previous line, rounded up to the scan period. A line at time T acts
+at T: SET writes before the scan at T, EXPECT reads after it. `run_scenario` plays a parsed
+scenario on a `PlcRun`, so the session policy is shared.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ladderworks.core.address import Address, AddressError
+from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
+from ladderworks.core.plc.session import PlcRun
+from ladderworks.core.symbols import SymbolTable, resolve
+
+HEADER = "PMC SIGNAL DATA"
+# TYPE column: the width in bytes (0: a bit)
+TYPES: dict[str, int] = {"BIT": 0, "B": 1, "BYTE": 1, "1": 1, "WORD": 2, "W": 2, "2": 2,
+                         "DWORD": 4, "D": 4, "4": 4}
+COMMANDS = {"S": "SET", "SET": "SET", "R": "REMARK", "REMARK": "REMARK",
+            "E": "EXPECT", "EXPECT": "EXPECT", "W": "WAITFOR", "WAITFOR": "WAITFOR",
+            "FORCE": "FORCE", "RELEASE": "RELEASE"}
+
+@dataclass(frozen=True, slots=True)
+class Target:
+    """An address as written in the file, with its width in bytes (1, 2, 4; 1 for a bit)."""
+
+    text: str
+    address: Address
+    width: int = 1
+
+    def read(self, plc: PlcRun) -> int:
+        """The value now."""
+        if self.address.bit is not None:
+            return plc.bit(self.address)
+        return plc.read(self.address, self.width)
+
+    def write(self, plc: PlcRun, value: int) -> None:
+        """Store a value (the machine side: a forced X/F bit keeps it for its release)."""
+        if self.address.bit is not None:
+            plc.set_bit(self.address, value)
+        else:
+            plc.write(self.address, value, self.width)
+
+
+@dataclass(frozen=True, slots=True)
+class Step:
+    """One command line: SET (`items` to write), EXPECT or WAITFOR (`items[0]` to check)."""
+
+    line: int
+    command: str
+    wait_ms: int
+    items: tuple[tuple[Target, int], ...] = ()
+
+
+@dataclass(slots=True)
+class Scenario:
+    """A parsed file: its remark, steps and the problems found (errors mean it cannot run)."""
+
+    name: str
+    remark: str = ""
+    steps: list[Step] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        """True when there is no error."""
+        return not any(d.is_error for d in self.diagnostics)
+
+    def error_texts(self) -> list[str]:
+        """`NAME:LINE:COL: code message` of each problem."""
+        return [f"{self.name}:{d.line}:{d.column}: {d.code} {d.message()}"
+                for d in self.diagnostics]
+
+
+@dataclass(frozen=True, slots=True)
+class CheckResult:
+    """The outcome of one EXPECT or WAITFOR: the value `got` at `time_ms`."""
+
+    line: int
+    command: str
+    target: str
+    expected: int
+    got: int
+    time_ms: int
+    passed: bool
+
+    def message(self, name: str) -> str:
+        """`SCENARIO:LINE: expected ADDR=V, got W at T ms` (or `... passed`)."""
+        if self.passed:
+            return f"{name}:{self.line}: {self.target}={self.expected} at {self.time_ms} ms"
+        return (f"{name}:{self.line}: expected {self.target}={self.expected}, "
+                f"got {self.got} at {self.time_ms} ms")
+
+
+@dataclass(slots=True)
+class ScenarioResult:
+    """Every check's result, the virtual time run and the wall-clock seconds it took."""
+
+    scenario: Scenario
+    checks: list[CheckResult] = field(default_factory=list)
+    virtual_ms: int = 0
+    seconds: float = 0.0
+    stopped: list[Diagnostic] = field(default_factory=list)  # a run-time stop of the engine
+
+    @property
+    def passed(self) -> bool:
+        """True when the file parsed, the run did not stop and every check passed."""
+        return (self.scenario.ok and not self.stopped
+                and all(check.passed for check in self.checks))
+
+    def failures(self) -> list[str]:
+        """The messages of everything that failed."""
+        texts = self.scenario.error_texts()
+        texts += [f"{self.scenario.name}:{d.line}:{d.column}: {d.code} {d.message()}"
+                  for d in self.stopped]
+        texts += [c.message(self.scenario.name) for c in self.checks if not c.passed]
+        return texts
+
+
+# -- reading ---------------------------------------------------------------------------------
+
+
+def _number(text: str) -> int:
+    """A decimal or 0x-hexadecimal integer (ValueError otherwise)."""
+    text = text.strip()
+    if text.lower().lstrip("-").startswith("0x"):
+        return int(text, 16)
+    return int(text, 10)
+
+
+class _Reader:
+    """Turns lines into steps, collecting diagnostics with their line and column."""
+
+    def __init__(self, symbols: SymbolTable | None) -> None:
+        self.symbols = symbols
+        self.diagnostics: list[Diagnostic] = []
+
+    def error(self, code: str, line: int, column: int, **args: object) -> None:
+        self.diagnostics.append(Diagnostic(code, dict(args), line, column))
+
+    def wait(self, text: str, line: int) -> int | None:
+        try:
+            value = _number(text)
+        except ValueError:
+            self.error("scenario-wait", line, 2, text=text)
+            return None
+        if value < 0:
+            self.error("scenario-negative", line, 2, text=text)
+            return None
+        return value
+
+    def target(self, text: str, type_text: str, line: int, column: int) -> Target | None:
+        width = TYPES.get(type_text.strip().upper(), -1) if type_text.strip() else None
+        if width == -1:
+            self.error("scenario-type", line, column + 2, text=type_text)
+            return None
+        try:
+            address = resolve(text.strip(), self.symbols, width=width or 1)
+        except AddressError:
+            self.error("scenario-address", line, column, text=text)
+            return None
+        if address.bit is not None:
+            return Target(text.strip(), address, 1)
+        return Target(text.strip(), address, width or 1)
+
+    def value(self, text: str, target: Target, line: int, column: int) -> int | None:
+        try:
+            value = _number(text)
+        except ValueError:
+            value = None
+        limit = 2 if target.address.bit is not None else 1 << (8 * target.width)
+        if value is None or not -limit // 2 <= value < limit or (
+                target.address.bit is not None and value < 0):
+            self.error("scenario-value", line, column, text=text, target=target.text)
+            return None
+        return value % limit
+
+    def items(self, fields: list[str], line: int, first_column: int
+              ) -> list[tuple[Target, int]] | None:
+        """ADDR,VALUE[,TYPE] groups; a TYPE field that is no type starts the next group."""
+        items: list[tuple[Target, int]] = []
+        index = 0
+        while index < len(fields):
+            if index + 1 >= len(fields):
+                return None
+            type_text = ""
+            if index + 2 < len(fields) and (not fields[index + 2].strip()
+                                            or fields[index + 2].strip().upper() in TYPES):
+                type_text = fields[index + 2]
+                used = 3
+            else:
+                used = 2
+            column = first_column + index
+            target = self.target(fields[index], type_text, line, column)
+            if target is None:
+                return []
+            value = self.value(fields[index + 1], target, line, column + 1)
+            if value is None:
+                return []
+            items.append((target, value))
+            index += used
+        return items
+
+
+_NEEDS = {"SET": "a wait and at least one ADDR,VALUE", "FORCE": "a wait, a bit and 0 or 1",
+          "RELEASE": "a wait and a forced bit",
+          "EXPECT": "a wait, ADDR and VALUE", "WAITFOR": "a timeout, ADDR and VALUE"}
+
+
+def parse_scenario(text: str, name: str = "scenario",
+                   symbols: SymbolTable | None = None) -> Scenario:
+    """Read a scenario file's text; addresses may be symbols of `symbols`."""
+    scenario = Scenario(name)
+    reader = _Reader(symbols)
+    lines = text.splitlines()
+    first = next((i for i, line in enumerate(lines) if line.strip()), None)
+    if first is None or lines[first].strip().strip(",").upper() != HEADER:
+        reader.error("scenario-header", (first or 0) + 1, 1)
+        scenario.diagnostics = reader.diagnostics
+        return scenario
+    for number, raw in enumerate(lines[first + 1:], start=first + 2):
+        if not raw.strip() or raw.lstrip().startswith(("#", "//")):
+            continue
+        fields = [part.strip() for part in raw.split(",")]
+        while fields and not fields[-1]:
+            fields.pop()
+        command = COMMANDS.get(fields[0].upper()) if fields else None
+        if command is None:
+            reader.error("scenario-command", number, 1, text=fields[0] if fields else raw)
+            continue
+        if command == "REMARK":
+            if not scenario.remark:  # later REMARK lines are ignored, as the simulator does
+                scenario.remark = raw.split(",", 1)[1].strip() if "," in raw else ""
+            continue
+        if command == "RELEASE" and len(fields) == 3:
+            fields.append("0")  # RELEASE,wait,ADDR: read as an item with no value
+        if len(fields) < 4:
+            reader.error("scenario-fields", number, 1, command=command,
+                         expected=_NEEDS[command])
+            continue
+        wait = reader.wait(fields[1], number)
+        items = reader.items(fields[2:], number, 3)
+        if items is None or (command != "SET" and len(items) > 1):
+            reader.error("scenario-fields", number, 3, command=command,
+                         expected=_NEEDS[command])
+            continue
+        if wait is None or not items:
+            continue
+        if command in ("FORCE", "RELEASE") and items[0][0].address.bit is None:
+            reader.error("scenario-bit", number, 3, text=items[0][0].text)
+            continue
+        scenario.steps.append(Step(number, command, wait, tuple(items)))
+    scenario.diagnostics = reader.diagnostics
+    return scenario
+
+
+def read_scenario(path: str | Path, symbols: SymbolTable | None = None) -> Scenario:
+    """Read a scenario file (UTF-8, else Turkish Windows text)."""
+    data = Path(path).read_bytes()
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        text = data.decode("cp1254", errors="replace")
+    return parse_scenario(text, str(path), symbols)
+
+
+def rounded(wait_ms: int, period_ms: int) -> int:
+    """A wait rounded up to whole scan periods."""
+    return -(-wait_ms // period_ms) * period_ms
+
+
+# -- running ---------------------------------------------------------------------------------
+
+
+CheckListener = Callable[[CheckResult], None]
+
+
+def run_scenario(plc: PlcRun, scenario: Scenario,
+                 on_check: CheckListener | None = None) -> ScenarioResult:
+    """Play the steps on a loaded `plc` from its current time (cold-start it first); the plc
+    runs on the virtual clock (ValueError for a real-time one)."""
+    result = ScenarioResult(scenario)
+    engine = plc.engine
+    if engine is None or not scenario.ok:
+        return result
+    plc.start()
+    period = engine.period_ms
+    began = time.perf_counter()
+    start_ms = engine.now_ms
+    at = start_ms
+
+    def scan() -> None:
+        if not plc.run_scans(1):  # a real-time PlcRun scans on its own thread
+            raise ValueError("scenarios run on the virtual clock, not a real-time PlcRun")
+
+    def scan_through(limit: int) -> None:
+        """Run every scan due at or before `limit` ms."""
+        while engine.now_ms <= limit:
+            scan()
+
+    try:
+        for step in scenario.steps:
+            target_time = at + rounded(step.wait_ms, period)
+            if step.command in ("SET", "FORCE", "RELEASE"):
+                at = target_time
+                while engine.now_ms < at:
+                    scan()
+                for target, value in step.items:
+                    if step.command == "FORCE":
+                        plc.force(target.address, value)
+                    elif step.command == "RELEASE":
+                        plc.release(target.address)
+                    else:
+                        target.write(plc, value)
+                continue
+            target, expected = step.items[0]
+            if step.command == "EXPECT":
+                at = target_time
+                scan_through(at)
+                got = target.read(plc)
+                check = CheckResult(step.line, step.command, target.text, expected, got,
+                                    at - start_ms, got == expected)
+            else:
+                scan_through(at)
+                while True:
+                    got = target.read(plc)
+                    seen = engine.now_ms - period
+                    if got == expected or seen >= target_time:
+                        break
+                    scan()
+                at = seen
+                check = CheckResult(step.line, step.command, target.text, expected, got,
+                                    seen - start_ms, got == expected)
+            result.checks.append(check)
+            if on_check is not None:
+                on_check(check)
+    except DiagnosticError as error:
+        result.stopped = list(error.diagnostics)
+    result.virtual_ms = engine.now_ms - start_ms
+    result.seconds = time.perf_counter() - began
+    return result

@@ -1,0 +1,264 @@
+"""PLC › Run scenario and PLC › Record scenario: check results at their lines, recording."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
+from PySide6.QtGui import QAction, QBrush, QColor
+from PySide6.QtWidgets import (
+    QDockWidget,
+    QFileDialog,
+    QLabel,
+    QMainWindow,
+    QToolBar,
+    QTreeWidget,
+    QTreeWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+from ladderworks.core.plc.recorder import ScenarioRecorder
+from ladderworks.core.plc.scenario import (
+    CheckResult,
+    Scenario,
+    ScenarioResult,
+    parse_scenario,
+    read_scenario,
+    run_scenario,
+)
+from ladderworks.core.plc.session import PlcRun
+from ladderworks.gui.docks import trace_files
+from ladderworks.gui.docks.dock_menus import add_dock, find_menu, register_action
+from ladderworks.gui.docks.time_chart import TimeChartDock
+from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord
+from ladderworks.gui.files import atomic_write
+from ladderworks.gui.plc_session import PlcSession
+
+translate = QCoreApplication.translate
+RUN = "action_plc_run_scenario"
+RECORD = "action_plc_record_scenario"
+_PASS, _FAIL = QColor("#1a7f37"), QColor("#c00000")
+
+
+class ScenarioDock(QDockWidget):
+    """Runs a scenario on a cold-started copy of the loaded program; records one from the PLC."""
+
+    finished = Signal(object)  # the ScenarioResult
+
+    def __init__(self, session: PlcSession, parent: QWidget | None = None,
+                 chart: TimeChartDock | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("scenarioDock")
+        self.session = session
+        self.chart = chart
+        self.result: ScenarioResult | None = None
+        self.recorder: ScenarioRecorder | None = None
+        body = QWidget(self)
+        layout = QVBoxLayout(body)
+        layout.setContentsMargins(4, 4, 4, 4)
+        self.toolbar = QToolBar(body)
+        self.toolbar.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
+        self.actions_by_name: dict[str, QAction] = {}
+        for name, slot in ((RUN, self.run_dialog), (RECORD, self.toggle_recording)):
+            action = QAction(self)
+            action.setObjectName(name)
+            action.triggered.connect(lambda _c=False, s=slot: s())
+            self.toolbar.addAction(action)
+            self.actions_by_name[name] = action
+        self.actions_by_name[RECORD].setCheckable(True)
+        layout.addWidget(self.toolbar)
+        self.message = QLabel(body)
+        self.message.setObjectName("scenarioMessage")
+        self.message.setWordWrap(True)
+        layout.addWidget(self.message)
+        self.checks = QTreeWidget(body)
+        self.checks.setObjectName("scenarioChecks")
+        self.checks.setRootIsDecorated(False)
+        self.checks.itemActivated.connect(self._jump)
+        layout.addWidget(self.checks, 1)
+        self.setWidget(body)
+        self.retranslate()
+
+    # -- running -----------------------------------------------------------------------------
+
+    def run_dialog(self) -> None:
+        """Ask for a scenario file and run it."""
+        path, _filter = QFileDialog.getOpenFileName(
+            self, translate("Scenario", "Run scenario"), "",
+            translate("Scenario", "Scenario files (*.csv);;All files (*)"))
+        if path:
+            self.run_file(path)
+
+    def run_file(self, path: str | Path) -> ScenarioResult | None:
+        """Read and run a scenario file."""
+        program = self.session.program
+        try:
+            scenario = read_scenario(path, program.symbols if program is not None else None)
+        except OSError as error:
+            self._say(translate("Scenario", "Cannot read {0}: {1}").format(path, error.strerror),
+                      error=True)
+            return None
+        return self.run(scenario)
+
+    def run_text(self, text: str, name: str = "scenario") -> ScenarioResult | None:
+        """Run scenario text (tests, the recorder's output)."""
+        program = self.session.program
+        return self.run(parse_scenario(text, name,
+                                       program.symbols if program is not None else None))
+
+    def run(self, scenario: Scenario) -> ScenarioResult | None:
+        """Run on a cold start of the loaded program with its PMC parameters; the live PLC is
+        not touched. Every address of the scenario is traced into the time chart."""
+        binary = self.session.binary
+        if binary is None:
+            self._say(translate("Scenario", "Load (compile) a PLC program first"), error=True)
+            return None
+        plc = PlcRun(period_ms=self.session.period_ms)
+        plc.set_parameters(self.session.parameters)
+        if plc.load(binary, self.session.program) or plc.engine is None:
+            return None
+        signals = _signals(scenario)
+        trace = (plc.engine.start_trace([s.address for s in signals], plc.engine.period_ms,
+                                        widths=[s.width for s in signals]) if signals else None)
+        result = run_scenario(plc, scenario)
+        self.result = result
+        self._fill(result)
+        if trace is not None and self.chart is not None:
+            record = TraceRecord(signals)
+            record.period_ms = plc.engine.period_ms
+            record.extend(trace.take())
+            trace_files.show_record(self.chart, record)
+            failing = self.failing_times()
+            if failing:  # the first failure at once
+                self.chart.set_cursor(failing[0])
+        self.finished.emit(result)
+        return result
+
+    def _fill(self, result: ScenarioResult) -> None:
+        self.checks.clear()
+        for text in result.scenario.error_texts():
+            self._item([text], _FAIL, None)
+        for check in result.checks:
+            state = (translate("Scenario", "passed") if check.passed
+                     else translate("Scenario", "FAILED"))
+            self._item([str(check.line), f"{check.command} {check.target}", str(check.expected),
+                        str(check.got), str(check.time_ms), state],
+                       _PASS if check.passed else _FAIL, check)
+        failed = sum(not c.passed for c in result.checks)
+        if result.passed:
+            self._say(translate("Scenario", "{0}: all {1} checks passed").format(
+                Path(result.scenario.name).name, len(result.checks)))
+        else:
+            self._say(translate("Scenario", "{0}: {1} of {2} checks failed").format(
+                Path(result.scenario.name).name, failed + len(result.scenario.diagnostics),
+                len(result.checks) + len(result.scenario.diagnostics)), error=True)
+
+    def _item(self, texts: list[str], colour: QColor, check: CheckResult | None) -> None:
+        item = QTreeWidgetItem(texts)
+        item.setForeground(len(texts) - 1, QBrush(colour))
+        item.setData(0, Qt.ItemDataRole.UserRole, check)
+        self.checks.addTopLevelItem(item)
+
+    def failing_times(self) -> list[int]:
+        """The times (ms) of the failed checks."""
+        return [c.time_ms for c in self.result.checks if not c.passed] if self.result else []
+
+    def _jump(self, item: QTreeWidgetItem, _column: int = 0) -> None:
+        check = item.data(0, Qt.ItemDataRole.UserRole)
+        if isinstance(check, CheckResult) and self.chart is not None:
+            self.chart.show()
+            self.chart.raise_()
+            self.chart.set_cursor(check.time_ms)
+
+    # -- recording ---------------------------------------------------------------------------
+
+    def toggle_recording(self) -> None:
+        """Start recording, or stop and ask where to save the scenario."""
+        if self.recorder is None:
+            self.start_recording()
+            return
+        text = self.stop_recording()
+        path, _filter = QFileDialog.getSaveFileName(
+            self, translate("Scenario", "Save the recorded scenario"), "scenario.csv",
+            translate("Scenario", "Scenario files (*.csv);;All files (*)"))
+        if path:
+            self.save(path, text)
+
+    def start_recording(self) -> None:
+        """Record the inputs set and the bits forced on the PLC from now on."""
+        self.recorder = ScenarioRecorder(self.session.run,
+                                         translate("Scenario", "recorded in LadderWorks"))
+        self.recorder.start()
+        self.actions_by_name[RECORD].setChecked(True)
+        self._say(translate("Scenario", "Recording inputs and forces..."))
+
+    def stop_recording(self) -> str:
+        """Stop recording; the scenario text (empty when not recording)."""
+        recorder, self.recorder = self.recorder, None
+        self.actions_by_name[RECORD].setChecked(False)
+        if recorder is None:
+            return ""
+        recorder.stop()
+        self._say(translate("Scenario", "Recorded {0} changes").format(len(recorder.events)))
+        return recorder.text()
+
+    def save(self, path: str | Path, text: str) -> bool:
+        """Write a scenario file."""
+        try:
+            atomic_write(path, text)
+        except OSError as error:
+            self._say(translate("Scenario", "Cannot write {0}: {1}").format(path, error.strerror),
+                      error=True)
+            return False
+        self._say(translate("Scenario", "Saved {0}").format(path))
+        return True
+
+    # -- texts -------------------------------------------------------------------------------
+
+    def _say(self, text: str, *, error: bool = False) -> None:
+        self.message.setStyleSheet("color:#c00000;" if error else "")
+        self.message.setText(text)
+
+    def retranslate(self) -> None:
+        """Set the texts in the current UI language."""
+        self.setWindowTitle(translate("Scenario", "PLC scenario"))
+        self.actions_by_name[RUN].setText(translate("Scenario", "Run scenario..."))
+        self.actions_by_name[RECORD].setText(translate("Scenario", "Record scenario"))
+        self.checks.setHeaderLabels([
+            translate("Scenario", "Line"), translate("Scenario", "Check"),
+            translate("Scenario", "Expected"), translate("Scenario", "Got"),
+            translate("Scenario", "Time (ms)"), translate("Scenario", "Result")])
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate on a language change."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+
+def _signals(scenario: Scenario) -> list[TracedSignal]:
+    """Every address the scenario sets or checks, once, in order of appearance."""
+    seen: dict[tuple[object, int], TracedSignal] = {}
+    for step in scenario.steps:
+        for target, _value in step.items:
+            key = (target.address, target.width)
+            seen.setdefault(key, TracedSignal(target.address, target.width))
+    return list(seen.values())
+
+
+def install(window: QMainWindow, session: PlcSession) -> ScenarioDock:
+    """Add the scenario dock (hidden) and PLC › Run scenario / Record scenario."""
+    chart = window.findChild(TimeChartDock)
+    dock = ScenarioDock(session, window, chart)
+    add_dock(window, dock, "action_dock_scenario")
+    dock.hide()
+    menu = find_menu(window, "menu_plc")
+    for name in (RUN, RECORD):
+        action = dock.actions_by_name[name]
+        action.triggered.connect(dock.show)
+        register_action(window, action)
+        if menu is not None:
+            menu.addAction(action)
+    return dock
+

@@ -1,0 +1,119 @@
+"""The time chart's trace files: export and import FANUC LADDER-III signal-trace results."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QCoreApplication
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import QFileDialog
+
+from ladderworks.core.address import AddressError
+from ladderworks.core.plc.trace import TraceSample
+from ladderworks.core.plc.trace_file import TraceFileError, TraceTable, ladder3_text, read_trace
+from ladderworks.gui.docks.trace_record import TraceRecord, parse_traced
+from ladderworks.gui.files import atomic_write
+
+if TYPE_CHECKING:
+    from ladderworks.gui.docks.time_chart import TimeChartDock
+
+translate = QCoreApplication.translate
+EXPORT = "action_time_chart_ladder3"
+IMPORT = "action_time_chart_import"
+
+
+def table_of(record: TraceRecord) -> TraceTable:
+    """The record as a file table."""
+    return TraceTable([s.label for s in record.signals], list(record.times),
+                      [list(lane) for lane in record.lanes])
+
+
+def add_actions(dock: TimeChartDock) -> None:
+    """Add LADDER-III export and trace import to the chart's toolbar."""
+    for name, slot in ((EXPORT, lambda: export_dialog(dock)),
+                       (IMPORT, lambda: import_dialog(dock))):
+        action = QAction(dock)
+        action.setObjectName(name)
+        action.triggered.connect(lambda _c=False, s=slot: s())
+        dock.toolbar.addAction(action)
+        dock.chart_actions[name] = action
+
+
+def retranslate(dock: TimeChartDock) -> None:
+    """The actions' texts in the current UI language."""
+    actions = dock.chart_actions
+    if EXPORT not in actions:
+        return
+    actions[EXPORT].setText(translate("TraceFiles", "LADDER-III..."))
+    actions[EXPORT].setToolTip(
+        translate("TraceFiles", "Export the samples as a LADDER-III signal-trace result"))
+    actions[IMPORT].setText(translate("TraceFiles", "Import..."))
+    actions[IMPORT].setToolTip(
+        translate("TraceFiles", "Show a LADDER-III trace result or a CSV trace"))
+
+
+def export_ladder3(dock: TimeChartDock, path: str | Path) -> bool:
+    """Write the record as a LADDER-III trace result (frame 0 = the last sample)."""
+    try:
+        atomic_write(path, ladder3_text(table_of(dock.record)))
+    except OSError as error:
+        dock._say(translate("TimeChart", "Cannot write {0}: {1}").format(path, error.strerror),
+                  error=True)
+        return False
+    dock._say(translate("TimeChart", "Saved {0}").format(path))
+    return True
+
+
+def import_trace(dock: TimeChartDock, path: str | Path) -> bool:
+    """Show a LADDER-III trace result (frames at the chosen sampling time) or our CSV."""
+    if dock.sampling:
+        dock.stop()
+    period = dock.period_spin.value()
+    try:
+        table = read_trace(Path(path).read_text(encoding="utf-8", errors="replace"), period)
+        signals = [parse_traced(label) for label in table.labels]
+    except OSError as error:
+        dock._say(translate("TimeChart", "Cannot read {0}: {1}").format(path, error.strerror),
+                  error=True)
+        return False
+    except (TraceFileError, AddressError) as error:
+        line = getattr(error, "line", 1)
+        dock._say(translate("TraceFiles", "{0}, line {1}: not a trace file").format(path, line),
+                  error=True)
+        return False
+    record = TraceRecord(signals)
+    record.period_ms = period
+    record.extend(TraceSample(index, time_ms, tuple(column[index] for column in table.columns))
+                  for index, time_ms in enumerate(table.times))
+    show_record(dock, record)
+    dock._say(translate("TraceFiles", "Imported {0}: {1} samples").format(path, len(record)))
+    return True
+
+
+def show_record(dock: TimeChartDock, record: TraceRecord) -> None:
+    """Show a finished record (an imported file, a scenario's run) instead of live samples."""
+    if dock.sampling:
+        dock.stop()
+    dock.record = record
+    dock.signals_edit.setText(" ".join(s.label for s in record.signals))
+    dock._make_lanes()
+    dock.fit()
+
+
+def export_dialog(dock: TimeChartDock) -> None:
+    """Ask for a file and export the LADDER-III trace result."""
+    path, _filter = QFileDialog.getSaveFileName(
+        dock, translate("TraceFiles", "Export as LADDER-III trace result"), "trace.csv",
+        translate("TimeChart", "CSV files (*.csv)"))
+    if path:
+        export_ladder3(dock, path)
+
+
+def import_dialog(dock: TimeChartDock) -> None:
+    """Ask for a trace file and show it."""
+    path, _filter = QFileDialog.getOpenFileName(
+        dock, translate("TraceFiles", "Import a trace"), "",
+        translate("TimeChart", "CSV files (*.csv)"))
+    if path:
+        import_trace(dock, path)
