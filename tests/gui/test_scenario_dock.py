@@ -44,10 +44,10 @@ def test_run_shows_each_check_and_jumps_to_the_failing_time(qtbot: QtBot,
     assert [(r.text(0), r.text(5)) for r in rows] == [("4", "passed"), ("5", "FAILED")]
     assert "1 of 2 checks failed" in dock.message.text()
     assert dock.failing_times() == [960]
-    assert chart.cursor.value() == 960  # the chart's cursor is at the first failure
+    assert chart.time_cursor.value() == 960  # the chart's cursor is at the first failure
     chart.set_cursor(0)
     dock.checks.itemActivated.emit(rows[1], 0)
-    assert chart.cursor.value() == 960
+    assert chart.time_cursor.value() == 960
     assert chart.cursor_values()["R1.7"] == 1  # the chart shows the scenario's own run
     assert session.engine is not None and session.engine.now_ms == 0  # live PLC untouched
     session.stop()

@@ -56,7 +56,7 @@ def test_cursor_back_shows_the_earlier_state_then_live_and_why(qtbot: QtBot,
     assert dock.past is not None and dock.past.scan_count == 5
     assert "Y0.0 went to 1 in scan 5 at 40 ms" in dock.message.text()
     assert (network, cell) in dock.hits and cell in overlay.marked
-    assert round(chart.cursor.value()) == 40
+    assert round(chart.time_cursor.value()) == 40
     slider = travel.slider
     assert slider.isVisible() and (slider.minimum(), slider.maximum()) == (0, 12)
     dock.back_to_live()

@@ -249,12 +249,16 @@ def _scan_line(text: str, number: int) -> _Line | Diagnostic:
 
 def _branch(node: lark.Tree[lark.Token] | lark.Token) -> lark.Tree[lark.Token]:
     """A subtree the line grammar puts at this place."""
+    import lark  # loaded already: only lark's trees reach here
+
     assert isinstance(node, lark.Tree), node
     return node
 
 
 def _leaf(node: lark.Tree[lark.Token] | lark.Token) -> lark.Token:
     """A token the line grammar puts at this place."""
+    import lark  # loaded already: only lark's trees reach here
+
     assert isinstance(node, lark.Token), node
     return node
 
