@@ -26,14 +26,14 @@ from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.translation import instruction_label, instruction_title, param_label
 
 
-def allowed_text(param: Param) -> str:
-    """What may be typed for `param`, from its row in the instruction table."""
+def allowed_text(param: Param, dialect: str = "seed") -> str:
+    """What may be typed for `param` in a program of `dialect`, from the instruction table."""
     if param.kind is ParamKind.NUMBER:
         if param.choices:
             return QCoreApplication.translate("FunctionDialog", "one of {0}").format(
                 ", ".join(str(c) for c in param.choices))
         return QCoreApplication.translate("FunctionDialog", "{0} to {1}").format(
-            param.lo, param.hi)
+            param.lo, param.highest(dialect))
     if param.kind is ParamKind.ADDRESS:
         if isinstance(param.width, int):
             return QCoreApplication.translate(
@@ -55,10 +55,12 @@ def allowed_text(param: Param) -> str:
     return QCoreApplication.translate("FunctionDialog", "values separated by spaces")
 
 
-def check_function(spec: InstructionSpec, values: list[str]) -> tuple[
+def check_function(spec: InstructionSpec, values: list[str], dialect: str = "seed") -> tuple[
         Instruction | None, list[Diagnostic]]:
-    """Build the instruction from typed values, checked by the core's parser."""
-    params, diagnostics = function_params(spec.name, [v.strip() for v in values if v.strip()])
+    """Build the instruction from typed values, checked by the core's parser with the ranges
+    of a program of `dialect` (a LADDER-III program: the 30i's)."""
+    params, diagnostics = function_params(spec.name, [v.strip() for v in values if v.strip()],
+                                          dialect)
     if params is None or diagnostics:
         return None, diagnostics
     return Instruction(spec.name, params=params), []
@@ -74,10 +76,12 @@ class FunctionDialog(QDialog):
     """The property table of one functional instruction; OK only with valid parameters."""
 
     def __init__(self, spec: InstructionSpec, instruction: Instruction | None = None,
-                 parent: QWidget | None = None, comment: str = "") -> None:
+                 parent: QWidget | None = None, comment: str = "",
+                 dialect: str = "seed") -> None:
         super().__init__(parent)
         self.setObjectName("function_dialog")
         self.spec = spec
+        self.dialect = dialect  # the program's: a FANUC program takes the 30i ranges
         self.instruction: Instruction | None = None
         self.comment_text = comment
         layout = QVBoxLayout(self)
@@ -159,7 +163,7 @@ class FunctionDialog(QDialog):
         ])
         for row, param in enumerate(self._params):
             self._cell(row, 0).setText(param_label(param.name))
-            self._cell(row, 2).setText(allowed_text(param))
+            self._cell(row, 2).setText(allowed_text(param, self.dialect))
 
     def show_help(self) -> InstructionHelp:
         """The Help button: this instruction's reference entry, beside the dialog."""
@@ -184,7 +188,7 @@ class FunctionDialog(QDialog):
     def accept(self) -> None:
         """Check with the core; on an error show the warning, mark the row and stay open."""
         self.table.setCurrentCell(-1, -1)
-        instruction, diagnostics = check_function(self.spec, self.values())
+        instruction, diagnostics = check_function(self.spec, self.values(), self.dialect)
         for row in range(self.table.rowCount()):
             self._cell(row, 1).setBackground(QColor(Qt.GlobalColor.transparent))
         if instruction is None:

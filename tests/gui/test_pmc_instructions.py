@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel, QLineEdit
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.il import parse, print_program
-from ladderworks.core.instructions import PMC_ORDER, Write
+from ladderworks.core.instructions import PMC_ORDER, Write, lookup
 from ladderworks.core.ladder.model import Coil, FunctionBox
 from ladderworks.gui.function_dialog import FunctionDialog
 from ladderworks.gui.main_window import MainWindow
@@ -192,3 +193,17 @@ def test_function_table_title_in_turkish(drawer: Drawer, window: MainWindow,
     dialog = open_box(drawer, "CALLU", 0, 0)
     assert dialog.windowTitle() == "CALLU — ŞARTSIZ ALT PROGRAM ÇAĞRISI"
     assert dialog.table.item(0, 0).text() == "Alt program"
+
+
+@pytest.mark.parametrize(("dialect", "accepted", "allowed"),
+                         [("seed", False, "1 to 100"), ("fanuc", True, "1 to 500")])
+def test_the_property_table_takes_the_ranges_of_the_programs_dialect(
+        qtbot: QtBot, dialect: str, accepted: bool, allowed: str) -> None:
+    dialog = FunctionDialog(lookup("TMRB"), dialect=dialect)  # X22 has TMRB 245
+    qtbot.addWidget(dialog)
+    assert dialog.table.item(0, 2).text() == allowed
+    dialog.set_value("timer", "245")
+    dialog.set_value("preset", "2000")
+    dialog.accept()
+    assert (dialog.instruction is not None) is accepted
+    assert dialog.warning.isHidden() is accepted

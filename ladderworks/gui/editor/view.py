@@ -498,7 +498,9 @@ class LadderEditor(QGraphicsView):
         if spec is None:
             return
         current = Instruction(box.name, params=box.params) if box is not None else None
-        dialog = FunctionDialog(spec, current, self, box.comment if box is not None else "")
+        dialect = self.document.origin.dialect if self.document.origin is not None else "seed"
+        dialog = FunctionDialog(spec, current, self, box.comment if box is not None else "",
+                                dialect)
         self.function_dialog = dialog
 
         def done() -> None:
