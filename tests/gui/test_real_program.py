@@ -115,8 +115,11 @@ def test_program_properties_show_title_sections_and_text_form(
     dialog = window.properties_dialog
     qtbot.waitExposed(dialog)
     title = dialog.texts("properties_title")
-    assert ["2", "Machine-tool name", "X22_CNCF * P036X22F"] in title
-    assert ["7", "Date", "19/03/22 11:04"] in title
+    lines = _x22().read_text("ascii").splitlines()
+    section = lines[lines.index("%@1") + 1:lines.index("%", lines.index("%@1"))]
+    written = dict(line.split(" ", 1) for line in section)  # `2 name`: read from ../shared
+    assert ["2", "Machine-tool name", written["2"].strip()] in title
+    assert ["7", "Date", written["7"].strip()] in title
     assert [row[0] for row in title] == [str(n) for n in range(1, 11)]
     general = dict((row[0], row[1]) for row in dialog.texts("properties_general"))
     assert general["Dialect"] == "FANUC LADDER-III export"
