@@ -22,9 +22,9 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, has_errors
-from ladderworks.core.il import Program
+from ladderworks.core.il import Program, print_program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
-from ladderworks.gui import compile_step
+from ladderworks.gui import compile_step, questions
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.error_list import ErrorListDock
@@ -608,10 +608,30 @@ class MainWindow(FileActions, QMainWindow):
                 )
             )
         else:
-            self._show_message(
-                translate("MainWindow", "Compile finished: {0} bytes").format(len(binary))
-            )
+            assert program is not None
+            self._show_message(self._load_into_plc(binary, program))
         return binary
+
+    def _load_into_plc(self, binary: bytes, program: Program) -> str:
+        """One path (issue 18): the compiled program goes into the simulated PLC the docks
+        use; a running PLC reloads between two scans after asking, and runs on. The status
+        bar message."""
+        session = self.plc_docks.session
+        running = session.running
+        if running and questions.reload_running(self) != "reload":
+            return translate("MainWindow", "Compile finished: {0} bytes (not loaded: the PLC "
+                             "runs the previous program)").format(len(binary))
+        problems = session.load(binary, program)
+        if problems:
+            self.errors.set_diagnostics(problems)
+            self.errors.show()
+            return translate("MainWindow", "Compile finished, but the PLC refused the program")
+        name = self.path.name if self.path else translate("MainWindow", "Untitled")
+        self.plc_docks.control.show_loaded(print_program(program), name)
+        if running:
+            session.start()
+        return translate("MainWindow", "Compile finished: {0} bytes, loaded into the PLC").format(
+            len(binary))
 
     def go_to_diagnostic(self, diagnostic: Diagnostic) -> None:
         """Jump to the diagnostic's cell in the ladder, or its line in the text view."""

@@ -80,3 +80,12 @@ def restore(parent: QWidget | None, name: str, when: str) -> str | None:
         ("restore", translate("Questions", "Restore"), Role.AcceptRole),
         ("discard", translate("Questions", "Discard"), Role.DestructiveRole),
         ("later", translate("Questions", "Not now"), Role.RejectRole)])
+
+
+def reload_running(parent: QWidget | None) -> str | None:
+    """Compile while the PLC runs: 'reload' (at the next scan boundary) or cancel."""
+    return ask(parent, translate("Questions", "The PLC is running"), translate(
+        "Questions",
+        "The PLC is running. Load the new program now? It is loaded between two scans and "
+        "the PLC runs on with it; forces stay."), [
+        ("reload", translate("Questions", "Reload now"), Role.AcceptRole), _cancel()])

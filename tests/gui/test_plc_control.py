@@ -45,7 +45,7 @@ def test_spindle_override_compile_start_watch_stop(qtbot: QtBot, window: MainWin
     assert finished.args[0].ok
     assert progress == sorted(progress) and len(set(progress)) >= 4  # the stripes advance
     assert control.editor.converted_lines == lines
-    assert "compile finish" in control.message.text()
+    assert "Compile finished" in control.message.text()
     assert session.binary is not None and not session.running
     assert control.indicator.text() == "STOPPED"
     shot(window, "plc_control_finished.png")

@@ -6,13 +6,14 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QEvent, QObject, Qt
-from PySide6.QtWidgets import QDockWidget, QMainWindow
+from PySide6.QtWidgets import QDockWidget, QMainWindow, QToolBar
 
 from ladderworks.core.il import Program
 from ladderworks.gui.plc_session import PlcSession
 
 if TYPE_CHECKING:
     from ladderworks.gui.docks.online import OnlineMode
+    from ladderworks.gui.docks.plc_control import PlcControlDock
 
 
 @dataclass(slots=True)
@@ -20,7 +21,7 @@ class PlcDocks:
     """Everything `install_plc_docks` put into the window."""
 
     session: PlcSession
-    control: QDockWidget
+    control: PlcControlDock
     diagnostic: QDockWidget
     force_list: QDockWidget
     online: OnlineMode | None  # on-line mode needs the console's editor
@@ -87,6 +88,9 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
     if online is not None:
         for name in ACTION_NAMES:
             register_action(window, online.actions[name])
+    toolbar = window.findChild(QToolBar, "toolbar_main")
+    if toolbar is not None:  # one path (issue 18): START / STOP next to Compile
+        toolbar.addActions(actions[1:])
     if plc_menu is not None:
         plc_menu.addSeparator()
         plc_menu.addAction(control.toggleViewAction())

@@ -100,6 +100,10 @@ class PlcControlDock(QDockWidget):
         state.addWidget(self.indicator)
         state.addWidget(self.figures, 1)
         layout.addLayout(state)
+        self.loaded = QLabel(body)
+        self.loaded.setObjectName("plcLoadedProgram")
+        self.loaded_name = ""  # the name of the program in the PLC, "" when none
+        layout.addWidget(self.loaded)
         self.editor = MnemonicEditor(body)
         self.editor.textChanged.connect(self._text_changed)
         layout.addWidget(self.editor, 1)
@@ -130,6 +134,7 @@ class PlcControlDock(QDockWidget):
         }
         for name, text in texts.items():
             self.control_actions[name].setText(text)
+        self._show_loaded()
         self._show_status(self.session.status())
 
     # -- the program text ------------------------------------------------------------------
@@ -140,6 +145,19 @@ class PlcControlDock(QDockWidget):
         self.editor.setPlainText(text)
         self.editor.set_diagnostics([])
         self.editor.set_converted(0)
+
+    def show_loaded(self, text: str, name: str) -> None:
+        """The console compiled and loaded a program: show its text, converted, and name."""
+        self._timer.stop()
+        self.set_text(text)
+        self.editor.set_converted(self.editor.blockCount())
+        self.loaded_name = name
+        self._show_loaded()
+        self.message.setText(translate("PlcControl", "Program loaded from the console"))
+
+    def _show_loaded(self) -> None:
+        self.loaded.setText(translate("PlcControl", "In the PLC: {0}").format(self.loaded_name)
+                            if self.loaded_name else "")
 
     def open_file(self, path: str | Path) -> bool:
         """Read a .MOD / .LAD file (UTF-8 or Turkish Windows text)."""
@@ -240,8 +258,11 @@ class PlcControlDock(QDockWidget):
         if problems:
             self.message.setText(diagnostic_text(problems[0]))
         else:
+            self.loaded_name = self.path.name if self.path else translate(
+                "PlcControl", "the program on this screen")
+            self._show_loaded()
             warnings = sum(1 for d in self.result.diagnostics if not d.is_error)
-            text = translate("PlcControl", "compile finish — {0} networks, {1} bytes").format(
+            text = translate("PlcControl", "Compile finished — {0} networks, {1} bytes").format(
                 len(self._ends), len(self.result.binary))
             if warnings:
                 text += " " + translate("PlcControl", "({0} warning(s))").format(warnings)

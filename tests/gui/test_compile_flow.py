@@ -1,0 +1,86 @@
+"""Issue 18 item 1, one path: F9 compiles the console's program and loads it into the PLC,
+START / STOP are on the main toolbar and in the PLC menu, compiling while running asks."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import QMenu, QToolBar
+from pytestqt.qtbot import QtBot
+
+from ladderworks import paths
+from ladderworks.core.address import parse_address
+from ladderworks.gui.main_window import MainWindow
+from tests.gui.conftest import Answers
+
+EXAMPLE = paths.EXAMPLES / "spindle_override.LAD"
+
+
+def _action(window: MainWindow, name: str) -> QAction:
+    action = window.findChild(QAction, name)
+    assert action is not None, name
+    return action
+
+
+def _open(window: MainWindow) -> None:
+    assert window.load(EXAMPLE)
+    window.plc_docks.session.realtime = False  # scans on the virtual clock
+
+
+def test_f9_loads_the_program_and_toolbar_start_runs_it(qtbot: QtBot,
+                                                         window: MainWindow) -> None:
+    _open(window)
+    session = window.plc_docks.session
+    start = _action(window, "action_plc_start")
+    assert not start.isEnabled()
+    qtbot.keyClick(window, Qt.Key.Key_F9)
+    assert session.engine is not None
+    assert "loaded into the PLC" in window.statusBar().currentMessage()
+    toolbar = window.findChild(QToolBar, "toolbar_main")
+    assert toolbar is not None
+    assert start in toolbar.actions()
+    assert _action(window, "action_plc_stop") in toolbar.actions()
+    menu = window.findChild(QMenu, "menu_plc")
+    assert menu is not None and start in menu.actions()
+    assert len(window.findChildren(QAction, "action_plc_start")) == 1
+    assert start.isEnabled()
+    start.trigger()
+    assert session.running
+    output = parse_address("R102.1")
+    session.run_scans(2)
+    assert session.bit(output) == 0
+    session.set_bit(parse_address("X2.1"), 1)
+    session.run_scans(2)
+    assert session.bit(output) == 1
+    _action(window, "action_plc_stop").trigger()
+    assert not session.running
+
+
+def test_the_control_screen_shows_the_loaded_program(window: MainWindow) -> None:
+    _open(window)
+    _action(window, "action_compile").trigger()
+    control = window.plc_docks.control
+    assert "WRT R102.1" in " ".join(control.editor.toPlainText().split())
+    assert control.loaded.text() == "In the PLC: spindle_override.LAD"
+    assert control.indicator.text() == "STOPPED"
+
+
+def test_compile_while_running_asks_and_reloads(window: MainWindow, answers: Answers) -> None:
+    _open(window)
+    session = window.plc_docks.session
+    compile_action = _action(window, "action_compile")
+    compile_action.trigger()
+    assert session.start()
+    first = session.binary
+    answers.queue.append("cancel")
+    compile_action.trigger()
+    assert answers.asked[-1][2] == ["reload", "cancel"]
+    assert session.binary is first and session.running
+    answers.queue.append("reload")
+    compile_action.trigger()
+    assert len(answers.asked) == 2
+    assert session.binary is not first
+    assert session.running  # runs on with the new program
+    session.set_bit(parse_address("X2.1"), 1)
+    session.run_scans(2)
+    assert session.bit(parse_address("R102.1")) == 1
