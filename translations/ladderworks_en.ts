@@ -849,37 +849,37 @@
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="148"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="152"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="151"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="155"/>
         <source>This instruction has no parameters.</source>
         <translation>This instruction has no parameters.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="157"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="160"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="157"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="161"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="162"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="192"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="196"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -907,7 +907,7 @@
     <message>
         <location filename="../ladderworks/gui/editor/view.py" line="399"/>
         <location filename="../ladderworks/gui/editor/view.py" line="438"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="715"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="717"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
@@ -918,15 +918,15 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/view.py" line="414"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="697"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="709"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="699"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="711"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/view.py" line="423"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="726"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="735"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="728"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="737"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
@@ -962,57 +962,57 @@
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="513"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="515"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="517"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="521"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="519"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="523"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="527"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="563"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="633"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="654"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="529"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="565"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="635"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="656"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/view.py" line="362"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="623"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="552"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="554"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="627"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="629"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="753"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="755"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="765"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="767"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="774"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="776"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="865"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="867"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -1215,8 +1215,24 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/main_window.py" line="622"/>
+        <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
+        <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="628"/>
+        <source>Compile finished, but the PLC refused the program</source>
+        <translation>Compile finished, but the PLC refused the program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="633"/>
+        <source>Compile finished: {0} bytes, loaded into the PLC</source>
+        <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
+    </message>
+    <message>
         <location filename="../ladderworks/gui/file_actions.py" line="428"/>
         <location filename="../ladderworks/gui/main_window.py" line="486"/>
+        <location filename="../ladderworks/gui/main_window.py" line="629"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -1365,27 +1381,22 @@
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="612"/>
-        <source>Compile finished: {0} bytes</source>
-        <translation>Compile finished: {0} bytes</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/main_window.py" line="632"/>
+        <location filename="../ladderworks/gui/main_window.py" line="652"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="635"/>
+        <location filename="../ladderworks/gui/main_window.py" line="655"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="667"/>
+        <location filename="../ladderworks/gui/main_window.py" line="687"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="668"/>
+        <location filename="../ladderworks/gui/main_window.py" line="688"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -1601,113 +1612,128 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="127"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC CONTROL SCREEN</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="129"/>
         <source>Open .MOD…</source>
         <translation>Open .MOD…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="130"/>
         <source>Take the console&apos;s program</source>
         <translation>Take the console&apos;s program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="131"/>
         <source>Compile</source>
         <translation>Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="128"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="278"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="129"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="133"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <source>Program loaded from the console</source>
+        <translation>Program loaded from the console</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
+        <source>In the PLC: {0}</source>
+        <translation>In the PLC: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="168"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="172"/>
         <source>Opened {0}</source>
         <translation>Opened {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="160"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="178"/>
         <source>Open mnemonic program</source>
         <translation>Open mnemonic program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="161"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="187"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>The console&apos;s program cannot be coded: see the error list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="173"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="191"/>
         <source>Program taken from the console</source>
         <translation>Program taken from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="207"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="225"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Compile failed: {0} error(s). {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="219"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="237"/>
         <source>Converting…</source>
         <translation>Converting…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="244"/>
-        <source>compile finish — {0} networks, {1} bytes</source>
-        <translation>compile finish — {0} networks, {1} bytes</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="261"/>
+        <source>the program on this screen</source>
+        <translation>the program on this screen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="265"/>
+        <source>Compile finished — {0} networks, {1} bytes</source>
+        <translation>Compile finished — {0} networks, {1} bytes</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="268"/>
         <source>({0} warning(s))</source>
         <translation>({0} warning(s))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="279"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
         <source>Compile a program first</source>
         <translation>Compile a program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="307"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="313"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="295"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="316"/>
         <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>
@@ -2353,6 +2379,21 @@
         <location filename="../ladderworks/gui/questions.py" line="82"/>
         <source>Not now</source>
         <translation>Not now</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="87"/>
+        <source>The PLC is running</source>
+        <translation>The PLC is running</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="87"/>
+        <source>The PLC is running. Load the new program now? It is loaded between two scans and the PLC runs on with it; forces stay.</source>
+        <translation>The PLC is running. Load the new program now? It is loaded between two scans and the PLC runs on with it; forces stay.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="91"/>
+        <source>Reload now</source>
+        <translation>Reload now</translation>
     </message>
 </context>
 <context>
