@@ -84,3 +84,15 @@ def test_compile_while_running_asks_and_reloads(window: MainWindow, answers: Ans
     session.set_bit(parse_address("X2.1"), 1)
     session.run_scans(2)
     assert session.bit(parse_address("R102.1")) == 1
+
+
+def test_turkish_texts_of_the_one_path(window: MainWindow) -> None:
+    _open(window)
+    window.set_language("tr")
+    tools = window.findChild(QMenu, "menu_tools")
+    assert tools is not None and tools.title() == "&Araçlar"
+    _action(window, "action_compile").trigger()
+    message = window.statusBar().currentMessage()
+    assert message.startswith("Derleme bitti: ") and "PLC'ye yüklendi" in message
+    assert "compile" not in message.lower()
+    assert window.plc_docks.control.loaded.text() == "PLC'deki program: spindle_override.LAD"
