@@ -487,7 +487,7 @@ PMC_ORDER: tuple[str, ...] = (
 
 def lookup(name: str) -> InstructionSpec | None:
     """The row for a mnemonic (case-insensitive), or None."""
-    return BY_NAME.get(name.upper())
+    return BY_NAME.get(name) or BY_NAME.get(name.upper())
 
 
 @cache

@@ -28,6 +28,7 @@ from ladderworks.core.il.textform import TextForm, decode_text, dominant_newline
 from ladderworks.core.instructions import (
     BY_MNEMONIC,
     BY_SUB,
+    Combine,
     InstructionSpec,
     Kind,
     Param,
@@ -454,7 +455,7 @@ class _FileParser:
                 end_line = scanned[k - 1].number
             instruction = self._build(spec, line, operands)
             if instruction is not None:
-                builder.add(instruction, end_line)
+                builder.add(instruction, end_line, spec)
         self.program.networks = builder.networks
         self.program.trailer = builder.finish_pending()
         source = self.source
@@ -482,7 +483,7 @@ class _FileParser:
         spec = make(number, len(operands))
         instruction = self._build(spec, line, operands)
         if instruction is not None:
-            builder.add(instruction, scanned[k - 1].number if operands else line.number)
+            builder.add(instruction, scanned[k - 1].number if operands else line.number, spec)
         return k
 
     def _collect_params(self, spec: InstructionSpec, scanned: list[_Line], k: int,
@@ -722,9 +723,9 @@ class _NetworkBuilder:
         self.pending_label = text
         self.closed = True
 
-    def add(self, instruction: Instruction, end_line: int) -> None:
-        spec = instruction.spec
-        starts = bool(self.pending_label) or instruction.name in ("RD", "RD.NOT") or (
+    def add(self, instruction: Instruction, end_line: int, spec: InstructionSpec) -> None:
+        starts = bool(self.pending_label) or (
+            spec.combine is Combine.READ and not spec.pushes) or (
             spec.kind is not Kind.BASIC and not spec.inputs
         )
         if self.current is None or (starts and self.closed):
