@@ -58,7 +58,7 @@ from PySide6.QtCore import QObject, QTimer, Signal
 
 from ladderworks.core.address import Address
 from ladderworks.core.alarms import ActiveAlarm, AlarmTable
-from ladderworks.core.compiler import CompileResult, compile_program
+from ladderworks.core.compiler import CompileResult
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il.program import Program
@@ -73,6 +73,7 @@ from ladderworks.core.plc.session import (
     PlcRun,
     PlcSnapshot,
     PlcStatus,
+    compile_and_load,
 )
 from ladderworks.core.plc.timer_table import TimerLayout
 from ladderworks.core.plc.trace import TraceSample, TraceSampler
@@ -178,13 +179,8 @@ class PlcSession(QObject):
         return []
 
     def load_program(self, program: Program) -> CompileResult:
-        """Compile a program and load it when it compiles."""
-        result = compile_program(program)
-        if result.binary is not None:
-            problems = self.load(result.binary, program)
-            if problems:
-                return CompileResult(None, result.diagnostics + problems)
-        return result
+        """Compile a program and load it when it compiles (with this adapter's signals)."""
+        return compile_and_load(program, self.load)
 
     # -- running -------------------------------------------------------------------------
 

@@ -99,6 +99,17 @@ class ScanFigures:
         self.high = max(self.high, seconds)
 
 
+def compile_and_load(program: Program,
+                     load: Callable[[bytes, Program], list[Diagnostic]]) -> CompileResult:
+    """Compile `program` and, when it compiles, `load` it; load problems refuse the result."""
+    result = compile_program(program)
+    if result.binary is not None:
+        problems = load(result.binary, program)
+        if problems:
+            return CompileResult(None, result.diagnostics + problems)
+    return result
+
+
 class PlcRun:
     """One PLC: the loaded program's engine, its memory, forces, trace, alarms and parameters."""
 
@@ -155,12 +166,7 @@ class PlcRun:
 
     def load_program(self, program: Program) -> CompileResult:
         """Compile a program and load it when it compiles."""
-        result = compile_program(program)
-        if result.binary is not None:
-            problems = self.load(result.binary, program)
-            if problems:
-                return CompileResult(None, result.diagnostics + problems)
-        return result
+        return compile_and_load(program, self.load)
 
     @property
     def dialect(self) -> str:
