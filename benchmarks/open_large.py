@@ -10,7 +10,8 @@ from pathlib import Path
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
-from PySide6.QtCore import QEvent, QObject, QSettings
+from paint_watch import PaintWatch
+from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QApplication
 
 NETWORKS = 2000
@@ -37,19 +38,6 @@ def generate(count: int) -> str:
         lines.append("")
     lines.append("%")
     return "\n".join(lines) + "\n"
-
-
-class PaintWatch(QObject):
-    """Notes when the view's viewport has been painted."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.painted = False
-
-    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        if event.type() == QEvent.Type.Paint:
-            self.painted = True
-        return False
 
 
 def main() -> int:

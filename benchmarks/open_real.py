@@ -15,7 +15,8 @@ os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from PySide6.QtCore import QEvent, QObject, QSettings  # noqa: E402
+from paint_watch import PaintWatch  # noqa: E402
+from PySide6.QtCore import QSettings  # noqa: E402
 from PySide6.QtWidgets import QApplication  # noqa: E402
 
 NAME = "FANUC_STUDER_S41_F036"
@@ -27,20 +28,6 @@ def _program() -> Path | None:
         if candidate.exists():
             return candidate
     return None
-
-
-class PaintWatch(QObject):
-    """Notes when the view's viewport has been painted."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.painted = False
-
-    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        """Any paint event counts."""
-        if event.type() == QEvent.Type.Paint:
-            self.painted = True
-        return False
 
 
 def _rss_mb() -> float:
