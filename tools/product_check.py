@@ -22,7 +22,7 @@ from pathlib import Path
 CHECKOUT = Path(__file__).resolve().parent.parent
 PACKAGE = "ladderworks"
 IDE_SECONDS = 3
-_ICON_CALL = re.compile(r'\bicon\(\s*"(\w+)"\s*\)')
+_ICON_CALL = re.compile(r'\bicon(?:\(\s*|=)"([a-z]\w*)"')  # icon("name"), or icon="name" in a table
 
 TURKISH_MENUS = """
 import sys

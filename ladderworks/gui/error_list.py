@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent, Signal
+from PySide6.QtCore import QCoreApplication, Signal
 from PySide6.QtWidgets import QDockWidget, QTreeWidget, QTreeWidgetItem, QWidget
 
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.retranslate import Retranslating
 
 
 def location_text(diagnostic: Diagnostic) -> str:
@@ -25,7 +26,7 @@ def location_text(diagnostic: Diagnostic) -> str:
     return ""
 
 
-class ErrorListDock(QDockWidget):
+class ErrorListDock(Retranslating, QDockWidget):
     """A dock listing diagnostics; `activated` is emitted on double-click."""
 
     activated = Signal(object)  # Diagnostic
@@ -78,9 +79,3 @@ class ErrorListDock(QDockWidget):
             QCoreApplication.translate("ErrorList", "Message"),
         ])
         self._fill()
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)

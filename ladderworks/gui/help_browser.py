@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from PySide6.QtCore import QCoreApplication, QEvent, Qt
+from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtWidgets import (
     QDialog,
     QHBoxLayout,
@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.instructions import ALL, InstructionSpec, lookup
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import instruction_title, ui_is_turkish
 from ladderworks.paths import help_page
 
@@ -53,7 +54,7 @@ def reference_sections(language: str = "en") -> dict[str, str]:
     return sections
 
 
-class InstructionHelp(QDialog):
+class InstructionHelp(Retranslating, QDialog):
     """A non-modal window: the instruction list on the left, the chosen entry on the right."""
 
     def __init__(self, parent: QWidget | None = None) -> None:
@@ -139,9 +140,3 @@ class InstructionHelp(QDialog):
         self._fill()
         if shown is not None:
             self.show_instruction(shown)
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate when the language changes."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)

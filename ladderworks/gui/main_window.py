@@ -2,21 +2,18 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
 
 from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
-from PySide6.QtGui import QAction, QActionGroup, QCloseEvent, QKeySequence, QShowEvent
+from PySide6.QtGui import QAction, QCloseEvent, QShowEvent
 from PySide6.QtWidgets import (
     QApplication,
     QDialog,
     QDockWidget,
     QLabel,
     QMainWindow,
-    QMenu,
     QMessageBox,
     QStackedWidget,
-    QToolBar,
     QWidget,
 )
 
@@ -25,6 +22,9 @@ from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step, questions
+from ladderworks.gui.actions_table import CAN_REDO, CAN_UNDO, CONTEXT_MENU, LADDER_SHOWN
+from ladderworks.gui.console_menus import Condition, ConsoleMenus
+from ladderworks.gui.docks.plc_docks import build_plc_docks
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.error_list import ErrorListDock
@@ -32,16 +32,18 @@ from ladderworks.gui.file_actions import FileActions
 from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.parameter_document import ParameterDocument
+from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.signal_list import SignalListDock
 from ladderworks.gui.text_view import ProgramTextView
-from ladderworks.gui.tools import Tool, icon, tool_help, tool_icon, tool_name
+from ladderworks.gui.tools import Tool, icon, tool_help
 from ladderworks.gui.translation import UiLanguage
 
 translate = QCoreApplication.translate
 
 
-class MainWindow(FileActions, QMainWindow):
+class MainWindow(Retranslating, FileActions, QMainWindow):
     """The ladder console: one program, shown as ladder (or as text when it has errors)."""
 
     language_changed = Signal(str)
@@ -70,31 +72,25 @@ class MainWindow(FileActions, QMainWindow):
         self.pages.addWidget(self.text_view)
         self.setCentralWidget(self.pages)
 
-        self.actions_by_name: dict[str, QAction] = {}
-        self._texts: list[tuple[QAction | QMenu | QToolBar, Callable[[], str]]] = []
-        self._make_actions()
-        self.tool_palette = ToolPalette([self.tool_actions[tool] for tool in Tool], self)
-        self.tool_palette.function_chosen.connect(self._on_function_chosen)
-        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.tool_palette)
-        self.errors = ErrorListDock(self)
-        self.errors.activated.connect(self.go_to_diagnostic)
-        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.errors)
-        self.signals_dock = SignalListDock(self)
-        self.signals_dock.address_chosen.connect(self.use_signal)
-        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.signals_dock)
-        self.tabifyDockWidget(self.tool_palette, self.signals_dock)
-        self.tool_palette.raise_()
-        self._make_menus()
+        self.menus = ConsoleMenus(self, self._conditions())
+        self.actions_by_name = self.menus.actions_by_name
+        self.tool_actions = self.menus.tool_actions
+        for tool, action in self.tool_actions.items():
+            action.triggered.connect(lambda _c=False, t=tool: self.set_tool(t))
+        self.recent_menu = self.menus.menus["menu_recent"]
+        self.recent_actions: list[QAction] = []
+        for index in range(MAX_RECENT):
+            action = QAction(self)
+            action.setObjectName(f"action_recent_{index}")
+            action.triggered.connect(lambda _c=False, i=index: self._open_recent(i))
+            self.recent_actions.append(action)
+            self.menus.register(action)
+        self._make_docks()
         self._make_status_bar()
         named = self.actions_by_name
-        self.editor.context_actions = [
-            named[name] if name else None for name in (
-                "action_cut", "action_copy", "action_paste", "action_delete", "",
-                "action_invert", "action_or", "", "action_insert_row_before",
-                "action_insert_row_after", "", "action_delete_network")]
-        from ladderworks.gui.docks import install_plc_docks  # the PLC docks (issues 7, 8)
-
-        self.plc_docks = install_plc_docks(self)
+        self.editor.context_actions = [named[name] if name else None for name in CONTEXT_MENU]
+        self.plc_docks = build_plc_docks(self, self.menus, PlcSession(self), self.editor)
+        self.program_opened.connect(self.plc_docks.alarms.use_program)
         # PMC parameters (T/C/K/D set in the PLC tables) are saved with the program
         self.parameters = ParameterDocument(self.plc_docks.session)
         self.plc_docks.session.parameters_changed.connect(self._update_title)
@@ -117,304 +113,33 @@ class MainWindow(FileActions, QMainWindow):
             self.restoreState(state)
         self.new_file()
 
-    # -- actions and menus ---------------------------------------------------------------
+    # -- actions, menus and docks -------------------------------------------------------
 
-    def _action(
-        self,
-        name: str,
-        text: Callable[[], str],
-        slot: Callable[[], object] | None,
-        shortcut: QKeySequence | QKeySequence.StandardKey | str | None = None,
-        icon_name: str | None = None,
-    ) -> QAction:
-        action = QAction(self)
-        action.setObjectName(name)
-        if shortcut is not None:
-            action.setShortcut(QKeySequence(shortcut))
-        if icon_name is not None:
-            action.setIcon(icon(icon_name))
-        if slot is not None:
-            action.triggered.connect(lambda _checked=False, s=slot: s())
-        self.actions_by_name[name] = action
-        self._texts.append((action, text))
-        return action
+    def _conditions(self) -> dict[str, Condition]:
+        """What the table's `enabled_when` names mean in this window."""
+        stack = self.editor.undo_stack
+        return {
+            LADDER_SHOWN: ([self.pages.currentChanged],
+                           lambda: self.pages.currentWidget() is self.editor),
+            CAN_UNDO: ([stack.canUndoChanged], stack.canUndo),
+            CAN_REDO: ([stack.canRedoChanged], stack.canRedo),
+        }
 
-    def _make_actions(self) -> None:
-        key = QKeySequence.StandardKey
-        ed = self.editor
-        a = self._action
-        a("action_new", lambda: translate("MainWindow", "&New"), self.new_file, key.New)
-        a("action_open", lambda: translate("MainWindow", "&Open..."), self.open_dialog, key.Open)
-        a("action_save", lambda: translate("MainWindow", "&Save"), self.save, key.Save)
-        a(
-            "action_save_as",
-            lambda: translate("MainWindow", "Save &As..."),
-            self.save_as_dialog,
-            key.SaveAs,
-        )
-        a(
-            "action_import_mod",
-            lambda: translate("MainWindow", "&Import .MOD..."),
-            self.import_mod_dialog,
-        )
-        a(
-            "action_export_mod",
-            lambda: translate("MainWindow", "&Export .MOD..."),
-            self.export_mod_dialog,
-        )
-        a(
-            "action_clear_recent",
-            lambda: translate("MainWindow", "Clear the list"),
-            self._clear_recent,
-        )
-        a(
-            "action_program_properties",
-            lambda: translate("MainWindow", "Program &properties..."),
-            self.show_program_properties,
-        )
-        a("action_quit", lambda: translate("MainWindow", "&Quit"), self.close, key.Quit)
-        undo = ed.undo_stack.createUndoAction(self)
-        undo.setObjectName("action_undo")
-        undo.setShortcut(QKeySequence(key.Undo))
-        self.actions_by_name["action_undo"] = undo
-        self._texts.append((undo, lambda: translate("MainWindow", "&Undo")))
-        redo = ed.undo_stack.createRedoAction(self)
-        redo.setObjectName("action_redo")
-        redo.setShortcut(QKeySequence(key.Redo))
-        self.actions_by_name["action_redo"] = redo
-        self._texts.append((redo, lambda: translate("MainWindow", "&Redo")))
-        a("action_cut", lambda: translate("MainWindow", "Cu&t"), ed.cut, key.Cut)
-        a("action_copy", lambda: translate("MainWindow", "&Copy"), ed.copy, key.Copy)
-        a("action_paste", lambda: translate("MainWindow", "&Paste"), ed.paste, key.Paste)
-        a("action_delete", lambda: translate("MainWindow", "&Delete"), ed.delete_at_cursor, "Del")
-        a(
-            "action_edit_element",
-            lambda: translate("MainWindow", "&Edit element"),
-            ed.edit_at_cursor,
-        )
-        a(
-            "action_invert",
-            lambda: translate("MainWindow", "NOT (invert)"),
-            ed.invert_at_cursor,
-            None,
-            "invert",
-        )
-        a(
-            "action_or",
-            lambda: translate("MainWindow", "OR (add parallel)"),
-            ed.or_at_cursor,
-            None,
-            "or",
-        )
-        a(
-            "action_insert_row_before",
-            lambda: translate("MainWindow", "Insert row before"),
-            ed.insert_row_before,
-            None,
-            "row_before",
-        )
-        a(
-            "action_insert_row_after",
-            lambda: translate("MainWindow", "Insert row after"),
-            ed.insert_row_after,
-            None,
-            "row_after",
-        )
-        a("action_delete_network", lambda: translate("MainWindow", "Delete network"),
-          ed.delete_network)
-        a("action_zoom_in", lambda: translate("MainWindow", "Zoom &in"), ed.zoom_in, key.ZoomIn)
-        a("action_zoom_out", lambda: translate("MainWindow", "Zoom &out"), ed.zoom_out, key.ZoomOut)
-        a(
-            "action_zoom_reset",
-            lambda: translate("MainWindow", "&Normal size"),
-            ed.zoom_reset,
-            "Ctrl+0",
-        )
-        a(
-            "action_show_ladder",
-            lambda: translate("MainWindow", "Show as &ladder"),
-            self.show_as_ladder,
-            "F5",
-        )
-        a(
-            "action_show_text",
-            lambda: translate("MainWindow", "Show as &text"),
-            self.show_as_text,
-            "F6",
-        )
-        a("action_check", lambda: translate("MainWindow", "C&heck"), self.check, "F7")
-        a(
-            "action_compile",
-            lambda: translate("MainWindow", "&Compile"),
-            self.compile,
-            "F9",
-            "compile",
-        )
-        a("action_language_en", lambda: "English", lambda: self.set_language("en"))
-        a("action_language_tr", lambda: "Türkçe", lambda: self.set_language("tr"))
-        a(
-            "action_instruction_help",
-            lambda: translate("MainWindow", "&Instruction reference"),
-            self.show_instruction_help,
-            QKeySequence.StandardKey.HelpContents,
-        )
-        a("action_about", lambda: translate("MainWindow", "&About LadderWorks"), self.about)
-        languages = QActionGroup(self)
-        for code in ("en", "tr"):
-            action = self.actions_by_name[f"action_language_{code}"]
-            action.setCheckable(True)
-            languages.addAction(action)
-        self.recent_actions: list[QAction] = []
-        for index in range(MAX_RECENT):
-            action = QAction(self)
-            action.setObjectName(f"action_recent_{index}")
-            action.triggered.connect(lambda _c=False, i=index: self._open_recent(i))
-            self.recent_actions.append(action)
-            self.actions_by_name[action.objectName()] = action
-        self.tool_group = QActionGroup(self)
-        self.tool_actions: dict[Tool, QAction] = {}
-        for tool in Tool:
-            action = QAction(tool_icon(tool), "", self)
-            action.setObjectName(f"tool_{tool.value}")
-            action.setCheckable(True)
-            action.triggered.connect(lambda _c=False, t=tool: self.set_tool(t))
-            self.tool_group.addAction(action)
-            self.tool_actions[tool] = action
-            self.actions_by_name[action.objectName()] = action
-
-    def _menu(self, name: str, text: Callable[[], str], names: list[str | None]) -> QMenu:
-        menu = self.menuBar().addMenu("")
-        menu.setObjectName(name)
-        self._texts.append((menu, text))
-        for item in names:
-            if item is None:
-                menu.addSeparator()
-            else:
-                menu.addAction(self.actions_by_name[item])
-        return menu
-
-    def _make_menus(self) -> None:
-        file_menu = self._menu(
-            "menu_file", lambda: translate("MainWindow", "&File"), ["action_new", "action_open"]
-        )
-        self.recent_menu = QMenu(file_menu)
-        self.recent_menu.setObjectName("menu_recent")
-        self._texts.append((self.recent_menu, lambda: translate("MainWindow", "Recent files")))
-        file_menu.addMenu(self.recent_menu)
-        for item in (
-            "action_save",
-            "action_save_as",
-            None,
-            "action_import_mod",
-            "action_export_mod",
-            None,
-            "action_program_properties",
-            None,
-            "action_quit",
-        ):
-            if item is None:
-                file_menu.addSeparator()
-            else:
-                file_menu.addAction(self.actions_by_name[item])
-        self._menu(
-            "menu_edit",
-            lambda: translate("MainWindow", "&Edit"),
-            [
-                "action_undo",
-                "action_redo",
-                None,
-                "action_cut",
-                "action_copy",
-                "action_paste",
-                "action_delete",
-                None,
-                "action_edit_element",
-                "action_invert",
-                "action_or",
-                "action_insert_row_before",
-                "action_insert_row_after",
-                "action_delete_network",
-            ],
-        )
-        view = self._menu(
-            "menu_view",
-            lambda: translate("MainWindow", "&View"),
-            [
-                "action_zoom_in",
-                "action_zoom_out",
-                "action_zoom_reset",
-                None,
-                "action_show_ladder",
-                "action_show_text",
-                None,
-            ],
-        )
-        for dock, name in (
-            (self.tool_palette, "action_dock_palette"),
-            (self.errors, "action_dock_errors"),
-            (self.signals_dock, "action_dock_signals"),
-        ):
-            toggle = dock.toggleViewAction()
-            toggle.setObjectName(name)
-            self.actions_by_name[name] = toggle
-            view.addAction(toggle)
-        self._menu(
-            "menu_plc", lambda: translate("MainWindow", "&PLC"), ["action_check", "action_compile"]
-        )
-        tools = self._menu(
-            "menu_tools",
-            lambda: translate("MainWindow", "&Tools"),
-            [f"tool_{tool.value}" for tool in Tool],
-        )
-        tools.addSeparator()
-        self._menu(
-            "menu_language",
-            lambda: translate("MainWindow", "&Language"),
-            ["action_language_en", "action_language_tr"],
-        )
-        self._menu(
-            "menu_help",
-            lambda: translate("MainWindow", "&Help"),
-            ["action_instruction_help", "action_about"],
-        )
-        toolbar = QToolBar(self)
-        toolbar.setObjectName("toolbar_main")
-        self._texts.append((toolbar, lambda: translate("MainWindow", "Main toolbar")))
-        for item in (
-            "action_new",
-            "action_open",
-            "action_save",
-            None,
-            "action_undo",
-            "action_redo",
-            None,
-            "action_zoom_in",
-            "action_zoom_out",
-            None,
-            "action_compile",
-        ):
-            if item is None:
-                toolbar.addSeparator()
-            else:
-                toolbar.addAction(self.actions_by_name[item])
-        style = self.style()
-        sp = style.StandardPixmap
-        for name, pixmap in (
-            ("action_new", sp.SP_FileIcon),
-            ("action_open", sp.SP_DialogOpenButton),
-            ("action_save", sp.SP_DialogSaveButton),
-            ("action_undo", sp.SP_ArrowBack),
-            ("action_redo", sp.SP_ArrowForward),
-        ):
-            self.actions_by_name[name].setIcon(style.standardIcon(pixmap))
-        self.actions_by_name["action_zoom_in"].setIcon(icon("zoom_in"))
-        self.actions_by_name["action_zoom_out"].setIcon(icon("zoom_out"))
-        toolbar_toggle = toolbar.toggleViewAction()
-        toolbar_toggle.setObjectName("action_toolbar_main")
-        self.actions_by_name["action_toolbar_main"] = toolbar_toggle
-        view.addAction(toolbar_toggle)
-        self.addToolBar(Qt.ToolBarArea.TopToolBarArea, toolbar)
-        self._update_recent_menu()
+    def _make_docks(self) -> None:
+        """The editing docks: tools and signals tabbed on the left, the errors below."""
+        self.tool_palette = ToolPalette(list(self.tool_actions.values()), self)
+        self.tool_palette.function_chosen.connect(self._on_function_chosen)
+        self.signals_dock = SignalListDock(self)
+        self.signals_dock.address_chosen.connect(self.use_signal)
+        self.errors = ErrorListDock(self)
+        self.errors.activated.connect(self.go_to_diagnostic)
+        left = Qt.DockWidgetArea.LeftDockWidgetArea
+        self.menus.add_dock(self.tool_palette, "action_dock_palette", left, separator=True)
+        self.menus.add_dock(self.errors, "action_dock_errors",
+                            Qt.DockWidgetArea.BottomDockWidgetArea)
+        self.menus.add_dock(self.signals_dock, "action_dock_signals", left)
+        self.tabifyDockWidget(self.tool_palette, self.signals_dock)
+        self.tool_palette.raise_()
 
     def _make_status_bar(self) -> None:
         self.cell_label = QLabel(self)
@@ -425,29 +150,14 @@ class MainWindow(FileActions, QMainWindow):
     # -- language ------------------------------------------------------------------------
 
     def retranslate(self) -> None:
-        """Set every text in the current UI language."""
-        for widget, text in self._texts:
-            if isinstance(widget, QAction):
-                widget.setText(text())
-            elif isinstance(widget, QMenu):
-                widget.setTitle(text())
-            else:
-                widget.setWindowTitle(text())
-        for tool, action in self.tool_actions.items():
-            action.setText(tool_name(tool))
-            action.setToolTip(tool_help(tool))
-            action.setStatusTip(tool_help(tool))
+        """Set every text in the current UI language (the docks set their own)."""
+        self.menus.retranslate()
+        self.plc_docks.retranslate()
         for code in ("en", "tr"):
             self.actions_by_name[f"action_language_{code}"].setChecked(
                 self.language.current == code
             )
         self._update_title()
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)
 
     def set_language(self, code: str) -> None:
         """Switch the UI language live and remember it."""
@@ -455,7 +165,6 @@ class MainWindow(FileActions, QMainWindow):
         self.settings.set_language(applied)
         # deliver the LanguageChange events now, so every widget is retranslated on return
         QCoreApplication.sendPostedEvents(None, QEvent.Type.LanguageChange)
-        self.retranslate()
         self.language_changed.emit(applied)
 
     # -- tools ---------------------------------------------------------------------------
@@ -501,9 +210,7 @@ class MainWindow(FileActions, QMainWindow):
         """A program is now shown: its symbols and messages go to the docks."""
         self.program_info = program
         self.signals_dock.set_symbols(program.symbols)
-        session = getattr(getattr(self, "plc_docks", None), "session", None)
-        if session is not None:
-            session.set_symbols(program.symbols)
+        self.plc_docks.session.set_symbols(program.symbols)
         self.program_opened.emit(program)
 
     def show_program_properties(self) -> QDialog:
@@ -536,7 +243,8 @@ class MainWindow(FileActions, QMainWindow):
         if index < len(files) and self.maybe_save():
             self.load(files[index])
 
-    def _clear_recent(self) -> None:
+    def clear_recent(self) -> None:
+        """File › Recent files › Clear the list."""
         self.settings.clear_recent_files()
         self._update_recent_menu()
 

@@ -28,6 +28,7 @@ from ladderworks.gui.editor.geometry import CELL_H, Layout, cell_origin
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.symbol_text import name_and_text
 
 translate = QCoreApplication.translate
@@ -95,7 +96,7 @@ class DiagnosticView(QGraphicsView):
         return super().viewportEvent(event)
 
 
-class DiagnosticDock(QDockWidget):
+class DiagnosticDock(Retranslating, QDockWidget):
     """PLC TEŞHİS (PLC diagnostic): watch the ladder while the PLC runs; no editing."""
 
     why_requested = Signal(object)  # the Address in the search box (time travel answers)

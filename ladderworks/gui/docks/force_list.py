@@ -18,12 +18,13 @@ from ladderworks.core.il import print_instruction
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.plc.forcing import ForceEntry
 from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.symbol_text import labelled
 
 translate = QCoreApplication.translate
 
 
-class ForceListDock(QDockWidget):
+class ForceListDock(Retranslating, QDockWidget):
     """Forced bits and passive elements of the running program, each with a Release button."""
 
     def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:

@@ -25,6 +25,7 @@ from ladderworks.core.il import Program, decode, parse, print_program
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
 from ladderworks.gui.plc_session import PlcSession, PlcStatus
+from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
 
@@ -49,7 +50,7 @@ def network_end_lines(program: Program) -> list[int]:
     return ends
 
 
-class PlcControlDock(QDockWidget):
+class PlcControlDock(Retranslating, QDockWidget):
     """The PLC control screen: mnemonic program, compile, START / STOP, scan figures."""
 
     compile_progress = Signal(int)  # lines converted so far

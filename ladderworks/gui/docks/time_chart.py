@@ -11,7 +11,7 @@ import re
 from pathlib import Path
 
 import pyqtgraph as pg
-from PySide6.QtCore import QCoreApplication, QEvent, Qt
+from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtGui import QAction, QColor, QFontMetrics
 from PySide6.QtWidgets import (
     QDockWidget,
@@ -19,7 +19,6 @@ from PySide6.QtWidgets import (
     QHBoxLayout,
     QLabel,
     QLineEdit,
-    QMainWindow,
     QSpinBox,
     QToolBar,
     QVBoxLayout,
@@ -28,11 +27,12 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.address import AddressError
 from ladderworks.core.symbols import describe
+from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks import trace_files
-from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
 
@@ -43,7 +43,7 @@ _SPLIT = re.compile(r"[\s,;]+")
 _COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
 
 
-class TimeChartDock(QDockWidget):
+class TimeChartDock(Retranslating, QDockWidget):
     """Type the bits (or `ADDR:width` values) to watch, choose the sampling time, START."""
 
     def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:
@@ -110,7 +110,7 @@ class TimeChartDock(QDockWidget):
         layout.addWidget(self.message)
         self.plot = pg.PlotWidget(body, background="w")
         self.plot.setObjectName("timeChartPlot")
-        self.plot.setMinimumHeight(160)
+        self.plot.setMinimumHeight(100)  # a 1024×600 screen: the chart still fits with the docks
         self.plot.setMinimumWidth(380)  # room for the lane names and a readable time axis
         item = self.plot.getPlotItem()
         item.showGrid(x=True, y=False, alpha=0.25)
@@ -156,7 +156,7 @@ class TimeChartDock(QDockWidget):
             try:
                 signals.append(parse_traced(text, self.session.symbols))
             except AddressError as error:
-                self._say(address_error_text(error), error=True)
+                self._say(diagnostic_text(error.diagnostic), error=True)
                 return None
         return signals
 
@@ -407,17 +407,3 @@ class TimeChartDock(QDockWidget):
         self.plot.getPlotItem().setLabel("bottom", translate("TimeChart", "time (ms)"))
         trace_files.retranslate(self)
         self._show_cursor()
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)
-
-
-def install(window: QMainWindow, session: PlcSession) -> TimeChartDock:
-    """Add the time chart to the console (hidden; View → PLC time chart shows it)."""
-    dock = TimeChartDock(session, window)
-    add_dock(window, dock, "action_dock_time_chart")
-    dock.hide()
-    return dock
