@@ -98,6 +98,7 @@ class PlcControlDock(Retranslating, QDockWidget):
         self.indicator.setObjectName("plcRunIndicator")
         self.figures = QLabel(body)
         self.figures.setObjectName("plcScanFigures")
+        self.figures.setWordWrap(True)  # two lines rather than a dock wider than a small screen
         state.addWidget(self.indicator)
         state.addWidget(self.figures, 1)
         layout.addLayout(state)

@@ -61,17 +61,22 @@ def _tab(window: QMainWindow, docks: list[QDockWidget]) -> None:
 
 
 def _raise_when_shown(window: QMainWindow, dock: QDockWidget) -> None:
-    """Its toggle brings a tabbed dock to the front, not only back into its group; a bottom
-    dock then takes a third of the window's height when it had less (its minimum may be all
-    a 1024×600 screen gives, but a large screen has room for a readable chart)."""
+    """Its toggle brings a tabbed dock to the front, not only back into its group, and gives
+    it a fair share of the window: a bottom dock at least a third of the height (a large
+    screen has room for a readable chart), a right-hand dock at most 45 % of the width (the
+    ladder keeps the rest). A dock's minimum size still wins on a small screen."""
 
     def shown(checked: bool) -> None:
         if not checked:
             return
         dock.raise_()
+        area = window.dockWidgetArea(dock)
         third = window.height() // 3
-        if window.dockWidgetArea(dock) == BOTTOM and dock.height() < third:
+        widest = window.width() * 45 // 100
+        if area == BOTTOM and dock.height() < third:
             window.resizeDocks([dock], [third], Qt.Orientation.Vertical)
+        elif area == RIGHT and dock.width() > widest:
+            window.resizeDocks([dock], [widest], Qt.Orientation.Horizontal)
 
     dock.toggleViewAction().triggered.connect(shown)
 
