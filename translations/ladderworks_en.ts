@@ -905,114 +905,113 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="399"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="438"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="717"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="99"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="217"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="250"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="410"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="336"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="414"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="699"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="711"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="205"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="212"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="353"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="423"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="728"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="737"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="228"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="234"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="387"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="443"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="102"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="435"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="445"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="96"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="103"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="454"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="112"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="459"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="116"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="470"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="296"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="480"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="303"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="515"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="162"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="519"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="523"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="164"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="529"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="565"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="635"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="656"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="171"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="63"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="131"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="149"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="362"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="84"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="126"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="554"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="629"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="128"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="755"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="245"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="767"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="257"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="776"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="265"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="867"/>
+        <location filename="../ladderworks/gui/editor/view.py" line="361"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -1020,219 +1019,219 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <location filename="../ladderworks/gui/main_window.py" line="151"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="147"/>
+        <location filename="../ladderworks/gui/main_window.py" line="152"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="148"/>
+        <location filename="../ladderworks/gui/main_window.py" line="153"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="151"/>
+        <location filename="../ladderworks/gui/main_window.py" line="156"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="157"/>
+        <location filename="../ladderworks/gui/main_window.py" line="162"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/main_window.py" line="167"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="167"/>
+        <location filename="../ladderworks/gui/main_window.py" line="172"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="172"/>
+        <location filename="../ladderworks/gui/main_window.py" line="177"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;properties...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/main_window.py" line="185"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="185"/>
+        <location filename="../ladderworks/gui/main_window.py" line="190"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="186"/>
+        <location filename="../ladderworks/gui/main_window.py" line="191"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/main_window.py" line="192"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/main_window.py" line="193"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <location filename="../ladderworks/gui/main_window.py" line="194"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="192"/>
+        <location filename="../ladderworks/gui/main_window.py" line="197"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="197"/>
+        <location filename="../ladderworks/gui/main_window.py" line="202"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="204"/>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="211"/>
+        <location filename="../ladderworks/gui/main_window.py" line="216"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="218"/>
+        <location filename="../ladderworks/gui/main_window.py" line="223"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="223"/>
+        <location filename="../ladderworks/gui/main_window.py" line="228"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="225"/>
+        <location filename="../ladderworks/gui/main_window.py" line="230"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="226"/>
+        <location filename="../ladderworks/gui/main_window.py" line="231"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="229"/>
+        <location filename="../ladderworks/gui/main_window.py" line="234"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="235"/>
+        <location filename="../ladderworks/gui/main_window.py" line="240"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <location filename="../ladderworks/gui/main_window.py" line="246"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/main_window.py" line="250"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="248"/>
+        <location filename="../ladderworks/gui/main_window.py" line="253"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="257"/>
+        <location filename="../ladderworks/gui/main_window.py" line="262"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="261"/>
+        <location filename="../ladderworks/gui/main_window.py" line="266"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="298"/>
+        <location filename="../ladderworks/gui/main_window.py" line="304"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="302"/>
+        <location filename="../ladderworks/gui/main_window.py" line="308"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="321"/>
+        <location filename="../ladderworks/gui/main_window.py" line="327"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="341"/>
+        <location filename="../ladderworks/gui/main_window.py" line="347"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="362"/>
+        <location filename="../ladderworks/gui/main_window.py" line="368"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="366"/>
+        <location filename="../ladderworks/gui/main_window.py" line="372"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="372"/>
+        <location filename="../ladderworks/gui/main_window.py" line="378"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="377"/>
+        <location filename="../ladderworks/gui/main_window.py" line="383"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="382"/>
+        <location filename="../ladderworks/gui/main_window.py" line="388"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="622"/>
+        <location filename="../ladderworks/gui/main_window.py" line="631"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="628"/>
+        <location filename="../ladderworks/gui/main_window.py" line="637"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="633"/>
+        <location filename="../ladderworks/gui/main_window.py" line="642"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="486"/>
-        <location filename="../ladderworks/gui/main_window.py" line="629"/>
+        <location filename="../ladderworks/gui/main_window.py" line="492"/>
+        <location filename="../ladderworks/gui/main_window.py" line="638"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -1371,32 +1370,32 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="587"/>
+        <location filename="../ladderworks/gui/main_window.py" line="596"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="606"/>
+        <location filename="../ladderworks/gui/main_window.py" line="615"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="652"/>
+        <location filename="../ladderworks/gui/main_window.py" line="659"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="655"/>
+        <location filename="../ladderworks/gui/main_window.py" line="662"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="687"/>
+        <location filename="../ladderworks/gui/main_window.py" line="694"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="688"/>
+        <location filename="../ladderworks/gui/main_window.py" line="695"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2752,152 +2751,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="96"/>
         <source>Select</source>
         <translation>Select</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="156"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="171"/>
         <source>NOT input</source>
         <translation>NOT input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="185"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="199"/>
         <source>NOT output</source>
         <translation>NOT output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="213"/>
         <source>SET coil</source>
         <translation>SET coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="228"/>
         <source>RST coil</source>
         <translation>RST coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="93"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="243"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="94"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="259"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="95"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="283"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="96"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="322"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="97"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="346"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="362"/>
         <source>Function</source>
         <translation>Function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="99"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="380"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="397"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="97"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Click an element or drag over cells to select; right-click: cut, copy, paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="157"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="172"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="186"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="200"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="214"/>
         <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
         <translation>Click a cell to place a SET coil (bit := 1 while the logic is 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="120"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="229"/>
         <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
         <translation>Click a cell to place an RST coil (bit := 0 while the logic is 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="122"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="244"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Click a contact or coil to turn it into its inverse</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="124"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="260"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="126"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="284"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="128"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="323"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Click the start of an empty row, type the comment, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="347"/>
         <source>Click an element to delete it</source>
         <translation>Click an element to delete it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="131"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="363"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Choose a function in the list, click the diagram, fill its table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="133"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="381"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Click a cell to insert an empty row before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="398"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Click a cell to insert an empty row after it</translation>
     </message>
