@@ -43,7 +43,7 @@ class LadderModel(QObject):
     def __init__(self, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.undo_stack = QUndoStack(self)
-        self.undo_stack.cleanChanged.connect(lambda clean: self.modified_changed.emit(not clean))
+        self.undo_stack.cleanChanged.connect(self._clean_changed)
         self.document = LadderDocument()
         self.symbols: SymbolTable | None = None  # the program's `%@2` symbols
         self.networks: list[LadderNetwork] = [LadderNetwork()]
@@ -139,6 +139,9 @@ class LadderModel(QObject):
     def is_modified(self) -> bool:
         """True when the drawing differs from what was last read or saved."""
         return not self.undo_stack.isClean()
+
+    def _clean_changed(self, clean: bool) -> None:
+        self.modified_changed.emit(not clean)
 
     def mark_modified(self) -> None:
         """Make the document count as changed (e.g. after text edits shown as ladder)."""

@@ -20,16 +20,9 @@ from PySide6.QtWidgets import QGraphicsRectItem, QGraphicsScene, QGraphicsView, 
 
 from ladderworks.core.address import AddressError
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.il import Instruction, Program, print_instruction
-from ladderworks.core.ladder import (
-    Coil,
-    Contact,
-    FunctionBox,
-    LadderDocument,
-    LadderNetwork,
-    Selection,
-)
-from ladderworks.core.symbols import SymbolTable, resolve
+from ladderworks.core.il import Program
+from ladderworks.core.ladder import LadderNetwork, Selection
+from ladderworks.core.symbols import resolve
 from ladderworks.gui.editor.editing import CursorEdits
 from ladderworks.gui.editor.geometry import (
     CELL_H,
@@ -50,7 +43,7 @@ from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.function_dialog import FunctionDialog
-from ladderworks.gui.symbol_text import name_and_text, tooltip
+from ladderworks.gui.symbol_text import cell_status, element_tooltip, name_and_text
 from ladderworks.gui.tools import Tool
 
 ZOOM_STEP = 1.2
@@ -123,16 +116,6 @@ class LadderEditor(CursorEdits, QGraphicsView):
     def undo_stack(self) -> QUndoStack:
         """The model's undo stack."""
         return self.model.undo_stack
-
-    @property
-    def document(self) -> LadderDocument:
-        """The model's document (header, trailer, origin)."""
-        return self.model.document
-
-    @property
-    def symbols(self) -> SymbolTable | None:
-        """The program's `%@2` symbols."""
-        return self.model.symbols
 
     @property
     def loading(self) -> bool:
@@ -217,12 +200,12 @@ class LadderEditor(CursorEdits, QGraphicsView):
 
     def describe_address(self, address: object) -> tuple[str, str] | None:
         """(symbol, comment) of the program, else (signal name, description) of the manual."""
-        return name_and_text(address, self.symbols)
+        return name_and_text(address, self.model.symbols)
 
     def resolve_address(self, text: str) -> str:
         """The address a typed text names: itself, or the address of a program symbol."""
         try:
-            return str(resolve(text, self.symbols))
+            return str(resolve(text, self.model.symbols))
         except AddressError:
             return text
 
@@ -345,36 +328,11 @@ class LadderEditor(CursorEdits, QGraphicsView):
 
     def tooltip_at(self, index: int, row: int, col: int) -> str:
         """Tooltip of a cell's contact or coil: address, symbol, its comments; else ""."""
-        found = self.networks[index].element_at(row, col)
-        if found is None or not isinstance(found[1], Contact | Coil) or found[1].address is None:
-            return ""
-        element = found[1]
-        address = element.address
-        if address is None:
-            return ""
-        text = tooltip(address, self.symbols)
-        return text + (f"\n// {element.comment}" if element.comment else "")
+        return element_tooltip(self.networks[index], row, col, self.model.symbols)
 
     def describe_cell(self, index: int, row: int, col: int) -> str:
         """Status-bar text: the cell, and the address with its signal name and comment."""
-        parts = [
-            translate("LadderEditor", "N{0} row {1} col {2}").format(index + 1, row + 1, col + 1)
-        ]
-        if self.networks[index].label:
-            parts.append(self.networks[index].label)
-        found = self.networks[index].element_at(row, col)
-        if found is not None:
-            element = found[1]
-            if isinstance(element, Contact | Coil) and element.address is not None:
-                parts.append(str(element.address))
-                described = self.describe_address(element.address)
-                if described is not None:
-                    parts.append(" — ".join(text for text in described if text))
-                if element.comment:
-                    parts.append(element.comment)
-            elif isinstance(element, FunctionBox):
-                parts.append(print_instruction(Instruction(element.name, params=element.params)))
-        return "  |  ".join(parts)
+        return cell_status(self.networks[index], index, row, col, self.model.symbols)
 
     # -- zoom ---------------------------------------------------------------------------------
 
