@@ -56,7 +56,7 @@ def test_escape_forgets_the_lines_first_point_and_picks_select(drawer: Drawer,
     drawer.click_node(0, 0, 0)
     line = window.editor.interaction
     assert isinstance(line, LineInteraction) and line.start == (0, 0, 0)
-    marker = line._marker
+    marker = line.marker
     assert marker.isVisible() and marker.scene() is window.editor.scene()
     drawer.key(Qt.Key.Key_Escape)
     assert line.start is None and window.current_tool() is Tool.SELECT

@@ -274,12 +274,12 @@ class LineInteraction(Interaction):
     def __init__(self, editor: LadderEditor) -> None:
         super().__init__(editor)
         self.start: tuple[int, int, int] | None = None  # network, row, node
-        self._marker = QGraphicsRectItem()
-        self._marker.setPen(QPen(QColor("#2e7d32"), 2))
-        self._marker.setBrush(QBrush(QColor("#2e7d32")))
-        self._marker.setZValue(11)
-        self._marker.hide()
-        editor.scene().addItem(self._marker)
+        self.marker = QGraphicsRectItem()
+        self.marker.setPen(QPen(QColor("#2e7d32"), 2))
+        self.marker.setBrush(QBrush(QColor("#2e7d32")))
+        self.marker.setZValue(11)
+        self.marker.hide()
+        editor.scene().addItem(self.marker)
     title = QT_TRANSLATE_NOOP("Tool", "Line")
     hint = QT_TRANSLATE_NOOP(
         "Tool", "Click a first point, then a second point: a horizontal or vertical wire")
@@ -291,8 +291,8 @@ class LineInteraction(Interaction):
             self.start = (index, row, node)
             x, y = node_point(self.editor.networks[index], row, node)
             top = self.editor.layout_.tops[index]
-            self._marker.setRect(QRectF(x - 4, top + y - 4, 8, 8))
-            self._marker.show()
+            self.marker.setRect(QRectF(x - 4, top + y - 4, 8, 8))
+            self.marker.show()
             self.editor.message.emit(translate("LadderEditor", "Line: click the second point"))
             return
         _, row1, node1 = self.start
@@ -305,12 +305,12 @@ class LineInteraction(Interaction):
     def cancel(self) -> None:
         """Forget the first point."""
         self.start = None
-        self._marker.hide()
+        self.marker.hide()
 
     def end(self) -> None:
         """The marker leaves the scene."""
         self.cancel()
-        self.editor.scene().removeItem(self._marker)
+        self.editor.scene().removeItem(self.marker)
 
 
 class CommentInteraction(Interaction):
