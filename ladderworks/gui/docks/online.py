@@ -44,7 +44,7 @@ class OnlineMode(QObject):
         self.actions["action_plc_release"].triggered.connect(lambda: self.release_selected())
         editor.context_actions.append(None)
         editor.context_actions.extend(self.actions[n] for n in ACTION_NAMES[1:])
-        editor.undo_stack.indexChanged.connect(self._edited)
+        editor.model.undo_stack.indexChanged.connect(self._edited)
         self.past: PlcSnapshot | None = None  # time travel: an earlier scan shown instead
         session.snapshot_ready.connect(self._on_snapshot)
         session.program_loaded.connect(self._on_program)
