@@ -35,7 +35,7 @@ from ladderworks.gui.parameter_document import ParameterDocument
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.signal_list import SignalListDock
 from ladderworks.gui.text_view import ProgramTextView
-from ladderworks.gui.tools import Tool, icon, tool_help, tool_icon, tool_name
+from ladderworks.gui.tools import TOOL_KEYS, Tool, icon, tool_help, tool_icon, tool_name
 from ladderworks.gui.translation import UiLanguage
 
 translate = QCoreApplication.translate
@@ -180,7 +180,10 @@ class MainWindow(FileActions, QMainWindow):
         self._texts.append((undo, lambda: translate("MainWindow", "&Undo")))
         redo = ed.undo_stack.createRedoAction(self)
         redo.setObjectName("action_redo")
-        redo.setShortcut(QKeySequence(key.Redo))
+        # Ctrl+Y everywhere (docs/ui.md), Ctrl+Shift+Z too, and the platform's own key
+        redo_keys = [QKeySequence("Ctrl+Y"), QKeySequence("Ctrl+Shift+Z")]
+        redo.setShortcuts(redo_keys + [k for k in QKeySequence.keyBindings(key.Redo)
+                                       if k not in redo_keys])
         self.actions_by_name["action_redo"] = redo
         self._texts.append((redo, lambda: translate("MainWindow", "&Redo")))
         a("action_cut", lambda: translate("MainWindow", "Cu&t"), ed.cut, key.Cut)
@@ -434,8 +437,10 @@ class MainWindow(FileActions, QMainWindow):
             else:
                 widget.setWindowTitle(text())
         for tool, action in self.tool_actions.items():
-            action.setText(tool_name(tool))
-            action.setToolTip(tool_help(tool))
+            # the key shows in the menu's shortcut column (it works while the grid has focus)
+            action.setText(f"{tool_name(tool)}\t{TOOL_KEYS[tool]}")
+            action.setIconText(tool_name(tool))
+            action.setToolTip(f"{tool_name(tool)} ({TOOL_KEYS[tool]}): {tool_help(tool)}")
             action.setStatusTip(tool_help(tool))
         for code in ("en", "tr"):
             self.actions_by_name[f"action_language_{code}"].setChecked(

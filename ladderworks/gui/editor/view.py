@@ -64,6 +64,7 @@ from ladderworks.gui.editor.geometry import (
     grid_top,
     node_point,
 )
+from ladderworks.gui.editor.keyboard import GridKeys
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
@@ -160,6 +161,7 @@ class LadderEditor(QGraphicsView):
         )
         self.inline_message.hide()
         self._inline_target: tuple[str, int, int, int] | None = None  # kind, network, row, col
+        self.keys = GridKeys(self)  # Home/End, PageUp/PageDown, the menu key
 
     # -- the document ------------------------------------------------------------------------
 
@@ -582,9 +584,10 @@ class LadderEditor(QGraphicsView):
 
     def _close_inline(self) -> None:
         self._inline_target = None
+        had_focus = self.inline_editor.hasFocus()  # hiding it moves the focus on: ask first
         self.inline_editor.hide()
         self.inline_message.hide()
-        if self.inline_editor.hasFocus():
+        if had_focus:
             self.setFocus()
 
     def _refuse_inline(self, diagnostic: Diagnostic) -> None:
@@ -900,6 +903,10 @@ class LadderEditor(QGraphicsView):
         """The current zoom factor."""
         return self._zoom
 
+    def set_zoom(self, factor: float) -> None:
+        """Zoom to `factor` (clamped to the zoom range)."""
+        self._set_zoom(factor)
+
     def _set_zoom(self, factor: float) -> None:
         self._zoom = min(max(factor, ZOOM_MIN), ZOOM_MAX)
         self.resetTransform()
@@ -992,7 +999,10 @@ class LadderEditor(QGraphicsView):
                 menu.addSeparator()
             else:
                 menu.addAction(action)
-        menu.exec(event.globalPos())
+        where = event.globalPos()
+        if event.reason() == QContextMenuEvent.Reason.Keyboard:  # Shift+F10, the menu key
+            where = self.viewport().mapToGlobal(self.cell_point(*self.cursor_cell))
+        menu.exec(where)
 
     def keyPressEvent(self, event: QKeyEvent) -> None:
         """Arrows move, letters pick tools, ENTER edits, SPACE uses the tool, DEL deletes."""
@@ -1014,6 +1024,8 @@ class LadderEditor(QGraphicsView):
             return
         if key not in (Qt.Key.Key_Shift, Qt.Key.Key_Control, Qt.Key.Key_Alt, Qt.Key.Key_Meta):
             self._shift_anchor = None  # any other key ends a Shift+arrows selection
+        if self.keys.handle(event):
+            return
         if key in moves:
             drow, dcol = moves[Qt.Key(key)]
             row += drow
