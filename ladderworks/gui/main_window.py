@@ -27,8 +27,10 @@ from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step, questions
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.editor.zoom import FitWidth
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
+from ladderworks.gui.find_replace import FindReplaceDialog
 from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.parameter_document import ParameterDocument
@@ -62,6 +64,7 @@ class MainWindow(FileActions, QMainWindow):
         self.setWindowIcon(icon("ladderworks"))
 
         self.editor = LadderEditor(self)
+        self.fit_width = FitWidth(self.editor)  # View › Fit width
         self.text_view = ProgramTextView(self)
         self.text_view.document().modificationChanged.connect(self._update_title)
         self.pages = QStackedWidget(self)
@@ -110,12 +113,16 @@ class MainWindow(FileActions, QMainWindow):
         self.resize(1200, 800)
         self._first_show = True
         self.help_window: InstructionHelp | None = None
+        self.find_dialog: FindReplaceDialog | None = None
         geometry, state = settings.window_state()
         if geometry is not None:
             self.restoreGeometry(geometry)
         if state is not None:
             self.restoreState(state)
         self.new_file()
+        zoom, fit_width = settings.zoom()
+        self.editor.set_zoom(zoom)
+        self.actions_by_name["action_zoom_fit_width"].setChecked(fit_width)
 
     # -- actions and menus ---------------------------------------------------------------
 
@@ -225,6 +232,10 @@ class MainWindow(FileActions, QMainWindow):
         )
         a("action_delete_network", lambda: translate("MainWindow", "Delete network"),
           ed.delete_network)
+        a("action_find", lambda: translate("MainWindow", "&Find..."),
+          lambda: self.show_find(replacing=False), key.Find)
+        a("action_replace", lambda: translate("MainWindow", "R&eplace..."),
+          lambda: self.show_find(replacing=True), "Ctrl+H")
         a("action_zoom_in", lambda: translate("MainWindow", "Zoom &in"), ed.zoom_in, key.ZoomIn)
         a("action_zoom_out", lambda: translate("MainWindow", "Zoom &out"), ed.zoom_out, key.ZoomOut)
         a(
@@ -233,6 +244,12 @@ class MainWindow(FileActions, QMainWindow):
             ed.zoom_reset,
             "Ctrl+0",
         )
+        fit = a("action_zoom_fit_width", lambda: translate("MainWindow", "Fit &width"), None,
+                "Ctrl+9", "zoom_fit_width")
+        fit.setCheckable(True)
+        fit.toggled.connect(self.fit_width.set_enabled)
+        for name in ("action_zoom_in", "action_zoom_out", "action_zoom_reset"):
+            self.actions_by_name[name].triggered.connect(lambda _c=False: fit.setChecked(False))
         a(
             "action_show_ladder",
             lambda: translate("MainWindow", "Show as &ladder"),
@@ -337,6 +354,9 @@ class MainWindow(FileActions, QMainWindow):
                 "action_insert_row_before",
                 "action_insert_row_after",
                 "action_delete_network",
+                None,
+                "action_find",
+                "action_replace",
             ],
         )
         view = self._menu(
@@ -346,6 +366,7 @@ class MainWindow(FileActions, QMainWindow):
                 "action_zoom_in",
                 "action_zoom_out",
                 "action_zoom_reset",
+                "action_zoom_fit_width",
                 None,
                 "action_show_ladder",
                 "action_show_text",
@@ -393,6 +414,7 @@ class MainWindow(FileActions, QMainWindow):
             None,
             "action_zoom_in",
             "action_zoom_out",
+            "action_zoom_fit_width",
             None,
             "action_compile",
         ):
@@ -649,6 +671,15 @@ class MainWindow(FileActions, QMainWindow):
             return
         self.editor.go_to(diagnostic)
 
+    def show_find(self, replacing: bool = False) -> FindReplaceDialog | None:
+        """Edit › Find (Ctrl+F) / Replace (Ctrl+H): addresses and symbols in the ladder."""
+        if not self.show_as_ladder():
+            return None
+        if self.find_dialog is None:
+            self.find_dialog = FindReplaceDialog(self.editor, self)
+        self.find_dialog.start(replacing)
+        return self.find_dialog
+
     # -- help and closing ----------------------------------------------------------------
 
     def use_signal(self, address: Address) -> None:
@@ -713,6 +744,7 @@ class MainWindow(FileActions, QMainWindow):
             event.ignore()
             return
         self.settings.set_window_state(self.saveGeometry(), self.saveState())
+        self.settings.set_zoom(self.editor.zoom(), self.fit_width.enabled)
         self.autosaver.timer.stop()
         self.recovery.close()  # saved or discarded: the recovery copy goes
         if self.help_window is not None:

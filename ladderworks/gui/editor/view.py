@@ -303,6 +303,19 @@ class LadderEditor(QGraphicsView):
         self._renumber(index)
         self.drawing_changed.emit()
 
+    def networks_changed(self, indices: list[int]) -> None:
+        """Commands changed several networks at once (replace all): repaint, restack once."""
+        if not indices:
+            return
+        changed = set(indices)
+        for index, item in self.network_items.made(min(changed)):
+            if index in changed:
+                item.error_cells = set()
+                item.refresh()
+        self._relayout(min(changed))
+        self._renumber(min(changed))
+        self.drawing_changed.emit()
+
     def insert_network(self, index: int, network: LadderNetwork) -> None:
         """Insert a network (used by undo commands)."""
         self.networks.insert(index, network)
