@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
 from ladderworks.core.address import Address, AddressError
@@ -68,31 +68,44 @@ def _box_params(params: tuple[ParamValue, ...]) -> list[tuple[int, Address]]:
 def find(networks: Sequence[LadderNetwork], query: Query,
          symbols: SymbolTable | None = None) -> list[Found]:
     """Every use of a matching address, network by network, top to bottom, left to right."""
+    memo: dict[Address, bool] = {}  # an address is judged once (words: its symbol folded)
+
+    def matches(address: Address) -> bool:
+        known = memo.get(address)
+        if known is None:
+            known = memo[address] = query.matches(address, symbols)
+        return known
+
     found: list[Found] = []
     for index, network in enumerate(networks):
         if network.listing is not None:
             for number, instruction in enumerate(network.listing):
-                found += _in_instruction(index, number, instruction, query, symbols)
+                found += _in_instruction(index, number, instruction, matches)
             continue
-        for cell, element in sorted(network.cells.items()):
-            if isinstance(element, Contact | Coil):
-                if element.address is not None and query.matches(element.address, symbols):
-                    found.append(Found(index, cell, element.address))
-            elif isinstance(element, FunctionBox):
-                found += [Found(index, cell, address, k)
-                          for k, address in _box_params(element.params)
-                          if query.matches(address, symbols)]
+        here: list[Found] = []
+        for cell, element in network.cells.items():  # wires are most cells: type() is quick
+            kind = type(element)
+            if kind is Contact or kind is Coil:
+                address = element.address  # type: ignore[union-attr]
+                if address is not None and matches(address):
+                    here.append(Found(index, cell, address))
+            elif kind is FunctionBox:
+                here += [Found(index, cell, address, k)
+                         for k, address in _box_params(element.params)  # type: ignore[union-attr]
+                         if matches(address)]
+        if len(here) > 1:
+            here.sort(key=lambda hit: (hit.cell, hit.slot))
+        found += here
     return found
 
 
-def _in_instruction(index: int, number: int, instruction: Instruction, query: Query,
-                    symbols: SymbolTable | None) -> list[Found]:
+def _in_instruction(index: int, number: int, instruction: Instruction,
+                    matches: Callable[[Address], bool]) -> list[Found]:
     found = []
-    if instruction.operand is not None and query.matches(instruction.operand, symbols):
+    if instruction.operand is not None and matches(instruction.operand):
         found.append(Found(index, None, instruction.operand, OPERAND, number))
     found += [Found(index, None, address, k, number)
-              for k, address in _box_params(instruction.params)
-              if query.matches(address, symbols)]
+              for k, address in _box_params(instruction.params) if matches(address)]
     return found
 
 
