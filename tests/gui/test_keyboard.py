@@ -200,6 +200,10 @@ def test_tab_leaves_the_signal_table(window: MainWindow, qtbot: QtBot) -> None:
         visited.add(widget.objectName())
         qtbot.keyClick(widget, Qt.Key.Key_Tab)
     assert QApplication.focusWidget() is window.editor, visited
+    window.tool_palette.raise_()
+    qtbot.waitUntil(window.tool_palette.functions.isVisible)
+    qtbot.keyClick(window.editor, Qt.Key.Key_Tab)  # no fifteen tool-button stops first
+    assert QApplication.focusWidget() is window.tool_palette.functions
 
 
 def test_tool_keys_are_shown_in_the_menu_and_tooltips(window: MainWindow) -> None:
