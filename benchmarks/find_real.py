@@ -81,6 +81,10 @@ def main() -> int:
         app.processEvents()
         print(f"Find next (window, R100):         {_ms(began):7.1f} ms  {dialog.message.text()}")
         began = time.perf_counter()
+        dialog.find_next()
+        app.processEvents()
+        print(f"Find next again (hits kept):      {_ms(began):7.1f} ms  {dialog.message.text()}")
+        began = time.perf_counter()
         count = dialog.replace_all()
         app.processEvents()
         print(f"Replace all R100 -> R7900:        {_ms(began):7.1f} ms  {count} places, "

@@ -91,6 +91,11 @@ class FindReplaceDialog(QDialog):
         layout.addWidget(self.message)
         layout.addWidget(self.buttons)
         self.find_text.textChanged.connect(lambda _text: self.message.clear())
+        # the hits of the last search, kept while the drawing is unchanged (a real program
+        # has 140,000 cells: Find next again is then immediate)
+        self._generation = 0
+        editor.undo_stack.indexChanged.connect(self._drawing_changed)
+        self._cache: tuple[object, int, str, list[Found]] | None = None
         self.retranslate()
 
     def _button(self, name: str, slot: object) -> QPushButton:
@@ -135,7 +140,17 @@ class FindReplaceDialog(QDialog):
         if query is None:
             return []
         self.editor.finish_loading()
-        return find(self.editor.networks, query, self.editor.symbols)
+        networks = self.editor.networks  # a new list for each program shown
+        cache = self._cache
+        if (cache is not None and cache[0] is networks and cache[1] == self._generation
+                and cache[2] == self.find_text.text()):
+            return cache[3]
+        hits = find(networks, query, self.editor.symbols)
+        self._cache = (networks, self._generation, self.find_text.text(), hits)
+        return hits
+
+    def _drawing_changed(self, _index: int) -> None:
+        self._generation += 1
 
     def find_next(self) -> Found | None:
         """Move the editor's cursor to the next hit after it (wrapping round); None if none."""

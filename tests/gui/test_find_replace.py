@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import difflib
+from pathlib import Path
+
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QApplication
 from pytestqt.qtbot import QtBot
@@ -11,6 +14,7 @@ from ladderworks.gui.find_replace import FindReplaceDialog
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.paths import EXAMPLES
 from tests.gui.conftest import type_text
+from tests.real_programs import real_bytes
 
 CTRL = Qt.KeyboardModifier.ControlModifier
 
@@ -67,13 +71,37 @@ def test_replace_all_is_one_ctrl_z(window: MainWindow, qtbot: QtBot) -> None:
     texts = [str(p) for net in window.editor.networks for e in net.cells.values()
              for p in getattr(e, "params", ())]
     assert "R118" in texts and "R18" not in texts
+    assert dialog.find_next() is None  # the hits are looked for again after an edit
     window.activateWindow()
     window.editor.setFocus()
     qtbot.waitUntil(window.editor.hasFocus)
     qtbot.keyClick(window.editor, "z", CTRL)
     assert window.editor.networks == before
+    assert dialog.find_next() is not None
     qtbot.keyClick(window.editor, "y", CTRL)
     assert window.editor.networks != before
+
+
+def test_replace_all_in_a_real_program_rewrites_only_those_networks(
+        window: MainWindow, qtbot: QtBot, tmp_path: Path) -> None:
+    source = tmp_path / "estop.txt"
+    source.write_bytes(real_bytes("FANUC_X22_FRAG_fc62199_EMERGENCY_STOP"))
+    window.load(source)
+    dialog = _dialog(window, qtbot, "h")
+    dialog.find_text.setText("R5584.2")
+    dialog.replace_text.setText("R5590.2")
+    assert dialog.replace_all() == 2
+    assert window.save()
+    old = real_bytes("FANUC_X22_FRAG_fc62199_EMERGENCY_STOP").decode().splitlines()
+    new = source.read_bytes().decode().splitlines()
+    changed = [line for line in difflib.unified_diff(old, new, lineterm="", n=0)
+               if line[:1] in "+-" and not line.startswith(("+++", "---"))]
+    assert sum("R5590.2" in line for line in changed if line.startswith("+")) == 2
+    assert not any("R5584.2" in line for line in new)
+    labels = [i for i, line in enumerate(old) if line.startswith("N0000")]
+    touched = {max(k for k in labels if k <= i) for i, line in enumerate(old)
+               if line not in new}
+    assert {old[k] for k in touched} <= {"N00001:", "N00002:"}
 
 
 def test_replace_one_replaces_the_hit_at_the_cursor(window: MainWindow, qtbot: QtBot) -> None:
