@@ -67,6 +67,7 @@ def test_a_network_is_built_from_an_empty_file_with_the_keyboard_alone(
     assert net.cells[(0, 0)] == Contact(parse_address("X1.0"))
     assert net.cells[(0, net.columns)] == Coil(parse_address("Y1.0"))
     assert not window.is_modified()
+    assert not [d for d in window.check() if d.is_error]  # wired: it checks without errors
 
 
 def test_focus_stays_in_the_grid_after_an_address(window: MainWindow, qtbot: QtBot) -> None:
