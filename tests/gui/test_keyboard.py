@@ -212,3 +212,21 @@ def test_tool_keys_are_shown_in_the_menu_and_tooltips(window: MainWindow) -> Non
     assert action.text() == "Output\tO"
     assert action.toolTip().startswith("Output (O): ")
     assert window.tool_palette.buttons[list(Tool).index(Tool.OUTPUT)].text() == "Output"
+
+
+def test_ctrl_end_reaches_the_end_of_a_program_still_loading(window: MainWindow, qtbot: QtBot,
+                                                             tmp_path: Path) -> None:
+    from benchmarks.large_program import large_program_text
+
+    source = tmp_path / "large.LAD"
+    source.write_text(large_program_text(1200))
+    window.load(source)
+    view = window.editor
+    assert view.loading  # the rest is laid out in the background
+    _focused_grid(window, qtbot)
+    qtbot.keyClick(view, Qt.Key.Key_End, CTRL)
+    assert not view.loading
+    assert view.cursor_cell == (1200, 0, 0)  # the empty network after the 1,200
+    assert view.networks[1200].is_empty()
+    qtbot.keyClick(view, Qt.Key.Key_PageUp)
+    assert view.cursor_cell[0] < 1200

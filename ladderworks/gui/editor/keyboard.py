@@ -46,7 +46,8 @@ class GridKeys:
             return (0, 0, 0) if ctrl else (index, row, 0)
         if key == Qt.Key.Key_End:
             if ctrl:
-                return len(networks) - 1, 0, 0  # the empty network at the end: draw the next
+                editor.finish_loading()  # a large program: the end is after every network
+                return len(editor.networks) - 1, 0, 0  # the empty network: draw the next
             return index, row, networks[index].columns  # the coil column
         if key in (Qt.Key.Key_PageUp, Qt.Key.Key_PageDown):
             return self._page(index, row, col, key == Qt.Key.Key_PageDown)
