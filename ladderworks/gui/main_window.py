@@ -29,8 +29,10 @@ from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.editor.interactions import BY_TOOL, INTERACTIONS
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.editor.zoom import FitWidth
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
+from ladderworks.gui.find_replace import FindReplaceDialog
 from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.parameter_document import ParameterDocument
@@ -65,6 +67,7 @@ class MainWindow(FileActions, QMainWindow):
 
         self.model = LadderModel(self)  # the networks, the undo stack, ladder or text
         self.editor = LadderEditor(self.model, self)
+        self.fit_width = FitWidth(self.editor)  # View › Fit width
         self.text_view = ProgramTextView(self)
         self.text_view.document().modificationChanged.connect(self._update_title)
         self.pages = QStackedWidget(self)
@@ -115,12 +118,16 @@ class MainWindow(FileActions, QMainWindow):
         self.resize(1200, 800)
         self._first_show = True
         self.help_window: InstructionHelp | None = None
+        self.find_dialog: FindReplaceDialog | None = None
         geometry, state = settings.window_state()
         if geometry is not None:
             self.restoreGeometry(geometry)
         if state is not None:
             self.restoreState(state)
         self.new_file()
+        zoom, fit_width = settings.zoom()
+        self.editor.set_zoom(zoom)
+        self.actions_by_name["action_zoom_fit_width"].setChecked(fit_width)
 
     # -- actions and menus ---------------------------------------------------------------
 
@@ -185,7 +192,10 @@ class MainWindow(FileActions, QMainWindow):
         self._texts.append((undo, lambda: translate("MainWindow", "&Undo")))
         redo = self.model.undo_stack.createRedoAction(self)
         redo.setObjectName("action_redo")
-        redo.setShortcut(QKeySequence(key.Redo))
+        # Ctrl+Y everywhere (docs/ui.md), Ctrl+Shift+Z too, and the platform's own key
+        redo_keys = [QKeySequence("Ctrl+Y"), QKeySequence("Ctrl+Shift+Z")]
+        redo.setShortcuts(redo_keys + [k for k in QKeySequence.keyBindings(key.Redo)
+                                       if k not in redo_keys])
         self.actions_by_name["action_redo"] = redo
         self._texts.append((redo, lambda: translate("MainWindow", "&Redo")))
         a("action_cut", lambda: translate("MainWindow", "Cu&t"), ed.cut, key.Cut)
@@ -227,6 +237,10 @@ class MainWindow(FileActions, QMainWindow):
         )
         a("action_delete_network", lambda: translate("MainWindow", "Delete network"),
           ed.delete_network)
+        a("action_find", lambda: translate("MainWindow", "&Find..."),
+          lambda: self.show_find(replacing=False), key.Find)
+        a("action_replace", lambda: translate("MainWindow", "R&eplace..."),
+          lambda: self.show_find(replacing=True), "Ctrl+H")
         a("action_zoom_in", lambda: translate("MainWindow", "Zoom &in"), ed.zoom_in, key.ZoomIn)
         a("action_zoom_out", lambda: translate("MainWindow", "Zoom &out"), ed.zoom_out, key.ZoomOut)
         a(
@@ -235,6 +249,12 @@ class MainWindow(FileActions, QMainWindow):
             ed.zoom_reset,
             "Ctrl+0",
         )
+        fit = a("action_zoom_fit_width", lambda: translate("MainWindow", "Fit &width"), None,
+                "Ctrl+9", "zoom_fit_width")
+        fit.setCheckable(True)
+        fit.toggled.connect(self.fit_width.set_enabled)
+        for name in ("action_zoom_in", "action_zoom_out", "action_zoom_reset"):
+            self.actions_by_name[name].triggered.connect(lambda _c=False: fit.setChecked(False))
         a(
             "action_show_ladder",
             lambda: translate("MainWindow", "Show as &ladder"),
@@ -340,6 +360,9 @@ class MainWindow(FileActions, QMainWindow):
                 "action_insert_row_before",
                 "action_insert_row_after",
                 "action_delete_network",
+                None,
+                "action_find",
+                "action_replace",
             ],
         )
         view = self._menu(
@@ -349,6 +372,7 @@ class MainWindow(FileActions, QMainWindow):
                 "action_zoom_in",
                 "action_zoom_out",
                 "action_zoom_reset",
+                "action_zoom_fit_width",
                 None,
                 "action_show_ladder",
                 "action_show_text",
@@ -396,6 +420,7 @@ class MainWindow(FileActions, QMainWindow):
             None,
             "action_zoom_in",
             "action_zoom_out",
+            "action_zoom_fit_width",
             None,
             "action_compile",
         ):
@@ -440,9 +465,12 @@ class MainWindow(FileActions, QMainWindow):
             else:
                 widget.setWindowTitle(text())
         for tool, action in self.tool_actions.items():
-            action.setText(BY_TOOL[tool].name())
-            action.setToolTip(BY_TOOL[tool].help())
-            action.setStatusTip(BY_TOOL[tool].help())
+            # the key shows in the menu's shortcut column (it works while the grid has focus)
+            kind = BY_TOOL[tool]
+            action.setText(f"{kind.name()}\t{kind.key}")
+            action.setIconText(kind.name())
+            action.setToolTip(f"{kind.name()} ({kind.key}): {kind.help()}")
+            action.setStatusTip(kind.help())
         for code in ("en", "tr"):
             self.actions_by_name[f"action_language_{code}"].setChecked(
                 self.language.current == code
@@ -651,6 +679,15 @@ class MainWindow(FileActions, QMainWindow):
             return
         self.editor.go_to(diagnostic)
 
+    def show_find(self, replacing: bool = False) -> FindReplaceDialog | None:
+        """Edit › Find (Ctrl+F) / Replace (Ctrl+H): addresses and symbols in the ladder."""
+        if not self.show_as_ladder():
+            return None
+        if self.find_dialog is None:
+            self.find_dialog = FindReplaceDialog(self.editor, self)
+        self.find_dialog.start(replacing)
+        return self.find_dialog
+
     # -- help and closing ----------------------------------------------------------------
 
     def use_signal(self, address: Address) -> None:
@@ -715,6 +752,7 @@ class MainWindow(FileActions, QMainWindow):
             event.ignore()
             return
         self.settings.set_window_state(self.saveGeometry(), self.saveState())
+        self.settings.set_zoom(self.editor.zoom(), self.fit_width.enabled)
         self.autosaver.timer.stop()
         self.recovery.close()  # saved or discarded: the recovery copy goes
         if self.help_window is not None:

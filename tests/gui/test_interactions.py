@@ -34,9 +34,10 @@ def test_palette_and_tools_menu_are_built_from_the_interactions(window: MainWind
     assert [a.objectName() for a in menu.actions() if not a.isSeparator()] == names
     for cls in INTERACTIONS:
         action = window.tool_actions[cls.tool]
-        assert action.text() == cls.name() and action.statusTip() == cls.help()
+        assert action.text() == f"{cls.name()}\t{cls.key}" and action.statusTip() == cls.help()
+        assert action.iconText() == cls.name()
     window.set_language("tr")
-    assert window.tool_actions[Tool.SELECT].text() == "SEÇİM"
+    assert window.tool_actions[Tool.SELECT].iconText() == "SEÇİM"
 
 
 def test_each_tool_sets_its_cursor(window: MainWindow) -> None:

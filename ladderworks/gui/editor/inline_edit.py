@@ -80,9 +80,10 @@ class InlineEdit(QObject):
     def close(self) -> None:
         """Hide the edit without a change."""
         self.target = None
+        had_focus = self.line_edit.hasFocus()  # hiding it moves the focus on: ask first
         self.line_edit.hide()
         self.message.hide()
-        if self.line_edit.hasFocus():
+        if had_focus:
             self.editor.setFocus()
 
     def _refuse(self, diagnostic: Diagnostic) -> None:

@@ -35,6 +35,7 @@ class LadderModel(QObject):
     networks_inserted = Signal(int, int)  # first index, count
     network_removed = Signal(int)
     network_changed = Signal(int)
+    networks_changed = Signal(list)  # several networks at once (replace all): index list
     document_reset = Signal()  # a whole new document (open, new, text shown as ladder)
     diagnostics_found = Signal(list)  # Diagnostic list of the last coding (cells to outline)
     modified_changed = Signal(bool)
@@ -165,6 +166,12 @@ class LadderModel(QObject):
         inverse = edit.apply(self.networks[index])
         self.network_changed.emit(index)
         return inverse
+
+    def apply_many(self, edits: list[tuple[int, Edit]]) -> list[tuple[int, Edit]]:
+        """Apply edits to several networks, announced once; return their inverses."""
+        inverses = [(index, edit.apply(self.networks[index])) for index, edit in edits]
+        self.networks_changed.emit([index for index, _edit in inverses])
+        return inverses
 
     def insert_network(self, index: int, network: LadderNetwork) -> None:
         """Insert a network at `index`."""

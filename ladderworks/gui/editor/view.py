@@ -38,6 +38,7 @@ from ladderworks.gui.editor.geometry import (
 )
 from ladderworks.gui.editor.inline_edit import InlineEdit
 from ladderworks.gui.editor.interactions import BY_KEY, BY_TOOL, Interaction, SelectInteraction
+from ladderworks.gui.editor.keyboard import GridKeys
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.editor.lazy_items import LazyItems
@@ -102,8 +103,10 @@ class LadderEditor(CursorEdits, QGraphicsView):
         model.networks_inserted.connect(self._on_inserted)
         model.network_removed.connect(self._on_removed)
         model.network_changed.connect(self._on_changed)
+        model.networks_changed.connect(self._on_many_changed)
         model.diagnostics_found.connect(self.mark_diagnostics)
         self._on_reset()
+        self.keys = GridKeys(self)  # Home/End, PageUp/PageDown, the menu key
 
     # -- the model, as the window and the tests ask for it ------------------------------------
 
@@ -174,6 +177,18 @@ class LadderEditor(CursorEdits, QGraphicsView):
         self.network_items[index].refresh()
         self._relayout(index)
         self._renumber(index)
+        self.drawing_changed.emit()
+
+    def _on_many_changed(self, indices: list[int]) -> None:
+        if not indices:
+            return
+        changed = set(indices)
+        for index, item in self.network_items.made(min(changed)):
+            if index in changed:
+                item.error_cells = set()
+                item.refresh()
+        self._relayout(min(changed))
+        self._renumber(min(changed))
         self.drawing_changed.emit()
 
     def _make_item(self, index: int) -> NetworkItem:
@@ -352,6 +367,10 @@ class LadderEditor(CursorEdits, QGraphicsView):
         """The current zoom factor."""
         return self._zoom
 
+    def set_zoom(self, factor: float) -> None:
+        """Zoom to `factor` (clamped to the zoom range)."""
+        self._set_zoom(factor)
+
     def _set_zoom(self, factor: float) -> None:
         self._zoom = min(max(factor, ZOOM_MIN), ZOOM_MAX)
         self.resetTransform()
@@ -424,7 +443,10 @@ class LadderEditor(CursorEdits, QGraphicsView):
                 menu.addSeparator()
             else:
                 menu.addAction(action)
-        menu.exec(event.globalPos())
+        where = event.globalPos()
+        if event.reason() == QContextMenuEvent.Reason.Keyboard:  # Shift+F10, the menu key
+            where = self.viewport().mapToGlobal(self.cell_point(*self.cursor_cell))
+        menu.exec(where)
 
     def keyPressEvent(self, event: QKeyEvent) -> None:
         """Arrows move, letters pick tools, ENTER edits, SPACE uses the tool, DEL deletes."""
@@ -446,6 +468,8 @@ class LadderEditor(CursorEdits, QGraphicsView):
             return
         if key not in (Qt.Key.Key_Shift, Qt.Key.Key_Control, Qt.Key.Key_Alt, Qt.Key.Key_Meta):
             self._shift_anchor = None  # any other key ends a Shift+arrows selection
+        if self.keys.handle(event):
+            return
         if key in moves:
             drow, dcol = moves[Qt.Key(key)]
             row += drow
