@@ -13,7 +13,7 @@ from PySide6.QtGui import QKeySequence
 from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP  # lupdate reads the name
 
 Key = QKeySequence.StandardKey
-Shortcut = QKeySequence.StandardKey | str | None
+Shortcut = QKeySequence.StandardKey | str | tuple[QKeySequence.StandardKey | str, ...] | None
 
 # When an action is enabled (besides always): the window provides each condition.
 LADDER_SHOWN = "ladder"  # the grid editor is shown (not the text view)
@@ -28,14 +28,16 @@ class ActionSpec:
     name: str  # objectName, the key of `actions_by_name`
     text: str  # English, marked for translation in context "MainWindow"
     slot: str  # a method of the window, or of one of its parts: "editor.cut"
-    shortcut: Shortcut = None
+    shortcut: Shortcut = None  # several: the first is shown in the menu
     icon: str | None = None  # resources/icons/<icon>.svg, or a Qt standard pixmap "SP_…"
     menu: str | None = None  # objectName of the menu it is in
     group: int = 0  # a separator goes between two groups of one menu
     toolbar: int | None = None  # its group on the main toolbar (None: not on it)
-    checkable: bool = False  # the checkable actions of one menu are exclusive
+    checkable: bool = False
+    exclusive: bool = False  # one of the exclusive actions of its menu is checked
+    toggles: bool = False  # the slot takes the checked state, on every change (also by code)
     enabled_when: str | None = None  # LADDER_SHOWN, CAN_UNDO, CAN_REDO
-    argument: str | None = None  # passed to the slot
+    argument: str | bool | None = None  # passed to the slot
 
 
 @dataclass(frozen=True, slots=True)
@@ -84,11 +86,11 @@ ACTIONS: tuple[ActionSpec, ...] = (
     A("action_clear_recent", QT_TRANSLATE_NOOP("MainWindow", "Clear the list"),
       "clear_recent"),
     A("action_undo", QT_TRANSLATE_NOOP("MainWindow", "&Undo"),
-      "editor.undo_stack.undo", shortcut=Key.Undo, icon="SP_ArrowBack", menu="menu_edit",
+      "model.undo_stack.undo", shortcut=Key.Undo, icon="SP_ArrowBack", menu="menu_edit",
       toolbar=1, enabled_when=CAN_UNDO),
     A("action_redo", QT_TRANSLATE_NOOP("MainWindow", "&Redo"),
-      "editor.undo_stack.redo", shortcut=Key.Redo, icon="SP_ArrowForward", menu="menu_edit",
-      toolbar=1, enabled_when=CAN_REDO),
+      "model.undo_stack.redo", shortcut=("Ctrl+Y", "Ctrl+Shift+Z", Key.Redo),
+      icon="SP_ArrowForward", menu="menu_edit", toolbar=1, enabled_when=CAN_REDO),
     A("action_cut", QT_TRANSLATE_NOOP("MainWindow", "Cu&t"),
       "editor.cut", shortcut=Key.Cut, menu="menu_edit", group=1, enabled_when=LADDER_SHOWN),
     A("action_copy", QT_TRANSLATE_NOOP("MainWindow", "&Copy"),
@@ -113,6 +115,10 @@ ACTIONS: tuple[ActionSpec, ...] = (
       enabled_when=LADDER_SHOWN),
     A("action_delete_network", QT_TRANSLATE_NOOP("MainWindow", "Delete network"),
       "editor.delete_network", menu="menu_edit", group=2, enabled_when=LADDER_SHOWN),
+    A("action_find", QT_TRANSLATE_NOOP("MainWindow", "&Find..."),
+      "show_find", shortcut=Key.Find, menu="menu_edit", group=3, argument=False),
+    A("action_replace", QT_TRANSLATE_NOOP("MainWindow", "R&eplace..."),
+      "show_find", shortcut="Ctrl+H", menu="menu_edit", group=3, argument=True),
     A("action_zoom_in", QT_TRANSLATE_NOOP("MainWindow", "Zoom &in"),
       "editor.zoom_in", shortcut=Key.ZoomIn, icon="zoom_in", menu="menu_view", toolbar=2,
       enabled_when=LADDER_SHOWN),
@@ -121,6 +127,9 @@ ACTIONS: tuple[ActionSpec, ...] = (
       enabled_when=LADDER_SHOWN),
     A("action_zoom_reset", QT_TRANSLATE_NOOP("MainWindow", "&Normal size"),
       "editor.zoom_reset", shortcut="Ctrl+0", menu="menu_view", enabled_when=LADDER_SHOWN),
+    A("action_zoom_fit_width", QT_TRANSLATE_NOOP("MainWindow", "Fit &width"),
+      "fit_width.set_enabled", shortcut="Ctrl+9", icon="zoom_fit_width", menu="menu_view",
+      toolbar=2, checkable=True, toggles=True, enabled_when=LADDER_SHOWN),
     A("action_show_ladder", QT_TRANSLATE_NOOP("MainWindow", "Show as &ladder"),
       "show_as_ladder", shortcut="F5", menu="menu_view", group=1),
     A("action_show_text", QT_TRANSLATE_NOOP("MainWindow", "Show as &text"),
@@ -130,9 +139,11 @@ ACTIONS: tuple[ActionSpec, ...] = (
     A("action_compile", QT_TRANSLATE_NOOP("MainWindow", "&Compile"),
       "compile", shortcut="F9", icon="compile", menu="menu_plc", toolbar=3),
     A("action_language_en", "English",
-      "set_language", menu="menu_language", checkable=True, argument="en"),
+      "set_language", menu="menu_language", checkable=True, exclusive=True,
+      argument="en"),
     A("action_language_tr", "Türkçe",
-      "set_language", menu="menu_language", checkable=True, argument="tr"),
+      "set_language", menu="menu_language", checkable=True, exclusive=True,
+      argument="tr"),
     A("action_instruction_help", QT_TRANSLATE_NOOP("MainWindow", "&Instruction reference"),
       "show_instruction_help", shortcut=Key.HelpContents, menu="menu_help"),
     A("action_about", QT_TRANSLATE_NOOP("MainWindow", "&About LadderWorks"),

@@ -10,8 +10,16 @@ from PySide6.QtCore import QCoreApplication, QObject, Qt, SignalInstance
 from PySide6.QtGui import QAction, QActionGroup, QIcon, QKeySequence
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QMenu, QStyle, QToolBar
 
-from ladderworks.gui.actions_table import ACTIONS, MENUS, TOOLBAR_TITLE, ActionSpec, MenuSpec
-from ladderworks.gui.tools import Tool, icon, tool_help, tool_icon, tool_name
+from ladderworks.gui.actions_table import (
+    ACTIONS,
+    MENUS,
+    TOOLBAR_TITLE,
+    ActionSpec,
+    MenuSpec,
+    Shortcut,
+)
+from ladderworks.gui.editor.interactions import BY_TOOL, INTERACTIONS
+from ladderworks.gui.tools import Tool, icon
 
 translate = QCoreApplication.translate
 
@@ -19,6 +27,19 @@ translate = QCoreApplication.translate
 # signal whose first argument is a bool carries the new state itself (QUndoStack.canUndoChanged
 # also fires while the stack is being deleted, when its test could no longer run).
 Condition = tuple[list[SignalInstance], Callable[[], bool]]
+
+
+def _key_sequences(shortcut: Shortcut) -> list[QKeySequence]:
+    """A spec's keys, a standard key as the platform binds it; each once, in order."""
+    given = shortcut if isinstance(shortcut, tuple) else (shortcut,)
+    keys: list[QKeySequence] = []
+    for key in given:
+        if key is None:
+            continue
+        found = (QKeySequence.keyBindings(key) if isinstance(key, QKeySequence.StandardKey)
+                 else [QKeySequence(key)])
+        keys += [sequence for sequence in found if sequence not in keys]
+    return keys
 
 
 class ConsoleMenus(QObject):
@@ -47,8 +68,9 @@ class ConsoleMenus(QObject):
         for name, (signals, _test) in conditions.items():
             for signal in signals:  # each signal re-tests only its own condition
                 signal.connect(lambda *args, n=name: self._changed(n, args))
-        for tool in Tool:
-            action = QAction(tool_icon(tool), "", window)
+        for interaction in INTERACTIONS:  # the palette's and the Tools menu's order
+            tool = interaction.tool
+            action = QAction(interaction.icon(), "", window)
             action.setObjectName(f"tool_{tool.value}")
             action.setCheckable(True)
             self.tool_group.addAction(action)
@@ -66,7 +88,7 @@ class ConsoleMenus(QObject):
         action = QAction(self.window)
         action.setObjectName(spec.name)
         if spec.shortcut is not None:
-            action.setShortcut(QKeySequence(spec.shortcut))
+            action.setShortcuts(_key_sequences(spec.shortcut))
         if spec.icon is not None:
             action.setIcon(self._icon(spec.icon))
         action.setCheckable(spec.checkable)
@@ -74,7 +96,9 @@ class ConsoleMenus(QObject):
         if not callable(slot):
             raise TypeError(f"{spec.name}: {spec.slot} is not callable")
         argument = spec.argument
-        if argument is None:
+        if spec.toggles:
+            action.toggled.connect(slot)
+        elif argument is None:
             action.triggered.connect(lambda _checked=False, s=slot: s())
         else:
             action.triggered.connect(lambda _checked=False, s=slot, a=argument: s(a))
@@ -97,7 +121,7 @@ class ConsoleMenus(QObject):
             menu.setObjectName(menu_spec.name)
             self.menus[menu_spec.name] = menu
             groups = [spec for spec in self.specs if spec.menu == menu_spec.name]
-            exclusive = QActionGroup(menu) if any(s.checkable for s in groups) else None
+            exclusive = QActionGroup(menu) if any(s.exclusive for s in groups) else None
             previous: int | None = None
             for spec in groups:
                 if previous is not None and spec.group != previous:
@@ -105,7 +129,7 @@ class ConsoleMenus(QObject):
                 previous = spec.group
                 action = self.actions_by_name[spec.name]
                 menu.addAction(action)
-                if exclusive is not None and spec.checkable:
+                if exclusive is not None and spec.exclusive:
                     exclusive.addAction(action)
             if menu_spec.parent is not None:
                 self.insert_before(menu_spec.parent, menu.menuAction(), None,
@@ -202,6 +226,9 @@ class ConsoleMenus(QObject):
             self.menus[menu_spec.name].setTitle(translate("MainWindow", menu_spec.title))
         self.toolbar.setWindowTitle(translate("MainWindow", TOOLBAR_TITLE))
         for tool, action in self.tool_actions.items():
-            action.setText(tool_name(tool))
-            action.setToolTip(tool_help(tool))
-            action.setStatusTip(tool_help(tool))
+            # the key shows in the menu's shortcut column (it works while the grid has focus)
+            kind = BY_TOOL[tool]
+            action.setText(f"{kind.name()}\t{kind.key}")
+            action.setIconText(kind.name())
+            action.setToolTip(f"{kind.name()} ({kind.key}): {kind.help()}")
+            action.setStatusTip(kind.help())

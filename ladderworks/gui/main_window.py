@@ -26,9 +26,13 @@ from ladderworks.gui.actions_table import CAN_REDO, CAN_UNDO, CONTEXT_MENU, LADD
 from ladderworks.gui.console_menus import Condition, ConsoleMenus
 from ladderworks.gui.docks.plc_docks import build_plc_docks
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
+from ladderworks.gui.editor.interactions import BY_TOOL
+from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.editor.zoom import FitWidth
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
+from ladderworks.gui.find_replace import FindReplaceDialog
 from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.parameter_document import ParameterDocument
@@ -37,7 +41,7 @@ from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.signal_list import SignalListDock
 from ladderworks.gui.text_view import ProgramTextView
-from ladderworks.gui.tools import Tool, icon, tool_help
+from ladderworks.gui.tools import Tool, icon
 from ladderworks.gui.translation import UiLanguage
 
 translate = QCoreApplication.translate
@@ -63,7 +67,9 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.program_info = Program()  # the program as opened: title, sections, symbols
         self.setWindowIcon(icon("ladderworks"))
 
-        self.editor = LadderEditor(self)
+        self.model = LadderModel(self)  # the networks, the undo stack, ladder or text
+        self.editor = LadderEditor(self.model, self)
+        self.fit_width = FitWidth(self.editor)  # View › Fit width
         self.text_view = ProgramTextView(self)
         self.text_view.document().modificationChanged.connect(self._update_title)
         self.pages = QStackedWidget(self)
@@ -71,12 +77,16 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.pages.addWidget(self.editor)
         self.pages.addWidget(self.text_view)
         self.setCentralWidget(self.pages)
+        self.model.mode_changed.connect(self._show_mode)
 
         self.menus = ConsoleMenus(self, self._conditions())
         self.actions_by_name = self.menus.actions_by_name
         self.tool_actions = self.menus.tool_actions
         for tool, action in self.tool_actions.items():
             action.triggered.connect(lambda _c=False, t=tool: self.set_tool(t))
+        fit = self.actions_by_name["action_zoom_fit_width"]
+        for name in ("action_zoom_in", "action_zoom_out", "action_zoom_reset"):
+            self.actions_by_name[name].triggered.connect(lambda _c=False: fit.setChecked(False))
         self.recent_menu = self.menus.menus["menu_recent"]
         self.recent_actions: list[QAction] = []
         for index in range(MAX_RECENT):
@@ -96,7 +106,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.plc_docks.session.parameters_changed.connect(self._update_title)
         self._install_file_state()
 
-        self.editor.undo_stack.cleanChanged.connect(self._update_title)
+        self.model.modified_changed.connect(self._update_title)
         self.editor.tool_requested.connect(self.set_tool)
         self.editor.hover_changed.connect(self._show_hover)
         self.editor.message.connect(self._show_message)
@@ -106,28 +116,31 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.resize(1200, 800)
         self._first_show = True
         self.help_window: InstructionHelp | None = None
+        self.find_dialog: FindReplaceDialog | None = None
         geometry, state = settings.window_state()
         if geometry is not None:
             self.restoreGeometry(geometry)
         if state is not None:
             self.restoreState(state)
         self.new_file()
+        zoom, fit_width = settings.zoom()
+        self.editor.set_zoom(zoom)
+        self.actions_by_name["action_zoom_fit_width"].setChecked(fit_width)
 
     # -- actions, menus and docks -------------------------------------------------------
 
     def _conditions(self) -> dict[str, Condition]:
         """What the table's `enabled_when` names mean in this window."""
-        stack = self.editor.undo_stack
+        stack = self.model.undo_stack
         return {
-            LADDER_SHOWN: ([self.pages.currentChanged],
-                           lambda: self.pages.currentWidget() is self.editor),
+            LADDER_SHOWN: ([self.model.mode_changed], lambda: not self.model.showing_text),
             CAN_UNDO: ([stack.canUndoChanged], stack.canUndo),
             CAN_REDO: ([stack.canRedoChanged], stack.canRedo),
         }
 
     def _make_docks(self) -> None:
         """The editing docks: tools and signals tabbed on the left, the errors below."""
-        self.tool_palette = ToolPalette(list(self.tool_actions.values()), self)
+        self.tool_palette = ToolPalette(list(self.tool_actions.values()), self)  # tools' order
         self.tool_palette.function_chosen.connect(self._on_function_chosen)
         self.signals_dock = SignalListDock(self)
         self.signals_dock.address_chosen.connect(self.use_signal)
@@ -173,7 +186,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Make `tool` the current tool of the grid editor."""
         self.tool_actions[tool].setChecked(True)
         self.editor.set_tool(tool)
-        self.statusBar().showMessage(tool_help(tool), 4000)
+        self.statusBar().showMessage(BY_TOOL[tool].help(), 4000)
 
     def current_tool(self) -> Tool:
         """The checked tool."""
@@ -248,20 +261,23 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.settings.clear_recent_files()
         self._update_recent_menu()
 
+    def _show_mode(self, mode: str) -> None:
+        self.pages.setCurrentWidget(self.text_view if mode == Mode.TEXT else self.editor)
+
     def show_as_text(self) -> None:
         """Show the program as instruction-list text."""
-        if self.pages.currentWidget() is self.text_view:
+        if self.model.showing_text:
             return
         text = self.program_text()
         if text is None:
             return
         self.text_view.setPlainText(bad_bytes_shown(text))
         self.text_view.document().setModified(False)
-        self.pages.setCurrentWidget(self.text_view)
+        self.model.set_mode(Mode.TEXT)
 
     def show_as_ladder(self) -> bool:
         """Parse the text view and show it as ladder; errors stay in the text view."""
-        if self.pages.currentWidget() is not self.text_view:
+        if not self.model.showing_text:
             return True
         from ladderworks.core.il import parse
 
@@ -272,11 +288,11 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
             self.errors.show()
             return False
         self.failed_path = None
-        self.editor.set_program(result.program)
-        self.pages.setCurrentWidget(self.editor)
+        self.model.set_program(result.program)
+        self.model.set_mode(Mode.LADDER)
         self._program_shown(result.program)
         if modified:
-            self.editor.mark_modified()
+            self.model.mark_modified()
         self._update_title()
         return True
 
@@ -286,7 +302,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Check the program (grid and text rules) and list the diagnostics."""
         if not self.show_as_ladder():
             return self.errors.diagnostics()
-        program, diagnostics = self.editor.program()
+        program, diagnostics = self.model.program()
         if program is not None:
             diagnostics = diagnostics + compile_step.check(program)
         self.errors.set_diagnostics(diagnostics)
@@ -302,7 +318,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """PLC > Compile: the binary PLC program, or None with the errors listed."""
         if not self.show_as_ladder():
             return None
-        program, diagnostics = self.editor.program()
+        program, diagnostics = self.model.program()
         binary: bytes | None = None
         if program is not None and not has_errors(diagnostics):
             binary, more = compile_step.compile_program(program)
@@ -343,14 +359,21 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
 
     def go_to_diagnostic(self, diagnostic: Diagnostic) -> None:
         """Jump to the diagnostic's cell in the ladder, or its line in the text view."""
-        if self.pages.currentWidget() is self.text_view or (
-            diagnostic.network is None and diagnostic.line
-        ):
-            if self.pages.currentWidget() is not self.text_view:
+        if self.model.showing_text or (diagnostic.network is None and diagnostic.line):
+            if not self.model.showing_text:
                 self.show_as_text()
             self.text_view.go_to(diagnostic.line, diagnostic.column)
             return
         self.editor.go_to(diagnostic)
+
+    def show_find(self, replacing: bool = False) -> FindReplaceDialog | None:
+        """Edit › Find (Ctrl+F) / Replace (Ctrl+H): addresses and symbols in the ladder."""
+        if not self.show_as_ladder():
+            return None
+        if self.find_dialog is None:
+            self.find_dialog = FindReplaceDialog(self.editor, self)
+        self.find_dialog.start(replacing)
+        return self.find_dialog
 
     # -- help and closing ----------------------------------------------------------------
 
@@ -367,8 +390,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
     def instruction_at_cursor(self) -> str:
         """The instruction help should show: the element at the cursor, else the palette's."""
         index, row, col = self.editor.cursor_cell
-        if index < len(self.editor.networks):
-            found = self.editor.networks[index].element_at(row, col)
+        if index < len(self.model.networks):
+            found = self.model.networks[index].element_at(row, col)
             if found is not None:
                 element = found[1]
                 if isinstance(element, FunctionBox):
@@ -416,6 +439,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
             event.ignore()
             return
         self.settings.set_window_state(self.saveGeometry(), self.saveState())
+        self.settings.set_zoom(self.editor.zoom(), self.fit_width.enabled)
         self.autosaver.timer.stop()
         self.recovery.close()  # saved or discarded: the recovery copy goes
         if self.help_window is not None:

@@ -90,7 +90,7 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     them; a user can drag them apart on a large one."""
 
     def console_program() -> Program | None:
-        program, _diagnostics = editor.program()
+        program, _diagnostics = editor.model.program()
         return program
 
     control = PlcControlDock(session, window, console_program)
