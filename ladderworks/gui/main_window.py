@@ -78,6 +78,7 @@ class MainWindow(FileActions, QMainWindow):
         self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.tool_palette)
         self.errors = ErrorListDock(self)
         self.errors.activated.connect(self.go_to_diagnostic)
+        self.errors.diagnostics_changed.connect(self.text_view.set_diagnostics)
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.errors)
         self.signals_dock = SignalListDock(self)
         self.signals_dock.address_chosen.connect(self.use_signal)

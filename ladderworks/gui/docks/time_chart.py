@@ -20,15 +20,17 @@ from PySide6.QtWidgets import (
     QLabel,
     QLineEdit,
     QMainWindow,
+    QSizePolicy,
     QSpinBox,
-    QToolBar,
     QVBoxLayout,
     QWidget,
 )
 
 from ladderworks.core.address import AddressError
 from ladderworks.core.symbols import describe
+from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.docks import trace_files
+from ladderworks.gui.docks.bus_lane import BusLane
 from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
@@ -54,6 +56,7 @@ class TimeChartDock(QDockWidget):
         self.sampling = False
         self._curves: list[pg.PlotDataItem] = []  # one step trace per lane
         self._fills: list[pg.PlotDataItem] = []  # the shading under each bit lane
+        self._buses: dict[int, BusLane] = {}  # the value lanes, by lane
         body = QWidget(self)
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
@@ -79,9 +82,9 @@ class TimeChartDock(QDockWidget):
         period.addWidget(self.period_spin)
         period.addStretch(1)
         layout.addLayout(period)
-        self.toolbar = QToolBar(body)
+        # buttons that wrap onto a second line in a narrow dock: none hides behind an overflow
+        self.toolbar = ButtonFlow(body)
         self.toolbar.setObjectName("timeChartToolbar")
-        self.toolbar.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
         self.chart_actions: dict[str, QAction] = {}
         for name, slot in (
             ("action_time_chart_start", self.start),
@@ -96,12 +99,12 @@ class TimeChartDock(QDockWidget):
             ("action_time_chart_png", self.export_png_dialog),
         ):
             if name is None:
-                self.toolbar.addSeparator()
+                self.toolbar.add_separator()
                 continue
             action = QAction(self)
             action.setObjectName(name)
             action.triggered.connect(lambda _c=False, s=slot: s())
-            self.toolbar.addAction(action)
+            self.toolbar.add_action(action)
             self.chart_actions[name] = action
         layout.addWidget(self.toolbar)
         self.message = QLabel(body)
@@ -110,7 +113,8 @@ class TimeChartDock(QDockWidget):
         layout.addWidget(self.message)
         self.plot = pg.PlotWidget(body, background="w")
         self.plot.setObjectName("timeChartPlot")
-        self.plot.setMinimumHeight(160)
+        self.plot.setMinimumHeight(130)
+        self.plot.scene().contextMenu = []  # pyqtgraph's own English "Export..."; ours are above
         self.plot.setMinimumWidth(380)  # room for the lane names and a readable time axis
         item = self.plot.getPlotItem()
         item.showGrid(x=True, y=False, alpha=0.25)
@@ -130,7 +134,8 @@ class TimeChartDock(QDockWidget):
         layout.addWidget(self.plot, 1)
         self.cursor_label = QLabel(body)
         self.cursor_label.setObjectName("timeChartCursor")
-        self.cursor_label.setWordWrap(True)
+        # one line of its own below the plot (a wrapped label could overlap the time axis)
+        self.cursor_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Fixed)
         self.cursor_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         layout.addWidget(self.cursor_label)
         self.setWidget(body)
@@ -227,8 +232,11 @@ class TimeChartDock(QDockWidget):
         item = self.plot.getPlotItem()
         for curve in self._curves + self._fills:
             item.removeItem(curve)
+        for bus in self._buses.values():
+            bus.remove()
         self._curves = []
         self._fills = []
+        self._buses = {}
         ticks = []
         for lane, signal in enumerate(self.record.signals):
             colour = QColor(_COLOURS[lane % len(_COLOURS)])
@@ -239,8 +247,12 @@ class TimeChartDock(QDockWidget):
                 shade = pg.PlotDataItem(stepMode="center", pen=None, fillLevel=base, brush=fill)
                 item.addItem(shade)
                 self._fills.append(shade)
-            curve = pg.PlotDataItem(stepMode="center", pen=pg.mkPen(colour, width=2))
-            item.addItem(curve)
+                curve = pg.PlotDataItem(stepMode="center", pen=pg.mkPen(colour, width=2))
+                item.addItem(curve)
+            else:  # a value: a bus lane with each value written in it
+                bus = BusLane(item, colour, base, signal.width)
+                self._buses[lane] = bus
+                curve = bus.outline
             self._curves.append(curve)
             ticks.append((base + 0.5, self.lane_name(signal)))
         axis = item.getAxis("left")
@@ -252,8 +264,14 @@ class TimeChartDock(QDockWidget):
         item.getViewBox().setYRange(-0.3, (count - 1) * LANE_HEIGHT + 1.3, padding=0)
         self._redraw()
 
+    def lane_texts(self, lane: int) -> list[tuple[float, str]]:
+        """The values written in a value lane at this zoom: (start time in ms, text)."""
+        bus = self._buses.get(lane)
+        return [] if bus is None else bus.texts()
+
     def lane_points(self, lane: int) -> tuple[list[float], list[float]]:
-        """A lane's step points as drawn: x (one more than y) and y offset into its lane."""
+        """A lane's step points: x (one more than y) and y offset into its lane (a value
+        scaled to the lane's height)."""
         xs, values = self.record.steps(lane)
         base = self.lane_base(lane)
         signal = self.record.signals[lane]
@@ -263,10 +281,13 @@ class TimeChartDock(QDockWidget):
     def _redraw(self) -> None:
         fills = iter(self._fills)
         for lane, curve in enumerate(self._curves):
+            if lane in self._buses:
+                steps, values = self.record.steps(lane)
+                self._buses[lane].set_steps([float(x) for x in steps], values)
+                continue
             xs, ys = self.lane_points(lane)
             curve.setData(xs, ys)
-            if self.record.signals[lane].is_bit:
-                next(fills).setData(xs, ys)
+            next(fills).setData(xs, ys)
         if self.record.times and self.time_cursor.value() < self.record.times[0]:
             self.time_cursor.setValue(self.record.times[0])
         self._show_cursor()

@@ -36,7 +36,7 @@ def add_actions(dock: TimeChartDock) -> None:
         action = QAction(dock)
         action.setObjectName(name)
         action.triggered.connect(lambda _c=False, s=slot: s())
-        dock.toolbar.addAction(action)
+        dock.toolbar.add_action(action)
         dock.chart_actions[name] = action
 
 
