@@ -24,6 +24,8 @@ from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, decode, parse, print_program
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
+from ladderworks.gui.locale_numbers import decimal
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession, PlcStatus
 
 translate = QCoreApplication.translate
@@ -166,7 +168,7 @@ class PlcControlDock(QDockWidget):
             text, _encoding = decode(path.read_bytes())
         except OSError as error:
             self.message.setText(translate("PlcControl", "Cannot read {0}: {1}")
-                                 .format(path, error.strerror))
+                                 .format(path, os_error_text(error)))
             return False
         self.set_text(text, path)
         self.message.setText(translate("PlcControl", "Opened {0}").format(path.name))
@@ -315,9 +317,10 @@ class PlcControlDock(QDockWidget):
         if status.loaded:
             self.figures.setText(translate(
                 "PlcControl",
-                "scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · "
+                "scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · "
                 "period {4} ms · overruns {5}").format(
-                status.scan_count, status.min_ms, status.avg_ms, status.max_ms,
+                status.scan_count, decimal(status.min_ms, 3), decimal(status.avg_ms, 3),
+                decimal(status.max_ms, 3),
                 status.period_ms, status.overruns))
         else:
             self.figures.setText("")

@@ -34,6 +34,8 @@ from ladderworks.gui.docks.bus_lane import BusLane
 from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
+from ladderworks.gui.locale_numbers import LocaleAxis
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
 
 translate = QCoreApplication.translate
@@ -111,7 +113,8 @@ class TimeChartDock(QDockWidget):
         self.message.setObjectName("timeChartMessage")
         self.message.setWordWrap(True)
         layout.addWidget(self.message)
-        self.plot = pg.PlotWidget(body, background="w")
+        self.plot = pg.PlotWidget(body, background="w",
+                                  axisItems={"bottom": LocaleAxis("bottom")})
         self.plot.setObjectName("timeChartPlot")
         self.plot.setMinimumHeight(130)
         self.plot.scene().contextMenu = []  # pyqtgraph's own English "Export..."; ours are above
@@ -352,7 +355,7 @@ class TimeChartDock(QDockWidget):
             atomic_write(path, self.record.csv_text())
         except OSError as error:
             self._say(
-                translate("TimeChart", "Cannot write {0}: {1}").format(path, error.strerror),
+                translate("TimeChart", "Cannot write {0}: {1}").format(path, os_error_text(error)),
                 error=True,
             )
             return False
@@ -426,6 +429,8 @@ class TimeChartDock(QDockWidget):
             translate("TimeChart", "Save the chart as a PNG picture")
         )
         self.plot.getPlotItem().setLabel("bottom", translate("TimeChart", "time (ms)"))
+        self.plot.getPlotItem().getAxis("bottom").picture = None  # ticks in the new decimal sign
+        self.plot.getPlotItem().getAxis("bottom").update()
         trace_files.retranslate(self)
         self._show_cursor()
 
