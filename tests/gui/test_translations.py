@@ -316,3 +316,18 @@ def test_the_reference_has_no_source_marks_and_whole_names(window: MainWindow) -
                   key=help_window.list.fontMetrics().horizontalAdvance)
     needed = help_window.list.fontMetrics().horizontalAdvance(longest)
     assert help_window.list.viewport().width() >= needed
+
+
+def test_the_system_s_reasons_are_said_in_turkish(window: MainWindow) -> None:
+    import errno
+    import os
+
+    from ladderworks.gui.os_errors import os_error_text
+
+    window.set_language("tr")
+    for code in (errno.ENOENT, errno.EACCES, errno.ENOSPC, errno.EROFS, errno.EISDIR):
+        error = OSError(code, os.strerror(code))
+        assert os_error_text(error) != os.strerror(code)
+        assert not re.search(r"[A-Z][a-z]+ ", os_error_text(error)), os_error_text(error)
+    odd = OSError(errno.EXDEV, os.strerror(errno.EXDEV))
+    assert os_error_text(odd) == f"sistem hatası: {os.strerror(errno.EXDEV)}"
