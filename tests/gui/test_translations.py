@@ -331,3 +331,25 @@ def test_the_system_s_reasons_are_said_in_turkish(window: MainWindow) -> None:
         assert not re.search(r"[A-Z][a-z]+ ", os_error_text(error)), os_error_text(error)
     odd = OSError(errno.EXDEV, os.strerror(errno.EXDEV))
     assert os_error_text(odd) == f"sistem hatası: {os.strerror(errno.EXDEV)}"
+
+
+def test_dock_messages_follow_a_live_switch(window: MainWindow, qtbot: QtBot,
+                                            tmp_path: Path) -> None:
+    from ladderworks.paths import EXAMPLES
+
+    assert window.load(EXAMPLES / "timer_relay.LAD")
+    assert window.compile() is not None
+    control = window.plc_docks.control
+    chart = window.plc_docks.others["time_chart"]
+    chart.signals_edit.setText("R1.4")  # type: ignore[attr-defined]
+    assert chart.start()  # type: ignore[attr-defined]
+    chart.stop()  # type: ignore[attr-defined]
+    assert control.message.text() == "Program loaded from the console"
+    assert chart.message.text().startswith("Stopped: ")  # type: ignore[attr-defined]
+    window.set_language("tr")
+    assert control.message.text() == "Program konsoldan yüklendi"
+    assert chart.message.text().startswith("Durduruldu: ")  # type: ignore[attr-defined]
+    # a message set since as plain text is left alone by the next switch
+    control.message.setText("R1.4")
+    window.set_language("en")
+    assert control.message.text() == "R1.4"

@@ -24,6 +24,7 @@ from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, decode, parse, print_program
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
+from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.locale_numbers import decimal
 from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession, PlcStatus
@@ -155,7 +156,8 @@ class PlcControlDock(QDockWidget):
         self.editor.set_converted(self.editor.blockCount())
         self.loaded_name = name
         self._show_loaded()
-        self.message.setText(translate("PlcControl", "Program loaded from the console"))
+        set_live_text(self.message, lambda: translate("PlcControl",
+                                                      "Program loaded from the console"))
 
     def _show_loaded(self) -> None:
         self.loaded.setText(translate("PlcControl", "In the PLC: {0}").format(self.loaded_name)
@@ -171,7 +173,8 @@ class PlcControlDock(QDockWidget):
                                  .format(path, os_error_text(error)))
             return False
         self.set_text(text, path)
-        self.message.setText(translate("PlcControl", "Opened {0}").format(path.name))
+        set_live_text(self.message,
+                      lambda: translate("PlcControl", "Opened {0}").format(path.name))
         return True
 
     def open_dialog(self) -> None:
@@ -190,7 +193,8 @@ class PlcControlDock(QDockWidget):
                 "PlcControl", "The console's program cannot be coded: see the error list"))
             return False
         self.set_text(print_program(program))
-        self.message.setText(translate("PlcControl", "Program taken from the console"))
+        set_live_text(self.message, lambda: translate("PlcControl",
+                                                      "Program taken from the console"))
         return True
 
     def _text_changed(self) -> None:

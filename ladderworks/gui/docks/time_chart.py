@@ -8,6 +8,7 @@ and draws each lane as a sample-and-hold step trace.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from pathlib import Path
 
 import pyqtgraph as pg
@@ -34,6 +35,7 @@ from ladderworks.gui.docks.bus_lane import BusLane
 from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
+from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.locale_numbers import LocaleAxis
 from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
@@ -154,10 +156,9 @@ class TimeChartDock(QDockWidget):
         """The lanes typed in the box (None and a message when one is wrong or none is given)."""
         texts = [text for text in _SPLIT.split(self.signals_edit.text().strip()) if text]
         if not texts:
-            self._say(
-                translate("TimeChart", "Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)"),
-                error=True,
-            )
+            self._say(lambda: translate(
+                "TimeChart", "Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)"),
+                error=True)
             return None
         signals: list[TracedSignal] = []
         for text in texts:
@@ -175,7 +176,8 @@ class TimeChartDock(QDockWidget):
         if signals is None:
             return False
         if self.session.engine is None:
-            self._say(translate("TimeChart", "Load (compile) a PLC program first"), error=True)
+            self._say(lambda: translate("TimeChart", "Load (compile) a PLC program first"),
+                      error=True)
             return False
         period = self.period_spin.value()
         self.record = TraceRecord(signals)
@@ -186,7 +188,7 @@ class TimeChartDock(QDockWidget):
         )
         self.sampling = True
         self.fit()
-        self._say(translate("TimeChart", "Sampling every {0} ms").format(period))
+        self._say(lambda: translate("TimeChart", "Sampling every {0} ms").format(period))
         self._update_actions()
         return True
 
@@ -197,7 +199,8 @@ class TimeChartDock(QDockWidget):
         self.session.stop_trace()
         self._take_samples()
         self.sampling = False
-        self._say(translate("TimeChart", "Stopped: {0} samples").format(len(self.record)))
+        count = len(self.record)
+        self._say(lambda: translate("TimeChart", "Stopped: {0} samples").format(count))
         self._update_actions()
 
     def clear(self) -> None:
@@ -210,7 +213,7 @@ class TimeChartDock(QDockWidget):
 
     def _on_program_loaded(self, _program: object) -> None:
         if self.sampling:  # the session keeps the sampler across a reload
-            self._say(translate("TimeChart", "New program loaded; sampling goes on"))
+            self._say(lambda: translate("TimeChart", "New program loaded; sampling goes on"))
 
     def _take_samples(self, _snapshot: object = None) -> None:
         if not self.sampling:
@@ -359,7 +362,7 @@ class TimeChartDock(QDockWidget):
                 error=True,
             )
             return False
-        self._say(translate("TimeChart", "Saved {0}").format(path))
+        self._say(lambda: translate("TimeChart", "Saved {0}").format(path))
         return True
 
     def export_png(self, path: str | Path) -> bool:
@@ -367,7 +370,7 @@ class TimeChartDock(QDockWidget):
         if not self.plot.grab().save(str(path), "PNG"):
             self._say(translate("TimeChart", "Cannot write {0}").format(path), error=True)
             return False
-        self._say(translate("TimeChart", "Saved {0}").format(path))
+        self._say(lambda: translate("TimeChart", "Saved {0}").format(path))
         return True
 
     def export_csv_dialog(self) -> None:
@@ -394,9 +397,13 @@ class TimeChartDock(QDockWidget):
 
     # -- texts -------------------------------------------------------------------------------
 
-    def _say(self, text: str, *, error: bool = False) -> None:
+    def _say(self, text: str | Callable[[], str], *, error: bool = False) -> None:
+        """A message above the chart; one given as a function follows a language switch."""
         self.message.setStyleSheet("color:#c00000;" if error else "")
-        self.message.setText(text)
+        if callable(text):
+            set_live_text(self.message, text)
+        else:
+            self.message.setText(text)
 
     def _update_actions(self) -> None:
         self.chart_actions["action_time_chart_start"].setEnabled(not self.sampling)
