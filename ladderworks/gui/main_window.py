@@ -513,11 +513,7 @@ class MainWindow(FileActions, QMainWindow):
         """Make `tool` the current tool of the grid editor."""
         self.tool_actions[tool].setChecked(True)
         self.editor.set_tool(tool)
-<<<<<<< HEAD
-        self._show_message(lambda: tool_help(tool), 4000)
-=======
-        self.statusBar().showMessage(BY_TOOL[tool].help(), 4000)
->>>>>>> main
+        self._show_message(lambda: BY_TOOL[tool].help(), 4000)
 
     def current_tool(self) -> Tool:
         """The checked tool."""
