@@ -458,10 +458,9 @@ class MainWindow(FileActions, QMainWindow):
         self.zoom_label = QLabel(self)
         self.zoom_label.setObjectName("status_zoom")
         self.statusBar().addPermanentWidget(self.zoom_label)
-        for name in ("action_zoom_in", "action_zoom_out", "action_zoom_reset"):
-            self.actions_by_name[name].triggered.connect(self._show_zoom)
+        self.editor.zoom_changed.connect(self._show_zoom)
 
-    def _show_zoom(self) -> None:
+    def _show_zoom(self, *_args: object) -> None:
         self.zoom_label.setText(percent(self.editor.zoom() * 100))
         self.zoom_label.setToolTip(translate("MainWindow", "Zoom"))
 

@@ -265,6 +265,8 @@ def test_turkish_numbers_have_a_decimal_comma(window: MainWindow) -> None:
     window.actions_by_name["action_zoom_in"].trigger()
     assert window.zoom_label.text() == percent(window.editor.zoom() * 100)
     assert window.zoom_label.text().startswith("%")
+    window.actions_by_name["action_zoom_fit_width"].trigger()  # any change of zoom is shown
+    assert window.zoom_label.text() == percent(window.editor.zoom() * 100)
     from ladderworks.paths import EXAMPLES
 
     assert window.load(EXAMPLES / "timer_relay.LAD")
