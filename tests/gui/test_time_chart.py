@@ -255,16 +255,22 @@ def test_every_chart_button_is_in_view_in_a_narrow_dock(
 def test_the_time_axis_label_stays_above_the_cursor_readout(
         qtbot: QtBot, relay: tuple[PlcSession, TimeChartDock]) -> None:
     session, dock = relay
-    dock.signals_edit.setText("R1.4 R1.7 D10:2")
+    dock.signals_edit.setText("R1.4 R1.7 D10:2 D12:4 R2.0 R2.1 R2.2 R2.3")
     assert dock.start()
     session.run_scans(20)
     qtbot.waitUntil(lambda: len(dock.record) == 20)
     dock.stop()
+    readout = dock.cursor_label
+    line = readout.fontMetrics().height()
+    dock.resize(380, 600)
+    # eight lanes' values wrap onto a second line, and the readout asks for its height
+    qtbot.waitUntil(lambda: readout.minimumHeight() >= 2 * line)
     dock.resize(380, 200)  # smaller than the chart needs: the dock keeps its minimum
     qtbot.waitUntil(lambda: dock.height() >= dock.minimumSizeHint().height())
+    qtbot.waitUntil(lambda: readout.height() >= 2 * line)
     axis = dock.plot.getPlotItem().getAxis("bottom")
     label = axis.label.mapRectToScene(axis.label.boundingRect())
     label_bottom = dock.plot.mapTo(dock.widget(), dock.plot.mapFromScene(label.bottomLeft()))
-    readout = dock.cursor_label.geometry()
-    assert dock.plot.geometry().bottom() < readout.top()
-    assert label_bottom.y() <= readout.top()
+    assert dock.plot.geometry().bottom() < readout.geometry().top()
+    assert label_bottom.y() <= readout.geometry().top()
+    assert readout.geometry().bottom() <= dock.widget().height()

@@ -83,8 +83,10 @@ class BusLane:
             return
         metrics = QFontMetrics(self.labels[0].textItem.font())
         margin = 2 * self.labels[0].textItem.document().documentMargin()
+        band = (BAND_HIGH - BAND_LOW) / (view.viewPixelSize()[1] or 1.0)
+        tall_enough = band >= 0.8 * metrics.height()  # a crowded chart: the readout has them
         for (start, end), value, label in zip(self.spans, self.values, self.labels, strict=True):
-            room = (end - start) / per_pixel - 2 * SLANT_PX - margin
+            room = (end - start) / per_pixel - 2 * SLANT_PX - margin if tall_enough else 0
             full, short = value_text(value, self.width), str(value)
             text = full if metrics.horizontalAdvance(full) <= room else short
             label.setText(text)

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pyqtgraph as pg
 from PySide6.QtCore import QCoreApplication, QEvent, Qt
-from PySide6.QtGui import QAction, QColor, QFontMetrics
+from PySide6.QtGui import QAction, QColor, QFontMetrics, QResizeEvent
 from PySide6.QtWidgets import (
     QDockWidget,
     QFileDialog,
@@ -21,7 +21,6 @@ from PySide6.QtWidgets import (
     QLabel,
     QLineEdit,
     QMainWindow,
-    QSizePolicy,
     QSpinBox,
     QVBoxLayout,
     QWidget,
@@ -139,8 +138,7 @@ class TimeChartDock(QDockWidget):
         layout.addWidget(self.plot, 1)
         self.cursor_label = QLabel(body)
         self.cursor_label.setObjectName("timeChartCursor")
-        # one line of its own below the plot (a wrapped label could overlap the time axis)
-        self.cursor_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Fixed)
+        self.cursor_label.setWordWrap(True)
         self.cursor_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         layout.addWidget(self.cursor_label)
         self.setWidget(body)
@@ -339,6 +337,7 @@ class TimeChartDock(QDockWidget):
     def _show_cursor(self, *_args: object) -> None:
         if not self.record.signals:
             self.cursor_label.setText("")
+            self._fit_labels()
             return
         values = "   ".join(
             f"{label} = {'–' if value is None else value}"
@@ -349,6 +348,7 @@ class TimeChartDock(QDockWidget):
             + "   "
             + values
         )
+        self._fit_labels()
 
     # -- export ------------------------------------------------------------------------------
 
@@ -404,6 +404,20 @@ class TimeChartDock(QDockWidget):
             set_live_text(self.message, text)
         else:
             self.message.setText(text)
+        self._fit_labels()
+
+    def _fit_labels(self) -> None:
+        """Reserve the height the wrapped message and cursor readout need at this width: a
+        dock does not ask its labels, and a squeezed layout would draw the readout over the
+        time axis."""
+        for label in (self.message, self.cursor_label):
+            width = label.width() or self.widget().width()
+            label.setMinimumHeight(label.heightForWidth(width) if label.text() else 0)
+
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        """Wrapped lines change with the width."""
+        super().resizeEvent(event)
+        self._fit_labels()
 
     def _update_actions(self) -> None:
         self.chart_actions["action_time_chart_start"].setEnabled(not self.sampling)
