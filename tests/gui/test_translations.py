@@ -355,3 +355,22 @@ def test_dock_messages_follow_a_live_switch(window: MainWindow, qtbot: QtBot,
     control.message.setText("R1.4")
     window.set_language("en")
     assert control.message.text() == "R1.4"
+
+
+def test_a_context_s_own_word_overrides_lupdate_s_guess(tmp_path: Path) -> None:
+    from tools.update_translations import fill
+
+    ts = tmp_path / "x_tr.ts"
+    ts.write_text(
+        '<?xml version="1.0" encoding="utf-8"?>\n<TS version="2.1" language="tr_TR">'
+        "<context><name>Questions</name><message><source>Discard</source>"
+        "<translation>At</translation></message></context>"
+        "<context><name>QPlatformTheme</name><message><source>Discard</source>"
+        "<translation>At</translation></message>"
+        "<message><source>Open</source><translation type=\"unfinished\"></translation>"
+        "</message></context></TS>", encoding="utf-8")
+    assert fill(ts, {"QPlatformTheme::Discard": "Kaydetme", "Open": "Aç"}) == 2
+    assert fill(ts, {"QPlatformTheme::Discard": "Kaydetme"}) == 0  # already so
+    found = {(key, node.text) for key, node in _messages(ts).items()}
+    assert found == {(("Questions", "Discard"), "At"), (("QPlatformTheme", "Discard"), "Kaydetme"),
+                     (("QPlatformTheme", "Open"), "Aç")}
