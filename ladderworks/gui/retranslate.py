@@ -6,6 +6,8 @@ from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QEvent
 
+from ladderworks.gui.live_text import remake_live_texts
+
 if TYPE_CHECKING:
     from PySide6.QtWidgets import QWidget
 
@@ -20,7 +22,8 @@ class Retranslating(_Widget):
     Installing a translator posts LanguageChange to every top-level window, and each widget
     passes it to its children, so the main window and every dock retranslate themselves. Helpers
     that are not widgets (on-line mode, time travel) are retranslated by the widget that owns
-    them, from its own `retranslate()`. Listed first among the bases (a mixin)."""
+    them, from its own `retranslate()`; texts shown with `live_text.set_live_text` are made
+    again after it. Listed first among the bases (a mixin)."""
 
     def retranslate(self) -> None:
         """Set every text in the current UI language."""
@@ -30,4 +33,5 @@ class Retranslating(_Widget):
         """Retranslate on a language change."""
         if event.type() == QEvent.Type.LanguageChange:
             self.retranslate()
+            remake_live_texts(self)  # the messages shown with `set_live_text`
         super().changeEvent(event)

@@ -150,13 +150,13 @@ def test_no_widget_has_its_own_language_change_handler() -> None:
     """LanguageChange is handled once, in gui/retranslate.py (the editor only repaints)."""
     handlers = []
     for path in sorted(GUI.rglob("*.py")):
-        if path.name == "retranslate.py":
+        if path.name == "retranslate.py" or path.relative_to(GUI).as_posix() == "editor/view.py":
             continue
         tree = ast.parse(path.read_text("utf-8"))
         for node in ast.walk(tree):
             if isinstance(node, ast.FunctionDef) and node.name in ("changeEvent", "eventFilter"):
                 text = ast.get_source_segment(path.read_text("utf-8"), node) or ""
-                if "LanguageChange" in text and "retranslate" in text:
+                if "LanguageChange" in text:
                     handlers.append(f"{path.relative_to(GUI)}:{node.name}")
     assert handlers == []
     assert "LanguageChange" in inspect.getsource(Retranslating.changeEvent)

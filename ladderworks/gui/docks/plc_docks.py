@@ -113,12 +113,14 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     menus.add_dock(alarms, "action_dock_alarms", BOTTOM)
     menus.add_dock(tables, "action_dock_plc_tables", RIGHT)
     menus.add_dock(scenario, "action_dock_scenario", BOTTOM)
-    for dock in (control, diagnostic, bits, tables, chart, scenario, force_list):
+    # tabbed while hidden: a tab group of shown docks sizes the window's first layout by
+    # all of them, and leaves a tab bar behind with their titles
+    for dock in (control, diagnostic, bits, tables, alarms, chart, scenario, force_list):
         dock.hide()
         _raise_when_shown(window, dock)
     _tab(window, [control, diagnostic, bits, tables])
     _tab(window, [alarms, chart, scenario, force_list])
-    alarms.raise_()
+    alarms.show()
 
     # one path (issue 18): Compile, START and STOP on the main toolbar and in the PLC menu
     run = [control.control_actions[name] for name in ("action_plc_start", "action_plc_stop")]

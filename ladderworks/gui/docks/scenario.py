@@ -31,6 +31,7 @@ from ladderworks.gui.docks import trace_files
 from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord
 from ladderworks.gui.files import atomic_write
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.retranslate import Retranslating
 
@@ -95,8 +96,8 @@ class ScenarioDock(Retranslating, QDockWidget):
         try:
             scenario = read_scenario(path, program.symbols if program is not None else None)
         except OSError as error:
-            self._say(translate("Scenario", "Cannot read {0}: {1}").format(path, error.strerror),
-                      error=True)
+            self._say(translate("Scenario", "Cannot read {0}: {1}").format(
+                      path, os_error_text(error)), error=True)
             return None
         return self.run(scenario)
 
@@ -207,8 +208,8 @@ class ScenarioDock(Retranslating, QDockWidget):
         try:
             atomic_write(path, text)
         except OSError as error:
-            self._say(translate("Scenario", "Cannot write {0}: {1}").format(path, error.strerror),
-                      error=True)
+            self._say(translate("Scenario", "Cannot write {0}: {1}").format(
+                      path, os_error_text(error)), error=True)
             return False
         self._say(translate("Scenario", "Saved {0}").format(path))
         return True
