@@ -40,6 +40,7 @@ from ladderworks.gui.docks.dock_menus import (
     find_menu,
     register_action,
 )
+from ladderworks.gui.retranslated import Retranslated
 from ladderworks.gui.symbol_text import name_and_text
 
 translate = QCoreApplication.translate
@@ -365,8 +366,7 @@ def install(window: QMainWindow) -> CrossReferenceDock:
         action.setStatusTip(translate(
             "CrossReference", "List every place the program reads and writes the address"))
 
-    retranslate_action()
-    _Retranslated(window, retranslate_action)
+    Retranslated(window, retranslate_action)
     return dock
 
 
@@ -376,17 +376,3 @@ def _all_networks(editor: object) -> Sequence[LadderNetwork]:
         editor.finish_loading()  # type: ignore[attr-defined]
     return editor.networks  # type: ignore[attr-defined]
 
-
-class _Retranslated(QObject):
-    """Calls `retranslate` when the window's UI language changes."""
-
-    def __init__(self, window: QMainWindow, retranslate: Callable[[], None]) -> None:
-        super().__init__(window)
-        self._retranslate = retranslate
-        window.installEventFilter(self)
-
-    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        """Pass LanguageChange on."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self._retranslate()
-        return False
