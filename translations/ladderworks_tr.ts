@@ -183,6 +183,144 @@
     </message>
 </context>
 <context>
+    <name>CrossReference</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <source>Contact</source>
+        <translation>Kontak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <source>NOT contact</source>
+        <translation>DEĞİL kontak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <source>Coil</source>
+        <translation>Çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
+        <source>NOT coil</source>
+        <translation>DEĞİL çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
+        <source>SET coil</source>
+        <translation>SET çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
+        <source>RST coil</source>
+        <translation>RST çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <source>Read</source>
+        <translation>Okuma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="80"/>
+        <source>Write</source>
+        <translation>Yazma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="81"/>
+        <source>Read and write</source>
+        <translation>Okuma ve yazma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="87"/>
+        <source>Level {0}</source>
+        <translation>{0}. seviye</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <source>Symbol</source>
+        <translation>Sembol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <source>Network</source>
+        <translation>Devre</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <source>Label</source>
+        <translation>Etiket</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
+        <source>Program part</source>
+        <translation>Program bölümü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
+        <source>Element</source>
+        <translation>Eleman</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
+        <source>Access</source>
+        <translation>Erişim</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
+        <source>Comment</source>
+        <translation>Yorum</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="240"/>
+        <source>All addresses: {0} uses</source>
+        <translation>Tüm adresler: {0} kullanım</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="250"/>
+        <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
+        <translation>&apos;{0}&apos; ne bir adres ne de programın bir sembolü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="261"/>
+        <source>{0} is not used in the program</source>
+        <translation>{0} programda kullanılmıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="264"/>
+        <source>{0}: {1} uses — read {2}, written {3}</source>
+        <translation>{0}: {1} kullanım — {2} okuma, {3} yazma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="282"/>
+        <source>Cross reference</source>
+        <translation>Çapraz referans</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="283"/>
+        <source>&amp;Address or symbol:</source>
+        <translation>&amp;Adres veya sembol:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="284"/>
+        <source>e.g. X21.7, R100, ESKIP</source>
+        <translation>örn. X21.7, R100, ESKIP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="365"/>
+        <source>Cross &amp;reference of this address</source>
+        <translation>Bu adresin çapraz &amp;referansı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="366"/>
+        <source>List every place the program reads and writes the address</source>
+        <translation>Programın adresi okuduğu ve yazdığı her yeri listeler</translation>
+    </message>
+</context>
+<context>
     <name>Diagnostic</name>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="74"/>
@@ -1020,219 +1158,219 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <location filename="../ladderworks/gui/main_window.py" line="152"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="147"/>
+        <location filename="../ladderworks/gui/main_window.py" line="153"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="148"/>
+        <location filename="../ladderworks/gui/main_window.py" line="154"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="151"/>
+        <location filename="../ladderworks/gui/main_window.py" line="157"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="157"/>
+        <location filename="../ladderworks/gui/main_window.py" line="163"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/main_window.py" line="168"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="167"/>
+        <location filename="../ladderworks/gui/main_window.py" line="173"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="172"/>
+        <location filename="../ladderworks/gui/main_window.py" line="178"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;özellikleri...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="181"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/main_window.py" line="186"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="185"/>
+        <location filename="../ladderworks/gui/main_window.py" line="191"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="186"/>
+        <location filename="../ladderworks/gui/main_window.py" line="192"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/main_window.py" line="193"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/main_window.py" line="194"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <location filename="../ladderworks/gui/main_window.py" line="195"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="192"/>
+        <location filename="../ladderworks/gui/main_window.py" line="198"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="197"/>
+        <location filename="../ladderworks/gui/main_window.py" line="203"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="204"/>
+        <location filename="../ladderworks/gui/main_window.py" line="210"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="211"/>
+        <location filename="../ladderworks/gui/main_window.py" line="217"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="218"/>
+        <location filename="../ladderworks/gui/main_window.py" line="224"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="223"/>
+        <location filename="../ladderworks/gui/main_window.py" line="229"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="225"/>
+        <location filename="../ladderworks/gui/main_window.py" line="231"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="226"/>
+        <location filename="../ladderworks/gui/main_window.py" line="232"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="229"/>
+        <location filename="../ladderworks/gui/main_window.py" line="235"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="235"/>
+        <location filename="../ladderworks/gui/main_window.py" line="241"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <location filename="../ladderworks/gui/main_window.py" line="247"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/main_window.py" line="251"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="248"/>
+        <location filename="../ladderworks/gui/main_window.py" line="254"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="257"/>
+        <location filename="../ladderworks/gui/main_window.py" line="263"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="261"/>
+        <location filename="../ladderworks/gui/main_window.py" line="267"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="298"/>
+        <location filename="../ladderworks/gui/main_window.py" line="304"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="302"/>
+        <location filename="../ladderworks/gui/main_window.py" line="308"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="321"/>
+        <location filename="../ladderworks/gui/main_window.py" line="327"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="341"/>
+        <location filename="../ladderworks/gui/main_window.py" line="347"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="362"/>
+        <location filename="../ladderworks/gui/main_window.py" line="368"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="366"/>
+        <location filename="../ladderworks/gui/main_window.py" line="372"/>
         <source>&amp;Tools</source>
         <translation>&amp;Araçlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="372"/>
+        <location filename="../ladderworks/gui/main_window.py" line="378"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="377"/>
+        <location filename="../ladderworks/gui/main_window.py" line="383"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="382"/>
+        <location filename="../ladderworks/gui/main_window.py" line="388"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="622"/>
+        <location filename="../ladderworks/gui/main_window.py" line="628"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="628"/>
+        <location filename="../ladderworks/gui/main_window.py" line="634"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="633"/>
+        <location filename="../ladderworks/gui/main_window.py" line="639"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="486"/>
-        <location filename="../ladderworks/gui/main_window.py" line="629"/>
+        <location filename="../ladderworks/gui/main_window.py" line="492"/>
+        <location filename="../ladderworks/gui/main_window.py" line="635"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1371,32 +1509,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="587"/>
+        <location filename="../ladderworks/gui/main_window.py" line="593"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="606"/>
+        <location filename="../ladderworks/gui/main_window.py" line="612"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="652"/>
+        <location filename="../ladderworks/gui/main_window.py" line="658"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="655"/>
+        <location filename="../ladderworks/gui/main_window.py" line="661"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="687"/>
+        <location filename="../ladderworks/gui/main_window.py" line="693"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="688"/>
+        <location filename="../ladderworks/gui/main_window.py" line="694"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2058,6 +2196,89 @@
         <location filename="../ladderworks/gui/docks/tables.py" line="278"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
+    </message>
+</context>
+<context>
+    <name>Print</name>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="44"/>
+        <source>Untitled</source>
+        <translation>Adsız</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="62"/>
+        <source>Printing the ladder…</source>
+        <translation>Ladder yazdırılıyor…</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="63"/>
+        <source>Cancel</source>
+        <translation>İptal</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="122"/>
+        <source>Export PDF</source>
+        <translation>PDF olarak dışa aktar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="123"/>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF dosyaları (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="143"/>
+        <source>&amp;Print...</source>
+        <translation>&amp;Yazdır...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="144"/>
+        <source>Export P&amp;DF...</source>
+        <translation>P&amp;DF olarak dışa aktar...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="153"/>
+        <source>Printing was cancelled or failed</source>
+        <translation>Yazdırma iptal edildi veya başarısız oldu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="155"/>
+        <source>{0} pages written to {1}</source>
+        <translation>{0} sayfa {1} dosyasına yazıldı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="157"/>
+        <source>{0} pages sent to the printer</source>
+        <translation>{0} sayfa yazıcıya gönderildi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="234"/>
+        <source>Page {0} / {1}</source>
+        <translation>Sayfa {0} / {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="256"/>
+        <source>Cross reference</source>
+        <translation>Çapraz referans</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="259"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="260"/>
+        <source>Symbol</source>
+        <translation>Sembol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="261"/>
+        <source>Written in networks</source>
+        <translation>Yazıldığı devreler</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="262"/>
+        <source>Read in networks</source>
+        <translation>Okunduğu devreler</translation>
     </message>
 </context>
 <context>
