@@ -276,8 +276,13 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/cross_reference.py" line="240"/>
-        <source>All addresses: {0} uses</source>
-        <translation>All addresses: {0} uses</translation>
+        <source>All addresses — uses: {0}</source>
+        <translation>All addresses — uses: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="264"/>
+        <source>{0} — uses: {1} (read: {2}, written: {3})</source>
+        <translation>{0} — uses: {1} (read: {2}, written: {3})</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/cross_reference.py" line="250"/>
@@ -288,11 +293,6 @@
         <location filename="../ladderworks/gui/docks/cross_reference.py" line="261"/>
         <source>{0} is not used in the program</source>
         <translation>{0} is not used in the program</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="264"/>
-        <source>{0}: {1} uses — read {2}, written {3}</source>
-        <translation>{0}: {1} uses — read {2}, written {3}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/cross_reference.py" line="282"/>

@@ -2,7 +2,8 @@
 
 Pages are planned first (so every footer can say `Page 3 / 12`), then painted on any paged
 device (QPrinter, QPdfWriter) with the editor's own network items. The device is used at 96 dpi
-so fonts keep their screen proportions; the drawing is scaled to fit the widest network.
+so fonts keep their screen proportions; pages are scaled to fit a network of the editor's
+standard width, and a wider network is drawn smaller on its own to fit the page.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from PySide6.QtWidgets import QStyleOptionGraphicsItem
 
 from ladderworks.core.address import Address
 from ladderworks.core.il.program import Program
-from ladderworks.core.ladder.model import LadderNetwork
+from ladderworks.core.ladder.model import DEFAULT_COLUMNS, LadderNetwork
 from ladderworks.core.symbols import SymbolTable, describe
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
 from ladderworks.gui.editor.geometry import CELL_H, SPARE_ROWS, network_height, network_width
@@ -55,6 +56,7 @@ class Placement:
     y: float
     top: float
     height: float
+    scale: float = 1.0  # a network wider than the page is drawn smaller (top, height: on paper)
 
 
 @dataclass(slots=True)
@@ -115,8 +117,8 @@ class LadderPages:
 
     def __init__(self, job: PrintJob, page_width: float, page_height: float) -> None:
         self.job = job
-        widest = max((network_width(n) for n in job.networks), default=800.0)
-        self.scale = min(1.0, page_width / widest)
+        standard = network_width(LadderNetwork(columns=DEFAULT_COLUMNS))
+        self.scale = min(1.0, page_width / standard)
         self.width = page_width / self.scale  # the page in drawing units
         self.body = page_height / self.scale - HEADER_H - FOOTER_H
         self.header_font, self.small_font, self.bold_font = _fonts()
@@ -133,17 +135,18 @@ class LadderPages:
         page = Page()
         y = 0.0
         for index, network in enumerate(self.job.networks):
-            height = print_height(network)
+            scale = min(1.0, self.width / network_width(network))
+            height = print_height(network) * scale
             if y > 0 and y + height > self.body:  # a network is not split when it fits a page
                 self.pages.append(page)
                 page, y = Page(), 0.0
             top = 0.0
             while height - top > self.body - y:  # taller than a page: continued on the next
-                page.networks.append(Placement(index, y, top, self.body - y))
+                page.networks.append(Placement(index, y, top, self.body - y, scale))
                 top += self.body - y
                 self.pages.append(page)
                 page, y = Page(), 0.0
-            page.networks.append(Placement(index, y, top, height - top))
+            page.networks.append(Placement(index, y, top, height - top, scale))
             y += height - top
         if page.networks:
             self.pages.append(page)
@@ -236,11 +239,15 @@ class LadderPages:
     def _paint_network(self, painter: QPainter, placement: Placement) -> None:
         network = self.job.networks[placement.network]
         item = LabelledNetworkItem(network, placement.network + 1, self.job.describe)
+        scale = placement.scale
+        top, height = placement.top / scale, placement.height / scale  # in the item's units
         option = QStyleOptionGraphicsItem()
-        option.exposedRect = QRectF(0, placement.top, network_width(network), placement.height)
+        option.exposedRect = QRectF(0, top, network_width(network), height)
         painter.save()
         painter.setClipRect(QRectF(0, placement.y, self.width, placement.height))
-        painter.translate(0, placement.y - placement.top)
+        painter.translate(0, placement.y)
+        painter.scale(scale, scale)
+        painter.translate(0, -top)
         item.paint(painter, option, None)
         painter.restore()
 

@@ -75,7 +75,7 @@ def test_a_symbol_typed_lists_readers_and_writers(qtbot: QtBot, window: MainWind
         ("R10.2", "MYRELAY", "3", "N00003", "RST coil", "Write"),
         ("R10.2", "MYRELAY", "4", "N00004", "Contact", "Read"),
     ]
-    assert "4 uses" in dock.summary.text() and "read 2, written 2" in dock.summary.text()
+    assert dock.summary.text() == "R10.2 — uses: 4 (read: 2, written: 2)"
     _ask(qtbot, dock, "R21.0")  # a bit of MOVW's 2-byte input R20
     assert [(r[0], r[5], r[6]) for r in _rows(dock)] == [("R20:2", "MOVW input", "Read")]
     _ask(qtbot, dock, "NOSUCH")
@@ -146,3 +146,18 @@ def test_the_index_is_built_once_per_program_revision(qtbot: QtBot, window: Main
     editor.undo_stack.undo()
     _ask(qtbot, dock, "X0.1")
     assert dock.builds == 3 and dock.model.rowCount() == 1
+
+
+def test_the_dock_speaks_turkish_after_a_live_switch(qtbot: QtBot, window: MainWindow,
+                                                     tmp_path: Path) -> None:
+    dock = _open(window, tmp_path)
+    _ask(qtbot, dock, "R10.2")
+    with qtbot.waitSignal(window.language_changed):
+        window.actions_by_name["action_language_tr"].trigger()
+    assert dock.windowTitle() == "Çapraz referans"
+    assert dock.model.headerData(0, Qt.Orientation.Horizontal) == "Adres"
+    rows = _rows(dock)
+    assert (rows[0][4], rows[0][5], rows[0][6]) == ("2. seviye", "DEĞİL kontak", "Okuma")
+    assert dock.summary.text() == "R10.2 — kullanım: 4 (okuma: 2, yazma: 2)"
+    assert window.actions_by_name["action_cross_reference"].text().startswith("Bu adresin")
+    assert window.actions_by_name["action_export_pdf"].text() == "P&DF olarak dışa aktar..."

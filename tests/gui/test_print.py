@@ -13,6 +13,7 @@ from pytestqt.qtbot import QtBot
 from ladderworks.core.address import parse_address
 from ladderworks.core.ladder.model import Contact, LadderNetwork
 from ladderworks.gui import print_actions
+from ladderworks.gui.editor.geometry import network_width
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.print_pages import LadderPages, PrintJob, print_height
 from tests.real_programs import real_bytes
@@ -70,7 +71,8 @@ def test_export_pdf_of_a_real_fragment_has_its_title_labels_and_pages(
     for page in plan.pages:  # whole networks on a page, within its body
         for placement in page.networks:
             network = plan.job.networks[placement.network]
-            assert placement.top == 0 and placement.height == print_height(network)
+            assert placement.top == 0
+            assert placement.height == print_height(network) * placement.scale
             assert placement.y + placement.height <= body
     rows = {str(row.address): row for row in plan.rows}
     assert "D1602.1" in rows and "(R)" in rows["D1602.1"].written
@@ -105,3 +107,15 @@ def test_print_sends_the_pages_to_the_printer_the_dialog_chose(
     data = out.read_bytes()
     assert data.startswith(b"%PDF") and _page_count(data) == len(_plan(window).pages) == 2
     assert "pages sent to the printer" in window.statusBar().currentMessage()
+
+
+def test_a_network_wider_than_the_page_alone_is_drawn_smaller() -> None:
+    narrow = LadderNetwork(cells={(0, 0): Contact(parse_address("X0.0"))})
+    wide = LadderNetwork(columns=30, cells={(0, c): Contact(parse_address(f"R{c}.0"))
+                                            for c in range(30)})
+    job = PrintJob([narrow, wide, narrow], lambda _a: None, None, "T", "f.LAD")
+    plan = LadderPages(job, 1047, 718)  # A4 landscape less 10 mm margins, at 96 dpi
+    scales = {p.network: p.scale for page in plan.pages for p in page.networks}
+    assert scales[0] == scales[2] == 1.0 and plan.scale == 1.0
+    assert 0 < scales[1] < 1
+    assert network_width(wide) * scales[1] <= plan.width

@@ -237,7 +237,7 @@ class CrossReferenceDock(QDockWidget):
         if not text:
             xref = self.cross_reference()
             self.model.show(xref.sorted_uses(), symbols)
-            self.summary.setText(translate("CrossReference", "All addresses: {0} uses").format(
+            self.summary.setText(translate("CrossReference", "All addresses — uses: {0}").format(
                 len(xref)))
             self._fit_columns()
             return
@@ -261,7 +261,7 @@ class CrossReferenceDock(QDockWidget):
             return translate("CrossReference", "{0} is not used in the program").format(address)
         reads = sum(1 for u in uses if u.access is not Access.WRITE)
         writes = sum(1 for u in uses if u.access is not Access.READ)
-        return translate("CrossReference", "{0}: {1} uses — read {2}, written {3}").format(
+        return translate("CrossReference", "{0} — uses: {1} (read: {2}, written: {3})").format(
             address, len(uses), reads, writes)
 
     def _fit_columns(self) -> None:
