@@ -20,7 +20,14 @@ from ladderworks.core.il.program import Program
 from ladderworks.core.ladder.model import DEFAULT_COLUMNS, LadderNetwork
 from ladderworks.core.symbols import SymbolTable, describe
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
-from ladderworks.gui.editor.geometry import CELL_H, SPARE_ROWS, network_height, network_width
+from ladderworks.gui.editor.geometry import (
+    CELL_H,
+    LISTING_LINE_H,
+    SPARE_ROWS,
+    grid_top,
+    network_height,
+    network_width,
+)
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.network_item import SignalLookup
 
@@ -91,6 +98,15 @@ def print_height(network: LadderNetwork) -> float:
     return network_height(network) - spare
 
 
+def _row_cut(network: LadderNetwork, scale: float, top: float, limit: float) -> float:
+    """Where to cut a network continued on the next page: at the last row boundary (on
+    paper) after `top` and not past `limit`; at `limit` when no row boundary fits."""
+    first, step = grid_top(network), LISTING_LINE_H if network.listing is not None else CELL_H
+    rows = int((limit / scale - first) // step)
+    cut = (first + rows * step) * scale
+    return cut if top < cut <= limit else limit
+
+
 def _fonts() -> tuple[QFont, QFont, QFont]:
     header = QFont()
     header.setPointSizeF(11)
@@ -142,8 +158,9 @@ class LadderPages:
                 page, y = Page(), 0.0
             top = 0.0
             while height - top > self.body - y:  # taller than a page: continued on the next
-                page.networks.append(Placement(index, y, top, self.body - y, scale))
-                top += self.body - y
+                cut = _row_cut(network, scale, top, top + self.body - y)
+                page.networks.append(Placement(index, y, top, cut - top, scale))
+                top = cut
                 self.pages.append(page)
                 page, y = Page(), 0.0
             page.networks.append(Placement(index, y, top, height - top, scale))

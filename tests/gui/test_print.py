@@ -88,6 +88,8 @@ def test_a_network_taller_than_a_page_is_continued_on_the_next() -> None:
     assert len(parts) >= 3 and parts[0].y == 0  # starts on a fresh page, then continues
     assert sum(p.height for p in parts) == print_height(tall)
     assert [p.top for p in parts] == sorted(p.top for p in parts)
+    for part in parts[1:]:  # cut between rows, not through a contact
+        assert part.top % 60 == 0  # CELL_H: the network has no comment lines
 
 
 def test_print_sends_the_pages_to_the_printer_the_dialog_chose(
