@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 from PySide6.QtPrintSupport import QPrintDialog, QPrinter
-from PySide6.QtWidgets import QDialog, QFileDialog
+from PySide6.QtWidgets import QDialog, QFileDialog, QProgressDialog
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
@@ -121,3 +121,26 @@ def test_a_network_wider_than_the_page_alone_is_drawn_smaller() -> None:
     assert scales[0] == scales[2] == 1.0 and plan.scale == 1.0
     assert 0 < scales[1] < 1
     assert network_width(wide) * scales[1] <= plan.width
+
+
+def test_cancelling_a_long_export_leaves_no_pdf(qtbot: QtBot, window: MainWindow, tmp_path: Path,
+                                                monkeypatch: pytest.MonkeyPatch) -> None:
+    rungs = "".join(f"RD X0.{k % 8}\nOR R{k}.0\nOR R{k}.1\nWRT R{k}.2\n" for k in range(80))
+    source = tmp_path / "long.LAD"
+    source.write_text(f"%@3\n{rungs}%\n", "utf-8")
+    assert window.load(source)
+    assert len(_plan(window).pages) >= print_actions.PROGRESS_FROM_PAGES
+    asked: list[int] = []
+    original = QProgressDialog.wasCanceled
+
+    def cancel_at_page_3(self: QProgressDialog) -> bool:
+        asked.append(self.value())
+        return self.value() >= 3
+
+    monkeypatch.setattr(QProgressDialog, "wasCanceled", cancel_at_page_3)
+    pdf = tmp_path / "long.pdf"
+    assert print_actions.export_pdf(window, pdf) == 0
+    assert not pdf.exists() and asked[-1] == 3
+    monkeypatch.setattr(QProgressDialog, "wasCanceled", original)
+    assert print_actions.export_pdf(window, pdf) == len(_plan(window).pages)
+    assert _page_count(pdf.read_bytes()) == len(_plan(window).pages)
