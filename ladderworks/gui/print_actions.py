@@ -39,10 +39,10 @@ def print_job(window: QMainWindow) -> PrintJob:
     path: Path | None = getattr(window, "path", None)
     info = getattr(window, "program_info", None)
     return PrintJob(
-        networks=networks, describe=editor.describe_address, symbols=editor.symbols,
+        networks=networks, describe=editor.describe_address, symbols=editor.model.symbols,
         title=program_title(info) if isinstance(info, Program) else "",
         file_name=Path(path).name if path is not None else translate("Print", "Untitled"),
-        dialect=str(getattr(window, "dialect", "seed")))
+        dialect=editor.model.dialect)
 
 
 def _page_layout() -> QPageLayout:

@@ -40,6 +40,7 @@ from ladderworks.gui.docks.dock_menus import (
     find_menu,
     register_action,
 )
+from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.retranslated import Retranslated
 from ladderworks.gui.symbol_text import name_and_text
 
@@ -205,7 +206,7 @@ class CrossReferenceDock(QDockWidget):
         self._stale_view = True
         self.retranslate()
 
-    def invalidate(self) -> None:
+    def invalidate(self, *_changed: object) -> None:
         """The program changed: the index is built anew when next needed."""
         self._xref = None
         self._stale_view = True
@@ -314,21 +315,18 @@ def address_at(network: LadderNetwork, row: int, col: int) -> Address | None:
 def install(window: QMainWindow) -> CrossReferenceDock:
     """Add the dock (View menu), Tools › Cross reference and the ladder's context-menu entry."""
     editor = window.editor  # type: ignore[attr-defined]
-    source = ProgramSource(
-        networks=lambda: _all_networks(editor),
-        symbols=lambda: editor.symbols,
-        dialect=lambda: str(getattr(window, "dialect", "seed")))
+    model: LadderModel = editor.model
+    source = ProgramSource(networks=lambda: _all_networks(model),
+                           symbols=lambda: model.symbols, dialect=lambda: model.dialect)
     dock = CrossReferenceDock(source, window)
     add_dock(window, dock, "action_dock_cross_reference")
     errors = getattr(window, "errors", None)
     if isinstance(errors, QDockWidget):  # beside the error list: both jump into the ladder
         window.tabifyDockWidget(errors, dock)
     dock.hide()
-    editor.undo_stack.indexChanged.connect(dock.invalidate)
-    editor.drawing_changed.connect(dock.invalidate)
-    opened = getattr(window, "program_opened", None)
-    if opened is not None:
-        opened.connect(dock.invalidate)
+    for changed in (model.document_reset, model.networks_inserted, model.network_removed,
+                    model.network_changed, model.networks_changed):
+        changed.connect(dock.invalidate)
 
     def jump(network: int, cell: tuple[int, int] | None) -> None:
         if not 0 <= network < len(editor.networks):
@@ -371,9 +369,8 @@ def install(window: QMainWindow) -> CrossReferenceDock:
     return dock
 
 
-def _all_networks(editor: object) -> Sequence[LadderNetwork]:
+def _all_networks(model: LadderModel) -> Sequence[LadderNetwork]:
     """Every network of the console: a large program still laying out is finished first."""
-    if getattr(editor, "loading", False):
-        editor.finish_loading()  # type: ignore[attr-defined]
-    return editor.networks  # type: ignore[attr-defined]
-
+    if model.loading:
+        model.finish_loading()
+    return model.networks
