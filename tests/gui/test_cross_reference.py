@@ -124,9 +124,15 @@ def test_context_menu_entry_shows_the_cells_address(qtbot: QtBot, window: MainWi
     assert action in editor.context_actions
     cell = next(c for c, e in editor.networks[1].cells.items() if isinstance(e, Coil))
     editor.move_cursor(1, *cell)
-    action.trigger()
-    assert dock.isVisible() and dock.query.text() == "R10.2"
+    editor.setFocus()
+    qtbot.keyClick(editor, Qt.Key.Key_X,
+                   Qt.KeyboardModifier.ControlModifier | Qt.KeyboardModifier.ShiftModifier)
+    qtbot.waitUntil(dock.isVisible)
+    assert dock.query.text() == "R10.2" and dock.query.hasFocus()
     assert dock.model.rowCount() == 4
+    editor.move_cursor(3, 0, 5)  # an empty cell: the dock opens with its field to type in
+    action.trigger()
+    assert dock.query.hasFocus() and dock.query.selectedText() == "R10.2"
 
 
 def test_the_index_is_built_once_per_program_revision(qtbot: QtBot, window: MainWindow,
