@@ -31,6 +31,17 @@ from ladderworks.core.instructions import (
     width_of,
 )
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork
+from ladderworks.core.plc.functions.counters import (
+    counter_preset_address,
+    counter_value_address,
+    ctrb_value_address,
+)
+from ladderworks.core.plc.functions.timers import (
+    FANUC_TIMER_BYTES,
+    TIMER_BYTES,
+    timer_precision_address,
+    timer_preset_address,
+)
 
 
 class Access(StrEnum):
@@ -159,33 +170,30 @@ def function_operands(spec: InstructionSpec, params: Sequence[object],
 
 def _numbered_operands(spec: InstructionSpec, values: dict[str, object],
                        dialect: str) -> Iterator[Operand]:
-    """TMR n reads its preset (and a FANUC precision code); CTR n its preset and value."""
-    fanuc = dialect == FANUC
+    """TMR n reads its preset (and a FANUC precision code); CTR n its preset and value;
+    CTRB n its value: where the engine keeps them (core/plc/functions/timers, counters)."""
+    number = values.get("timer" if spec.name == "TMR" else "counter")
+    if not isinstance(number, int) or number <= 0:
+        return
     if spec.name == "TMR":
-        number = values.get("timer")
-        if isinstance(number, int) and number > 0:
-            size = 2 if fanuc else 4
-            yield from _area_operand(Area.T, (number - 1) * size, size, Access.READ, "preset")
-            if fanuc:
-                yield from _area_operand(Area.T, 9000 + 2 * (number - 1), 2, Access.READ,
-                                         "precision")
+        fanuc = dialect == FANUC
+        size = FANUC_TIMER_BYTES if fanuc else TIMER_BYTES
+        yield from _area_operand(timer_preset_address(number, dialect), size, Access.READ,
+                                 "preset")
+        if fanuc:
+            yield from _area_operand(timer_precision_address(number), FANUC_TIMER_BYTES,
+                                     Access.READ, "precision")
     elif spec.name == "CTR":
-        number = values.get("counter")
-        if isinstance(number, int) and number > 0:
-            first = (number - 1) * 4
-            yield from _area_operand(Area.C, first, 2, Access.READ, "preset")
-            yield from _area_operand(Area.C, first + 2, 2, Access.READ_WRITE, "value")
+        yield from _area_operand(counter_preset_address(number), 2, Access.READ, "preset")
+        yield from _area_operand(counter_value_address(number), 2, Access.READ_WRITE, "value")
     elif spec.name == "CTRB":
-        number = values.get("counter")
-        if isinstance(number, int) and number > 0:
-            yield from _area_operand(Area.C, 5000 + 2 * (number - 1), 2, Access.READ_WRITE,
-                                     "value")
+        yield from _area_operand(ctrb_value_address(number), 2, Access.READ_WRITE, "value")
 
 
-def _area_operand(area: Area, byte: int, width: int, access: Access,
+def _area_operand(address: Address, width: int, access: Access,
                   parameter: str) -> Iterator[Operand]:
-    if byte_in_range(area, byte, width):
-        yield Operand(Address(area, byte), width, UseKind.NUMBER, access, parameter)
+    if byte_in_range(address.area, address.byte, width):
+        yield Operand(address, width, UseKind.NUMBER, access, parameter)
 
 
 class _Units:
