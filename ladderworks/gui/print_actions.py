@@ -57,10 +57,17 @@ def render(job: PrintJob, device: QPagedPaintDevice, parent: QMainWindow | None 
     if not painter.begin(device):
         return 0
     pages = LadderPages(job, device.width(), device.height())
+    numbers = list(range(1, len(pages.pages) + 1))
+    if isinstance(device, QPrinter) and device.printRange() is QPrinter.PrintRange.PageRange:
+        first, last = max(device.fromPage(), 1), device.toPage() or len(pages.pages)
+        numbers = numbers[first - 1:last]  # the pages the print dialog asked for
+    if not numbers:
+        painter.end()
+        return 0
     progress: QProgressDialog | None = None
-    if parent is not None and len(pages.pages) >= PROGRESS_FROM_PAGES:
+    if parent is not None and len(numbers) >= PROGRESS_FROM_PAGES:
         progress = QProgressDialog(translate("Print", "Printing the ladder…"),
-                                   translate("Print", "Cancel"), 0, len(pages.pages), parent)
+                                   translate("Print", "Cancel"), 0, numbers[-1], parent)
         progress.setObjectName("print_progress")
         progress.setWindowModality(Qt.WindowModality.WindowModal)
         progress.setMinimumDuration(500)
@@ -71,11 +78,11 @@ def render(job: PrintJob, device: QPagedPaintDevice, parent: QMainWindow | None 
         progress.setValue(page)
         return not progress.wasCanceled()
 
-    done = pages.paint(painter, device, step)
+    done = pages.paint(painter, device, step, numbers)
     painter.end()
     if progress is not None:
         progress.close()
-    return len(pages.pages) if done else 0
+    return len(numbers) if done else 0
 
 
 def export_pdf(window: QMainWindow, path: str | Path) -> int:
@@ -112,6 +119,7 @@ def install(window: QMainWindow) -> tuple[QAction, QAction]:
         printer = new_printer()
         dialog = QPrintDialog(printer, window)
         dialog.setObjectName("print_dialog")
+        dialog.setMinMax(1, 99_999)  # the dialog offers a page range; pages are counted after
         if dialog.exec() == QDialog.DialogCode.Accepted:
             _report(window, print_ladder(window, printer), None)
 

@@ -213,10 +213,14 @@ class LadderPages:
     # -- painting ------------------------------------------------------------------------
 
     def paint(self, painter: QPainter, device: QPagedPaintDevice,
-              progress: Callable[[int], bool] | None = None) -> bool:
-        """Paint every page (False when `progress(page)` asked to stop)."""
-        for number, page in enumerate(self.pages, 1):
-            if number > 1:
+              progress: Callable[[int], bool] | None = None,
+              numbers: Sequence[int] | None = None) -> bool:
+        """Paint pages `numbers` (1-based; all by default), each numbered `n / total` of the
+        whole job (False when `progress(page)` asked to stop)."""
+        wanted = range(1, len(self.pages) + 1) if numbers is None else numbers
+        for count, number in enumerate(wanted):
+            page = self.pages[number - 1]
+            if count > 0:
                 device.newPage()
             if progress is not None and not progress(number):
                 return False

@@ -144,3 +144,23 @@ def test_cancelling_a_long_export_leaves_no_pdf(qtbot: QtBot, window: MainWindow
     monkeypatch.setattr(QProgressDialog, "wasCanceled", original)
     assert print_actions.export_pdf(window, pdf) == len(_plan(window).pages)
     assert _page_count(pdf.read_bytes()) == len(_plan(window).pages)
+
+
+def test_print_honours_the_page_range_of_the_dialog(qtbot: QtBot, window: MainWindow,
+                                                   tmp_path: Path,
+                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    assert window.load(EXAMPLES / "spindle_override.LAD")
+    out = tmp_path / "pages-2-3.pdf"
+
+    def pages_2_to_3(dialog: QPrintDialog) -> int:
+        printer = dialog.printer()
+        printer.setOutputFormat(QPrinter.OutputFormat.PdfFormat)
+        printer.setOutputFileName(str(out))
+        printer.setPrintRange(QPrinter.PrintRange.PageRange)
+        printer.setFromTo(2, 3)
+        return QDialog.DialogCode.Accepted.value
+
+    monkeypatch.setattr(QPrintDialog, "exec", pages_2_to_3)
+    window.actions_by_name["action_print"].trigger()
+    assert _page_count(out.read_bytes()) == 2 < len(_plan(window).pages)
+    assert window.statusBar().currentMessage().startswith("2 pages sent to the printer")
