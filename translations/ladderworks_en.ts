@@ -183,6 +183,144 @@
     </message>
 </context>
 <context>
+    <name>CrossReference</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <source>Contact</source>
+        <translation>Contact</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <source>NOT contact</source>
+        <translation>NOT contact</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
+        <source>Coil</source>
+        <translation>Coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
+        <source>NOT coil</source>
+        <translation>NOT coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
+        <source>SET coil</source>
+        <translation>SET coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="69"/>
+        <source>RST coil</source>
+        <translation>RST coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="79"/>
+        <source>Read</source>
+        <translation>Read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="81"/>
+        <source>Write</source>
+        <translation>Write</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="82"/>
+        <source>Read and write</source>
+        <translation>Read and write</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="88"/>
+        <source>Level {0}</source>
+        <translation>Level {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <source>Symbol</source>
+        <translation>Symbol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
+        <source>Network</source>
+        <translation>Network</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
+        <source>Label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
+        <source>Program part</source>
+        <translation>Program part</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
+        <source>Element</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
+        <source>Access</source>
+        <translation>Access</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="129"/>
+        <source>Comment</source>
+        <translation>Comment</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="242"/>
+        <source>All addresses — uses: {0}</source>
+        <translation>All addresses — uses: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="252"/>
+        <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
+        <translation>&apos;{0}&apos; is neither an address nor a symbol of the program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <source>{0} is not used in the program</source>
+        <translation>{0} is not used in the program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="266"/>
+        <source>{0} — uses: {1} (read: {2}, written: {3})</source>
+        <translation>{0} — uses: {1} (read: {2}, written: {3})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="284"/>
+        <source>Cross reference</source>
+        <translation>Cross reference</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="285"/>
+        <source>&amp;Address or symbol:</source>
+        <translation>&amp;Address or symbol:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="286"/>
+        <source>e.g. X21.7, R100, ESKIP</source>
+        <translation>e.g. X21.7, R100, ESKIP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="364"/>
+        <source>Cross &amp;reference of this address</source>
+        <translation>Cross &amp;reference of this address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="365"/>
+        <source>List every place the program reads and writes the address</source>
+        <translation>List every place the program reads and writes the address</translation>
+    </message>
+</context>
+<context>
     <name>Diagnostic</name>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="74"/>
@@ -1123,239 +1261,239 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="161"/>
+        <location filename="../ladderworks/gui/main_window.py" line="167"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/main_window.py" line="168"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <location filename="../ladderworks/gui/main_window.py" line="169"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="166"/>
+        <location filename="../ladderworks/gui/main_window.py" line="172"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="172"/>
+        <location filename="../ladderworks/gui/main_window.py" line="178"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="177"/>
+        <location filename="../ladderworks/gui/main_window.py" line="183"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="182"/>
+        <location filename="../ladderworks/gui/main_window.py" line="188"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/main_window.py" line="193"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;properties...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="190"/>
+        <location filename="../ladderworks/gui/main_window.py" line="196"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="195"/>
+        <location filename="../ladderworks/gui/main_window.py" line="201"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="203"/>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="204"/>
+        <location filename="../ladderworks/gui/main_window.py" line="210"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="205"/>
+        <location filename="../ladderworks/gui/main_window.py" line="211"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="212"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="207"/>
+        <location filename="../ladderworks/gui/main_window.py" line="213"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="210"/>
+        <location filename="../ladderworks/gui/main_window.py" line="216"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="215"/>
+        <location filename="../ladderworks/gui/main_window.py" line="221"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="222"/>
+        <location filename="../ladderworks/gui/main_window.py" line="228"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="229"/>
+        <location filename="../ladderworks/gui/main_window.py" line="235"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
+        <location filename="../ladderworks/gui/main_window.py" line="242"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <location filename="../ladderworks/gui/main_window.py" line="247"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="243"/>
+        <location filename="../ladderworks/gui/main_window.py" line="249"/>
         <source>&amp;Find...</source>
         <translation>&amp;Find...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/main_window.py" line="251"/>
         <source>R&amp;eplace...</source>
         <translation>R&amp;eplace...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="247"/>
+        <location filename="../ladderworks/gui/main_window.py" line="253"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="248"/>
+        <location filename="../ladderworks/gui/main_window.py" line="254"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="251"/>
+        <location filename="../ladderworks/gui/main_window.py" line="257"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="255"/>
+        <location filename="../ladderworks/gui/main_window.py" line="261"/>
         <source>Fit &amp;width</source>
         <translation>Fit &amp;width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="263"/>
+        <location filename="../ladderworks/gui/main_window.py" line="269"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="269"/>
+        <location filename="../ladderworks/gui/main_window.py" line="275"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="273"/>
+        <location filename="../ladderworks/gui/main_window.py" line="279"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="276"/>
+        <location filename="../ladderworks/gui/main_window.py" line="282"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="285"/>
+        <location filename="../ladderworks/gui/main_window.py" line="291"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="289"/>
+        <location filename="../ladderworks/gui/main_window.py" line="295"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="327"/>
+        <location filename="../ladderworks/gui/main_window.py" line="333"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="331"/>
+        <location filename="../ladderworks/gui/main_window.py" line="337"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="350"/>
+        <location filename="../ladderworks/gui/main_window.py" line="356"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="373"/>
+        <location filename="../ladderworks/gui/main_window.py" line="379"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="401"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="405"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="405"/>
+        <location filename="../ladderworks/gui/main_window.py" line="411"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="410"/>
+        <location filename="../ladderworks/gui/main_window.py" line="416"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="415"/>
+        <location filename="../ladderworks/gui/main_window.py" line="421"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="466"/>
+        <location filename="../ladderworks/gui/main_window.py" line="471"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="686"/>
+        <location filename="../ladderworks/gui/main_window.py" line="687"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="692"/>
+        <location filename="../ladderworks/gui/main_window.py" line="693"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="697"/>
+        <location filename="../ladderworks/gui/main_window.py" line="698"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="429"/>
-        <location filename="../ladderworks/gui/main_window.py" line="552"/>
-        <location filename="../ladderworks/gui/main_window.py" line="693"/>
+        <location filename="../ladderworks/gui/main_window.py" line="553"/>
+        <location filename="../ladderworks/gui/main_window.py" line="694"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -1494,32 +1632,32 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="656"/>
+        <location filename="../ladderworks/gui/main_window.py" line="657"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="672"/>
+        <location filename="../ladderworks/gui/main_window.py" line="673"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="723"/>
+        <location filename="../ladderworks/gui/main_window.py" line="724"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="726"/>
+        <location filename="../ladderworks/gui/main_window.py" line="727"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="758"/>
+        <location filename="../ladderworks/gui/main_window.py" line="759"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="759"/>
+        <location filename="../ladderworks/gui/main_window.py" line="760"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2267,6 +2405,89 @@
     </message>
 </context>
 <context>
+    <name>Print</name>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="44"/>
+        <source>Untitled</source>
+        <translation>Untitled</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="69"/>
+        <source>Printing the ladder…</source>
+        <translation>Printing the ladder…</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="70"/>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="130"/>
+        <source>Export PDF</source>
+        <translation>Export PDF</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="131"/>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF files (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="151"/>
+        <source>&amp;Print...</source>
+        <translation>&amp;Print...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="152"/>
+        <source>Export P&amp;DF...</source>
+        <translation>Export P&amp;DF...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="161"/>
+        <source>Printing was cancelled or failed</source>
+        <translation>Printing was cancelled or failed</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="163"/>
+        <source>{0} pages written to {1}</source>
+        <translation>{0} pages written to {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="165"/>
+        <source>{0} pages sent to the printer</source>
+        <translation>{0} pages sent to the printer</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="258"/>
+        <source>Page {0} / {1}</source>
+        <translation>Page {0} / {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="284"/>
+        <source>Cross reference</source>
+        <translation>Cross reference</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="287"/>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="288"/>
+        <source>Symbol</source>
+        <translation>Symbol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="289"/>
+        <source>Written in networks</source>
+        <translation>Written in networks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="290"/>
+        <source>Read in networks</source>
+        <translation>Read in networks</translation>
+    </message>
+</context>
+<context>
     <name>ProgramProperties</name>
     <message>
         <location filename="../ladderworks/gui/program_properties.py" line="28"/>
@@ -2806,32 +3027,32 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="157"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="179"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="216"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="348"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="347"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
@@ -2876,77 +3097,77 @@
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="416"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="417"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="418"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="419"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="421"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="422"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="423"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="424"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="425"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="426"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="427"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="428"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="442"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>

@@ -183,6 +183,144 @@
     </message>
 </context>
 <context>
+    <name>CrossReference</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <source>Contact</source>
+        <translation>Kontak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <source>NOT contact</source>
+        <translation>DEĞİL kontak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
+        <source>Coil</source>
+        <translation>Çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
+        <source>NOT coil</source>
+        <translation>DEĞİL çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
+        <source>SET coil</source>
+        <translation>SET çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="69"/>
+        <source>RST coil</source>
+        <translation>RST çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="79"/>
+        <source>Read</source>
+        <translation>Okuma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="81"/>
+        <source>Write</source>
+        <translation>Yazma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="82"/>
+        <source>Read and write</source>
+        <translation>Okuma ve yazma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="88"/>
+        <source>Level {0}</source>
+        <translation>{0}. seviye</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <source>Symbol</source>
+        <translation>Sembol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
+        <source>Network</source>
+        <translation>Devre</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
+        <source>Label</source>
+        <translation>Etiket</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
+        <source>Program part</source>
+        <translation>Program bölümü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
+        <source>Element</source>
+        <translation>Eleman</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
+        <source>Access</source>
+        <translation>Erişim</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="129"/>
+        <source>Comment</source>
+        <translation>Yorum</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="242"/>
+        <source>All addresses — uses: {0}</source>
+        <translation>Tüm adresler — kullanım: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="252"/>
+        <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
+        <translation>&apos;{0}&apos; ne bir adres ne de programın bir sembolü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <source>{0} is not used in the program</source>
+        <translation>{0} programda kullanılmıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="266"/>
+        <source>{0} — uses: {1} (read: {2}, written: {3})</source>
+        <translation>{0} — kullanım: {1} (okuma: {2}, yazma: {3})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="284"/>
+        <source>Cross reference</source>
+        <translation>Çapraz referans</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="285"/>
+        <source>&amp;Address or symbol:</source>
+        <translation>&amp;Adres veya sembol:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="286"/>
+        <source>e.g. X21.7, R100, ESKIP</source>
+        <translation>örn. X21.7, R100, ESKIP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="364"/>
+        <source>Cross &amp;reference of this address</source>
+        <translation>Bu adresin çapraz &amp;referansı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="365"/>
+        <source>List every place the program reads and writes the address</source>
+        <translation>Programın adresi okuduğu ve yazdığı her yeri listeler</translation>
+    </message>
+</context>
+<context>
     <name>Diagnostic</name>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="74"/>
@@ -1123,239 +1261,239 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="161"/>
+        <location filename="../ladderworks/gui/main_window.py" line="167"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/main_window.py" line="168"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <location filename="../ladderworks/gui/main_window.py" line="169"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="166"/>
+        <location filename="../ladderworks/gui/main_window.py" line="172"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="172"/>
+        <location filename="../ladderworks/gui/main_window.py" line="178"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="177"/>
+        <location filename="../ladderworks/gui/main_window.py" line="183"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="182"/>
+        <location filename="../ladderworks/gui/main_window.py" line="188"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/main_window.py" line="193"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;özellikleri...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="190"/>
+        <location filename="../ladderworks/gui/main_window.py" line="196"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="195"/>
+        <location filename="../ladderworks/gui/main_window.py" line="201"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="203"/>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="204"/>
+        <location filename="../ladderworks/gui/main_window.py" line="210"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="205"/>
+        <location filename="../ladderworks/gui/main_window.py" line="211"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="206"/>
+        <location filename="../ladderworks/gui/main_window.py" line="212"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="207"/>
+        <location filename="../ladderworks/gui/main_window.py" line="213"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="210"/>
+        <location filename="../ladderworks/gui/main_window.py" line="216"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="215"/>
+        <location filename="../ladderworks/gui/main_window.py" line="221"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="222"/>
+        <location filename="../ladderworks/gui/main_window.py" line="228"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="229"/>
+        <location filename="../ladderworks/gui/main_window.py" line="235"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
+        <location filename="../ladderworks/gui/main_window.py" line="242"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <location filename="../ladderworks/gui/main_window.py" line="247"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="243"/>
+        <location filename="../ladderworks/gui/main_window.py" line="249"/>
         <source>&amp;Find...</source>
         <translation>&amp;Bul...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/main_window.py" line="251"/>
         <source>R&amp;eplace...</source>
         <translation>&amp;Değiştir...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="247"/>
+        <location filename="../ladderworks/gui/main_window.py" line="253"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="248"/>
+        <location filename="../ladderworks/gui/main_window.py" line="254"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="251"/>
+        <location filename="../ladderworks/gui/main_window.py" line="257"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="255"/>
+        <location filename="../ladderworks/gui/main_window.py" line="261"/>
         <source>Fit &amp;width</source>
         <translation>&amp;Genişliğe sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="263"/>
+        <location filename="../ladderworks/gui/main_window.py" line="269"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="269"/>
+        <location filename="../ladderworks/gui/main_window.py" line="275"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="273"/>
+        <location filename="../ladderworks/gui/main_window.py" line="279"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="276"/>
+        <location filename="../ladderworks/gui/main_window.py" line="282"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="285"/>
+        <location filename="../ladderworks/gui/main_window.py" line="291"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="289"/>
+        <location filename="../ladderworks/gui/main_window.py" line="295"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="327"/>
+        <location filename="../ladderworks/gui/main_window.py" line="333"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="331"/>
+        <location filename="../ladderworks/gui/main_window.py" line="337"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="350"/>
+        <location filename="../ladderworks/gui/main_window.py" line="356"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="373"/>
+        <location filename="../ladderworks/gui/main_window.py" line="379"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="401"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="405"/>
         <source>&amp;Tools</source>
         <translation>&amp;Araçlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="405"/>
+        <location filename="../ladderworks/gui/main_window.py" line="411"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="410"/>
+        <location filename="../ladderworks/gui/main_window.py" line="416"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="415"/>
+        <location filename="../ladderworks/gui/main_window.py" line="421"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="466"/>
+        <location filename="../ladderworks/gui/main_window.py" line="471"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="686"/>
+        <location filename="../ladderworks/gui/main_window.py" line="687"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="692"/>
+        <location filename="../ladderworks/gui/main_window.py" line="693"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="697"/>
+        <location filename="../ladderworks/gui/main_window.py" line="698"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="429"/>
-        <location filename="../ladderworks/gui/main_window.py" line="552"/>
-        <location filename="../ladderworks/gui/main_window.py" line="693"/>
+        <location filename="../ladderworks/gui/main_window.py" line="553"/>
+        <location filename="../ladderworks/gui/main_window.py" line="694"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1494,32 +1632,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="656"/>
+        <location filename="../ladderworks/gui/main_window.py" line="657"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="672"/>
+        <location filename="../ladderworks/gui/main_window.py" line="673"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="723"/>
+        <location filename="../ladderworks/gui/main_window.py" line="724"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="726"/>
+        <location filename="../ladderworks/gui/main_window.py" line="727"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="758"/>
+        <location filename="../ladderworks/gui/main_window.py" line="759"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="759"/>
+        <location filename="../ladderworks/gui/main_window.py" line="760"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2267,6 +2405,89 @@
     </message>
 </context>
 <context>
+    <name>Print</name>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="44"/>
+        <source>Untitled</source>
+        <translation>Adsız</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="69"/>
+        <source>Printing the ladder…</source>
+        <translation>Ladder yazdırılıyor…</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="70"/>
+        <source>Cancel</source>
+        <translation>İptal</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="130"/>
+        <source>Export PDF</source>
+        <translation>PDF olarak dışa aktar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="131"/>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF dosyaları (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="151"/>
+        <source>&amp;Print...</source>
+        <translation>&amp;Yazdır...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="152"/>
+        <source>Export P&amp;DF...</source>
+        <translation>P&amp;DF olarak dışa aktar...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="161"/>
+        <source>Printing was cancelled or failed</source>
+        <translation>Yazdırma iptal edildi veya başarısız oldu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="163"/>
+        <source>{0} pages written to {1}</source>
+        <translation>{0} sayfa {1} dosyasına yazıldı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="165"/>
+        <source>{0} pages sent to the printer</source>
+        <translation>{0} sayfa yazıcıya gönderildi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="258"/>
+        <source>Page {0} / {1}</source>
+        <translation>Sayfa {0} / {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="284"/>
+        <source>Cross reference</source>
+        <translation>Çapraz referans</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="287"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="288"/>
+        <source>Symbol</source>
+        <translation>Sembol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="289"/>
+        <source>Written in networks</source>
+        <translation>Yazıldığı devreler</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="290"/>
+        <source>Read in networks</source>
+        <translation>Okunduğu devreler</translation>
+    </message>
+</context>
+<context>
     <name>ProgramProperties</name>
     <message>
         <location filename="../ladderworks/gui/program_properties.py" line="28"/>
@@ -2806,32 +3027,32 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="157"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="179"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="216"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="348"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="347"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
@@ -2876,77 +3097,77 @@
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="416"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="417"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="418"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="419"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="421"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="422"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="423"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="424"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="425"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="426"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="427"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="428"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="442"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>

@@ -106,6 +106,12 @@ class MainWindow(FileActions, QMainWindow):
         from ladderworks.gui.docks import install_plc_docks  # the PLC docks (issues 7, 8)
 
         self.plc_docks = install_plc_docks(self)
+        from ladderworks.gui.docks import cross_reference  # issue 18: xref dock, Tools menu
+
+        self.cross_reference = cross_reference.install(self)
+        from ladderworks.gui import print_actions  # issue 18: File › Print, Export PDF
+
+        print_actions.install(self)
         # PMC parameters (T/C/K/D set in the PLC tables) are saved with the program
         self.parameters = ParameterDocument(self.plc_docks.session)
         self.plc_docks.session.parameters_changed.connect(self._update_title)
