@@ -424,6 +424,7 @@ class LadderEditor(QGraphicsView):
             )
 
     def _place_bit(self, index: int, row: int, col: int, element: Contact | Coil) -> None:
+        row, col = core.target_cell(self.networks[index], row, col, element)  # coil: the rail
         found = self.networks[index].element_at(row, col)
         if found is not None and type(found[1]) is type(element):
             old = found[1]
@@ -444,7 +445,7 @@ class LadderEditor(QGraphicsView):
             if isinstance(element, Contact)
             else translate("LadderEditor", "Place coil")
         )
-        if self.run_edit(index, lambda n: core.place(n, row, col, element), text):
+        if self.run_edit(index, lambda n: core.place_wired(n, row, col, element), text):
             self.open_address_editor(index, row, col)
 
     def _add_parallel(self, index: int, row: int, col: int) -> None:
@@ -511,7 +512,7 @@ class LadderEditor(QGraphicsView):
                 element = FunctionBox.new(spec.name, instruction.params, dialog.comment_text)
                 self.run_edit(
                     index,
-                    lambda n: core.place(n, row, col, element),
+                    lambda n: core.place_wired(n, row, col, element),
                     translate("LadderEditor", "Place {0}").format(spec.name),
                 )
             else:
