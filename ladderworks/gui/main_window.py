@@ -26,6 +26,7 @@ from ladderworks.core.il import Program, print_program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step, questions
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
+from ladderworks.gui.editor.name_menu import NameDisplayMenu
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
@@ -349,6 +350,8 @@ class MainWindow(FileActions, QMainWindow):
                 None,
             ],
         )
+        view.addMenu(NameDisplayMenu(self.settings, self))  # element names (issue 18)
+        view.addSeparator()
         for dock, name in (
             (self.tool_palette, "action_dock_palette"),
             (self.errors, "action_dock_errors"),

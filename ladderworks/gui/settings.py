@@ -62,3 +62,13 @@ class Settings:
         self._store.setValue("window/geometry", geometry)
         self._store.setValue("window/state", state)
         self._store.sync()
+
+    def name_display(self) -> str:
+        """What the ladder shows with each element ("address", "symbol", "comment"), or ""."""
+        value = self._store.value("view/names", "")
+        return str(value) if isinstance(value, str) else ""
+
+    def set_name_display(self, value: str) -> None:
+        """Remember what the ladder shows with each element."""
+        self._store.setValue("view/names", value)
+        self._store.sync()

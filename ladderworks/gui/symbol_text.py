@@ -3,25 +3,22 @@
 from __future__ import annotations
 
 from ladderworks.core.address import Address
+from ladderworks.core.naming import address_names
 from ladderworks.core.signals import signal_at
 from ladderworks.core.symbols import SymbolTable, describe
 from ladderworks.gui.translation import ui_is_turkish
 
 
 def name_and_text(address: object, symbols: SymbolTable | None) -> tuple[str, str] | None:
-    """(name, description): the program's symbol and comment, else the manual's signal name
-    and its description in the UI language; None for an address with neither."""
+    """(name, description): the program's symbol and comment, each falling back to the manual's
+    signal name and its description in the UI language (`core.naming`); None for an address
+    with neither."""
     if not isinstance(address, Address):
         return None
-    if symbols is not None:
-        found = symbols.lookup(address)
-        if found is not None and found.symbol:
-            return found.symbol, " / ".join(found.comments)
-    signal = signal_at(address)
-    if signal is None:
+    names = address_names(address, symbols, turkish=ui_is_turkish())
+    if not names.symbol and not names.comment:
         return None
-    own = signal.turkish if ui_is_turkish() else signal.english
-    return signal.name, own or signal.english
+    return names.symbol, names.comment
 
 
 def labelled(address: Address, symbols: SymbolTable | None) -> str:

@@ -13,13 +13,17 @@ from ladderworks.core.ladder.power import powered_nets
 class OpenEnd:
     """A break in the circuit at a cell.
 
-    `gap` is True for an empty cell the circuit should cross (a wire or an element is missing
-    there); otherwise the element in the cell has an open `side` ("left": nothing feeds it,
-    "right": it leads nowhere)."""
+    `side` is "gap" for an empty cell the circuit should cross (a wire or an element is
+    missing there); otherwise the element in the cell is open on that side ("left": nothing
+    feeds it, "right": it leads nowhere)."""
 
     cell: Cell
     side: str
-    gap: bool
+
+    @property
+    def gap(self) -> bool:
+        """True for an empty cell where the circuit breaks."""
+        return self.side == "gap"
 
 
 def _nodes_by_net(network: LadderNetwork, nets: NodeNets) -> dict[int, list[Cell]]:
@@ -73,15 +77,15 @@ def open_ends(network: LadderNetwork) -> list[OpenEnd]:
     for net in unfed:
         row, node = min(nodes[net], key=lambda n: (n[1], n[0]))
         if node >= 1 and network.element_at(row, node - 1) is None:
-            marks.append(OpenEnd((row, node - 1), "right", True))
+            marks.append(OpenEnd((row, node - 1), "gap"))
         else:
-            marks.append(OpenEnd((row, node), "left", False))
+            marks.append(OpenEnd((row, node), "left"))
     for net in dead:
         row, node = min(nodes[net], key=lambda n: (-n[1], n[0]))
         if node <= network.coil_column and network.element_at(row, node) is None:
-            marks.append(OpenEnd((row, node), "left", True))
+            marks.append(OpenEnd((row, node), "gap"))
         else:
-            marks.append(OpenEnd((row, node - 1), "right", False))
+            marks.append(OpenEnd((row, node - 1), "right"))
     return sorted(set(marks), key=lambda mark: mark.cell)
 
 

@@ -12,17 +12,21 @@ from ladderworks.core.il import print_instruction
 from ladderworks.core.il.printer import format_params
 from ladderworks.core.instructions import Write
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
+from ladderworks.core.ladder.open_circuit import OpenEnd, open_ends
 from ladderworks.gui.editor.geometry import (
-    CELL_H,
     CELL_W,
     COMMENT_H,
     LEFT,
     LISTING_LINE_H,
+    cell_h,
     cell_origin,
     grid_top,
     network_height,
     network_width,
+    row_metrics,
+    wire_y,
 )
+from ladderworks.gui.editor.label_text import wrapped
 from ladderworks.gui.translation import instruction_label
 
 INK = QColor("#1a1a1a")
@@ -49,6 +53,13 @@ def _fonts() -> tuple[QFont, QFont, QFont]:
     return label, small, comment
 
 
+def _element_comment_font() -> QFont:
+    font = QFont()
+    font.setPointSizeF(7.5)
+    font.setItalic(True)
+    return font
+
+
 class NetworkItem(QGraphicsItem):
     """Paints one LadderNetwork; its number and hints come from the view."""
 
@@ -59,11 +70,13 @@ class NetworkItem(QGraphicsItem):
         self.describe = describe
         self.error_cells: set[tuple[int, int]] = set()
         self.is_new = False  # the empty network at the end, where a new one is drawn
+        self.open_ends: list[OpenEnd] = open_ends(network)  # breaks marked as the user draws
         self._size = (network_width(network), network_height(network))
         self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemUsesExtendedStyleOption, True)
 
     def refresh(self) -> None:
-        """The network changed: recompute the size and repaint."""
+        """The network changed (or the rows did): recompute the marks and size, repaint."""
+        self.open_ends = open_ends(self.network)
         size = (network_width(self.network), network_height(self.network))
         if size != self._size:
             self.prepareGeometryChange()
@@ -88,13 +101,13 @@ class NetworkItem(QGraphicsItem):
         top = grid_top(net)
         painter.setFont(label_font)
         painter.setPen(EMPTY_HINT if self.is_new else RAIL)
-        painter.drawText(QRectF(0, top, LEFT - 8, CELL_H / 2),
+        painter.drawText(QRectF(0, top, LEFT - 8, wire_y()),
                          Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter,
                          "+" if self.is_new else f"N{self.number}")
         if net.listing is not None:
             self._paint_listing(painter, top)
             return
-        bottom = top + net.rows * CELL_H
+        bottom = top + net.rows * cell_h()
         right = LEFT + (net.columns + 1) * CELL_W
         rail = QPen(EMPTY_HINT if self.is_new else RAIL, 3)
         painter.setPen(rail)
@@ -110,16 +123,16 @@ class NetworkItem(QGraphicsItem):
         painter.setPen(ink)
         for row, node in net.links:
             x = LEFT + node * CELL_W
-            y1 = top + row * CELL_H + CELL_H / 2
-            painter.drawLine(QPointF(x, y1), QPointF(x, y1 + CELL_H))
+            y1 = top + row * cell_h() + wire_y()
+            painter.drawLine(QPointF(x, y1), QPointF(x, y1 + cell_h()))
         exposed = option.exposedRect
         for (row, col), element in net.elements():
             x, y = cell_origin(net, row, col)
-            if not exposed.intersects(QRectF(x, y, CELL_W * 2, CELL_H * 8)):
+            if not exposed.intersects(QRectF(x, y, CELL_W * 2, cell_h() * 8)):
                 continue
             painter.setPen(ink)
             if isinstance(element, Wire):
-                painter.drawLine(QPointF(x, y + CELL_H / 2), QPointF(x + CELL_W, y + CELL_H / 2))
+                painter.drawLine(QPointF(x, y + wire_y()), QPointF(x + CELL_W, y + wire_y()))
             elif isinstance(element, Contact):
                 self._paint_contact(painter, element, x, y, label_font, small_font)
             elif isinstance(element, Coil):
@@ -131,29 +144,63 @@ class NetworkItem(QGraphicsItem):
             painter.setBrush(Qt.BrushStyle.NoBrush)
             for row, col in self.error_cells:
                 x, y = cell_origin(net, row, col)
-                painter.drawRect(QRectF(x + 2, y + 2, CELL_W - 4, CELL_H - 4))
+                painter.drawRect(QRectF(x + 2, y + 2, CELL_W - 4, cell_h() - 4))
+        if self.open_ends and not self.is_new:
+            self._paint_open_ends(painter)
+
+    def _paint_open_ends(self, painter: QPainter) -> None:
+        """A red dashed gap across an empty cell where the circuit breaks, or a red bar and
+        cross on the open side of an element."""
+        mid = wire_y()
+        for mark in self.open_ends:
+            x, y = cell_origin(self.network, *mark.cell)
+            if mark.gap:
+                painter.setPen(QPen(ERROR, 2, Qt.PenStyle.DashLine))
+                painter.drawLine(QPointF(x + 4, y + mid), QPointF(x + CELL_W - 4, y + mid))
+                centre = QPointF(x + CELL_W / 2, y + mid)
+            else:
+                centre = QPointF(x + (3 if mark.side == "left" else CELL_W - 3), y + mid)
+            painter.setPen(QPen(ERROR, 2))
+            painter.drawLine(centre + QPointF(-4, -4), centre + QPointF(4, 4))
+            painter.drawLine(centre + QPointF(-4, 4), centre + QPointF(4, -4))
 
     def _labels(self, painter: QPainter, element: Contact | Coil, x: float, y: float,
                 label_font: QFont, small_font: QFont) -> None:
+        """The address above the element; under it, as the View chooses, its symbol and up to
+        two wrapped lines of comment (its own, else the program's, else the manual's)."""
         painter.setFont(label_font)
         painter.setPen(INK if element.address is not None else ERROR)
         text = str(element.address) if element.address is not None else "?"
         painter.drawText(QRectF(x, y + 1, CELL_W, 16), Qt.AlignmentFlag.AlignCenter, text)
-        below = element.comment
+        rows = row_metrics()
+        if not rows.symbol:
+            return
         described = self.describe(element.address) if element.address is not None else None
-        if described is not None:
-            below = described[0] + (f" {element.comment}" if element.comment else "")
-        if below:
+        symbol = described[0] if described is not None else ""
+        comment = element.comment or (described[1] if described is not None else "")
+        below = y + rows.wire + 12
+        metrics = QFontMetricsF(small_font)
+        if rows.comment_lines == 0:  # the symbol, else the element's comment, on one line
+            symbol = symbol or element.comment
+        if symbol:
             painter.setFont(small_font)
             painter.setPen(NAME)
-            metrics = QFontMetricsF(small_font)
-            elided = metrics.elidedText(below, Qt.TextElideMode.ElideRight, CELL_W - 4)
-            painter.drawText(QRectF(x + 2, y + CELL_H - 16, CELL_W - 4, 14),
-                             Qt.AlignmentFlag.AlignCenter, elided)
+            painter.drawText(QRectF(x + 2, below, CELL_W - 4, 13), Qt.AlignmentFlag.AlignCenter,
+                             metrics.elidedText(symbol, Qt.TextElideMode.ElideRight, CELL_W - 4))
+        below += 13
+        if rows.comment_lines and comment:
+            font = _element_comment_font()
+            painter.setFont(font)
+            painter.setPen(COMMENT)
+            line_h = 12.0
+            for index, line in enumerate(wrapped(comment, QFontMetricsF(font), CELL_W - 6,
+                                                 rows.comment_lines)):
+                painter.drawText(QRectF(x + 1, below + index * line_h, CELL_W - 2, line_h),
+                                 Qt.AlignmentFlag.AlignCenter, line)
 
     def _paint_contact(self, painter: QPainter, element: Contact, x: float, y: float,
                        label_font: QFont, small_font: QFont) -> None:
-        mid = y + CELL_H / 2
+        mid = y + wire_y()
         left, right = x + CELL_W / 2 - 8, x + CELL_W / 2 + 8
         painter.drawLine(QPointF(x, mid), QPointF(left, mid))
         painter.drawLine(QPointF(right, mid), QPointF(x + CELL_W, mid))
@@ -165,7 +212,7 @@ class NetworkItem(QGraphicsItem):
 
     def _paint_coil(self, painter: QPainter, element: Coil, x: float, y: float, col: int,
                     label_font: QFont, small_font: QFont) -> None:
-        mid = y + CELL_H / 2
+        mid = y + wire_y()
         left, right = x + CELL_W / 2 - 10, x + CELL_W / 2 + 10
         painter.drawLine(QPointF(x, mid), QPointF(left, mid))
         end = x + CELL_W if col >= self.network.columns else right + 6
@@ -183,7 +230,7 @@ class NetworkItem(QGraphicsItem):
     def _paint_box(self, painter: QPainter, box: FunctionBox, x: float, y: float,
                    label_font: QFont, small_font: QFont) -> None:
         width = box.width * CELL_W
-        height = box.height * CELL_H
+        height = box.height * cell_h()
         rect = QRectF(x + 10, y + 6, width - 20, height - 12)
         painter.setBrush(BOX_FILL)
         painter.drawRect(rect)
@@ -191,11 +238,11 @@ class NetworkItem(QGraphicsItem):
         painter.setFont(small_font)
         for index, name in enumerate(box.inputs):
             pin = box.pins[index] if index < len(box.pins) else index
-            py = y + pin * CELL_H + CELL_H / 2
+            py = y + pin * cell_h() + wire_y()
             painter.drawLine(QPointF(x, py), QPointF(x + 10, py))
             painter.drawText(QRectF(x + 12, py - 7, 60, 14), Qt.AlignmentFlag.AlignLeft, name)
         if box.has_output:
-            py = y + CELL_H / 2
+            py = y + wire_y()
             painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
             painter.drawText(QRectF(x + width - 40, py - 7, 28, 14),
                              Qt.AlignmentFlag.AlignRight, "W1")
@@ -210,13 +257,15 @@ class NetworkItem(QGraphicsItem):
                              Qt.AlignmentFlag.AlignHCenter,
                              metrics.elidedText(params, Qt.TextElideMode.ElideRight,
                                                 rect.width() - 8))
-        if box.comment:
+        rows = row_metrics()
+        if box.comment and rows.symbol:
             pen = painter.pen()
             painter.setPen(NAME)
-            painter.drawText(QRectF(rect.left() + 4, rect.top() + 18, rect.width() - 8, 14),
-                             Qt.AlignmentFlag.AlignHCenter,
-                             metrics.elidedText(box.comment, Qt.TextElideMode.ElideRight,
-                                                rect.width() - 8))
+            for index, line in enumerate(wrapped(box.comment, metrics, rect.width() - 8,
+                                                 max(1, rows.comment_lines))):
+                painter.drawText(QRectF(rect.left() + 4, rect.top() + 18 + index * 12,
+                                        rect.width() - 8, 12),
+                                 Qt.AlignmentFlag.AlignHCenter, line)
             painter.setPen(pen)
 
     def _paint_listing(self, painter: QPainter, top: float) -> None:

@@ -52,7 +52,6 @@ from ladderworks.core.symbols import SymbolTable, resolve
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
 from ladderworks.gui.editor.geometry import (
-    CELL_H,
     CELL_W,
     COMMENT_H,
     LEFT,
@@ -60,6 +59,7 @@ from ladderworks.gui.editor.geometry import (
     Hit,
     Layout,
     cell_centre,
+    cell_h,
     cell_origin,
     grid_top,
     node_point,
@@ -254,8 +254,8 @@ class LadderEditor(QGraphicsView):
         if not self.networks or not self.layout_.tops:
             return
         shown = self.mapToScene(self.viewport().rect()).boundingRect()
-        first = self.layout_.network_at(shown.top() - CELL_H)
-        last = self.layout_.network_at(shown.bottom() + CELL_H)
+        first = self.layout_.network_at(shown.top() - cell_h())
+        last = self.layout_.network_at(shown.bottom() + cell_h())
         for index in range(first, min(last, len(self.networks) - 1) + 1):
             self.network_items[index]
 
@@ -292,6 +292,12 @@ class LadderEditor(QGraphicsView):
     def _update_scene_rect(self) -> None:
         widest = max(800, *(LEFT + (n.columns + 1) * CELL_W + 8 for n in self.networks))
         self._scene.setSceneRect(QRectF(-4, -4, widest + 8, self.layout_.total_height() + 40))
+
+    def relayout(self) -> None:
+        """The rows changed height (View › Element names): lay every network out again."""
+        for _index, item in self.network_items.made():
+            item.refresh()
+        self._relayout(0)
 
     def network_changed(self, index: int) -> None:
         """A command changed network `index`: repaint and restack from it."""
@@ -792,7 +798,7 @@ class LadderEditor(QGraphicsView):
     def cell_rect(self, index: int, row: int, col: int) -> QRectF:
         """A cell's rectangle in scene coordinates."""
         x, y = cell_origin(self.networks[index], row, col)
-        return QRectF(x, self.layout_.tops[index] + y, CELL_W, CELL_H)
+        return QRectF(x, self.layout_.tops[index] + y, CELL_W, cell_h())
 
     def cell_point(self, index: int, row: int, col: int) -> QPoint:
         """Viewport point at a cell's centre (scrolled into view first)."""

@@ -81,7 +81,7 @@ def test_a_coil_placed_first_waits_for_its_logic_and_the_gap_is_marked() -> None
     net = LadderNetwork()
     place_wired(net, 0, 5, _coil("Y0.0"))
     assert _wires(net, 0) == []  # a coil is never wired straight to the rail
-    assert open_ends(net) == [OpenEnd((0, net.columns - 1), "right", True)]
+    assert open_ends(net) == [OpenEnd((0, net.columns - 1), "gap")]
     place_wired(net, 0, 2, _c("X0.0"))
     assert _wires(net, 0) == [0, 1, 3, 4, 5, 6, 7, 8, 9]
     assert _code(net) == ["RD X0.0", "WRT Y0.0"]
@@ -91,9 +91,9 @@ def test_a_coil_placed_first_waits_for_its_logic_and_the_gap_is_marked() -> None
 def test_a_contact_alone_is_marked_open_on_the_cell_after_it() -> None:
     net = LadderNetwork()
     place_wired(net, 0, 0, _c("X0.0"))
-    assert open_ends(net) == [OpenEnd((0, 1), "left", True)]
+    assert open_ends(net) == [OpenEnd((0, 1), "gap")]
     place_wired(net, 0, 1, _c("X0.1"))
-    assert open_ends(net) == [OpenEnd((0, 2), "left", True)]  # the chain is marked once
+    assert open_ends(net) == [OpenEnd((0, 2), "gap")]  # the chain is marked once
 
 
 def test_a_deleted_series_contact_leaves_a_marked_gap() -> None:
@@ -101,7 +101,7 @@ def test_a_deleted_series_contact_leaves_a_marked_gap() -> None:
     for col, element in ((0, _c("X0.0")), (1, _c("X0.1")), (9, _coil("Y0.0"))):
         place_wired(net, 0, col, element)
     delete(net, 0, 1)
-    assert open_cells(net) == {(0, 1)}
+    assert open_ends(net) == [OpenEnd((0, 1), "gap")]  # one mark, though both sides are open
     place_wired(net, 0, 1, _c("X0.2"))
     assert open_cells(net) == set()
 
@@ -112,7 +112,7 @@ def test_a_contact_on_a_lower_row_alone_is_marked_on_both_sides() -> None:
         place_wired(net, 0, col, element)
     place_wired(net, 1, 3, _c("X0.1"))
     assert _wires(net, 1) == []  # a lower row is not wired to the rail on its own
-    assert open_ends(net) == [OpenEnd((1, 2), "right", True), OpenEnd((1, 4), "left", True)]
+    assert open_ends(net) == [OpenEnd((1, 2), "gap"), OpenEnd((1, 4), "gap")]
 
 
 def test_an_element_end_is_marked_when_the_next_cell_is_taken() -> None:
@@ -121,7 +121,7 @@ def test_an_element_end_is_marked_when_the_next_cell_is_taken() -> None:
     net.cells[(0, 1)] = replace(FunctionBox.new("TMR", (1,)), height=2)  # a taller box
     net.rows = 2
     net.cells[(1, 0)] = _c("X0.1")  # runs into the box's body, where there is no pin
-    assert OpenEnd((1, 0), "right", False) in open_ends(net)
+    assert OpenEnd((1, 0), "right") in open_ends(net)
 
 
 def test_the_or_tool_draws_its_verticals_and_a_contact_after_the_branch_lengthens_it() -> None:
