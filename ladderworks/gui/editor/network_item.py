@@ -36,6 +36,7 @@ NAME = QColor("#5b5b5b")
 ERROR = QColor("#d32f2f")
 BOX_FILL = QColor("#eef3fb")
 EMPTY_HINT = QColor("#9e9e9e")
+COMMENT_LINE_H = 12.0  # a wrapped comment line under an element
 
 # Describes an address for the drawing: (signal name, description) or None.
 SignalLookup = Callable[[object], tuple[str, str] | None]
@@ -164,39 +165,45 @@ class NetworkItem(QGraphicsItem):
             painter.drawLine(centre + QPointF(-4, -4), centre + QPointF(4, 4))
             painter.drawLine(centre + QPointF(-4, 4), centre + QPointF(4, -4))
 
-    def _labels(self, painter: QPainter, element: Contact | Coil, x: float, y: float,
-                label_font: QFont, small_font: QFont) -> None:
-        """The address above the element; under it, as the View chooses, its symbol and up to
-        two wrapped lines of comment (its own, else the program's, else the manual's)."""
-        painter.setFont(label_font)
-        painter.setPen(INK if element.address is not None else ERROR)
-        text = str(element.address) if element.address is not None else "?"
-        painter.drawText(QRectF(x, y + 1, CELL_W, 16), Qt.AlignmentFlag.AlignCenter, text)
+    def label_lines(self, element: Contact | Coil) -> tuple[str, str, list[str]]:
+        """(address, symbol, comment lines) drawn with an element, as the View chooses: the
+        symbol is the program's (else the manual's signal name); the comment is the element's
+        own, else the program's comment of the address, else the manual's text, wrapped to
+        the cell in up to two lines."""
+        address = str(element.address) if element.address is not None else "?"
         rows = row_metrics()
         if not rows.symbol:
-            return
+            return address, "", []
         described = self.describe(element.address) if element.address is not None else None
         symbol = described[0] if described is not None else ""
         comment = element.comment or (described[1] if described is not None else "")
-        below = y + rows.wire + 12
-        metrics = QFontMetricsF(small_font)
         if rows.comment_lines == 0:  # the symbol, else the element's comment, on one line
-            symbol = symbol or element.comment
+            return address, symbol or element.comment, []
+        lines = wrapped(comment, QFontMetricsF(_element_comment_font()), CELL_W - 6,
+                        rows.comment_lines) if comment else []
+        return address, symbol, lines
+
+    def _labels(self, painter: QPainter, element: Contact | Coil, x: float, y: float,
+                label_font: QFont, small_font: QFont) -> None:
+        """The address above the element; its symbol and comment lines under it."""
+        address, symbol, lines = self.label_lines(element)
+        painter.setFont(label_font)
+        painter.setPen(INK if element.address is not None else ERROR)
+        painter.drawText(QRectF(x, y + 1, CELL_W, 16), Qt.AlignmentFlag.AlignCenter, address)
+        below = y + row_metrics().wire + 12
         if symbol:
+            metrics = QFontMetricsF(small_font)
             painter.setFont(small_font)
             painter.setPen(NAME)
             painter.drawText(QRectF(x + 2, below, CELL_W - 4, 13), Qt.AlignmentFlag.AlignCenter,
                              metrics.elidedText(symbol, Qt.TextElideMode.ElideRight, CELL_W - 4))
         below += 13
-        if rows.comment_lines and comment:
-            font = _element_comment_font()
-            painter.setFont(font)
+        if lines:
+            painter.setFont(_element_comment_font())
             painter.setPen(COMMENT)
-            line_h = 12.0
-            for index, line in enumerate(wrapped(comment, QFontMetricsF(font), CELL_W - 6,
-                                                 rows.comment_lines)):
-                painter.drawText(QRectF(x + 1, below + index * line_h, CELL_W - 2, line_h),
-                                 Qt.AlignmentFlag.AlignCenter, line)
+            for index, line in enumerate(lines):
+                painter.drawText(QRectF(x + 1, below + index * COMMENT_LINE_H, CELL_W - 2,
+                                        COMMENT_LINE_H), Qt.AlignmentFlag.AlignCenter, line)
 
     def _paint_contact(self, painter: QPainter, element: Contact, x: float, y: float,
                        label_font: QFont, small_font: QFont) -> None:
