@@ -35,10 +35,3 @@ def address_names(address: Address, symbols: SymbolTable | None, *,
         comment = comment or own or signal.english
     return Names(symbol, comment)
 
-
-def element_names(address: Address | None, own_comment: str, symbols: SymbolTable | None, *,
-                  turkish: bool = False) -> Names:
-    """What to show with a contact or coil: its symbol, and its own comment (the `// …` of its
-    instruction) before the program's comment of the address, before the manual's text."""
-    found = address_names(address, symbols, turkish=turkish) if address is not None else Names()
-    return Names(found.symbol, own_comment.strip() or found.comment)
