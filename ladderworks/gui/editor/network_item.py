@@ -21,13 +21,14 @@ from ladderworks.gui.editor.geometry import (
     cell_h,
     cell_origin,
     grid_top,
+    name_display,
     network_height,
     network_width,
     row_metrics,
     wire_y,
 )
 from ladderworks.gui.editor.label_text import wrapped
-from ladderworks.gui.translation import instruction_label
+from ladderworks.gui.translation import instruction_label, ui_is_turkish
 
 INK = QColor("#1a1a1a")
 RAIL = QColor("#1f4e79")
@@ -72,12 +73,15 @@ class NetworkItem(QGraphicsItem):
         self.error_cells: set[tuple[int, int]] = set()
         self.is_new = False  # the empty network at the end, where a new one is drawn
         self.open_ends: list[OpenEnd] = open_ends(network)  # breaks marked as the user draws
+        # what is written with each element, by display and language (wrapping costs)
+        self._label_cache: dict[tuple[object, ...], tuple[str, str, list[str]]] = {}
         self._size = (network_width(network), network_height(network))
         self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemUsesExtendedStyleOption, True)
 
     def refresh(self) -> None:
         """The network changed (or the rows did): recompute the marks and size, repaint."""
         self.open_ends = open_ends(self.network)
+        self._label_cache.clear()
         size = (network_width(self.network), network_height(self.network))
         if size != self._size:
             self.prepareGeometryChange()
@@ -170,6 +174,13 @@ class NetworkItem(QGraphicsItem):
         symbol is the program's (else the manual's signal name); the comment is the element's
         own, else the program's comment of the address, else the manual's text, wrapped to
         the cell in up to two lines."""
+        key = (element, name_display(), ui_is_turkish())
+        cached = self._label_cache.get(key)
+        if cached is None:
+            cached = self._label_cache[key] = self._label_lines(element)
+        return cached
+
+    def _label_lines(self, element: Contact | Coil) -> tuple[str, str, list[str]]:
         address = str(element.address) if element.address is not None else "?"
         rows = row_metrics()
         if not rows.symbol:
