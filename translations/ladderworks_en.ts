@@ -451,246 +451,261 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="121"/>
+        <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
+        <translation>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
+        <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
+        <translation>{found} and {replacement}: replace a bit with a bit, a byte with a byte</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <source>{found} would be replaced with itself</source>
+        <translation>{found} would be replaced with itself</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="122"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="130"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="125"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="127"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="158"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="172"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="196"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
@@ -744,54 +759,138 @@
     </message>
 </context>
 <context>
+    <name>FindReplace</name>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="157"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="218"/>
+        <source>Not found</source>
+        <translation>Not found</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="169"/>
+        <source>network {0}</source>
+        <translation>network {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="170"/>
+        <source>{0} of {1}: {2}, {3}</source>
+        <translation>{0} of {1}: {2}, {3}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="202"/>
+        <source>Replace {0} with {1}</source>
+        <translation>Replace {0} with {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="207"/>
+        <source>Replaced; no more found</source>
+        <translation>Replaced; no more found</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
+        <source>Replace all {0} with {1}</source>
+        <translation>Replace all {0} with {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="224"/>
+        <source>{0} replaced in {1} networks</source>
+        <translation>{0} replaced in {1} networks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="232"/>
+        <source>Find and replace</source>
+        <translation>Find and replace</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="233"/>
+        <source>Find:</source>
+        <translation>Find:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="234"/>
+        <source>Replace with:</source>
+        <translation>Replace with:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="236"/>
+        <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
+        <translation>Address, symbol or words, e.g. X21.7, R100, ESKIP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="238"/>
+        <source>Address or symbol, e.g. R200</source>
+        <translation>Address or symbol, e.g. R200</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="239"/>
+        <source>Find &amp;next</source>
+        <translation>Find &amp;next</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
+        <source>&amp;Replace</source>
+        <translation>&amp;Replace</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="241"/>
+        <source>Replace &amp;all</source>
+        <translation>Replace &amp;all</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="242"/>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+</context>
+<context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
         <source>Forced and passive</source>
         <translation>Forced and passive</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
         <source>Kind</source>
         <translation>Kind</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
         <source>Signal / element</source>
         <translation>Signal / element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="64"/>
         <source>Release all</source>
         <translation>Release all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="72"/>
         <source>FORCED</source>
         <translation>FORCED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="79"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>network {0}, line {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="80"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="81"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="90"/>
         <source>Release</source>
         <translation>Release</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="94"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="95"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} forced, {1} passive</translation>
     </message>
@@ -905,114 +1004,113 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="405"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="445"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="724"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="101"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="219"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="250"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="416"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="336"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="420"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="706"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="718"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="207"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="214"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="353"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="429"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="735"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="744"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="230"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="236"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="387"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="450"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="104"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="442"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="461"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="114"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="466"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="118"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="477"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="296"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="487"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="303"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="522"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="164"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="526"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="530"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="166"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="536"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="572"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="642"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="173"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="63"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="132"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="150"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="368"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="632"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="84"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="127"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="561"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="636"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="129"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="762"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="247"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="774"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="259"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="783"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="267"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="874"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="67"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
@@ -1020,219 +1118,234 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="147"/>
+        <location filename="../ladderworks/gui/main_window.py" line="159"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="148"/>
+        <location filename="../ladderworks/gui/main_window.py" line="160"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="149"/>
+        <location filename="../ladderworks/gui/main_window.py" line="161"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="152"/>
+        <location filename="../ladderworks/gui/main_window.py" line="164"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="158"/>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <location filename="../ladderworks/gui/main_window.py" line="175"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="168"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="173"/>
+        <location filename="../ladderworks/gui/main_window.py" line="185"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;properties...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="176"/>
+        <location filename="../ladderworks/gui/main_window.py" line="188"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="181"/>
+        <location filename="../ladderworks/gui/main_window.py" line="193"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="186"/>
+        <location filename="../ladderworks/gui/main_window.py" line="201"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/main_window.py" line="202"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/main_window.py" line="203"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <location filename="../ladderworks/gui/main_window.py" line="204"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="190"/>
+        <location filename="../ladderworks/gui/main_window.py" line="205"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="193"/>
+        <location filename="../ladderworks/gui/main_window.py" line="208"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="198"/>
+        <location filename="../ladderworks/gui/main_window.py" line="213"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="205"/>
+        <location filename="../ladderworks/gui/main_window.py" line="220"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="212"/>
+        <location filename="../ladderworks/gui/main_window.py" line="227"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="219"/>
+        <location filename="../ladderworks/gui/main_window.py" line="234"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="224"/>
+        <location filename="../ladderworks/gui/main_window.py" line="239"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="226"/>
+        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <source>&amp;Find...</source>
+        <translation>&amp;Find...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="243"/>
+        <source>R&amp;eplace...</source>
+        <translation>R&amp;eplace...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="245"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="227"/>
+        <location filename="../ladderworks/gui/main_window.py" line="246"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="230"/>
+        <location filename="../ladderworks/gui/main_window.py" line="249"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
+        <location filename="../ladderworks/gui/main_window.py" line="253"/>
+        <source>Fit &amp;width</source>
+        <translation>Fit &amp;width</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="261"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="242"/>
+        <location filename="../ladderworks/gui/main_window.py" line="267"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="246"/>
+        <location filename="../ladderworks/gui/main_window.py" line="271"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="249"/>
+        <location filename="../ladderworks/gui/main_window.py" line="274"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="258"/>
+        <location filename="../ladderworks/gui/main_window.py" line="283"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="262"/>
+        <location filename="../ladderworks/gui/main_window.py" line="287"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="299"/>
+        <location filename="../ladderworks/gui/main_window.py" line="325"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="303"/>
+        <location filename="../ladderworks/gui/main_window.py" line="329"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="322"/>
+        <location filename="../ladderworks/gui/main_window.py" line="348"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="342"/>
+        <location filename="../ladderworks/gui/main_window.py" line="371"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="365"/>
+        <location filename="../ladderworks/gui/main_window.py" line="395"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="369"/>
+        <location filename="../ladderworks/gui/main_window.py" line="399"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="375"/>
+        <location filename="../ladderworks/gui/main_window.py" line="405"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="380"/>
+        <location filename="../ladderworks/gui/main_window.py" line="410"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="385"/>
+        <location filename="../ladderworks/gui/main_window.py" line="415"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="625"/>
+        <location filename="../ladderworks/gui/main_window.py" line="662"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="631"/>
+        <location filename="../ladderworks/gui/main_window.py" line="668"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="636"/>
+        <location filename="../ladderworks/gui/main_window.py" line="673"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="489"/>
-        <location filename="../ladderworks/gui/main_window.py" line="632"/>
+        <location filename="../ladderworks/gui/main_window.py" line="523"/>
+        <location filename="../ladderworks/gui/main_window.py" line="669"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -1371,32 +1484,32 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="590"/>
+        <location filename="../ladderworks/gui/main_window.py" line="627"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="609"/>
+        <location filename="../ladderworks/gui/main_window.py" line="646"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="655"/>
+        <location filename="../ladderworks/gui/main_window.py" line="699"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="658"/>
+        <location filename="../ladderworks/gui/main_window.py" line="702"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="690"/>
+        <location filename="../ladderworks/gui/main_window.py" line="734"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="691"/>
+        <location filename="../ladderworks/gui/main_window.py" line="735"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2033,7 +2146,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="58"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="230"/>
         <source>INSERT</source>
         <translation>INSERT</translation>
     </message>
@@ -2043,42 +2156,42 @@
         <translation>TMRB: the preset is fixed in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="233"/>
         <source>DELETE</source>
         <translation>DELETE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="264"/>
         <source>PLC tables</source>
         <translation>PLC tables</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="266"/>
         <source>Timers (TMR)</source>
         <translation>Timers (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="267"/>
         <source>Counters (CTR)</source>
         <translation>Counters (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="268"/>
         <source>Data table (D)</source>
         <translation>Data table (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="269"/>
         <source>Keep relays (K)</source>
         <translation>Keep relays (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="275"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="276"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="279"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</translation>
     </message>
@@ -2541,52 +2654,52 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="158"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="159"/>
         <source>{0} signals</source>
         <translation>{0} signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="166"/>
         <source>Signals</source>
         <translation>Signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="171"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="171"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
         <source>English</source>
         <translation>English</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="106"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="107"/>
         <source>program symbol</source>
         <translation>program symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="161"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program symbols, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Address, symbol, name or words, e.g. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
         <source>Turkish</source>
         <translation>Turkish</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="175"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Double-click: use the address for the contact or coil at the cursor</translation>
     </message>
@@ -2775,152 +2888,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="96"/>
         <source>Select</source>
         <translation>Select</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="156"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="171"/>
         <source>NOT input</source>
         <translation>NOT input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="185"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="199"/>
         <source>NOT output</source>
         <translation>NOT output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="213"/>
         <source>SET coil</source>
         <translation>SET coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="228"/>
         <source>RST coil</source>
         <translation>RST coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="93"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="243"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="94"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="259"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="95"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="283"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="96"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="322"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="97"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="346"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="362"/>
         <source>Function</source>
         <translation>Function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="99"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="380"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="397"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="97"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Click an element or drag over cells to select; right-click: cut, copy, paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="157"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="172"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="186"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="200"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="214"/>
         <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
         <translation>Click a cell to place a SET coil (bit := 1 while the logic is 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="120"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="229"/>
         <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
         <translation>Click a cell to place an RST coil (bit := 0 while the logic is 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="122"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="244"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Click a contact or coil to turn it into its inverse</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="124"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="260"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="126"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="284"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="128"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="323"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Click the start of an empty row, type the comment, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="347"/>
         <source>Click an element to delete it</source>
         <translation>Click an element to delete it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="131"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="363"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Choose a function in the list, click the diagram, fill its table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="133"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="381"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Click a cell to insert an empty row before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="398"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Click a cell to insert an empty row after it</translation>
     </message>
@@ -2928,22 +3041,22 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="101"/>
+        <location filename="../ladderworks/gui/palette.py" line="105"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="102"/>
+        <location filename="../ladderworks/gui/palette.py" line="106"/>
         <source>Function:</source>
         <translation>Function:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="103"/>
+        <location filename="../ladderworks/gui/palette.py" line="107"/>
         <source>Seed manual instructions</source>
         <translation>Seed manual instructions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="104"/>
+        <location filename="../ladderworks/gui/palette.py" line="108"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC instructions</translation>
     </message>

@@ -451,246 +451,261 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="121"/>
+        <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
+        <translation>&apos;{text}&apos; programın bir adresi veya sembolü değil: değiştirmek için bir adres veya sembol yazın</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
+        <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
+        <translation>{found} ve {replacement}: bit ile bit, bayt ile bayt değiştirilir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <source>{found} would be replaced with itself</source>
+        <translation>{found} kendisiyle değiştirilmiş olur</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="122"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="130"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="125"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>JMP without a matching JMPE</source>
         <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
         <source>JMPE without a JMP before it</source>
         <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="127"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>COM without a matching COME</source>
         <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>COME without a COM before it</source>
         <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>coil {address} is written more than once</source>
         <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {line}. satırda)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>JMP veya COM aralığı içinde LBL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde LBL L{label} yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>L{label} etiketi bu program biriminde iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC yalnızca bir alt program içinde kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
         <source>subprogram P{program} does not exist</source>
         <translation>P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>burada P{program} çağrısı bir alt programın kendini çağırmasına yol açıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>P{program} üzerinden çağrılar {limit} alt programdan daha derine iniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
         <source>SP without a matching SPE</source>
         <translation>eşleşen SPE olmadan SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>SPE without an SP before it</source>
         <translation>önünde SP olmayan SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="158"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>P{program} alt programı iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>ilk SP&apos;den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} {level}. seviyeyi bitiremez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>instruction after END, the end of the program</source>
         <translation>program sonu END&apos;den sonra komut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>L{label} etiketine geri atlama bir taramada {limit} kereden fazla tekrarlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="172"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="196"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
@@ -744,54 +759,138 @@
     </message>
 </context>
 <context>
+    <name>FindReplace</name>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="157"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="218"/>
+        <source>Not found</source>
+        <translation>Bulunamadı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="169"/>
+        <source>network {0}</source>
+        <translation>devre {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="170"/>
+        <source>{0} of {1}: {2}, {3}</source>
+        <translation>{0} / {1}: {2}, {3}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="202"/>
+        <source>Replace {0} with {1}</source>
+        <translation>{0} yerine {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="207"/>
+        <source>Replaced; no more found</source>
+        <translation>Değiştirildi; başka bulunamadı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
+        <source>Replace all {0} with {1}</source>
+        <translation>Tüm {0} yerine {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="224"/>
+        <source>{0} replaced in {1} networks</source>
+        <translation>{1} devrede {0} yer değiştirildi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="232"/>
+        <source>Find and replace</source>
+        <translation>Bul ve değiştir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="233"/>
+        <source>Find:</source>
+        <translation>Bul:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="234"/>
+        <source>Replace with:</source>
+        <translation>Yerine:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="236"/>
+        <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
+        <translation>Adres, sembol veya sözcükler, örn. X21.7, R100, ESKIP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="238"/>
+        <source>Address or symbol, e.g. R200</source>
+        <translation>Adres veya sembol, örn. R200</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="239"/>
+        <source>Find &amp;next</source>
+        <translation>&amp;Sonrakini bul</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
+        <source>&amp;Replace</source>
+        <translation>&amp;Değiştir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="241"/>
+        <source>Replace &amp;all</source>
+        <translation>&amp;Tümünü değiştir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="242"/>
+        <source>Close</source>
+        <translation>Kapat</translation>
+    </message>
+</context>
+<context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="60"/>
         <source>Forced and passive</source>
         <translation>Zorlananlar ve pasifler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
         <source>Kind</source>
         <translation>Tür</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
         <source>Signal / element</source>
         <translation>Sinyal / eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="64"/>
         <source>Release all</source>
         <translation>Hepsini bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="72"/>
         <source>FORCED</source>
         <translation>ZORLANMIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="79"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>devre {0}, satır {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="80"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="81"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="90"/>
         <source>Release</source>
         <translation>Bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="94"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="95"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} zorlanmış, {1} pasif</translation>
     </message>
@@ -905,114 +1004,113 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="405"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="445"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="724"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="101"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="219"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="250"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="416"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="336"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="420"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="706"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="718"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="207"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="214"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="353"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="429"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="735"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="744"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="230"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="236"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="387"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="450"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="104"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="442"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="452"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="461"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="114"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="466"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="118"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="477"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="296"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="487"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="303"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="522"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="164"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="526"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="530"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="166"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="536"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="572"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="642"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="663"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="173"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="63"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="132"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="150"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="368"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="632"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="84"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="127"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="561"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="636"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="129"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="762"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="247"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="774"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="259"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="783"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="267"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="874"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="67"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
@@ -1020,219 +1118,234 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="147"/>
+        <location filename="../ladderworks/gui/main_window.py" line="159"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="148"/>
+        <location filename="../ladderworks/gui/main_window.py" line="160"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="149"/>
+        <location filename="../ladderworks/gui/main_window.py" line="161"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="152"/>
+        <location filename="../ladderworks/gui/main_window.py" line="164"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="158"/>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="163"/>
+        <location filename="../ladderworks/gui/main_window.py" line="175"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="168"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="173"/>
+        <location filename="../ladderworks/gui/main_window.py" line="185"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;özellikleri...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="176"/>
+        <location filename="../ladderworks/gui/main_window.py" line="188"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="181"/>
+        <location filename="../ladderworks/gui/main_window.py" line="193"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="186"/>
+        <location filename="../ladderworks/gui/main_window.py" line="201"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/main_window.py" line="202"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/main_window.py" line="203"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <location filename="../ladderworks/gui/main_window.py" line="204"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="190"/>
+        <location filename="../ladderworks/gui/main_window.py" line="205"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="193"/>
+        <location filename="../ladderworks/gui/main_window.py" line="208"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="198"/>
+        <location filename="../ladderworks/gui/main_window.py" line="213"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="205"/>
+        <location filename="../ladderworks/gui/main_window.py" line="220"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="212"/>
+        <location filename="../ladderworks/gui/main_window.py" line="227"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="219"/>
+        <location filename="../ladderworks/gui/main_window.py" line="234"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="224"/>
+        <location filename="../ladderworks/gui/main_window.py" line="239"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="226"/>
+        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <source>&amp;Find...</source>
+        <translation>&amp;Bul...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="243"/>
+        <source>R&amp;eplace...</source>
+        <translation>&amp;Değiştir...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="245"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="227"/>
+        <location filename="../ladderworks/gui/main_window.py" line="246"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="230"/>
+        <location filename="../ladderworks/gui/main_window.py" line="249"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
+        <location filename="../ladderworks/gui/main_window.py" line="253"/>
+        <source>Fit &amp;width</source>
+        <translation>&amp;Genişliğe sığdır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="261"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="242"/>
+        <location filename="../ladderworks/gui/main_window.py" line="267"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="246"/>
+        <location filename="../ladderworks/gui/main_window.py" line="271"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="249"/>
+        <location filename="../ladderworks/gui/main_window.py" line="274"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="258"/>
+        <location filename="../ladderworks/gui/main_window.py" line="283"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="262"/>
+        <location filename="../ladderworks/gui/main_window.py" line="287"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="299"/>
+        <location filename="../ladderworks/gui/main_window.py" line="325"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="303"/>
+        <location filename="../ladderworks/gui/main_window.py" line="329"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="322"/>
+        <location filename="../ladderworks/gui/main_window.py" line="348"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="342"/>
+        <location filename="../ladderworks/gui/main_window.py" line="371"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="365"/>
+        <location filename="../ladderworks/gui/main_window.py" line="395"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="369"/>
+        <location filename="../ladderworks/gui/main_window.py" line="399"/>
         <source>&amp;Tools</source>
         <translation>&amp;Araçlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="375"/>
+        <location filename="../ladderworks/gui/main_window.py" line="405"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="380"/>
+        <location filename="../ladderworks/gui/main_window.py" line="410"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="385"/>
+        <location filename="../ladderworks/gui/main_window.py" line="415"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="625"/>
+        <location filename="../ladderworks/gui/main_window.py" line="662"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="631"/>
+        <location filename="../ladderworks/gui/main_window.py" line="668"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="636"/>
+        <location filename="../ladderworks/gui/main_window.py" line="673"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="489"/>
-        <location filename="../ladderworks/gui/main_window.py" line="632"/>
+        <location filename="../ladderworks/gui/main_window.py" line="523"/>
+        <location filename="../ladderworks/gui/main_window.py" line="669"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1371,32 +1484,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="590"/>
+        <location filename="../ladderworks/gui/main_window.py" line="627"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="609"/>
+        <location filename="../ladderworks/gui/main_window.py" line="646"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="655"/>
+        <location filename="../ladderworks/gui/main_window.py" line="699"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="658"/>
+        <location filename="../ladderworks/gui/main_window.py" line="702"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="690"/>
+        <location filename="../ladderworks/gui/main_window.py" line="734"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="691"/>
+        <location filename="../ladderworks/gui/main_window.py" line="735"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2033,7 +2146,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="58"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="230"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
     </message>
@@ -2043,42 +2156,42 @@
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="233"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="264"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="266"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="267"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="268"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="269"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="275"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="276"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="279"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
@@ -2541,52 +2654,52 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="158"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="159"/>
         <source>{0} signals</source>
         <translation>{0} sinyal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="166"/>
         <source>Signals</source>
         <translation>Sinyaller</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="171"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="171"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
         <source>Name</source>
         <translation>Ad</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
         <source>English</source>
         <translation>İngilizce</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="106"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="107"/>
         <source>program symbol</source>
         <translation>program sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="161"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program sembolü, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Adres, sembol, ad veya sözcükler, örn. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
         <source>Turkish</source>
         <translation>Türkçe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="175"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Çift tıklama: adresi imleçteki kontak veya bobine ver</translation>
     </message>
@@ -2775,152 +2888,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="96"/>
         <source>Select</source>
         <translation>SEÇİM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="156"/>
         <source>Input</source>
         <translation>GİRİŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="171"/>
         <source>NOT input</source>
         <translation>GİRİŞ DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="185"/>
         <source>Output</source>
         <translation>ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="199"/>
         <source>NOT output</source>
         <translation>ÇIKIŞ DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="213"/>
         <source>SET coil</source>
         <translation>SET ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="228"/>
         <source>RST coil</source>
         <translation>RST ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="93"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="243"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="94"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="259"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="95"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="283"/>
         <source>Line</source>
         <translation>ÇİZGİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="96"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="322"/>
         <source>Comment</source>
         <translation>YORUM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="97"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="346"/>
         <source>Delete</source>
         <translation>SİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="362"/>
         <source>Function</source>
         <translation>FONKSİYON</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="99"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="380"/>
         <source>Insert row before</source>
         <translation>ÖNCEYE SATIR GİR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="397"/>
         <source>Insert row after</source>
         <translation>SONRAYA SATIR GİR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="97"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Bir eleman seçmek için tıklayın veya hücreler üzerinde sürükleyin; sağ tık: kes, kopyala, yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="157"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Kontak (RD / AND) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="172"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>DEĞİL kontak (RD.NOT / AND.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="186"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Çıkış (WRT) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="200"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>DEĞİL çıkış (WRT.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="214"/>
         <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
         <translation>SET çıkış koymak için hücreye tıklayın (mantık 1 iken bit := 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="120"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="229"/>
         <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
         <translation>RST çıkış koymak için hücreye tıklayın (mantık 1 iken bit := 0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="122"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="244"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Tersine çevirmek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="124"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="260"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Altına paralel eklemek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="126"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="284"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Birinci noktaya, sonra ikinci noktaya tıklayın: yatay veya dikey çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="128"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="323"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Boş bir satırın başına tıklayın, yorumu yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="347"/>
         <source>Click an element to delete it</source>
         <translation>Silmek için elemanın üzerine tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="131"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="363"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Listeden fonksiyonu seçin, diyagrama tıklayın, özellik tablosunu doldurun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="133"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="381"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Önüne boş satır girmek için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="398"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Arkasına boş satır girmek için hücreye tıklayın</translation>
     </message>
@@ -2928,22 +3041,22 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="101"/>
+        <location filename="../ladderworks/gui/palette.py" line="105"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="102"/>
+        <location filename="../ladderworks/gui/palette.py" line="106"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="103"/>
+        <location filename="../ladderworks/gui/palette.py" line="107"/>
         <source>Seed manual instructions</source>
         <translation>Kılavuzdaki komutlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="104"/>
+        <location filename="../ladderworks/gui/palette.py" line="108"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC komutları</translation>
     </message>

@@ -26,17 +26,21 @@ from ladderworks.core.il import Program, print_program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step, questions
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
+from ladderworks.gui.editor.interactions import BY_TOOL, INTERACTIONS
+from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.editor.name_menu import NameDisplayMenu
 from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.editor.zoom import FitWidth
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
+from ladderworks.gui.find_replace import FindReplaceDialog
 from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.parameter_document import ParameterDocument
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.signal_list import SignalListDock
 from ladderworks.gui.text_view import ProgramTextView
-from ladderworks.gui.tools import Tool, icon, tool_help, tool_icon, tool_name
+from ladderworks.gui.tools import Tool, icon
 from ladderworks.gui.translation import UiLanguage
 
 translate = QCoreApplication.translate
@@ -62,7 +66,9 @@ class MainWindow(FileActions, QMainWindow):
         self.program_info = Program()  # the program as opened: title, sections, symbols
         self.setWindowIcon(icon("ladderworks"))
 
-        self.editor = LadderEditor(self)
+        self.model = LadderModel(self)  # the networks, the undo stack, ladder or text
+        self.editor = LadderEditor(self.model, self)
+        self.fit_width = FitWidth(self.editor)  # View › Fit width
         self.text_view = ProgramTextView(self)
         self.text_view.document().modificationChanged.connect(self._update_title)
         self.pages = QStackedWidget(self)
@@ -70,11 +76,13 @@ class MainWindow(FileActions, QMainWindow):
         self.pages.addWidget(self.editor)
         self.pages.addWidget(self.text_view)
         self.setCentralWidget(self.pages)
+        self.model.mode_changed.connect(self._show_mode)
 
         self.actions_by_name: dict[str, QAction] = {}
         self._texts: list[tuple[QAction | QMenu | QToolBar, Callable[[], str]]] = []
         self._make_actions()
-        self.tool_palette = ToolPalette([self.tool_actions[tool] for tool in Tool], self)
+        self.tool_palette = ToolPalette([self.tool_actions[cls.tool] for cls in INTERACTIONS],
+                                        self)
         self.tool_palette.function_chosen.connect(self._on_function_chosen)
         self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.tool_palette)
         self.errors = ErrorListDock(self)
@@ -101,7 +109,7 @@ class MainWindow(FileActions, QMainWindow):
         self.plc_docks.session.parameters_changed.connect(self._update_title)
         self._install_file_state()
 
-        self.editor.undo_stack.cleanChanged.connect(self._update_title)
+        self.model.modified_changed.connect(self._update_title)
         self.editor.tool_requested.connect(self.set_tool)
         self.editor.hover_changed.connect(self._show_hover)
         self.editor.message.connect(self._show_message)
@@ -111,12 +119,16 @@ class MainWindow(FileActions, QMainWindow):
         self.resize(1200, 800)
         self._first_show = True
         self.help_window: InstructionHelp | None = None
+        self.find_dialog: FindReplaceDialog | None = None
         geometry, state = settings.window_state()
         if geometry is not None:
             self.restoreGeometry(geometry)
         if state is not None:
             self.restoreState(state)
         self.new_file()
+        zoom, fit_width = settings.zoom()
+        self.editor.set_zoom(zoom)
+        self.actions_by_name["action_zoom_fit_width"].setChecked(fit_width)
 
     # -- actions and menus ---------------------------------------------------------------
 
@@ -174,14 +186,17 @@ class MainWindow(FileActions, QMainWindow):
             self.show_program_properties,
         )
         a("action_quit", lambda: translate("MainWindow", "&Quit"), self.close, key.Quit)
-        undo = ed.undo_stack.createUndoAction(self)
+        undo = self.model.undo_stack.createUndoAction(self)
         undo.setObjectName("action_undo")
         undo.setShortcut(QKeySequence(key.Undo))
         self.actions_by_name["action_undo"] = undo
         self._texts.append((undo, lambda: translate("MainWindow", "&Undo")))
-        redo = ed.undo_stack.createRedoAction(self)
+        redo = self.model.undo_stack.createRedoAction(self)
         redo.setObjectName("action_redo")
-        redo.setShortcut(QKeySequence(key.Redo))
+        # Ctrl+Y everywhere (docs/ui.md), Ctrl+Shift+Z too, and the platform's own key
+        redo_keys = [QKeySequence("Ctrl+Y"), QKeySequence("Ctrl+Shift+Z")]
+        redo.setShortcuts(redo_keys + [k for k in QKeySequence.keyBindings(key.Redo)
+                                       if k not in redo_keys])
         self.actions_by_name["action_redo"] = redo
         self._texts.append((redo, lambda: translate("MainWindow", "&Redo")))
         a("action_cut", lambda: translate("MainWindow", "Cu&t"), ed.cut, key.Cut)
@@ -223,6 +238,10 @@ class MainWindow(FileActions, QMainWindow):
         )
         a("action_delete_network", lambda: translate("MainWindow", "Delete network"),
           ed.delete_network)
+        a("action_find", lambda: translate("MainWindow", "&Find..."),
+          lambda: self.show_find(replacing=False), key.Find)
+        a("action_replace", lambda: translate("MainWindow", "R&eplace..."),
+          lambda: self.show_find(replacing=True), "Ctrl+H")
         a("action_zoom_in", lambda: translate("MainWindow", "Zoom &in"), ed.zoom_in, key.ZoomIn)
         a("action_zoom_out", lambda: translate("MainWindow", "Zoom &out"), ed.zoom_out, key.ZoomOut)
         a(
@@ -231,6 +250,12 @@ class MainWindow(FileActions, QMainWindow):
             ed.zoom_reset,
             "Ctrl+0",
         )
+        fit = a("action_zoom_fit_width", lambda: translate("MainWindow", "Fit &width"), None,
+                "Ctrl+9", "zoom_fit_width")
+        fit.setCheckable(True)
+        fit.toggled.connect(self.fit_width.set_enabled)
+        for name in ("action_zoom_in", "action_zoom_out", "action_zoom_reset"):
+            self.actions_by_name[name].triggered.connect(lambda _c=False: fit.setChecked(False))
         a(
             "action_show_ladder",
             lambda: translate("MainWindow", "Show as &ladder"),
@@ -274,8 +299,9 @@ class MainWindow(FileActions, QMainWindow):
             self.actions_by_name[action.objectName()] = action
         self.tool_group = QActionGroup(self)
         self.tool_actions: dict[Tool, QAction] = {}
-        for tool in Tool:
-            action = QAction(tool_icon(tool), "", self)
+        for interaction in INTERACTIONS:  # the palette's and the Tools menu's order
+            tool = interaction.tool
+            action = QAction(interaction.icon(), "", self)
             action.setObjectName(f"tool_{tool.value}")
             action.setCheckable(True)
             action.triggered.connect(lambda _c=False, t=tool: self.set_tool(t))
@@ -335,6 +361,9 @@ class MainWindow(FileActions, QMainWindow):
                 "action_insert_row_before",
                 "action_insert_row_after",
                 "action_delete_network",
+                None,
+                "action_find",
+                "action_replace",
             ],
         )
         view = self._menu(
@@ -344,6 +373,7 @@ class MainWindow(FileActions, QMainWindow):
                 "action_zoom_in",
                 "action_zoom_out",
                 "action_zoom_reset",
+                "action_zoom_fit_width",
                 None,
                 "action_show_ladder",
                 "action_show_text",
@@ -367,7 +397,7 @@ class MainWindow(FileActions, QMainWindow):
         tools = self._menu(
             "menu_tools",
             lambda: translate("MainWindow", "&Tools"),
-            [f"tool_{tool.value}" for tool in Tool],
+            [f"tool_{cls.tool.value}" for cls in INTERACTIONS],
         )
         tools.addSeparator()
         self._menu(
@@ -393,6 +423,7 @@ class MainWindow(FileActions, QMainWindow):
             None,
             "action_zoom_in",
             "action_zoom_out",
+            "action_zoom_fit_width",
             None,
             "action_compile",
         ):
@@ -437,9 +468,12 @@ class MainWindow(FileActions, QMainWindow):
             else:
                 widget.setWindowTitle(text())
         for tool, action in self.tool_actions.items():
-            action.setText(tool_name(tool))
-            action.setToolTip(tool_help(tool))
-            action.setStatusTip(tool_help(tool))
+            # the key shows in the menu's shortcut column (it works while the grid has focus)
+            kind = BY_TOOL[tool]
+            action.setText(f"{kind.name()}\t{kind.key}")
+            action.setIconText(kind.name())
+            action.setToolTip(f"{kind.name()} ({kind.key}): {kind.help()}")
+            action.setStatusTip(kind.help())
         for code in ("en", "tr"):
             self.actions_by_name[f"action_language_{code}"].setChecked(
                 self.language.current == code
@@ -467,7 +501,7 @@ class MainWindow(FileActions, QMainWindow):
         """Make `tool` the current tool of the grid editor."""
         self.tool_actions[tool].setChecked(True)
         self.editor.set_tool(tool)
-        self.statusBar().showMessage(tool_help(tool), 4000)
+        self.statusBar().showMessage(BY_TOOL[tool].help(), 4000)
 
     def current_tool(self) -> Tool:
         """The checked tool."""
@@ -543,20 +577,23 @@ class MainWindow(FileActions, QMainWindow):
         self.settings.clear_recent_files()
         self._update_recent_menu()
 
+    def _show_mode(self, mode: str) -> None:
+        self.pages.setCurrentWidget(self.text_view if mode == Mode.TEXT else self.editor)
+
     def show_as_text(self) -> None:
         """Show the program as instruction-list text."""
-        if self.pages.currentWidget() is self.text_view:
+        if self.model.showing_text:
             return
         text = self.program_text()
         if text is None:
             return
         self.text_view.setPlainText(bad_bytes_shown(text))
         self.text_view.document().setModified(False)
-        self.pages.setCurrentWidget(self.text_view)
+        self.model.set_mode(Mode.TEXT)
 
     def show_as_ladder(self) -> bool:
         """Parse the text view and show it as ladder; errors stay in the text view."""
-        if self.pages.currentWidget() is not self.text_view:
+        if not self.model.showing_text:
             return True
         from ladderworks.core.il import parse
 
@@ -567,11 +604,11 @@ class MainWindow(FileActions, QMainWindow):
             self.errors.show()
             return False
         self.failed_path = None
-        self.editor.set_program(result.program)
-        self.pages.setCurrentWidget(self.editor)
+        self.model.set_program(result.program)
+        self.model.set_mode(Mode.LADDER)
         self._program_shown(result.program)
         if modified:
-            self.editor.mark_modified()
+            self.model.mark_modified()
         self._update_title()
         return True
 
@@ -581,7 +618,7 @@ class MainWindow(FileActions, QMainWindow):
         """Check the program (grid and text rules) and list the diagnostics."""
         if not self.show_as_ladder():
             return self.errors.diagnostics()
-        program, diagnostics = self.editor.program()
+        program, diagnostics = self.model.program()
         if program is not None:
             diagnostics = diagnostics + compile_step.check(program)
         self.errors.set_diagnostics(diagnostics)
@@ -597,7 +634,7 @@ class MainWindow(FileActions, QMainWindow):
         """PLC > Compile: the binary PLC program, or None with the errors listed."""
         if not self.show_as_ladder():
             return None
-        program, diagnostics = self.editor.program()
+        program, diagnostics = self.model.program()
         binary: bytes | None = None
         if program is not None and not has_errors(diagnostics):
             binary, more = compile_step.compile_program(program)
@@ -638,14 +675,21 @@ class MainWindow(FileActions, QMainWindow):
 
     def go_to_diagnostic(self, diagnostic: Diagnostic) -> None:
         """Jump to the diagnostic's cell in the ladder, or its line in the text view."""
-        if self.pages.currentWidget() is self.text_view or (
-            diagnostic.network is None and diagnostic.line
-        ):
-            if self.pages.currentWidget() is not self.text_view:
+        if self.model.showing_text or (diagnostic.network is None and diagnostic.line):
+            if not self.model.showing_text:
                 self.show_as_text()
             self.text_view.go_to(diagnostic.line, diagnostic.column)
             return
         self.editor.go_to(diagnostic)
+
+    def show_find(self, replacing: bool = False) -> FindReplaceDialog | None:
+        """Edit › Find (Ctrl+F) / Replace (Ctrl+H): addresses and symbols in the ladder."""
+        if not self.show_as_ladder():
+            return None
+        if self.find_dialog is None:
+            self.find_dialog = FindReplaceDialog(self.editor, self)
+        self.find_dialog.start(replacing)
+        return self.find_dialog
 
     # -- help and closing ----------------------------------------------------------------
 
@@ -662,8 +706,8 @@ class MainWindow(FileActions, QMainWindow):
     def instruction_at_cursor(self) -> str:
         """The instruction help should show: the element at the cursor, else the palette's."""
         index, row, col = self.editor.cursor_cell
-        if index < len(self.editor.networks):
-            found = self.editor.networks[index].element_at(row, col)
+        if index < len(self.model.networks):
+            found = self.model.networks[index].element_at(row, col)
             if found is not None:
                 element = found[1]
                 if isinstance(element, FunctionBox):
@@ -711,6 +755,7 @@ class MainWindow(FileActions, QMainWindow):
             event.ignore()
             return
         self.settings.set_window_state(self.saveGeometry(), self.saveState())
+        self.settings.set_zoom(self.editor.zoom(), self.fit_width.enabled)
         self.autosaver.timer.stop()
         self.recovery.close()  # saved or discarded: the recovery copy goes
         if self.help_window is not None:

@@ -41,6 +41,9 @@ class ToolPalette(QDockWidget):
             button.setIconSize(QSize(24, 24))
             button.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Fixed)
             button.setAutoRaise(True)
+            # no Tab stop: letter keys in the grid and the Tools menu pick tools, and Tab from
+            # the grid reaches the function list at once rather than after fifteen buttons
+            button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
             layout.addWidget(button)
             self.buttons.append(button)
         self._function_label = QLabel(body)
@@ -64,6 +67,7 @@ class ToolPalette(QDockWidget):
         scroll.setWidget(body)
         scroll.setWidgetResizable(True)
         scroll.setFrameShape(QFrame.Shape.NoFrame)
+        scroll.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         scroll.setMaximumWidth(body.maximumWidth() + scroll.verticalScrollBar().sizeHint().width())
         self.setWidget(scroll)

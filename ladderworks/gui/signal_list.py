@@ -73,6 +73,7 @@ class SignalListDock(QDockWidget):
         self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         self.table.verticalHeader().hide()
+        self.table.setTabKeyNavigation(False)  # Tab leaves the table (arrows move in it)
         header = self.table.horizontalHeader()
         # Interactive, sized once after each fill: ResizeToContents would re-measure every
         # column on every inserted item (quadratic, tens of seconds for the 1,064 signals).

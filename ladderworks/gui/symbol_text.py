@@ -1,8 +1,12 @@
-"""How the console names an address: the program's symbol first, else the manual's signal."""
+"""How the console names an address (the program's symbol first, else the manual's signal)."""
 
 from __future__ import annotations
 
+from PySide6.QtCore import QCoreApplication
+
 from ladderworks.core.address import Address
+from ladderworks.core.il import Instruction, print_instruction
+from ladderworks.core.ladder import Coil, Contact, FunctionBox, LadderNetwork
 from ladderworks.core.naming import address_names
 from ladderworks.core.signals import signal_at
 from ladderworks.core.symbols import SymbolTable, describe
@@ -40,3 +44,40 @@ def tooltip(address: Address, symbols: SymbolTable | None) -> str:
         lines[0] += f"  {signal.name}"
         lines += [text for text in (signal.turkish, signal.english, signal.notes) if text]
     return "\n".join(lines)
+
+
+def element_tooltip(network: LadderNetwork, row: int, col: int,
+                    symbols: SymbolTable | None) -> str:
+    """Tooltip of a cell's contact or coil: address, symbol, its comments; else ""."""
+    found = network.element_at(row, col)
+    if found is None or not isinstance(found[1], Contact | Coil) or found[1].address is None:
+        return ""
+    element = found[1]
+    address = element.address
+    if address is None:
+        return ""
+    text = tooltip(address, symbols)
+    return text + (f"\n// {element.comment}" if element.comment else "")
+
+
+def cell_status(network: LadderNetwork, index: int, row: int, col: int,
+                symbols: SymbolTable | None) -> str:
+    """Status-bar text of network `index`'s cell: the cell, and the address with its signal
+    name and comment (or the function with its parameters)."""
+    parts = [QCoreApplication.translate("LadderEditor", "N{0} row {1} col {2}").format(
+        index + 1, row + 1, col + 1)]
+    if network.label:
+        parts.append(network.label)
+    found = network.element_at(row, col)
+    if found is not None:
+        element = found[1]
+        if isinstance(element, Contact | Coil) and element.address is not None:
+            parts.append(str(element.address))
+            described = name_and_text(element.address, symbols)
+            if described is not None:
+                parts.append(" — ".join(text for text in described if text))
+            if element.comment:
+                parts.append(element.comment)
+        elif isinstance(element, FunctionBox):
+            parts.append(print_instruction(Instruction(element.name, params=element.params)))
+    return "  |  ".join(parts)

@@ -63,7 +63,7 @@ def install_plc_docks(window: QMainWindow, session: PlcSession | None = None) ->
     def console_program() -> Program | None:
         if editor is None:
             return None
-        program, _diagnostics = editor.program()
+        program, _diagnostics = editor.model.program()
         return program
 
     control = PlcControlDock(session, window, console_program)

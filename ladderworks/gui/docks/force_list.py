@@ -36,6 +36,7 @@ class ForceListDock(QDockWidget):
         self.table = QTableWidget(0, 4, body)
         self.table.setObjectName("forceListTable")
         self.table.verticalHeader().hide()
+        self.table.setTabKeyNavigation(False)  # Tab leaves the dock (issue 18: no Tab trap)
         self.table.horizontalHeader().setStretchLastSection(False)
         self.table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
         layout.addWidget(self.table, 1)

@@ -147,6 +147,7 @@ class PlcTablesDock(QDockWidget):
         table.setModel(model)
         table.setObjectName(f"plcTable_{kind.value}")
         table.verticalHeader().hide()
+        table.setTabKeyNavigation(False)  # Tab leaves the dock (issue 18: no Tab trap)
         table.setAlternatingRowColors(True)
         table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
