@@ -12,7 +12,7 @@ from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
 from ladderworks.core.ladder import Coil, Contact
-from ladderworks.gui.editor.geometry import NameDisplay, cell_h, name_display
+from ladderworks.gui.editor.geometry import NameDisplay, cell_h, default_display, name_display
 from ladderworks.gui.editor.label_text import wrapped
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.settings import Settings
@@ -49,9 +49,23 @@ def _is_comment_ink(colour: QColor) -> bool:
     return colour.green() > colour.red() + 30 and colour.green() > colour.blue() + 30
 
 
+def _show(window: MainWindow, display: NameDisplay) -> None:
+    """View › Element names › `display`, as the user picks it."""
+    action = window.findChild(QAction, f"action_names_{display.value}")
+    assert action is not None
+    action.trigger()
+
+
+def test_the_default_shows_comments_on_a_tall_screen_only(window: MainWindow) -> None:
+    assert default_display(1080) is NameDisplay.COMMENT
+    assert default_display(600) is default_display(768) is NameDisplay.SYMBOL
+    screen = window.screen().availableGeometry().height()  # the offscreen screen: 800 px
+    assert name_display() is default_display(screen)
+
+
 def test_a_long_comment_is_wrapped_in_two_lines_under_the_symbol(window: MainWindow) -> None:
     window.load(EXAMPLES / "or_triple_and.LAD")
-    assert name_display() is NameDisplay.COMMENT  # the default shows everything
+    _show(window, NameDisplay.COMMENT)
     index, row, col, coil = _element(window, "Y0.1")
     assert coil.comment == LONG
     item = window.editor.network_items[index]
@@ -86,7 +100,8 @@ def test_the_users_comment_comes_before_the_manuals_name(window: MainWindow,
     path.write_text("%@2-C\nG8.4    ACILSTOP   ACİL STOP BUTONU KAPI AÇIK\n%\n"
                     "%@3\nRD X1.0\nWRT G8.4\nRD X1.1\nWRT G8.5   // KENDİ NOTUM\n%\n", "utf-8")
     window.load(path)
-    index, _row, _col, coil = _element(window, "G8.4")  # the manual names it *ESP
+    _show(window, NameDisplay.COMMENT)
+    index, _row, _col, coil = _element(window, "G8.4")  # the manual names it ESP
     item = window.editor.network_items[index]
     address, symbol, lines = item.label_lines(coil)
     assert (address, symbol) == ("G8.4", "ACILSTOP")
@@ -100,6 +115,7 @@ def test_view_element_names_changes_the_rows_and_is_remembered(window: MainWindo
                                                                settings: Settings,
                                                                qtbot: QtBot) -> None:
     window.load(EXAMPLES / "or_triple_and.LAD")
+    _show(window, NameDisplay.COMMENT)
     index, row, col, coil = _element(window, "Y0.1")
     full = window.editor.cell_rect(index, row, col).height()
     top_of_next = window.editor.layout_.tops[1]

@@ -40,7 +40,15 @@ ROW_METRICS = {
     NameDisplay.COMMENT: RowMetrics(86.0, 30.0, True, 2),
 }
 DEFAULT_DISPLAY = NameDisplay.COMMENT
+TALL_SCREEN = 900  # px of available screen height from which comments are shown by default
 _shown = [DEFAULT_DISPLAY]  # one choice for every ladder view of the application
+
+
+def default_display(screen_height: int) -> NameDisplay:
+    """What is shown before the user chooses: everything on a tall screen; on a lower one
+    (a 1024×600 shop-floor panel, a 768-pixel laptop) the address and symbol, so that more
+    rows fit (View › Element names adds the comments)."""
+    return DEFAULT_DISPLAY if screen_height >= TALL_SCREEN else NameDisplay.SYMBOL
 
 
 def name_display() -> NameDisplay:

@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication, QEvent
-from PySide6.QtGui import QAction, QActionGroup
+from PySide6.QtGui import QAction, QActionGroup, QGuiApplication
 from PySide6.QtWidgets import QGraphicsView, QMenu, QWidget
 
 from ladderworks.gui.editor.geometry import (
-    DEFAULT_DISPLAY,
     NameDisplay,
+    default_display,
     name_display,
     set_name_display,
 )
@@ -45,7 +45,8 @@ class NameDisplayMenu(QMenu):
         try:
             chosen = NameDisplay(settings.name_display())
         except ValueError:
-            chosen = DEFAULT_DISPLAY
+            screen = QGuiApplication.primaryScreen()
+            chosen = default_display(screen.availableGeometry().height() if screen else 0)
         set_name_display(chosen)
         self.actions_by_display[chosen].setChecked(True)
         self.retranslate()
