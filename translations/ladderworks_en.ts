@@ -1114,6 +1114,11 @@
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/symbol_text.py" line="84"/>
+        <source>open circuit here: draw a wire or an element</source>
+        <translation>open circuit here: draw a wire or an element</translation>
+    </message>
 </context>
 <context>
     <name>MainWindow</name>
@@ -1532,7 +1537,7 @@
         <translation>Address, symbol and &amp;comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/name_menu.py" line="70"/>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="71"/>
         <source>Element &amp;names</source>
         <translation>Element &amp;names</translation>
     </message>

@@ -6,7 +6,7 @@ from PySide6.QtCore import QCoreApplication
 
 from ladderworks.core.address import Address
 from ladderworks.core.il import Instruction, print_instruction
-from ladderworks.core.ladder import Coil, Contact, FunctionBox, LadderNetwork
+from ladderworks.core.ladder import Coil, Contact, FunctionBox, LadderNetwork, open_cells
 from ladderworks.core.naming import address_names
 from ladderworks.core.signals import signal_at
 from ladderworks.core.symbols import SymbolTable, describe
@@ -80,4 +80,7 @@ def cell_status(network: LadderNetwork, index: int, row: int, col: int,
                 parts.append(element.comment)
         elif isinstance(element, FunctionBox):
             parts.append(print_instruction(Instruction(element.name, params=element.params)))
+    if (row, col) in open_cells(network):  # the red mark, in words (keyboard users)
+        parts.append(QCoreApplication.translate(
+            "LadderEditor", "open circuit here: draw a wire or an element"))
     return "  |  ".join(parts)

@@ -219,6 +219,10 @@ def test_an_open_circuit_is_marked_at_the_cell_as_the_user_draws(
     reds = sum(1 for dx in range(-30, 31) for dy in range(-40, 41)
                if _is_red(image.pixelColor(centre.x() + dx, centre.y() + dy)))
     assert reds > 20  # the red gap is painted on that cell
+    view.move_cursor(0, 0, 1)
+    assert "open circuit here" in window.cell_label.text()
+    view.move_cursor(0, 0, 0)
+    assert "open circuit" not in window.cell_label.text()
     view.undo_stack.undo()
     assert view.network_items[0].open_ends == []
 
