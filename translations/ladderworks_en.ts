@@ -4,102 +4,102 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="108"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="143"/>
         <source>Alarm message file</source>
         <translation>Alarm message file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="145"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm files (*.dat);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="149"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="152"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>The program&apos;s messages (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="155"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm file... uses an AlarmMsg.dat instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="159"/>
         <source>No alarm file</source>
         <translation>No alarm file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="161"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} messages</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="162"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="165"/>
         <source>{0} lines with problems</source>
         <translation>{0} lines with problems</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="172"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="190"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(no message {0} in the alarm file)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="224"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="240"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="242"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="244"/>
         <source>Alarm file...</source>
         <translation>Alarm file...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
         <source>PLC time</source>
         <translation>PLC time</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="250"/>
         <source>Clock</source>
         <translation>Clock</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="251"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -728,32 +728,32 @@
         <translation>line {0}, column {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="59"/>
+        <location filename="../ladderworks/gui/error_list.py" line="61"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="60"/>
+        <location filename="../ladderworks/gui/error_list.py" line="62"/>
         <source>Warning</source>
         <translation>Warning</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="74"/>
+        <location filename="../ladderworks/gui/error_list.py" line="76"/>
         <source>Errors</source>
         <translation>Errors</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="76"/>
+        <location filename="../ladderworks/gui/error_list.py" line="78"/>
         <source>Kind</source>
         <translation>Kind</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="77"/>
+        <location filename="../ladderworks/gui/error_list.py" line="79"/>
         <source>Where</source>
         <translation>Where</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="78"/>
+        <location filename="../ladderworks/gui/error_list.py" line="80"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -978,7 +978,7 @@
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="196"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="202"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -986,17 +986,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="124"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
         <source>No reference entry for this instruction.</source>
         <translation>No reference entry for this instruction.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="136"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="149"/>
         <source>Instruction reference</source>
         <translation>Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="150"/>
         <source>Search, e.g. TMR</source>
         <translation>Search, e.g. TMR</translation>
     </message>
@@ -1119,402 +1119,412 @@
         <source>open circuit here: draw a wire or an element</source>
         <translation>open circuit here: draw a wire or an element</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="68"/>
+        <source>N{0}</source>
+        <translation>N{0}</translation>
+    </message>
 </context>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="159"/>
+        <location filename="../ladderworks/gui/main_window.py" line="162"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="160"/>
+        <location filename="../ladderworks/gui/main_window.py" line="163"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="161"/>
+        <location filename="../ladderworks/gui/main_window.py" line="164"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="164"/>
+        <location filename="../ladderworks/gui/main_window.py" line="167"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="170"/>
+        <location filename="../ladderworks/gui/main_window.py" line="173"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="178"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/main_window.py" line="183"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="185"/>
+        <location filename="../ladderworks/gui/main_window.py" line="188"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;properties...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/main_window.py" line="191"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="193"/>
+        <location filename="../ladderworks/gui/main_window.py" line="196"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="201"/>
+        <location filename="../ladderworks/gui/main_window.py" line="204"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="202"/>
+        <location filename="../ladderworks/gui/main_window.py" line="205"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="203"/>
+        <location filename="../ladderworks/gui/main_window.py" line="206"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="204"/>
+        <location filename="../ladderworks/gui/main_window.py" line="207"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="205"/>
+        <location filename="../ladderworks/gui/main_window.py" line="208"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="208"/>
+        <location filename="../ladderworks/gui/main_window.py" line="211"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="213"/>
+        <location filename="../ladderworks/gui/main_window.py" line="216"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="220"/>
+        <location filename="../ladderworks/gui/main_window.py" line="223"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="227"/>
+        <location filename="../ladderworks/gui/main_window.py" line="230"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="234"/>
+        <location filename="../ladderworks/gui/main_window.py" line="237"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="239"/>
+        <location filename="../ladderworks/gui/main_window.py" line="242"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <location filename="../ladderworks/gui/main_window.py" line="244"/>
         <source>&amp;Find...</source>
         <translation>&amp;Find...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="243"/>
+        <location filename="../ladderworks/gui/main_window.py" line="246"/>
         <source>R&amp;eplace...</source>
         <translation>R&amp;eplace...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/main_window.py" line="248"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="246"/>
+        <location filename="../ladderworks/gui/main_window.py" line="249"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="249"/>
+        <location filename="../ladderworks/gui/main_window.py" line="252"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="253"/>
+        <location filename="../ladderworks/gui/main_window.py" line="256"/>
         <source>Fit &amp;width</source>
         <translation>Fit &amp;width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="261"/>
+        <location filename="../ladderworks/gui/main_window.py" line="264"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="267"/>
+        <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="271"/>
+        <location filename="../ladderworks/gui/main_window.py" line="274"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="274"/>
+        <location filename="../ladderworks/gui/main_window.py" line="277"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="283"/>
+        <location filename="../ladderworks/gui/main_window.py" line="286"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="287"/>
+        <location filename="../ladderworks/gui/main_window.py" line="290"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="325"/>
+        <location filename="../ladderworks/gui/main_window.py" line="328"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="329"/>
+        <location filename="../ladderworks/gui/main_window.py" line="332"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="348"/>
+        <location filename="../ladderworks/gui/main_window.py" line="351"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="371"/>
+        <location filename="../ladderworks/gui/main_window.py" line="374"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="398"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="402"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="405"/>
+        <location filename="../ladderworks/gui/main_window.py" line="408"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="410"/>
+        <location filename="../ladderworks/gui/main_window.py" line="413"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="415"/>
+        <location filename="../ladderworks/gui/main_window.py" line="418"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="662"/>
+        <location filename="../ladderworks/gui/main_window.py" line="468"/>
+        <source>Zoom</source>
+        <translation>Zoom</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="684"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="668"/>
+        <location filename="../ladderworks/gui/main_window.py" line="690"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="673"/>
+        <location filename="../ladderworks/gui/main_window.py" line="695"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="523"/>
-        <location filename="../ladderworks/gui/main_window.py" line="669"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/main_window.py" line="550"/>
+        <location filename="../ladderworks/gui/main_window.py" line="691"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="119"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="109"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
         <source>{0} was changed by another program</source>
         <translation>{0} was changed by another program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="149"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="167"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="209"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="212"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</source>
         <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="335"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="460"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="314"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="315"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="319"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="320"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="627"/>
+        <location filename="../ladderworks/gui/main_window.py" line="654"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="646"/>
+        <location filename="../ladderworks/gui/main_window.py" line="670"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="699"/>
+        <location filename="../ladderworks/gui/main_window.py" line="721"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="702"/>
+        <location filename="../ladderworks/gui/main_window.py" line="724"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="734"/>
+        <location filename="../ladderworks/gui/main_window.py" line="756"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="735"/>
+        <location filename="../ladderworks/gui/main_window.py" line="757"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -1540,6 +1550,89 @@
         <location filename="../ladderworks/gui/editor/name_menu.py" line="71"/>
         <source>Element &amp;names</source>
         <translation>Element &amp;names</translation>
+    </message>
+</context>
+<context>
+    <name>Numbers</name>
+    <message>
+        <location filename="../ladderworks/gui/locale_numbers.py" line="18"/>
+        <source>{0}%</source>
+        <translation>{0}%</translation>
+    </message>
+</context>
+<context>
+    <name>OsError</name>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="16"/>
+        <source>it does not exist</source>
+        <translation>it does not exist</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="17"/>
+        <location filename="../ladderworks/gui/os_errors.py" line="18"/>
+        <source>permission denied</source>
+        <translation>permission denied</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="19"/>
+        <source>the disk is read-only</source>
+        <translation>the disk is read-only</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="20"/>
+        <source>the disk is full</source>
+        <translation>the disk is full</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="21"/>
+        <source>the disk quota is used up</source>
+        <translation>the disk quota is used up</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="22"/>
+        <source>it is a folder</source>
+        <translation>it is a folder</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="23"/>
+        <source>a part of the path is not a folder</source>
+        <translation>a part of the path is not a folder</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="24"/>
+        <source>it already exists</source>
+        <translation>it already exists</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="25"/>
+        <source>the name is too long</source>
+        <translation>the name is too long</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="26"/>
+        <location filename="../ladderworks/gui/os_errors.py" line="27"/>
+        <source>it is in use</source>
+        <translation>it is in use</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="28"/>
+        <source>the disk reported an input/output error</source>
+        <translation>the disk reported an input/output error</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="29"/>
+        <source>too many symbolic links</source>
+        <translation>too many symbolic links</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="30"/>
+        <source>too many files are open</source>
+        <translation>too many files are open</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="36"/>
+        <source>system error: {0}</source>
+        <translation>system error: {0}</translation>
     </message>
 </context>
 <context>
@@ -1753,130 +1846,130 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="130"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC CONTROL SCREEN</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="129"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="132"/>
         <source>Open .MOD…</source>
         <translation>Open .MOD…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="133"/>
         <source>Take the console&apos;s program</source>
         <translation>Take the console&apos;s program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="134"/>
         <source>Compile</source>
         <translation>Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="132"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="135"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="284"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="136"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
         <source>Program loaded from the console</source>
         <translation>Program loaded from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="163"/>
         <source>In the PLC: {0}</source>
         <translation>In the PLC: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="172"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="172"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="177"/>
         <source>Opened {0}</source>
         <translation>Opened {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="178"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="183"/>
         <source>Open mnemonic program</source>
         <translation>Open mnemonic program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="184"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="192"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>The console&apos;s program cannot be coded: see the error list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="196"/>
         <source>Program taken from the console</source>
         <translation>Program taken from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="231"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Compile failed: {0} error(s). {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="243"/>
         <source>Converting…</source>
         <translation>Converting…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="261"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="267"/>
         <source>the program on this screen</source>
         <translation>the program on this screen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="271"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Compile finished — {0} networks, {1} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="274"/>
         <source>({0} warning(s))</source>
         <translation>({0} warning(s))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="279"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="285"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="292"/>
         <source>Compile a program first</source>
         <translation>Compile a program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="307"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="313"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="316"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="319"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="316"/>
-        <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
-        <translation>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="322"/>
+        <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
+        <translation>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>
 </context>
 <context>
@@ -2329,101 +2422,122 @@
         <translation>Messages (%@4)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="115"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="137"/>
         <source>Program properties</source>
         <translation>Program properties</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="120"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="145"/>
         <source>General</source>
         <translation>General</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="121"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="146"/>
         <source>Property</source>
         <translation>Property</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="122"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="147"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="154"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="124"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
         <source>Title (%@1)</source>
         <translation>Title (%@1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="154"/>
         <source>Item</source>
         <translation>Item</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
         <source>Meaning</source>
         <translation>Meaning</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="126"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="151"/>
         <source>Text</source>
         <translation>Text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="128"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
         <source>System parameters (%@0)</source>
         <translation>System parameters (%@0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="131"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="156"/>
         <source>I/O modules (%@5)</source>
         <translation>I/O modules (%@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
         <source>Group</source>
         <translation>Group</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
         <source>Base</source>
         <translation>Base</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
         <source>Slot</source>
         <translation>Slot</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="134"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="159"/>
         <source>Module</source>
         <translation>Module</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="137"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
         <source>Sections</source>
         <translation>Sections</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
         <source>Header</source>
         <translation>Header</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
         <source>Lines</source>
         <translation>Lines</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="139"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="164"/>
         <source>First line</source>
         <translation>First line</translation>
+    </message>
+</context>
+<context>
+    <name>QFileDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="11"/>
+        <source>&amp;Look in:</source>
+        <translation>&amp;Look in:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="12"/>
+        <source>Files of &amp;type:</source>
+        <translation>Files of &amp;type:</translation>
+    </message>
+</context>
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="13"/>
+        <source>Discard</source>
+        <translation>Discard</translation>
     </message>
 </context>
 <context>
@@ -2538,120 +2652,128 @@
     </message>
 </context>
 <context>
+    <name>Recovery</name>
+    <message>
+        <location filename="../ladderworks/gui/recovery.py" line="182"/>
+        <source>Cannot write the recovery copy in {0}: {1}</source>
+        <translation>Cannot write the recovery copy in {0}: {1}</translation>
+    </message>
+</context>
+<context>
     <name>Scenario</name>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="88"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="89"/>
         <source>Run scenario</source>
         <translation>Run scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="89"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="90"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="185"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Scenario files (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="99"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="100"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="115"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="116"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="144"/>
         <source>passed</source>
         <translation>passed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="145"/>
         <source>FAILED</source>
         <translation>FAILED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="151"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: all {1} checks passed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="154"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {1} of {2} checks failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
         <source>Save the recorded scenario</source>
         <translation>Save the recorded scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="192"/>
         <source>recorded in LadderWorks</source>
         <translation>recorded in LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="195"/>
         <source>Recording inputs and forces...</source>
         <translation>Recording inputs and forces...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="204"/>
         <source>Recorded {0} changes</source>
         <translation>Recorded {0} changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="211"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="212"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="215"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
         <source>PLC scenario</source>
         <translation>PLC scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
         <source>Run scenario...</source>
         <translation>Run scenario...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
         <source>Record scenario</source>
         <translation>Record scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
         <source>Check</source>
         <translation>Check</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
         <source>Expected</source>
         <translation>Expected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
         <source>Got</source>
         <translation>Got</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
         <source>Time (ms)</source>
         <translation>Time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
@@ -2712,152 +2834,152 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="157"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="181"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="205"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="347"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="334"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="338"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="346"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="373"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
         <source>Cannot write {0}</source>
         <translation>Cannot write {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="353"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="380"/>
         <source>Export time chart as CSV</source>
         <translation>Export time chart as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="355"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
         <source>Export time chart as PNG</source>
         <translation>Export time chart as PNG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="366"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="442"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="402"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="77"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="78"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
@@ -3069,42 +3191,42 @@
 <context>
     <name>TraceFiles</name>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="48"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="49"/>
         <source>LADDER-III...</source>
         <translation>LADDER-III...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="50"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
         <source>Export the samples as a LADDER-III signal-trace result</source>
         <translation>Export the samples as a LADDER-III signal-trace result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="52"/>
         <source>Import...</source>
         <translation>Import...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="53"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="54"/>
         <source>Show a LADDER-III trace result or a CSV trace</source>
         <translation>Show a LADDER-III trace result or a CSV trace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="83"/>
         <source>{0}, line {1}: not a trace file</source>
         <translation>{0}, line {1}: not a trace file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="90"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="91"/>
         <source>Imported {0}: {1} samples</source>
         <translation>Imported {0}: {1} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
         <source>Export as LADDER-III trace result</source>
         <translation>Export as LADDER-III trace result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="116"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
         <source>Import a trace</source>
         <translation>Import a trace</translation>
     </message>

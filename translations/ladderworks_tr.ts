@@ -4,102 +4,102 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="108"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="143"/>
         <source>Alarm message file</source>
         <translation>Alarm mesaj dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="145"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm dosyaları (*.dat);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="149"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="152"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>Programın mesajları (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="155"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm dosyası... bunun yerine bir AlarmMsg.dat kullanır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="159"/>
         <source>No alarm file</source>
         <translation>Alarm dosyası yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="161"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} mesaj</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="162"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="165"/>
         <source>{0} lines with problems</source>
         <translation>{0} satırda sorun var</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="172"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="190"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(alarm dosyasında {0} numaralı mesaj yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="224"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>Bit yeniden 0: RESET bu alarmı siler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
         <source>Alarms</source>
         <translation>ALARMLAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="240"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="242"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="244"/>
         <source>Alarm file...</source>
         <translation>Alarm dosyası...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
         <source>PLC time</source>
         <translation>PLC zamanı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="250"/>
         <source>Clock</source>
         <translation>Saat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="251"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
@@ -728,32 +728,32 @@
         <translation>satır {0}, sütun {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="59"/>
+        <location filename="../ladderworks/gui/error_list.py" line="61"/>
         <source>Error</source>
         <translation>Hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="60"/>
+        <location filename="../ladderworks/gui/error_list.py" line="62"/>
         <source>Warning</source>
         <translation>Uyarı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="74"/>
+        <location filename="../ladderworks/gui/error_list.py" line="76"/>
         <source>Errors</source>
         <translation>Hatalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="76"/>
+        <location filename="../ladderworks/gui/error_list.py" line="78"/>
         <source>Kind</source>
         <translation>Tür</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="77"/>
+        <location filename="../ladderworks/gui/error_list.py" line="79"/>
         <source>Where</source>
         <translation>Yer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="78"/>
+        <location filename="../ladderworks/gui/error_list.py" line="80"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
@@ -978,7 +978,7 @@
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="196"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="202"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
     </message>
@@ -986,17 +986,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="124"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
         <source>No reference entry for this instruction.</source>
         <translation>Bu komut için başvuru kaydı yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="136"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="149"/>
         <source>Instruction reference</source>
         <translation>Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="150"/>
         <source>Search, e.g. TMR</source>
         <translation>Ara, örn. TMR</translation>
     </message>
@@ -1119,402 +1119,412 @@
         <source>open circuit here: draw a wire or an element</source>
         <translation>devre burada açık: bir çizgi veya bir eleman çizin</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="68"/>
+        <source>N{0}</source>
+        <translation>D{0}</translation>
+    </message>
 </context>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="159"/>
+        <location filename="../ladderworks/gui/main_window.py" line="162"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="160"/>
+        <location filename="../ladderworks/gui/main_window.py" line="163"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="161"/>
+        <location filename="../ladderworks/gui/main_window.py" line="164"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="164"/>
+        <location filename="../ladderworks/gui/main_window.py" line="167"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="170"/>
+        <location filename="../ladderworks/gui/main_window.py" line="173"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/main_window.py" line="178"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/main_window.py" line="183"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="185"/>
+        <location filename="../ladderworks/gui/main_window.py" line="188"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;özellikleri...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/main_window.py" line="191"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="193"/>
+        <location filename="../ladderworks/gui/main_window.py" line="196"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="201"/>
+        <location filename="../ladderworks/gui/main_window.py" line="204"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="202"/>
+        <location filename="../ladderworks/gui/main_window.py" line="205"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="203"/>
+        <location filename="../ladderworks/gui/main_window.py" line="206"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="204"/>
+        <location filename="../ladderworks/gui/main_window.py" line="207"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="205"/>
+        <location filename="../ladderworks/gui/main_window.py" line="208"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="208"/>
+        <location filename="../ladderworks/gui/main_window.py" line="211"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="213"/>
+        <location filename="../ladderworks/gui/main_window.py" line="216"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="220"/>
+        <location filename="../ladderworks/gui/main_window.py" line="223"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="227"/>
+        <location filename="../ladderworks/gui/main_window.py" line="230"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="234"/>
+        <location filename="../ladderworks/gui/main_window.py" line="237"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="239"/>
+        <location filename="../ladderworks/gui/main_window.py" line="242"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <location filename="../ladderworks/gui/main_window.py" line="244"/>
         <source>&amp;Find...</source>
         <translation>&amp;Bul...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="243"/>
+        <location filename="../ladderworks/gui/main_window.py" line="246"/>
         <source>R&amp;eplace...</source>
         <translation>&amp;Değiştir...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/main_window.py" line="248"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="246"/>
+        <location filename="../ladderworks/gui/main_window.py" line="249"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="249"/>
+        <location filename="../ladderworks/gui/main_window.py" line="252"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="253"/>
+        <location filename="../ladderworks/gui/main_window.py" line="256"/>
         <source>Fit &amp;width</source>
         <translation>&amp;Genişliğe sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="261"/>
+        <location filename="../ladderworks/gui/main_window.py" line="264"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="267"/>
+        <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="271"/>
+        <location filename="../ladderworks/gui/main_window.py" line="274"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="274"/>
+        <location filename="../ladderworks/gui/main_window.py" line="277"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="283"/>
+        <location filename="../ladderworks/gui/main_window.py" line="286"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="287"/>
+        <location filename="../ladderworks/gui/main_window.py" line="290"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="325"/>
+        <location filename="../ladderworks/gui/main_window.py" line="328"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="329"/>
+        <location filename="../ladderworks/gui/main_window.py" line="332"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="348"/>
+        <location filename="../ladderworks/gui/main_window.py" line="351"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="371"/>
+        <location filename="../ladderworks/gui/main_window.py" line="374"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="398"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="402"/>
         <source>&amp;Tools</source>
         <translation>&amp;Araçlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="405"/>
+        <location filename="../ladderworks/gui/main_window.py" line="408"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="410"/>
+        <location filename="../ladderworks/gui/main_window.py" line="413"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="415"/>
+        <location filename="../ladderworks/gui/main_window.py" line="418"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="662"/>
+        <location filename="../ladderworks/gui/main_window.py" line="468"/>
+        <source>Zoom</source>
+        <translation>Yakınlaştırma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="684"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="668"/>
+        <location filename="../ladderworks/gui/main_window.py" line="690"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="673"/>
+        <location filename="../ladderworks/gui/main_window.py" line="695"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="523"/>
-        <location filename="../ladderworks/gui/main_window.py" line="669"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/main_window.py" line="550"/>
+        <location filename="../ladderworks/gui/main_window.py" line="691"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="119"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="109"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="149"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="167"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="209"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="212"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</source>
         <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="335"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="460"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="314"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="315"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="319"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="320"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="627"/>
+        <location filename="../ladderworks/gui/main_window.py" line="654"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="646"/>
+        <location filename="../ladderworks/gui/main_window.py" line="670"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="699"/>
+        <location filename="../ladderworks/gui/main_window.py" line="721"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="702"/>
+        <location filename="../ladderworks/gui/main_window.py" line="724"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="734"/>
+        <location filename="../ladderworks/gui/main_window.py" line="756"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="735"/>
+        <location filename="../ladderworks/gui/main_window.py" line="757"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -1540,6 +1550,89 @@
         <location filename="../ladderworks/gui/editor/name_menu.py" line="71"/>
         <source>Element &amp;names</source>
         <translation>Eleman &amp;adları</translation>
+    </message>
+</context>
+<context>
+    <name>Numbers</name>
+    <message>
+        <location filename="../ladderworks/gui/locale_numbers.py" line="18"/>
+        <source>{0}%</source>
+        <translation>%{0}</translation>
+    </message>
+</context>
+<context>
+    <name>OsError</name>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="16"/>
+        <source>it does not exist</source>
+        <translation>böyle bir dosya veya klasör yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="17"/>
+        <location filename="../ladderworks/gui/os_errors.py" line="18"/>
+        <source>permission denied</source>
+        <translation>erişim izni yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="19"/>
+        <source>the disk is read-only</source>
+        <translation>disk salt okunur</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="20"/>
+        <source>the disk is full</source>
+        <translation>disk dolu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="21"/>
+        <source>the disk quota is used up</source>
+        <translation>disk kotası doldu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="22"/>
+        <source>it is a folder</source>
+        <translation>bu bir klasör</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="23"/>
+        <source>a part of the path is not a folder</source>
+        <translation>yolun bir parçası klasör değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="24"/>
+        <source>it already exists</source>
+        <translation>zaten var</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="25"/>
+        <source>the name is too long</source>
+        <translation>ad çok uzun</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="26"/>
+        <location filename="../ladderworks/gui/os_errors.py" line="27"/>
+        <source>it is in use</source>
+        <translation>kullanımda</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="28"/>
+        <source>the disk reported an input/output error</source>
+        <translation>disk bir giriş/çıkış hatası bildirdi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="29"/>
+        <source>too many symbolic links</source>
+        <translation>çok fazla sembolik bağlantı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="30"/>
+        <source>too many files are open</source>
+        <translation>çok fazla dosya açık</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="36"/>
+        <source>system error: {0}</source>
+        <translation>sistem hatası: {0}</translation>
     </message>
 </context>
 <context>
@@ -1753,130 +1846,130 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="130"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC KONTROL EKRANI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="129"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="132"/>
         <source>Open .MOD…</source>
         <translation>.MOD aç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="133"/>
         <source>Take the console&apos;s program</source>
         <translation>Konsoldaki programı al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="134"/>
         <source>Compile</source>
         <translation>Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="132"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="135"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="284"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="136"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
         <source>Program loaded from the console</source>
         <translation>Program konsoldan yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="163"/>
         <source>In the PLC: {0}</source>
         <translation>PLC&apos;deki program: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="172"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="172"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="177"/>
         <source>Opened {0}</source>
         <translation>{0} açıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="178"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="183"/>
         <source>Open mnemonic program</source>
         <translation>Mnemonik program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="184"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod *.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="192"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>Konsoldaki program kodlanamıyor: hata listesine bakın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="196"/>
         <source>Program taken from the console</source>
         <translation>Program konsoldan alındı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="231"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Derleme başarısız: {0} hata. {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="243"/>
         <source>Converting…</source>
         <translation>Çevriliyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="261"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="267"/>
         <source>the program on this screen</source>
         <translation>bu ekrandaki program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="271"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Derleme bitti — {0} devre, {1} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="274"/>
         <source>({0} warning(s))</source>
         <translation>({0} uyarı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="279"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="285"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} sinyal zorlanmış veya eleman pasif. PLC bunlarla başlatılsın mı?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="292"/>
         <source>Compile a program first</source>
         <translation>Önce bir program derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="307"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="313"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="316"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="319"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="316"/>
-        <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
-        <translation>tarama {0} · tarama süresi {1:.3f} / {2:.3f} / {3:.3f} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="322"/>
+        <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
+        <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>
 </context>
 <context>
@@ -2329,101 +2422,122 @@
         <translation>Mesajlar (%@4)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="115"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="137"/>
         <source>Program properties</source>
         <translation>Program özellikleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="120"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="145"/>
         <source>General</source>
         <translation>Genel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="121"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="146"/>
         <source>Property</source>
         <translation>Özellik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="122"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="147"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="154"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="124"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
         <source>Title (%@1)</source>
         <translation>Başlık (%@1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="154"/>
         <source>Item</source>
         <translation>Öğe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
         <source>Meaning</source>
         <translation>Anlamı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="126"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="151"/>
         <source>Text</source>
         <translation>Metin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="128"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
         <source>System parameters (%@0)</source>
         <translation>Sistem parametreleri (%@0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="131"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="156"/>
         <source>I/O modules (%@5)</source>
         <translation>G/Ç modülleri (%@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
         <source>Group</source>
         <translation>Grup</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
         <source>Base</source>
         <translation>Taban</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
         <source>Slot</source>
         <translation>Yuva</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="134"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="159"/>
         <source>Module</source>
         <translation>Modül</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="137"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
         <source>Sections</source>
         <translation>Bölümler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
         <source>Header</source>
         <translation>Başlık satırı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
         <source>Lines</source>
         <translation>Satırlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="139"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="164"/>
         <source>First line</source>
         <translation>İlk satır</translation>
+    </message>
+</context>
+<context>
+    <name>QFileDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="11"/>
+        <source>&amp;Look in:</source>
+        <translation>&amp;Konum:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="12"/>
+        <source>Files of &amp;type:</source>
+        <translation>Dosya &amp;türü:</translation>
+    </message>
+</context>
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="13"/>
+        <source>Discard</source>
+        <translation>Kaydetme</translation>
     </message>
 </context>
 <context>
@@ -2538,120 +2652,128 @@
     </message>
 </context>
 <context>
+    <name>Recovery</name>
+    <message>
+        <location filename="../ladderworks/gui/recovery.py" line="182"/>
+        <source>Cannot write the recovery copy in {0}: {1}</source>
+        <translation>Kurtarma kopyası {0} içine yazılamadı: {1}</translation>
+    </message>
+</context>
+<context>
     <name>Scenario</name>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="88"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="89"/>
         <source>Run scenario</source>
         <translation>Senaryo çalıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="89"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="90"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="185"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Senaryo dosyaları (*.csv);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="99"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="100"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="115"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="116"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="144"/>
         <source>passed</source>
         <translation>geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="145"/>
         <source>FAILED</source>
         <translation>BAŞARISIZ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="151"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: {1} denetimin tümü geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="154"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {2} denetimden {1} tanesi başarısız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
         <source>Save the recorded scenario</source>
         <translation>Kaydedilen senaryoyu sakla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="192"/>
         <source>recorded in LadderWorks</source>
         <translation>LadderWorks ile kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="195"/>
         <source>Recording inputs and forces...</source>
         <translation>Girişler ve zorlamalar kaydediliyor...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="204"/>
         <source>Recorded {0} changes</source>
         <translation>{0} değişiklik kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="211"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="212"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="215"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
         <source>PLC scenario</source>
         <translation>PLC senaryosu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
         <source>Run scenario...</source>
         <translation>Senaryo çalıştır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
         <source>Record scenario</source>
         <translation>Senaryo kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
         <source>Line</source>
         <translation>Satır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
         <source>Check</source>
         <translation>Denetim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
         <source>Expected</source>
         <translation>Beklenen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
         <source>Got</source>
         <translation>Okunan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
         <source>Time (ms)</source>
         <translation>Zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
@@ -2712,152 +2834,152 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="157"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="181"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="205"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="347"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="334"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="338"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="346"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="373"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="353"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="380"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="355"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="366"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="442"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="402"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="77"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="78"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
@@ -3069,42 +3191,42 @@
 <context>
     <name>TraceFiles</name>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="48"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="49"/>
         <source>LADDER-III...</source>
         <translation>LADDER-III...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="50"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
         <source>Export the samples as a LADDER-III signal-trace result</source>
         <translation>Örnekleri LADDER-III sinyal izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="52"/>
         <source>Import...</source>
         <translation>İçe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="53"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="54"/>
         <source>Show a LADDER-III trace result or a CSV trace</source>
         <translation>Bir LADDER-III izleme sonucunu ya da CSV izlemesini göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="83"/>
         <source>{0}, line {1}: not a trace file</source>
         <translation>{0}, satır {1}: izleme dosyası değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="90"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="91"/>
         <source>Imported {0}: {1} samples</source>
         <translation>{0} içe aktarıldı: {1} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
         <source>Export as LADDER-III trace result</source>
         <translation>LADDER-III izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="116"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
         <source>Import a trace</source>
         <translation>Bir izleme içe aktar</translation>
     </message>

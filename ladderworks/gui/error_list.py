@@ -29,6 +29,7 @@ class ErrorListDock(QDockWidget):
     """A dock listing diagnostics; `activated` is emitted on double-click."""
 
     activated = Signal(object)  # Diagnostic
+    diagnostics_changed = Signal(list)  # the diagnostics now listed
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -52,6 +53,7 @@ class ErrorListDock(QDockWidget):
         """Show these diagnostics (replacing the list)."""
         self._diagnostics = list(diagnostics)
         self._fill()
+        self.diagnostics_changed.emit(self.diagnostics())
 
     def _fill(self) -> None:
         self.tree.clear()

@@ -28,6 +28,7 @@ from ladderworks.gui.document import (
 )
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.files import ReadOnlyFile, atomic_write_bytes, is_read_only
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.recovery import Autosaver, RecoveredCopy, RecoveryStore, Snapshot
 
 if TYPE_CHECKING:
@@ -148,7 +149,7 @@ class FileActions(_Window):
             self.parameters.reset()
             self.warn(translate("MainWindow", "Open"),
                       translate("MainWindow", "Cannot read {0}: {1}").format(
-                          path.name + ".prm", error.strerror or str(error)))
+                          path.name + ".prm", os_error_text(error)))
             return
         if problems:
             first = problems[0]
@@ -166,7 +167,7 @@ class FileActions(_Window):
         except OSError as error:
             self.warn(translate("MainWindow", "Open"),
                       translate("MainWindow", "Cannot read {0}: {1}").format(
-                          path, error.strerror or str(error)))
+                          path, os_error_text(error)))
             return False
         self._open_parameters(path)
         self._show_result(path, result.program, result.ok, result.diagnostics)
@@ -334,7 +335,7 @@ class FileActions(_Window):
         except OSError as error:
             self.warn(translate("MainWindow", "Save"),
                       translate("MainWindow", "Cannot write {0}: {1}").format(
-                          name, error.strerror or str(error)))
+                          name, os_error_text(error)))
             return False
         return True
 
@@ -391,7 +392,7 @@ class FileActions(_Window):
         except OSError as error:
             self.warn(translate("MainWindow", "Export .MOD"),
                       translate("MainWindow", "Cannot write {0}: {1}").format(
-                          path, error.strerror or str(error)))
+                          path, os_error_text(error)))
             return False
         self._show_message(translate("MainWindow", "Exported {0}").format(path.name))
         return True
@@ -442,7 +443,7 @@ class FileActions(_Window):
         except OSError as error:
             self.warn(translate("MainWindow", "Recover unsaved work"),
                       translate("MainWindow", "Cannot read {0}: {1}").format(
-                          copy.data_path, error.strerror or str(error)))
+                          copy.data_path, os_error_text(error)))
             return False
         disk = DiskState(**copy.disk) if copy.disk else None  # type: ignore[arg-type]
         self.document.adopt(copy.original, result, disk)

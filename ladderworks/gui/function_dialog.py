@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtCore import QCoreApplication, QEvent, Qt
 from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (
     QDialog,
@@ -164,6 +164,12 @@ class FunctionDialog(QDialog):
         for row, param in enumerate(self._params):
             self._cell(row, 0).setText(param_label(param.name))
             self._cell(row, 2).setText(allowed_text(param, self.dialect))
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate on a live language switch (title, labels, parameter names)."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
 
     def show_help(self) -> InstructionHelp:
         """The Help button: this instruction's reference entry, beside the dialog."""

@@ -25,6 +25,13 @@ from ladderworks.paths import help_page
 translate = QCoreApplication.translate
 
 _ANCHOR = re.compile(r'\s*<a id="([^"]+)"></a>\s*$')
+# where a rule comes from ([seed], [pmc; X22], [choice]): for the docs' readers, not the user
+_SOURCE_MARK = re.compile(r"\s*\[(?:seed|pmc|choice)(?:;[^\]]*)?\]")
+
+
+def without_source_marks(text: str) -> str:
+    """The reference text without the provenance marks of `docs/instructions.md`."""
+    return _SOURCE_MARK.sub("", text)
 
 
 @lru_cache(maxsize=2)
@@ -44,10 +51,10 @@ def reference_sections(language: str = "en") -> dict[str, str]:
             match = _ANCHOR.search(line)
             if match:
                 key = match.group(1)
-                lines = [_ANCHOR.sub("", line).replace("### ", "## ", 1)]
+                lines = [without_source_marks(_ANCHOR.sub("", line)).replace("### ", "## ", 1)]
             continue
         if key is not None:
-            lines.append(line)
+            lines.append(without_source_marks(line))
     if key is not None:
         sections[key] = "\n".join(lines).strip() + "\n"
     return sections
@@ -87,9 +94,15 @@ class InstructionHelp(QDialog):
     def _fill(self) -> None:
         self.list.clear()
         for spec in ALL:
-            item = QListWidgetItem(f"{spec.name} — {instruction_title(spec)}")
+            text = f"{spec.name} — {instruction_title(spec)}"
+            item = QListWidgetItem(text)
+            item.setToolTip(text)
             item.setData(Qt.ItemDataRole.UserRole, spec.name)
             self.list.addItem(item)
+        # the longest name whole: the list is as wide as its widest entry
+        scroll = self.list.verticalScrollBar().sizeHint().width()
+        self.list.setMinimumWidth(self.list.sizeHintForColumn(0) + scroll
+                                  + 2 * self.list.frameWidth() + 8)
 
     def show_instruction(self, name: str) -> bool:
         """Select and show the entry of instruction `name`; False if there is none."""

@@ -35,6 +35,7 @@ from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
 from ladderworks.gui.find_replace import FindReplaceDialog
 from ladderworks.gui.help_browser import InstructionHelp
+from ladderworks.gui.locale_numbers import percent
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.parameter_document import ParameterDocument
 from ladderworks.gui.settings import MAX_RECENT, Settings
@@ -87,6 +88,7 @@ class MainWindow(FileActions, QMainWindow):
         self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.tool_palette)
         self.errors = ErrorListDock(self)
         self.errors.activated.connect(self.go_to_diagnostic)
+        self.errors.diagnostics_changed.connect(self.text_view.set_diagnostics)
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.errors)
         self.signals_dock = SignalListDock(self)
         self.signals_dock.address_chosen.connect(self.use_signal)
@@ -94,6 +96,7 @@ class MainWindow(FileActions, QMainWindow):
         self.tabifyDockWidget(self.tool_palette, self.signals_dock)
         self.tool_palette.raise_()
         self._make_menus()
+        self._status_text: Callable[[], str] | None = None
         self._make_status_bar()
         named = self.actions_by_name
         self.editor.context_actions = [
@@ -455,6 +458,14 @@ class MainWindow(FileActions, QMainWindow):
         self.cell_label.setObjectName("status_cell")
         self.cell_label.setMinimumWidth(140)
         self.statusBar().addPermanentWidget(self.cell_label)
+        self.zoom_label = QLabel(self)
+        self.zoom_label.setObjectName("status_zoom")
+        self.statusBar().addPermanentWidget(self.zoom_label)
+        self.editor.zoom_changed.connect(self._show_zoom)
+
+    def _show_zoom(self, *_args: object) -> None:
+        self.zoom_label.setText(percent(self.editor.zoom() * 100))
+        self.zoom_label.setToolTip(translate("MainWindow", "Zoom"))
 
     # -- language ------------------------------------------------------------------------
 
@@ -479,6 +490,9 @@ class MainWindow(FileActions, QMainWindow):
                 self.language.current == code
             )
         self._update_title()
+        self._retranslate_status()
+        self._show_zoom()
+        self.editor.viewport().update()  # the networks' numbers (N1 / D1) are drawn words
 
     def changeEvent(self, event: QEvent) -> None:
         """Retranslate on a language change."""
@@ -501,7 +515,7 @@ class MainWindow(FileActions, QMainWindow):
         """Make `tool` the current tool of the grid editor."""
         self.tool_actions[tool].setChecked(True)
         self.editor.set_tool(tool)
-        self.statusBar().showMessage(BY_TOOL[tool].help(), 4000)
+        self._show_message(lambda: BY_TOOL[tool].help(), 4000)
 
     def current_tool(self) -> Tool:
         """The checked tool."""
@@ -514,8 +528,21 @@ class MainWindow(FileActions, QMainWindow):
     def _show_hover(self, text: str) -> None:
         self.cell_label.setText(text)
 
-    def _show_message(self, text: str) -> None:
-        self.statusBar().showMessage(text, 6000)
+    def _show_message(self, text: str | Callable[[], str], timeout: int = 6000) -> None:
+        """A status-bar message; one given as a function is said again after a language
+        switch, a plain text is taken away then (it would stay in the old language)."""
+        self._status_text = text if callable(text) else None
+        self.statusBar().showMessage(text() if callable(text) else text, timeout)
+
+    def _retranslate_status(self) -> None:
+        if self.statusBar().currentMessage():
+            if self._status_text is not None:
+                self.statusBar().showMessage(self._status_text(), 6000)
+            else:
+                self.statusBar().clearMessage()
+        index, row, col = self.editor.cursor_cell
+        if index < len(self.editor.networks) and self.cell_label.text():
+            self.cell_label.setText(self.editor.describe_cell(index, row, col))
 
     # -- documents -----------------------------------------------------------------------
 
@@ -623,11 +650,8 @@ class MainWindow(FileActions, QMainWindow):
             diagnostics = diagnostics + compile_step.check(program)
         self.errors.set_diagnostics(diagnostics)
         self.errors.show()
-        self._show_message(
-            translate("MainWindow", "Check: {0} error(s)").format(
-                sum(1 for d in diagnostics if d.is_error)
-            )
-        )
+        errors = sum(1 for d in diagnostics if d.is_error)
+        self._show_message(lambda: translate("MainWindow", "Check: {0} error(s)").format(errors))
         return diagnostics
 
     def compile(self) -> bytes | None:
@@ -642,11 +666,9 @@ class MainWindow(FileActions, QMainWindow):
         self.errors.set_diagnostics(diagnostics)
         if binary is None:
             self.errors.show()
-            self._show_message(
-                translate("MainWindow", "Compile failed: {0} error(s)").format(
-                    sum(1 for d in diagnostics if d.is_error)
-                )
-            )
+            errors = sum(1 for d in diagnostics if d.is_error)
+            self._show_message(lambda: translate(
+                "MainWindow", "Compile failed: {0} error(s)").format(errors))
         else:
             assert program is not None
             self._show_message(self._load_into_plc(binary, program))

@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication
+from PySide6.QtCore import QCoreApplication, QEvent
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QDialog,
@@ -112,10 +112,35 @@ class ProgramPropertiesDialog(QDialog):
     def __init__(self, program: Program, path: Path | None, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("dialog_program_properties")
-        self.setWindowTitle(translate("ProgramProperties", "Program properties"))
+        self.program = program
+        self.path = path
         self.tabs = QTabWidget(self)
         self.tabs.setObjectName("properties_tabs")
         self.tables: dict[str, QTableWidget] = {}
+        self._fill()
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close, self)
+        buttons.rejected.connect(self.reject)
+        buttons.accepted.connect(self.accept)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.tabs, 1)
+        layout.addWidget(buttons)
+        self.resize(720, 440)
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Rebuild the tabs in the new language on a live switch (the shown tab stays)."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self._fill()
+        super().changeEvent(event)
+
+    def _fill(self) -> None:
+        program, path = self.program, self.path
+        self.setWindowTitle(translate("ProgramProperties", "Program properties"))
+        shown = self.tabs.currentIndex()
+        while self.tabs.count():
+            page = self.tabs.widget(0)
+            self.tabs.removeTab(0)
+            if page is not None:
+                page.deleteLater()
         pages: list[tuple[str, str, list[str], Sequence[tuple[str, ...]]]] = [
             ("properties_general", translate("ProgramProperties", "General"),
              [translate("ProgramProperties", "Property"),
@@ -143,13 +168,7 @@ class ProgramPropertiesDialog(QDialog):
             table = _table(self.tabs, name, headers, rows)
             self.tables[name] = table
             self.tabs.addTab(table, title)
-        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close, self)
-        buttons.rejected.connect(self.reject)
-        buttons.accepted.connect(self.accept)
-        layout = QVBoxLayout(self)
-        layout.addWidget(self.tabs, 1)
-        layout.addWidget(buttons)
-        self.resize(720, 440)
+        self.tabs.setCurrentIndex(max(shown, 0))
 
     def texts(self, name: str) -> list[list[str]]:
         """The cells of one tab's table, row by row (for tests)."""

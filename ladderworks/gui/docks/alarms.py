@@ -5,7 +5,7 @@ from __future__ import annotations
 from datetime import datetime
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QEvent, Qt
+from PySide6.QtCore import QCoreApplication, QEvent, QLocale, Qt
 from PySide6.QtGui import QAction, QBrush, QColor
 from PySide6.QtWidgets import (
     QDockWidget,
@@ -25,6 +25,7 @@ from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il.program import Program
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.dock_menus import add_dock, find_menu, insert_before, register_action
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
 
 translate = QCoreApplication.translate
@@ -34,13 +35,15 @@ COLUMNS = 5  # number, address, PLC time, clock, message
 
 
 def plc_time_text(ms: int) -> str:
-    """PLC (virtual clock) time as `m:ss.mmm` (`h:mm:ss.mmm` after an hour)."""
+    """PLC (virtual clock) time as `m:ss.mmm` (`h:mm:ss.mmm` after an hour), with the UI
+    language's decimal sign (`0:01,250` in Turkish)."""
     seconds, millis = divmod(ms, 1000)
     minutes, seconds = divmod(seconds, 60)
     hours, minutes = divmod(minutes, 60)
+    point = QLocale().decimalPoint()
     if hours:
-        return f"{hours}:{minutes:02d}:{seconds:02d}.{millis:03d}"
-    return f"{minutes}:{seconds:02d}.{millis:03d}"
+        return f"{hours}:{minutes:02d}:{seconds:02d}{point}{millis:03d}"
+    return f"{minutes}:{seconds:02d}{point}{millis:03d}"
 
 
 class AlarmDock(QDockWidget):
@@ -103,7 +106,7 @@ class AlarmDock(QDockWidget):
         except OSError as error:
             self.file_label.setText(
                 translate("AlarmPanel", "Cannot read {0}: {1}").format(
-                    Path(path).name, error.strerror
+                    Path(path).name, os_error_text(error)
                 )
             )
             self.file_label.setStyleSheet("color:#c00000;")

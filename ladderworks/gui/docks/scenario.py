@@ -33,6 +33,7 @@ from ladderworks.gui.docks.dock_menus import add_dock, find_menu, register_actio
 from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord
 from ladderworks.gui.files import atomic_write
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
 
 translate = QCoreApplication.translate
@@ -96,8 +97,8 @@ class ScenarioDock(QDockWidget):
         try:
             scenario = read_scenario(path, program.symbols if program is not None else None)
         except OSError as error:
-            self._say(translate("Scenario", "Cannot read {0}: {1}").format(path, error.strerror),
-                      error=True)
+            self._say(translate("Scenario", "Cannot read {0}: {1}").format(
+                      path, os_error_text(error)), error=True)
             return None
         return self.run(scenario)
 
@@ -208,8 +209,8 @@ class ScenarioDock(QDockWidget):
         try:
             atomic_write(path, text)
         except OSError as error:
-            self._say(translate("Scenario", "Cannot write {0}: {1}").format(path, error.strerror),
-                      error=True)
+            self._say(translate("Scenario", "Cannot write {0}: {1}").format(
+                      path, os_error_text(error)), error=True)
             return False
         self._say(translate("Scenario", "Saved {0}").format(path))
         return True

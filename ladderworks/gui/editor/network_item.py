@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from PySide6.QtCore import QPointF, QRectF, Qt
+from PySide6.QtCore import QCoreApplication, QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPainter, QPen
 from PySide6.QtWidgets import QGraphicsItem, QStyleOptionGraphicsItem, QWidget
 
@@ -62,6 +62,12 @@ def _element_comment_font() -> QFont:
     return font
 
 
+def network_tag(number: int) -> str:
+    """A network's number beside its rail: N1 (network), D1 in Turkish (devre), as the status
+    bar and the error list name it."""
+    return QCoreApplication.translate("LadderEditor", "N{0}").format(number)
+
+
 class NetworkItem(QGraphicsItem):
     """Paints one LadderNetwork; its number and hints come from the view."""
 
@@ -108,7 +114,7 @@ class NetworkItem(QGraphicsItem):
         painter.setPen(EMPTY_HINT if self.is_new else RAIL)
         painter.drawText(QRectF(0, top, LEFT - 8, wire_y()),
                          Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter,
-                         "+" if self.is_new else f"N{self.number}")
+                         "+" if self.is_new else network_tag(self.number))
         if net.listing is not None:
             self._paint_listing(painter, top)
             return

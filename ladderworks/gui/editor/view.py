@@ -62,6 +62,7 @@ class LadderEditor(CursorEdits, QGraphicsView):
     tool_requested = Signal(object)  # Tool picked with a letter key
     hover_changed = Signal(str)
     message = Signal(str)
+    zoom_changed = Signal(float)  # the new zoom factor (the status bar shows it)
     drawing_changed = Signal()
 
     def __init__(self, model: LadderModel, parent: QWidget | None = None) -> None:
@@ -382,6 +383,7 @@ class LadderEditor(CursorEdits, QGraphicsView):
         self.resetTransform()
         self.scale(self._zoom, self._zoom)
         self.inline.close()
+        self.zoom_changed.emit(self._zoom)
 
     # -- events -------------------------------------------------------------------------------
 
