@@ -1142,8 +1142,8 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="99"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="217"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="101"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="219"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="250"/>
         <source>NOT</source>
         <translation>NOT</translation>
@@ -1154,37 +1154,37 @@
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="205"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="212"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="207"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="214"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="353"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="228"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="234"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="230"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="236"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="387"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="102"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="104"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="96"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="103"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="112"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="114"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="116"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="118"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -1199,17 +1199,17 @@
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="162"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="164"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="164"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="166"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="171"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="173"/>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="63"/>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="132"/>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="150"/>
@@ -1233,27 +1233,32 @@
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="245"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="247"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="257"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="259"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="265"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="267"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="70"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="67"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="56"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="84"/>
+        <source>open circuit here: draw a wire or an element</source>
+        <translation>open circuit here: draw a wire or an element</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="68"/>
         <source>N{0}</source>
         <translation>N{0}</translation>
     </message>
@@ -1261,239 +1266,239 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="167"/>
+        <location filename="../ladderworks/gui/main_window.py" line="168"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="168"/>
+        <location filename="../ladderworks/gui/main_window.py" line="169"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="169"/>
+        <location filename="../ladderworks/gui/main_window.py" line="170"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="172"/>
+        <location filename="../ladderworks/gui/main_window.py" line="173"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="178"/>
+        <location filename="../ladderworks/gui/main_window.py" line="179"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="183"/>
+        <location filename="../ladderworks/gui/main_window.py" line="184"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/main_window.py" line="189"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="193"/>
+        <location filename="../ladderworks/gui/main_window.py" line="194"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;properties...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="196"/>
+        <location filename="../ladderworks/gui/main_window.py" line="197"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="201"/>
+        <location filename="../ladderworks/gui/main_window.py" line="202"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="209"/>
+        <location filename="../ladderworks/gui/main_window.py" line="210"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="210"/>
+        <location filename="../ladderworks/gui/main_window.py" line="211"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="211"/>
+        <location filename="../ladderworks/gui/main_window.py" line="212"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="212"/>
+        <location filename="../ladderworks/gui/main_window.py" line="213"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="213"/>
+        <location filename="../ladderworks/gui/main_window.py" line="214"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="216"/>
+        <location filename="../ladderworks/gui/main_window.py" line="217"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="221"/>
+        <location filename="../ladderworks/gui/main_window.py" line="222"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="228"/>
+        <location filename="../ladderworks/gui/main_window.py" line="229"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="235"/>
+        <location filename="../ladderworks/gui/main_window.py" line="236"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="242"/>
+        <location filename="../ladderworks/gui/main_window.py" line="243"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="247"/>
+        <location filename="../ladderworks/gui/main_window.py" line="248"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="249"/>
+        <location filename="../ladderworks/gui/main_window.py" line="250"/>
         <source>&amp;Find...</source>
         <translation>&amp;Find...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="251"/>
+        <location filename="../ladderworks/gui/main_window.py" line="252"/>
         <source>R&amp;eplace...</source>
         <translation>R&amp;eplace...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="253"/>
+        <location filename="../ladderworks/gui/main_window.py" line="254"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="254"/>
+        <location filename="../ladderworks/gui/main_window.py" line="255"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="257"/>
+        <location filename="../ladderworks/gui/main_window.py" line="258"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="261"/>
+        <location filename="../ladderworks/gui/main_window.py" line="262"/>
         <source>Fit &amp;width</source>
         <translation>Fit &amp;width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="269"/>
+        <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="275"/>
+        <location filename="../ladderworks/gui/main_window.py" line="276"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="279"/>
+        <location filename="../ladderworks/gui/main_window.py" line="280"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="282"/>
+        <location filename="../ladderworks/gui/main_window.py" line="283"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="291"/>
+        <location filename="../ladderworks/gui/main_window.py" line="292"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="295"/>
+        <location filename="../ladderworks/gui/main_window.py" line="296"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="333"/>
+        <location filename="../ladderworks/gui/main_window.py" line="334"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="337"/>
+        <location filename="../ladderworks/gui/main_window.py" line="338"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="356"/>
+        <location filename="../ladderworks/gui/main_window.py" line="357"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="379"/>
+        <location filename="../ladderworks/gui/main_window.py" line="380"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="401"/>
+        <location filename="../ladderworks/gui/main_window.py" line="404"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="405"/>
+        <location filename="../ladderworks/gui/main_window.py" line="408"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="411"/>
+        <location filename="../ladderworks/gui/main_window.py" line="414"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="416"/>
+        <location filename="../ladderworks/gui/main_window.py" line="419"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="421"/>
+        <location filename="../ladderworks/gui/main_window.py" line="424"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="471"/>
+        <location filename="../ladderworks/gui/main_window.py" line="474"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="687"/>
+        <location filename="../ladderworks/gui/main_window.py" line="690"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="693"/>
+        <location filename="../ladderworks/gui/main_window.py" line="696"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="698"/>
+        <location filename="../ladderworks/gui/main_window.py" line="701"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="429"/>
-        <location filename="../ladderworks/gui/main_window.py" line="553"/>
-        <location filename="../ladderworks/gui/main_window.py" line="694"/>
+        <location filename="../ladderworks/gui/main_window.py" line="556"/>
+        <location filename="../ladderworks/gui/main_window.py" line="697"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -1632,34 +1637,57 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="657"/>
+        <location filename="../ladderworks/gui/main_window.py" line="660"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="673"/>
+        <location filename="../ladderworks/gui/main_window.py" line="676"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="724"/>
+        <location filename="../ladderworks/gui/main_window.py" line="727"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="727"/>
+        <location filename="../ladderworks/gui/main_window.py" line="730"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="759"/>
+        <location filename="../ladderworks/gui/main_window.py" line="762"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="760"/>
+        <location filename="../ladderworks/gui/main_window.py" line="763"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
+    </message>
+</context>
+<context>
+    <name>NameDisplayMenu</name>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="22"/>
+        <source>&amp;Address only</source>
+        <translation>&amp;Address only</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="24"/>
+        <source>Address and &amp;symbol</source>
+        <translation>Address and &amp;symbol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="25"/>
+        <source>Address, symbol and &amp;comment</source>
+        <translation>Address, symbol and &amp;comment</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="71"/>
+        <source>Element &amp;names</source>
+        <translation>Element &amp;names</translation>
     </message>
 </context>
 <context>
@@ -2085,93 +2113,93 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="178"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="165"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="179"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="166"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="180"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="167"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="181"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="182"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="183"/>
         <source>Why?</source>
         <translation>Why?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="184"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="173"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="187"/>
         <source>Back to live</source>
         <translation>Back to live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="188"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="232"/>
         <location filename="../ladderworks/gui/docks/online.py" line="141"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="224"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="238"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="240"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="228"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="242"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="283"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="327"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="337"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="346"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="98"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>

@@ -28,6 +28,7 @@ from ladderworks.gui import compile_step, questions
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.editor.interactions import BY_TOOL, INTERACTIONS
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
+from ladderworks.gui.editor.name_menu import NameDisplayMenu
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.editor.zoom import FitWidth
 from ladderworks.gui.error_list import ErrorListDock
@@ -388,6 +389,8 @@ class MainWindow(FileActions, QMainWindow):
                 None,
             ],
         )
+        view.addMenu(NameDisplayMenu(self.settings, self))  # element names (issue 18)
+        view.addSeparator()
         for dock, name in (
             (self.tool_palette, "action_dock_palette"),
             (self.errors, "action_dock_errors"),

@@ -21,9 +21,9 @@ from ladderworks.core.ladder.model import DEFAULT_COLUMNS, LadderNetwork
 from ladderworks.core.symbols import SymbolTable, describe
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
 from ladderworks.gui.editor.geometry import (
-    CELL_H,
     LISTING_LINE_H,
     SPARE_ROWS,
+    cell_h,
     grid_top,
     network_height,
     network_width,
@@ -94,14 +94,14 @@ def program_title(program: Program) -> str:
 
 def print_height(network: LadderNetwork) -> float:
     """The network's height on paper: as on screen, less the spare row the editor adds."""
-    spare = SPARE_ROWS * CELL_H if network.listing is None else 0.0
+    spare = SPARE_ROWS * cell_h() if network.listing is None else 0.0
     return network_height(network) - spare
 
 
 def _row_cut(network: LadderNetwork, scale: float, top: float, limit: float) -> float:
     """Where to cut a network continued on the next page: at the last row boundary (on
     paper) after `top` and not past `limit`; at `limit` when no row boundary fits."""
-    first, step = grid_top(network), LISTING_LINE_H if network.listing is not None else CELL_H
+    first, step = grid_top(network), LISTING_LINE_H if network.listing is not None else cell_h()
     rows = int((limit / scale - first) // step)
     cut = (first + rows * step) * scale
     return cut if top < cut <= limit else limit

@@ -13,7 +13,7 @@ from pytestqt.qtbot import QtBot
 from ladderworks.core.address import parse_address
 from ladderworks.core.ladder.model import Contact, LadderNetwork
 from ladderworks.gui import print_actions
-from ladderworks.gui.editor.geometry import network_width
+from ladderworks.gui.editor.geometry import cell_h, network_width
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.print_pages import LadderPages, PrintJob, print_height
 from tests.real_programs import real_bytes
@@ -89,7 +89,7 @@ def test_a_network_taller_than_a_page_is_continued_on_the_next() -> None:
     assert sum(p.height for p in parts) == print_height(tall)
     assert [p.top for p in parts] == sorted(p.top for p in parts)
     for part in parts[1:]:  # cut between rows, not through a contact
-        assert part.top % 60 == 0  # CELL_H: the network has no comment lines
+        assert part.top % cell_h() == 0  # whole rows: the network has no comment lines
 
 
 def test_print_sends_the_pages_to_the_printer_the_dialog_chose(
