@@ -183,6 +183,144 @@
     </message>
 </context>
 <context>
+    <name>CrossReference</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="60"/>
+        <source>Contact</source>
+        <translation>Kontak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="61"/>
+        <source>NOT contact</source>
+        <translation>DEĞİL kontak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
+        <source>Coil</source>
+        <translation>Çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <source>NOT coil</source>
+        <translation>DEĞİL çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <source>SET coil</source>
+        <translation>SET çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <source>RST coil</source>
+        <translation>RST çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="75"/>
+        <source>Read</source>
+        <translation>Okuma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="77"/>
+        <source>Write</source>
+        <translation>Yazma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <source>Read and write</source>
+        <translation>Okuma ve yazma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="84"/>
+        <source>Level {0}</source>
+        <translation>{0}. seviye</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <source>Symbol</source>
+        <translation>Sembol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <source>Network</source>
+        <translation>Devre</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <source>Label</source>
+        <translation>Etiket</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
+        <source>Program part</source>
+        <translation>Program bölümü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <source>Element</source>
+        <translation>Eleman</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <source>Access</source>
+        <translation>Erişim</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <source>Comment</source>
+        <translation>Yorum</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="239"/>
+        <source>All addresses — uses: {0}</source>
+        <translation>Tüm adresler — kullanım: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="249"/>
+        <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
+        <translation>&apos;{0}&apos; ne bir adres ne de programın bir sembolü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="260"/>
+        <source>{0} is not used in the program</source>
+        <translation>{0} programda kullanılmıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <source>{0} — uses: {1} (read: {2}, written: {3})</source>
+        <translation>{0} — kullanım: {1} (okuma: {2}, yazma: {3})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="281"/>
+        <source>Cross reference</source>
+        <translation>Çapraz referans</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="287"/>
+        <source>&amp;Address or symbol:</source>
+        <translation>&amp;Adres veya sembol:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="288"/>
+        <source>e.g. X21.7, R100, ESKIP</source>
+        <translation>örn. X21.7, R100, ESKIP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="284"/>
+        <source>Cross &amp;reference of this address</source>
+        <translation>Bu adresin çapraz &amp;referansı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="285"/>
+        <source>List every place the program reads and writes the address</source>
+        <translation>Programın adresi okuduğu ve yazdığı her yeri listeler</translation>
+    </message>
+</context>
+<context>
     <name>Diagnostic</name>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="74"/>
@@ -1004,8 +1142,8 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="99"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="217"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="101"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="219"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="250"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
@@ -1016,37 +1154,37 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="205"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="212"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="207"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="214"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="353"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="228"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="234"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="230"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="236"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="387"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="102"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="104"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="96"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="103"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="112"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="114"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="116"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="118"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -1061,17 +1199,17 @@
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="162"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="164"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="164"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="166"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="171"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="173"/>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="63"/>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="132"/>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="150"/>
@@ -1095,27 +1233,32 @@
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="245"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="247"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="257"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="259"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="265"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="267"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="70"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="67"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="56"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="84"/>
+        <source>open circuit here: draw a wire or an element</source>
+        <translation>devre burada açık: bir çizgi veya bir eleman çizin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="68"/>
         <source>N{0}</source>
         <translation>D{0}</translation>
     </message>
@@ -1333,29 +1476,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="173"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="369"/>
+        <location filename="../ladderworks/gui/main_window.py" line="377"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="375"/>
+        <location filename="../ladderworks/gui/main_window.py" line="383"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="380"/>
+        <location filename="../ladderworks/gui/main_window.py" line="388"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="429"/>
-        <location filename="../ladderworks/gui/main_window.py" line="236"/>
-        <location filename="../ladderworks/gui/main_window.py" line="376"/>
+        <location filename="../ladderworks/gui/main_window.py" line="244"/>
+        <location filename="../ladderworks/gui/main_window.py" line="384"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1494,34 +1637,57 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="339"/>
+        <location filename="../ladderworks/gui/main_window.py" line="347"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="355"/>
+        <location filename="../ladderworks/gui/main_window.py" line="363"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="406"/>
+        <location filename="../ladderworks/gui/main_window.py" line="414"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="409"/>
+        <location filename="../ladderworks/gui/main_window.py" line="417"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="441"/>
+        <location filename="../ladderworks/gui/main_window.py" line="449"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="442"/>
+        <location filename="../ladderworks/gui/main_window.py" line="450"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
+    </message>
+</context>
+<context>
+    <name>NameDisplayMenu</name>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="22"/>
+        <source>&amp;Address only</source>
+        <translation>Yalnız &amp;adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="24"/>
+        <source>Address and &amp;symbol</source>
+        <translation>Adres ve &amp;sembol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="25"/>
+        <source>Address, symbol and &amp;comment</source>
+        <translation>Adres, sembol ve &amp;yorum</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="71"/>
+        <source>Element &amp;names</source>
+        <translation>Eleman &amp;adları</translation>
     </message>
 </context>
 <context>
@@ -1947,93 +2113,93 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="165"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="179"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="166"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="180"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="167"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="181"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="182"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="183"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="184"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="171"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="185"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="188"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="175"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="189"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="219"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="233"/>
         <location filename="../ladderworks/gui/docks/online.py" line="141"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="239"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="241"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="243"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="284"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="328"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="324"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="338"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="333"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="347"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="98"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
@@ -2264,6 +2430,89 @@
         <location filename="../ladderworks/gui/docks/tables.py" line="278"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
+    </message>
+</context>
+<context>
+    <name>Print</name>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="43"/>
+        <source>Untitled</source>
+        <translation>Adsız</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="68"/>
+        <source>Printing the ladder…</source>
+        <translation>Ladder yazdırılıyor…</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="69"/>
+        <source>Cancel</source>
+        <translation>İptal</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="147"/>
+        <source>Export PDF</source>
+        <translation>PDF olarak dışa aktar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="148"/>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF dosyaları (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="156"/>
+        <source>&amp;Print...</source>
+        <translation>&amp;Yazdır...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="157"/>
+        <source>Export P&amp;DF...</source>
+        <translation>P&amp;DF olarak dışa aktar...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="163"/>
+        <source>Printing was cancelled or failed</source>
+        <translation>Yazdırma iptal edildi veya başarısız oldu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="165"/>
+        <source>{0} pages written to {1}</source>
+        <translation>{0} sayfa {1} dosyasına yazıldı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="167"/>
+        <source>{0} pages sent to the printer</source>
+        <translation>{0} sayfa yazıcıya gönderildi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="258"/>
+        <source>Page {0} / {1}</source>
+        <translation>Sayfa {0} / {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="284"/>
+        <source>Cross reference</source>
+        <translation>Çapraz referans</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="287"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="288"/>
+        <source>Symbol</source>
+        <translation>Sembol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="289"/>
+        <source>Written in networks</source>
+        <translation>Yazıldığı devreler</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="290"/>
+        <source>Read in networks</source>
+        <translation>Okunduğu devreler</translation>
     </message>
 </context>
 <context>
@@ -2806,147 +3055,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="157"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="156"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="176"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="188"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="200"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="213"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="347"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="346"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="360"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="365"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="373"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="372"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="370"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="379"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="429"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="434"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="442"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="446"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="449"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="451"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>

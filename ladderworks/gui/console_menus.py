@@ -162,6 +162,12 @@ class ConsoleMenus(QObject):
         if toolbar:
             self.toolbar.addAction(action)
 
+    def add_menu(self, menu: str, submenu: QMenu) -> None:
+        """Put `submenu` at the end of `menu`, between separators (its objectName is its key)."""
+        self.menus[menu].addSeparator()
+        self.menus[menu].addMenu(submenu)
+        self.menus[submenu.objectName()] = submenu
+
     def add_many(self, menu: str, actions: list[QAction], *, separator: bool = False) -> None:
         """Put `actions` at the end of `menu`, after a separator when asked."""
         for index, action in enumerate(actions):

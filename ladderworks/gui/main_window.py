@@ -25,10 +25,12 @@ from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step, questions
 from ladderworks.gui.actions_table import CAN_REDO, CAN_UNDO, CONTEXT_MENU, LADDER_SHOWN
 from ladderworks.gui.console_menus import Condition, ConsoleMenus
+from ladderworks.gui.docks import cross_reference
 from ladderworks.gui.docks.plc_docks import build_plc_docks
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.editor.interactions import BY_TOOL
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
+from ladderworks.gui.editor.name_menu import NameDisplayMenu
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.editor.zoom import FitWidth
 from ladderworks.gui.error_list import ErrorListDock
@@ -39,6 +41,7 @@ from ladderworks.gui.locale_numbers import percent
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.parameter_document import ParameterDocument
 from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.print_actions import PrintActions
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.signal_list import SignalListDock
@@ -89,6 +92,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         fit = self.actions_by_name["action_zoom_fit_width"]
         for name in ("action_zoom_in", "action_zoom_out", "action_zoom_reset"):
             self.actions_by_name[name].triggered.connect(lambda _c=False: fit.setChecked(False))
+        self.menus.add_menu("menu_view", NameDisplayMenu(self.settings, self))  # element names
         self.recent_menu = self.menus.menus["menu_recent"]
         self.recent_actions: list[QAction] = []
         for index in range(MAX_RECENT):
@@ -104,6 +108,9 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.editor.context_actions = [named[name] if name else None for name in CONTEXT_MENU]
         self.plc_docks = build_plc_docks(self, self.menus, PlcSession(self), self.editor)
         self.program_opened.connect(self.plc_docks.alarms.use_program)
+        self.cross_reference = cross_reference.install(self, self.menus, self.editor,
+                                                       self.errors)
+        self.printing = PrintActions(self, self.menus)  # File › Print, Export PDF
         # PMC parameters (T/C/K/D set in the PLC tables) are saved with the program
         self.parameters = ParameterDocument(self.plc_docks.session)
         self.plc_docks.session.parameters_changed.connect(self._update_title)
@@ -178,6 +185,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Set every text in the current UI language (the docks set their own)."""
         self.menus.retranslate()
         self.plc_docks.retranslate()
+        self.printing.retranslate()
         for code in ("en", "tr"):
             self.actions_by_name[f"action_language_{code}"].setChecked(
                 self.language.current == code

@@ -63,6 +63,16 @@ class Settings:
         self._store.setValue("window/state", state)
         self._store.sync()
 
+    def name_display(self) -> str:
+        """What the ladder shows with each element ("address", "symbol", "comment"), or ""."""
+        value = self._store.value("view/names", "")
+        return str(value) if isinstance(value, str) else ""
+
+    def set_name_display(self, value: str) -> None:
+        """Remember what the ladder shows with each element."""
+        self._store.setValue("view/names", value)
+        self._store.sync()
+
     def zoom(self) -> tuple[float, bool]:
         """The ladder's saved zoom factor and whether it fits the width (1.0, False at first)."""
         try:

@@ -6,26 +6,23 @@ from PySide6.QtCore import QCoreApplication
 
 from ladderworks.core.address import Address
 from ladderworks.core.il import Instruction, print_instruction
-from ladderworks.core.ladder import Coil, Contact, FunctionBox, LadderNetwork
+from ladderworks.core.ladder import Coil, Contact, FunctionBox, LadderNetwork, open_cells
+from ladderworks.core.naming import address_names
 from ladderworks.core.signals import signal_at
 from ladderworks.core.symbols import SymbolTable, describe
 from ladderworks.gui.translation import ui_is_turkish
 
 
 def name_and_text(address: object, symbols: SymbolTable | None) -> tuple[str, str] | None:
-    """(name, description): the program's symbol and comment, else the manual's signal name
-    and its description in the UI language; None for an address with neither."""
+    """(name, description): the program's symbol and comment, each falling back to the manual's
+    signal name and its description in the UI language (`core.naming`); None for an address
+    with neither."""
     if not isinstance(address, Address):
         return None
-    if symbols is not None:
-        found = symbols.lookup(address)
-        if found is not None and found.symbol:
-            return found.symbol, " / ".join(found.comments)
-    signal = signal_at(address)
-    if signal is None:
+    names = address_names(address, symbols, turkish=ui_is_turkish())
+    if not names.symbol and not names.comment:
         return None
-    own = signal.turkish if ui_is_turkish() else signal.english
-    return signal.name, own or signal.english
+    return names.symbol, names.comment
 
 
 def labelled(address: Address, symbols: SymbolTable | None) -> str:
@@ -83,4 +80,7 @@ def cell_status(network: LadderNetwork, index: int, row: int, col: int,
                 parts.append(element.comment)
         elif isinstance(element, FunctionBox):
             parts.append(print_instruction(Instruction(element.name, params=element.params)))
+    if (row, col) in open_cells(network):  # the red mark, in words (keyboard users)
+        parts.append(QCoreApplication.translate(
+            "LadderEditor", "open circuit here: draw a wire or an element"))
     return "  |  ".join(parts)

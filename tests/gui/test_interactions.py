@@ -30,8 +30,9 @@ def test_every_tool_has_one_interaction_with_its_own_key_and_icon() -> None:
 def test_palette_and_tools_menu_are_built_from_the_interactions(window: MainWindow) -> None:
     names = [f"tool_{cls.tool.value}" for cls in INTERACTIONS]
     assert [button.defaultAction().objectName() for button in window.tool_palette.buttons] == names
-    menu = window.menuBar().findChild(type(window.recent_menu), "menu_tools")
-    assert [a.objectName() for a in menu.actions() if not a.isSeparator()] == names
+    menu = window.menus.menus["menu_tools"]  # the tools, then the cross reference
+    assert [a.objectName() for a in menu.actions() if not a.isSeparator()] == [
+        *names, "action_cross_reference"]
     for cls in INTERACTIONS:
         action = window.tool_actions[cls.tool]
         assert action.text() == f"{cls.name()}\t{cls.key}" and action.statusTip() == cls.help()

@@ -85,7 +85,9 @@ class CursorEdits:
 
     def place_bit(self, index: int, row: int, col: int, element: Contact | Coil) -> None:
         """Place a contact or coil and open its address; on one of the same kind, turn it
-        into `element`'s kind (NOT, SET, RST) and open its address."""
+        into `element`'s kind (NOT, SET, RST) and open its address. A coil goes to the coil
+        column; a placed element is wired to its neighbours (core `place_wired`)."""
+        row, col = core.target_cell(self.networks[index], row, col, element)
         found = self.networks[index].element_at(row, col)
         if found is not None and type(found[1]) is type(element):
             old = found[1]
@@ -101,7 +103,7 @@ class CursorEdits:
             return
         text = (translate("LadderEditor", "Place contact") if isinstance(element, Contact)
                 else translate("LadderEditor", "Place coil"))
-        if self.run_edit(index, lambda n: core.place(n, row, col, element), text):
+        if self.run_edit(index, lambda n: core.place_wired(n, row, col, element), text):
             self.open_address_editor(index, row, col)
 
     def add_parallel(self, index: int, row: int, col: int) -> None:
@@ -158,7 +160,7 @@ class CursorEdits:
                 return
             if box is None:
                 element = FunctionBox.new(spec.name, instruction.params, dialog.comment_text)
-                self.run_edit(index, lambda n: core.place(n, row, col, element),
+                self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
                               translate("LadderEditor", "Place {0}").format(spec.name))
             else:
                 title = translate("LadderEditor", "Parameters of {0}").format(spec.name)

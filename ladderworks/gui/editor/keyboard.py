@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QPoint, Qt
 from PySide6.QtGui import QContextMenuEvent, QKeyEvent
 
-from ladderworks.gui.editor.geometry import CELL_H, SPARE_ROWS, grid_top
+from ladderworks.gui.editor.geometry import SPARE_ROWS, cell_h, grid_top, wire_y
 
 if TYPE_CHECKING:
     from ladderworks.gui.editor.view import LadderEditor
@@ -60,12 +60,12 @@ class GridKeys:
         networks = editor.networks
         if down and index >= len(networks) - 2:
             editor.finish_loading()  # a large program: page on into the networks still pending
-        page = max(editor.viewport().height() / max(editor.zoom(), 0.01) - CELL_H, CELL_H)
-        y = tops[index] + grid_top(networks[index]) + row * CELL_H + CELL_H / 2
+        page = max(editor.viewport().height() / max(editor.zoom(), 0.01) - cell_h(), cell_h())
+        y = tops[index] + grid_top(networks[index]) + row * cell_h() + wire_y()
         y += page if down else -page
         target = editor.layout_.network_at(y)
         net = networks[target]
-        local = int((y - tops[target] - grid_top(net)) // CELL_H)
+        local = int((y - tops[target] - grid_top(net)) // cell_h())
         last_row = net.rows - 1 + SPARE_ROWS
         if target == index and local == row:  # at the first or last page: to its first/last row
             local = last_row if down else 0

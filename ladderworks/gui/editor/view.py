@@ -25,7 +25,6 @@ from ladderworks.core.ladder import LadderNetwork, Selection
 from ladderworks.core.symbols import resolve
 from ladderworks.gui.editor.editing import CursorEdits
 from ladderworks.gui.editor.geometry import (
-    CELL_H,
     CELL_W,
     COMMENT_H,
     LEFT,
@@ -33,6 +32,7 @@ from ladderworks.gui.editor.geometry import (
     Hit,
     Layout,
     cell_centre,
+    cell_h,
     cell_origin,
     node_point,
 )
@@ -204,8 +204,8 @@ class LadderEditor(CursorEdits, QGraphicsView):
         if not self.networks or not self.layout_.tops:
             return
         shown = self.mapToScene(self.viewport().rect()).boundingRect()
-        first = self.layout_.network_at(shown.top() - CELL_H)
-        last = self.layout_.network_at(shown.bottom() + CELL_H)
+        first = self.layout_.network_at(shown.top() - cell_h())
+        last = self.layout_.network_at(shown.bottom() + cell_h())
         for index in range(first, min(last, len(self.networks) - 1) + 1):
             self.network_items[index]
 
@@ -242,6 +242,12 @@ class LadderEditor(CursorEdits, QGraphicsView):
     def _update_scene_rect(self) -> None:
         widest = max(800, *(LEFT + (n.columns + 1) * CELL_W + 8 for n in self.networks))
         self._scene.setSceneRect(QRectF(-4, -4, widest + 8, self.layout_.total_height() + 40))
+
+    def relayout(self) -> None:
+        """The rows changed height (View › Element names): lay every network out again."""
+        for _index, item in self.network_items.made():
+            item.refresh()
+        self._relayout(0)
 
     def mark_diagnostics(self, diagnostics: list[Diagnostic]) -> None:
         """Outline the cells the diagnostics point at."""
@@ -284,7 +290,7 @@ class LadderEditor(CursorEdits, QGraphicsView):
     def cell_rect(self, index: int, row: int, col: int) -> QRectF:
         """A cell's rectangle in scene coordinates."""
         x, y = cell_origin(self.networks[index], row, col)
-        return QRectF(x, self.layout_.tops[index] + y, CELL_W, CELL_H)
+        return QRectF(x, self.layout_.tops[index] + y, CELL_W, cell_h())
 
     def cell_point(self, index: int, row: int, col: int) -> QPoint:
         """Viewport point at a cell's centre (scrolled into view first)."""
