@@ -45,9 +45,10 @@ def _key_sequences(shortcut: Shortcut) -> list[QKeySequence]:
 class ConsoleMenus(QObject):
     """Every QAction of the window by objectName, its menus and main toolbar.
 
-    The window's own actions come from the table; the tool actions from the Tool list; the
-    PLC docks add theirs with `add`, `add_toggle` and `insert_before`, so each is in
-    `actions_by_name` and the menus without anyone searching the widget tree."""
+    The window's own actions come from the table; the tool actions from the interactions
+    (gui/editor/interactions.py); the docks add theirs with `add`, `add_dock`, `add_toggle`,
+    `add_menu` and `insert_before`, so each is in `actions_by_name` and the menus without
+    anyone searching the widget tree."""
 
     def __init__(self, window: QMainWindow, conditions: dict[str, Condition],
                  specs: tuple[ActionSpec, ...] = ACTIONS,
