@@ -92,7 +92,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         fit = self.actions_by_name["action_zoom_fit_width"]
         for name in ("action_zoom_in", "action_zoom_out", "action_zoom_reset"):
             self.actions_by_name[name].triggered.connect(lambda _c=False: fit.setChecked(False))
-        self.menus.add_menu("menu_view", NameDisplayMenu(self.settings, self))  # element names
+        self.names_menu = NameDisplayMenu(self.settings, self)  # View › Element names
+        self.menus.add_menu("menu_view", self.names_menu)
         self.recent_menu = self.menus.menus["menu_recent"]
         self.recent_actions: list[QAction] = []
         for index in range(MAX_RECENT):
@@ -108,6 +109,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.editor.context_actions = [named[name] if name else None for name in CONTEXT_MENU]
         self.plc_docks = build_plc_docks(self, self.menus, PlcSession(self), self.editor)
         self.program_opened.connect(self.plc_docks.alarms.use_program)
+        self.names_menu.changed.connect(self.editor.relayout)
+        self.names_menu.changed.connect(self.plc_docks.diagnostic.view.relayout)
         self.cross_reference = cross_reference.install(self, self.menus, self.editor,
                                                        self.errors)
         self.printing = PrintActions(self, self.menus)  # File › Print, Export PDF

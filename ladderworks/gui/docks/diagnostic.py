@@ -89,6 +89,7 @@ class DiagnosticView(QGraphicsView):
         rect = self.scene_.sceneRect()
         self.scene_.setSceneRect(QRectF(0, 0, rect.width(),
                                         max(self.layout_.total_height(), cell_h())))
+        self.viewport().update()
 
     def describe_address(self, address: object) -> tuple[str, str] | None:
         """(symbol, comment) of the program, else (signal name, description) of the manual."""

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent
+from PySide6.QtCore import QCoreApplication, Signal
 from PySide6.QtGui import QAction, QActionGroup, QGuiApplication
-from PySide6.QtWidgets import QGraphicsView, QMenu, QWidget
+from PySide6.QtWidgets import QMenu, QWidget
 
 from ladderworks.gui.editor.geometry import (
     NameDisplay,
@@ -12,6 +12,7 @@ from ladderworks.gui.editor.geometry import (
     name_display,
     set_name_display,
 )
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.settings import Settings
 
 translate = QCoreApplication.translate
@@ -25,8 +26,11 @@ def _text(display: NameDisplay) -> str:
     return translate("NameDisplayMenu", "Address, symbol and &comment")
 
 
-class NameDisplayMenu(QMenu):
-    """A choice of what every ladder view shows with each element, remembered in settings."""
+class NameDisplayMenu(Retranslating, QMenu):
+    """A choice of what every ladder view shows with each element, remembered in settings;
+    `changed` tells the window's ladder views to lay their rows out again."""
+
+    changed = Signal()
 
     def __init__(self, settings: Settings, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -58,22 +62,10 @@ class NameDisplayMenu(QMenu):
         if display is name_display():
             return
         set_name_display(display)
-        parent = self.parentWidget()  # the menu itself is a popup window: ask its parent's
-        views = parent.window().findChildren(QGraphicsView) if parent is not None else []
-        for view in views:
-            relayout = getattr(view, "relayout", None)
-            if callable(relayout):
-                relayout()
-                view.viewport().update()
+        self.changed.emit()
 
     def retranslate(self) -> None:
         """Texts in the UI language."""
         self.setTitle(translate("NameDisplayMenu", "Element &names"))
         for display, action in self.actions_by_display.items():
             action.setText(_text(display))
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language switch."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)

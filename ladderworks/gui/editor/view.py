@@ -3,7 +3,7 @@ mouse to the current tool's interaction."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent, QPoint, QPointF, QRectF, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QPoint, QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import (
     QAction,
     QBrush,
@@ -44,6 +44,7 @@ from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.function_dialog import FunctionDialog
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.symbol_text import cell_status, element_tooltip, name_and_text
 from ladderworks.gui.tools import Tool
 
@@ -55,7 +56,7 @@ ZOOM_MAX = 3.0
 translate = QCoreApplication.translate
 
 
-class LadderEditor(CursorEdits, QGraphicsView):
+class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
     """The ladder console's drawing area over a `LadderModel`; every edit is an undo command
     on the model, and the view redraws what the model announces."""
 
@@ -248,6 +249,7 @@ class LadderEditor(CursorEdits, QGraphicsView):
         for _index, item in self.network_items.made():
             item.refresh()
         self._relayout(0)
+        self.viewport().update()
 
     def mark_diagnostics(self, diagnostics: list[Diagnostic]) -> None:
         """Outline the cells the diagnostics point at."""
@@ -514,11 +516,9 @@ class LadderEditor(CursorEdits, QGraphicsView):
             return
         super().keyPressEvent(event)
 
-    def changeEvent(self, event: QEvent) -> None:
-        """Repaint signal descriptions in the new language."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.viewport().update()
-        super().changeEvent(event)
+    def retranslate(self) -> None:
+        """Repaint the signal descriptions in the new language."""
+        self.viewport().update()
 
 
 __all__ = ["LadderEditor"]
