@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QMarginsF, QObject, Qt
 from PySide6.QtGui import (
@@ -21,22 +22,24 @@ from ladderworks.core.il.program import Program
 from ladderworks.gui.console_menus import ConsoleMenus
 from ladderworks.gui.print_pages import PRINT_DPI, LadderPages, PrintJob, program_title
 
+if TYPE_CHECKING:
+    from ladderworks.gui.main_window import MainWindow
+
 translate = QCoreApplication.translate
 
 MARGIN_MM = 10.0
 PROGRESS_FROM_PAGES = 20  # a longer job shows a progress dialog that can cancel it
 
 
-def print_job(window: QMainWindow) -> PrintJob:
+def print_job(window: MainWindow) -> PrintJob:
     """The console's program as a print job (a large program still laying out is finished)."""
-    editor = window.editor  # type: ignore[attr-defined]
+    editor = window.editor
     if editor.loading:
         editor.finish_loading()
     networks = list(editor.networks)
     while networks and networks[-1].is_empty():  # the empty network where a new one is drawn
         networks.pop()
-    path: Path | None = getattr(window, "path", None)
-    info = getattr(window, "program_info", None)
+    path, info = window.path, window.program_info
     return PrintJob(
         networks=networks, describe=editor.describe_address, symbols=editor.model.symbols,
         title=program_title(info) if isinstance(info, Program) else "",
@@ -84,7 +87,7 @@ def render(job: PrintJob, device: QPagedPaintDevice, parent: QMainWindow | None 
     return len(numbers) if done else 0
 
 
-def export_pdf(window: QMainWindow, path: str | Path) -> int:
+def export_pdf(window: MainWindow, path: str | Path) -> int:
     """Write the console's ladder to a PDF file; the number of pages (0 when it failed)."""
     writer = QPdfWriter(str(path))
     writer.setResolution(PRINT_DPI)
@@ -99,7 +102,7 @@ def export_pdf(window: QMainWindow, path: str | Path) -> int:
     return count
 
 
-def print_ladder(window: QMainWindow, printer: QPrinter) -> int:
+def print_ladder(window: MainWindow, printer: QPrinter) -> int:
     """Print the console's ladder on a printer set up by the print dialog."""
     return render(print_job(window), printer, window)
 
@@ -115,7 +118,7 @@ class PrintActions(QObject):
     """File › Print… (Ctrl+P) and File › Export PDF…, before Program properties. Not a
     widget: the window's `retranslate()` calls this one's."""
 
-    def __init__(self, window: QMainWindow, menus: ConsoleMenus) -> None:
+    def __init__(self, window: MainWindow, menus: ConsoleMenus) -> None:
         super().__init__(window)
         self.console = window
         self.print_action = QAction(window)
@@ -141,7 +144,7 @@ class PrintActions(QObject):
 
     def pdf_dialog(self) -> None:
         """File › Export PDF…: a file name, then the pages."""
-        path = getattr(self.console, "path", None)
+        path = self.console.path
         suggested = str(Path(path).with_suffix(".pdf")) if path is not None else ""
         name, _ = QFileDialog.getSaveFileName(
             self.console, translate("Print", "Export PDF"), suggested,
