@@ -96,7 +96,7 @@ class OnlineMode(QObject):
             return False
         if not self.live.attached:
             self.session.monitor(True)
-        self.live.attach(self.editor.model.networks, self.editor.layout_.tops, binary, ops)
+        self.live.attach(self.editor.model.networks, self.editor.layout_, binary, ops)
         self._sync_check(True)
         self.refresh()
         self._say(translate("PlcOnline", "On-line: the drawing shows the running PLC"))

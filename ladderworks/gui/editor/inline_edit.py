@@ -49,7 +49,7 @@ class InlineEdit(QObject):
         text = str(element.address) if element.address is not None else ""
         if element.comment:
             text += "  // " + element.comment
-        x, y = cell_origin(net, row, col)
+        x, y = cell_origin(net, row, col, self.editor.layout_.rows[index])
         rect = QRectF(x - 10, self.editor.layout_.tops[index] + y, CELL_W + 60, 24)
         self._open(("address", index, row, col), text, rect,
                    translate("LadderEditor", "Address or symbol, e.g. X2.1 (// comment)"))

@@ -289,7 +289,8 @@ class LineInteraction(Interaction):
         index, row, node = hit.network, hit.row, hit.node
         if self.start is None or self.start[0] != index:
             self.start = (index, row, node)
-            x, y = node_point(self.editor.networks[index], row, node)
+            x, y = node_point(self.editor.networks[index], row, node,
+                              self.editor.layout_.rows[index])
             top = self.editor.layout_.tops[index]
             self.marker.setRect(QRectF(x - 4, top + y - 4, 8, 8))
             self.marker.show()

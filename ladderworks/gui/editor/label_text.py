@@ -2,8 +2,15 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QFontMetricsF
+
+from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork
+
+# Describes an address for the drawing: (signal name, description) or None.
+SignalLookup = Callable[[object], tuple[str, str] | None]
 
 
 def wrapped(text: str, metrics: QFontMetricsF, width: float, lines: int) -> list[str]:
@@ -34,3 +41,19 @@ def wrapped(text: str, metrics: QFontMetricsF, width: float, lines: int) -> list
         last = result[-1] + " " + rest
         result[-1] = metrics.elidedText(last, Qt.TextElideMode.ElideRight, width)
     return result
+
+
+def shows_comment(network: LadderNetwork, describe: SignalLookup) -> bool:
+    """True when an element of `network` has a comment to show under it: its own, the
+    program's comment of its address or the manual's text (`describe`), or a box's comment."""
+    for element in network.cells.values():
+        if isinstance(element, FunctionBox):
+            if element.comment:
+                return True
+        elif isinstance(element, Contact | Coil):
+            if element.comment:
+                return True
+            described = describe(element.address) if element.address is not None else None
+            if described is not None and described[1]:
+                return True
+    return False

@@ -31,14 +31,17 @@ from ladderworks.gui.editor.geometry import (
     SPARE_ROWS,
     Hit,
     Layout,
+    NameDisplay,
     cell_centre,
     cell_h,
     cell_origin,
+    name_display,
     node_point,
 )
 from ladderworks.gui.editor.inline_edit import InlineEdit
 from ladderworks.gui.editor.interactions import BY_KEY, BY_TOOL, Interaction, SelectInteraction
 from ladderworks.gui.editor.keyboard import GridKeys
+from ladderworks.gui.editor.label_text import shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.editor.lazy_items import LazyItems
@@ -79,7 +82,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         self.setMouseTracking(True)
         self.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
         self.network_items = LazyItems(self._make_item)  # made when shown (a real program: 10,000+)
-        self.layout_ = Layout()
+        self.layout_ = Layout(self.commented)
         self.function_name = "TMR"
         self.cursor_cell: tuple[int, int, int] = (0, 0, 0)  # network, row, col
         self.selection: tuple[int, Selection] | None = None
@@ -151,7 +154,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         for _index, item in self.network_items.made():
             self._scene.removeItem(item)
         self.network_items.reset(len(self.networks))
-        self.layout_ = Layout()
+        self.layout_ = Layout(self.commented)
         self.layout_.rebuild(self.networks)
         self.selection = None
         self.interaction.cancel()
@@ -218,6 +221,10 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
     def describe_address(self, address: object) -> tuple[str, str] | None:
         """(symbol, comment) of the program, else (signal name, description) of the manual."""
         return name_and_text(address, self.model.symbols)
+
+    def commented(self, network: LadderNetwork) -> bool:
+        """True when an element of `network` has a comment to show (its rows are taller)."""
+        return shows_comment(network, self.describe_address)
 
     def resolve_address(self, text: str) -> str:
         """The address a typed text names: itself, or the address of a program symbol."""
@@ -291,19 +298,20 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
 
     def cell_rect(self, index: int, row: int, col: int) -> QRectF:
         """A cell's rectangle in scene coordinates."""
-        x, y = cell_origin(self.networks[index], row, col)
-        return QRectF(x, self.layout_.tops[index] + y, CELL_W, cell_h())
+        rows = self.layout_.rows[index]
+        x, y = cell_origin(self.networks[index], row, col, rows)
+        return QRectF(x, self.layout_.tops[index] + y, CELL_W, rows.height)
 
     def cell_point(self, index: int, row: int, col: int) -> QPoint:
         """Viewport point at a cell's centre (scrolled into view first)."""
-        x, y = cell_centre(self.networks[index], row, col)
+        x, y = cell_centre(self.networks[index], row, col, self.layout_.rows[index])
         scene = QPointF(x, self.layout_.tops[index] + y)
         self.ensureVisible(QRectF(scene.x() - 60, scene.y() - 60, 120, 120), 10, 10)
         return self.mapFromScene(scene)
 
     def node_point(self, index: int, row: int, node: int) -> QPoint:
         """Viewport point at a grid node (left edge of column `node`, middle of `row`)."""
-        x, y = node_point(self.networks[index], row, node)
+        x, y = node_point(self.networks[index], row, node, self.layout_.rows[index])
         scene = QPointF(x, self.layout_.tops[index] + y)
         self.ensureVisible(QRectF(scene.x() - 60, scene.y() - 60, 120, 120), 10, 10)
         return self.mapFromScene(scene)
@@ -517,7 +525,10 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         super().keyPressEvent(event)
 
     def retranslate(self) -> None:
-        """Repaint the signal descriptions in the new language."""
+        """Repaint the signal descriptions in the new language (which networks have a comment
+        to show may change with it: lay out again when comments are shown)."""
+        if name_display() is NameDisplay.COMMENT:
+            self.relayout()
         self.viewport().update()
 
 
