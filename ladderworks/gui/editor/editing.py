@@ -86,9 +86,11 @@ class CursorEdits:
     def place_bit(self, index: int, row: int, col: int, element: Contact | Coil) -> None:
         """Place a contact or coil and open its address; on one of the same kind, turn it
         into `element`'s kind (NOT, SET, RST) and open its address. A coil goes to the coil
-        column; a placed element is wired to its neighbours (core `place_wired`)."""
+        column; a placed element is wired to its neighbours (core `place_wired`). The cursor
+        goes where the element is."""
         row, col = core.target_cell(self.networks[index], row, col, element)
         found = self.networks[index].element_at(row, col)
+        self.cursor_to(index, *(found[0] if found is not None else (row, col)))
         if found is not None and type(found[1]) is type(element):
             old = found[1]
             assert isinstance(old, Contact | Coil)
@@ -105,6 +107,11 @@ class CursorEdits:
                 else translate("LadderEditor", "Place coil"))
         if self.run_edit(index, lambda n: core.place_wired(n, row, col, element), text):
             self.open_address_editor(index, row, col)
+
+    def cursor_to(self, index: int, row: int, col: int) -> None:
+        """Put the cursor on the cell where an edit put an element (no scrolling)."""
+        self.cursor_cell = (index, row, col)
+        self._place_overlays()
 
     def add_parallel(self, index: int, row: int, col: int) -> None:
         """OR: a parallel contact or coil below the one at a cell, its address opened."""
@@ -160,8 +167,10 @@ class CursorEdits:
                 return
             if box is None:
                 element = FunctionBox.new(spec.name, instruction.params, dialog.comment_text)
-                self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
-                              translate("LadderEditor", "Place {0}").format(spec.name))
+                if self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
+                                 translate("LadderEditor", "Place {0}").format(spec.name)):
+                    self.cursor_to(index, *core.target_cell(self.networks[index], row, col,
+                                                            element))
             else:
                 title = translate("LadderEditor", "Parameters of {0}").format(spec.name)
                 self.undo_stack.beginMacro(title)
