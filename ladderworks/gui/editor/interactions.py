@@ -16,6 +16,7 @@ from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
 from ladderworks.core.instructions import Write
 from ladderworks.core.ladder import Coil, Contact
 from ladderworks.gui.editor.geometry import Hit, node_point
+from ladderworks.gui.editor.step_name import editor_step
 from ladderworks.gui.tools import Tool, icon
 
 if TYPE_CHECKING:
@@ -247,7 +248,7 @@ class InvertInteraction(Interaction):
         """Invert the element at the cell."""
         row, col = hit.row, hit.col
         self.editor.run_edit(hit.network, lambda n: core.invert(n, row, col),
-                             translate("LadderEditor", "NOT"))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "NOT")))
 
 
 class OrInteraction(Interaction):
@@ -301,7 +302,7 @@ class LineInteraction(Interaction):
         if (row1, node1) == (row, node):
             return
         self.editor.run_edit(index, lambda n: core.draw_line(n, (row1, node1), (row, node)),
-                             translate("LadderEditor", "Line"))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Line")))
 
     def cancel(self) -> None:
         """Forget the first point."""
@@ -351,7 +352,7 @@ class DeleteInteraction(Interaction):
         """Delete the element at the cell."""
         row, col = hit.row, hit.col
         self.editor.run_edit(hit.network, lambda n: core.delete(n, row, col),
-                             translate("LadderEditor", "Delete"))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete")))
 
 
 class FunctionInteraction(Interaction):
@@ -385,7 +386,7 @@ class RowBeforeInteraction(Interaction):
         """Insert the row."""
         row, after = hit.row, self.after
         self.editor.run_edit(hit.network, lambda n: core.insert_row(n, row, after=after),
-                             translate("LadderEditor", "Insert row"))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Insert row")))
 
 
 class RowAfterInteraction(RowBeforeInteraction):
