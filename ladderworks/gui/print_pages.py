@@ -29,7 +29,7 @@ from ladderworks.gui.editor.geometry import (
     network_rows,
     network_width,
 )
-from ladderworks.gui.editor.label_text import SignalLookup, shows_comment
+from ladderworks.gui.editor.label_text import CommentedAddresses, SignalLookup, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 
 translate = QCoreApplication.translate
@@ -137,6 +137,7 @@ class LadderPages:
 
     def __init__(self, job: PrintJob, page_width: float, page_height: float) -> None:
         self.job = job
+        self.commented = CommentedAddresses(job.describe)  # addresses with a comment shown
         standard = network_width(LadderNetwork(columns=DEFAULT_COLUMNS))
         self.scale = min(1.0, page_width / standard)
         self.width = page_width / self.scale  # the page in drawing units
@@ -153,7 +154,7 @@ class LadderPages:
 
     def network_rows(self, network: LadderNetwork) -> RowMetrics:
         """The rows `network` is drawn with (taller when an element has a comment shown)."""
-        return network_rows(network, lambda net: shows_comment(net, self.job.describe))
+        return network_rows(network, lambda net: shows_comment(net, self.commented))
 
     def _plan_networks(self) -> None:
         page = Page()

@@ -25,7 +25,7 @@ from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
 from ladderworks.gui.docks.live_ladder import LivePower
 from ladderworks.gui.editor.geometry import Layout, cell_h, cell_origin
-from ladderworks.gui.editor.label_text import shows_comment
+from ladderworks.gui.editor.label_text import CommentedAddresses, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
@@ -54,6 +54,7 @@ class DiagnosticView(QGraphicsView):
         self.network_items: list[NetworkItem] = []
         self.symbols: SymbolTable | None = None  # the program's symbols, named under addresses
         self.networks: list[LadderNetwork] = []
+        self.comments = CommentedAddresses(self.describe_address)  # asked once per address
         self.layout_ = Layout(self.commented)
         self.paints = 0  # viewport paint events (the benchmark's repaint rate)
         self.scale(VIEW_SCALE, VIEW_SCALE)  # a dock is narrower than the console
@@ -65,6 +66,7 @@ class DiagnosticView(QGraphicsView):
         for item in self.network_items:
             self.scene_.removeItem(item)
         self.networks = networks
+        self.comments.forget()  # the symbols may have changed with the program
         self.layout_ = Layout(self.commented)
         self.layout_.rebuild(networks)
         self.network_items = []
@@ -79,6 +81,7 @@ class DiagnosticView(QGraphicsView):
 
     def relayout(self) -> None:
         """The rows changed height (View › Element names): restack the networks."""
+        self.comments.forget()
         self.layout_ = Layout(self.commented)
         self.layout_.rebuild(self.networks)
         for item, top in zip(self.network_items, self.layout_.tops, strict=True):
@@ -99,7 +102,7 @@ class DiagnosticView(QGraphicsView):
 
     def commented(self, network: LadderNetwork) -> bool:
         """True when an element of `network` has a comment to show (its rows are taller)."""
-        return shows_comment(network, self.describe_address)
+        return shows_comment(network, self.comments)
 
     def visible_rect(self) -> QRectF:
         """The part of the scene on screen."""

@@ -149,6 +149,24 @@ class Layout:
         self.tops: list[float] = []
         self.heights: list[float] = []
         self.rows: list[RowMetrics] = []
+        # each network's rows, worked out once (a real program has 10,000 networks)
+        self._known: dict[int, tuple[LadderNetwork, RowMetrics]] = {}
+
+    def forget(self, network: LadderNetwork | None = None) -> None:
+        """Work out `network`'s rows again (it changed), or every network's (None: the name
+        display, the symbols or the language changed)."""
+        if network is None:
+            self._known.clear()
+        else:
+            self._known.pop(id(network), None)
+
+    def _rows(self, network: LadderNetwork) -> RowMetrics:
+        known = self._known.get(id(network))
+        if known is not None and known[0] is network:
+            return known[1]
+        rows = network_rows(network, self.commented)
+        self._known[id(network)] = (network, rows)
+        return rows
 
     def rebuild(self, networks: list[LadderNetwork], start: int = 0) -> None:
         """Recompute rows, tops and heights from network `start` on."""
@@ -157,7 +175,7 @@ class Layout:
         del self.rows[start:]
         y = self.tops[-1] + self.heights[-1] if self.tops else 0.0
         for network in networks[start:]:
-            rows = network_rows(network, self.commented)
+            rows = self._rows(network)
             height = network_height(network, rows)
             self.tops.append(y)
             self.heights.append(height)

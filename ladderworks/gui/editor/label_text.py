@@ -7,7 +7,7 @@ from collections.abc import Callable
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QFontMetricsF
 
-from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork
+from ladderworks.core.ladder.model import FunctionBox, LadderNetwork, Wire
 
 # Describes an address for the drawing: (signal name, description) or None.
 SignalLookup = Callable[[object], tuple[str, str] | None]
@@ -43,17 +43,37 @@ def wrapped(text: str, metrics: QFontMetricsF, width: float, lines: int) -> list
     return result
 
 
-def shows_comment(network: LadderNetwork, describe: SignalLookup) -> bool:
-    """True when an element of `network` has a comment to show under it: its own, the
-    program's comment of its address or the manual's text (`describe`), or a box's comment."""
+def shows_comment(network: LadderNetwork, commented: Callable[[object], bool]) -> bool:
+    """True when an element of `network` has a comment to show under it: its own, a box's,
+    or one its address has (`commented`: the program's comment or the manual's text)."""
     for element in network.cells.values():
-        if isinstance(element, FunctionBox):
-            if element.comment:
-                return True
-        elif isinstance(element, Contact | Coil):
-            if element.comment:
-                return True
-            described = describe(element.address) if element.address is not None else None
-            if described is not None and described[1]:
-                return True
+        if isinstance(element, Wire):
+            continue
+        if element.comment:
+            return True
+        if (not isinstance(element, FunctionBox) and element.address is not None
+                and commented(element.address)):
+            return True
     return False
+
+
+class CommentedAddresses:
+    """Which addresses have a comment to show (`describe` gives one), remembered per address:
+    a 10,000-network program asks about the same few thousand addresses again and again.
+    `forget()` when the symbols or the UI language change."""
+
+    def __init__(self, describe: SignalLookup) -> None:
+        self.describe = describe
+        self.known: dict[object, bool] = {}
+
+    def __call__(self, address: object) -> bool:
+        """True when `address` has a comment (program's or manual's) to show."""
+        known = self.known.get(address)
+        if known is None:
+            described = self.describe(address)
+            known = self.known[address] = described is not None and bool(described[1])
+        return known
+
+    def forget(self) -> None:
+        """Ask `describe` again from now on."""
+        self.known.clear()

@@ -23,7 +23,12 @@ from ladderworks.gui.editor.geometry import (
     network_rows,
     network_width,
 )
-from ladderworks.gui.editor.label_text import SignalLookup, shows_comment, wrapped
+from ladderworks.gui.editor.label_text import (
+    CommentedAddresses,
+    SignalLookup,
+    shows_comment,
+    wrapped,
+)
 from ladderworks.gui.translation import instruction_label, ui_is_turkish
 
 INK = QColor("#1a1a1a")
@@ -80,7 +85,7 @@ class NetworkItem(QGraphicsItem):
 
     def commented(self, network: LadderNetwork) -> bool:
         """True when an element of `network` has a comment to show (taller rows)."""
-        return shows_comment(network, self.describe)
+        return shows_comment(network, CommentedAddresses(self.describe))
 
     def refresh(self) -> None:
         """The network changed (or the rows did): recompute the marks, rows and size, repaint."""

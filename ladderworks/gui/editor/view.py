@@ -41,7 +41,7 @@ from ladderworks.gui.editor.geometry import (
 from ladderworks.gui.editor.inline_edit import InlineEdit
 from ladderworks.gui.editor.interactions import BY_KEY, BY_TOOL, Interaction, SelectInteraction
 from ladderworks.gui.editor.keyboard import GridKeys
-from ladderworks.gui.editor.label_text import shows_comment
+from ladderworks.gui.editor.label_text import CommentedAddresses, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.editor.lazy_items import LazyItems
@@ -82,6 +82,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         self.setMouseTracking(True)
         self.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
         self.network_items = LazyItems(self._make_item)  # made when shown (a real program: 10,000+)
+        self.comments = CommentedAddresses(self.describe_address)  # asked once per address
         self.layout_ = Layout(self.commented)
         self.function_name = "TMR"
         self.cursor_cell: tuple[int, int, int] = (0, 0, 0)  # network, row, col
@@ -154,6 +155,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         for _index, item in self.network_items.made():
             self._scene.removeItem(item)
         self.network_items.reset(len(self.networks))
+        self.comments.forget()  # another program: other symbols
         self.layout_ = Layout(self.commented)
         self.layout_.rebuild(self.networks)
         self.selection = None
@@ -178,6 +180,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         self._renumber(max(index - 1, 0))
 
     def _on_changed(self, index: int) -> None:
+        self.layout_.forget(self.networks[index])  # its rows may change (a comment typed)
         self.network_items[index].error_cells = set()
         self.network_items[index].refresh()
         self._relayout(index)
@@ -188,6 +191,8 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         if not indices:
             return
         changed = set(indices)
+        for index in changed:
+            self.layout_.forget(self.networks[index])
         for index, item in self.network_items.made(min(changed)):
             if index in changed:
                 item.error_cells = set()
@@ -224,7 +229,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
 
     def commented(self, network: LadderNetwork) -> bool:
         """True when an element of `network` has a comment to show (its rows are taller)."""
-        return shows_comment(network, self.describe_address)
+        return shows_comment(network, self.comments)
 
     def resolve_address(self, text: str) -> str:
         """The address a typed text names: itself, or the address of a program symbol."""
@@ -252,7 +257,10 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         self._scene.setSceneRect(QRectF(-4, -4, widest + 8, self.layout_.total_height() + 40))
 
     def relayout(self) -> None:
-        """The rows changed height (View › Element names): lay every network out again."""
+        """The rows changed height (View › Element names, the language): lay every network
+        out again."""
+        self.comments.forget()
+        self.layout_.forget()
         for _index, item in self.network_items.made():
             item.refresh()
         self._relayout(0)
