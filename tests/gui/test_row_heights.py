@@ -108,3 +108,17 @@ def test_the_diagnostic_views_live_power_lines_up_with_tall_and_short_networks(
     for item, overlay in zip(view.network_items, view.live.overlays, strict=True):
         assert item.boundingRect() == overlay.boundingRect()
         assert item.pos() == overlay.pos()
+
+
+def test_the_online_drawings_live_power_follows_the_element_names_choice(
+        window: MainWindow) -> None:
+    from tests.gui.test_online import online_window
+
+    docks = online_window(window)
+    view = window.editor
+    for display in (NameDisplay.COMMENT, NameDisplay.ADDRESS, NameDisplay.SYMBOL):
+        _show(window, display)
+        for index, overlay in enumerate(docks.online.live.overlays):
+            assert overlay.pos().y() == view.layout_.tops[index]
+            assert overlay.rows == view.layout_.rows[index]
+            assert overlay.boundingRect().height() == view.layout_.heights[index]

@@ -87,10 +87,7 @@ class DiagnosticView(QGraphicsView):
         for item, top in zip(self.network_items, self.layout_.tops, strict=True):
             item.refresh()
             item.setPos(0, top)
-        for overlay, top, rows in zip(self.live.overlays, self.layout_.tops, self.layout_.rows,
-                                      strict=False):
-            overlay.set_rows(rows)
-            overlay.setPos(0, top)
+        self.live.restack(self.layout_)
         rect = self.scene_.sceneRect()
         self.scene_.setSceneRect(QRectF(0, 0, rect.width(),
                                         max(self.layout_.total_height(), cell_h())))

@@ -93,6 +93,12 @@ class LivePower:
             self.scene.addItem(overlay)
             self.overlays.append(overlay)
 
+    def restack(self, layout: Layout) -> None:
+        """The networks' rows changed height (View › Element names): follow `layout`."""
+        for overlay, top, rows in zip(self.overlays, layout.tops, layout.rows, strict=False):
+            overlay.set_rows(rows)
+            overlay.setPos(0, top)
+
     def detach(self) -> None:
         """Remove the overlays (off-line)."""
         for overlay in self.overlays:

@@ -50,6 +50,7 @@ class OnlineMode(QObject):
         session.program_loaded.connect(self._on_program)
         session.forces_changed.connect(lambda _entries: self.refresh())
         editor.verticalScrollBar().valueChanged.connect(lambda _v: self.refresh())
+        editor.relaid_out.connect(lambda: self.live.restack(editor.layout_))  # rows' heights
         self._update_actions()
         self.retranslate()
 

@@ -68,6 +68,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
     message = Signal(str)
     zoom_changed = Signal(float)  # the new zoom factor (the status bar shows it)
     drawing_changed = Signal()
+    relaid_out = Signal()  # every network's rows were worked out again (View › Element names)
 
     def __init__(self, model: LadderModel, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -265,6 +266,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
             item.refresh()
         self._relayout(0)
         self.viewport().update()
+        self.relaid_out.emit()
 
     def mark_diagnostics(self, diagnostics: list[Diagnostic]) -> None:
         """Outline the cells the diagnostics point at."""
