@@ -152,7 +152,8 @@ class PrintActions(QObject):
         dialog = QPrintPreviewDialog(self.preview_printer, self.console)
         dialog.setObjectName("print_preview")
         dialog.setWindowTitle(translate("Print", "Print preview"))
-        dialog.paintRequested.connect(lambda printer: render(print_job(self.console), printer))
+        dialog.paintRequested.connect(  # a long program: a progress dialog that can cancel
+            lambda printer: render(print_job(self.console), printer, self.console))
         screen = self.console.screen().availableGeometry()
         dialog.resize(min(1000, screen.width()), min(760, screen.height()))
         return dialog

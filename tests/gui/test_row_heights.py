@@ -122,3 +122,29 @@ def test_the_online_drawings_live_power_follows_the_element_names_choice(
             assert overlay.pos().y() == view.layout_.tops[index]
             assert overlay.rows == view.layout_.rows[index]
             assert overlay.boundingRect().height() == view.layout_.heights[index]
+
+
+def test_page_down_lands_on_the_row_a_page_below_in_tall_and_short_networks(
+        window: MainWindow, tmp_path: Path, qtbot: QtBot) -> None:
+    body = "".join(f"RD X{n}.0   // KAPI {n}\nWRT R{n}.0\nRD R{n}.1\nOR R{n}.2\nOR R{n}.3\n"
+                   f"OR R{n}.4\nOR R{n}.5\nWRT R{n}.6\n"
+                   for n in range(20))  # a tall network, then a short one of five rows
+    _load(window, tmp_path, "long.LAD", f"%@3\n{body}%\n".encode())
+    _show(window, NameDisplay.COMMENT)
+    window.resize(1024, 600)
+    view = window.editor
+    view.setFocus()
+    view.move_cursor(0, 0, 1)
+    page = view.viewport().height() / view.zoom() - TALL  # as GridKeys pages
+    short_rows: set[int] = set()  # rows landed on in short networks
+    for _ in range(8):
+        index, row, _col = view.cursor_cell
+        rows = view.layout_.rows[index]
+        y = view.layout_.tops[index] + row * rows.height + rows.wire + page
+        qtbot.keyClick(view, Qt.Key.Key_PageDown)
+        assert view.cursor_cell[:2] > (index, row)  # further down
+        assert view.cell_rect(*view.cursor_cell).contains(QPointF(LEFT + 1.5 * CELL_W, y))
+        if view.layout_.rows[view.cursor_cell[0]].height == SHORT:
+            short_rows.add(view.cursor_cell[1])
+    assert max(short_rows) >= 2  # deep in a short network, where 86-pixel rows would miss
+    assert {view.layout_.rows[i].height for i in range(view.cursor_cell[0])} == {TALL, SHORT}
