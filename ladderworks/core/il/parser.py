@@ -2,15 +2,19 @@
 
 from __future__ import annotations
 
+import gc
 import re
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cache, lru_cache
 from importlib import resources
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ladderworks.core import instructions as _table
 from ladderworks.core.address import Address, AddressError, parse_address
+from ladderworks.core.address import parse_address_cached as _bit_operand
 from ladderworks.core.diagnostics import Diagnostic, Severity, has_errors
 from ladderworks.core.il.program import (
     FANUC,
@@ -22,6 +26,7 @@ from ladderworks.core.il.program import (
     Program,
     ProgramRef,
     Section,
+    new_instruction,
 )
 from ladderworks.core.il.sections import read_views
 from ladderworks.core.il.textform import TextForm, decode_text, dominant_newline, split_with_ends
@@ -50,6 +55,9 @@ _LABEL = re.compile(r"^[ \t]*([Nn][0-9]+):[ \t]*$")
 _SAFE = re.compile(r"[A-Za-z0-9_.+\- \t]*")  # code the fast scanner splits at spaces/tabs
 _ADDRESS_SHAPE = re.compile(r"^[A-Za-z]\d+(\.\d+)?$")
 _REF = re.compile(r"^([PpLl])0*(\d{1,6})$")
+# a name and one operand that starts with a letter, nothing else: what _scan_fast reads as
+# two words (no sign, no comment)
+_SIMPLE = re.compile(r"[ \t]*([A-Za-z_][A-Za-z0-9_.]*)[ \t]+([A-Za-z][A-Za-z0-9_.]*)[ \t]*")
 
 # Known section headers by number (the suffix after `%@n`); `%@2-E(...)` has options.
 _KNOWN_SUFFIXES: dict[int, tuple[str, ...]] = {
@@ -103,8 +111,26 @@ def _is_binary(data: bytes) -> bool:
     return controls * 20 > len(sample)
 
 
+@contextmanager
+def _collector_paused() -> Iterator[None]:
+    """Pause Python's cycle collector: a parse makes no cycles, but it makes a few hundred
+    thousand objects, and the collector would walk the growing heap many times over."""
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was_enabled:
+            gc.enable()
+
+
 def parse_bytes(data: bytes) -> ParseResult:
     """Parse file contents given as bytes (any encoding LadderWorks reads)."""
+    with _collector_paused():
+        return _parse_bytes(data)
+
+
+def _parse_bytes(data: bytes) -> ParseResult:
     text, form, diagnostics = decode_text(data)
     if _is_binary(data):
         program = Program()
@@ -135,7 +161,8 @@ def parse(text: str, dialect: str | None = None) -> ParseResult:
     parser = _FileParser(text, form)
     if dialect == FANUC:
         parser.dialect = FANUC
-    return parser.run()
+    with _collector_paused():
+        return parser.run()
 
 
 @dataclass(slots=True)
@@ -145,14 +172,27 @@ class _Token:
     is_int: bool
 
 
-@dataclass(slots=True)
-class _Line:
-    """One parsed line of the ladder section."""
+# What one line text makes on its own, found once per distinct text: the instruction's spec,
+# name, operand, parameters, comment and column, whether it starts a network after an output,
+# and whether it ends one (see _NetworkBuilder.add).
+_Made = tuple[InstructionSpec, str, Address | None, tuple[ParamValue, ...], str, int, bool, bool]
 
-    number: int
-    kind: str  # "blank", "comment", "instruction", "parameter", "label"
-    words: list[_Token] = field(default_factory=list)
-    comment: str | None = None
+
+class _Line:
+    """One scanned line text of the ladder section; the lines that repeat the text share it.
+
+    `made` is set once the text alone has made an instruction with no diagnostic; such a
+    line is read from it alone (a `RD X21.7` found by the fast scanner keeps no words)."""
+
+    __slots__ = ("comment", "kind", "made", "param", "words")
+
+    def __init__(self, kind: str, words: list[_Token] | None = None,
+                 comment: str | None = None, made: _Made | None = None) -> None:
+        self.kind = kind  # "blank", "comment", "instruction", "parameter", "label"
+        self.words: list[_Token] = words if words is not None else []
+        self.comment = comment
+        self.made = made
+        self.param = made is None and _is_param_line(self)  # a parameter line
 
 
 def _comment_text(raw: str) -> str:
@@ -161,16 +201,41 @@ def _comment_text(raw: str) -> str:
     return body.rstrip()
 
 
-def _scan_fast(text: str, number: int) -> _Line | None:
+@cache
+def _basic_with_operand(name: str) -> tuple[InstructionSpec, bool, bool] | None:
+    """The basic instruction a name spells, when it takes an address operand, with its
+    _flow(); None for any other name."""
+    spec = lookup(name)
+    if spec is None or spec.kind is not Kind.BASIC or not spec.operand:
+        return None
+    return (spec, *_flow(spec))
+
+
+def _scan_fast(text: str) -> _Line | None:
     """The common lines without lark; None for a line only the grammar can judge."""
+    simple = _SIMPLE.fullmatch(text)  # `RD  X21.7`, the most common shape, in one match
+    if simple is not None:
+        head, operand = simple.group(1, 2)
+        basic = _basic_with_operand(head)
+        if basic is not None:
+            try:
+                address = _bit_operand(operand, True, 1)
+            except AddressError:
+                pass  # the full path reports it
+            else:
+                spec, starts, ends = basic
+                return _Line("instruction", made=(spec, spec.name, address, (), "",
+                                                  simple.start(1) + 1, starts, ends))
+        return _Line("instruction", [_Token(head, simple.start(1) + 1, False),
+                                     _Token(operand, simple.start(2) + 1, False)])
     stripped = text.lstrip(" \t")
     if not stripped:
-        return _Line(number, "blank")
+        return _BLANK
     first = stripped[0]
     if first == ";" or stripped.startswith("//"):
-        return _Line(number, "comment", comment=_comment_text(stripped))
+        return _Line("comment", comment=_comment_text(stripped))
     if first == ",":
-        return _Line(number, "comment", comment=_comment_text(stripped.strip()))
+        return _Line("comment", comment=_comment_text(stripped.strip()))
     cut = len(text)
     if ";" in text or "/" in text:
         semi = text.find(";")
@@ -182,7 +247,7 @@ def _scan_fast(text: str, number: int) -> _Line | None:
     code = text[:cut] if cut < len(text) else text
     if _SAFE.fullmatch(code) is None:
         label = _LABEL.match(text)
-        return _Line(number, "label", [_Token(label.group(1), 1, False)]) if label else None
+        return _Line("label", [_Token(label.group(1), 1, False)]) if label else None
     words: list[_Token] = []
     position = 0
     for word in code.split():
@@ -204,13 +269,14 @@ def _scan_fast(text: str, number: int) -> _Line | None:
     if words[0].is_int:
         if len(words) > 1:
             return None
-        return _Line(number, "parameter", words, comment)
-    return _Line(number, "instruction", words, comment)
+        return _Line("parameter", words, comment)
+    return _Line("instruction", words, comment)
 
 
 def _scan_line(text: str, number: int) -> _Line | Diagnostic:
-    """One line of the ladder section: the fast scanner, else the lark grammar."""
-    fast = _scan_fast(text, number)
+    """One line text of the ladder section (at line `number`, for a syntax error): the fast
+    scanner, else the lark grammar."""
+    fast = _scan_fast(text)
     if fast is not None:
         return fast
     import lark
@@ -223,29 +289,29 @@ def _scan_line(text: str, number: int) -> _Line | Diagnostic:
         return Diagnostic("syntax", {"text": bad[:40]}, number, column)
     kind = tree.data
     if kind == "blank_line":
-        return _Line(number, "blank")
+        return _BLANK
     if kind == "comma_comment_line":
-        return _Line(number, "comment", comment=_comment_text(str(tree.children[0]).strip()))
+        return _Line("comment", comment=_comment_text(str(tree.children[0]).strip()))
     if kind == "comment_line":
         raw = str(_branch(tree.children[0]).children[0])
-        return _Line(number, "comment", comment=_comment_text(raw))
+        return _Line("comment", comment=_comment_text(raw))
     if kind == "label_line":
         tok = _leaf(tree.children[0])
-        return _Line(number, "label", [_Token(str(tok)[:-1], _column(tok), False)])
+        return _Line("label", [_Token(str(tok)[:-1], _column(tok), False)])
     statement = _branch(tree.children[0])
     comment: str | None = None
     if len(tree.children) > 1:
         comment = _comment_text(str(_branch(tree.children[1]).children[0])).strip()
     if statement.data == "parameter_line":
         tok = _leaf(statement.children[0])
-        return _Line(number, "parameter", [_Token(str(tok), _column(tok), True)], comment)
+        return _Line("parameter", [_Token(str(tok), _column(tok), True)], comment)
     name = _leaf(statement.children[0])
     words = [_Token(str(name), _column(name), False)]
     for child in statement.children[1:]:
         operand = _branch(child)
         tok = _leaf(operand.children[0])
         words.append(_Token(str(tok), _column(tok), operand.data == "int_operand"))
-    return _Line(number, "instruction", words, comment)
+    return _Line("instruction", words, comment)
 
 
 def _branch(node: lark.Tree[lark.Token] | lark.Token) -> lark.Tree[lark.Token]:
@@ -384,116 +450,137 @@ class _FileParser:
     # -- the ladder section -------------------------------------------------------------
 
     def _parse_ladder(self, start: int, stop: int) -> None:
-        scanned: list[_Line] = []
         lines = self.lines
         if self.program.framed or self.dialect == FANUC or any(
                 line.endswith(":") and _LABEL.match(line) for line in lines[start:stop]):
             self.dialect = FANUC
-        seen: dict[str, _Line] = {}  # many lines repeat: scan each text once, share its words
-        for index in range(start, stop):
-            text = lines[index]
-            known = seen.get(text)
-            if known is not None:
-                if known.kind != "blank":
-                    scanned.append(_Line(index + 1, known.kind, known.words, known.comment))
-                continue
-            item = _scan_line(text, index + 1)
-            if isinstance(item, Diagnostic):
-                self.diagnostics.append(item)
-                continue
-            seen[text] = item
-            if item.kind != "blank":
-                scanned.append(item)
-        builder = _NetworkBuilder(start)
-        k = 0
-        while k < len(scanned):
-            line = scanned[k]
-            k += 1
-            if line.kind == "comment":
-                builder.comment(line.comment or "")
-                continue
-            if line.kind == "label":
-                self.labels = True
-                builder.label(line.words[0].text)
-                continue
-            if line.kind == "parameter":
-                self._error("stray-parameter", line.number, line.words[0].column,
-                            text=line.words[0].text[:20])
-                continue
-            head = line.words[0]
-            operands = line.words[1:]
-            spec = lookup(head.text)
-            if spec is None and head.text[:4].upper() == "SUB.":
-                spec = spec_for(head.text, len(operands))  # one-line unknown `SUB.219 p1 p2`
-                if spec is not None:
-                    self.diagnostics.append(Diagnostic("unknown-sub", {"number": spec.sub},
-                                                       line.number, head.column,
-                                                       Severity.WARNING))
-            if spec is None:
-                if len(operands) == 0 and _ADDRESS_SHAPE.match(head.text):
-                    self._error("stray-parameter", line.number, head.column, text=head.text[:20])
-                else:
-                    self._error("unknown-instruction", line.number, head.column,
-                                name=head.text[:20])
-                continue
-            if spec.kind is Kind.BASIC and len(operands) > 1 and head.text.upper() in BY_MNEMONIC:
-                spec = BY_MNEMONIC[head.text.upper()]  # one-line `AND 1 R10 R11 R12`: LOGAND
-            end_line = line.number
-            if spec.name == "SUB" and len(operands) == 1 and operands[0].is_int:
-                number = _small_int(operands[0].text, 6)
-                number = number if number is not None and number >= 0 else None
-                sub_spec = BY_SUB.get(number) if number is not None else None
-                if sub_spec is None:
-                    k = self._unknown_sub(line, number, scanned, k, builder)
+        # many lines repeat ("RD X21.7"): each text is scanned once, and what it makes is
+        # built once; the lines that repeat it share its _Line
+        recs: list[_Line] = []
+        numbers: list[int] = []
+        seen: dict[str, _Line] = {}
+        for number, text in enumerate(lines[start:stop], start + 1):
+            rec = seen.get(text)
+            if rec is None:
+                item = _scan_line(text, number)
+                if isinstance(item, Diagnostic):
+                    self.diagnostics.append(item)
                     continue
-                spec = sub_spec
-                operands = []
-                k = self._collect_params(spec, scanned, k, operands)
-            elif spec.kind is not Kind.BASIC and not operands and spec.params:
-                k = self._collect_params(spec, scanned, k, operands)
-            if k > 0 and scanned[k - 1].number > end_line:
-                end_line = scanned[k - 1].number
-            instruction = self._build(spec, line, operands)
-            if instruction is not None:
-                builder.add(instruction, end_line, spec)
+                seen[text] = rec = item
+            if rec is not _BLANK:
+                recs.append(rec)
+                numbers.append(number)
+        builder = _NetworkBuilder(start)
+        add = builder.add
+        k = 0
+        count = len(recs)
+        while k < count:
+            rec = recs[k]
+            made = rec.made
+            if made is not None:
+                number = numbers[k]
+                k += 1
+                add(new_instruction(made[1], made[2], made[3], made[4], (), number, made[5]),
+                    number, made[6], made[7])
+                continue
+            k = self._line(recs, numbers, k, builder)
         self.program.networks = builder.networks
         self.program.trailer = builder.finish_pending()
         source = self.source
         source.keys = [network.key() for network in builder.networks]
-        source.spans = builder.spans
+        source.spans = builder.spans()
         source.heads = builder.heads
         source.trailer = tuple(builder.pending)
         source.trailer_span = (builder.cursor, stop)
 
-    def _unknown_sub(self, line: _Line, number: int | None, scanned: list[_Line], k: int,
-                     builder: _NetworkBuilder) -> int:
+    def _line(self, recs: list[_Line], numbers: list[int], k: int,
+              builder: _NetworkBuilder) -> int:
+        """Read line `recs[k]` (with the parameter lines it takes); returns the next index."""
+        line = recs[k]
+        number = numbers[k]
+        k += 1
+        if line.kind == "comment":
+            builder.comment(line.comment or "")
+            return k
+        if line.kind == "label":
+            self.labels = True
+            builder.label(line.words[0].text)
+            return k
+        if line.kind == "parameter":
+            self._error("stray-parameter", number, line.words[0].column,
+                        text=line.words[0].text[:20])
+            return k
+        reported = len(self.diagnostics)
+        alone = True  # the text alone makes the instruction: no parameter lines taken
+        head = line.words[0]
+        operands = line.words[1:]
+        spec = lookup(head.text)
+        if spec is None and head.text[:4].upper() == "SUB.":
+            spec = spec_for(head.text, len(operands))  # one-line unknown `SUB.219 p1 p2`
+            if spec is not None:
+                self.diagnostics.append(Diagnostic("unknown-sub", {"number": spec.sub},
+                                                   number, head.column, Severity.WARNING))
+        if spec is None:
+            if len(operands) == 0 and _ADDRESS_SHAPE.match(head.text):
+                self._error("stray-parameter", number, head.column, text=head.text[:20])
+            else:
+                self._error("unknown-instruction", number, head.column, name=head.text[:20])
+            return k
+        if spec.kind is Kind.BASIC and len(operands) > 1 and head.text.upper() in BY_MNEMONIC:
+            spec = BY_MNEMONIC[head.text.upper()]  # one-line `AND 1 R10 R11 R12`: LOGAND
+        if spec.name == "SUB" and len(operands) == 1 and operands[0].is_int:
+            sub = _small_int(operands[0].text, 6)
+            sub = sub if sub is not None and sub >= 0 else None
+            sub_spec = BY_SUB.get(sub) if sub is not None else None
+            if sub_spec is None:
+                return self._unknown_sub(line, number, sub, recs, numbers, k, builder)
+            spec = sub_spec
+            operands = []
+            k = self._collect_params(spec, recs, k, operands)
+            alone = False
+        elif spec.kind is not Kind.BASIC and not operands and spec.params:
+            k = self._collect_params(spec, recs, k, operands)
+            alone = False
+        end_line = max(number, numbers[k - 1])
+        instruction = self._build(spec, line, number, operands)
+        if instruction is None:
+            return k
+        starts, ends = _flow(spec)
+        if alone and len(self.diagnostics) == reported:
+            line.made = (spec, instruction.name, instruction.operand, instruction.params,
+                         instruction.comment, instruction.column, starts, ends)
+        builder.add(instruction, end_line, starts, ends)
+        return k
+
+    def _unknown_sub(self, line: _Line, number: int, sub: int | None, recs: list[_Line],
+                     numbers: list[int], k: int, builder: _NetworkBuilder) -> int:
         """`SUB n` the table does not know: every following parameter line is its parameter."""
         column = line.words[1].column
         text = line.words[1].text
         make = getattr(_table, "unknown_sub", None)
-        if make is None or number is None:
-            self._error("unknown-sub", line.number, column, number=text[:20])
+        if make is None or sub is None:
+            self._error("unknown-sub", number, column, number=text[:20])
             return k
         operands: list[_Token] = []
-        while k < len(scanned) and _is_param_line(scanned[k]):
-            operands.append(scanned[k].words[0])
+        while k < len(recs) and recs[k].param:
+            operands.append(recs[k].words[0])
             k += 1
-        self.diagnostics.append(Diagnostic("unknown-sub", {"number": number}, line.number,
+        self.diagnostics.append(Diagnostic("unknown-sub", {"number": sub}, number,
                                            column, Severity.WARNING))
-        spec = make(number, len(operands))
-        instruction = self._build(spec, line, operands)
+        spec = make(sub, len(operands))
+        instruction = self._build(spec, line, number, operands)
         if instruction is not None:
-            builder.add(instruction, scanned[k - 1].number if operands else line.number, spec)
+            builder.add(instruction, numbers[k - 1] if operands else number, *_flow(spec))
         return k
 
-    def _collect_params(self, spec: InstructionSpec, scanned: list[_Line], k: int,
+    def _collect_params(self, spec: InstructionSpec, recs: list[_Line], k: int,
                         out: list[_Token]) -> int:
         """FANUC form: take the parameters from the following lines, one per line."""
         needed = len(spec.fixed_params())
         table = spec.table_param()
-        while k < len(scanned):
-            line = scanned[k]
-            if _is_param_line(line):
+        while k < len(recs):
+            line = recs[k]
+            if line.param:
                 if len(out) >= needed:
                     if table is None:
                         break
@@ -509,34 +596,34 @@ class _FileParser:
     def _error(self, code: str, line: int, column: int, **args: object) -> None:
         self.diagnostics.append(Diagnostic(code, dict(args), line, column))
 
-    def _build(self, spec: InstructionSpec, line: _Line,
+    def _build(self, spec: InstructionSpec, line: _Line, number: int,
                operands: list[_Token]) -> Instruction | None:
         head = line.words[0]
         comment = line.comment or ""
         if spec.kind is Kind.BASIC:
             if not spec.operand:
                 if operands:
-                    self._error("extra-operand", line.number, operands[0].column,
+                    self._error("extra-operand", number, operands[0].column,
                                 name=spec.name, text=operands[0].text[:20])
                     return None
-                return Instruction(spec.name, comment=comment, line=line.number,
+                return Instruction(spec.name, comment=comment, line=number,
                                    column=head.column)
             if not operands:
-                self._error("missing-operand", line.number, head.column, name=spec.name)
+                self._error("missing-operand", number, head.column, name=spec.name)
                 return None
             if len(operands) > 1:
-                self._error("extra-operand", line.number, operands[1].column,
+                self._error("extra-operand", number, operands[1].column,
                             name=spec.name, text=operands[1].text[:20])
                 return None
-            address = self._address(operands[0], line.number, want_bit=True, width=1)
+            address = self._address(operands[0], number, want_bit=True, width=1)
             if address is None:
                 return None
-            return Instruction(spec.name, address, comment=comment, line=line.number,
+            return Instruction(spec.name, address, comment=comment, line=number,
                                column=head.column)
-        params = self._params(spec, operands, line.number, head.column)
+        params = self._params(spec, operands, number, head.column)
         if params is None:
             return None
-        return Instruction(spec.name, params=params, comment=comment, line=line.number,
+        return Instruction(spec.name, params=params, comment=comment, line=number,
                            column=head.column)
 
     def _address(self, token: _Token, line: int, *, want_bit: bool | None,
@@ -698,20 +785,33 @@ def _table_size(spec: InstructionSpec, operands: list[_Token]) -> int | None:
     return None
 
 
+def _flow(spec: InstructionSpec) -> tuple[bool, bool]:
+    """Whether the instruction starts a network after an output (a READ without push, or a
+    function with no control input), and whether it ends one (a coil or a function)."""
+    starts = (spec.combine is Combine.READ and not spec.pushes) or (
+        spec.kind is not Kind.BASIC and not spec.inputs)
+    return starts, spec.writes or spec.kind is not Kind.BASIC
+
+
+_BLANK = _Line("blank")  # every blank line text scans to this one
+
+
 class _NetworkBuilder:
     """Groups instructions into networks: a label, or an RD after an output, starts one.
 
-    Also records which source lines each network came from (`spans`, 0-based, end exclusive):
-    from the end of the previous network to its last instruction or parameter line."""
+    Also records which source lines each network came from (`spans()`, 0-based, end
+    exclusive): from the end of the previous network to its last instruction or parameter
+    line."""
 
     def __init__(self, start: int) -> None:
         self.networks: list[Network] = []
-        self.current: Network | None = None
+        self.current: list[Instruction] | None = None  # the instructions of the last network
         self.closed = False  # the current network has reached an output
         self.pending: list[str] = []
         self.pending_label = ""
         self.cursor = start  # first line index not yet in a network
-        self.spans: list[tuple[int, int]] = []
+        self.firsts: list[int] = []  # spans: first line index of each network
+        self.lasts: list[int] = []  # spans: end of each network
         self.heads: list[int] = []
 
     def comment(self, text: str) -> None:
@@ -723,27 +823,32 @@ class _NetworkBuilder:
         self.pending_label = text
         self.closed = True
 
-    def add(self, instruction: Instruction, end_line: int, spec: InstructionSpec) -> None:
-        starts = bool(self.pending_label) or (
-            spec.combine is Combine.READ and not spec.pushes) or (
-            spec.kind is not Kind.BASIC and not spec.inputs
-        )
-        if self.current is None or (starts and self.closed):
-            self.current = Network(comments=self.pending, label=self.pending_label)
+    def add(self, instruction: Instruction, end_line: int, starts: bool, ends: bool) -> None:
+        """Add an instruction (its last line `end_line`); `starts`, `ends` are its _flow()."""
+        current = self.current
+        if current is None or (self.closed and (starts or self.pending_label)):
+            network = Network(comments=self.pending, label=self.pending_label)
+            current = self.current = network.instructions
             self.pending = []
             self.pending_label = ""
-            self.networks.append(self.current)
-            self.spans.append((self.cursor, end_line))
+            self.networks.append(network)
+            self.firsts.append(self.cursor)
+            self.lasts.append(end_line)
             self.heads.append(instruction.line - 1)
             self.closed = False
-        elif self.pending:
-            instruction = _with_lead(instruction, self.pending)
-            self.pending = []
-        self.current.instructions.append(instruction)
-        self.spans[-1] = (self.spans[-1][0], end_line)
+        else:
+            if self.pending:
+                instruction = _with_lead(instruction, self.pending)
+                self.pending = []
+            self.lasts[-1] = end_line
+        current.append(instruction)
         self.cursor = end_line
-        if spec.writes or spec.kind is not Kind.BASIC:
+        if ends:
             self.closed = True
+
+    def spans(self) -> list[tuple[int, int]]:
+        """The source lines of each network."""
+        return list(zip(self.firsts, self.lasts, strict=True))
 
     def finish_pending(self) -> list[str]:
         """Comment lines after the last network (a label there is kept as its text)."""
@@ -756,3 +861,5 @@ class _NetworkBuilder:
 def _with_lead(instruction: Instruction, lead: list[str]) -> Instruction:
     return Instruction(instruction.name, instruction.operand, instruction.params,
                        instruction.comment, tuple(lead), instruction.line, instruction.column)
+
+

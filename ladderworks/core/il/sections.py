@@ -37,9 +37,9 @@ def read_symbols(section: Section, first: int, table: SymbolTable,
         _read_csv_symbols(section, first, table, out)
         return
     for offset, line in enumerate(section.lines):
-        if _is_comment(line):
-            continue
         words = line.split(None, 2)
+        if not words or words[0].startswith((";", "//")):  # blank or a comment line
+            continue
         comment = words[2].strip() if len(words) > 2 else ""
         if len(words) < 2 or not add_entry(table, words[0], words[1], (comment,)):
             _warn(out, section, first + offset, line.strip())
