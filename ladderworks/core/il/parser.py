@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import gc
 import re
+from bisect import bisect_left
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -211,8 +212,9 @@ def _basic_with_operand(name: str) -> tuple[InstructionSpec, bool, bool] | None:
     return (spec, *_flow(spec))
 
 
-def _scan_fast(text: str) -> _Line | None:
-    """The common lines without lark; None for a line only the grammar can judge."""
+def _scan_fast(text: str) -> _Line | _Made | None:
+    """The common lines without lark; None for a line only the grammar can judge. A basic
+    instruction with its operand and nothing else (`RD X21.7`) is the instruction it makes."""
     simple = _SIMPLE.fullmatch(text)  # `RD  X21.7`, the most common shape, in one match
     if simple is not None:
         head, operand = simple.group(1, 2)
@@ -224,8 +226,7 @@ def _scan_fast(text: str) -> _Line | None:
                 pass  # the full path reports it
             else:
                 spec, starts, ends = basic
-                return _Line("instruction", made=(spec, spec.name, address, (), "",
-                                                  simple.start(1) + 1, starts, ends))
+                return (spec, spec.name, address, (), "", simple.start(1) + 1, starts, ends)
         return _Line("instruction", [_Token(head, simple.start(1) + 1, False),
                                      _Token(operand, simple.start(2) + 1, False)])
     stripped = text.lstrip(" \t")
@@ -273,7 +274,7 @@ def _scan_fast(text: str) -> _Line | None:
     return _Line("instruction", words, comment)
 
 
-def _scan_line(text: str, number: int) -> _Line | Diagnostic:
+def _scan_line(text: str, number: int) -> _Line | _Made | Diagnostic:
     """One line text of the ladder section (at line `number`, for a syntax error): the fast
     scanner, else the lark grammar."""
     fast = _scan_fast(text)
@@ -358,6 +359,11 @@ class _FileParser:
         self.firsts: dict[int, int] = {}
         self.labels = False
         self.dialect = "seed"  # decided before the ladder is read: parameter ranges depend on it
+        self.marks: list[int] | None = None  # the lines with a `%`, found when first needed
+        # the parameters read for a spec (by id: the table's rows live while a parse runs)
+        # from operands (their texts), when they gave no diagnostic
+        self.made_params: dict[tuple[int, tuple[tuple[str, bool], ...]],
+                               tuple[ParamValue, ...]] = {}
 
     def run(self) -> ParseResult:
         has_any_section = any(_HEADER.match(line) for line in self.lines if "%@" in line)
@@ -398,11 +404,7 @@ class _FileParser:
                     self.diagnostics.append(
                         Diagnostic("duplicate-section", {"number": rest[:20]}, i + 1, 1))
                 seen.add(key)
-                j = i + 1
-                while j < len(lines) and not _SECTION_END.match(lines[j]):
-                    if "%@" in lines[j] and _HEADER.match(lines[j]):
-                        break
-                    j += 1
+                j = self._next_mark(i + 1)
                 closed = j < len(lines) and bool(_SECTION_END.match(lines[j]))
                 if not closed:
                     self.diagnostics.append(Diagnostic("missing-end", {}, min(j, len(lines)), 1))
@@ -434,6 +436,19 @@ class _FileParser:
             self.source.ladder_start = self.source.ladder_stop = -1
         read_views(self.program, self.firsts, self.diagnostics)
 
+    def _next_mark(self, start: int) -> int:
+        """The first line from `start` that ends a section or starts one (else past the end):
+        only the lines with a `%` are looked at."""
+        lines = self.lines
+        marks = self.marks
+        if marks is None:
+            marks = self.marks = [i for i, line in enumerate(lines) if "%" in line]
+        for j in marks[bisect_left(marks, start):]:
+            line = lines[j]
+            if _SECTION_END.match(line) or ("%@" in line and _HEADER.match(line)):
+                return j
+        return len(lines)
+
     def _not_a_program(self) -> None:
         """Text with no section and no instruction that has errors is not a ladder program."""
         errors = [d for d in self.diagnostics if d.is_error and d.code != "missing-start"]
@@ -456,9 +471,9 @@ class _FileParser:
             self.dialect = FANUC
         # many lines repeat ("RD X21.7"): each text is scanned once, and what it makes is
         # built once; the lines that repeat it share its _Line
-        recs: list[_Line] = []
+        recs: list[_Line | _Made] = []
         numbers: list[int] = []
-        seen: dict[str, _Line] = {}
+        seen: dict[str, _Line | _Made] = {}
         for number, text in enumerate(lines[start:stop], start + 1):
             rec = seen.get(text)
             if rec is None:
@@ -476,14 +491,29 @@ class _FileParser:
         count = len(recs)
         while k < count:
             rec = recs[k]
-            made = rec.made
-            if made is not None:
-                number = numbers[k]
-                k += 1
-                add(new_instruction(made[1], made[2], made[3], made[4], (), number, made[5]),
-                    number, made[6], made[7])
+            made = rec if rec.__class__ is tuple else rec.made  # type: ignore[union-attr]
+            if made is None:
+                assert isinstance(rec, _Line)
+                if rec.kind == "label":
+                    self.labels = True
+                    builder.label(rec.words[0].text)
+                    k += 1
+                else:
+                    k = self._line(recs, numbers, k, builder)
                 continue
-            k = self._line(recs, numbers, k, builder)
+            number = numbers[k]
+            k += 1
+            _spec, name, operand, params, comment, column, starts, ends = made
+            instruction = new_instruction(name, operand, params, comment, (), number, column)
+            current = builder.current
+            if current is None or builder.pending or (builder.closed and (
+                    starts or builder.pending_label)):
+                add(instruction, number, starts, ends)
+                continue
+            current.append(instruction)  # the common case of builder.add, inline
+            builder.lasts[-1] = builder.cursor = number
+            if ends:
+                builder.closed = True
         self.program.networks = builder.networks
         self.program.trailer = builder.finish_pending()
         source = self.source
@@ -493,10 +523,11 @@ class _FileParser:
         source.trailer = tuple(builder.pending)
         source.trailer_span = (builder.cursor, stop)
 
-    def _line(self, recs: list[_Line], numbers: list[int], k: int,
+    def _line(self, recs: list[_Line | _Made], numbers: list[int], k: int,
               builder: _NetworkBuilder) -> int:
         """Read line `recs[k]` (with the parameter lines it takes); returns the next index."""
         line = recs[k]
+        assert isinstance(line, _Line)
         number = numbers[k]
         k += 1
         if line.kind == "comment":
@@ -552,7 +583,7 @@ class _FileParser:
         builder.add(instruction, end_line, starts, ends)
         return k
 
-    def _unknown_sub(self, line: _Line, number: int, sub: int | None, recs: list[_Line],
+    def _unknown_sub(self, line: _Line, number: int, sub: int | None, recs: list[_Line | _Made],
                      numbers: list[int], k: int, builder: _NetworkBuilder) -> int:
         """`SUB n` the table does not know: every following parameter line is its parameter."""
         column = line.words[1].column
@@ -562,8 +593,11 @@ class _FileParser:
             self._error("unknown-sub", number, column, number=text[:20])
             return k
         operands: list[_Token] = []
-        while k < len(recs) and recs[k].param:
-            operands.append(recs[k].words[0])
+        while k < len(recs):
+            following = recs[k]
+            if not isinstance(following, _Line) or not following.param:
+                break
+            operands.append(following.words[0])
             k += 1
         self.diagnostics.append(Diagnostic("unknown-sub", {"number": sub}, number,
                                            column, Severity.WARNING))
@@ -573,14 +607,13 @@ class _FileParser:
             builder.add(instruction, numbers[k - 1] if operands else number, *_flow(spec))
         return k
 
-    def _collect_params(self, spec: InstructionSpec, recs: list[_Line], k: int,
+    def _collect_params(self, spec: InstructionSpec, recs: list[_Line | _Made], k: int,
                         out: list[_Token]) -> int:
         """FANUC form: take the parameters from the following lines, one per line."""
-        needed = len(spec.fixed_params())
-        table = spec.table_param()
+        needed, table = _shape(spec)
         while k < len(recs):
             line = recs[k]
-            if line.param:
+            if isinstance(line, _Line) and line.param:
                 if len(out) >= needed:
                     if table is None:
                         break
@@ -620,11 +653,16 @@ class _FileParser:
                 return None
             return Instruction(spec.name, address, comment=comment, line=number,
                                column=head.column)
-        params = self._params(spec, operands, number, head.column)
+        key = (id(spec), tuple([(token.text, token.is_int) for token in operands]))
+        params = self.made_params.get(key)  # real programs repeat `SUB 43` with its lines
         if params is None:
-            return None
-        return Instruction(spec.name, params=params, comment=comment, line=number,
-                           column=head.column)
+            reported = len(self.diagnostics)
+            params = self._params(spec, operands, number, head.column)
+            if params is None:
+                return None
+            if len(self.diagnostics) == reported:
+                self.made_params[key] = params
+        return new_instruction(spec.name, None, params, comment, (), number, head.column)
 
     def _address(self, token: _Token, line: int, *, want_bit: bool | None,
                  width: int) -> Address | None:
@@ -783,6 +821,17 @@ def _table_size(spec: InstructionSpec, operands: list[_Token]) -> int | None:
                 value = _small_int(token.text, MAX_NUMBER_DIGITS)
                 return value if value is not None and param.lo <= value <= param.hi else None
     return None
+
+
+def _shape(spec: InstructionSpec) -> tuple[int, Param | None]:
+    """The number of fixed parameters of a spec and its TABLE parameter (once per row)."""
+    found = _SHAPES.get(id(spec))
+    if found is None or found[0] is not spec:
+        found = _SHAPES[id(spec)] = (spec, len(spec.fixed_params()), spec.table_param())
+    return found[1], found[2]
+
+
+_SHAPES: dict[int, tuple[InstructionSpec, int, Param | None]] = {}
 
 
 def _flow(spec: InstructionSpec) -> tuple[bool, bool]:

@@ -5,10 +5,10 @@ from __future__ import annotations
 import csv
 import re
 
-from ladderworks.core.address import AddressError, Area, parse_address
+from ladderworks.core.address import AddressError, Area, parse_address, parse_address_cached
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.il.program import IoModule, Message, Program, Section
-from ladderworks.core.symbols import SymbolTable, add_entry
+from ladderworks.core.symbols import SymbolTable, add_entry, new_symbol
 
 _COLUMNS_RE = re.compile(r"(SYM|ADR|CM1|CM2)\s*=\s*(\d{1,2})", re.IGNORECASE)
 _MESSAGE_RE = re.compile(r"^\s*(\S+)\s+(\d{1,6})(?:[ \t](.*))?$")
@@ -36,12 +36,21 @@ def read_symbols(section: Section, first: int, table: SymbolTable,
     if kind.upper().startswith("-E"):
         _read_csv_symbols(section, first, table, out)
         return
+    by_address, by_symbol = table.by_address, table.by_symbol
     for offset, line in enumerate(section.lines):
         words = line.split(None, 2)
         if not words or words[0].startswith((";", "//")):  # blank or a comment line
             continue
         comment = words[2].strip() if len(words) > 2 else ""
-        if len(words) < 2 or not add_entry(table, words[0], words[1], (comment,)):
+        if len(words) == 2 and words[0][0] not in "Pp":  # `D37.4   C62179`: table.add inline
+            try:
+                address = parse_address_cached(words[0], None, 1)
+            except AddressError:
+                _warn(out, section, first + offset, line.strip())
+                continue
+            by_address[address] = new_symbol(words[1], ())
+            by_symbol.setdefault(words[1], address)
+        elif len(words) < 2 or not add_entry(table, words[0], words[1], (comment,)):
             _warn(out, section, first + offset, line.strip())
 
 
