@@ -174,8 +174,11 @@ def parse_address_cached(text: str, want_bit: bool | None, width: int) -> Addres
     area = _AREA_OF.get(letter)
     if area is None:
         raise AddressError("unknown-area", text=text, area=letter.upper())
-    stripped = byte_text.lstrip("0") or "0"
-    byte = int(stripped) if len(stripped) <= MAX_BYTE_DIGITS else -1
+    if len(byte_text) <= MAX_BYTE_DIGITS:
+        byte = int(byte_text)
+    else:
+        stripped = byte_text.lstrip("0") or "0"
+        byte = int(stripped) if len(stripped) <= MAX_BYTE_DIGITS else -1
     last = byte + max(width, 1) - 1
     for lo, hi in AREA_RANGES[area]:
         if lo <= byte and last <= hi:
@@ -185,9 +188,9 @@ def parse_address_cached(text: str, want_bit: bool | None, width: int) -> Addres
                            last=AREA_SIZES[area] - max(width, 1), ranges=ranges_text(area))
     bit: int | None = None
     if bit_text is not None:
-        if len(bit_text) > 1 or bit_text > "7":
+        if len(bit_text) > 1 or int(bit_text) > 7:
             raise AddressError("bit-range", text=text)
-        bit = ord(bit_text) - 48
+        bit = int(bit_text)
     if want_bit is True and bit is None:
         raise AddressError("bit-expected", text=text)
     if want_bit is False and bit is not None:

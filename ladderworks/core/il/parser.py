@@ -14,8 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ladderworks.core import instructions as _table
-from ladderworks.core.address import Address, AddressError, parse_address
-from ladderworks.core.address import parse_address_cached as _bit_operand
+from ladderworks.core.address import Address, AddressError, parse_address, parse_address_cached
 from ladderworks.core.diagnostics import Diagnostic, Severity, has_errors
 from ladderworks.core.il.program import (
     FANUC,
@@ -220,11 +219,11 @@ def _scan_fast(text: str) -> _Line | _Made | None:
         head, operand = simple.group(1, 2)
         basic = _basic_with_operand(head)
         if basic is not None:
-            try:
-                address = _bit_operand(operand, True, 1)
+            try:  # read as the symbol table reads it (one cached parse for both)
+                address: Address | None = parse_address_cached(operand, None, 1)
             except AddressError:
-                pass  # the full path reports it
-            else:
+                address = None  # the full path reports it
+            if address is not None and address.bit is not None:
                 spec, starts, ends = basic
                 return (spec, spec.name, address, (), "", simple.start(1) + 1, starts, ends)
         return _Line("instruction", [_Token(head, simple.start(1) + 1, False),
