@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from functools import cache, lru_cache
 from importlib import resources
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 from ladderworks.core import instructions as _table
 from ladderworks.core.address import Address, AddressError, parse_address, parse_address_cached
@@ -321,6 +321,13 @@ def _scan_line(text: str, number: int) -> _Line | _Made | Diagnostic:
     return _Line("instruction", words, comment)
 
 
+def _syntax_error(text: str, number: int) -> Diagnostic:
+    """The syntax error of a line text _scan_line found one in, at line `number`."""
+    item = _scan_line(text, number)
+    assert isinstance(item, Diagnostic), text
+    return item
+
+
 def _branch(node: lark.Tree[lark.Token] | lark.Token) -> lark.Tree[lark.Token]:
     """A subtree the line grammar puts at this place."""
     import lark  # loaded already: only lark's trees reach here
@@ -476,21 +483,22 @@ class _FileParser:
                 line.endswith(":") and _LABEL.match(line) for line in lines[start:stop]):
             self.dialect = FANUC
         # many lines repeat ("RD X21.7"): each text is scanned once, and what it makes is
-        # built once; the lines that repeat it share its _Line
-        recs: list[_Line | _Made] = []
-        numbers: list[int] = []
-        seen: dict[str, _Line | _Made] = {}
-        for number, text in enumerate(lines[start:stop], start + 1):
-            rec = seen.get(text)
-            if rec is None:
-                item = _scan_line(text, number)
-                if isinstance(item, Diagnostic):
-                    self.diagnostics.append(item)
-                    continue
-                seen[text] = rec = item
-            if rec is not _BLANK:
-                recs.append(rec)
-                numbers.append(number)
+        # built once; the lines that repeat it share its _Line (or its _Made)
+        body = lines[start:stop]
+        seen = cast("dict[str, _Line | _Made]", dict.fromkeys(body, _BLANK))
+        bad = False
+        for text in seen:
+            item = _scan_line(text, 0)
+            if isinstance(item, Diagnostic):
+                item = _BAD
+                bad = True
+            seen[text] = item
+        if bad:  # a syntax error is reported at each line that has it, in order
+            for number, text in enumerate(body, start + 1):
+                if seen[text] is _BAD:
+                    self.diagnostics.append(_syntax_error(text, number))
+        recs = list(map(seen.__getitem__, body))  # line start + 1 + k is recs[k]
+        base = start + 1
         builder = _NetworkBuilder(start)
         add = builder.add
         k = 0
@@ -500,14 +508,17 @@ class _FileParser:
             made = rec if rec.__class__ is tuple else rec.made  # type: ignore[union-attr]
             if made is None:
                 assert isinstance(rec, _Line)
-                if rec.kind == "label":
+                kind = rec.kind
+                if kind == "label":
                     self.labels = True
                     builder.label(rec.words[0].text)
                     k += 1
+                elif kind == "blank" or kind == "bad":
+                    k += 1
                 else:
-                    k = self._line(recs, numbers, k, builder)
+                    k = self._line(recs, base, k, builder)
                 continue
-            number = numbers[k]
+            number = base + k
             k += 1
             _spec, name, operand, params, comment, column, starts, ends = made
             instruction = new_instruction(name, operand, params, comment, (), number, column)
@@ -529,13 +540,15 @@ class _FileParser:
         source.trailer = tuple(builder.pending)
         source.trailer_span = (builder.cursor, stop)
 
-    def _line(self, recs: list[_Line | _Made], numbers: list[int], k: int,
+    def _line(self, recs: list[_Line | _Made], base: int, k: int,
               builder: _NetworkBuilder) -> int:
-        """Read line `recs[k]` (with the parameter lines it takes); returns the next index."""
+        """Read line `recs[k]` (number `base + k`, with the parameter lines it takes); returns
+        the next index."""
         line = recs[k]
         assert isinstance(line, _Line)
-        number = numbers[k]
+        number = base + k
         k += 1
+        last = k - 1  # the last line it reads
         if line.kind == "comment":
             builder.comment(line.comment or "")
             return k
@@ -570,15 +583,16 @@ class _FileParser:
             sub = sub if sub is not None and sub >= 0 else None
             sub_spec = BY_SUB.get(sub) if sub is not None else None
             if sub_spec is None:
-                return self._unknown_sub(line, number, sub, recs, numbers, k, builder)
+                return self._unknown_sub(line, number, sub, recs, base, k, builder)
             spec = sub_spec
             operands = []
-            k = self._collect_params(spec, recs, k, operands)
+            last = self._collect_params(spec, recs, last, operands)
             alone = False
         elif spec.kind is not Kind.BASIC and not operands and spec.params:
-            k = self._collect_params(spec, recs, k, operands)
+            last = self._collect_params(spec, recs, last, operands)
             alone = False
-        end_line = max(number, numbers[k - 1])
+        k = last + 1
+        end_line = base + last
         instruction = self._build(spec, line, number, operands)
         if instruction is None:
             return k
@@ -590,7 +604,7 @@ class _FileParser:
         return k
 
     def _unknown_sub(self, line: _Line, number: int, sub: int | None, recs: list[_Line | _Made],
-                     numbers: list[int], k: int, builder: _NetworkBuilder) -> int:
+                     base: int, k: int, builder: _NetworkBuilder) -> int:
         """`SUB n` the table does not know: every following parameter line is its parameter."""
         column = line.words[1].column
         text = line.words[1].text
@@ -599,38 +613,39 @@ class _FileParser:
             self._error("unknown-sub", number, column, number=text[:20])
             return k
         operands: list[_Token] = []
-        while k < len(recs):
-            following = recs[k]
-            if not isinstance(following, _Line) or not following.param:
-                break
-            operands.append(following.words[0])
-            k += 1
+        last = self._collect_params(None, recs, k - 1, operands)
         self.diagnostics.append(Diagnostic("unknown-sub", {"number": sub}, number,
                                            column, Severity.WARNING))
         spec = make(sub, len(operands))
         instruction = self._build(spec, line, number, operands)
         if instruction is not None:
-            builder.add(instruction, numbers[k - 1] if operands else number, *_flow(spec))
-        return k
+            builder.add(instruction, base + last, *_flow(spec))
+        return last + 1
 
-    def _collect_params(self, spec: InstructionSpec, recs: list[_Line | _Made], k: int,
-                        out: list[_Token]) -> int:
-        """FANUC form: take the parameters from the following lines, one per line."""
-        needed, table = _shape(spec)
+    def _collect_params(self, spec: InstructionSpec | None, recs: list[_Line | _Made],
+                        last: int, out: list[_Token]) -> int:
+        """FANUC form: take the parameters from the lines after `recs[last]`, one per line
+        (blank lines and lines with a syntax error skipped), as many as `spec` takes (every
+        one for None); returns the index of the last line taken (`last` for none)."""
+        needed, table = _shape(spec) if spec is not None else (0, None)
+        k = last + 1
         while k < len(recs):
             line = recs[k]
-            if isinstance(line, _Line) and line.param:
-                if len(out) >= needed:
-                    if table is None:
-                        break
-                    size = _table_size(spec, out)
-                    if size is None or len(out) >= needed + size:
-                        break
-                out.append(line.words[0])
+            if line is _BLANK or line is _BAD:
                 k += 1
                 continue
-            break
-        return k
+            if not isinstance(line, _Line) or not line.param:
+                break
+            if spec is not None and len(out) >= needed:
+                if table is None:
+                    break
+                size = _table_size(spec, out)
+                if size is None or len(out) >= needed + size:
+                    break
+            out.append(line.words[0])
+            last = k
+            k += 1
+        return last
 
     def _error(self, code: str, line: int, column: int, **args: object) -> None:
         self.diagnostics.append(Diagnostic(code, dict(args), line, column))
@@ -849,6 +864,7 @@ def _flow(spec: InstructionSpec) -> tuple[bool, bool]:
 
 
 _BLANK = _Line("blank")  # every blank line text scans to this one
+_BAD = _Line("bad")  # a line text with a syntax error
 
 
 class _NetworkBuilder:
