@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, cast
 
 from ladderworks.core import instructions as _table
-from ladderworks.core.address import Address, AddressError, parse_address, parse_address_cached
+from ladderworks.core.address import Address, AddressError, parse_address_cached
 from ladderworks.core.diagnostics import Diagnostic, Severity, has_errors
 from ladderworks.core.il.program import (
     FANUC,
@@ -688,7 +688,7 @@ class _FileParser:
     def _address(self, token: _Token, line: int, *, want_bit: bool | None,
                  width: int) -> Address | None:
         try:
-            return parse_address(token.text, want_bit=want_bit, width=width)
+            return parse_address_cached(token.text, want_bit, width)
         except AddressError as exc:
             args = {k: (v[:20] if isinstance(v, str) and k == "text" else v)
                     for k, v in exc.args_map.items()}
