@@ -134,17 +134,27 @@ def _collector_paused() -> Iterator[None]:
 def parse_bytes(data: bytes) -> ParseResult:
     """Parse file contents given as bytes (any encoding LadderWorks reads)."""
     with _collector_paused():
-        return _parse_bytes(data)
+        return _parse_bytes(data, build=True)
 
 
-def _parse_bytes(data: bytes) -> ParseResult:
+def check_file(path: str | Path) -> list[Diagnostic]:
+    """The diagnostics `parse_file(path)` gives, found without building the program's
+    networks (what `ladderworks-cli check` prints)."""
+    data = Path(path).read_bytes()
+    with _collector_paused():
+        return _parse_bytes(data, build=False).diagnostics
+
+
+def _parse_bytes(data: bytes, *, build: bool) -> ParseResult:
     text, form, diagnostics = decode_text(data)
     if _is_binary(data):
         program = Program()
         lines, ends = split_with_ends(text)
         program.source = FileSource(form, lines, ends, -1, -1)
         return ParseResult(program, [Diagnostic("not-a-program", {}, 1, 1)], form.encoding)
-    result = _FileParser(text, form).run()
+    parser = _FileParser(text, form)
+    parser.build = build
+    result = parser.run()
     if diagnostics:
         result.diagnostics = sorted(diagnostics + result.diagnostics,
                                     key=lambda d: (d.line, d.column))
@@ -372,6 +382,10 @@ class _FileParser:
         self.firsts: dict[int, int] = {}
         self.labels = False
         self.dialect = "seed"  # decided before the ladder is read: parameter ranges depend on it
+        # False: only the diagnostics are wanted, so a line that makes its instruction alone
+        # (which never has one) is not built into the networks
+        self.build = True
+        self.skipped = False  # such a line was skipped
         self.marks: list[int] | None = None  # the lines with a `%`, found when first needed
         # the parameters read for a spec (by id: the table's rows live while a parse runs)
         # from operands (their texts), when they gave no diagnostic
@@ -465,7 +479,7 @@ class _FileParser:
     def _not_a_program(self) -> None:
         """Text with no section and no instruction that has errors is not a ladder program."""
         errors = [d for d in self.diagnostics if d.is_error and d.code != "missing-start"]
-        if self.program.networks or not errors:
+        if self.program.networks or self.skipped or not errors:
             return
         self.diagnostics = [Diagnostic("not-a-program", {}, 1, 1), *errors[:2]]
 
@@ -503,6 +517,9 @@ class _FileParser:
         add = builder.add
         k = 0
         count = len(recs)
+        if not self.build:
+            self._check_ladder(recs, base, builder)
+            k = count
         while k < count:
             rec = recs[k]
             made = rec if rec.__class__ is tuple else rec.made  # type: ignore[union-attr]
@@ -539,6 +556,30 @@ class _FileParser:
         source.heads = builder.heads
         source.trailer = tuple(builder.pending)
         source.trailer_span = (builder.cursor, stop)
+
+    def _check_ladder(self, recs: list[_Line | _Made], base: int,
+                      builder: _NetworkBuilder) -> None:
+        """The ladder's diagnostics only: the lines that make their instruction alone are
+        skipped; the others are read as when building (the networks are left incomplete)."""
+        k = 0
+        count = len(recs)
+        while k < count:
+            rec = recs[k]
+            if rec.__class__ is tuple:
+                self.skipped = True
+                k += 1
+                continue
+            assert isinstance(rec, _Line)
+            if rec.made is not None:
+                self.skipped = True
+                k += 1
+            elif rec.kind == "label":
+                self.labels = True
+                k += 1
+            elif rec.kind == "blank" or rec.kind == "bad":
+                k += 1
+            else:
+                k = self._line(recs, base, k, builder)
 
     def _line(self, recs: list[_Line | _Made], base: int, k: int,
               builder: _NetworkBuilder) -> int:
