@@ -669,8 +669,11 @@ class _FileParser:
         (blank lines and lines with a syntax error skipped), as many as `spec` takes (every
         one for None); returns the index of the last line taken (`last` for none)."""
         needed, table = _shape(spec) if spec is not None else (0, None)
+        size: int | None = None
+        sized = False  # the table's size is read once the fixed parameters are all taken
+        count = len(recs)
         k = last + 1
-        while k < len(recs):
+        while k < count:
             line = recs[k]
             if line is _BLANK or line is _BAD:
                 k += 1
@@ -680,7 +683,8 @@ class _FileParser:
             if spec is not None and len(out) >= needed:
                 if table is None:
                     break
-                size = _table_size(spec, out)
+                if not sized:
+                    size, sized = _table_size(spec, out), True
                 if size is None or len(out) >= needed + size:
                     break
             out.append(line.words[0])
