@@ -461,7 +461,7 @@ class _FileParser:
         if not ladder_found:
             self.diagnostics.append(Diagnostic("missing-start", {}, 1, 1))
             self.source.ladder_start = self.source.ladder_stop = -1
-        read_views(self.program, self.firsts, self.diagnostics)
+        read_views(self.program, self.firsts, self.diagnostics, build=self.build)
 
     def _next_mark(self, start: int) -> int:
         """The first line from `start` that ends a section or starts one (else past the end):

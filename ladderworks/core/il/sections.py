@@ -30,8 +30,10 @@ def _is_comment(line: str) -> bool:
 
 
 def read_symbols(section: Section, first: int, table: SymbolTable,
-                 out: list[Diagnostic]) -> None:
-    """Add a `%@2`, `%@2-C`, `%@2-C2` or `%@2-E(...)` section's entries to `table`."""
+                 out: list[Diagnostic], *, build: bool = True) -> None:
+    """Add a `%@2`, `%@2-C`, `%@2-C2` or `%@2-E(...)` section's entries to `table` (with
+    `build` False, only its common lines' diagnostics are wanted: they are checked, not
+    added)."""
     kind = section.title[3:]
     if kind.upper().startswith("-E"):
         _read_csv_symbols(section, first, table, out)
@@ -47,6 +49,8 @@ def read_symbols(section: Section, first: int, table: SymbolTable,
                 address = parse_address_cached(words[0], None, 1)
             except AddressError:
                 _warn(out, section, first + offset, line.strip())
+                continue
+            if not build:
                 continue
             by_address[address] = new_symbol(words[1], ())
             by_symbol.setdefault(words[1], address)
@@ -121,8 +125,10 @@ def read_io_modules(section: Section, first: int, out: list[Diagnostic]) -> list
     return modules
 
 
-def read_views(program: Program, firsts: dict[int, int], out: list[Diagnostic]) -> None:
-    """Fill the program's views from its sections; `firsts[id(section)]` is its first line."""
+def read_views(program: Program, firsts: dict[int, int], out: list[Diagnostic], *,
+               build: bool = True) -> None:
+    """Fill the program's views from its sections; `firsts[id(section)]` is its first line
+    (with `build` False only the diagnostics are wanted: the symbol table may be partial)."""
     table = SymbolTable()
     for section in program.sections():
         first = firsts.get(id(section), 1)
@@ -133,7 +139,7 @@ def read_views(program: Program, firsts: dict[int, int], out: list[Diagnostic]) 
         elif section.number == 1:
             program.title.update(read_items(section, first, out))
         elif section.number == 2 and (title[3:] in _SYMBOL_KINDS or title.startswith("%@2-E")):
-            read_symbols(section, first, table, out)
+            read_symbols(section, first, table, out, build=build)
         elif section.number == 4:
             read_messages(section, first, program, out)
         elif section.number == 5:

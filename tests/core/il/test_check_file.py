@@ -41,6 +41,7 @@ def test_the_fuzz_files(path: Path) -> None:
     "BOGUS\nMORE BOGUS\n",  # no section, no network: not a program
     "%@3\nRD X1.1\n\nSUB 27\n\n2\nR100\nR200\nWRT Y1.1\n%\n",
     "%@3\nRD X1.1\nWRT Y1.1\nRD X1.1\nWRT Y9.9\nRD X1.1\nWRT Y9.9\n%\n",
+    "%@2-C\nQ1.1 FOO\nX1.1 BAR\nX1.1\nP5 SUBP\nR9999.9 X\n%\n%@3\nRD X1.1\nWRT Y1.1\n%\n",
 ])
 def test_programs_that_decide_it(tmp_path: Path, text: str) -> None:
     _same(tmp_path / "p.LAD", text.encode())
