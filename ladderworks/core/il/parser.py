@@ -29,7 +29,13 @@ from ladderworks.core.il.program import (
     new_instruction,
 )
 from ladderworks.core.il.sections import read_views
-from ladderworks.core.il.textform import TextForm, decode_text, dominant_newline, split_with_ends
+from ladderworks.core.il.textform import (
+    TextForm,
+    decode_lines,
+    decode_text,
+    dominant_newline,
+    split_with_ends,
+)
 from ladderworks.core.instructions import (
     BY_MNEMONIC,
     BY_SUB,
@@ -146,13 +152,12 @@ def check_file(path: str | Path) -> list[Diagnostic]:
 
 
 def _parse_bytes(data: bytes, *, build: bool) -> ParseResult:
-    text, form, diagnostics = decode_text(data)
+    text, form, diagnostics, split = decode_lines(data)
     if _is_binary(data):
         program = Program()
-        lines, ends = split_with_ends(text)
-        program.source = FileSource(form, lines, ends, -1, -1)
+        program.source = FileSource(form, *split, -1, -1)
         return ParseResult(program, [Diagnostic("not-a-program", {}, 1, 1)], form.encoding)
-    parser = _FileParser(text, form)
+    parser = _FileParser(text, form, split)
     parser.build = build
     result = parser.run()
     if diagnostics:
@@ -373,8 +378,9 @@ def _header_kind(rest: str) -> tuple[int, str, bool]:
 class _FileParser:
     """Splits the file into sections and parses the ladder section into networks."""
 
-    def __init__(self, text: str, form: TextForm) -> None:
-        self.lines, ends = split_with_ends(text)
+    def __init__(self, text: str, form: TextForm,
+                 split: tuple[list[str], list[str]] | None = None) -> None:
+        self.lines, ends = split if split is not None else split_with_ends(text)
         self.program = Program()
         self.source = FileSource(form, self.lines, ends, 0, len(self.lines))
         self.program.source = self.source
