@@ -10,6 +10,8 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cache, lru_cache
 from importlib import resources
+from itertools import compress, count, repeat
+from operator import contains
 from pathlib import Path
 from typing import TYPE_CHECKING, cast
 
@@ -106,6 +108,9 @@ def decode(data: bytes) -> tuple[str, str]:
     return text, form.encoding
 
 
+_CONTROLS = bytes(b for b in range(32) if b not in (9, 10, 12, 13))  # bytes text rarely has
+
+
 def _is_binary(data: bytes) -> bool:
     """True for bytes that are not text: NULs (without a UTF-16 BOM) or many control bytes."""
     if data.startswith((b"\xff\xfe", b"\xfe\xff")):
@@ -113,7 +118,7 @@ def _is_binary(data: bytes) -> bool:
     sample = data[:65536]
     if b"\x00" in sample:
         return True
-    controls = sum(1 for b in sample if b < 32 and b not in (9, 10, 12, 13))
+    controls = len(sample) - len(sample.translate(None, _CONTROLS))
     return controls * 20 > len(sample)
 
 
@@ -475,7 +480,7 @@ class _FileParser:
         lines = self.lines
         marks = self.marks
         if marks is None:
-            marks = self.marks = [i for i, line in enumerate(lines) if "%" in line]
+            marks = self.marks = list(compress(count(), map(contains, lines, repeat("%"))))
         for j in marks[bisect_left(marks, start):]:
             line = lines[j]
             if _SECTION_END.match(line) or ("%@" in line and _HEADER.match(line)):
