@@ -753,8 +753,7 @@ class _FileParser:
 
     def _params(self, spec: InstructionSpec, operands: list[_Token], line: int,
                 column: int) -> tuple[ParamValue, ...] | None:
-        fixed = spec.fixed_params()
-        table = spec.table_param()
+        fixed, table = _fixed_and_table(spec)
         size = _table_size(spec, operands) if table else 0
         expected = len(fixed) + (size or 0)
         if len(operands) < len(fixed) or (table is None and len(operands) != len(fixed)) or (
@@ -785,19 +784,19 @@ class _FileParser:
 
     def _param(self, spec: InstructionSpec, param: Param, token: _Token, index: int,
                values: dict[str, object], line: int) -> ParamValue | None:
-        kind = param.kind.value
-        if kind == "number":
+        kind = param.kind
+        if kind is ParamKind.NUMBER:
             return self._number(spec, param, token, index, line)
-        if kind == "mask":
+        if kind is ParamKind.MASK:
             if not token.is_int or not _MASK.match(token.text):
                 self._error("param-mask", line, token.column, name=spec.name, index=index,
                             param=param.name, text=token.text[:20])
                 return None
             return int(token.text, 2)
-        if kind in ("program", "label"):
-            return self._reference(spec, param, token, index, line, "P" if kind == "program"
-                                   else "L")
-        if kind == "raw":
+        if kind is ParamKind.PROGRAM or kind is ParamKind.LABEL:
+            return self._reference(spec, param, token, index, line,
+                                   "P" if kind is ParamKind.PROGRAM else "L")
+        if kind is ParamKind.RAW:
             return self._raw(token, line)
         width = width_of(spec, param, values)
         if param.kind is ParamKind.ADDRESS or (
@@ -887,10 +886,9 @@ def _is_param_line(line: _Line) -> bool:
 
 def _table_size(spec: InstructionSpec, operands: list[_Token]) -> int | None:
     """Number of table entries, read from the parameter that gives it (None if unknown)."""
-    table = spec.table_param()
+    fixed, table = _fixed_and_table(spec)
     if table is None:
         return 0
-    fixed = spec.fixed_params()
     for index, param in enumerate(fixed):
         if param.name == table.length_of and index < len(operands):
             token = operands[index]
@@ -900,15 +898,22 @@ def _table_size(spec: InstructionSpec, operands: list[_Token]) -> int | None:
     return None
 
 
-def _shape(spec: InstructionSpec) -> tuple[int, Param | None]:
-    """The number of fixed parameters of a spec and its TABLE parameter (once per row)."""
+def _fixed_and_table(spec: InstructionSpec) -> tuple[tuple[Param, ...], Param | None]:
+    """A spec's fixed parameters and its TABLE parameter (found once per row)."""
     found = _SHAPES.get(id(spec))
     if found is None or found[0] is not spec:
-        found = _SHAPES[id(spec)] = (spec, len(spec.fixed_params()), spec.table_param())
+        found = _SHAPES[id(spec)] = (spec, spec.fixed_params(), spec.table_param())
     return found[1], found[2]
 
 
-_SHAPES: dict[int, tuple[InstructionSpec, int, Param | None]] = {}
+def _shape(spec: InstructionSpec) -> tuple[int, Param | None]:
+    """The number of fixed parameters of a spec and its TABLE parameter."""
+    fixed, table = _fixed_and_table(spec)
+    return len(fixed), table
+
+
+# by id(spec), holding the spec (so the id is not reused while the entry lives)
+_SHAPES: dict[int, tuple[InstructionSpec, tuple[Param, ...], Param | None]] = {}
 
 
 def _flow(spec: InstructionSpec) -> tuple[bool, bool]:
