@@ -22,7 +22,7 @@ from pathlib import Path
 CHECKOUT = Path(__file__).resolve().parent.parent
 PACKAGE = "ladderworks"
 IDE_SECONDS = 3
-_ICON_CALL = re.compile(r'\bicon\(\s*"(\w+)"\s*\)')
+_ICON_CALL = re.compile(r'\bicon(?:\(\s*|=)"([a-z]\w*)"')  # icon("name"), or icon="name" in a table
 
 TURKISH_MENUS = """
 import sys
@@ -47,11 +47,11 @@ class CheckFailed(Exception):
 def read_by_code() -> set[str]:
     """Package-relative names of the data files the code names one by one."""
     from ladderworks.core.signals import SIGNAL_FILES
+    from ladderworks.gui.editor.interactions import INTERACTIONS
     from ladderworks.gui.settings import LANGUAGES
-    from ladderworks.gui.tools import TOOL_ICONS
     from ladderworks.paths import HELP_PAGES, alarm_file, resources_dir
 
-    icons = set(TOOL_ICONS.values())
+    icons = {interaction.icon_name for interaction in INTERACTIONS}
     for source in (CHECKOUT / PACKAGE).rglob("*.py"):
         icons.update(_ICON_CALL.findall(source.read_text("utf-8")))
     names = {"core/il/grammar.lark",

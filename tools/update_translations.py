@@ -32,16 +32,28 @@ def unfinished(ts: Path) -> list[tuple[str, str]]:
 
 
 def fill(ts: Path, translations: dict[str, str]) -> int:
-    """Finish the unfinished entries whose source is in `translations`; returns how many."""
+    """Finish the unfinished entries whose source is in `translations`; returns how many.
+
+    A key `Context::source` is for that context only, and sets the entry even when it is
+    finished (lupdate fills a new entry from the same text in another context)."""
     tree = ET.parse(ts)
     done = 0
-    for message in tree.getroot().iter("message"):
-        node = message.find("translation")
-        source = message.findtext("source") or ""
-        if node is not None and node.get("type") == "unfinished" and source in translations:
-            node.text = translations[source]
-            del node.attrib["type"]
-            done += 1
+    for context in tree.getroot().iter("context"):
+        name = context.findtext("name") or ""
+        for message in context.iter("message"):
+            node = message.find("translation")
+            source = message.findtext("source") or ""
+            if node is None:
+                continue
+            qualified = translations.get(f"{name}::{source}")
+            if qualified is not None and node.text != qualified:
+                node.text = qualified
+                node.attrib.pop("type", None)
+                done += 1
+            elif node.get("type") == "unfinished" and source in translations:
+                node.text = translations[source]
+                del node.attrib["type"]
+                done += 1
     if done:
         tree.write(ts, encoding="utf-8", xml_declaration=True)
     return done
@@ -63,7 +75,8 @@ def main() -> int:
         ts = ROOT / "translations" / f"ladderworks_{language}.ts"
         command = [str(LUPDATE), "-silent", "-no-obsolete", *sources, "-ts", str(ts)]
         subprocess.run(command, check=True)
-        if pairs and fill(ts, pairs if language == "tr" else {k: k for k in pairs}):
+        english = {key: key.split("::", 1)[-1] for key in pairs}
+        if pairs and fill(ts, pairs if language == "tr" else english):
             subprocess.run(command, check=True)  # back to lupdate's own layout
         for context, source in unfinished(ts):
             print(f"{ts.name}: [{context}] {source}")

@@ -4,102 +4,102 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="107"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
         <source>Alarm message file</source>
         <translation>Alarm message file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="144"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm files (*.dat);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="149"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="151"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>The program&apos;s messages (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm file... uses an AlarmMsg.dat instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
         <source>No alarm file</source>
         <translation>No alarm file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="160"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} messages</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="162"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
         <source>{0} lines with problems</source>
         <translation>{0} lines with problems</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="189"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(no message {0} in the alarm file)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="223"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="243"/>
         <source>Alarm file...</source>
         <translation>Alarm file...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
         <source>PLC time</source>
         <translation>PLC time</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
         <source>Clock</source>
         <translation>Clock</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="250"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -180,6 +180,144 @@
         <location filename="../ladderworks/gui/docks/bit_display.py" line="333"/>
         <source>e.g. X12</source>
         <translation>e.g. X12</translation>
+    </message>
+</context>
+<context>
+    <name>CrossReference</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="60"/>
+        <source>Contact</source>
+        <translation>Contact</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="61"/>
+        <source>NOT contact</source>
+        <translation>NOT contact</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
+        <source>Coil</source>
+        <translation>Coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <source>NOT coil</source>
+        <translation>NOT coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <source>SET coil</source>
+        <translation>SET coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <source>RST coil</source>
+        <translation>RST coil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="75"/>
+        <source>Read</source>
+        <translation>Read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="77"/>
+        <source>Write</source>
+        <translation>Write</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <source>Read and write</source>
+        <translation>Read and write</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="84"/>
+        <source>Level {0}</source>
+        <translation>Level {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <source>Symbol</source>
+        <translation>Symbol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <source>Network</source>
+        <translation>Network</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <source>Label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
+        <source>Program part</source>
+        <translation>Program part</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <source>Element</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <source>Access</source>
+        <translation>Access</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <source>Comment</source>
+        <translation>Comment</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="239"/>
+        <source>All addresses — uses: {0}</source>
+        <translation>All addresses — uses: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="249"/>
+        <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
+        <translation>&apos;{0}&apos; is neither an address nor a symbol of the program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="260"/>
+        <source>{0} is not used in the program</source>
+        <translation>{0} is not used in the program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <source>{0} — uses: {1} (read: {2}, written: {3})</source>
+        <translation>{0} — uses: {1} (read: {2}, written: {3})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="281"/>
+        <source>Cross reference</source>
+        <translation>Cross reference</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="287"/>
+        <source>&amp;Address or symbol:</source>
+        <translation>&amp;Address or symbol:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="288"/>
+        <source>e.g. X21.7, R100, ESKIP</source>
+        <translation>e.g. X21.7, R100, ESKIP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="284"/>
+        <source>Cross &amp;reference of this address</source>
+        <translation>Cross &amp;reference of this address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="285"/>
+        <source>List every place the program reads and writes the address</source>
+        <translation>List every place the program reads and writes the address</translation>
     </message>
 </context>
 <context>
@@ -451,246 +589,261 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="121"/>
+        <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
+        <translation>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
+        <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
+        <translation>{found} and {replacement}: replace a bit with a bit, a byte with a byte</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <source>{found} would be replaced with itself</source>
+        <translation>{found} would be replaced with itself</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="122"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="130"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="125"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="127"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="158"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="172"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="196"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
@@ -698,100 +851,184 @@
 <context>
     <name>ErrorList</name>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="16"/>
+        <location filename="../ladderworks/gui/error_list.py" line="17"/>
         <source>network {0}, row {1}, column {2}</source>
         <translation>network {0}, row {1}, column {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="20"/>
+        <location filename="../ladderworks/gui/error_list.py" line="21"/>
         <source>network {0}</source>
         <translation>network {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="23"/>
+        <location filename="../ladderworks/gui/error_list.py" line="24"/>
         <source>line {0}, column {1}</source>
         <translation>line {0}, column {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="59"/>
+        <location filename="../ladderworks/gui/error_list.py" line="62"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="60"/>
+        <location filename="../ladderworks/gui/error_list.py" line="63"/>
         <source>Warning</source>
         <translation>Warning</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="74"/>
+        <location filename="../ladderworks/gui/error_list.py" line="77"/>
         <source>Errors</source>
         <translation>Errors</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="76"/>
+        <location filename="../ladderworks/gui/error_list.py" line="79"/>
         <source>Kind</source>
         <translation>Kind</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="77"/>
+        <location filename="../ladderworks/gui/error_list.py" line="80"/>
         <source>Where</source>
         <translation>Where</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="78"/>
+        <location filename="../ladderworks/gui/error_list.py" line="81"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
 </context>
 <context>
+    <name>FindReplace</name>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="158"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="219"/>
+        <source>Not found</source>
+        <translation>Not found</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="170"/>
+        <source>network {0}</source>
+        <translation>network {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="171"/>
+        <source>{0} of {1}: {2}, {3}</source>
+        <translation>{0} of {1}: {2}, {3}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="203"/>
+        <source>Replace {0} with {1}</source>
+        <translation>Replace {0} with {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="208"/>
+        <source>Replaced; no more found</source>
+        <translation>Replaced; no more found</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="224"/>
+        <source>Replace all {0} with {1}</source>
+        <translation>Replace all {0} with {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="225"/>
+        <source>{0} replaced in {1} networks</source>
+        <translation>{0} replaced in {1} networks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="233"/>
+        <source>Find and replace</source>
+        <translation>Find and replace</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="234"/>
+        <source>Find:</source>
+        <translation>Find:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="235"/>
+        <source>Replace with:</source>
+        <translation>Replace with:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="237"/>
+        <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
+        <translation>Address, symbol or words, e.g. X21.7, R100, ESKIP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="239"/>
+        <source>Address or symbol, e.g. R200</source>
+        <translation>Address or symbol, e.g. R200</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
+        <source>Find &amp;next</source>
+        <translation>Find &amp;next</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="241"/>
+        <source>&amp;Replace</source>
+        <translation>&amp;Replace</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="242"/>
+        <source>Replace &amp;all</source>
+        <translation>Replace &amp;all</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="243"/>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+</context>
+<context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
         <source>Forced and passive</source>
         <translation>Forced and passive</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
         <source>Kind</source>
         <translation>Kind</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
         <source>Signal / element</source>
         <translation>Signal / element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="64"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="65"/>
         <source>Release all</source>
         <translation>Release all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
         <source>FORCED</source>
         <translation>FORCED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="80"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>network {0}, line {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="80"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="82"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
         <source>Release</source>
         <translation>Release</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="94"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="96"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} forced, {1} passive</translation>
     </message>
@@ -799,87 +1036,87 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
         <source>one of {0}</source>
         <translation>one of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
         <source>{0} to {1}</source>
         <translation>{0} to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte address ({0} bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
         <source>byte address</source>
         <translation>byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
         <source>constant or byte address</source>
         <translation>constant or byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>up to 4 binary digits, e.g. 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
         <source>P{0} to P{1}</source>
         <translation>P{0} to P{1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
         <source>L{0} to L{1}</source>
         <translation>L{0} to L{1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
         <source>constant or address, kept as written</source>
         <translation>constant or address, kept as written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
         <source>values separated by spaces</source>
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="152"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="155"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
         <source>This instruction has no parameters.</source>
         <translation>This instruction has no parameters.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="157"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="160"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="161"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="161"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="162"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="162"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="163"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="196"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="197"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -887,17 +1124,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="124"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="138"/>
         <source>No reference entry for this instruction.</source>
         <translation>No reference entry for this instruction.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="136"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="150"/>
         <source>Instruction reference</source>
         <translation>Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="151"/>
         <source>Search, e.g. TMR</source>
         <translation>Search, e.g. TMR</translation>
     </message>
@@ -905,500 +1142,635 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="399"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="438"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="717"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="101"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="219"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="250"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="410"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="336"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="414"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="699"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="711"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="207"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="214"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="353"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="423"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="728"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="737"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="230"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="236"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="387"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="443"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="104"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="435"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="445"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="454"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="114"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="459"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="118"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="470"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="296"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="480"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="303"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="515"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="164"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="519"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="523"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="166"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="529"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="565"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="635"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="656"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="173"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="63"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="132"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="150"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="362"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="84"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="127"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="554"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="629"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="129"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="755"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="247"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="767"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="259"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="776"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="267"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="867"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="67"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/symbol_text.py" line="84"/>
+        <source>open circuit here: draw a wire or an element</source>
+        <translation>open circuit here: draw a wire or an element</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="68"/>
+        <source>N{0}</source>
+        <translation>N{0}</translation>
     </message>
 </context>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="70"/>
         <source>&amp;New</source>
         <translation>&amp;New</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="147"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="72"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="148"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="74"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="151"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="76"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="157"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="78"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="80"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="167"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="172"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;properties...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="185"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="91"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="186"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="94"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="96"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="192"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="103"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="197"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="105"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="204"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="211"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="110"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="218"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="223"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="225"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="118"/>
+        <source>&amp;Find...</source>
+        <translation>&amp;Find...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="120"/>
+        <source>R&amp;eplace...</source>
+        <translation>R&amp;eplace...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="122"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="226"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="229"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="128"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="235"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
+        <source>Fit &amp;width</source>
+        <translation>Fit &amp;width</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="133"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="248"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="139"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="257"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="147"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="261"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="149"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="298"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="55"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="302"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="56"/>
         <source>Recent files</source>
         <translation>Recent files</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="321"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="58"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="341"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="59"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="362"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="60"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="366"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="61"/>
         <source>&amp;Tools</source>
         <translation>&amp;Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="372"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="62"/>
         <source>&amp;Language</source>
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="377"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="63"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="382"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="66"/>
         <source>Main toolbar</source>
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="622"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <source>Zoom</source>
+        <translation>Zoom</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="377"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="628"/>
+        <location filename="../ladderworks/gui/main_window.py" line="383"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="633"/>
+        <location filename="../ladderworks/gui/main_window.py" line="388"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="486"/>
-        <location filename="../ladderworks/gui/main_window.py" line="629"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/main_window.py" line="244"/>
+        <location filename="../ladderworks/gui/main_window.py" line="384"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="119"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="109"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
         <source>{0} was changed by another program</source>
         <translation>{0} was changed by another program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="149"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="167"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="209"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="212"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</source>
         <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="335"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="460"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="314"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="315"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="319"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="320"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="587"/>
+        <location filename="../ladderworks/gui/main_window.py" line="347"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="606"/>
+        <location filename="../ladderworks/gui/main_window.py" line="363"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="652"/>
+        <location filename="../ladderworks/gui/main_window.py" line="414"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="655"/>
+        <location filename="../ladderworks/gui/main_window.py" line="417"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="687"/>
+        <location filename="../ladderworks/gui/main_window.py" line="449"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="688"/>
+        <location filename="../ladderworks/gui/main_window.py" line="450"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
+    </message>
+</context>
+<context>
+    <name>NameDisplayMenu</name>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="22"/>
+        <source>&amp;Address only</source>
+        <translation>&amp;Address only</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="24"/>
+        <source>Address and &amp;symbol</source>
+        <translation>Address and &amp;symbol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="25"/>
+        <source>Address, symbol and &amp;comment</source>
+        <translation>Address, symbol and &amp;comment</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="71"/>
+        <source>Element &amp;names</source>
+        <translation>Element &amp;names</translation>
+    </message>
+</context>
+<context>
+    <name>Numbers</name>
+    <message>
+        <location filename="../ladderworks/gui/locale_numbers.py" line="18"/>
+        <source>{0}%</source>
+        <translation>{0}%</translation>
+    </message>
+</context>
+<context>
+    <name>OsError</name>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="16"/>
+        <source>it does not exist</source>
+        <translation>it does not exist</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="17"/>
+        <location filename="../ladderworks/gui/os_errors.py" line="18"/>
+        <source>permission denied</source>
+        <translation>permission denied</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="19"/>
+        <source>the disk is read-only</source>
+        <translation>the disk is read-only</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="20"/>
+        <source>the disk is full</source>
+        <translation>the disk is full</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="21"/>
+        <source>the disk quota is used up</source>
+        <translation>the disk quota is used up</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="22"/>
+        <source>it is a folder</source>
+        <translation>it is a folder</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="23"/>
+        <source>a part of the path is not a folder</source>
+        <translation>a part of the path is not a folder</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="24"/>
+        <source>it already exists</source>
+        <translation>it already exists</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="25"/>
+        <source>the name is too long</source>
+        <translation>the name is too long</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="26"/>
+        <location filename="../ladderworks/gui/os_errors.py" line="27"/>
+        <source>it is in use</source>
+        <translation>it is in use</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="28"/>
+        <source>the disk reported an input/output error</source>
+        <translation>the disk reported an input/output error</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="29"/>
+        <source>too many symbolic links</source>
+        <translation>too many symbolic links</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="30"/>
+        <source>too many files are open</source>
+        <translation>too many files are open</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="36"/>
+        <source>system error: {0}</source>
+        <translation>system error: {0}</translation>
     </message>
 </context>
 <context>
@@ -1612,222 +1984,222 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="132"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC CONTROL SCREEN</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="129"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="134"/>
         <source>Open .MOD…</source>
         <translation>Open .MOD…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="135"/>
         <source>Take the console&apos;s program</source>
         <translation>Take the console&apos;s program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="136"/>
         <source>Compile</source>
         <translation>Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="132"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="137"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="138"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="161"/>
         <source>Program loaded from the console</source>
         <translation>Program loaded from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="165"/>
         <source>In the PLC: {0}</source>
         <translation>In the PLC: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="174"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="172"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
         <source>Opened {0}</source>
         <translation>Opened {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="178"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="185"/>
         <source>Open mnemonic program</source>
         <translation>Open mnemonic program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="194"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>The console&apos;s program cannot be coded: see the error list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="198"/>
         <source>Program taken from the console</source>
         <translation>Program taken from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="233"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Compile failed: {0} error(s). {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="245"/>
         <source>Converting…</source>
         <translation>Converting…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="261"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="269"/>
         <source>the program on this screen</source>
         <translation>the program on this screen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="273"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Compile finished — {0} networks, {1} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="276"/>
         <source>({0} warning(s))</source>
         <translation>({0} warning(s))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="279"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="287"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="294"/>
         <source>Compile a program first</source>
         <translation>Compile a program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="307"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="315"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="318"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="321"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="316"/>
-        <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
-        <translation>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="324"/>
+        <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
+        <translation>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>
 </context>
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="179"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="165"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="180"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="166"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="181"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="167"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="182"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="183"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="184"/>
         <source>Why?</source>
         <translation>Why?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="185"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="173"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="188"/>
         <source>Back to live</source>
         <translation>Back to live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="189"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="233"/>
         <location filename="../ladderworks/gui/docks/online.py" line="141"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="224"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="239"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="241"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="228"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="243"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="284"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="328"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="338"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="347"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="98"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
@@ -2009,7 +2381,7 @@
         <translation>Address (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="58"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="57"/>
         <location filename="../ladderworks/gui/docks/tables.py" line="229"/>
         <source>INSERT</source>
         <translation>INSERT</translation>
@@ -2061,228 +2433,332 @@
     </message>
 </context>
 <context>
-    <name>ProgramProperties</name>
+    <name>Print</name>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="28"/>
-        <source>Machine-tool builder</source>
-        <translation>Machine-tool builder</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="43"/>
+        <source>Untitled</source>
+        <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="29"/>
-        <source>Machine-tool name</source>
-        <translation>Machine-tool name</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="68"/>
+        <source>Printing the ladder…</source>
+        <translation>Printing the ladder…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="30"/>
-        <source>PMC &amp; NC type</source>
-        <translation>PMC &amp; NC type</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="69"/>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
-        <source>Program number</source>
-        <translation>Program number</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="147"/>
+        <source>Export PDF</source>
+        <translation>Export PDF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
-        <source>Edition</source>
-        <translation>Edition</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="148"/>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF files (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
-        <source>Drawing number</source>
-        <translation>Drawing number</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="156"/>
+        <source>&amp;Print...</source>
+        <translation>&amp;Print...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
-        <source>Date</source>
-        <translation>Date</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="157"/>
+        <source>Export P&amp;DF...</source>
+        <translation>Export P&amp;DF...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
-        <source>Designed by</source>
-        <translation>Designed by</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="163"/>
+        <source>Printing was cancelled or failed</source>
+        <translation>Printing was cancelled or failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
-        <source>ROM written by</source>
-        <translation>ROM written by</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="165"/>
+        <source>{0} pages written to {1}</source>
+        <translation>{0} pages written to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
-        <source>Remarks</source>
-        <translation>Remarks</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="167"/>
+        <source>{0} pages sent to the printer</source>
+        <translation>{0} pages sent to the printer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
-        <source>FANUC LADDER-III export</source>
-        <translation>FANUC LADDER-III export</translation>
+        <location filename="../ladderworks/gui/print_pages.py" line="258"/>
+        <source>Page {0} / {1}</source>
+        <translation>Page {0} / {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
-        <source>LadderWorks (seed manual)</source>
-        <translation>LadderWorks (seed manual)</translation>
+        <location filename="../ladderworks/gui/print_pages.py" line="284"/>
+        <source>Cross reference</source>
+        <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
-        <source>yes</source>
-        <translation>yes</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
-        <source>no</source>
-        <translation>no</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="62"/>
-        <source>File</source>
-        <translation>File</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="63"/>
-        <source>(not saved)</source>
-        <translation>(not saved)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="64"/>
-        <source>Dialect</source>
-        <translation>Dialect</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
-        <source>Encoding</source>
-        <translation>Encoding</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="66"/>
-        <source>Byte order mark</source>
-        <translation>Byte order mark</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="67"/>
-        <source>Line ends</source>
-        <translation>Line ends</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
-        <source>Framed in %@A … %@E</source>
-        <translation>Framed in %@A … %@E</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
-        <source>Networks</source>
-        <translation>Networks</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
-        <source>Steps</source>
-        <translation>Steps</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="72"/>
-        <source>Symbols (%@2)</source>
-        <translation>Symbols (%@2)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="74"/>
-        <source>Messages (%@4)</source>
-        <translation>Messages (%@4)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="115"/>
-        <source>Program properties</source>
-        <translation>Program properties</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="120"/>
-        <source>General</source>
-        <translation>General</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="121"/>
-        <source>Property</source>
-        <translation>Property</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="122"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
-        <source>Value</source>
-        <translation>Value</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="124"/>
-        <source>Title (%@1)</source>
-        <translation>Title (%@1)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
-        <source>Item</source>
-        <translation>Item</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
-        <source>Meaning</source>
-        <translation>Meaning</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="126"/>
-        <source>Text</source>
-        <translation>Text</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="128"/>
-        <source>System parameters (%@0)</source>
-        <translation>System parameters (%@0)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="131"/>
-        <source>I/O modules (%@5)</source>
-        <translation>I/O modules (%@5)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="287"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="288"/>
+        <source>Symbol</source>
+        <translation>Symbol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="289"/>
+        <source>Written in networks</source>
+        <translation>Written in networks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="290"/>
+        <source>Read in networks</source>
+        <translation>Read in networks</translation>
+    </message>
+</context>
+<context>
+    <name>ProgramProperties</name>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="29"/>
+        <source>Machine-tool builder</source>
+        <translation>Machine-tool builder</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="30"/>
+        <source>Machine-tool name</source>
+        <translation>Machine-tool name</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
+        <source>PMC &amp; NC type</source>
+        <translation>PMC &amp; NC type</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
+        <source>Program number</source>
+        <translation>Program number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
+        <source>Edition</source>
+        <translation>Edition</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
+        <source>Drawing number</source>
+        <translation>Drawing number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
+        <source>Date</source>
+        <translation>Date</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
+        <source>Designed by</source>
+        <translation>Designed by</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
+        <source>ROM written by</source>
+        <translation>ROM written by</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="38"/>
+        <source>Remarks</source>
+        <translation>Remarks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
+        <source>FANUC LADDER-III export</source>
+        <translation>FANUC LADDER-III export</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
+        <source>LadderWorks (seed manual)</source>
+        <translation>LadderWorks (seed manual)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
+        <source>yes</source>
+        <translation>yes</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="63"/>
+        <source>File</source>
+        <translation>File</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="64"/>
+        <source>(not saved)</source>
+        <translation>(not saved)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
+        <source>Dialect</source>
+        <translation>Dialect</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="66"/>
+        <source>Encoding</source>
+        <translation>Encoding</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="67"/>
+        <source>Byte order mark</source>
+        <translation>Byte order mark</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
+        <source>Line ends</source>
+        <translation>Line ends</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
+        <source>Framed in %@A … %@E</source>
+        <translation>Framed in %@A … %@E</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
+        <source>Networks</source>
+        <translation>Networks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="71"/>
+        <source>Steps</source>
+        <translation>Steps</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="73"/>
+        <source>Symbols (%@2)</source>
+        <translation>Symbols (%@2)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="75"/>
+        <source>Messages (%@4)</source>
+        <translation>Messages (%@4)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="136"/>
+        <source>Program properties</source>
+        <translation>Program properties</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="144"/>
+        <source>General</source>
+        <translation>General</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="145"/>
+        <source>Property</source>
+        <translation>Property</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="146"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
+        <source>Value</source>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="148"/>
+        <source>Title (%@1)</source>
+        <translation>Title (%@1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
+        <source>Item</source>
+        <translation>Item</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <source>Meaning</source>
+        <translation>Meaning</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
+        <source>Text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="152"/>
+        <source>System parameters (%@0)</source>
+        <translation>System parameters (%@0)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="155"/>
+        <source>I/O modules (%@5)</source>
+        <translation>I/O modules (%@5)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="156"/>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="156"/>
         <source>Group</source>
         <translation>Group</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
         <source>Base</source>
         <translation>Base</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
         <source>Slot</source>
         <translation>Slot</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="134"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
         <source>Module</source>
         <translation>Module</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="137"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="161"/>
         <source>Sections</source>
         <translation>Sections</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
         <source>Header</source>
         <translation>Header</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
         <source>Lines</source>
         <translation>Lines</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="139"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
         <source>First line</source>
         <translation>First line</translation>
+    </message>
+</context>
+<context>
+    <name>QFileDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="11"/>
+        <source>&amp;Look in:</source>
+        <translation>&amp;Look in:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="12"/>
+        <source>Files of &amp;type:</source>
+        <translation>Files of &amp;type:</translation>
+    </message>
+</context>
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="13"/>
+        <source>Discard</source>
+        <translation>Discard</translation>
     </message>
 </context>
 <context>
@@ -2394,6 +2870,14 @@
         <location filename="../ladderworks/gui/questions.py" line="91"/>
         <source>Reload now</source>
         <translation>Reload now</translation>
+    </message>
+</context>
+<context>
+    <name>Recovery</name>
+    <message>
+        <location filename="../ladderworks/gui/recovery.py" line="182"/>
+        <source>Cannot write the recovery copy in {0}: {1}</source>
+        <translation>Cannot write the recovery copy in {0}: {1}</translation>
     </message>
 </context>
 <context>
@@ -2518,52 +3002,52 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="158"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
         <source>{0} signals</source>
         <translation>{0} signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
         <source>Signals</source>
         <translation>Signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="171"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="173"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
         <source>English</source>
         <translation>English</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="106"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="108"/>
         <source>program symbol</source>
         <translation>program symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="162"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program symbols, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Address, symbol, name or words, e.g. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
         <source>Turkish</source>
         <translation>Turkish</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Double-click: use the address for the contact or coil at the cursor</translation>
     </message>
@@ -2571,152 +3055,152 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="156"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="176"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="181"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="188"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="200"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="205"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="213"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="346"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="334"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="360"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="338"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="346"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="372"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="370"/>
         <source>Cannot write {0}</source>
         <translation>Cannot write {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="353"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="379"/>
         <source>Export time chart as CSV</source>
         <translation>Export time chart as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="355"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
         <source>Export time chart as PNG</source>
         <translation>Export time chart as PNG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="366"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="429"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="434"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="402"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="446"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="449"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="451"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="77"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="78"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
@@ -2752,152 +3236,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="96"/>
         <source>Select</source>
         <translation>Select</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="156"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="171"/>
         <source>NOT input</source>
         <translation>NOT input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="185"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="199"/>
         <source>NOT output</source>
         <translation>NOT output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="213"/>
         <source>SET coil</source>
         <translation>SET coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="228"/>
         <source>RST coil</source>
         <translation>RST coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="93"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="243"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="94"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="259"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="95"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="283"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="96"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="322"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="97"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="346"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="362"/>
         <source>Function</source>
         <translation>Function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="99"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="380"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="397"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="97"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Click an element or drag over cells to select; right-click: cut, copy, paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="157"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="172"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="186"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="200"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="214"/>
         <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
         <translation>Click a cell to place a SET coil (bit := 1 while the logic is 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="120"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="229"/>
         <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
         <translation>Click a cell to place an RST coil (bit := 0 while the logic is 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="122"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="244"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Click a contact or coil to turn it into its inverse</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="124"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="260"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="126"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="284"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="128"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="323"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Click the start of an empty row, type the comment, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="347"/>
         <source>Click an element to delete it</source>
         <translation>Click an element to delete it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="131"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="363"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Choose a function in the list, click the diagram, fill its table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="133"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="381"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Click a cell to insert an empty row before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="398"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Click a cell to insert an empty row after it</translation>
     </message>
@@ -2905,22 +3389,22 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="101"/>
+        <location filename="../ladderworks/gui/palette.py" line="106"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="102"/>
+        <location filename="../ladderworks/gui/palette.py" line="107"/>
         <source>Function:</source>
         <translation>Function:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="103"/>
+        <location filename="../ladderworks/gui/palette.py" line="108"/>
         <source>Seed manual instructions</source>
         <translation>Seed manual instructions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="104"/>
+        <location filename="../ladderworks/gui/palette.py" line="109"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC instructions</translation>
     </message>
@@ -2928,42 +3412,42 @@
 <context>
     <name>TraceFiles</name>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="48"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="49"/>
         <source>LADDER-III...</source>
         <translation>LADDER-III...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="50"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
         <source>Export the samples as a LADDER-III signal-trace result</source>
         <translation>Export the samples as a LADDER-III signal-trace result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="52"/>
         <source>Import...</source>
         <translation>Import...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="53"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="54"/>
         <source>Show a LADDER-III trace result or a CSV trace</source>
         <translation>Show a LADDER-III trace result or a CSV trace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="83"/>
         <source>{0}, line {1}: not a trace file</source>
         <translation>{0}, line {1}: not a trace file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="90"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="91"/>
         <source>Imported {0}: {1} samples</source>
         <translation>Imported {0}: {1} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
         <source>Export as LADDER-III trace result</source>
         <translation>Export as LADDER-III trace result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="116"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
         <source>Import a trace</source>
         <translation>Import a trace</translation>
     </message>

@@ -4,102 +4,102 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="107"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
         <source>Alarm message file</source>
         <translation>Alarm mesaj dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="144"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm dosyaları (*.dat);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="149"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="151"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>Programın mesajları (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm dosyası... bunun yerine bir AlarmMsg.dat kullanır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
         <source>No alarm file</source>
         <translation>Alarm dosyası yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="160"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} mesaj</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="162"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
         <source>{0} lines with problems</source>
         <translation>{0} satırda sorun var</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="189"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(alarm dosyasında {0} numaralı mesaj yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="223"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>Bit yeniden 0: RESET bu alarmı siler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
         <source>Alarms</source>
         <translation>ALARMLAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="243"/>
         <source>Alarm file...</source>
         <translation>Alarm dosyası...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
         <source>PLC time</source>
         <translation>PLC zamanı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
         <source>Clock</source>
         <translation>Saat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="250"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
@@ -180,6 +180,144 @@
         <location filename="../ladderworks/gui/docks/bit_display.py" line="333"/>
         <source>e.g. X12</source>
         <translation>örn. X12</translation>
+    </message>
+</context>
+<context>
+    <name>CrossReference</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="60"/>
+        <source>Contact</source>
+        <translation>Kontak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="61"/>
+        <source>NOT contact</source>
+        <translation>DEĞİL kontak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
+        <source>Coil</source>
+        <translation>Çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <source>NOT coil</source>
+        <translation>DEĞİL çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <source>SET coil</source>
+        <translation>SET çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <source>RST coil</source>
+        <translation>RST çıkış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="75"/>
+        <source>Read</source>
+        <translation>Okuma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="77"/>
+        <source>Write</source>
+        <translation>Yazma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <source>Read and write</source>
+        <translation>Okuma ve yazma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="84"/>
+        <source>Level {0}</source>
+        <translation>{0}. seviye</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <source>Symbol</source>
+        <translation>Sembol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <source>Network</source>
+        <translation>Devre</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <source>Label</source>
+        <translation>Etiket</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
+        <source>Program part</source>
+        <translation>Program bölümü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <source>Element</source>
+        <translation>Eleman</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <source>Access</source>
+        <translation>Erişim</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <source>Comment</source>
+        <translation>Yorum</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="239"/>
+        <source>All addresses — uses: {0}</source>
+        <translation>Tüm adresler — kullanım: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="249"/>
+        <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
+        <translation>&apos;{0}&apos; ne bir adres ne de programın bir sembolü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="260"/>
+        <source>{0} is not used in the program</source>
+        <translation>{0} programda kullanılmıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <source>{0} — uses: {1} (read: {2}, written: {3})</source>
+        <translation>{0} — kullanım: {1} (okuma: {2}, yazma: {3})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="281"/>
+        <source>Cross reference</source>
+        <translation>Çapraz referans</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="287"/>
+        <source>&amp;Address or symbol:</source>
+        <translation>&amp;Adres veya sembol:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="288"/>
+        <source>e.g. X21.7, R100, ESKIP</source>
+        <translation>örn. X21.7, R100, ESKIP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="284"/>
+        <source>Cross &amp;reference of this address</source>
+        <translation>Bu adresin çapraz &amp;referansı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="285"/>
+        <source>List every place the program reads and writes the address</source>
+        <translation>Programın adresi okuduğu ve yazdığı her yeri listeler</translation>
     </message>
 </context>
 <context>
@@ -451,246 +589,261 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="121"/>
+        <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
+        <translation>&apos;{text}&apos; programın bir adresi veya sembolü değil: değiştirmek için bir adres veya sembol yazın</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
+        <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
+        <translation>{found} ve {replacement}: bit ile bit, bayt ile bayt değiştirilir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <source>{found} would be replaced with itself</source>
+        <translation>{found} kendisiyle değiştirilmiş olur</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="122"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="130"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="125"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>JMP without a matching JMPE</source>
         <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
         <source>JMPE without a JMP before it</source>
         <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="127"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>COM without a matching COME</source>
         <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>COME without a COM before it</source>
         <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>coil {address} is written more than once</source>
         <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {line}. satırda)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>JMP veya COM aralığı içinde LBL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde LBL L{label} yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>L{label} etiketi bu program biriminde iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC yalnızca bir alt program içinde kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
         <source>subprogram P{program} does not exist</source>
         <translation>P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>burada P{program} çağrısı bir alt programın kendini çağırmasına yol açıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>P{program} üzerinden çağrılar {limit} alt programdan daha derine iniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
         <source>SP without a matching SPE</source>
         <translation>eşleşen SPE olmadan SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>SPE without an SP before it</source>
         <translation>önünde SP olmayan SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="158"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>P{program} alt programı iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>ilk SP&apos;den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} {level}. seviyeyi bitiremez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>instruction after END, the end of the program</source>
         <translation>program sonu END&apos;den sonra komut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>L{label} etiketine geri atlama bir taramada {limit} kereden fazla tekrarlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="172"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="196"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
@@ -698,100 +851,184 @@
 <context>
     <name>ErrorList</name>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="16"/>
+        <location filename="../ladderworks/gui/error_list.py" line="17"/>
         <source>network {0}, row {1}, column {2}</source>
         <translation>devre {0}, satır {1}, sütun {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="20"/>
+        <location filename="../ladderworks/gui/error_list.py" line="21"/>
         <source>network {0}</source>
         <translation>devre {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="23"/>
+        <location filename="../ladderworks/gui/error_list.py" line="24"/>
         <source>line {0}, column {1}</source>
         <translation>satır {0}, sütun {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="59"/>
+        <location filename="../ladderworks/gui/error_list.py" line="62"/>
         <source>Error</source>
         <translation>Hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="60"/>
+        <location filename="../ladderworks/gui/error_list.py" line="63"/>
         <source>Warning</source>
         <translation>Uyarı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="74"/>
+        <location filename="../ladderworks/gui/error_list.py" line="77"/>
         <source>Errors</source>
         <translation>Hatalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="76"/>
+        <location filename="../ladderworks/gui/error_list.py" line="79"/>
         <source>Kind</source>
         <translation>Tür</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="77"/>
+        <location filename="../ladderworks/gui/error_list.py" line="80"/>
         <source>Where</source>
         <translation>Yer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="78"/>
+        <location filename="../ladderworks/gui/error_list.py" line="81"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
 </context>
 <context>
+    <name>FindReplace</name>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="158"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="219"/>
+        <source>Not found</source>
+        <translation>Bulunamadı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="170"/>
+        <source>network {0}</source>
+        <translation>devre {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="171"/>
+        <source>{0} of {1}: {2}, {3}</source>
+        <translation>{0} / {1}: {2}, {3}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="203"/>
+        <source>Replace {0} with {1}</source>
+        <translation>{0} yerine {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="208"/>
+        <source>Replaced; no more found</source>
+        <translation>Değiştirildi; başka bulunamadı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="224"/>
+        <source>Replace all {0} with {1}</source>
+        <translation>Tüm {0} yerine {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="225"/>
+        <source>{0} replaced in {1} networks</source>
+        <translation>{1} devrede {0} yer değiştirildi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="233"/>
+        <source>Find and replace</source>
+        <translation>Bul ve değiştir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="234"/>
+        <source>Find:</source>
+        <translation>Bul:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="235"/>
+        <source>Replace with:</source>
+        <translation>Yerine:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="237"/>
+        <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
+        <translation>Adres, sembol veya sözcükler, örn. X21.7, R100, ESKIP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="239"/>
+        <source>Address or symbol, e.g. R200</source>
+        <translation>Adres veya sembol, örn. R200</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
+        <source>Find &amp;next</source>
+        <translation>&amp;Sonrakini bul</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="241"/>
+        <source>&amp;Replace</source>
+        <translation>&amp;Değiştir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="242"/>
+        <source>Replace &amp;all</source>
+        <translation>&amp;Tümünü değiştir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="243"/>
+        <source>Close</source>
+        <translation>Kapat</translation>
+    </message>
+</context>
+<context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
         <source>Forced and passive</source>
         <translation>Zorlananlar ve pasifler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
         <source>Kind</source>
         <translation>Tür</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
         <source>Signal / element</source>
         <translation>Sinyal / eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="64"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="65"/>
         <source>Release all</source>
         <translation>Hepsini bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
         <source>FORCED</source>
         <translation>ZORLANMIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="80"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>devre {0}, satır {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="80"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="82"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
         <source>Release</source>
         <translation>Bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="94"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="96"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} zorlanmış, {1} pasif</translation>
     </message>
@@ -799,87 +1036,87 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="33"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
         <source>one of {0}</source>
         <translation>şunlardan biri: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="35"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
         <source>{0} to {1}</source>
         <translation>{0} ile {1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte adresi ({0} byte)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="41"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
         <source>byte address</source>
         <translation>byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="43"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
         <source>constant or byte address</source>
         <translation>sabit veya byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="45"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>en çok 4 ikili hane, örneğin 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
         <source>P{0} to P{1}</source>
         <translation>P{0} ile P{1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="50"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
         <source>L{0} to L{1}</source>
         <translation>L{0} ile L{1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
         <source>constant or address, kept as written</source>
         <translation>sabit veya adres, yazıldığı gibi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
         <source>values separated by spaces</source>
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="152"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="155"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
         <source>This instruction has no parameters.</source>
         <translation>Bu komutun parametresi yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="157"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="160"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="161"/>
         <source>Parameter</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="161"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="162"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="162"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="163"/>
         <source>Allowed</source>
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="196"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="197"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
     </message>
@@ -887,17 +1124,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="124"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="138"/>
         <source>No reference entry for this instruction.</source>
         <translation>Bu komut için başvuru kaydı yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="136"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="150"/>
         <source>Instruction reference</source>
         <translation>Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="137"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="151"/>
         <source>Search, e.g. TMR</source>
         <translation>Ara, örn. TMR</translation>
     </message>
@@ -905,500 +1142,635 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="399"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="438"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="717"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="101"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="219"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="250"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="410"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="336"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="414"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="699"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="711"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="207"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="214"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="353"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="423"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="728"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="737"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="230"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="236"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="387"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="443"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="104"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="435"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="445"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="454"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="114"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="459"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="118"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="470"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="296"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="480"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="303"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="515"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="164"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="519"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="523"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="166"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="529"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="565"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="635"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="656"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="173"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="63"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="132"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="150"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="362"/>
-        <location filename="../ladderworks/gui/editor/view.py" line="625"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="84"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="127"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="554"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="629"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="129"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="755"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="247"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="767"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="259"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="776"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="267"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/view.py" line="867"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="67"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/symbol_text.py" line="84"/>
+        <source>open circuit here: draw a wire or an element</source>
+        <translation>devre burada açık: bir çizgi veya bir eleman çizin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="68"/>
+        <source>N{0}</source>
+        <translation>D{0}</translation>
     </message>
 </context>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="146"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="70"/>
         <source>&amp;New</source>
         <translation>&amp;Yeni</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="147"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="72"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="148"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="74"/>
         <source>&amp;Save</source>
         <translation>&amp;Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="151"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="76"/>
         <source>Save &amp;As...</source>
         <translation>&amp;Farklı kaydet...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="157"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="78"/>
         <source>&amp;Import .MOD...</source>
         <translation>.MOD &amp;içe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="162"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="80"/>
         <source>&amp;Export .MOD...</source>
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="167"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="172"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;özellikleri...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="175"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="185"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="91"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="186"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="94"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="187"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="96"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="192"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="103"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="197"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="105"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="204"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="211"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="110"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="218"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="223"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="225"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="118"/>
+        <source>&amp;Find...</source>
+        <translation>&amp;Bul...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="120"/>
+        <source>R&amp;eplace...</source>
+        <translation>&amp;Değiştir...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="122"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="226"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="229"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="128"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="235"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
+        <source>Fit &amp;width</source>
+        <translation>&amp;Genişliğe sığdır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="133"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="241"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="245"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="248"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="139"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="257"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="147"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="261"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="149"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="298"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="55"/>
         <source>&amp;File</source>
         <translation>&amp;Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="302"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="56"/>
         <source>Recent files</source>
         <translation>Son dosyalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="321"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="58"/>
         <source>&amp;Edit</source>
         <translation>Dü&amp;zen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="341"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="59"/>
         <source>&amp;View</source>
         <translation>&amp;Görünüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="362"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="60"/>
         <source>&amp;PLC</source>
         <translation>&amp;PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="366"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="61"/>
         <source>&amp;Tools</source>
         <translation>&amp;Araçlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="372"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="62"/>
         <source>&amp;Language</source>
         <translation>D&amp;il</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="377"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="63"/>
         <source>&amp;Help</source>
         <translation>&amp;Yardım</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="382"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="66"/>
         <source>Main toolbar</source>
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="622"/>
+        <location filename="../ladderworks/gui/main_window.py" line="180"/>
+        <source>Zoom</source>
+        <translation>Yakınlaştırma</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="377"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="628"/>
+        <location filename="../ladderworks/gui/main_window.py" line="383"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="633"/>
+        <location filename="../ladderworks/gui/main_window.py" line="388"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="486"/>
-        <location filename="../ladderworks/gui/main_window.py" line="629"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/main_window.py" line="244"/>
+        <location filename="../ladderworks/gui/main_window.py" line="384"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="119"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="109"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="149"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="167"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="209"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="212"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</source>
         <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="335"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="460"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="314"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="315"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="319"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="320"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="587"/>
+        <location filename="../ladderworks/gui/main_window.py" line="347"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="606"/>
+        <location filename="../ladderworks/gui/main_window.py" line="363"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="652"/>
+        <location filename="../ladderworks/gui/main_window.py" line="414"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="655"/>
+        <location filename="../ladderworks/gui/main_window.py" line="417"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="687"/>
+        <location filename="../ladderworks/gui/main_window.py" line="449"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="688"/>
+        <location filename="../ladderworks/gui/main_window.py" line="450"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
+    </message>
+</context>
+<context>
+    <name>NameDisplayMenu</name>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="22"/>
+        <source>&amp;Address only</source>
+        <translation>Yalnız &amp;adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="24"/>
+        <source>Address and &amp;symbol</source>
+        <translation>Adres ve &amp;sembol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="25"/>
+        <source>Address, symbol and &amp;comment</source>
+        <translation>Adres, sembol ve &amp;yorum</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/name_menu.py" line="71"/>
+        <source>Element &amp;names</source>
+        <translation>Eleman &amp;adları</translation>
+    </message>
+</context>
+<context>
+    <name>Numbers</name>
+    <message>
+        <location filename="../ladderworks/gui/locale_numbers.py" line="18"/>
+        <source>{0}%</source>
+        <translation>%{0}</translation>
+    </message>
+</context>
+<context>
+    <name>OsError</name>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="16"/>
+        <source>it does not exist</source>
+        <translation>böyle bir dosya veya klasör yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="17"/>
+        <location filename="../ladderworks/gui/os_errors.py" line="18"/>
+        <source>permission denied</source>
+        <translation>erişim izni yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="19"/>
+        <source>the disk is read-only</source>
+        <translation>disk salt okunur</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="20"/>
+        <source>the disk is full</source>
+        <translation>disk dolu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="21"/>
+        <source>the disk quota is used up</source>
+        <translation>disk kotası doldu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="22"/>
+        <source>it is a folder</source>
+        <translation>bu bir klasör</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="23"/>
+        <source>a part of the path is not a folder</source>
+        <translation>yolun bir parçası klasör değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="24"/>
+        <source>it already exists</source>
+        <translation>zaten var</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="25"/>
+        <source>the name is too long</source>
+        <translation>ad çok uzun</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="26"/>
+        <location filename="../ladderworks/gui/os_errors.py" line="27"/>
+        <source>it is in use</source>
+        <translation>kullanımda</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="28"/>
+        <source>the disk reported an input/output error</source>
+        <translation>disk bir giriş/çıkış hatası bildirdi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="29"/>
+        <source>too many symbolic links</source>
+        <translation>çok fazla sembolik bağlantı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="30"/>
+        <source>too many files are open</source>
+        <translation>çok fazla dosya açık</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/os_errors.py" line="36"/>
+        <source>system error: {0}</source>
+        <translation>sistem hatası: {0}</translation>
     </message>
 </context>
 <context>
@@ -1612,222 +1984,222 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="132"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC KONTROL EKRANI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="129"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="134"/>
         <source>Open .MOD…</source>
         <translation>.MOD aç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="135"/>
         <source>Take the console&apos;s program</source>
         <translation>Konsoldaki programı al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="136"/>
         <source>Compile</source>
         <translation>Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="132"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="137"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="138"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="161"/>
         <source>Program loaded from the console</source>
         <translation>Program konsoldan yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="165"/>
         <source>In the PLC: {0}</source>
         <translation>PLC&apos;deki program: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="174"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="172"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
         <source>Opened {0}</source>
         <translation>{0} açıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="178"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="185"/>
         <source>Open mnemonic program</source>
         <translation>Mnemonik program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod *.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="194"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>Konsoldaki program kodlanamıyor: hata listesine bakın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="198"/>
         <source>Program taken from the console</source>
         <translation>Program konsoldan alındı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="233"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Derleme başarısız: {0} hata. {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="245"/>
         <source>Converting…</source>
         <translation>Çevriliyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="261"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="269"/>
         <source>the program on this screen</source>
         <translation>bu ekrandaki program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="273"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Derleme bitti — {0} devre, {1} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="276"/>
         <source>({0} warning(s))</source>
         <translation>({0} uyarı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="279"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="287"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} sinyal zorlanmış veya eleman pasif. PLC bunlarla başlatılsın mı?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="294"/>
         <source>Compile a program first</source>
         <translation>Önce bir program derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="307"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="315"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="318"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="321"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="316"/>
-        <source>scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · period {4} ms · overruns {5}</source>
-        <translation>tarama {0} · tarama süresi {1:.3f} / {2:.3f} / {3:.3f} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="324"/>
+        <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
+        <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>
 </context>
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="179"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="165"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="180"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="166"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="181"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="167"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="182"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="183"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="184"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="185"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="173"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="188"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="189"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="233"/>
         <location filename="../ladderworks/gui/docks/online.py" line="141"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="224"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="239"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="241"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="228"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="243"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="284"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="328"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="338"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="347"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="98"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
@@ -2009,7 +2381,7 @@
         <translation>Adres (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="58"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="57"/>
         <location filename="../ladderworks/gui/docks/tables.py" line="229"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
@@ -2061,228 +2433,332 @@
     </message>
 </context>
 <context>
-    <name>ProgramProperties</name>
+    <name>Print</name>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="28"/>
-        <source>Machine-tool builder</source>
-        <translation>Takım tezgâhı üreticisi</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="43"/>
+        <source>Untitled</source>
+        <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="29"/>
-        <source>Machine-tool name</source>
-        <translation>Takım tezgâhı adı</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="68"/>
+        <source>Printing the ladder…</source>
+        <translation>Ladder yazdırılıyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="30"/>
-        <source>PMC &amp; NC type</source>
-        <translation>PMC ve NC tipi</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="69"/>
+        <source>Cancel</source>
+        <translation>İptal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
-        <source>Program number</source>
-        <translation>Program numarası</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="147"/>
+        <source>Export PDF</source>
+        <translation>PDF olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
-        <source>Edition</source>
-        <translation>Sürüm</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="148"/>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF dosyaları (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
-        <source>Drawing number</source>
-        <translation>Çizim numarası</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="156"/>
+        <source>&amp;Print...</source>
+        <translation>&amp;Yazdır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
-        <source>Date</source>
-        <translation>Tarih</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="157"/>
+        <source>Export P&amp;DF...</source>
+        <translation>P&amp;DF olarak dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
-        <source>Designed by</source>
-        <translation>Tasarlayan</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="163"/>
+        <source>Printing was cancelled or failed</source>
+        <translation>Yazdırma iptal edildi veya başarısız oldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
-        <source>ROM written by</source>
-        <translation>ROM&apos;a yazan</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="165"/>
+        <source>{0} pages written to {1}</source>
+        <translation>{0} sayfa {1} dosyasına yazıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
-        <source>Remarks</source>
-        <translation>Notlar</translation>
+        <location filename="../ladderworks/gui/print_actions.py" line="167"/>
+        <source>{0} pages sent to the printer</source>
+        <translation>{0} sayfa yazıcıya gönderildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
-        <source>FANUC LADDER-III export</source>
-        <translation>FANUC LADDER-III dışa aktarımı</translation>
+        <location filename="../ladderworks/gui/print_pages.py" line="258"/>
+        <source>Page {0} / {1}</source>
+        <translation>Sayfa {0} / {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
-        <source>LadderWorks (seed manual)</source>
-        <translation>LadderWorks (temel kılavuz)</translation>
+        <location filename="../ladderworks/gui/print_pages.py" line="284"/>
+        <source>Cross reference</source>
+        <translation>Çapraz referans</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
-        <source>yes</source>
-        <translation>evet</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
-        <source>no</source>
-        <translation>hayır</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="62"/>
-        <source>File</source>
-        <translation>Dosya</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="63"/>
-        <source>(not saved)</source>
-        <translation>(kaydedilmedi)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="64"/>
-        <source>Dialect</source>
-        <translation>Lehçe</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
-        <source>Encoding</source>
-        <translation>Kodlama</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="66"/>
-        <source>Byte order mark</source>
-        <translation>Bayt sırası işareti (BOM)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="67"/>
-        <source>Line ends</source>
-        <translation>Satır sonları</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
-        <source>Framed in %@A … %@E</source>
-        <translation>%@A … %@E çerçeveli</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
-        <source>Networks</source>
-        <translation>Devreler</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
-        <source>Steps</source>
-        <translation>Adımlar</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="72"/>
-        <source>Symbols (%@2)</source>
-        <translation>Semboller (%@2)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="74"/>
-        <source>Messages (%@4)</source>
-        <translation>Mesajlar (%@4)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="115"/>
-        <source>Program properties</source>
-        <translation>Program özellikleri</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="120"/>
-        <source>General</source>
-        <translation>Genel</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="121"/>
-        <source>Property</source>
-        <translation>Özellik</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="122"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
-        <source>Value</source>
-        <translation>Değer</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="124"/>
-        <source>Title (%@1)</source>
-        <translation>Başlık (%@1)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="129"/>
-        <source>Item</source>
-        <translation>Öğe</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="125"/>
-        <source>Meaning</source>
-        <translation>Anlamı</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="126"/>
-        <source>Text</source>
-        <translation>Metin</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="128"/>
-        <source>System parameters (%@0)</source>
-        <translation>Sistem parametreleri (%@0)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="131"/>
-        <source>I/O modules (%@5)</source>
-        <translation>G/Ç modülleri (%@5)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="287"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="132"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="288"/>
+        <source>Symbol</source>
+        <translation>Sembol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="289"/>
+        <source>Written in networks</source>
+        <translation>Yazıldığı devreler</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="290"/>
+        <source>Read in networks</source>
+        <translation>Okunduğu devreler</translation>
+    </message>
+</context>
+<context>
+    <name>ProgramProperties</name>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="29"/>
+        <source>Machine-tool builder</source>
+        <translation>Takım tezgâhı üreticisi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="30"/>
+        <source>Machine-tool name</source>
+        <translation>Takım tezgâhı adı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
+        <source>PMC &amp; NC type</source>
+        <translation>PMC ve NC tipi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
+        <source>Program number</source>
+        <translation>Program numarası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
+        <source>Edition</source>
+        <translation>Sürüm</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
+        <source>Drawing number</source>
+        <translation>Çizim numarası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
+        <source>Date</source>
+        <translation>Tarih</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
+        <source>Designed by</source>
+        <translation>Tasarlayan</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
+        <source>ROM written by</source>
+        <translation>ROM&apos;a yazan</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="38"/>
+        <source>Remarks</source>
+        <translation>Notlar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
+        <source>FANUC LADDER-III export</source>
+        <translation>FANUC LADDER-III dışa aktarımı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
+        <source>LadderWorks (seed manual)</source>
+        <translation>LadderWorks (temel kılavuz)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
+        <source>yes</source>
+        <translation>evet</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
+        <source>no</source>
+        <translation>hayır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="63"/>
+        <source>File</source>
+        <translation>Dosya</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="64"/>
+        <source>(not saved)</source>
+        <translation>(kaydedilmedi)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
+        <source>Dialect</source>
+        <translation>Lehçe</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="66"/>
+        <source>Encoding</source>
+        <translation>Kodlama</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="67"/>
+        <source>Byte order mark</source>
+        <translation>Bayt sırası işareti (BOM)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
+        <source>Line ends</source>
+        <translation>Satır sonları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
+        <source>Framed in %@A … %@E</source>
+        <translation>%@A … %@E çerçeveli</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
+        <source>Networks</source>
+        <translation>Devreler</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="71"/>
+        <source>Steps</source>
+        <translation>Adımlar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="73"/>
+        <source>Symbols (%@2)</source>
+        <translation>Semboller (%@2)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="75"/>
+        <source>Messages (%@4)</source>
+        <translation>Mesajlar (%@4)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="136"/>
+        <source>Program properties</source>
+        <translation>Program özellikleri</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="144"/>
+        <source>General</source>
+        <translation>Genel</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="145"/>
+        <source>Property</source>
+        <translation>Özellik</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="146"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
+        <source>Value</source>
+        <translation>Değer</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="148"/>
+        <source>Title (%@1)</source>
+        <translation>Başlık (%@1)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
+        <source>Item</source>
+        <translation>Öğe</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <source>Meaning</source>
+        <translation>Anlamı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
+        <source>Text</source>
+        <translation>Metin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="152"/>
+        <source>System parameters (%@0)</source>
+        <translation>Sistem parametreleri (%@0)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="155"/>
+        <source>I/O modules (%@5)</source>
+        <translation>G/Ç modülleri (%@5)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="156"/>
+        <source>Address</source>
+        <translation>Adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="156"/>
         <source>Group</source>
         <translation>Grup</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
         <source>Base</source>
         <translation>Taban</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="133"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
         <source>Slot</source>
         <translation>Yuva</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="134"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
         <source>Module</source>
         <translation>Modül</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="137"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="161"/>
         <source>Sections</source>
         <translation>Bölümler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
         <source>Header</source>
         <translation>Başlık satırı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="138"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
         <source>Lines</source>
         <translation>Satırlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="139"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
         <source>First line</source>
         <translation>İlk satır</translation>
+    </message>
+</context>
+<context>
+    <name>QFileDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="11"/>
+        <source>&amp;Look in:</source>
+        <translation>&amp;Konum:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="12"/>
+        <source>Files of &amp;type:</source>
+        <translation>Dosya &amp;türü:</translation>
+    </message>
+</context>
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <location filename="../ladderworks/gui/qt_strings.py" line="13"/>
+        <source>Discard</source>
+        <translation>Kaydetme</translation>
     </message>
 </context>
 <context>
@@ -2394,6 +2870,14 @@
         <location filename="../ladderworks/gui/questions.py" line="91"/>
         <source>Reload now</source>
         <translation>Şimdi yeniden yükle</translation>
+    </message>
+</context>
+<context>
+    <name>Recovery</name>
+    <message>
+        <location filename="../ladderworks/gui/recovery.py" line="182"/>
+        <source>Cannot write the recovery copy in {0}: {1}</source>
+        <translation>Kurtarma kopyası {0} içine yazılamadı: {1}</translation>
     </message>
 </context>
 <context>
@@ -2518,52 +3002,52 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="158"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
         <source>{0} signals</source>
         <translation>{0} sinyal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
         <source>Signals</source>
         <translation>Sinyaller</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="171"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="173"/>
         <source>Name</source>
         <translation>Ad</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
         <source>English</source>
         <translation>İngilizce</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="106"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="108"/>
         <source>program symbol</source>
         <translation>program sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="162"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program sembolü, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Adres, sembol, ad veya sözcükler, örn. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
         <source>Turkish</source>
         <translation>Türkçe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Çift tıklama: adresi imleçteki kontak veya bobine ver</translation>
     </message>
@@ -2571,152 +3055,152 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="156"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="176"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="181"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="188"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="200"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="205"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="213"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="346"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="334"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="360"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="338"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="346"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="372"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="370"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="353"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="379"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="355"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="366"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="429"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="434"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="402"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="446"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="449"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="451"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="77"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="78"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
@@ -2752,152 +3236,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="86"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="96"/>
         <source>Select</source>
         <translation>SEÇİM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="87"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="156"/>
         <source>Input</source>
         <translation>GİRİŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="88"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="171"/>
         <source>NOT input</source>
         <translation>GİRİŞ DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="89"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="185"/>
         <source>Output</source>
         <translation>ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="90"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="199"/>
         <source>NOT output</source>
         <translation>ÇIKIŞ DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="91"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="213"/>
         <source>SET coil</source>
         <translation>SET ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="92"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="228"/>
         <source>RST coil</source>
         <translation>RST ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="93"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="243"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="94"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="259"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="95"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="283"/>
         <source>Line</source>
         <translation>ÇİZGİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="96"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="322"/>
         <source>Comment</source>
         <translation>YORUM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="97"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="346"/>
         <source>Delete</source>
         <translation>SİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="362"/>
         <source>Function</source>
         <translation>FONKSİYON</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="99"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="380"/>
         <source>Insert row before</source>
         <translation>ÖNCEYE SATIR GİR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="100"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="397"/>
         <source>Insert row after</source>
         <translation>SONRAYA SATIR GİR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="97"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Bir eleman seçmek için tıklayın veya hücreler üzerinde sürükleyin; sağ tık: kes, kopyala, yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="110"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="157"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Kontak (RD / AND) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="112"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="172"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>DEĞİL kontak (RD.NOT / AND.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="114"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="186"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Çıkış (WRT) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="116"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="200"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>DEĞİL çıkış (WRT.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="214"/>
         <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
         <translation>SET çıkış koymak için hücreye tıklayın (mantık 1 iken bit := 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="120"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="229"/>
         <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
         <translation>RST çıkış koymak için hücreye tıklayın (mantık 1 iken bit := 0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="122"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="244"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Tersine çevirmek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="124"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="260"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Altına paralel eklemek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="126"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="284"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Birinci noktaya, sonra ikinci noktaya tıklayın: yatay veya dikey çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="128"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="323"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Boş bir satırın başına tıklayın, yorumu yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="347"/>
         <source>Click an element to delete it</source>
         <translation>Silmek için elemanın üzerine tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="131"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="363"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Listeden fonksiyonu seçin, diyagrama tıklayın, özellik tablosunu doldurun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="133"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="381"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Önüne boş satır girmek için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/tools.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="398"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Arkasına boş satır girmek için hücreye tıklayın</translation>
     </message>
@@ -2905,22 +3389,22 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="101"/>
+        <location filename="../ladderworks/gui/palette.py" line="106"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="102"/>
+        <location filename="../ladderworks/gui/palette.py" line="107"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="103"/>
+        <location filename="../ladderworks/gui/palette.py" line="108"/>
         <source>Seed manual instructions</source>
         <translation>Kılavuzdaki komutlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="104"/>
+        <location filename="../ladderworks/gui/palette.py" line="109"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC komutları</translation>
     </message>
@@ -2928,42 +3412,42 @@
 <context>
     <name>TraceFiles</name>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="48"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="49"/>
         <source>LADDER-III...</source>
         <translation>LADDER-III...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="50"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
         <source>Export the samples as a LADDER-III signal-trace result</source>
         <translation>Örnekleri LADDER-III sinyal izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="52"/>
         <source>Import...</source>
         <translation>İçe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="53"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="54"/>
         <source>Show a LADDER-III trace result or a CSV trace</source>
         <translation>Bir LADDER-III izleme sonucunu ya da CSV izlemesini göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="83"/>
         <source>{0}, line {1}: not a trace file</source>
         <translation>{0}, satır {1}: izleme dosyası değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="90"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="91"/>
         <source>Imported {0}: {1} samples</source>
         <translation>{0} içe aktarıldı: {1} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
         <source>Export as LADDER-III trace result</source>
         <translation>LADDER-III izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="116"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
         <source>Import a trace</source>
         <translation>Bir izleme içe aktar</translation>
     </message>

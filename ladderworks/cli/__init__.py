@@ -15,7 +15,7 @@ from ladderworks import version
 COMMANDS: dict[str, str] = {
     "alarms": "alarms", "check": "text", "compile": "plc", "disasm": "plc", "format": "text",
     "ladder": "ladder", "mnemonic": "ladder", "run": "plc", "signals": "signals",
-    "test": "scenario",
+    "test": "scenario", "xref": "xref",
 }
 
 

@@ -117,6 +117,13 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "there is no suitable element at cell ({row}, {col})"),
     "edit-line": QT_TRANSLATE_NOOP("Diagnostic", "a line must be horizontal or vertical"),
     "grid-text": QT_TRANSLATE_NOOP("Diagnostic", "the clipboard does not hold ladder elements"),
+    # find and replace
+    "replace-needs-address": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not an address or a symbol of the program: type one to "
+        "replace it"),
+    "replace-kind": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{found} and {replacement}: replace a bit with a bit, a byte with a byte"),
+    "replace-same": QT_TRANSLATE_NOOP("Diagnostic", "{found} would be replaced with itself"),
     # the compiler
     "stack-underflow": QT_TRANSLATE_NOOP("Diagnostic", "{name} with nothing pushed on the stack"),
     "write-input": QT_TRANSLATE_NOOP("Diagnostic", "{name} writes to {address}, an input area"),

@@ -4,18 +4,18 @@ from __future__ import annotations
 
 import hashlib
 import os
-from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
 
 from PySide6.QtCore import QFileSystemWatcher, QObject, Signal
-from PySide6.QtGui import QTextDocument, QUndoStack
+from PySide6.QtGui import QTextDocument
 
 from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult, parse_bytes
 from ladderworks.core.il.printer import encode_program, print_faithful
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text
 from ladderworks.core.ladder.convert import Kept, adopt_origin, damaged_drafts
+from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.files import atomic_write_bytes, write_target
 from ladderworks.gui.parameter_document import ParameterDocument
 
@@ -77,14 +77,12 @@ class ProgramDocument(QObject):
     changed_outside = Signal(str)  # the path: another program changed the file on disk
     modified_changed = Signal()
 
-    def __init__(self, undo_stack: QUndoStack, text: QTextDocument,
-                 parameters: ParameterDocument, showing_text: Callable[[], bool],
+    def __init__(self, model: LadderModel, text: QTextDocument, parameters: ParameterDocument,
                  parent: QObject | None = None) -> None:
         super().__init__(parent)
-        self.undo_stack = undo_stack
+        self.model = model
         self.text = text
         self.parameters = parameters
-        self._showing_text = showing_text
         self.path: Path | None = None
         self.form = TextForm()
         self.origin: Program | None = None
@@ -92,7 +90,7 @@ class ProgramDocument(QObject):
         self.kept: Kept = []  # the networks as read, to save an unchanged one as it was
         self.watcher = QFileSystemWatcher(self)
         self.watcher.fileChanged.connect(self._on_file_changed)
-        undo_stack.cleanChanged.connect(self.modified_changed)
+        model.modified_changed.connect(self.modified_changed)
         text.modificationChanged.connect(self.modified_changed)
         parameters.session.parameters_changed.connect(self.modified_changed)
 
@@ -102,9 +100,9 @@ class ProgramDocument(QObject):
         """True when there are unsaved changes (ladder or text, and the PMC parameters)."""
         if self.parameters.modified:
             return True
-        if self._showing_text():
+        if self.model.showing_text:
             return self.text.isModified()
-        return not self.undo_stack.isClean()
+        return self.model.is_modified()
 
     def changed_on_disk(self) -> bool:
         """True when the file now differs from what was read or last written."""

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent, Signal
+from PySide6.QtCore import QCoreApplication, Signal
 from PySide6.QtWidgets import QDockWidget, QTreeWidget, QTreeWidgetItem, QWidget
 
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.retranslate import Retranslating
 
 
 def location_text(diagnostic: Diagnostic) -> str:
@@ -25,10 +26,11 @@ def location_text(diagnostic: Diagnostic) -> str:
     return ""
 
 
-class ErrorListDock(QDockWidget):
+class ErrorListDock(Retranslating, QDockWidget):
     """A dock listing diagnostics; `activated` is emitted on double-click."""
 
     activated = Signal(object)  # Diagnostic
+    diagnostics_changed = Signal(list)  # the diagnostics now listed
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -52,6 +54,7 @@ class ErrorListDock(QDockWidget):
         """Show these diagnostics (replacing the list)."""
         self._diagnostics = list(diagnostics)
         self._fill()
+        self.diagnostics_changed.emit(self.diagnostics())
 
     def _fill(self) -> None:
         self.tree.clear()
@@ -78,9 +81,3 @@ class ErrorListDock(QDockWidget):
             QCoreApplication.translate("ErrorList", "Message"),
         ])
         self._fill()
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)

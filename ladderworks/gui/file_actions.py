@@ -26,12 +26,14 @@ from ladderworks.gui.document import (
     bad_bytes_shown,
     same_file,
 )
+from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.files import ReadOnlyFile, atomic_write_bytes, is_read_only
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.recovery import Autosaver, RecoveredCopy, RecoveryStore, Snapshot
 
 if TYPE_CHECKING:
     from PySide6.QtCore import SignalInstance
-    from PySide6.QtWidgets import QMainWindow, QStackedWidget
+    from PySide6.QtWidgets import QMainWindow
 
     from ladderworks.gui.editor.view import LadderEditor
     from ladderworks.gui.error_list import ErrorListDock
@@ -62,7 +64,7 @@ class FileActions(_Window):
     if TYPE_CHECKING:  # what MainWindow provides
         editor: LadderEditor
         text_view: ProgramTextView
-        pages: QStackedWidget
+        model: LadderModel
         errors: ErrorListDock
         parameters: ParameterDocument
         failed_path: Path | None
@@ -77,16 +79,15 @@ class FileActions(_Window):
 
     def _install_file_state(self) -> None:
         """Create the document, its watcher and the autosaver (called once by __init__)."""
-        self.document = ProgramDocument(
-            self.editor.undo_stack, self.text_view.document(), self.parameters,
-            lambda: self.pages.currentWidget() is self.text_view, self)
+        self.document = ProgramDocument(self.model, self.text_view.document(), self.parameters,
+                                        self)
         self.document.modified_changed.connect(self._update_title)
         self.document.changed_outside.connect(self._on_changed_outside)
         self._last_save_result = False
         self.recovery = RecoveryStore()
         self.autosaver = Autosaver(self.recovery, self.recovery_snapshot, self)
         self.autosaver.failed.connect(self._show_message)
-        self.editor.undo_stack.indexChanged.connect(self.autosaver.edited)
+        self.model.undo_stack.indexChanged.connect(self.autosaver.edited)
         self.parameters.session.parameters_changed.connect(self.autosaver.edited)
 
     # -- state ---------------------------------------------------------------------------
@@ -129,12 +130,12 @@ class FileActions(_Window):
         """Start an empty program."""
         self.document.reset()
         self.failed_path = None
-        self.editor.set_program(Program())
+        self.model.set_program(Program())
         self._program_shown(Program())
         self.text_view.setPlainText("")
         self.text_view.document().setModified(False)
         self.errors.set_diagnostics([])
-        self.pages.setCurrentWidget(self.editor)
+        self.model.set_mode(Mode.LADDER)
         self.dialect = "seed"
         self.parameters.reset()
         self.recovery.remove()
@@ -148,7 +149,7 @@ class FileActions(_Window):
             self.parameters.reset()
             self.warn(translate("MainWindow", "Open"),
                       translate("MainWindow", "Cannot read {0}: {1}").format(
-                          path.name + ".prm", error.strerror or str(error)))
+                          path.name + ".prm", os_error_text(error)))
             return
         if problems:
             first = problems[0]
@@ -166,7 +167,7 @@ class FileActions(_Window):
         except OSError as error:
             self.warn(translate("MainWindow", "Open"),
                       translate("MainWindow", "Cannot read {0}: {1}").format(
-                          path, error.strerror or str(error)))
+                          path, os_error_text(error)))
             return False
         self._open_parameters(path)
         self._show_result(path, result.program, result.ok, result.diagnostics)
@@ -184,19 +185,19 @@ class FileActions(_Window):
         if ok:
             self.failed_path = None
             self.document.kept = []
-            self.editor.set_program(program, self.document.kept)
-            self.pages.setCurrentWidget(self.editor)
+            self.model.set_program(program, self.document.kept)
+            self.model.set_mode(Mode.LADDER)
             self._program_shown(program)
         else:
             self.failed_path = path
             source = program.source
             text = "\n".join(source.lines) + "\n" if source is not None else ""
             text = bad_bytes_shown(text)
-            self.editor.set_program(Program())
+            self.model.set_program(Program())
             self._program_shown(Program())
             self.text_view.setPlainText(text)
             self.text_view.document().setModified(False)
-            self.pages.setCurrentWidget(self.text_view)
+            self.model.set_mode(Mode.TEXT)
             self.errors.show()
             self._show_message(translate("MainWindow", "The file has errors: it is shown as text"))
         self._update_title()
@@ -220,9 +221,9 @@ class FileActions(_Window):
 
     def program_text(self) -> str | None:
         """The current program as `.LAD` text, or None when it cannot be made (errors listed)."""
-        if self.pages.currentWidget() is self.text_view:
+        if self.model.showing_text:
             return None
-        program, diagnostics = self.editor.program()
+        program, diagnostics = self.model.program()
         if program is None:
             self.errors.set_diagnostics(diagnostics)
             self.errors.show()
@@ -237,7 +238,7 @@ class FileActions(_Window):
 
     def _program_to_save(self) -> tuple[Program, list[Diagnostic]]:
         """The drawn program (unfinished networks as drafts, unchanged ones as read)."""
-        program, diagnostics = ladder_to_program(self.editor.ladder_document(),
+        program, diagnostics = ladder_to_program(self.model.ladder_document(),
                                                  self.document.kept)
         self.editor.mark_diagnostics(diagnostics)
         return program, diagnostics
@@ -277,7 +278,7 @@ class FileActions(_Window):
         """Write the program to `path` atomically, in the file's own form; a file that failed to
         parse is kept; a file changed outside or read-only asks first."""
         path = Path(path)
-        showing_text = self.pages.currentWidget() is self.text_view
+        showing_text = self.model.showing_text
         if showing_text and self.failed_path is not None and same_file(path, self.failed_path):
             self.warn(translate("MainWindow", "Save"), translate(
                 "MainWindow",
@@ -305,7 +306,7 @@ class FileActions(_Window):
             return False
         if not self._write(path, data):
             return False
-        self.editor.undo_stack.setClean()
+        self.model.mark_saved()
         self.text_view.document().setModified(False)
         self._remember(path)
         self._update_title()
@@ -334,7 +335,7 @@ class FileActions(_Window):
         except OSError as error:
             self.warn(translate("MainWindow", "Save"),
                       translate("MainWindow", "Cannot write {0}: {1}").format(
-                          name, error.strerror or str(error)))
+                          name, os_error_text(error)))
             return False
         return True
 
@@ -391,7 +392,7 @@ class FileActions(_Window):
         except OSError as error:
             self.warn(translate("MainWindow", "Export .MOD"),
                       translate("MainWindow", "Cannot write {0}: {1}").format(
-                          path, error.strerror or str(error)))
+                          path, os_error_text(error)))
             return False
         self._show_message(translate("MainWindow", "Exported {0}").format(path.name))
         return True
@@ -404,13 +405,13 @@ class FileActions(_Window):
             return None
         document = self.document
         try:
-            if self.pages.currentWidget() is self.text_view:
+            if self.model.showing_text:
                 data = document.encode_text(self.text_view.toPlainText())
             else:
                 data = document.encode(self._program_to_save()[0])
         except EncodeError:  # a character the file cannot hold: the copy is UTF-8
             text = (bad_bytes_back(self.text_view.toPlainText())
-                    if self.pages.currentWidget() is self.text_view
+                    if self.model.showing_text
                     else print_program(self._program_to_save()[0]))
             data = text.encode("utf-8", errors="surrogateescape")
         parameters = self.parameters.session.parameters
@@ -442,7 +443,7 @@ class FileActions(_Window):
         except OSError as error:
             self.warn(translate("MainWindow", "Recover unsaved work"),
                       translate("MainWindow", "Cannot read {0}: {1}").format(
-                          copy.data_path, error.strerror or str(error)))
+                          copy.data_path, os_error_text(error)))
             return False
         disk = DiskState(**copy.disk) if copy.disk else None  # type: ignore[arg-type]
         self.document.adopt(copy.original, result, disk)
@@ -453,7 +454,7 @@ class FileActions(_Window):
         self.parameters.session.set_parameters(found.parameters)
         self._show_result(copy.original, result.program, result.ok, result.diagnostics)
         self.failed_path = None  # the original on disk is not the text that failed
-        self.editor.mark_modified()
+        self.model.mark_modified()
         self.text_view.document().setModified(True)
         self._update_title()
         self.autosaver.save_now()

@@ -23,6 +23,7 @@ from ladderworks.core.instructions import InstructionSpec, Param, ParamKind
 from ladderworks.core.ladder.edits import function_params
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.help_browser import InstructionHelp
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import instruction_label, instruction_title, param_label
 
 
@@ -72,7 +73,7 @@ def _value_text(param: Param, value: object) -> str:
     return str(value)
 
 
-class FunctionDialog(QDialog):
+class FunctionDialog(Retranslating, QDialog):
     """The property table of one functional instruction; OK only with valid parameters."""
 
     def __init__(self, spec: InstructionSpec, instruction: Instruction | None = None,

@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from PySide6.QtCore import QCoreApplication, QEvent, Qt
+from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtWidgets import (
     QDialog,
     QHBoxLayout,
@@ -19,12 +19,20 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.instructions import ALL, InstructionSpec, lookup
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import instruction_title, ui_is_turkish
 from ladderworks.paths import help_page
 
 translate = QCoreApplication.translate
 
 _ANCHOR = re.compile(r'\s*<a id="([^"]+)"></a>\s*$')
+# where a rule comes from ([seed], [pmc; X22], [choice]): for the docs' readers, not the user
+_SOURCE_MARK = re.compile(r"\s*\[(?:seed|pmc|choice)(?:;[^\]]*)?\]")
+
+
+def without_source_marks(text: str) -> str:
+    """The reference text without the provenance marks of `docs/instructions.md`."""
+    return _SOURCE_MARK.sub("", text)
 
 
 @lru_cache(maxsize=2)
@@ -44,16 +52,16 @@ def reference_sections(language: str = "en") -> dict[str, str]:
             match = _ANCHOR.search(line)
             if match:
                 key = match.group(1)
-                lines = [_ANCHOR.sub("", line).replace("### ", "## ", 1)]
+                lines = [without_source_marks(_ANCHOR.sub("", line)).replace("### ", "## ", 1)]
             continue
         if key is not None:
-            lines.append(line)
+            lines.append(without_source_marks(line))
     if key is not None:
         sections[key] = "\n".join(lines).strip() + "\n"
     return sections
 
 
-class InstructionHelp(QDialog):
+class InstructionHelp(Retranslating, QDialog):
     """A non-modal window: the instruction list on the left, the chosen entry on the right."""
 
     def __init__(self, parent: QWidget | None = None) -> None:
@@ -87,9 +95,15 @@ class InstructionHelp(QDialog):
     def _fill(self) -> None:
         self.list.clear()
         for spec in ALL:
-            item = QListWidgetItem(f"{spec.name} — {instruction_title(spec)}")
+            text = f"{spec.name} — {instruction_title(spec)}"
+            item = QListWidgetItem(text)
+            item.setToolTip(text)
             item.setData(Qt.ItemDataRole.UserRole, spec.name)
             self.list.addItem(item)
+        # the longest name whole: the list is as wide as its widest entry
+        scroll = self.list.verticalScrollBar().sizeHint().width()
+        self.list.setMinimumWidth(self.list.sizeHintForColumn(0) + scroll
+                                  + 2 * self.list.frameWidth() + 8)
 
     def show_instruction(self, name: str) -> bool:
         """Select and show the entry of instruction `name`; False if there is none."""
@@ -139,9 +153,3 @@ class InstructionHelp(QDialog):
         self._fill()
         if shown is not None:
             self.show_instruction(shown)
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate when the language changes."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)

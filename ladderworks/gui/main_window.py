@@ -6,17 +6,15 @@ from collections.abc import Callable
 from pathlib import Path
 
 from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
-from PySide6.QtGui import QAction, QActionGroup, QCloseEvent, QKeySequence, QShowEvent
+from PySide6.QtGui import QAction, QCloseEvent, QShowEvent
 from PySide6.QtWidgets import (
     QApplication,
     QDialog,
     QDockWidget,
     QLabel,
     QMainWindow,
-    QMenu,
     QMessageBox,
     QStackedWidget,
-    QToolBar,
     QWidget,
 )
 
@@ -25,23 +23,36 @@ from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step, questions
+from ladderworks.gui.actions_table import CAN_REDO, CAN_UNDO, CONTEXT_MENU, LADDER_SHOWN
+from ladderworks.gui.console_menus import Condition, ConsoleMenus
+from ladderworks.gui.docks import cross_reference
+from ladderworks.gui.docks.plc_docks import build_plc_docks
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
+from ladderworks.gui.editor.interactions import BY_TOOL
+from ladderworks.gui.editor.ladder_model import LadderModel, Mode
+from ladderworks.gui.editor.name_menu import NameDisplayMenu
 from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.editor.zoom import FitWidth
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
+from ladderworks.gui.find_replace import FindReplaceDialog
 from ladderworks.gui.help_browser import InstructionHelp
+from ladderworks.gui.locale_numbers import percent
 from ladderworks.gui.palette import ToolPalette
 from ladderworks.gui.parameter_document import ParameterDocument
+from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.print_actions import PrintActions
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.signal_list import SignalListDock
 from ladderworks.gui.text_view import ProgramTextView
-from ladderworks.gui.tools import Tool, icon, tool_help, tool_icon, tool_name
+from ladderworks.gui.tools import Tool, icon
 from ladderworks.gui.translation import UiLanguage
 
 translate = QCoreApplication.translate
 
 
-class MainWindow(FileActions, QMainWindow):
+class MainWindow(Retranslating, FileActions, QMainWindow):
     """The ladder console: one program, shown as ladder (or as text when it has errors)."""
 
     language_changed = Signal(str)
@@ -61,7 +72,9 @@ class MainWindow(FileActions, QMainWindow):
         self.program_info = Program()  # the program as opened: title, sections, symbols
         self.setWindowIcon(icon("ladderworks"))
 
-        self.editor = LadderEditor(self)
+        self.model = LadderModel(self)  # the networks, the undo stack, ladder or text
+        self.editor = LadderEditor(self.model, self)
+        self.fit_width = FitWidth(self.editor)  # View › Fit width
         self.text_view = ProgramTextView(self)
         self.text_view.document().modificationChanged.connect(self._update_title)
         self.pages = QStackedWidget(self)
@@ -69,38 +82,44 @@ class MainWindow(FileActions, QMainWindow):
         self.pages.addWidget(self.editor)
         self.pages.addWidget(self.text_view)
         self.setCentralWidget(self.pages)
+        self.model.mode_changed.connect(self._show_mode)
 
-        self.actions_by_name: dict[str, QAction] = {}
-        self._texts: list[tuple[QAction | QMenu | QToolBar, Callable[[], str]]] = []
-        self._make_actions()
-        self.tool_palette = ToolPalette([self.tool_actions[tool] for tool in Tool], self)
-        self.tool_palette.function_chosen.connect(self._on_function_chosen)
-        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.tool_palette)
-        self.errors = ErrorListDock(self)
-        self.errors.activated.connect(self.go_to_diagnostic)
-        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.errors)
-        self.signals_dock = SignalListDock(self)
-        self.signals_dock.address_chosen.connect(self.use_signal)
-        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.signals_dock)
-        self.tabifyDockWidget(self.tool_palette, self.signals_dock)
-        self.tool_palette.raise_()
-        self._make_menus()
+        self.menus = ConsoleMenus(self, self._conditions())
+        self.actions_by_name = self.menus.actions_by_name
+        self.tool_actions = self.menus.tool_actions
+        for tool, action in self.tool_actions.items():
+            action.triggered.connect(lambda _c=False, t=tool: self.set_tool(t))
+        fit = self.actions_by_name["action_zoom_fit_width"]
+        for name in ("action_zoom_in", "action_zoom_out", "action_zoom_reset"):
+            self.actions_by_name[name].triggered.connect(lambda _c=False: fit.setChecked(False))
+        self.names_menu = NameDisplayMenu(self.settings, self)  # View › Element names
+        self.menus.add_menu("menu_view", self.names_menu)
+        self.recent_menu = self.menus.menus["menu_recent"]
+        self.recent_actions: list[QAction] = []
+        for index in range(MAX_RECENT):
+            action = QAction(self)
+            action.setObjectName(f"action_recent_{index}")
+            action.triggered.connect(lambda _c=False, i=index: self._open_recent(i))
+            self.recent_actions.append(action)
+            self.menus.register(action)
+        self._make_docks()
+        self._status_text: Callable[[], str] | None = None
         self._make_status_bar()
         named = self.actions_by_name
-        self.editor.context_actions = [
-            named[name] if name else None for name in (
-                "action_cut", "action_copy", "action_paste", "action_delete", "",
-                "action_invert", "action_or", "", "action_insert_row_before",
-                "action_insert_row_after", "", "action_delete_network")]
-        from ladderworks.gui.docks import install_plc_docks  # the PLC docks (issues 7, 8)
-
-        self.plc_docks = install_plc_docks(self)
+        self.editor.context_actions = [named[name] if name else None for name in CONTEXT_MENU]
+        self.plc_docks = build_plc_docks(self, self.menus, PlcSession(self), self.editor)
+        self.program_opened.connect(self.plc_docks.alarms.use_program)
+        self.names_menu.changed.connect(self.editor.relayout)
+        self.names_menu.changed.connect(self.plc_docks.diagnostic.view.relayout)
+        self.cross_reference = cross_reference.install(self, self.menus, self.editor,
+                                                       self.errors)
+        self.printing = PrintActions(self, self.menus)  # File › Print, Export PDF
         # PMC parameters (T/C/K/D set in the PLC tables) are saved with the program
         self.parameters = ParameterDocument(self.plc_docks.session)
         self.plc_docks.session.parameters_changed.connect(self._update_title)
         self._install_file_state()
 
-        self.editor.undo_stack.cleanChanged.connect(self._update_title)
+        self.model.modified_changed.connect(self._update_title)
         self.editor.tool_requested.connect(self.set_tool)
         self.editor.hover_changed.connect(self._show_hover)
         self.editor.message.connect(self._show_message)
@@ -110,344 +129,74 @@ class MainWindow(FileActions, QMainWindow):
         self.resize(1200, 800)
         self._first_show = True
         self.help_window: InstructionHelp | None = None
+        self.find_dialog: FindReplaceDialog | None = None
         geometry, state = settings.window_state()
         if geometry is not None:
             self.restoreGeometry(geometry)
         if state is not None:
             self.restoreState(state)
         self.new_file()
+        zoom, fit_width = settings.zoom()
+        self.editor.set_zoom(zoom)
+        self.actions_by_name["action_zoom_fit_width"].setChecked(fit_width)
 
-    # -- actions and menus ---------------------------------------------------------------
+    # -- actions, menus and docks -------------------------------------------------------
 
-    def _action(
-        self,
-        name: str,
-        text: Callable[[], str],
-        slot: Callable[[], object] | None,
-        shortcut: QKeySequence | QKeySequence.StandardKey | str | None = None,
-        icon_name: str | None = None,
-    ) -> QAction:
-        action = QAction(self)
-        action.setObjectName(name)
-        if shortcut is not None:
-            action.setShortcut(QKeySequence(shortcut))
-        if icon_name is not None:
-            action.setIcon(icon(icon_name))
-        if slot is not None:
-            action.triggered.connect(lambda _checked=False, s=slot: s())
-        self.actions_by_name[name] = action
-        self._texts.append((action, text))
-        return action
+    def _conditions(self) -> dict[str, Condition]:
+        """What the table's `enabled_when` names mean in this window."""
+        stack = self.model.undo_stack
+        return {
+            LADDER_SHOWN: ([self.model.mode_changed], lambda: not self.model.showing_text),
+            CAN_UNDO: ([stack.canUndoChanged], stack.canUndo),
+            CAN_REDO: ([stack.canRedoChanged], stack.canRedo),
+        }
 
-    def _make_actions(self) -> None:
-        key = QKeySequence.StandardKey
-        ed = self.editor
-        a = self._action
-        a("action_new", lambda: translate("MainWindow", "&New"), self.new_file, key.New)
-        a("action_open", lambda: translate("MainWindow", "&Open..."), self.open_dialog, key.Open)
-        a("action_save", lambda: translate("MainWindow", "&Save"), self.save, key.Save)
-        a(
-            "action_save_as",
-            lambda: translate("MainWindow", "Save &As..."),
-            self.save_as_dialog,
-            key.SaveAs,
-        )
-        a(
-            "action_import_mod",
-            lambda: translate("MainWindow", "&Import .MOD..."),
-            self.import_mod_dialog,
-        )
-        a(
-            "action_export_mod",
-            lambda: translate("MainWindow", "&Export .MOD..."),
-            self.export_mod_dialog,
-        )
-        a(
-            "action_clear_recent",
-            lambda: translate("MainWindow", "Clear the list"),
-            self._clear_recent,
-        )
-        a(
-            "action_program_properties",
-            lambda: translate("MainWindow", "Program &properties..."),
-            self.show_program_properties,
-        )
-        a("action_quit", lambda: translate("MainWindow", "&Quit"), self.close, key.Quit)
-        undo = ed.undo_stack.createUndoAction(self)
-        undo.setObjectName("action_undo")
-        undo.setShortcut(QKeySequence(key.Undo))
-        self.actions_by_name["action_undo"] = undo
-        self._texts.append((undo, lambda: translate("MainWindow", "&Undo")))
-        redo = ed.undo_stack.createRedoAction(self)
-        redo.setObjectName("action_redo")
-        redo.setShortcut(QKeySequence(key.Redo))
-        self.actions_by_name["action_redo"] = redo
-        self._texts.append((redo, lambda: translate("MainWindow", "&Redo")))
-        a("action_cut", lambda: translate("MainWindow", "Cu&t"), ed.cut, key.Cut)
-        a("action_copy", lambda: translate("MainWindow", "&Copy"), ed.copy, key.Copy)
-        a("action_paste", lambda: translate("MainWindow", "&Paste"), ed.paste, key.Paste)
-        a("action_delete", lambda: translate("MainWindow", "&Delete"), ed.delete_at_cursor, "Del")
-        a(
-            "action_edit_element",
-            lambda: translate("MainWindow", "&Edit element"),
-            ed.edit_at_cursor,
-        )
-        a(
-            "action_invert",
-            lambda: translate("MainWindow", "NOT (invert)"),
-            ed.invert_at_cursor,
-            None,
-            "invert",
-        )
-        a(
-            "action_or",
-            lambda: translate("MainWindow", "OR (add parallel)"),
-            ed.or_at_cursor,
-            None,
-            "or",
-        )
-        a(
-            "action_insert_row_before",
-            lambda: translate("MainWindow", "Insert row before"),
-            ed.insert_row_before,
-            None,
-            "row_before",
-        )
-        a(
-            "action_insert_row_after",
-            lambda: translate("MainWindow", "Insert row after"),
-            ed.insert_row_after,
-            None,
-            "row_after",
-        )
-        a("action_delete_network", lambda: translate("MainWindow", "Delete network"),
-          ed.delete_network)
-        a("action_zoom_in", lambda: translate("MainWindow", "Zoom &in"), ed.zoom_in, key.ZoomIn)
-        a("action_zoom_out", lambda: translate("MainWindow", "Zoom &out"), ed.zoom_out, key.ZoomOut)
-        a(
-            "action_zoom_reset",
-            lambda: translate("MainWindow", "&Normal size"),
-            ed.zoom_reset,
-            "Ctrl+0",
-        )
-        a(
-            "action_show_ladder",
-            lambda: translate("MainWindow", "Show as &ladder"),
-            self.show_as_ladder,
-            "F5",
-        )
-        a(
-            "action_show_text",
-            lambda: translate("MainWindow", "Show as &text"),
-            self.show_as_text,
-            "F6",
-        )
-        a("action_check", lambda: translate("MainWindow", "C&heck"), self.check, "F7")
-        a(
-            "action_compile",
-            lambda: translate("MainWindow", "&Compile"),
-            self.compile,
-            "F9",
-            "compile",
-        )
-        a("action_language_en", lambda: "English", lambda: self.set_language("en"))
-        a("action_language_tr", lambda: "Türkçe", lambda: self.set_language("tr"))
-        a(
-            "action_instruction_help",
-            lambda: translate("MainWindow", "&Instruction reference"),
-            self.show_instruction_help,
-            QKeySequence.StandardKey.HelpContents,
-        )
-        a("action_about", lambda: translate("MainWindow", "&About LadderWorks"), self.about)
-        languages = QActionGroup(self)
-        for code in ("en", "tr"):
-            action = self.actions_by_name[f"action_language_{code}"]
-            action.setCheckable(True)
-            languages.addAction(action)
-        self.recent_actions: list[QAction] = []
-        for index in range(MAX_RECENT):
-            action = QAction(self)
-            action.setObjectName(f"action_recent_{index}")
-            action.triggered.connect(lambda _c=False, i=index: self._open_recent(i))
-            self.recent_actions.append(action)
-            self.actions_by_name[action.objectName()] = action
-        self.tool_group = QActionGroup(self)
-        self.tool_actions: dict[Tool, QAction] = {}
-        for tool in Tool:
-            action = QAction(tool_icon(tool), "", self)
-            action.setObjectName(f"tool_{tool.value}")
-            action.setCheckable(True)
-            action.triggered.connect(lambda _c=False, t=tool: self.set_tool(t))
-            self.tool_group.addAction(action)
-            self.tool_actions[tool] = action
-            self.actions_by_name[action.objectName()] = action
-
-    def _menu(self, name: str, text: Callable[[], str], names: list[str | None]) -> QMenu:
-        menu = self.menuBar().addMenu("")
-        menu.setObjectName(name)
-        self._texts.append((menu, text))
-        for item in names:
-            if item is None:
-                menu.addSeparator()
-            else:
-                menu.addAction(self.actions_by_name[item])
-        return menu
-
-    def _make_menus(self) -> None:
-        file_menu = self._menu(
-            "menu_file", lambda: translate("MainWindow", "&File"), ["action_new", "action_open"]
-        )
-        self.recent_menu = QMenu(file_menu)
-        self.recent_menu.setObjectName("menu_recent")
-        self._texts.append((self.recent_menu, lambda: translate("MainWindow", "Recent files")))
-        file_menu.addMenu(self.recent_menu)
-        for item in (
-            "action_save",
-            "action_save_as",
-            None,
-            "action_import_mod",
-            "action_export_mod",
-            None,
-            "action_program_properties",
-            None,
-            "action_quit",
-        ):
-            if item is None:
-                file_menu.addSeparator()
-            else:
-                file_menu.addAction(self.actions_by_name[item])
-        self._menu(
-            "menu_edit",
-            lambda: translate("MainWindow", "&Edit"),
-            [
-                "action_undo",
-                "action_redo",
-                None,
-                "action_cut",
-                "action_copy",
-                "action_paste",
-                "action_delete",
-                None,
-                "action_edit_element",
-                "action_invert",
-                "action_or",
-                "action_insert_row_before",
-                "action_insert_row_after",
-                "action_delete_network",
-            ],
-        )
-        view = self._menu(
-            "menu_view",
-            lambda: translate("MainWindow", "&View"),
-            [
-                "action_zoom_in",
-                "action_zoom_out",
-                "action_zoom_reset",
-                None,
-                "action_show_ladder",
-                "action_show_text",
-                None,
-            ],
-        )
-        for dock, name in (
-            (self.tool_palette, "action_dock_palette"),
-            (self.errors, "action_dock_errors"),
-            (self.signals_dock, "action_dock_signals"),
-        ):
-            toggle = dock.toggleViewAction()
-            toggle.setObjectName(name)
-            self.actions_by_name[name] = toggle
-            view.addAction(toggle)
-        self._menu(
-            "menu_plc", lambda: translate("MainWindow", "&PLC"), ["action_check", "action_compile"]
-        )
-        tools = self._menu(
-            "menu_tools",
-            lambda: translate("MainWindow", "&Tools"),
-            [f"tool_{tool.value}" for tool in Tool],
-        )
-        tools.addSeparator()
-        self._menu(
-            "menu_language",
-            lambda: translate("MainWindow", "&Language"),
-            ["action_language_en", "action_language_tr"],
-        )
-        self._menu(
-            "menu_help",
-            lambda: translate("MainWindow", "&Help"),
-            ["action_instruction_help", "action_about"],
-        )
-        toolbar = QToolBar(self)
-        toolbar.setObjectName("toolbar_main")
-        self._texts.append((toolbar, lambda: translate("MainWindow", "Main toolbar")))
-        for item in (
-            "action_new",
-            "action_open",
-            "action_save",
-            None,
-            "action_undo",
-            "action_redo",
-            None,
-            "action_zoom_in",
-            "action_zoom_out",
-            None,
-            "action_compile",
-        ):
-            if item is None:
-                toolbar.addSeparator()
-            else:
-                toolbar.addAction(self.actions_by_name[item])
-        style = self.style()
-        sp = style.StandardPixmap
-        for name, pixmap in (
-            ("action_new", sp.SP_FileIcon),
-            ("action_open", sp.SP_DialogOpenButton),
-            ("action_save", sp.SP_DialogSaveButton),
-            ("action_undo", sp.SP_ArrowBack),
-            ("action_redo", sp.SP_ArrowForward),
-        ):
-            self.actions_by_name[name].setIcon(style.standardIcon(pixmap))
-        self.actions_by_name["action_zoom_in"].setIcon(icon("zoom_in"))
-        self.actions_by_name["action_zoom_out"].setIcon(icon("zoom_out"))
-        toolbar_toggle = toolbar.toggleViewAction()
-        toolbar_toggle.setObjectName("action_toolbar_main")
-        self.actions_by_name["action_toolbar_main"] = toolbar_toggle
-        view.addAction(toolbar_toggle)
-        self.addToolBar(Qt.ToolBarArea.TopToolBarArea, toolbar)
-        self._update_recent_menu()
+    def _make_docks(self) -> None:
+        """The editing docks: tools and signals tabbed on the left, the errors below."""
+        self.tool_palette = ToolPalette(list(self.tool_actions.values()), self)  # tools' order
+        self.tool_palette.function_chosen.connect(self._on_function_chosen)
+        self.signals_dock = SignalListDock(self)
+        self.signals_dock.address_chosen.connect(self.use_signal)
+        self.errors = ErrorListDock(self)
+        self.errors.activated.connect(self.go_to_diagnostic)
+        self.errors.diagnostics_changed.connect(self.text_view.set_diagnostics)
+        left = Qt.DockWidgetArea.LeftDockWidgetArea
+        self.menus.add_dock(self.tool_palette, "action_dock_palette", left, separator=True)
+        self.menus.add_dock(self.errors, "action_dock_errors",
+                            Qt.DockWidgetArea.BottomDockWidgetArea)
+        self.menus.add_dock(self.signals_dock, "action_dock_signals", left)
+        self.tabifyDockWidget(self.tool_palette, self.signals_dock)
+        self.tool_palette.raise_()
 
     def _make_status_bar(self) -> None:
         self.cell_label = QLabel(self)
         self.cell_label.setObjectName("status_cell")
         self.cell_label.setMinimumWidth(140)
         self.statusBar().addPermanentWidget(self.cell_label)
+        self.zoom_label = QLabel(self)
+        self.zoom_label.setObjectName("status_zoom")
+        self.statusBar().addPermanentWidget(self.zoom_label)
+        self.editor.zoom_changed.connect(self._show_zoom)
+
+    def _show_zoom(self, *_args: object) -> None:
+        self.zoom_label.setText(percent(self.editor.zoom() * 100))
+        self.zoom_label.setToolTip(translate("MainWindow", "Zoom"))
 
     # -- language ------------------------------------------------------------------------
 
     def retranslate(self) -> None:
-        """Set every text in the current UI language."""
-        for widget, text in self._texts:
-            if isinstance(widget, QAction):
-                widget.setText(text())
-            elif isinstance(widget, QMenu):
-                widget.setTitle(text())
-            else:
-                widget.setWindowTitle(text())
-        for tool, action in self.tool_actions.items():
-            action.setText(tool_name(tool))
-            action.setToolTip(tool_help(tool))
-            action.setStatusTip(tool_help(tool))
+        """Set every text in the current UI language (the docks set their own)."""
+        self.menus.retranslate()
+        self.plc_docks.retranslate()
+        self.printing.retranslate()
         for code in ("en", "tr"):
             self.actions_by_name[f"action_language_{code}"].setChecked(
                 self.language.current == code
             )
         self._update_title()
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)
+        self._retranslate_status()
+        self._show_zoom()
+        self.editor.viewport().update()  # the networks' numbers (N1 / D1) are drawn words
 
     def set_language(self, code: str) -> None:
         """Switch the UI language live and remember it."""
@@ -455,7 +204,6 @@ class MainWindow(FileActions, QMainWindow):
         self.settings.set_language(applied)
         # deliver the LanguageChange events now, so every widget is retranslated on return
         QCoreApplication.sendPostedEvents(None, QEvent.Type.LanguageChange)
-        self.retranslate()
         self.language_changed.emit(applied)
 
     # -- tools ---------------------------------------------------------------------------
@@ -464,7 +212,7 @@ class MainWindow(FileActions, QMainWindow):
         """Make `tool` the current tool of the grid editor."""
         self.tool_actions[tool].setChecked(True)
         self.editor.set_tool(tool)
-        self.statusBar().showMessage(tool_help(tool), 4000)
+        self._show_message(lambda: BY_TOOL[tool].help(), 4000)
 
     def current_tool(self) -> Tool:
         """The checked tool."""
@@ -477,8 +225,21 @@ class MainWindow(FileActions, QMainWindow):
     def _show_hover(self, text: str) -> None:
         self.cell_label.setText(text)
 
-    def _show_message(self, text: str) -> None:
-        self.statusBar().showMessage(text, 6000)
+    def _show_message(self, text: str | Callable[[], str], timeout: int = 6000) -> None:
+        """A status-bar message; one given as a function is said again after a language
+        switch, a plain text is taken away then (it would stay in the old language)."""
+        self._status_text = text if callable(text) else None
+        self.statusBar().showMessage(text() if callable(text) else text, timeout)
+
+    def _retranslate_status(self) -> None:
+        if self.statusBar().currentMessage():
+            if self._status_text is not None:
+                self.statusBar().showMessage(self._status_text(), 6000)
+            else:
+                self.statusBar().clearMessage()
+        index, row, col = self.editor.cursor_cell
+        if index < len(self.editor.networks) and self.cell_label.text():
+            self.cell_label.setText(self.editor.describe_cell(index, row, col))
 
     # -- documents -----------------------------------------------------------------------
 
@@ -501,9 +262,7 @@ class MainWindow(FileActions, QMainWindow):
         """A program is now shown: its symbols and messages go to the docks."""
         self.program_info = program
         self.signals_dock.set_symbols(program.symbols)
-        session = getattr(getattr(self, "plc_docks", None), "session", None)
-        if session is not None:
-            session.set_symbols(program.symbols)
+        self.plc_docks.session.set_symbols(program.symbols)
         self.program_opened.emit(program)
 
     def show_program_properties(self) -> QDialog:
@@ -536,24 +295,28 @@ class MainWindow(FileActions, QMainWindow):
         if index < len(files) and self.maybe_save():
             self.load(files[index])
 
-    def _clear_recent(self) -> None:
+    def clear_recent(self) -> None:
+        """File › Recent files › Clear the list."""
         self.settings.clear_recent_files()
         self._update_recent_menu()
 
+    def _show_mode(self, mode: str) -> None:
+        self.pages.setCurrentWidget(self.text_view if mode == Mode.TEXT else self.editor)
+
     def show_as_text(self) -> None:
         """Show the program as instruction-list text."""
-        if self.pages.currentWidget() is self.text_view:
+        if self.model.showing_text:
             return
         text = self.program_text()
         if text is None:
             return
         self.text_view.setPlainText(bad_bytes_shown(text))
         self.text_view.document().setModified(False)
-        self.pages.setCurrentWidget(self.text_view)
+        self.model.set_mode(Mode.TEXT)
 
     def show_as_ladder(self) -> bool:
         """Parse the text view and show it as ladder; errors stay in the text view."""
-        if self.pages.currentWidget() is not self.text_view:
+        if not self.model.showing_text:
             return True
         from ladderworks.core.il import parse
 
@@ -564,11 +327,11 @@ class MainWindow(FileActions, QMainWindow):
             self.errors.show()
             return False
         self.failed_path = None
-        self.editor.set_program(result.program)
-        self.pages.setCurrentWidget(self.editor)
+        self.model.set_program(result.program)
+        self.model.set_mode(Mode.LADDER)
         self._program_shown(result.program)
         if modified:
-            self.editor.mark_modified()
+            self.model.mark_modified()
         self._update_title()
         return True
 
@@ -578,23 +341,20 @@ class MainWindow(FileActions, QMainWindow):
         """Check the program (grid and text rules) and list the diagnostics."""
         if not self.show_as_ladder():
             return self.errors.diagnostics()
-        program, diagnostics = self.editor.program()
+        program, diagnostics = self.model.program()
         if program is not None:
             diagnostics = diagnostics + compile_step.check(program)
         self.errors.set_diagnostics(diagnostics)
         self.errors.show()
-        self._show_message(
-            translate("MainWindow", "Check: {0} error(s)").format(
-                sum(1 for d in diagnostics if d.is_error)
-            )
-        )
+        errors = sum(1 for d in diagnostics if d.is_error)
+        self._show_message(lambda: translate("MainWindow", "Check: {0} error(s)").format(errors))
         return diagnostics
 
     def compile(self) -> bytes | None:
         """PLC > Compile: the binary PLC program, or None with the errors listed."""
         if not self.show_as_ladder():
             return None
-        program, diagnostics = self.editor.program()
+        program, diagnostics = self.model.program()
         binary: bytes | None = None
         if program is not None and not has_errors(diagnostics):
             binary, more = compile_step.compile_program(program)
@@ -602,11 +362,9 @@ class MainWindow(FileActions, QMainWindow):
         self.errors.set_diagnostics(diagnostics)
         if binary is None:
             self.errors.show()
-            self._show_message(
-                translate("MainWindow", "Compile failed: {0} error(s)").format(
-                    sum(1 for d in diagnostics if d.is_error)
-                )
-            )
+            errors = sum(1 for d in diagnostics if d.is_error)
+            self._show_message(lambda: translate(
+                "MainWindow", "Compile failed: {0} error(s)").format(errors))
         else:
             assert program is not None
             self._show_message(self._load_into_plc(binary, program))
@@ -635,14 +393,21 @@ class MainWindow(FileActions, QMainWindow):
 
     def go_to_diagnostic(self, diagnostic: Diagnostic) -> None:
         """Jump to the diagnostic's cell in the ladder, or its line in the text view."""
-        if self.pages.currentWidget() is self.text_view or (
-            diagnostic.network is None and diagnostic.line
-        ):
-            if self.pages.currentWidget() is not self.text_view:
+        if self.model.showing_text or (diagnostic.network is None and diagnostic.line):
+            if not self.model.showing_text:
                 self.show_as_text()
             self.text_view.go_to(diagnostic.line, diagnostic.column)
             return
         self.editor.go_to(diagnostic)
+
+    def show_find(self, replacing: bool = False) -> FindReplaceDialog | None:
+        """Edit › Find (Ctrl+F) / Replace (Ctrl+H): addresses and symbols in the ladder."""
+        if not self.show_as_ladder():
+            return None
+        if self.find_dialog is None:
+            self.find_dialog = FindReplaceDialog(self.editor, self)
+        self.find_dialog.start(replacing)
+        return self.find_dialog
 
     # -- help and closing ----------------------------------------------------------------
 
@@ -659,8 +424,8 @@ class MainWindow(FileActions, QMainWindow):
     def instruction_at_cursor(self) -> str:
         """The instruction help should show: the element at the cursor, else the palette's."""
         index, row, col = self.editor.cursor_cell
-        if index < len(self.editor.networks):
-            found = self.editor.networks[index].element_at(row, col)
+        if index < len(self.model.networks):
+            found = self.model.networks[index].element_at(row, col)
             if found is not None:
                 element = found[1]
                 if isinstance(element, FunctionBox):
@@ -708,6 +473,7 @@ class MainWindow(FileActions, QMainWindow):
             event.ignore()
             return
         self.settings.set_window_state(self.saveGeometry(), self.saveState())
+        self.settings.set_zoom(self.editor.zoom(), self.fit_width.enabled)
         self.autosaver.timer.stop()
         self.recovery.close()  # saved or discarded: the recovery copy goes
         if self.help_window is not None:

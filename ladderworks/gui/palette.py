@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent, QSize, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QSize, Qt, Signal
 from PySide6.QtGui import QAction, QFont, QStandardItemModel
 from PySide6.QtWidgets import (
     QComboBox,
@@ -17,10 +17,11 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.instructions import MANUAL_ORDER, PMC_ORDER, lookup
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import instruction_title
 
 
-class ToolPalette(QDockWidget):
+class ToolPalette(Retranslating, QDockWidget):
     """A dock with one button per tool action and the drop-down of functional instructions."""
 
     function_chosen = Signal(str)  # instruction name
@@ -41,6 +42,9 @@ class ToolPalette(QDockWidget):
             button.setIconSize(QSize(24, 24))
             button.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Fixed)
             button.setAutoRaise(True)
+            # no Tab stop: letter keys in the grid and the Tools menu pick tools, and Tab from
+            # the grid reaches the function list at once rather than after fifteen buttons
+            button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
             layout.addWidget(button)
             self.buttons.append(button)
         self._function_label = QLabel(body)
@@ -64,6 +68,7 @@ class ToolPalette(QDockWidget):
         scroll.setWidget(body)
         scroll.setWidgetResizable(True)
         scroll.setFrameShape(QFrame.Shape.NoFrame)
+        scroll.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         scroll.setMaximumWidth(body.maximumWidth() + scroll.verticalScrollBar().sizeHint().width())
         self.setWidget(scroll)
@@ -112,9 +117,3 @@ class ToolPalette(QDockWidget):
             title = instruction_title(spec)
             self.functions.setItemText(index, f"{spec.name} — {title}")
             self.functions.setItemData(index, title, Qt.ItemDataRole.ToolTipRole)
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)

@@ -20,6 +20,7 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.il.program import FANUC, Program
+from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
 
@@ -105,17 +106,40 @@ def _table(parent: QWidget, name: str, headers: list[str],
     return table
 
 
-class ProgramPropertiesDialog(QDialog):
+class ProgramPropertiesDialog(Retranslating, QDialog):
     """Read-only tabs: General, Title (`%@1`), System parameters (`%@0`), I/O modules (`%@5`),
     Sections."""
 
     def __init__(self, program: Program, path: Path | None, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("dialog_program_properties")
-        self.setWindowTitle(translate("ProgramProperties", "Program properties"))
+        self.program = program
+        self.path = path
         self.tabs = QTabWidget(self)
         self.tabs.setObjectName("properties_tabs")
         self.tables: dict[str, QTableWidget] = {}
+        self._fill()
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close, self)
+        buttons.rejected.connect(self.reject)
+        buttons.accepted.connect(self.accept)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.tabs, 1)
+        layout.addWidget(buttons)
+        self.resize(720, 440)
+
+    def retranslate(self) -> None:
+        """Rebuild the tabs in the new language on a live switch (the shown tab stays)."""
+        self._fill()
+
+    def _fill(self) -> None:
+        program, path = self.program, self.path
+        self.setWindowTitle(translate("ProgramProperties", "Program properties"))
+        shown = self.tabs.currentIndex()
+        while self.tabs.count():
+            page = self.tabs.widget(0)
+            self.tabs.removeTab(0)
+            if page is not None:
+                page.deleteLater()
         pages: list[tuple[str, str, list[str], Sequence[tuple[str, ...]]]] = [
             ("properties_general", translate("ProgramProperties", "General"),
              [translate("ProgramProperties", "Property"),
@@ -143,13 +167,7 @@ class ProgramPropertiesDialog(QDialog):
             table = _table(self.tabs, name, headers, rows)
             self.tables[name] = table
             self.tabs.addTab(table, title)
-        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close, self)
-        buttons.rejected.connect(self.reject)
-        buttons.accepted.connect(self.accept)
-        layout = QVBoxLayout(self)
-        layout.addWidget(self.tabs, 1)
-        layout.addWidget(buttons)
-        self.resize(720, 440)
+        self.tabs.setCurrentIndex(max(shown, 0))
 
     def texts(self, name: str) -> list[list[str]]:
         """The cells of one tab's table, row by row (for tests)."""

@@ -11,9 +11,10 @@ from dataclasses import dataclass
 from datetime import datetime
 from pathlib import Path
 
-from PySide6.QtCore import QLockFile, QObject, QStandardPaths, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QLockFile, QObject, QStandardPaths, QTimer, Signal
 
 from ladderworks.gui.files import atomic_write_bytes
+from ladderworks.gui.os_errors import os_error_text
 
 AUTOSAVE_MS = 30_000  # a copy of unsaved work every 30 s ...
 PAUSE_MS = 2_000  # ... and this long after the last structural edit
@@ -178,6 +179,8 @@ class Autosaver(QObject):
         try:
             path = self.store.write(snapshot)
         except OSError as error:
-            self.failed.emit(error.strerror or str(error))
+            self.failed.emit(QCoreApplication.translate(
+                "Recovery", "Cannot write the recovery copy in {0}: {1}").format(
+                self.store.folder, os_error_text(error)))
             return
         self.copied.emit(str(path))

@@ -62,3 +62,28 @@ class Settings:
         self._store.setValue("window/geometry", geometry)
         self._store.setValue("window/state", state)
         self._store.sync()
+
+    def name_display(self) -> str:
+        """What the ladder shows with each element ("address", "symbol", "comment"), or ""."""
+        value = self._store.value("view/names", "")
+        return str(value) if isinstance(value, str) else ""
+
+    def set_name_display(self, value: str) -> None:
+        """Remember what the ladder shows with each element."""
+        self._store.setValue("view/names", value)
+        self._store.sync()
+
+    def zoom(self) -> tuple[float, bool]:
+        """The ladder's saved zoom factor and whether it fits the width (1.0, False at first)."""
+        try:
+            factor = float(self._store.value("view/zoom", 1.0))  # type: ignore[arg-type]
+        except (TypeError, ValueError):
+            factor = 1.0
+        fit = str(self._store.value("view/fit_width", "false")).lower() == "true"
+        return factor, fit
+
+    def set_zoom(self, factor: float, fit_width: bool) -> None:
+        """Remember the ladder's zoom."""
+        self._store.setValue("view/zoom", factor)
+        self._store.setValue("view/fit_width", fit_width)
+        self._store.sync()

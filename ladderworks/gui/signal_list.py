@@ -3,7 +3,7 @@ and use one in the ladder."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent, Signal
+from PySide6.QtCore import QCoreApplication, Signal
 from PySide6.QtGui import QShowEvent
 from PySide6.QtWidgets import (
     QAbstractItemView,
@@ -21,6 +21,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.signals import Signal as PlcSignal
 from ladderworks.core.signals import fold, load_signals, search
 from ladderworks.core.symbols import Symbol, SymbolTable
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import ui_is_turkish
 
 translate = QCoreApplication.translate
@@ -52,7 +53,7 @@ def symbol_matches(symbols: SymbolTable, query: str) -> list[tuple[Address, Symb
     return [found for group in groups for found in sorted(group, key=_order)]
 
 
-class SignalListDock(QDockWidget):
+class SignalListDock(Retranslating, QDockWidget):
     """A searchable table of every named signal; double-click picks one."""
 
     address_chosen = Signal(object)  # the Address of the chosen signal
@@ -73,6 +74,7 @@ class SignalListDock(QDockWidget):
         self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         self.table.verticalHeader().hide()
+        self.table.setTabKeyNavigation(False)  # Tab leaves the table (arrows move in it)
         header = self.table.horizontalHeader()
         # Interactive, sized once after each fill: ResizeToContents would re-measure every
         # column on every inserted item (quadratic, tens of seconds for the 1,064 signals).
@@ -185,10 +187,3 @@ class SignalListDock(QDockWidget):
         if self._stale:
             self.show_matches(self.query.text())
         super().showEvent(event)
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)
-

@@ -1,27 +1,28 @@
-"""How the console names an address: the program's symbol first, else the manual's signal."""
+"""How the console names an address (the program's symbol first, else the manual's signal)."""
 
 from __future__ import annotations
 
+from PySide6.QtCore import QCoreApplication
+
 from ladderworks.core.address import Address
+from ladderworks.core.il import Instruction, print_instruction
+from ladderworks.core.ladder import Coil, Contact, FunctionBox, LadderNetwork, open_cells
+from ladderworks.core.naming import address_names
 from ladderworks.core.signals import signal_at
 from ladderworks.core.symbols import SymbolTable, describe
 from ladderworks.gui.translation import ui_is_turkish
 
 
 def name_and_text(address: object, symbols: SymbolTable | None) -> tuple[str, str] | None:
-    """(name, description): the program's symbol and comment, else the manual's signal name
-    and its description in the UI language; None for an address with neither."""
+    """(name, description): the program's symbol and comment, each falling back to the manual's
+    signal name and its description in the UI language (`core.naming`); None for an address
+    with neither."""
     if not isinstance(address, Address):
         return None
-    if symbols is not None:
-        found = symbols.lookup(address)
-        if found is not None and found.symbol:
-            return found.symbol, " / ".join(found.comments)
-    signal = signal_at(address)
-    if signal is None:
+    names = address_names(address, symbols, turkish=ui_is_turkish())
+    if not names.symbol and not names.comment:
         return None
-    own = signal.turkish if ui_is_turkish() else signal.english
-    return signal.name, own or signal.english
+    return names.symbol, names.comment
 
 
 def labelled(address: Address, symbols: SymbolTable | None) -> str:
@@ -43,3 +44,43 @@ def tooltip(address: Address, symbols: SymbolTable | None) -> str:
         lines[0] += f"  {signal.name}"
         lines += [text for text in (signal.turkish, signal.english, signal.notes) if text]
     return "\n".join(lines)
+
+
+def element_tooltip(network: LadderNetwork, row: int, col: int,
+                    symbols: SymbolTable | None) -> str:
+    """Tooltip of a cell's contact or coil: address, symbol, its comments; else ""."""
+    found = network.element_at(row, col)
+    if found is None or not isinstance(found[1], Contact | Coil) or found[1].address is None:
+        return ""
+    element = found[1]
+    address = element.address
+    if address is None:
+        return ""
+    text = tooltip(address, symbols)
+    return text + (f"\n// {element.comment}" if element.comment else "")
+
+
+def cell_status(network: LadderNetwork, index: int, row: int, col: int,
+                symbols: SymbolTable | None) -> str:
+    """Status-bar text of network `index`'s cell: the cell, and the address with its signal
+    name and comment (or the function with its parameters)."""
+    parts = [QCoreApplication.translate("LadderEditor", "N{0} row {1} col {2}").format(
+        index + 1, row + 1, col + 1)]
+    if network.label:
+        parts.append(network.label)
+    found = network.element_at(row, col)
+    if found is not None:
+        element = found[1]
+        if isinstance(element, Contact | Coil) and element.address is not None:
+            parts.append(str(element.address))
+            described = name_and_text(element.address, symbols)
+            if described is not None:
+                parts.append(" — ".join(text for text in described if text))
+            if element.comment:
+                parts.append(element.comment)
+        elif isinstance(element, FunctionBox):
+            parts.append(print_instruction(Instruction(element.name, params=element.params)))
+    if (row, col) in open_cells(network):  # the red mark, in words (keyboard users)
+        parts.append(QCoreApplication.translate(
+            "LadderEditor", "open circuit here: draw a wire or an element"))
+    return "  |  ".join(parts)

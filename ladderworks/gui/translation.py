@@ -192,13 +192,14 @@ class UiLanguage:
         for translator in self._translators:
             app.removeTranslator(translator)
         self._translators = []
-        app_translator = self._app_translator(language)
-        if app_translator is not None:
-            self._translators.append(app_translator)
         qt_translator = QTranslator()
         qt_dir = QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)
         if language != "en" and qt_translator.load(f"qtbase_{language}", qt_dir):
             self._translators.append(qt_translator)
+        # ours last: Qt asks the translator installed last first, so ours fills Qt's gaps
+        app_translator = self._app_translator(language)
+        if app_translator is not None:
+            self._translators.append(app_translator)
         for translator in self._translators:
             app.installTranslator(translator)
         QLocale.setDefault(QLocale(QLocale.Language.Turkish if language == "tr"

@@ -17,7 +17,7 @@ from ladderworks.paths import EXAMPLES
 from tests.hypothesis_profiles import examples
 
 CRASHERS = Path(__file__).resolve().parent.parent / "data" / "fuzz"
-COMMANDS = ("check", "format", "ladder", "mnemonic", "compile", "run")
+COMMANDS = ("check", "format", "ladder", "mnemonic", "compile", "run", "xref")
 
 _NAMES = [spec.text_name for spec in ALL] + ["SUB", "FOO", "RD.XX", "SP", "SPE", "CALL"]
 _SUBS = [str(spec.sub) for spec in PMC_FUNCTIONS if spec.sub] + ["1", "2", "64", "219", "999"]

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ladderworks.core.address import parse_address
-from ladderworks.gui.docks import PlcDocks, install_plc_docks
+from ladderworks.gui.docks.plc_docks import PlcDocks
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.plc_session import PlcSession
 
@@ -12,9 +12,7 @@ SWITCH = ("X2.1", "X2.3", "X2.5")
 
 def plc_docks(window: MainWindow) -> PlcDocks:
     """The window's PLC docks, their session switched to the virtual clock."""
-    docks = getattr(window, "plc_docks", None)
-    if docks is None:
-        docks = install_plc_docks(window, PlcSession(window, realtime=False))
+    docks = window.plc_docks
     docks.session.realtime = False
     return docks
 

@@ -6,12 +6,13 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from PySide6.QtWidgets import QMenu
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
+from ladderworks.core.il import parse
 from ladderworks.gui.docks import alarms as alarm_panel
 from ladderworks.gui.docks.alarms import AlarmDock, plc_time_text
+from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.translation import UiLanguage
 from tests.gui.plc_examples import running_session
@@ -87,17 +88,26 @@ def test_alarm_file_action_and_missing_messages(
     assert "Cannot read missing.dat" in dock.file_label.text()
 
 
-def test_install_adds_menus(qtbot: QtBot, window: object) -> None:
-    session = PlcSession(realtime=False)
-    dock = alarm_panel.install(window, session)  # type: ignore[arg-type]
-    file_menu = window.findChild(QMenu, "menu_file")  # type: ignore[attr-defined]
+def test_the_window_puts_its_actions_in_the_menus(window: MainWindow) -> None:
+    dock = window.plc_docks.alarms
+    file_menu = window.menus.menus["menu_file"]
     names = [action.objectName() for action in file_menu.actions()]
     assert "action_alarm_file" in names
     assert names.index("action_alarm_file") < names.index("action_quit")
-    view = window.findChild(QMenu, "menu_view")  # type: ignore[attr-defined]
+    view = window.menus.menus["menu_view"]
     assert "action_dock_alarms" in [action.objectName() for action in view.actions()]
-    assert window.actions_by_name["action_alarm_reset"] is dock.reset_action  # type: ignore
-    assert dock.objectName() == "alarmDock"
+    plc = window.menus.menus["menu_plc"]
+    assert dock.reset_action in plc.actions()
+    assert window.actions_by_name["action_alarm_reset"] is dock.reset_action
+    assert dock.objectName() == "alarmDock" and dock.isVisible()  # shown by default
+
+
+def test_an_opened_programs_messages_reach_the_panel(window: MainWindow) -> None:
+    program = parse("%@3\nRD X0.0\nWRT A0.0\n%@4\nA0.0\t1000 SPINDLE ALARM\n%\n").program
+    assert len(program.messages) == 1
+    window.program_opened.emit(program)  # the window tells the panel, nothing else does
+    assert window.plc_docks.alarms.program_messages == 1
+    assert "(%@4): 1" in window.plc_docks.alarms.file_label.text()
 
 
 def test_turkish(qtbot: QtBot, panel: tuple[PlcSession, AlarmDock]) -> None:

@@ -90,3 +90,19 @@ def test_passive_element_is_tagged(qtbot: QtBot, window: MainWindow) -> None:
     session.step(8)
     assert session.bit(parse_address("Y0.0")) == 1
     assert view.live.overlays[2].power.coils
+
+
+def test_element_names_choice_restacks_the_diagnostic_view(qtbot: QtBot,
+                                                           window: MainWindow) -> None:
+    from PySide6.QtGui import QAction
+
+    docks = loaded(window, TIMER)
+    view = docks.diagnostic.view
+    window.findChild(QAction, "action_names_comment").trigger()
+    tall = list(view.layout_.tops)
+    window.findChild(QAction, "action_names_address").trigger()
+    assert view.layout_.tops[1] < tall[1] and view.layout_.tops[2] < tall[2]
+    for item, overlay, top in zip(view.network_items, view.live.overlays, view.layout_.tops,
+                                  strict=True):
+        assert item.pos().y() == overlay.pos().y() == top  # the live power stays on its rung
+        assert item.boundingRect() == overlay.boundingRect()

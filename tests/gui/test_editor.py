@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 from PySide6.QtCore import QPoint, Qt, QTimer
+from PySide6.QtGui import QColor
 from PySide6.QtWidgets import QApplication, QMenu
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
-from ladderworks.core.ladder import Coil, Contact, FunctionBox
+from ladderworks.core.ladder import Coil, Contact, FunctionBox, Wire
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.tools import Tool
 from ladderworks.paths import EXAMPLES
@@ -60,11 +61,11 @@ def test_function_table_refuses_a_wrong_parameter(drawer: Drawer, window: MainWi
     assert dialog.isVisible()
     assert dialog.warning.text() == "TMRB: parameter 1 (Timer number) must be 1 to 100, found 101"
     assert dialog.table.currentRow() == 0
-    assert (0, 2) not in window.editor.networks[0].cells
+    assert window.editor.networks[0].cells == {}
     dialog.set_value("timer", "7")
     with qtbot.waitSignal(dialog.accepted):
         dialog.buttons.button(dialog.buttons.StandardButton.Ok).click()
-    box = window.editor.networks[0].cells[(0, 2)]
+    box = window.editor.networks[0].cells[(0, 8)]  # right-aligned: W1 at the coil column
     assert isinstance(box, FunctionBox) and box.name == "TMRB" and box.params == (7, 500)
 
 
@@ -186,13 +187,62 @@ def test_zoom(window: MainWindow) -> None:
     assert view.zoom() < 1.0
 
 
-def test_coil_in_a_contact_column_is_diagnosed_at_its_cell(drawer: Drawer,
-                                                           window: MainWindow) -> None:
+def test_a_coil_clicked_in_a_contact_column_goes_to_the_output_column_wired(
+        drawer: Drawer, window: MainWindow) -> None:
     drawer.element(0, 0, 0, "I", "X1.0")
-    drawer.element(0, 0, 1, "O", "Y1.0")
-    assert isinstance(window.editor.networks[0].cells[(0, 1)], Coil)
-    diagnostics = window.check()
-    assert any(d.cell == (0, 1) or d.cell == (0, 2) for d in diagnostics if d.is_error)
+    item = window.editor.network_items[0]
+    assert [mark.cell for mark in item.open_ends] == [(0, 1)]  # marked while drawing
+    drawer.element(0, 0, 3, "O", "Y1.0")  # the address editor opens on the coil's new cell
+    net = window.editor.networks[0]
+    assert net.cells[(0, net.coil_column)] == Coil(parse_address("Y1.0"))
+    assert all(isinstance(net.cells[(0, c)], Wire) for c in range(1, net.coil_column))
+    assert item.open_ends == []
+    assert window.check() == []
+    program, diagnostics = window.editor.program()
+    assert diagnostics == [] and program is not None
+    assert [str(i.operand) for i in program.instructions()] == ["X1.0", "Y1.0"]
+
+
+def test_an_open_circuit_is_marked_at_the_cell_as_the_user_draws(
+        drawer: Drawer, window: MainWindow, qtbot: QtBot) -> None:
+    drawer.element(0, 0, 0, "I", "X1.0")
+    drawer.element(0, 0, 1, "I", "X1.1")
+    drawer.element(0, 0, 9, "O", "Y1.0")
+    view = window.editor
+    assert view.network_items[0].open_ends == []
+    drawer.key("D")
+    drawer.click(0, 0, 1)  # deleting the middle contact breaks the rung there
+    item = view.network_items[0]
+    assert [(m.cell, m.gap) for m in item.open_ends] == [((0, 1), True)]
+    image = view.viewport().grab().toImage()
+    centre = view.mapFromScene(view.cell_rect(0, 0, 1).center())
+    reds = sum(1 for dx in range(-30, 31) for dy in range(-40, 41)
+               if _is_red(image.pixelColor(centre.x() + dx, centre.y() + dy)))
+    assert reds > 20  # the red gap is painted on that cell
+    view.move_cursor(0, 0, 1)
+    assert "open circuit here" in window.cell_label.text()
+    view.move_cursor(0, 0, 0)
+    assert "open circuit" not in window.cell_label.text()
+    view.undo_stack.undo()
+    assert view.network_items[0].open_ends == []
+
+
+def _is_red(colour: QColor) -> bool:
+    return colour.red() > 180 and colour.green() < 90 and colour.blue() < 90
+
+
+def test_the_or_tool_then_a_contact_lengthens_the_branch(drawer: Drawer,
+                                                         window: MainWindow) -> None:
+    drawer.element(0, 0, 0, "I", "X1.0")
+    drawer.element(0, 0, 5, "O", "Y1.0")
+    drawer.key("R")
+    drawer.click(0, 0, 0)
+    drawer.type_inline("X1.1")
+    drawer.element(0, 1, 1, "I", "X1.2")
+    net = window.editor.networks[0]
+    assert (0, 0) in net.links and (0, 2) in net.links and (0, 1) not in net.links
+    assert window.check() == []
+    assert window.editor.network_items[0].open_ends == []
 
 
 def test_drag_selects_a_rectangle_that_copies_and_pastes_whole(window: MainWindow,

@@ -68,7 +68,8 @@ def test_language_switches_live_and_is_remembered(window: MainWindow, settings: 
     with qtbot.waitSignal(window.language_changed):
         window.actions_by_name["action_language_tr"].trigger()
     assert window.actions_by_name["action_save"].text() == "&Kaydet"
-    assert window.tool_actions[next(iter(window.tool_actions))].text() == "SEÇİM"
+    select = window.tool_actions[next(iter(window.tool_actions))]
+    assert (select.iconText(), select.text()) == ("SEÇİM", "SEÇİM\tS")  # the key in menus
     titles = [a.text().replace("&", "") for a in window.menuBar().actions()]
     assert titles[:3] == ["Dosya", "Düzen", "Görünüm"]
     assert window.errors.windowTitle() == "Hatalar"

@@ -13,6 +13,7 @@ from ladderworks.core.address import Address, Area, parse_address
 from ladderworks.core.il import parse_file
 from ladderworks.gui.docks.table_entries import TableKind
 from ladderworks.gui.docks.tables import PlcTablesDock
+from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.translation import UiLanguage
 from ladderworks.paths import EXAMPLES
@@ -203,22 +204,24 @@ def test_turkish(qtbot: QtBot, tables: tuple[PlcSession, PlcTablesDock]) -> None
         language.apply("en")
 
 
-def test_every_dock_installs_with_one_line(qtbot: QtBot, window: object) -> None:
-    from PySide6.QtWidgets import QDockWidget, QMenu
+def test_every_plc_dock_has_its_view_toggle(qtbot: QtBot, window: MainWindow) -> None:
+    from PySide6.QtWidgets import QDockWidget
 
-    from ladderworks.gui.docks import alarms, bit_display, tables, time_chart
-
-    session = PlcSession(realtime=False)
-    docks = [module.install(window, session)  # type: ignore[arg-type]
-             for module in (bit_display, time_chart, alarms, tables)]
-    assert [d.objectName() for d in docks] == ["bitDisplayDock", "timeChartDock", "alarmDock",
+    docks = window.plc_docks
+    shown = [docks.bit_display, docks.time_chart, docks.alarms, docks.tables]
+    assert [d.objectName() for d in shown] == ["bitDisplayDock", "timeChartDock", "alarmDock",
                                                "plcTablesDock"]
-    found = window.findChildren(QDockWidget)  # type: ignore[attr-defined]
-    assert all(dock in found for dock in docks)
-    view = window.findChild(QMenu, "menu_view")  # type: ignore[attr-defined]
+    found = window.findChildren(QDockWidget)
+    assert all(dock in found for dock in shown)
+    view = window.menus.menus["menu_view"]
     names = [action.objectName() for action in view.actions()]
     for name in ("action_dock_bit_display", "action_dock_time_chart", "action_dock_alarms",
                  "action_dock_plc_tables"):
         assert name in names
-        window.actions_by_name[name].trigger()  # type: ignore[attr-defined]
-    assert all(dock.isVisible() for dock in docks)
+        if not window.actions_by_name[name].isChecked():
+            window.actions_by_name[name].trigger()
+        assert window.actions_by_name[name].isChecked()
+    # tabbed for small screens: each toggle brought its dock to the front of its group
+    assert docks.bit_display in window.tabifiedDockWidgets(docks.tables)
+    assert docks.alarms in window.tabifiedDockWidgets(docks.time_chart)
+    assert docks.tables.isVisible() and docks.time_chart.isVisible()

@@ -206,3 +206,71 @@ def test_real_time_samples_arrive_in_order(qtbot: QtBot) -> None:
     assert list(dock.record.seqs) == list(range(count))
     times = list(dock.record.times)
     assert times == list(range(times[0], times[0] + 8 * count, 8))  # virtual ms, every scan
+
+
+def test_a_value_lane_writes_its_values_like_a_bus(
+        qtbot: QtBot, relay: tuple[PlcSession, TimeChartDock]) -> None:
+    session, dock = relay
+    dock.resize(900, 400)
+    dock.signals_edit.setText("R1.4 D10:2")
+    assert dock.start()
+    d10 = parse_address("D10")
+    for value in (0, 148, 4660):
+        session.write(d10, value, 2)
+        session.run_scans(40)
+    qtbot.waitUntil(lambda: len(dock.record) == 120)
+    dock.stop()
+    dock.fit()
+    qtbot.waitUntil(lambda: len(dock.lane_texts(1)) == 3)
+    texts = dock.lane_texts(1)
+    assert [text for _time, text in texts] == ["0 (0000h)", "148 (0094h)", "4660 (1234h)"]
+    assert [time for time, _text in texts] == [0.0, 320.0, 640.0]
+    assert dock.lane_texts(0) == []  # a bit lane is a step trace, no text
+    # zoomed out until a segment is narrower than its text, the value is not written over
+    dock.set_time_range(-100_000, 100_000)
+    qtbot.waitUntil(lambda: dock.lane_texts(1) == [])
+
+
+def test_every_chart_button_is_in_view_in_a_narrow_dock(
+        qtbot: QtBot, relay: tuple[PlcSession, TimeChartDock]) -> None:
+    _session, dock = relay
+    UiLanguage().apply("tr")  # the longer words
+    try:
+        narrowest = dock.minimumSizeHint().width()  # what a dock at 1024 px gets
+        assert narrowest <= 400
+        dock.resize(narrowest, 420)
+        qtbot.waitUntil(lambda: dock.width() == narrowest)
+        for name in ("action_time_chart_csv", "action_time_chart_png",
+                     "action_time_chart_ladder3"):
+            button = dock.toolbar.buttons[name]
+            assert button.isVisible(), name
+        assert dock.toolbar.hidden_buttons() == []
+        # the buttons wrap below each other instead of hiding
+        buttons = dock.toolbar.buttons
+        assert buttons["action_time_chart_png"].y() > buttons["action_time_chart_start"].y()
+    finally:
+        UiLanguage().apply("en")
+
+
+def test_the_time_axis_label_stays_above_the_cursor_readout(
+        qtbot: QtBot, relay: tuple[PlcSession, TimeChartDock]) -> None:
+    session, dock = relay
+    dock.signals_edit.setText("R1.4 R1.7 D10:2 D12:4 R2.0 R2.1 R2.2 R2.3")
+    assert dock.start()
+    session.run_scans(20)
+    qtbot.waitUntil(lambda: len(dock.record) == 20)
+    dock.stop()
+    readout = dock.cursor_label
+    line = readout.fontMetrics().height()
+    dock.resize(380, 600)
+    # eight lanes' values wrap onto a second line, and the readout asks for its height
+    qtbot.waitUntil(lambda: readout.minimumHeight() >= 2 * line)
+    dock.resize(380, 200)  # smaller than the chart needs: the dock keeps its minimum
+    qtbot.waitUntil(lambda: dock.height() >= dock.minimumSizeHint().height())
+    qtbot.waitUntil(lambda: readout.height() >= 2 * line)
+    axis = dock.plot.getPlotItem().getAxis("bottom")
+    label = axis.label.mapRectToScene(axis.label.boundingRect())
+    label_bottom = dock.plot.mapTo(dock.widget(), dock.plot.mapFromScene(label.bottomLeft()))
+    assert dock.plot.geometry().bottom() < readout.geometry().top()
+    assert label_bottom.y() <= readout.geometry().top()
+    assert readout.geometry().bottom() <= dock.widget().height()

@@ -19,6 +19,7 @@ from ladderworks.core.ladder.edits import (
     insert_row,
     invert,
     place,
+    place_wired,
     replace_element,
     set_address,
     set_comment,
@@ -43,6 +44,8 @@ from ladderworks.core.ladder.model import (
     LadderNetwork,
     Wire,
 )
+from ladderworks.core.ladder.open_circuit import OpenEnd, open_cells, open_ends
+from ladderworks.core.ladder.wiring import target_cell
 
 __all__ = [
     "BOX_WIDTH",
@@ -60,6 +63,7 @@ __all__ = [
     "FunctionBox",
     "LadderDocument",
     "LadderNetwork",
+    "OpenEnd",
     "Selection",
     "Wire",
     "add_parallel",
@@ -73,8 +77,11 @@ __all__ = [
     "insert_row",
     "invert",
     "network_from_text",
+    "open_cells",
+    "open_ends",
     "paste",
     "place",
+    "place_wired",
     "replace_element",
     "set_address",
     "set_comment",
@@ -82,4 +89,5 @@ __all__ = [
     "set_lead",
     "set_network_comments",
     "set_params",
+    "target_cell",
 ]

@@ -20,6 +20,7 @@ from ladderworks.core.ladder.model import (
     Wire,
     flip,
 )
+from ladderworks.core.ladder.wiring import connect, target_cell
 
 
 class EditRefused(Refused):
@@ -87,6 +88,16 @@ def place(network: LadderNetwork, row: int, col: int, element: Element) -> Edit:
     diagnosed unless in the coil column; contacts and wires only in contact columns."""
     work = network.copy()
     _put(work, row, col, element)
+    return _change(network, work)
+
+
+def place_wired(network: LadderNetwork, row: int, col: int, element: Element) -> Edit:
+    """The placing tools: put an element where it belongs (a coil in the coil column, a box
+    right-aligned before it; `wiring.target_cell`) and wire it to its neighbours."""
+    row, col = target_cell(network, row, col, element)
+    work = network.copy()
+    _put(work, row, col, element)
+    connect(work, (row, col), element)
     return _change(network, work)
 
 

@@ -5,13 +5,12 @@ from __future__ import annotations
 from datetime import datetime
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QEvent, Qt
+from PySide6.QtCore import QCoreApplication, QLocale, Qt
 from PySide6.QtGui import QAction, QBrush, QColor
 from PySide6.QtWidgets import (
     QDockWidget,
     QFileDialog,
     QLabel,
-    QMainWindow,
     QToolBar,
     QTreeWidget,
     QTreeWidgetItem,
@@ -24,8 +23,9 @@ from ladderworks.core.alarms import ActiveAlarm, AlarmTable, format_number, load
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il.program import Program
 from ladderworks.gui.diagnostic_texts import diagnostic_text
-from ladderworks.gui.docks.dock_menus import add_dock, find_menu, insert_before, register_action
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
 
@@ -34,16 +34,18 @@ COLUMNS = 5  # number, address, PLC time, clock, message
 
 
 def plc_time_text(ms: int) -> str:
-    """PLC (virtual clock) time as `m:ss.mmm` (`h:mm:ss.mmm` after an hour)."""
+    """PLC (virtual clock) time as `m:ss.mmm` (`h:mm:ss.mmm` after an hour), with the UI
+    language's decimal sign (`0:01,250` in Turkish)."""
     seconds, millis = divmod(ms, 1000)
     minutes, seconds = divmod(seconds, 60)
     hours, minutes = divmod(minutes, 60)
+    point = QLocale().decimalPoint()
     if hours:
-        return f"{hours}:{minutes:02d}:{seconds:02d}.{millis:03d}"
-    return f"{minutes}:{seconds:02d}.{millis:03d}"
+        return f"{hours}:{minutes:02d}:{seconds:02d}{point}{millis:03d}"
+    return f"{minutes}:{seconds:02d}{point}{millis:03d}"
 
 
-class AlarmDock(QDockWidget):
+class AlarmDock(Retranslating, QDockWidget):
     """The alarms the A area has raised, newest first; RESET clears those whose bit is 0.
 
     Each row: the message number (A byte × 8 + bit), the A bit, the PLC time it rose, the
@@ -103,7 +105,7 @@ class AlarmDock(QDockWidget):
         except OSError as error:
             self.file_label.setText(
                 translate("AlarmPanel", "Cannot read {0}: {1}").format(
-                    Path(path).name, error.strerror
+                    Path(path).name, os_error_text(error)
                 )
             )
             self.file_label.setStyleSheet("color:#c00000;")
@@ -250,25 +252,3 @@ class AlarmDock(QDockWidget):
         )
         self._show_file()
         self._fill()
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)
-
-
-def install(window: QMainWindow, session: PlcSession) -> AlarmDock:
-    """Add the alarm panel to the console, File → Alarm file and PLC → RESET to its menus."""
-    dock = AlarmDock(session, window)
-    add_dock(window, dock, "action_dock_alarms")
-    opened = getattr(window, "program_opened", None)
-    if opened is not None:
-        opened.connect(dock.use_program)
-    for action in (dock.file_action, dock.reset_action):
-        register_action(window, action)
-    insert_before(find_menu(window, "menu_file"), dock.file_action, "action_quit")
-    plc = find_menu(window, "menu_plc")
-    if plc is not None:
-        plc.addAction(dock.reset_action)
-    return dock

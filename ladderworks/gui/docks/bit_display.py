@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent, QPoint, Qt
+from PySide6.QtCore import QCoreApplication, QPoint, Qt
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import (
     QDockWidget,
@@ -10,7 +10,6 @@ from PySide6.QtWidgets import (
     QHBoxLayout,
     QLabel,
     QLineEdit,
-    QMainWindow,
     QMenu,
     QPushButton,
     QScrollArea,
@@ -21,8 +20,9 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.address import INPUT_AREAS, Address, AddressError, parse_address
 from ladderworks.core.plc.forcing import ForceEntry
-from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
+from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.symbol_text import tooltip
 
 translate = QCoreApplication.translate
@@ -103,7 +103,7 @@ class BitRow:
         return "" if self.value is None else f"{self.value:08b}"
 
 
-class BitDisplayDock(QDockWidget):
+class BitDisplayDock(Retranslating, QDockWidget):
     """Type a byte address (X12, G30, R102 ...) in a box and START: its 8 bits, live.
 
     STOP freezes what is shown. A click on a bit of an input (X, F) forces it to the other
@@ -199,7 +199,7 @@ class BitDisplayDock(QDockWidget):
             named = (self.session.symbols.address_of(text)
                      if self.session.symbols is not None else None)
             if named is None:
-                row.set_error(address_error_text(error))
+                row.set_error(diagnostic_text(error.diagnostic))
                 self._show_row(row, None)
                 return
             address = Address(named.area, named.byte)  # a symbol: its byte is shown
@@ -347,17 +347,3 @@ class BitDisplayDock(QDockWidget):
         bar = self._scroll.verticalScrollBar().sizeHint().width()
         frame = 2 * self._scroll.frameWidth()
         self._scroll.setMinimumWidth(holder.minimumSizeHint().width() + bar + frame)
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)
-
-
-def install(window: QMainWindow, session: PlcSession) -> BitDisplayDock:
-    """Add the bit display to the console (hidden; View → PLC bit display shows it)."""
-    dock = BitDisplayDock(session, window)
-    add_dock(window, dock, "action_dock_bit_display", Qt.DockWidgetArea.RightDockWidgetArea)
-    dock.hide()
-    return dock

@@ -24,10 +24,11 @@ from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, Ladd
 from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
 from ladderworks.gui.docks.live_ladder import LivePower
-from ladderworks.gui.editor.geometry import CELL_H, Layout, cell_origin
+from ladderworks.gui.editor.geometry import Layout, cell_h, cell_origin
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.symbol_text import name_and_text
 
 translate = QCoreApplication.translate
@@ -73,7 +74,22 @@ class DiagnosticView(QGraphicsView):
             self.network_items.append(item)
         self.live.attach(networks, self.layout_.tops, binary, ops)
         width = max((item.boundingRect().width() for item in self.network_items), default=600.0)
-        self.scene_.setSceneRect(QRectF(0, 0, width, max(self.layout_.total_height(), CELL_H)))
+        self.scene_.setSceneRect(QRectF(0, 0, width, max(self.layout_.total_height(), cell_h())))
+
+    def relayout(self) -> None:
+        """The rows changed height (View › Element names): restack the networks."""
+        self.layout_ = Layout()
+        self.layout_.rebuild(self.networks)
+        for item, top in zip(self.network_items, self.layout_.tops, strict=True):
+            item.refresh()
+            item.setPos(0, top)
+        for overlay, top in zip(self.live.overlays, self.layout_.tops, strict=False):
+            overlay.prepareGeometryChange()
+            overlay.setPos(0, top)
+        rect = self.scene_.sceneRect()
+        self.scene_.setSceneRect(QRectF(0, 0, rect.width(),
+                                        max(self.layout_.total_height(), cell_h())))
+        self.viewport().update()
 
     def describe_address(self, address: object) -> tuple[str, str] | None:
         """(symbol, comment) of the program, else (signal name, description) of the manual."""
@@ -86,7 +102,7 @@ class DiagnosticView(QGraphicsView):
     def cell_rect(self, network: int, cell: Cell) -> QRectF:
         """Scene rectangle of a cell."""
         x, y = cell_origin(self.networks[network], *cell)
-        return QRectF(x, y + self.layout_.tops[network], 96.0, CELL_H)
+        return QRectF(x, y + self.layout_.tops[network], 96.0, cell_h())
 
     def viewportEvent(self, event: QEvent) -> bool:
         """Count paints (the benchmark reports the repaint rate)."""
@@ -95,7 +111,7 @@ class DiagnosticView(QGraphicsView):
         return super().viewportEvent(event)
 
 
-class DiagnosticDock(QDockWidget):
+class DiagnosticDock(Retranslating, QDockWidget):
     """PLC TEŞHİS (PLC diagnostic): watch the ladder while the PLC runs; no editing."""
 
     why_requested = Signal(object)  # the Address in the search box (time travel answers)

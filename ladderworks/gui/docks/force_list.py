@@ -18,12 +18,13 @@ from ladderworks.core.il import print_instruction
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.plc.forcing import ForceEntry
 from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.symbol_text import labelled
 
 translate = QCoreApplication.translate
 
 
-class ForceListDock(QDockWidget):
+class ForceListDock(Retranslating, QDockWidget):
     """Forced bits and passive elements of the running program, each with a Release button."""
 
     def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:
@@ -36,6 +37,7 @@ class ForceListDock(QDockWidget):
         self.table = QTableWidget(0, 4, body)
         self.table.setObjectName("forceListTable")
         self.table.verticalHeader().hide()
+        self.table.setTabKeyNavigation(False)  # Tab leaves the dock (issue 18: no Tab trap)
         self.table.horizontalHeader().setStretchLastSection(False)
         self.table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
         layout.addWidget(self.table, 1)

@@ -44,7 +44,7 @@ class OnlineMode(QObject):
         self.actions["action_plc_release"].triggered.connect(lambda: self.release_selected())
         editor.context_actions.append(None)
         editor.context_actions.extend(self.actions[n] for n in ACTION_NAMES[1:])
-        editor.undo_stack.indexChanged.connect(self._edited)
+        editor.model.undo_stack.indexChanged.connect(self._edited)
         self.past: PlcSnapshot | None = None  # time travel: an earlier scan shown instead
         session.snapshot_ready.connect(self._on_snapshot)
         session.program_loaded.connect(self._on_program)
@@ -88,7 +88,7 @@ class OnlineMode(QObject):
             self._say(translate("PlcOnline", "On-line needs a compiled program in the PLC"))
             self._sync_check(False)
             return False
-        ops = match_networks(self.editor.networks, binary)
+        ops = match_networks(self.editor.model.networks, binary)
         if ops is None:
             self._say(translate("PlcOnline", "The drawing is not the program in the PLC: "
                                 "compile it in the PLC control screen first"))
@@ -96,7 +96,7 @@ class OnlineMode(QObject):
             return False
         if not self.live.attached:
             self.session.monitor(True)
-        self.live.attach(self.editor.networks, self.editor.layout_.tops, binary, ops)
+        self.live.attach(self.editor.model.networks, self.editor.layout_.tops, binary, ops)
         self._sync_check(True)
         self.refresh()
         self._say(translate("PlcOnline", "On-line: the drawing shows the running PLC"))
@@ -160,9 +160,9 @@ class OnlineMode(QObject):
     def selected(self) -> tuple[int, Cell, object] | None:
         """(network, anchor cell, element) under the editor's cursor."""
         index, row, col = self.editor.cursor_cell
-        if not 0 <= index < len(self.editor.networks):
+        if not 0 <= index < len(self.editor.model.networks):
             return None
-        found = self.editor.networks[index].element_at(row, col)
+        found = self.editor.model.networks[index].element_at(row, col)
         if found is None:
             return None
         return index, found[0], found[1]

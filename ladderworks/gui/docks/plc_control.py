@@ -24,7 +24,11 @@ from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, decode, parse, print_program
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
+from ladderworks.gui.live_text import set_live_text
+from ladderworks.gui.locale_numbers import decimal
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession, PlcStatus
+from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
 
@@ -49,7 +53,7 @@ def network_end_lines(program: Program) -> list[int]:
     return ends
 
 
-class PlcControlDock(QDockWidget):
+class PlcControlDock(Retranslating, QDockWidget):
     """The PLC control screen: mnemonic program, compile, START / STOP, scan figures."""
 
     compile_progress = Signal(int)  # lines converted so far
@@ -97,6 +101,7 @@ class PlcControlDock(QDockWidget):
         self.indicator.setObjectName("plcRunIndicator")
         self.figures = QLabel(body)
         self.figures.setObjectName("plcScanFigures")
+        self.figures.setWordWrap(True)  # two lines rather than a dock wider than a small screen
         state.addWidget(self.indicator)
         state.addWidget(self.figures, 1)
         layout.addLayout(state)
@@ -153,7 +158,8 @@ class PlcControlDock(QDockWidget):
         self.editor.set_converted(self.editor.blockCount())
         self.loaded_name = name
         self._show_loaded()
-        self.message.setText(translate("PlcControl", "Program loaded from the console"))
+        set_live_text(self.message, lambda: translate("PlcControl",
+                                                      "Program loaded from the console"))
 
     def _show_loaded(self) -> None:
         self.loaded.setText(translate("PlcControl", "In the PLC: {0}").format(self.loaded_name)
@@ -166,10 +172,11 @@ class PlcControlDock(QDockWidget):
             text, _encoding = decode(path.read_bytes())
         except OSError as error:
             self.message.setText(translate("PlcControl", "Cannot read {0}: {1}")
-                                 .format(path, error.strerror))
+                                 .format(path, os_error_text(error)))
             return False
         self.set_text(text, path)
-        self.message.setText(translate("PlcControl", "Opened {0}").format(path.name))
+        set_live_text(self.message,
+                      lambda: translate("PlcControl", "Opened {0}").format(path.name))
         return True
 
     def open_dialog(self) -> None:
@@ -188,7 +195,8 @@ class PlcControlDock(QDockWidget):
                 "PlcControl", "The console's program cannot be coded: see the error list"))
             return False
         self.set_text(print_program(program))
-        self.message.setText(translate("PlcControl", "Program taken from the console"))
+        set_live_text(self.message, lambda: translate("PlcControl",
+                                                      "Program taken from the console"))
         return True
 
     def _text_changed(self) -> None:
@@ -315,9 +323,10 @@ class PlcControlDock(QDockWidget):
         if status.loaded:
             self.figures.setText(translate(
                 "PlcControl",
-                "scans {0} · scan time {1:.3f} / {2:.3f} / {3:.3f} ms (min/avg/max) · "
+                "scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · "
                 "period {4} ms · overruns {5}").format(
-                status.scan_count, status.min_ms, status.avg_ms, status.max_ms,
+                status.scan_count, decimal(status.min_ms, 3), decimal(status.avg_ms, 3),
+                decimal(status.max_ms, 3),
                 status.period_ms, status.overruns))
         else:
             self.figures.setText("")

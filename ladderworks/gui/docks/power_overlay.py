@@ -12,13 +12,14 @@ from ladderworks.core.address import Address
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
 from ladderworks.gui.docks.cell_map import NetworkPower
 from ladderworks.gui.editor.geometry import (
-    CELL_H,
     CELL_W,
     LEFT,
+    cell_h,
     cell_origin,
     grid_top,
     network_height,
     network_width,
+    wire_y,
 )
 
 LIVE = QColor("#00a000")
@@ -70,18 +71,18 @@ class PowerOverlay(QGraphicsItem):
         live = QPen(LIVE, 3.2)
         painter.setPen(live)
         if (0, 0) in power.nodes:
-            painter.drawLine(QPointF(LEFT, top), QPointF(LEFT, top + net.rows * CELL_H))
+            painter.drawLine(QPointF(LEFT, top), QPointF(LEFT, top + net.rows * cell_h()))
         for row, node in net.links:
             if (row, node) in power.nodes:
                 x = LEFT + node * CELL_W
-                y = top + row * CELL_H + CELL_H / 2
-                painter.drawLine(QPointF(x, y), QPointF(x, y + CELL_H))
+                y = top + row * cell_h() + wire_y()
+                painter.drawLine(QPointF(x, y), QPointF(x, y + cell_h()))
         small = QFont()
         small.setPointSizeF(7.5)
         small.setBold(True)
         for (row, col), element in net.elements():
             x, y = cell_origin(net, row, col)
-            mid = y + CELL_H / 2
+            mid = y + wire_y()
             painter.setPen(live)
             painter.setBrush(Qt.BrushStyle.NoBrush)
             if isinstance(element, Wire):
@@ -100,7 +101,7 @@ class PowerOverlay(QGraphicsItem):
             if (row, col) in self.marked:
                 painter.setPen(QPen(FOUND, 2.5))
                 painter.setBrush(Qt.BrushStyle.NoBrush)
-                painter.drawRoundedRect(QRectF(x + 1, y + 1, CELL_W - 2, CELL_H - 2), 4, 4)
+                painter.drawRoundedRect(QRectF(x + 1, y + 1, CELL_W - 2, cell_h() - 2), 4, 4)
 
     def _contact(self, painter: QPainter, row: int, col: int, x: float, y: float,
                  mid: float) -> None:
@@ -132,13 +133,13 @@ class PowerOverlay(QGraphicsItem):
         for index, on in enumerate(pins):
             if on:
                 pin = box.pins[index] if index < len(box.pins) else index
-                py = y + pin * CELL_H + CELL_H / 2
+                py = y + pin * cell_h() + wire_y()
                 painter.drawLine(QPointF(x, py), QPointF(x + 10, py))
         active = bool(pins) and pins[-1]  # ACT is the last control input
         if active or (row, col) in self.power.box_out:
-            painter.drawRect(QRectF(x + 10, y + 6, width - 20, box.height * CELL_H - 12))
+            painter.drawRect(QRectF(x + 10, y + 6, width - 20, box.height * cell_h() - 12))
         if (row, col) in self.power.box_out:
-            py = y + CELL_H / 2
+            py = y + wire_y()
             painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
         values = self.values.get((row, col))
         if values:

@@ -4,13 +4,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
+from PySide6.QtCore import QCoreApplication, Qt, Signal
 from PySide6.QtGui import QAction, QBrush, QColor
 from PySide6.QtWidgets import (
     QDockWidget,
     QFileDialog,
     QLabel,
-    QMainWindow,
     QToolBar,
     QTreeWidget,
     QTreeWidgetItem,
@@ -29,11 +28,12 @@ from ladderworks.core.plc.scenario import (
 )
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.gui.docks import trace_files
-from ladderworks.gui.docks.dock_menus import add_dock, find_menu, register_action
 from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord
 from ladderworks.gui.files import atomic_write
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
 RUN = "action_plc_run_scenario"
@@ -41,7 +41,7 @@ RECORD = "action_plc_record_scenario"
 _PASS, _FAIL = QColor("#1a7f37"), QColor("#c00000")
 
 
-class ScenarioDock(QDockWidget):
+class ScenarioDock(Retranslating, QDockWidget):
     """Runs a scenario on a cold-started copy of the loaded program; records one from the PLC."""
 
     finished = Signal(object)  # the ScenarioResult
@@ -96,8 +96,8 @@ class ScenarioDock(QDockWidget):
         try:
             scenario = read_scenario(path, program.symbols if program is not None else None)
         except OSError as error:
-            self._say(translate("Scenario", "Cannot read {0}: {1}").format(path, error.strerror),
-                      error=True)
+            self._say(translate("Scenario", "Cannot read {0}: {1}").format(
+                      path, os_error_text(error)), error=True)
             return None
         return self.run(scenario)
 
@@ -208,8 +208,8 @@ class ScenarioDock(QDockWidget):
         try:
             atomic_write(path, text)
         except OSError as error:
-            self._say(translate("Scenario", "Cannot write {0}: {1}").format(path, error.strerror),
-                      error=True)
+            self._say(translate("Scenario", "Cannot write {0}: {1}").format(
+                      path, os_error_text(error)), error=True)
             return False
         self._say(translate("Scenario", "Saved {0}").format(path))
         return True
@@ -230,11 +230,6 @@ class ScenarioDock(QDockWidget):
             translate("Scenario", "Expected"), translate("Scenario", "Got"),
             translate("Scenario", "Time (ms)"), translate("Scenario", "Result")])
 
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)
 
 
 def _signals(scenario: Scenario) -> list[TracedSignal]:
@@ -245,20 +240,3 @@ def _signals(scenario: Scenario) -> list[TracedSignal]:
             key = (target.address, target.width)
             seen.setdefault(key, TracedSignal(target.address, target.width))
     return list(seen.values())
-
-
-def install(window: QMainWindow, session: PlcSession) -> ScenarioDock:
-    """Add the scenario dock (hidden) and PLC › Run scenario / Record scenario."""
-    chart = window.findChild(TimeChartDock)
-    dock = ScenarioDock(session, window, chart)
-    add_dock(window, dock, "action_dock_scenario")
-    dock.hide()
-    menu = find_menu(window, "menu_plc")
-    for name in (RUN, RECORD):
-        action = dock.actions_by_name[name]
-        action.triggered.connect(dock.show)
-        register_action(window, action)
-        if menu is not None:
-            menu.addAction(action)
-    return dock
-

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
-from PySide6.QtCore import QCoreApplication, QEvent, QPoint, Qt
+from PySide6.QtCore import QCoreApplication, QPoint, Qt
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import (
     QAbstractItemView,
@@ -22,7 +22,6 @@ from PySide6.QtWidgets import (
     QFormLayout,
     QLabel,
     QLineEdit,
-    QMainWindow,
     QMenu,
     QTableView,
     QTabWidget,
@@ -32,11 +31,11 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.gui.diagnostic_texts import diagnostic_text
-from ladderworks.gui.docks.dock_menus import add_dock
 from ladderworks.gui.docks.table_entries import DATA_WIDTHS, TableError, TableKind
 from ladderworks.gui.docks.table_model import PlcTableModel
 from ladderworks.gui.docks.table_specs import Row, TableSpec, table_specs
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
+from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
 
@@ -106,7 +105,7 @@ class InsertRowDialog(QDialog):
             self.error.setText(problem)
 
 
-class PlcTablesDock(QDockWidget):
+class PlcTablesDock(Retranslating, QDockWidget):
     """Timers (TMR presets; TMRB read-only), counters (CTR), data table (D), keep relays (K)."""
 
     def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:
@@ -147,6 +146,7 @@ class PlcTablesDock(QDockWidget):
         table.setModel(model)
         table.setObjectName(f"plcTable_{kind.value}")
         table.verticalHeader().hide()
+        table.setTabKeyNavigation(False)  # Tab leaves the dock (issue 18: no Tab trap)
         table.setAlternatingRowColors(True)
         table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
@@ -282,17 +282,3 @@ class PlcTablesDock(QDockWidget):
                 "4 = 1 s, 5 = 1 min",
             ).format(layout.max_preset)
         )
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)
-
-
-def install(window: QMainWindow, session: PlcSession) -> PlcTablesDock:
-    """Add the PLC tables to the console (hidden; View → PLC tables shows it)."""
-    dock = PlcTablesDock(session, window)
-    add_dock(window, dock, "action_dock_plc_tables", Qt.DockWidgetArea.RightDockWidgetArea)
-    dock.hide()
-    return dock

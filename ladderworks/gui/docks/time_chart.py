@@ -8,31 +8,36 @@ and draws each lane as a sample-and-hold step trace.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from pathlib import Path
 
 import pyqtgraph as pg
-from PySide6.QtCore import QCoreApplication, QEvent, Qt
-from PySide6.QtGui import QAction, QColor, QFontMetrics
+from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtGui import QAction, QColor, QFontMetrics, QResizeEvent
 from PySide6.QtWidgets import (
     QDockWidget,
     QFileDialog,
     QHBoxLayout,
     QLabel,
     QLineEdit,
-    QMainWindow,
     QSpinBox,
-    QToolBar,
     QVBoxLayout,
     QWidget,
 )
 
 from ladderworks.core.address import AddressError
 from ladderworks.core.symbols import describe
+from ladderworks.gui.button_flow import ButtonFlow
+from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks import trace_files
-from ladderworks.gui.docks.dock_menus import add_dock, address_error_text
+from ladderworks.gui.docks.bus_lane import BusLane
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
+from ladderworks.gui.live_text import set_live_text
+from ladderworks.gui.locale_numbers import LocaleAxis
+from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
 
@@ -43,7 +48,7 @@ _SPLIT = re.compile(r"[\s,;]+")
 _COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
 
 
-class TimeChartDock(QDockWidget):
+class TimeChartDock(Retranslating, QDockWidget):
     """Type the bits (or `ADDR:width` values) to watch, choose the sampling time, START."""
 
     def __init__(self, session: PlcSession, parent: QWidget | None = None) -> None:
@@ -54,6 +59,7 @@ class TimeChartDock(QDockWidget):
         self.sampling = False
         self._curves: list[pg.PlotDataItem] = []  # one step trace per lane
         self._fills: list[pg.PlotDataItem] = []  # the shading under each bit lane
+        self._buses: dict[int, BusLane] = {}  # the value lanes, by lane
         body = QWidget(self)
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
@@ -68,20 +74,19 @@ class TimeChartDock(QDockWidget):
         self.period_spin.setRange(1, MAX_PERIOD_MS)
         self.period_spin.setValue(DEFAULT_PERIOD_MS)
         self.period_spin.setSuffix(" ms")
-        # signals on a row of their own: a list of addresses needs the whole width
+        # the signals take what the row leaves (a list of addresses wants the width); the
+        # sampling time sits at its end: one row less on a 1024×600 screen
         self.signals_edit.setMinimumWidth(self.signals_edit.fontMetrics().horizontalAdvance("M")
-                                          * 16)
+                                          * 10)
         entry.addWidget(self.signals_label)
         entry.addWidget(self.signals_edit, 1)
+        entry.addSpacing(8)
+        entry.addWidget(self.period_label)
+        entry.addWidget(self.period_spin)
         layout.addLayout(entry)
-        period = QHBoxLayout()
-        period.addWidget(self.period_label)
-        period.addWidget(self.period_spin)
-        period.addStretch(1)
-        layout.addLayout(period)
-        self.toolbar = QToolBar(body)
+        # buttons that wrap onto a second line in a narrow dock: none hides behind an overflow
+        self.toolbar = ButtonFlow(body)
         self.toolbar.setObjectName("timeChartToolbar")
-        self.toolbar.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
         self.chart_actions: dict[str, QAction] = {}
         for name, slot in (
             ("action_time_chart_start", self.start),
@@ -96,21 +101,23 @@ class TimeChartDock(QDockWidget):
             ("action_time_chart_png", self.export_png_dialog),
         ):
             if name is None:
-                self.toolbar.addSeparator()
+                self.toolbar.add_separator()
                 continue
             action = QAction(self)
             action.setObjectName(name)
             action.triggered.connect(lambda _c=False, s=slot: s())
-            self.toolbar.addAction(action)
+            self.toolbar.add_action(action)
             self.chart_actions[name] = action
         layout.addWidget(self.toolbar)
         self.message = QLabel(body)
         self.message.setObjectName("timeChartMessage")
         self.message.setWordWrap(True)
         layout.addWidget(self.message)
-        self.plot = pg.PlotWidget(body, background="w")
+        self.plot = pg.PlotWidget(body, background="w",
+                                  axisItems={"bottom": LocaleAxis("bottom")})
         self.plot.setObjectName("timeChartPlot")
-        self.plot.setMinimumHeight(160)
+        self.plot.setMinimumHeight(100)  # a 1024×600 screen: the chart still fits with the docks
+        self.plot.scene().contextMenu = []  # pyqtgraph's own English "Export..."; ours are above
         self.plot.setMinimumWidth(380)  # room for the lane names and a readable time axis
         item = self.plot.getPlotItem()
         item.showGrid(x=True, y=False, alpha=0.25)
@@ -146,17 +153,16 @@ class TimeChartDock(QDockWidget):
         """The lanes typed in the box (None and a message when one is wrong or none is given)."""
         texts = [text for text in _SPLIT.split(self.signals_edit.text().strip()) if text]
         if not texts:
-            self._say(
-                translate("TimeChart", "Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)"),
-                error=True,
-            )
+            self._say(lambda: translate(
+                "TimeChart", "Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)"),
+                error=True)
             return None
         signals: list[TracedSignal] = []
         for text in texts:
             try:
                 signals.append(parse_traced(text, self.session.symbols))
             except AddressError as error:
-                self._say(address_error_text(error), error=True)
+                self._say(diagnostic_text(error.diagnostic), error=True)
                 return None
         return signals
 
@@ -167,7 +173,8 @@ class TimeChartDock(QDockWidget):
         if signals is None:
             return False
         if self.session.engine is None:
-            self._say(translate("TimeChart", "Load (compile) a PLC program first"), error=True)
+            self._say(lambda: translate("TimeChart", "Load (compile) a PLC program first"),
+                      error=True)
             return False
         period = self.period_spin.value()
         self.record = TraceRecord(signals)
@@ -178,7 +185,7 @@ class TimeChartDock(QDockWidget):
         )
         self.sampling = True
         self.fit()
-        self._say(translate("TimeChart", "Sampling every {0} ms").format(period))
+        self._say(lambda: translate("TimeChart", "Sampling every {0} ms").format(period))
         self._update_actions()
         return True
 
@@ -189,7 +196,8 @@ class TimeChartDock(QDockWidget):
         self.session.stop_trace()
         self._take_samples()
         self.sampling = False
-        self._say(translate("TimeChart", "Stopped: {0} samples").format(len(self.record)))
+        count = len(self.record)
+        self._say(lambda: translate("TimeChart", "Stopped: {0} samples").format(count))
         self._update_actions()
 
     def clear(self) -> None:
@@ -202,7 +210,7 @@ class TimeChartDock(QDockWidget):
 
     def _on_program_loaded(self, _program: object) -> None:
         if self.sampling:  # the session keeps the sampler across a reload
-            self._say(translate("TimeChart", "New program loaded; sampling goes on"))
+            self._say(lambda: translate("TimeChart", "New program loaded; sampling goes on"))
 
     def _take_samples(self, _snapshot: object = None) -> None:
         if not self.sampling:
@@ -227,8 +235,11 @@ class TimeChartDock(QDockWidget):
         item = self.plot.getPlotItem()
         for curve in self._curves + self._fills:
             item.removeItem(curve)
+        for bus in self._buses.values():
+            bus.remove()
         self._curves = []
         self._fills = []
+        self._buses = {}
         ticks = []
         for lane, signal in enumerate(self.record.signals):
             colour = QColor(_COLOURS[lane % len(_COLOURS)])
@@ -239,8 +250,12 @@ class TimeChartDock(QDockWidget):
                 shade = pg.PlotDataItem(stepMode="center", pen=None, fillLevel=base, brush=fill)
                 item.addItem(shade)
                 self._fills.append(shade)
-            curve = pg.PlotDataItem(stepMode="center", pen=pg.mkPen(colour, width=2))
-            item.addItem(curve)
+                curve = pg.PlotDataItem(stepMode="center", pen=pg.mkPen(colour, width=2))
+                item.addItem(curve)
+            else:  # a value: a bus lane with each value written in it
+                bus = BusLane(item, colour, base, signal.width)
+                self._buses[lane] = bus
+                curve = bus.outline
             self._curves.append(curve)
             ticks.append((base + 0.5, self.lane_name(signal)))
         axis = item.getAxis("left")
@@ -252,8 +267,14 @@ class TimeChartDock(QDockWidget):
         item.getViewBox().setYRange(-0.3, (count - 1) * LANE_HEIGHT + 1.3, padding=0)
         self._redraw()
 
+    def lane_texts(self, lane: int) -> list[tuple[float, str]]:
+        """The values written in a value lane at this zoom: (start time in ms, text)."""
+        bus = self._buses.get(lane)
+        return [] if bus is None else bus.texts()
+
     def lane_points(self, lane: int) -> tuple[list[float], list[float]]:
-        """A lane's step points as drawn: x (one more than y) and y offset into its lane."""
+        """A lane's step points: x (one more than y) and y offset into its lane (a value
+        scaled to the lane's height)."""
         xs, values = self.record.steps(lane)
         base = self.lane_base(lane)
         signal = self.record.signals[lane]
@@ -263,10 +284,13 @@ class TimeChartDock(QDockWidget):
     def _redraw(self) -> None:
         fills = iter(self._fills)
         for lane, curve in enumerate(self._curves):
+            if lane in self._buses:
+                steps, values = self.record.steps(lane)
+                self._buses[lane].set_steps([float(x) for x in steps], values)
+                continue
             xs, ys = self.lane_points(lane)
             curve.setData(xs, ys)
-            if self.record.signals[lane].is_bit:
-                next(fills).setData(xs, ys)
+            next(fills).setData(xs, ys)
         if self.record.times and self.time_cursor.value() < self.record.times[0]:
             self.time_cursor.setValue(self.record.times[0])
         self._show_cursor()
@@ -312,6 +336,7 @@ class TimeChartDock(QDockWidget):
     def _show_cursor(self, *_args: object) -> None:
         if not self.record.signals:
             self.cursor_label.setText("")
+            self._fit_labels()
             return
         values = "   ".join(
             f"{label} = {'–' if value is None else value}"
@@ -322,6 +347,7 @@ class TimeChartDock(QDockWidget):
             + "   "
             + values
         )
+        self._fit_labels()
 
     # -- export ------------------------------------------------------------------------------
 
@@ -331,11 +357,11 @@ class TimeChartDock(QDockWidget):
             atomic_write(path, self.record.csv_text())
         except OSError as error:
             self._say(
-                translate("TimeChart", "Cannot write {0}: {1}").format(path, error.strerror),
+                translate("TimeChart", "Cannot write {0}: {1}").format(path, os_error_text(error)),
                 error=True,
             )
             return False
-        self._say(translate("TimeChart", "Saved {0}").format(path))
+        self._say(lambda: translate("TimeChart", "Saved {0}").format(path))
         return True
 
     def export_png(self, path: str | Path) -> bool:
@@ -343,7 +369,7 @@ class TimeChartDock(QDockWidget):
         if not self.plot.grab().save(str(path), "PNG"):
             self._say(translate("TimeChart", "Cannot write {0}").format(path), error=True)
             return False
-        self._say(translate("TimeChart", "Saved {0}").format(path))
+        self._say(lambda: translate("TimeChart", "Saved {0}").format(path))
         return True
 
     def export_csv_dialog(self) -> None:
@@ -370,9 +396,27 @@ class TimeChartDock(QDockWidget):
 
     # -- texts -------------------------------------------------------------------------------
 
-    def _say(self, text: str, *, error: bool = False) -> None:
+    def _say(self, text: str | Callable[[], str], *, error: bool = False) -> None:
+        """A message above the chart; one given as a function follows a language switch."""
         self.message.setStyleSheet("color:#c00000;" if error else "")
-        self.message.setText(text)
+        if callable(text):
+            set_live_text(self.message, text)
+        else:
+            self.message.setText(text)
+        self._fit_labels()
+
+    def _fit_labels(self) -> None:
+        """Reserve the height the wrapped message and cursor readout need at this width: a
+        dock does not ask its labels, and a squeezed layout would draw the readout over the
+        time axis."""
+        for label in (self.message, self.cursor_label):
+            width = label.width() or self.widget().width()
+            label.setMinimumHeight(label.heightForWidth(width) if label.text() else 0)
+
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        """Wrapped lines change with the width."""
+        super().resizeEvent(event)
+        self._fit_labels()
 
     def _update_actions(self) -> None:
         self.chart_actions["action_time_chart_start"].setEnabled(not self.sampling)
@@ -405,19 +449,7 @@ class TimeChartDock(QDockWidget):
             translate("TimeChart", "Save the chart as a PNG picture")
         )
         self.plot.getPlotItem().setLabel("bottom", translate("TimeChart", "time (ms)"))
+        self.plot.getPlotItem().getAxis("bottom").picture = None  # ticks in the new decimal sign
+        self.plot.getPlotItem().getAxis("bottom").update()
         trace_files.retranslate(self)
         self._show_cursor()
-
-    def changeEvent(self, event: QEvent) -> None:
-        """Retranslate on a language change."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.retranslate()
-        super().changeEvent(event)
-
-
-def install(window: QMainWindow, session: PlcSession) -> TimeChartDock:
-    """Add the time chart to the console (hidden; View → PLC time chart shows it)."""
-    dock = TimeChartDock(session, window)
-    add_dock(window, dock, "action_dock_time_chart")
-    dock.hide()
-    return dock

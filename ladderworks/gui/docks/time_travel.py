@@ -6,14 +6,13 @@ from __future__ import annotations
 import pyqtgraph as pg
 from PySide6.QtCore import QCoreApplication, QObject, Qt
 from PySide6.QtGui import QAction
-from PySide6.QtWidgets import QMainWindow, QSlider
+from PySide6.QtWidgets import QSlider
 
 from ladderworks.core.address import Address
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.plc.history import ScanHistory, Why
 from ladderworks.core.plc.session import PlcSnapshot
 from ladderworks.gui.docks.diagnostic import DiagnosticDock
-from ladderworks.gui.docks.dock_menus import find_menu, register_action
 from ladderworks.gui.docks.online import OnlineMode
 from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.plc_session import PlcSession
@@ -26,13 +25,14 @@ class TimeTravel(QObject):
     """PLC › Keep scan history: a ScanHistory on the engine, shown through the diagnostic."""
 
     def __init__(self, session: PlcSession, diagnostic: DiagnosticDock,
-                 chart: TimeChartDock | None, parent: QObject | None = None) -> None:
+                 chart: TimeChartDock | None, online: OnlineMode | None = None,
+                 parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.session = session
         self.diagnostic = diagnostic
         self.chart = chart
         self.history: ScanHistory | None = None
-        self.online: OnlineMode | None = None  # the console's on-line drawing, if any
+        self.online = online  # the console's on-line drawing, if any
         self.action = QAction(self)
         self.action.setObjectName(ACTION)
         self.action.setCheckable(True)
@@ -159,15 +159,3 @@ class TimeTravel(QObject):
             "TimeTravel", "{0} went to {1} in scan {2} at {3} ms").format(
                 address, found.value, found.scan, found.time_ms))
         return found
-
-
-def install(window: QMainWindow, session: PlcSession, diagnostic: DiagnosticDock,
-            chart: TimeChartDock | None, online: OnlineMode | None = None) -> TimeTravel:
-    """Add PLC › Keep scan history (time travel)."""
-    travel = TimeTravel(session, diagnostic, chart, window)
-    travel.online = online
-    register_action(window, travel.action)
-    menu = find_menu(window, "menu_plc")
-    if menu is not None:
-        menu.addAction(travel.action)
-    return travel

@@ -14,6 +14,7 @@ from ladderworks.core.plc.trace import TraceSample
 from ladderworks.core.plc.trace_file import TraceFileError, TraceTable, ladder3_text, read_trace
 from ladderworks.gui.docks.trace_record import TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
+from ladderworks.gui.os_errors import os_error_text
 
 if TYPE_CHECKING:
     from ladderworks.gui.docks.time_chart import TimeChartDock
@@ -36,7 +37,7 @@ def add_actions(dock: TimeChartDock) -> None:
         action = QAction(dock)
         action.setObjectName(name)
         action.triggered.connect(lambda _c=False, s=slot: s())
-        dock.toolbar.addAction(action)
+        dock.toolbar.add_action(action)
         dock.chart_actions[name] = action
 
 
@@ -58,8 +59,8 @@ def export_ladder3(dock: TimeChartDock, path: str | Path) -> bool:
     try:
         atomic_write(path, ladder3_text(table_of(dock.record)))
     except OSError as error:
-        dock._say(translate("TimeChart", "Cannot write {0}: {1}").format(path, error.strerror),
-                  error=True)
+        dock._say(translate("TimeChart", "Cannot write {0}: {1}").format(
+                  path, os_error_text(error)), error=True)
         return False
     dock._say(translate("TimeChart", "Saved {0}").format(path))
     return True
@@ -74,8 +75,8 @@ def import_trace(dock: TimeChartDock, path: str | Path) -> bool:
         table = read_trace(Path(path).read_text(encoding="utf-8", errors="replace"), period)
         signals = [parse_traced(label) for label in table.labels]
     except OSError as error:
-        dock._say(translate("TimeChart", "Cannot read {0}: {1}").format(path, error.strerror),
-                  error=True)
+        dock._say(translate("TimeChart", "Cannot read {0}: {1}").format(
+                  path, os_error_text(error)), error=True)
         return False
     except (TraceFileError, AddressError) as error:
         line = getattr(error, "line", 1)

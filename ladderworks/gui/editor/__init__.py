@@ -1,1 +1,1 @@
-"""The ladder grid editor: scene items, the view with its tools, and the undo commands."""
+"""The ladder grid editor: the model, the view over it, the tools' interactions, undo commands."""

@@ -1,73 +1,65 @@
-"""Undo commands: each redo/undo applies a core edit and keeps the inverse it returns."""
+"""Undo commands on the ladder model: redo() makes the change, undo() takes it back."""
 
 from __future__ import annotations
-
-from typing import TYPE_CHECKING
 
 from PySide6.QtGui import QUndoCommand
 
 from ladderworks.core.ladder import Edit, LadderNetwork
-
-if TYPE_CHECKING:
-    from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.editor.ladder_model import LadderModel, is_blank
 
 
 class NetworkEditCommand(QUndoCommand):
-    """A change to one network made by a core edit operation (already applied when pushed).
+    """A change to one network: `edit` (from `LadderModel.prepare`) is applied by redo().
 
-    When the change draws into the empty network at the end, a new empty one is appended (and
+    When the change draws into the blank network at the end, a new blank one is appended (and
     removed again on undo), so there is always room for the next network.
     """
 
-    def __init__(self, editor: LadderEditor, index: int, undo_edit: Edit, text: str) -> None:
+    def __init__(self, model: LadderModel, index: int, edit: Edit, text: str) -> None:
         super().__init__(text)
-        self._editor = editor
+        self._model = model
         self._index = index
-        self._edit = undo_edit
-        self._done = True
-        network = editor.networks[index]
-        self._appended: LadderNetwork | None = None
-        if index == len(editor.networks) - 1 and not (network.is_empty() and not network.comments):
-            self._appended = LadderNetwork()
+        self._edit = edit  # redo() applies it and keeps the inverse for undo(), and so on
+        self._appended = False
 
     def redo(self) -> None:
-        """Apply the change (the first call finds it already applied)."""
-        if self._done:
-            self._done = False
-        else:
-            self._edit = self._edit.apply(self._editor.networks[self._index])
-        if self._appended is not None:
-            self._editor.insert_network(len(self._editor.networks), self._appended)
-        self._editor.network_changed(self._index)
+        """Make the change."""
+        model = self._model
+        self._edit = model.apply(self._index, self._edit)
+        last = len(model.networks) - 1
+        self._appended = self._index == last and not is_blank(model.networks[last])
+        if self._appended:
+            model.insert_network(last + 1, LadderNetwork())
 
     def undo(self) -> None:
-        """Apply the inverse edit."""
-        if self._appended is not None:
-            self._editor.remove_network(len(self._editor.networks) - 1)
-        self._edit = self._edit.apply(self._editor.networks[self._index])
-        self._editor.network_changed(self._index)
+        """Take the change back."""
+        model = self._model
+        if self._appended:
+            model.remove_network(len(model.networks) - 1)
+        self._edit = model.apply(self._index, self._edit)
 
 
 class NetworkListCommand(QUndoCommand):
     """Insert or remove a whole network (delete network, paste network)."""
 
-    def __init__(self, editor: LadderEditor, index: int, network: LadderNetwork | None,
+    def __init__(self, model: LadderModel, index: int, network: LadderNetwork | None,
                  text: str) -> None:
         super().__init__(text)
-        self._editor = editor
+        self._model = model
         self._index = index
         self._network = network  # None: remove the network at index
+        self._removed: LadderNetwork | None = None
 
     def redo(self) -> None:
         """Insert (or remove) the network."""
         if self._network is not None:
-            self._editor.insert_network(self._index, self._network)
+            self._model.insert_network(self._index, self._network)
         else:
-            self._network_removed = self._editor.remove_network(self._index)
+            self._removed = self._model.remove_network(self._index)
 
     def undo(self) -> None:
         """Remove (or put back) the network."""
         if self._network is not None:
-            self._editor.remove_network(self._index)
-        else:
-            self._editor.insert_network(self._index, self._network_removed)
+            self._model.remove_network(self._index)
+        elif self._removed is not None:
+            self._model.insert_network(self._index, self._removed)

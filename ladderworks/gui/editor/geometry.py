@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import bisect
 from dataclasses import dataclass
+from enum import Enum
 
 from ladderworks.core.ladder.model import LadderNetwork
 
 CELL_W = 84.0
-CELL_H = 60.0
 COMMENT_H = 20.0
 LISTING_LINE_H = 18.0
 LEFT = 44.0  # room for the network number left of the left rail
@@ -16,12 +16,72 @@ GAP = 10.0  # space between networks
 SPARE_ROWS = 1  # an empty row drawn under each network: clicking there adds a row
 
 
+class NameDisplay(Enum):
+    """What the ladder shows with each element (View › Element names)."""
+
+    ADDRESS = "address"  # the address only
+    SYMBOL = "symbol"  # the address and its symbol
+    COMMENT = "comment"  # the address, its symbol and two lines of comment
+
+
+@dataclass(frozen=True, slots=True)
+class RowMetrics:
+    """A grid row for one name display: its height and where its wire runs."""
+
+    height: float
+    wire: float  # y of the wire (and of the contacts' middle) inside the row
+    symbol: bool  # a symbol line under the element
+    comment_lines: int  # wrapped comment lines under the symbol
+
+
+ROW_METRICS = {
+    NameDisplay.ADDRESS: RowMetrics(48.0, 28.0, False, 0),
+    NameDisplay.SYMBOL: RowMetrics(60.0, 30.0, True, 0),
+    NameDisplay.COMMENT: RowMetrics(86.0, 30.0, True, 2),
+}
+DEFAULT_DISPLAY = NameDisplay.COMMENT
+TALL_SCREEN = 900  # px of available screen height from which comments are shown by default
+_shown = [DEFAULT_DISPLAY]  # one choice for every ladder view of the application
+
+
+def default_display(screen_height: int) -> NameDisplay:
+    """What is shown before the user chooses: everything on a tall screen; on a lower one
+    (a 1024×600 shop-floor panel, a 768-pixel laptop) the address and symbol, so that more
+    rows fit (View › Element names adds the comments)."""
+    return DEFAULT_DISPLAY if screen_height >= TALL_SCREEN else NameDisplay.SYMBOL
+
+
+def name_display() -> NameDisplay:
+    """What the ladder views show with each element now."""
+    return _shown[0]
+
+
+def set_name_display(display: NameDisplay) -> None:
+    """Choose what the ladder views show (views must lay out again: `relayout()`)."""
+    _shown[0] = display
+
+
+def row_metrics() -> RowMetrics:
+    """The rows of the current name display."""
+    return ROW_METRICS[_shown[0]]
+
+
+def cell_h() -> float:
+    """Height of a grid row (it grows with the names shown under the elements)."""
+    return ROW_METRICS[_shown[0]].height
+
+
+def wire_y() -> float:
+    """Y of the wire inside a row."""
+    return ROW_METRICS[_shown[0]].wire
+
+
 def network_height(network: LadderNetwork) -> float:
     """Height of a network's drawing: comment lines plus its rows (or its kept listing)."""
     comments = len(network.comments) * COMMENT_H
     if network.listing is not None:
         return comments + max(len(network.listing), 1) * LISTING_LINE_H + 8
-    return comments + (network.rows + SPARE_ROWS) * CELL_H + GAP
+    return comments + (network.rows + SPARE_ROWS) * cell_h() + GAP
 
 
 def network_width(network: LadderNetwork) -> float:
@@ -36,18 +96,18 @@ def grid_top(network: LadderNetwork) -> float:
 
 def cell_origin(network: LadderNetwork, row: int, col: int) -> tuple[float, float]:
     """Top-left corner of a cell inside the network's item."""
-    return LEFT + col * CELL_W, grid_top(network) + row * CELL_H
+    return LEFT + col * CELL_W, grid_top(network) + row * cell_h()
 
 
 def cell_centre(network: LadderNetwork, row: int, col: int) -> tuple[float, float]:
     """Centre of a cell inside the network's item."""
     x, y = cell_origin(network, row, col)
-    return x + CELL_W / 2, y + CELL_H / 2
+    return x + CELL_W / 2, y + cell_h() / 2
 
 
 def node_point(network: LadderNetwork, row: int, node: int) -> tuple[float, float]:
     """A grid node (left edge of column `node`, middle of `row`) inside the network's item."""
-    return LEFT + node * CELL_W, grid_top(network) + row * CELL_H + CELL_H / 2
+    return LEFT + node * CELL_W, grid_top(network) + row * cell_h() + wire_y()
 
 
 @dataclass(frozen=True, slots=True)
@@ -102,6 +162,6 @@ class Layout:
         node = min(max(node, 0), network.columns)
         if local_y < top:
             return Hit(index, 0, col, node, int(local_y // COMMENT_H))
-        row = int((local_y - top) // CELL_H)
+        row = int((local_y - top) // cell_h())
         row = min(max(row, 0), network.rows - 1 + SPARE_ROWS)
         return Hit(index, row, col, node)

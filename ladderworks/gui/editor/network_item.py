@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from PySide6.QtCore import QPointF, QRectF, Qt
+from PySide6.QtCore import QCoreApplication, QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPainter, QPen
 from PySide6.QtWidgets import QGraphicsItem, QStyleOptionGraphicsItem, QWidget
 
@@ -12,18 +12,23 @@ from ladderworks.core.il import print_instruction
 from ladderworks.core.il.printer import format_params
 from ladderworks.core.instructions import Write
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
+from ladderworks.core.ladder.open_circuit import OpenEnd, open_ends
 from ladderworks.gui.editor.geometry import (
-    CELL_H,
     CELL_W,
     COMMENT_H,
     LEFT,
     LISTING_LINE_H,
+    cell_h,
     cell_origin,
     grid_top,
+    name_display,
     network_height,
     network_width,
+    row_metrics,
+    wire_y,
 )
-from ladderworks.gui.translation import instruction_label
+from ladderworks.gui.editor.label_text import wrapped
+from ladderworks.gui.translation import instruction_label, ui_is_turkish
 
 INK = QColor("#1a1a1a")
 RAIL = QColor("#1f4e79")
@@ -32,6 +37,7 @@ NAME = QColor("#5b5b5b")
 ERROR = QColor("#d32f2f")
 BOX_FILL = QColor("#eef3fb")
 EMPTY_HINT = QColor("#9e9e9e")
+COMMENT_LINE_H = 12.0  # a wrapped comment line under an element
 
 # Describes an address for the drawing: (signal name, description) or None.
 SignalLookup = Callable[[object], tuple[str, str] | None]
@@ -49,6 +55,19 @@ def _fonts() -> tuple[QFont, QFont, QFont]:
     return label, small, comment
 
 
+def _element_comment_font() -> QFont:
+    font = QFont()
+    font.setPointSizeF(7.5)
+    font.setItalic(True)
+    return font
+
+
+def network_tag(number: int) -> str:
+    """A network's number beside its rail: N1 (network), D1 in Turkish (devre), as the status
+    bar and the error list name it."""
+    return QCoreApplication.translate("LadderEditor", "N{0}").format(number)
+
+
 class NetworkItem(QGraphicsItem):
     """Paints one LadderNetwork; its number and hints come from the view."""
 
@@ -59,11 +78,16 @@ class NetworkItem(QGraphicsItem):
         self.describe = describe
         self.error_cells: set[tuple[int, int]] = set()
         self.is_new = False  # the empty network at the end, where a new one is drawn
+        self.open_ends: list[OpenEnd] = open_ends(network)  # breaks marked as the user draws
+        # what is written with each element, by display and language (wrapping costs)
+        self._label_cache: dict[tuple[object, ...], tuple[str, str, list[str]]] = {}
         self._size = (network_width(network), network_height(network))
         self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemUsesExtendedStyleOption, True)
 
     def refresh(self) -> None:
-        """The network changed: recompute the size and repaint."""
+        """The network changed (or the rows did): recompute the marks and size, repaint."""
+        self.open_ends = open_ends(self.network)
+        self._label_cache.clear()
         size = (network_width(self.network), network_height(self.network))
         if size != self._size:
             self.prepareGeometryChange()
@@ -88,13 +112,13 @@ class NetworkItem(QGraphicsItem):
         top = grid_top(net)
         painter.setFont(label_font)
         painter.setPen(EMPTY_HINT if self.is_new else RAIL)
-        painter.drawText(QRectF(0, top, LEFT - 8, CELL_H / 2),
+        painter.drawText(QRectF(0, top, LEFT - 8, wire_y()),
                          Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter,
-                         "+" if self.is_new else f"N{self.number}")
+                         "+" if self.is_new else network_tag(self.number))
         if net.listing is not None:
             self._paint_listing(painter, top)
             return
-        bottom = top + net.rows * CELL_H
+        bottom = top + net.rows * cell_h()
         right = LEFT + (net.columns + 1) * CELL_W
         rail = QPen(EMPTY_HINT if self.is_new else RAIL, 3)
         painter.setPen(rail)
@@ -110,16 +134,16 @@ class NetworkItem(QGraphicsItem):
         painter.setPen(ink)
         for row, node in net.links:
             x = LEFT + node * CELL_W
-            y1 = top + row * CELL_H + CELL_H / 2
-            painter.drawLine(QPointF(x, y1), QPointF(x, y1 + CELL_H))
+            y1 = top + row * cell_h() + wire_y()
+            painter.drawLine(QPointF(x, y1), QPointF(x, y1 + cell_h()))
         exposed = option.exposedRect
         for (row, col), element in net.elements():
             x, y = cell_origin(net, row, col)
-            if not exposed.intersects(QRectF(x, y, CELL_W * 2, CELL_H * 8)):
+            if not exposed.intersects(QRectF(x, y, CELL_W * 2, cell_h() * 8)):
                 continue
             painter.setPen(ink)
             if isinstance(element, Wire):
-                painter.drawLine(QPointF(x, y + CELL_H / 2), QPointF(x + CELL_W, y + CELL_H / 2))
+                painter.drawLine(QPointF(x, y + wire_y()), QPointF(x + CELL_W, y + wire_y()))
             elif isinstance(element, Contact):
                 self._paint_contact(painter, element, x, y, label_font, small_font)
             elif isinstance(element, Coil):
@@ -131,29 +155,76 @@ class NetworkItem(QGraphicsItem):
             painter.setBrush(Qt.BrushStyle.NoBrush)
             for row, col in self.error_cells:
                 x, y = cell_origin(net, row, col)
-                painter.drawRect(QRectF(x + 2, y + 2, CELL_W - 4, CELL_H - 4))
+                painter.drawRect(QRectF(x + 2, y + 2, CELL_W - 4, cell_h() - 4))
+        if self.open_ends and not self.is_new:
+            self._paint_open_ends(painter)
+
+    def _paint_open_ends(self, painter: QPainter) -> None:
+        """A red dashed gap across an empty cell where the circuit breaks, or a red bar and
+        cross on the open side of an element."""
+        mid = wire_y()
+        for mark in self.open_ends:
+            x, y = cell_origin(self.network, *mark.cell)
+            if mark.gap:
+                painter.setPen(QPen(ERROR, 2, Qt.PenStyle.DashLine))
+                painter.drawLine(QPointF(x + 4, y + mid), QPointF(x + CELL_W - 4, y + mid))
+                centre = QPointF(x + CELL_W / 2, y + mid)
+            else:
+                centre = QPointF(x + (3 if mark.side == "left" else CELL_W - 3), y + mid)
+            painter.setPen(QPen(ERROR, 2))
+            painter.drawLine(centre + QPointF(-4, -4), centre + QPointF(4, 4))
+            painter.drawLine(centre + QPointF(-4, 4), centre + QPointF(4, -4))
+
+    def label_lines(self, element: Contact | Coil) -> tuple[str, str, list[str]]:
+        """(address, symbol, comment lines) drawn with an element, as the View chooses: the
+        symbol is the program's (else the manual's signal name); the comment is the element's
+        own, else the program's comment of the address, else the manual's text, wrapped to
+        the cell in up to two lines."""
+        key = (element, name_display(), ui_is_turkish())
+        cached = self._label_cache.get(key)
+        if cached is None:
+            cached = self._label_cache[key] = self._label_lines(element)
+        return cached
+
+    def _label_lines(self, element: Contact | Coil) -> tuple[str, str, list[str]]:
+        address = str(element.address) if element.address is not None else "?"
+        rows = row_metrics()
+        if not rows.symbol:
+            return address, "", []
+        described = self.describe(element.address) if element.address is not None else None
+        symbol = described[0] if described is not None else ""
+        comment = element.comment or (described[1] if described is not None else "")
+        if rows.comment_lines == 0:  # the symbol, else the element's comment, on one line
+            return address, symbol or element.comment, []
+        lines = wrapped(comment, QFontMetricsF(_element_comment_font()), CELL_W - 6,
+                        rows.comment_lines) if comment else []
+        return address, symbol, lines
 
     def _labels(self, painter: QPainter, element: Contact | Coil, x: float, y: float,
                 label_font: QFont, small_font: QFont) -> None:
+        """The address above the element; its symbol and comment lines under it."""
+        address, symbol, lines = self.label_lines(element)
         painter.setFont(label_font)
         painter.setPen(INK if element.address is not None else ERROR)
-        text = str(element.address) if element.address is not None else "?"
-        painter.drawText(QRectF(x, y + 1, CELL_W, 16), Qt.AlignmentFlag.AlignCenter, text)
-        below = element.comment
-        described = self.describe(element.address) if element.address is not None else None
-        if described is not None:
-            below = described[0] + (f" {element.comment}" if element.comment else "")
-        if below:
+        painter.drawText(QRectF(x, y + 1, CELL_W, 16), Qt.AlignmentFlag.AlignCenter, address)
+        below = y + row_metrics().wire + 12
+        if symbol:
+            metrics = QFontMetricsF(small_font)
             painter.setFont(small_font)
             painter.setPen(NAME)
-            metrics = QFontMetricsF(small_font)
-            elided = metrics.elidedText(below, Qt.TextElideMode.ElideRight, CELL_W - 4)
-            painter.drawText(QRectF(x + 2, y + CELL_H - 16, CELL_W - 4, 14),
-                             Qt.AlignmentFlag.AlignCenter, elided)
+            painter.drawText(QRectF(x + 2, below, CELL_W - 4, 13), Qt.AlignmentFlag.AlignCenter,
+                             metrics.elidedText(symbol, Qt.TextElideMode.ElideRight, CELL_W - 4))
+        below += 13
+        if lines:
+            painter.setFont(_element_comment_font())
+            painter.setPen(COMMENT)
+            for index, line in enumerate(lines):
+                painter.drawText(QRectF(x + 1, below + index * COMMENT_LINE_H, CELL_W - 2,
+                                        COMMENT_LINE_H), Qt.AlignmentFlag.AlignCenter, line)
 
     def _paint_contact(self, painter: QPainter, element: Contact, x: float, y: float,
                        label_font: QFont, small_font: QFont) -> None:
-        mid = y + CELL_H / 2
+        mid = y + wire_y()
         left, right = x + CELL_W / 2 - 8, x + CELL_W / 2 + 8
         painter.drawLine(QPointF(x, mid), QPointF(left, mid))
         painter.drawLine(QPointF(right, mid), QPointF(x + CELL_W, mid))
@@ -165,7 +236,7 @@ class NetworkItem(QGraphicsItem):
 
     def _paint_coil(self, painter: QPainter, element: Coil, x: float, y: float, col: int,
                     label_font: QFont, small_font: QFont) -> None:
-        mid = y + CELL_H / 2
+        mid = y + wire_y()
         left, right = x + CELL_W / 2 - 10, x + CELL_W / 2 + 10
         painter.drawLine(QPointF(x, mid), QPointF(left, mid))
         end = x + CELL_W if col >= self.network.columns else right + 6
@@ -183,7 +254,7 @@ class NetworkItem(QGraphicsItem):
     def _paint_box(self, painter: QPainter, box: FunctionBox, x: float, y: float,
                    label_font: QFont, small_font: QFont) -> None:
         width = box.width * CELL_W
-        height = box.height * CELL_H
+        height = box.height * cell_h()
         rect = QRectF(x + 10, y + 6, width - 20, height - 12)
         painter.setBrush(BOX_FILL)
         painter.drawRect(rect)
@@ -191,11 +262,11 @@ class NetworkItem(QGraphicsItem):
         painter.setFont(small_font)
         for index, name in enumerate(box.inputs):
             pin = box.pins[index] if index < len(box.pins) else index
-            py = y + pin * CELL_H + CELL_H / 2
+            py = y + pin * cell_h() + wire_y()
             painter.drawLine(QPointF(x, py), QPointF(x + 10, py))
             painter.drawText(QRectF(x + 12, py - 7, 60, 14), Qt.AlignmentFlag.AlignLeft, name)
         if box.has_output:
-            py = y + CELL_H / 2
+            py = y + wire_y()
             painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
             painter.drawText(QRectF(x + width - 40, py - 7, 28, 14),
                              Qt.AlignmentFlag.AlignRight, "W1")
@@ -210,13 +281,15 @@ class NetworkItem(QGraphicsItem):
                              Qt.AlignmentFlag.AlignHCenter,
                              metrics.elidedText(params, Qt.TextElideMode.ElideRight,
                                                 rect.width() - 8))
-        if box.comment:
+        rows = row_metrics()
+        if box.comment and rows.symbol:
             pen = painter.pen()
             painter.setPen(NAME)
-            painter.drawText(QRectF(rect.left() + 4, rect.top() + 18, rect.width() - 8, 14),
-                             Qt.AlignmentFlag.AlignHCenter,
-                             metrics.elidedText(box.comment, Qt.TextElideMode.ElideRight,
-                                                rect.width() - 8))
+            for index, line in enumerate(wrapped(box.comment, metrics, rect.width() - 8,
+                                                 max(1, rows.comment_lines))):
+                painter.drawText(QRectF(rect.left() + 4, rect.top() + 18 + index * 12,
+                                        rect.width() - 8, 12),
+                                 Qt.AlignmentFlag.AlignHCenter, line)
             painter.setPen(pen)
 
     def _paint_listing(self, painter: QPainter, top: float) -> None:

@@ -11,18 +11,18 @@ from ladderworks.core.il import Network, Program
 from ladderworks.core.ladder import LadderDocument, convert
 
 if TYPE_CHECKING:
-    from ladderworks.gui.editor.view import LadderEditor
+    from ladderworks.gui.editor.ladder_model import LadderModel
 
 AT_ONCE = 300  # a program with more networks than this lays the rest out in the background
 CHUNK = 400  # networks laid out per step in the background
 
 
 class ProgressiveLoader(QObject):
-    """Lays out a program's networks into an editor: the head now, the rest step by step."""
+    """Lays out a program's networks into the model: the head now, the rest step by step."""
 
-    def __init__(self, editor: LadderEditor) -> None:
-        super().__init__(editor)
-        self.editor = editor
+    def __init__(self, model: LadderModel) -> None:
+        super().__init__(model)
+        self.model = model
         self.pending: list[Network] = []
         self.trailer: list[str] = []
         self.kept: convert.Kept | None = None  # receives each network as first laid out
@@ -54,7 +54,7 @@ class ProgressiveLoader(QObject):
         return document
 
     def start(self) -> None:
-        """Begin the background steps (after the editor shows the head)."""
+        """Begin the background steps (after the view shows the head)."""
         if self.pending:
             self._timer.start()
 
@@ -65,16 +65,16 @@ class ProgressiveLoader(QObject):
         self._timer.stop()
 
     def step(self) -> None:
-        """Lay out the next chunk and append it before the editor's empty last network."""
+        """Lay out the next chunk and append it before the model's blank last network."""
         if not self.pending:
             return
         chunk, self.pending = self.pending[:CHUNK], self.pending[CHUNK:]
         last = not self.pending
         part = convert.program_to_ladder(
             Program(networks=chunk, trailer=self.trailer if last else []), self.kept)
-        self.editor.append_networks(part.networks)
+        self.model.append_networks(part.networks)
         if last:
-            self.editor.document.trailer = part.trailer
+            self.model.document.trailer = part.trailer
             self.trailer = []
         else:
             self._timer.start()

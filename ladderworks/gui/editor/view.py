@@ -1,11 +1,9 @@
-"""The grid editor view: networks on a QGraphicsScene, tools on mouse clicks and keys."""
+"""The grid editor view: draws the model's networks on a QGraphicsScene and forwards the
+mouse to the current tool's interaction."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import replace
-
-from PySide6.QtCore import QCoreApplication, QEvent, QObject, QPoint, QPointF, QRectF, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QPoint, QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import (
     QAction,
     QBrush,
@@ -18,41 +16,15 @@ from PySide6.QtGui import (
     QPen,
     QUndoStack,
 )
-from PySide6.QtWidgets import (
-    QApplication,
-    QGraphicsRectItem,
-    QGraphicsScene,
-    QGraphicsView,
-    QLabel,
-    QLineEdit,
-    QMenu,
-    QWidget,
-)
+from PySide6.QtWidgets import QGraphicsRectItem, QGraphicsScene, QGraphicsView, QMenu, QWidget
 
-from ladderworks.core import ladder as core
-from ladderworks.core.address import Address, AddressError
-from ladderworks.core.diagnostics import Diagnostic, has_errors
-from ladderworks.core.il import Instruction, Program, print_instruction
-from ladderworks.core.instructions import Write, lookup
-from ladderworks.core.ladder import (
-    Coil,
-    Contact,
-    Edit,
-    EditRefused,
-    FunctionBox,
-    LadderDocument,
-    LadderNetwork,
-    Selection,
-    Wire,
-    convert,
-)
-from ladderworks.core.ladder.convert import Kept
-from ladderworks.core.signals import signal_at
-from ladderworks.core.symbols import SymbolTable, resolve
-from ladderworks.gui.diagnostic_texts import diagnostic_text
-from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
+from ladderworks.core.address import AddressError
+from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.il import Program
+from ladderworks.core.ladder import LadderNetwork, Selection
+from ladderworks.core.symbols import resolve
+from ladderworks.gui.editor.editing import CursorEdits
 from ladderworks.gui.editor.geometry import (
-    CELL_H,
     CELL_W,
     COMMENT_H,
     LEFT,
@@ -60,17 +32,21 @@ from ladderworks.gui.editor.geometry import (
     Hit,
     Layout,
     cell_centre,
+    cell_h,
     cell_origin,
-    grid_top,
     node_point,
 )
+from ladderworks.gui.editor.inline_edit import InlineEdit
+from ladderworks.gui.editor.interactions import BY_KEY, BY_TOOL, Interaction, SelectInteraction
+from ladderworks.gui.editor.keyboard import GridKeys
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
+from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
-from ladderworks.gui.editor.progressive import ProgressiveLoader
 from ladderworks.gui.function_dialog import FunctionDialog
-from ladderworks.gui.symbol_text import name_and_text, tooltip
-from ladderworks.gui.tools import KEY_TOOLS, Tool
+from ladderworks.gui.retranslate import Retranslating
+from ladderworks.gui.symbol_text import cell_status, element_tooltip, name_and_text
+from ladderworks.gui.tools import Tool
 
 ZOOM_STEP = 1.2
 ZOOM_MIN = 0.3
@@ -80,35 +56,20 @@ ZOOM_MAX = 3.0
 translate = QCoreApplication.translate
 
 
-def is_blank(network: LadderNetwork) -> bool:
-    """True for a network with nothing drawn and no comment (the drawing area at the end)."""
-    return network.is_empty() and not network.comments
-
-
-def describe_signal(address: object) -> tuple[str, str] | None:
-    """(short name, description in the UI language) of a named F/G/X/Y signal."""
-    if not isinstance(address, Address):
-        return None
-    signal = signal_at(address)
-    if signal is None:
-        return None
-    from PySide6.QtCore import QLocale
-
-    turkish = QLocale().language() == QLocale.Language.Turkish
-    return signal.name, (signal.turkish if turkish else signal.english) or signal.english
-
-
-class LadderEditor(QGraphicsView):
-    """The ladder console's drawing area; every edit goes through `undo_stack`."""
+class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
+    """The ladder console's drawing area over a `LadderModel`; every edit is an undo command
+    on the model, and the view redraws what the model announces."""
 
     tool_requested = Signal(object)  # Tool picked with a letter key
     hover_changed = Signal(str)
     message = Signal(str)
+    zoom_changed = Signal(float)  # the new zoom factor (the status bar shows it)
     drawing_changed = Signal()
 
-    def __init__(self, parent: QWidget | None = None) -> None:
+    def __init__(self, model: LadderModel, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("ladder_view")
+        self.model = model
         self._scene = QGraphicsScene(self)
         self._scene.setBackgroundBrush(QBrush(QColor("#ffffff")))
         self.setScene(self._scene)
@@ -117,20 +78,12 @@ class LadderEditor(QGraphicsView):
         self.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.MinimalViewportUpdate)
         self.setMouseTracking(True)
         self.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
-        self.undo_stack = QUndoStack(self)
-        self.document = LadderDocument()
-        self.symbols: SymbolTable | None = None  # the program's `%@2` symbols
-        self.networks: list[LadderNetwork] = []
         self.network_items = LazyItems(self._make_item)  # made when shown (a real program: 10,000+)
-        self.loader = ProgressiveLoader(self)
         self.layout_ = Layout()
-        self.tool = Tool.SELECT
         self.function_name = "TMR"
         self.cursor_cell: tuple[int, int, int] = (0, 0, 0)  # network, row, col
         self.selection: tuple[int, Selection] | None = None
-        self._drag_origin: tuple[int, int, int] | None = None  # select tool: where a drag began
         self._shift_anchor: tuple[int, int, int] | None = None  # Shift+arrows: the fixed corner
-        self.line_start: tuple[int, int, int] | None = None  # network, row, node
         self.function_dialog: FunctionDialog | None = None
         self.context_actions: list[QAction | None] = []
         self._zoom = 1.0
@@ -141,106 +94,104 @@ class LadderEditor(QGraphicsView):
         self._selection_item.setPen(QPen(QColor("#f57c00"), 2, Qt.PenStyle.DashLine))
         self._selection_item.setBrush(QBrush(QColor(255, 152, 0, 40)))
         self._selection_item.setZValue(9)
-        self._line_item = QGraphicsRectItem()
-        self._line_item.setPen(QPen(QColor("#2e7d32"), 2))
-        self._line_item.setBrush(QBrush(QColor("#2e7d32")))
-        self._line_item.setZValue(11)
-        for item in (self._cursor_item, self._selection_item, self._line_item):
+        for item in (self._cursor_item, self._selection_item):
             self._scene.addItem(item)
         self._selection_item.hide()
-        self._line_item.hide()
-        self.inline_editor = QLineEdit(self.viewport())
-        self.inline_editor.setObjectName("inline_editor")
-        self.inline_editor.hide()
-        self.inline_editor.installEventFilter(self)
-        self.inline_message = QLabel(self.viewport())
-        self.inline_message.setObjectName("inline_message")
-        self.inline_message.setStyleSheet(
-            "background: #fff3f3; color: #b00020; border: 1px solid #b00020; padding: 2px;"
-        )
-        self.inline_message.hide()
-        self._inline_target: tuple[str, int, int, int] | None = None  # kind, network, row, col
+        self.interaction: Interaction = SelectInteraction(self)
+        self.inline = InlineEdit(self)
+        self.inline_editor = self.inline.line_edit
+        self.inline_message = self.inline.message
+        model.document_reset.connect(self._on_reset)
+        model.networks_inserted.connect(self._on_inserted)
+        model.network_removed.connect(self._on_removed)
+        model.network_changed.connect(self._on_changed)
+        model.networks_changed.connect(self._on_many_changed)
+        model.diagnostics_found.connect(self.mark_diagnostics)
+        self._on_reset()
+        self.keys = GridKeys(self)  # Home/End, PageUp/PageDown, the menu key
 
-    # -- the document ------------------------------------------------------------------------
+    # -- the model, as the window and the tests ask for it ------------------------------------
 
-    def set_program(self, program: Program, kept: Kept | None = None) -> None:
-        """Show a program as ladder (clears undo); every program the parser accepts lays out.
+    @property
+    def networks(self) -> list[LadderNetwork]:
+        """The model's networks (the last is the blank one to draw in)."""
+        return self.model.networks
 
-        A large program shows its first networks at once; the rest are laid out in the
-        background (`loading`; `finish_loading()` waits for them). `kept` receives each
-        network as laid out with the one it came from (the document's faithful Save)."""
-        document = self.loader.head(program, kept)
-        self.set_document(document, keep_pending=True)
-        self.loader.start()
+    @property
+    def undo_stack(self) -> QUndoStack:
+        """The model's undo stack."""
+        return self.model.undo_stack
 
     @property
     def loading(self) -> bool:
         """True while a large program's networks are still being laid out."""
-        return self.loader.loading
+        return self.model.loading
 
     def finish_loading(self) -> None:
         """Lay out every network still pending now."""
-        self.loader.finish()
+        self.model.finish_loading()
 
-    def append_networks(self, networks: list[LadderNetwork]) -> None:
-        """Add laid-out networks before the empty network at the end (background loading)."""
-        at = len(self.networks) - 1
-        self.networks[at:at] = networks
-        for _network in networks:
-            self.network_items.insert(at)
-        self._relayout(at)
-        self._renumber(at)
+    def program(self) -> tuple[Program | None, list[Diagnostic]]:
+        """The program drawn (None when a network cannot be coded) and the diagnostics."""
+        return self.model.program()
 
-    def set_document(self, document: LadderDocument, *, keep_pending: bool = False) -> None:
-        """Show a ladder document (clears undo)."""
-        if not keep_pending:
-            self.loader.cancel()
-        self._close_inline()
-        self.undo_stack.clear()
-        self.document = document
-        self.symbols = document.origin.symbols if document.origin is not None else None
-        self.networks = [net for net in document.networks]
-        self.networks.append(LadderNetwork())
+    def is_empty(self) -> bool:
+        """True when nothing is drawn."""
+        return self.model.is_empty()
+
+    @property
+    def tool(self) -> Tool:
+        """The current tool."""
+        return self.interaction.tool
+
+    # -- following the model ------------------------------------------------------------------
+
+    def _on_reset(self) -> None:
+        self.inline.close()
         for _index, item in self.network_items.made():
             self._scene.removeItem(item)
         self.network_items.reset(len(self.networks))
         self.layout_ = Layout()
         self.layout_.rebuild(self.networks)
         self.selection = None
-        self.line_start = None
+        self.interaction.cancel()
         self.cursor_cell = (0, 0, 0)
         self._update_scene_rect()
         self._place_overlays()
 
-    def mark_modified(self) -> None:
-        """Make the document count as changed (e.g. after text edits shown as ladder)."""
-        self.undo_stack.resetClean()
+    def _on_inserted(self, first: int, count: int) -> None:
+        for _network in range(count):
+            self.network_items.insert(first)
+        self._relayout(first)
+        self._renumber(max(first - 1, 0))
 
-    def ladder_document(self) -> LadderDocument:
-        """The document with the drawn networks (the empty network at the end left out)."""
-        self.finish_loading()
-        doc = self.document
-        nets = list(self.networks)
-        if nets and is_blank(nets[-1]):
-            nets.pop()
-        return LadderDocument(nets, doc.header, doc.trailer, doc.footer, doc.before, doc.after,
-                              doc.origin)
+    def _on_removed(self, index: int) -> None:
+        item = self.network_items.pop(index)
+        if item is not None:
+            self._scene.removeItem(item)
+        if self.cursor_cell[0] >= len(self.networks):
+            self.cursor_cell = (len(self.networks) - 1, 0, 0)
+        self._relayout(min(index, len(self.networks) - 1))
+        self._renumber(max(index - 1, 0))
 
-    def program(self) -> tuple[Program | None, list[Diagnostic]]:
-        """The program drawn (None when a network cannot be coded) and the diagnostics."""
-        program, diagnostics = self.saved_program()
-        return (None if has_errors(diagnostics) else program), diagnostics
+    def _on_changed(self, index: int) -> None:
+        self.network_items[index].error_cells = set()
+        self.network_items[index].refresh()
+        self._relayout(index)
+        self._renumber(index)
+        self.drawing_changed.emit()
 
-    def saved_program(self) -> tuple[Program, list[Diagnostic]]:
-        """The program to save: a network that cannot be coded yet is kept as a draft."""
-        program, diagnostics = convert.ladder_to_program(self.ladder_document())
-        self.mark_diagnostics(diagnostics)
-        return program, diagnostics
-
-    def is_empty(self) -> bool:
-        """True when nothing is drawn."""
-        self.finish_loading()
-        return all(net.is_empty() for net in self.networks)
+    def _on_many_changed(self, indices: list[int]) -> None:
+        if not indices:
+            return
+        changed = set(indices)
+        for index, item in self.network_items.made(min(changed)):
+            if index in changed:
+                item.error_cells = set()
+                item.refresh()
+        self._relayout(min(changed))
+        self._renumber(min(changed))
+        self.drawing_changed.emit()
 
     def _make_item(self, index: int) -> NetworkItem:
         item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
@@ -254,8 +205,8 @@ class LadderEditor(QGraphicsView):
         if not self.networks or not self.layout_.tops:
             return
         shown = self.mapToScene(self.viewport().rect()).boundingRect()
-        first = self.layout_.network_at(shown.top() - CELL_H)
-        last = self.layout_.network_at(shown.bottom() + CELL_H)
+        first = self.layout_.network_at(shown.top() - cell_h())
+        last = self.layout_.network_at(shown.bottom() + cell_h())
         for index in range(first, min(last, len(self.networks) - 1) + 1):
             self.network_items[index]
 
@@ -266,12 +217,12 @@ class LadderEditor(QGraphicsView):
 
     def describe_address(self, address: object) -> tuple[str, str] | None:
         """(symbol, comment) of the program, else (signal name, description) of the manual."""
-        return name_and_text(address, self.symbols)
+        return name_and_text(address, self.model.symbols)
 
     def resolve_address(self, text: str) -> str:
         """The address a typed text names: itself, or the address of a program symbol."""
         try:
-            return str(resolve(text, self.symbols))
+            return str(resolve(text, self.model.symbols))
         except AddressError:
             return text
 
@@ -293,32 +244,12 @@ class LadderEditor(QGraphicsView):
         widest = max(800, *(LEFT + (n.columns + 1) * CELL_W + 8 for n in self.networks))
         self._scene.setSceneRect(QRectF(-4, -4, widest + 8, self.layout_.total_height() + 40))
 
-    def network_changed(self, index: int) -> None:
-        """A command changed network `index`: repaint and restack from it."""
-        self.network_items[index].error_cells = set()
-        self.network_items[index].refresh()
-        self._relayout(index)
-        self._renumber(index)
-        self.drawing_changed.emit()
-
-    def insert_network(self, index: int, network: LadderNetwork) -> None:
-        """Insert a network (used by undo commands)."""
-        self.networks.insert(index, network)
-        self.network_items.insert(index)
-        self._relayout(index)
-        self._renumber(max(index - 1, 0))
-
-    def remove_network(self, index: int) -> LadderNetwork:
-        """Remove a network (used by undo commands); returns it."""
-        network = self.networks.pop(index)
-        item = self.network_items.pop(index)
-        if item is not None:
-            self._scene.removeItem(item)
-        if self.cursor_cell[0] >= len(self.networks):
-            self.cursor_cell = (len(self.networks) - 1, 0, 0)
-        self._relayout(min(index, len(self.networks) - 1))
-        self._renumber(max(index - 1, 0))
-        return network
+    def relayout(self) -> None:
+        """The rows changed height (View › Element names): lay every network out again."""
+        for _index, item in self.network_items.made():
+            item.refresh()
+        self._relayout(0)
+        self.viewport().update()
 
     def mark_diagnostics(self, diagnostics: list[Diagnostic]) -> None:
         """Outline the cells the diagnostics point at."""
@@ -336,462 +267,32 @@ class LadderEditor(QGraphicsView):
                 item.error_cells.add(diagnostic.cell)
                 item.update()
 
-    # -- editing through commands -------------------------------------------------------------
-
-    def run_edit(self, index: int, operation: Callable[[LadderNetwork], Edit], text: str) -> bool:
-        """Apply a core edit to network `index` as an undoable command; False if refused."""
-        try:
-            undo_edit = operation(self.networks[index])
-        except EditRefused as refused:
-            self.message.emit(diagnostic_text(refused.diagnostic))
-            return False
-        self.undo_stack.push(NetworkEditCommand(self, index, undo_edit, text))
-        return True
-
-    def assign_address_at_cursor(self, address: Address) -> bool:
-        """Put `address` on the contact or coil at the cursor (one undo step); False if none."""
-        index, row, col = self.cursor_cell
-        if index >= len(self.networks) or address.bit is None:
-            return False
-        found = self.networks[index].element_at(row, col)
-        if found is None or not isinstance(found[1], Contact | Coil):
-            return False
-        (r, c), _element = found
-        text = str(address)
-        return self.run_edit(index, lambda n: core.set_address(n, r, c, text),
-                             translate("LadderEditor", "Address {0}").format(text))
+    # -- tools and in-place editing -----------------------------------------------------------
 
     def set_tool(self, tool: Tool) -> None:
-        """Make `tool` current."""
-        self.tool = tool
-        self.line_start = None
-        self._line_item.hide()
-        if tool in (Tool.ROW_BEFORE, Tool.ROW_AFTER, Tool.DELETE):
-            self.viewport().setCursor(Qt.CursorShape.PointingHandCursor)
-        elif tool is Tool.SELECT:
-            self.viewport().setCursor(Qt.CursorShape.ArrowCursor)
-        else:
-            self.viewport().setCursor(Qt.CursorShape.CrossCursor)
+        """Make `tool` current: its interaction gets the mouse from now on."""
+        self.interaction.end()
+        self.interaction = BY_TOOL[tool](self)
+        self.viewport().setCursor(self.interaction.cursor)
 
     def set_function(self, name: str) -> None:
         """The functional instruction the function tool places."""
         self.function_name = name
 
-    def apply_tool(self, hit: Hit) -> None:
-        """Do what the current tool does at a cell (a click, or SPACE at the cursor)."""
-        index, row, col = hit.network, hit.row, hit.col
-        net = self.networks[index]
-        tool = self.tool
-        if hit.comment_line is not None and tool in (Tool.COMMENT, Tool.SELECT):
-            self.open_comment_editor(index, hit.comment_line)
-            return
-        if tool is Tool.SELECT:
-            self._select(index, row, col)
-        elif tool in (Tool.INPUT, Tool.INPUT_NOT):
-            self._place_bit(index, row, col, Contact(negated=tool is Tool.INPUT_NOT))
-        elif tool in (Tool.OUTPUT, Tool.OUTPUT_NOT):
-            self._place_bit(index, row, col, Coil(negated=tool is Tool.OUTPUT_NOT))
-        elif tool in (Tool.SET_COIL, Tool.RESET_COIL):
-            write = Write.SET if tool is Tool.SET_COIL else Write.RESET
-            self._place_bit(index, row, col, Coil(write=write))
-        elif tool is Tool.INVERT:
-            self.run_edit(
-                index, lambda n: core.invert(n, row, col), translate("LadderEditor", "NOT")
-            )
-        elif tool is Tool.OR:
-            self._add_parallel(index, row, col)
-        elif tool is Tool.LINE:
-            self._line_click(index, row, hit.node)
-        elif tool is Tool.COMMENT:
-            if net.row_is_empty(row) or row >= net.rows:
-                self.open_comment_editor(index, len(net.comments))
-            else:
-                self.message.emit(
-                    translate("LadderEditor", "The comment tool works on an empty row only")
-                )
-        elif tool is Tool.DELETE:
-            self.run_edit(
-                index, lambda n: core.delete(n, row, col), translate("LadderEditor", "Delete")
-            )
-        elif tool is Tool.FUNCTION:
-            self.open_function_dialog(index, row, col, self.function_name)
-        elif tool in (Tool.ROW_BEFORE, Tool.ROW_AFTER):
-            after = tool is Tool.ROW_AFTER
-            self.run_edit(
-                index,
-                lambda n: core.insert_row(n, row, after=after),
-                translate("LadderEditor", "Insert row"),
-            )
-
-    def _place_bit(self, index: int, row: int, col: int, element: Contact | Coil) -> None:
-        found = self.networks[index].element_at(row, col)
-        if found is not None and type(found[1]) is type(element):
-            old = found[1]
-            assert isinstance(old, Contact | Coil)
-            if isinstance(old, Coil) and isinstance(element, Coil) and old.write != element.write:
-                kind = replace(old, negated=element.negated, write=element.write)
-                self.run_edit(
-                    index, lambda n: core.replace_element(n, row, col, kind),
-                    translate("LadderEditor", "Place coil"))
-            elif old.negated != element.negated:
-                self.run_edit(
-                    index, lambda n: core.invert(n, row, col), translate("LadderEditor", "NOT")
-                )
-            self.open_address_editor(index, found[0][0], found[0][1])
-            return
-        text = (
-            translate("LadderEditor", "Place contact")
-            if isinstance(element, Contact)
-            else translate("LadderEditor", "Place coil")
-        )
-        if self.run_edit(index, lambda n: core.place(n, row, col, element), text):
-            self.open_address_editor(index, row, col)
-
-    def _add_parallel(self, index: int, row: int, col: int) -> None:
-        found = self.networks[index].element_at(row, col)
-        if found is None or not isinstance(found[1], Contact | Coil):
-            self.message.emit(
-                translate("LadderEditor", "Select a contact or a coil for the OR tool")
-            )
-            return
-        (row, col), _old = found
-        if self.run_edit(
-            index, lambda n: core.add_parallel(n, row, col), translate("LadderEditor", "OR")
-        ):
-            self.open_address_editor(index, row + 1, col)
-
-    def _line_click(self, index: int, row: int, node: int) -> None:
-        if self.line_start is None or self.line_start[0] != index:
-            self.line_start = (index, row, node)
-            x, y = node_point(self.networks[index], row, node)
-            top = self.layout_.tops[index]
-            self._line_item.setRect(QRectF(x - 4, top + y - 4, 8, 8))
-            self._line_item.show()
-            self.message.emit(translate("LadderEditor", "Line: click the second point"))
-            return
-        _, row1, node1 = self.line_start
-        self.line_start = None
-        self._line_item.hide()
-        if (row1, node1) == (row, node):
-            return
-        self.run_edit(
-            index,
-            lambda n: core.draw_line(n, (row1, node1), (row, node)),
-            translate("LadderEditor", "Line"),
-        )
-
-    def _select(self, index: int, row: int, col: int) -> None:
-        found = self.networks[index].element_at(row, col)
-        if found is None or isinstance(found[1], Wire):
-            self.selection = None
-        else:
-            (r, c), element = found
-            cells = self.networks[index].footprint((r, c), element)
-            self.selection = (index, Selection.spanning(cells[0], cells[-1]))
-        self._place_overlays()
-
-    def open_function_dialog(
-        self, index: int, row: int, col: int, name: str, box: FunctionBox | None = None
-    ) -> None:
-        """The function property table; on OK the box is placed (or its parameters set)."""
-        spec = box.spec if box is not None else lookup(name)
-        if spec is None:
-            return
-        current = Instruction(box.name, params=box.params) if box is not None else None
-        dialect = self.document.origin.dialect if self.document.origin is not None else "seed"
-        dialog = FunctionDialog(spec, current, self, box.comment if box is not None else "",
-                                dialect)
-        self.function_dialog = dialog
-
-        def done() -> None:
-            instruction = dialog.instruction
-            if instruction is None:
-                return
-            if box is None:
-                element = FunctionBox.new(spec.name, instruction.params, dialog.comment_text)
-                self.run_edit(
-                    index,
-                    lambda n: core.place(n, row, col, element),
-                    translate("LadderEditor", "Place {0}").format(spec.name),
-                )
-            else:
-                self.undo_stack.beginMacro(
-                    translate("LadderEditor", "Parameters of {0}").format(spec.name))
-                self.run_edit(
-                    index,
-                    lambda n: core.set_params(n, row, col, instruction.params),
-                    translate("LadderEditor", "Parameters of {0}").format(spec.name),
-                )
-                if dialog.comment_text != box.comment:
-                    self.run_edit(
-                        index,
-                        lambda n: core.set_comment(n, row, col, dialog.comment_text),
-                        translate("LadderEditor", "Comment"),
-                    )
-                self.undo_stack.endMacro()
-            self.setFocus()
-
-        dialog.accepted.connect(done)
-        dialog.open()
-
-    # -- in-place editing ---------------------------------------------------------------------
-
     def open_address_editor(self, index: int, row: int, col: int) -> None:
         """Edit the address (and `// comment`) of the contact or coil at a cell."""
-        found = self.networks[index].element_at(row, col)
-        if found is None or not isinstance(found[1], Contact | Coil):
-            return
-        element = found[1]
-        text = str(element.address) if element.address is not None else ""
-        if element.comment:
-            text += "  // " + element.comment
-        x, y = cell_origin(self.networks[index], row, col)
-        rect = QRectF(x - 10, self.layout_.tops[index] + y, CELL_W + 60, 24)
-        self._open_inline(
-            ("address", index, row, col),
-            text,
-            rect,
-            translate("LadderEditor", "Address or symbol, e.g. X2.1 (// comment)"),
-        )
+        self.inline.open_address(index, row, col)
 
     def open_comment_editor(self, index: int, line: int) -> None:
         """Edit (or add) network comment line `line` (the comment tool)."""
-        net = self.networks[index]
-        text = net.comments[line] if line < len(net.comments) else ""
-        rect = QRectF(
-            LEFT, self.layout_.tops[index] + line * COMMENT_H, (net.columns + 1) * CELL_W, 24
-        )
-        self._open_inline(
-            ("comment", index, line, 0), text, rect, translate("LadderEditor", "Comment")
-        )
-
-    def _open_inline(
-        self, target: tuple[str, int, int, int], text: str, rect: QRectF, placeholder: str
-    ) -> None:
-        self._inline_target = target
-        self.ensureVisible(rect, 20, 20)
-        top_left = self.mapFromScene(rect.topLeft())
-        width = int(rect.width() * self._zoom)
-        self.inline_editor.setGeometry(top_left.x(), top_left.y(), max(width, 140), 26)
-        self.inline_editor.setPlaceholderText(placeholder)
-        self.inline_editor.setText(text)
-        self.inline_editor.selectAll()
-        self.inline_message.hide()
-        self.inline_editor.show()
-        self.inline_editor.setFocus()
-
-    def _close_inline(self) -> None:
-        self._inline_target = None
-        self.inline_editor.hide()
-        self.inline_message.hide()
-        if self.inline_editor.hasFocus():
-            self.setFocus()
-
-    def _refuse_inline(self, diagnostic: Diagnostic) -> None:
-        text = diagnostic_text(diagnostic)
-        self.inline_message.setText(text)
-        self.inline_message.adjustSize()
-        geometry = self.inline_editor.geometry()
-        self.inline_message.move(geometry.left(), geometry.bottom() + 2)
-        self.inline_message.show()
-        self.inline_message.raise_()
-        self.message.emit(text)
-
-    def _commit_inline(self) -> None:
-        target = self._inline_target
-        if target is None:
-            return
-        kind, index, row, col = target
-        text = self.inline_editor.text()
-        if kind == "comment":
-            self._commit_comment(index, row, text)
-            return
-        address_text, _, comment = text.partition("//")
-        address_text = address_text.strip()
-        comment = comment.strip()
-        if not address_text:
-            self._close_inline()
-            return
-        address_text = self.resolve_address(address_text)
-        try:
-            core.edits.to_address(address_text, (row, col))
-        except EditRefused as refused:
-            self._refuse_inline(refused.diagnostic)
-            return
-        found = self.networks[index].element_at(row, col)
-        assert found is not None
-        element = found[1]
-        assert isinstance(element, Contact | Coil)
-        self.undo_stack.beginMacro(translate("LadderEditor", "Address {0}").format(address_text))
-        self.run_edit(
-            index,
-            lambda n: core.set_address(n, row, col, address_text),
-            translate("LadderEditor", "Address"),
-        )
-        if comment != element.comment:
-            self.run_edit(
-                index,
-                lambda n: core.set_comment(n, row, col, comment),
-                translate("LadderEditor", "Comment"),
-            )
-        self.undo_stack.endMacro()
-        self._close_inline()
-
-    def _commit_comment(self, index: int, line: int, text: str) -> None:
-        lines = list(self.networks[index].comments)
-        if line < len(lines):
-            if text.strip():
-                lines[line] = text.rstrip()
-            else:
-                del lines[line]
-        elif text.strip():
-            lines.append(text.rstrip())
-        else:
-            self._close_inline()
-            return
-        self._close_inline()
-        self.run_edit(
-            index,
-            lambda n: core.set_network_comments(n, lines),
-            translate("LadderEditor", "Comment"),
-        )
-
-    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        """ENTER in the inline editor commits it, ESC cancels it."""
-        if watched is self.inline_editor and event.type() == QEvent.Type.KeyPress:
-            assert isinstance(event, QKeyEvent)
-            if event.key() == Qt.Key.Key_Escape:
-                self._close_inline()
-                return True
-            if event.key() in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
-                # consumed here: an ignored ENTER would reach the grid and open the editor again
-                self._commit_inline()
-                return True
-        return super().eventFilter(watched, event)
-
-    # -- actions on the cursor (menus, keys) --------------------------------------------------
-
-    def _cursor_target(self) -> tuple[int, int, int]:
-        if self.selection is not None:
-            index, sel = self.selection
-            return index, sel.top, sel.left
-        return self.cursor_cell
-
-    def edit_at_cursor(self) -> None:
-        """ENTER: edit the element at the cursor (address, function table or comment)."""
-        index, row, col = self.cursor_cell
-        net = self.networks[index]
-        found = net.element_at(row, col)
-        if found is None:
-            if self.tool is Tool.COMMENT:
-                self.open_comment_editor(index, len(net.comments))
-            return
-        (r, c), element = found
-        if isinstance(element, Contact | Coil):
-            self.open_address_editor(index, r, c)
-        elif isinstance(element, FunctionBox):
-            self.open_function_dialog(index, r, c, element.name, element)
-
-    def delete_at_cursor(self) -> None:
-        """DEL: delete the selection or the element at the cursor."""
-        if self.selection is not None:
-            index, sel = self.selection
-            text = translate("LadderEditor", "Delete")
-            try:
-                _, undo_edit = core.cut(self.networks[index], sel)
-            except EditRefused as refused:
-                self.message.emit(diagnostic_text(refused.diagnostic))
-                return
-            self.undo_stack.push(NetworkEditCommand(self, index, undo_edit, text))
-            self.selection = None
-            self._place_overlays()
-            return
-        index, row, col = self.cursor_cell
-        self.run_edit(
-            index, lambda n: core.delete(n, row, col), translate("LadderEditor", "Delete")
-        )
-
-    def invert_at_cursor(self) -> None:
-        """NOT on the element at the cursor."""
-        index, row, col = self._cursor_target()
-        self.run_edit(index, lambda n: core.invert(n, row, col), translate("LadderEditor", "NOT"))
-
-    def or_at_cursor(self) -> None:
-        """OR on the element at the cursor (a parallel contact or coil)."""
-        index, row, col = self._cursor_target()
-        self._add_parallel(index, row, col)
-
-    def insert_row_before(self) -> None:
-        """Insert an empty row before the cursor's row."""
-        index, row, _ = self.cursor_cell
-        self.run_edit(
-            index, lambda n: core.insert_row(n, row), translate("LadderEditor", "Insert row")
-        )
-
-    def insert_row_after(self) -> None:
-        """Insert an empty row after the cursor's row."""
-        index, row, _ = self.cursor_cell
-        self.run_edit(
-            index,
-            lambda n: core.insert_row(n, row, after=True),
-            translate("LadderEditor", "Insert row"),
-        )
-
-    def copy(self) -> None:
-        """Copy the selection (or the element at the cursor) to the clipboard as grid text."""
-        index, sel = self._selection_or_cursor()
-        QApplication.clipboard().setText(core.copy_text(self.networks[index], sel))
-
-    def cut(self) -> None:
-        """Cut the selection (or the element at the cursor)."""
-        index, sel = self._selection_or_cursor()
-        try:
-            text, undo_edit = core.cut(self.networks[index], sel)
-        except EditRefused as refused:
-            self.message.emit(diagnostic_text(refused.diagnostic))
-            return
-        QApplication.clipboard().setText(text)
-        self.undo_stack.push(
-            NetworkEditCommand(self, index, undo_edit, translate("LadderEditor", "Cut"))
-        )
-        self.selection = None
-        self._place_overlays()
-
-    def paste(self) -> None:
-        """Paste grid text with its top-left at the cursor."""
-        text = QApplication.clipboard().text()
-        if not text:
-            return
-        index, row, col = self.cursor_cell
-        self.run_edit(
-            index, lambda n: core.paste(n, row, col, text), translate("LadderEditor", "Paste")
-        )
-
-    def delete_network(self) -> None:
-        """Delete the network at the cursor."""
-        index = self.cursor_cell[0]
-        if index >= len(self.networks) - 1:
-            return
-        self.undo_stack.push(
-            NetworkListCommand(self, index, None, translate("LadderEditor", "Delete network"))
-        )
-
-    def _selection_or_cursor(self) -> tuple[int, Selection]:
-        if self.selection is not None:
-            return self.selection
-        index, row, col = self.cursor_cell
-        found = self.networks[index].element_at(row, col)
-        if found is not None:
-            cells = self.networks[index].footprint(*found)
-            return index, Selection.spanning(cells[0], cells[-1])
-        return index, Selection(row, col, row, col)
+        self.inline.open_comment(index, line)
 
     # -- cursor, overlays, positions ----------------------------------------------------------
 
     def cell_rect(self, index: int, row: int, col: int) -> QRectF:
         """A cell's rectangle in scene coordinates."""
         x, y = cell_origin(self.networks[index], row, col)
-        return QRectF(x, self.layout_.tops[index] + y, CELL_W, CELL_H)
+        return QRectF(x, self.layout_.tops[index] + y, CELL_W, cell_h())
 
     def cell_point(self, index: int, row: int, col: int) -> QPoint:
         """Viewport point at a cell's centre (scrolled into view first)."""
@@ -851,36 +352,11 @@ class LadderEditor(QGraphicsView):
 
     def tooltip_at(self, index: int, row: int, col: int) -> str:
         """Tooltip of a cell's contact or coil: address, symbol, its comments; else ""."""
-        found = self.networks[index].element_at(row, col)
-        if found is None or not isinstance(found[1], Contact | Coil) or found[1].address is None:
-            return ""
-        element = found[1]
-        address = element.address
-        if address is None:
-            return ""
-        text = tooltip(address, self.symbols)
-        return text + (f"\n// {element.comment}" if element.comment else "")
+        return element_tooltip(self.networks[index], row, col, self.model.symbols)
 
     def describe_cell(self, index: int, row: int, col: int) -> str:
         """Status-bar text: the cell, and the address with its signal name and comment."""
-        parts = [
-            translate("LadderEditor", "N{0} row {1} col {2}").format(index + 1, row + 1, col + 1)
-        ]
-        if self.networks[index].label:
-            parts.append(self.networks[index].label)
-        found = self.networks[index].element_at(row, col)
-        if found is not None:
-            element = found[1]
-            if isinstance(element, Contact | Coil) and element.address is not None:
-                parts.append(str(element.address))
-                described = self.describe_address(element.address)
-                if described is not None:
-                    parts.append(" — ".join(text for text in described if text))
-                if element.comment:
-                    parts.append(element.comment)
-            elif isinstance(element, FunctionBox):
-                parts.append(print_instruction(Instruction(element.name, params=element.params)))
-        return "  |  ".join(parts)
+        return cell_status(self.networks[index], index, row, col, self.model.symbols)
 
     # -- zoom ---------------------------------------------------------------------------------
 
@@ -900,11 +376,16 @@ class LadderEditor(QGraphicsView):
         """The current zoom factor."""
         return self._zoom
 
+    def set_zoom(self, factor: float) -> None:
+        """Zoom to `factor` (clamped to the zoom range)."""
+        self._set_zoom(factor)
+
     def _set_zoom(self, factor: float) -> None:
         self._zoom = min(max(factor, ZOOM_MIN), ZOOM_MAX)
         self.resetTransform()
         self.scale(self._zoom, self._zoom)
-        self._close_inline()
+        self.inline.close()
+        self.zoom_changed.emit(self._zoom)
 
     # -- events -------------------------------------------------------------------------------
 
@@ -913,17 +394,15 @@ class LadderEditor(QGraphicsView):
         return self.layout_.hit(self.networks, scene.x(), scene.y())
 
     def mousePressEvent(self, event: QMouseEvent) -> None:
-        """Click: move the cursor there and use the current tool."""
-        if self._inline_target is not None:
-            self._close_inline()
+        """Click: move the cursor there and hand the click to the current tool."""
+        if self.inline.target is not None:
+            self.inline.close()
         hit = self._hit(event.position().toPoint())
         if event.button() == Qt.MouseButton.LeftButton:
             self.setFocus()
             self.cursor_cell = (hit.network, hit.row, hit.col)
-            self.apply_tool(hit)
             self._shift_anchor = None
-            if self.tool is Tool.SELECT and hit.comment_line is None:
-                self._drag_origin = (hit.network, hit.row, hit.col)
+            self.interaction.mouse_press(event, hit)
             index = min(self.cursor_cell[0], len(self.networks) - 1)
             net = self.networks[index]
             self.cursor_cell = (
@@ -937,30 +416,15 @@ class LadderEditor(QGraphicsView):
         if event.button() == Qt.MouseButton.RightButton:
             net = self.networks[hit.network]
             self.cursor_cell = (hit.network, min(hit.row, max(net.rows - 1, 0)), hit.col)
-            self._select(*self.cursor_cell)
+            self.select_element(*self.cursor_cell)
             event.accept()
             return
         super().mousePressEvent(event)
 
-    def select_rectangle(self, index: int, corner: tuple[int, int],
-                         other: tuple[int, int]) -> None:
-        """Select the cells between two corners of one network (rows and columns clamped)."""
-        net = self.networks[index]
-        last_row = max(net.rows - 1, 0)
-
-        def clamp(cell: tuple[int, int]) -> tuple[int, int]:
-            return min(max(cell[0], 0), last_row), min(max(cell[1], 0), net.columns)
-
-        self.selection = (index, Selection.spanning(clamp(corner), clamp(other)))
-        self._place_overlays()
-
     def mouseMoveEvent(self, event: QMouseEvent) -> None:
-        """Report the cell under the mouse; with the select tool, a drag selects a rectangle."""
+        """Report the cell under the mouse; the tool may follow it (a drag selects)."""
         hit = self._hit(event.position().toPoint())
-        origin = self._drag_origin
-        if (origin is not None and hit.network == origin[0] and hit.comment_line is None
-                and (hit.row, hit.col) != origin[1:]):
-            self.select_rectangle(origin[0], origin[1:], (hit.row, hit.col))
+        self.interaction.mouse_move(event, hit)
         if hit.comment_line is None:
             net = self.networks[hit.network]
             if hit.row < net.rows:
@@ -969,16 +433,13 @@ class LadderEditor(QGraphicsView):
         super().mouseMoveEvent(event)
 
     def mouseReleaseEvent(self, event: QMouseEvent) -> None:
-        """End a drag selection."""
-        self._drag_origin = None
+        """The tool's release (a drag selection ends)."""
+        self.interaction.mouse_release(event, self._hit(event.position().toPoint()))
         super().mouseReleaseEvent(event)
 
     def mouseDoubleClickEvent(self, event: QMouseEvent) -> None:
-        """Double-click edits the element (in the select tool)."""
-        if self.tool is Tool.SELECT:
-            hit = self._hit(event.position().toPoint())
-            self.cursor_cell = (hit.network, hit.row, hit.col)
-            self.edit_at_cursor()
+        """The tool's double click (select: edit the element); else a second click."""
+        if self.interaction.mouse_double_click(event, self._hit(event.position().toPoint())):
             event.accept()
             return
         self.mousePressEvent(event)
@@ -992,7 +453,10 @@ class LadderEditor(QGraphicsView):
                 menu.addSeparator()
             else:
                 menu.addAction(action)
-        menu.exec(event.globalPos())
+        where = event.globalPos()
+        if event.reason() == QContextMenuEvent.Reason.Keyboard:  # Shift+F10, the menu key
+            where = self.viewport().mapToGlobal(self.cell_point(*self.cursor_cell))
+        menu.exec(where)
 
     def keyPressEvent(self, event: QKeyEvent) -> None:
         """Arrows move, letters pick tools, ENTER edits, SPACE uses the tool, DEL deletes."""
@@ -1014,6 +478,8 @@ class LadderEditor(QGraphicsView):
             return
         if key not in (Qt.Key.Key_Shift, Qt.Key.Key_Control, Qt.Key.Key_Alt, Qt.Key.Key_Meta):
             self._shift_anchor = None  # any other key ends a Shift+arrows selection
+        if self.keys.handle(event):
+            return
         if key in moves:
             drow, dcol = moves[Qt.Key(key)]
             row += drow
@@ -1031,31 +497,28 @@ class LadderEditor(QGraphicsView):
             return
         if key == Qt.Key.Key_Space:
             node = col
-            self.apply_tool(Hit(index, row, col, node))
+            self.interaction.apply(Hit(index, row, col, node))
             return
         if key in (Qt.Key.Key_Delete, Qt.Key.Key_Backspace):
             self.delete_at_cursor()
             return
         if key == Qt.Key.Key_Escape:
-            self.line_start = None
-            self._line_item.hide()
+            self.interaction.cancel()
             self.selection = None
             self._place_overlays()
             self.tool_requested.emit(Tool.SELECT)
             return
         text = event.text().upper()
-        if text in KEY_TOOLS and not event.modifiers() & (
+        if text in BY_KEY and not event.modifiers() & (
             Qt.KeyboardModifier.ControlModifier | Qt.KeyboardModifier.AltModifier
         ):
-            self.tool_requested.emit(KEY_TOOLS[text])
+            self.tool_requested.emit(BY_KEY[text].tool)
             return
         super().keyPressEvent(event)
 
-    def changeEvent(self, event: QEvent) -> None:
-        """Repaint signal descriptions in the new language."""
-        if event.type() == QEvent.Type.LanguageChange:
-            self.viewport().update()
-        super().changeEvent(event)
+    def retranslate(self) -> None:
+        """Repaint the signal descriptions in the new language."""
+        self.viewport().update()
 
 
-__all__ = ["LadderEditor", "describe_signal", "grid_top"]
+__all__ = ["LadderEditor"]

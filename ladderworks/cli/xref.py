@@ -1,0 +1,98 @@
+"""CLI command `xref`: where a program reads and writes each address (docs/cross-reference.md)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Sequence
+
+from ladderworks.core.address import Address, AddressError, looks_like_address
+from ladderworks.core.il import Program, parse_file
+from ladderworks.core.symbols import SymbolTable, describe, resolve
+from ladderworks.core.xref import Access, CrossReference, Use, UseKind
+
+HEADERS = ("ADDRESS", "SYMBOL", "NETWORK", "LABEL", "UNIT", "LINE", "INSTRUCTION", "ELEMENT",
+           "ACCESS")
+
+_KIND_TEXT = {
+    UseKind.CONTACT: "contact", UseKind.CONTACT_NOT: "NOT contact", UseKind.COIL: "coil",
+    UseKind.COIL_NOT: "NOT coil", UseKind.SET: "SET coil", UseKind.RESET: "RST coil",
+    UseKind.PARAMETER: "parameter", UseKind.NUMBER: "number",
+}
+_ACCESS_TEXT = {Access.READ: "read", Access.WRITE: "write", Access.READ_WRITE: "read+write"}
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    """Add `xref FILE [ADDR ...]`."""
+    parser = subparsers.add_parser(
+        "xref", help="cross reference: where each address is read and written")
+    parser.add_argument("file", metavar="FILE")
+    parser.add_argument(
+        "addresses", nargs="*", metavar="ADDR",
+        help="an address (X21.7, R100) or a program symbol (ESKIP); all addresses without one")
+    parser.set_defaults(handler=_xref)
+
+
+def element_text(use: Use) -> str:
+    """The element kind in words, with the parameter's name (`parameter output`)."""
+    text = _KIND_TEXT[use.kind]
+    return f"{text} {use.parameter}" if use.parameter else text
+
+
+def use_row(use: Use, symbols: SymbolTable | None) -> tuple[str, ...]:
+    """One table row: the columns of HEADERS."""
+    written = str(use.address) + (f":{use.width}" if use.width > 1 else "")
+    return (written, describe(use.address, symbols) or "-", str(use.network + 1),
+            use.label or "-", use.unit or "-", str(use.line or "-"), use.instruction,
+            element_text(use), _ACCESS_TEXT[use.access])
+
+
+def table(rows: Sequence[tuple[str, ...]]) -> str:
+    """Rows under HEADERS, columns padded to their widest cell (the last is not padded)."""
+    widths = [max(len(row[k]) for row in (HEADERS, *rows)) for k in range(len(HEADERS))]
+    lines = []
+    for row in (HEADERS, *rows):
+        cells = [cell.ljust(width) for cell, width in zip(row[:-1], widths, strict=False)]
+        lines.append("  ".join([*cells, row[-1]]))
+    return "\n".join(lines) + "\n"
+
+
+def _load(name: str) -> Program | None:
+    result = parse_file(name)
+    if not result.ok:
+        for diagnostic in result.diagnostics:
+            print(diagnostic.located(name), file=sys.stderr)
+        return None
+    return result.program
+
+
+def _xref(args: argparse.Namespace) -> int:
+    program = _load(args.file)
+    if program is None:
+        return 1
+    symbols = program.symbols
+    queries: list[tuple[str, Address]] = []
+    for text in args.addresses:
+        try:
+            queries.append((text, resolve(text, symbols)))
+        except AddressError as error:
+            reason = (error.diagnostic.message() if looks_like_address(text)
+                      else f"'{text}' is neither an address nor a symbol of {args.file}")
+            print(f"ladderworks-cli xref: {reason}", file=sys.stderr)
+            return 2
+    xref = CrossReference.from_program(program)
+    if not queries:
+        sys.stdout.write(table([use_row(use, symbols) for use in xref.sorted_uses()]))
+        return 0
+    rows: list[tuple[str, ...]] = []
+    unused = False
+    for text, address in queries:
+        uses = xref.uses_of(address)
+        if not uses:
+            named = text if text == str(address) else f"{text} ({address})"
+            print(f"ladderworks-cli xref: {named} is not used in {args.file}", file=sys.stderr)
+            unused = True
+        rows += [use_row(use, symbols) for use in uses]
+    if rows:
+        sys.stdout.write(table(rows))
+    return 1 if unused else 0

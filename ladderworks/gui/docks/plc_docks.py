@@ -1,0 +1,143 @@
+"""The PLC docks of the console, each built with what it needs: session, editor, menus."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtWidgets import QDockWidget, QMainWindow
+
+from ladderworks.core.il import Program
+from ladderworks.gui.console_menus import ConsoleMenus
+from ladderworks.gui.docks.alarms import AlarmDock
+from ladderworks.gui.docks.bit_display import BitDisplayDock
+from ladderworks.gui.docks.diagnostic import DiagnosticDock
+from ladderworks.gui.docks.force_list import ForceListDock
+from ladderworks.gui.docks.online import ACTION_NAMES, OnlineMode
+from ladderworks.gui.docks.plc_control import PlcControlDock
+from ladderworks.gui.docks.scenario import RECORD, RUN, ScenarioDock
+from ladderworks.gui.docks.tables import PlcTablesDock
+from ladderworks.gui.docks.time_chart import TimeChartDock
+from ladderworks.gui.docks.time_travel import TimeTravel
+from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.plc_session import PlcSession
+
+RIGHT = Qt.DockWidgetArea.RightDockWidgetArea
+BOTTOM = Qt.DockWidgetArea.BottomDockWidgetArea
+
+
+@dataclass(slots=True)
+class PlcDocks:
+    """The PLC session and everything `build_plc_docks` put into the window."""
+
+    session: PlcSession
+    control: PlcControlDock
+    diagnostic: DiagnosticDock
+    force_list: ForceListDock
+    online: OnlineMode
+    bit_display: BitDisplayDock
+    time_chart: TimeChartDock
+    alarms: AlarmDock
+    tables: PlcTablesDock
+    scenario: ScenarioDock
+    time_travel: TimeTravel  # PLC › Keep scan history
+
+    @property
+    def others(self) -> dict[str, QDockWidget]:
+        """Issue 8's docks by name (bit_display, time_chart, alarms, tables, scenario)."""
+        return {"bit_display": self.bit_display, "time_chart": self.time_chart,
+                "alarms": self.alarms, "tables": self.tables, "scenario": self.scenario}
+
+    def retranslate(self) -> None:
+        """The helpers that are not widgets (the docks retranslate themselves)."""
+        self.online.retranslate()
+        self.time_travel.retranslate()
+
+
+def _tab(window: QMainWindow, docks: list[QDockWidget]) -> None:
+    """Put `docks` in one tab group (small screens: one dock's room for several)."""
+    for dock in docks[1:]:
+        window.tabifyDockWidget(docks[0], dock)
+
+
+def _raise_when_shown(window: QMainWindow, dock: QDockWidget) -> None:
+    """Its toggle brings a tabbed dock to the front, not only back into its group, and gives
+    it a fair share of the window: a bottom dock at least a third of the height (a large
+    screen has room for a readable chart), a right-hand dock at most 45 % of the width (the
+    ladder keeps the rest). A dock's minimum size still wins on a small screen."""
+
+    def shown(checked: bool) -> None:
+        if not checked:
+            return
+        dock.raise_()
+        area = window.dockWidgetArea(dock)
+        third = window.height() // 3
+        widest = window.width() * 45 // 100
+        if area == BOTTOM and dock.height() < third:
+            window.resizeDocks([dock], [third], Qt.Orientation.Vertical)
+        elif area == RIGHT and dock.width() > widest:
+            window.resizeDocks([dock], [widest], Qt.Orientation.Horizontal)
+
+    dock.toggleViewAction().triggered.connect(shown)
+
+
+def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSession,
+                    editor: LadderEditor) -> PlcDocks:
+    """Create every PLC dock over `session`, with its View toggle and PLC / File actions.
+
+    The docks start hidden except the alarm panel. The right-hand docks share one tab group,
+    and the run-time docks at the bottom share the alarm panel's, so a 1024×600 screen holds
+    them; a user can drag them apart on a large one."""
+
+    def console_program() -> Program | None:
+        program, _diagnostics = editor.model.program()
+        return program
+
+    control = PlcControlDock(session, window, console_program)
+    diagnostic = DiagnosticDock(session, window)
+    bits = BitDisplayDock(session, window)
+    tables = PlcTablesDock(session, window)
+    alarms = AlarmDock(session, window)
+    chart = TimeChartDock(session, window)
+    scenario = ScenarioDock(session, window, chart)
+    force_list = ForceListDock(session, window)
+    online = OnlineMode(editor, session, window)
+    travel = TimeTravel(session, diagnostic, chart, online, window)
+
+    plc = "menu_plc"
+    menus.add_dock(control, "action_dock_plc_control", RIGHT, plc, separator=True)
+    menus.add_dock(diagnostic, "action_dock_plc_diagnostic", RIGHT, plc)
+    menus.add_dock(force_list, "action_dock_force_list", BOTTOM, plc)
+    menus.add_dock(bits, "action_dock_bit_display", RIGHT)
+    menus.add_dock(chart, "action_dock_time_chart", BOTTOM)
+    menus.add_dock(alarms, "action_dock_alarms", BOTTOM)
+    menus.add_dock(tables, "action_dock_plc_tables", RIGHT)
+    menus.add_dock(scenario, "action_dock_scenario", BOTTOM)
+    # tabbed while hidden: a tab group of shown docks sizes the window's first layout by
+    # all of them, and leaves a tab bar behind with their titles
+    for dock in (control, diagnostic, bits, tables, alarms, chart, scenario, force_list):
+        dock.hide()
+        _raise_when_shown(window, dock)
+    _tab(window, [control, diagnostic, bits, tables])
+    _tab(window, [alarms, chart, scenario, force_list])
+    alarms.show()
+
+    # one path (issue 18): Compile, START and STOP on the main toolbar and in the PLC menu
+    run = [control.control_actions[name] for name in ("action_plc_start", "action_plc_stop")]
+    menus.register(control.control_actions["action_plc_control_compile"])
+    menus.add(plc, run[0], separator=True, toolbar=True)
+    menus.add(plc, run[1], toolbar=True)
+    menus.add_many(plc, [online.actions[name] for name in ACTION_NAMES], separator=True)
+    menus.insert_before("menu_file", alarms.file_action, "action_quit")
+    menus.add(plc, alarms.reset_action)
+    for name in (RUN, RECORD):
+        action = scenario.actions_by_name[name]
+        action.triggered.connect(scenario.show)
+        action.triggered.connect(scenario.raise_)
+        menus.add(plc, action)
+    menus.add(plc, travel.action)
+    app = QCoreApplication.instance()
+    if app is not None:
+        app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
+    return PlcDocks(session, control, diagnostic, force_list, online, bits, chart, alarms,
+                    tables, scenario, travel)

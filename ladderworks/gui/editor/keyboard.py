@@ -1,0 +1,81 @@
+"""Grid keys beyond the arrows: Home/End, Ctrl+Home/End, PageUp/PageDown, the menu key."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QPoint, Qt
+from PySide6.QtGui import QContextMenuEvent, QKeyEvent
+
+from ladderworks.gui.editor.geometry import SPARE_ROWS, cell_h, grid_top, wire_y
+
+if TYPE_CHECKING:
+    from ladderworks.gui.editor.view import LadderEditor
+
+Cursor = tuple[int, int, int]  # network, row, column
+
+
+class GridKeys:
+    """Maps a key press in the ladder grid to a cursor move or a command; True if handled."""
+
+    def __init__(self, editor: LadderEditor) -> None:
+        self._editor = editor
+
+    def handle(self, event: QKeyEvent) -> bool:
+        """Do what the key means in the grid (cursor moves, the context menu)."""
+        key = event.key()
+        modifiers = event.modifiers()
+        ctrl = bool(modifiers & Qt.KeyboardModifier.ControlModifier)
+        shift = bool(modifiers & Qt.KeyboardModifier.ShiftModifier)
+        if key == Qt.Key.Key_Menu or (key == Qt.Key.Key_F10 and shift):
+            self.open_context_menu()
+            return True
+        target = self.target(key, ctrl)
+        if target is None:
+            return False
+        self._editor.move_cursor(*target)
+        return True
+
+    def target(self, key: int, ctrl: bool = False) -> Cursor | None:
+        """Where Home, End, Ctrl+Home, Ctrl+End, PageUp, PageDown put the cursor (None: not
+        one of those keys)."""
+        editor = self._editor
+        index, row, col = editor.cursor_cell
+        networks = editor.networks
+        if key == Qt.Key.Key_Home:
+            return (0, 0, 0) if ctrl else (index, row, 0)
+        if key == Qt.Key.Key_End:
+            if ctrl:
+                editor.finish_loading()  # a large program: the end is after every network
+                return len(editor.networks) - 1, 0, 0  # the empty network: draw the next
+            return index, row, networks[index].columns  # the coil column
+        if key in (Qt.Key.Key_PageUp, Qt.Key.Key_PageDown):
+            return self._page(index, row, col, key == Qt.Key.Key_PageDown)
+        return None
+
+    def _page(self, index: int, row: int, col: int, down: bool) -> Cursor:
+        """The cell a viewport's height above or below the cursor, same column."""
+        editor = self._editor
+        tops = editor.layout_.tops
+        networks = editor.networks
+        if down and index >= len(networks) - 2:
+            editor.finish_loading()  # a large program: page on into the networks still pending
+        page = max(editor.viewport().height() / max(editor.zoom(), 0.01) - cell_h(), cell_h())
+        y = tops[index] + grid_top(networks[index]) + row * cell_h() + wire_y()
+        y += page if down else -page
+        target = editor.layout_.network_at(y)
+        net = networks[target]
+        local = int((y - tops[target] - grid_top(net)) // cell_h())
+        last_row = net.rows - 1 + SPARE_ROWS
+        if target == index and local == row:  # at the first or last page: to its first/last row
+            local = last_row if down else 0
+        return target, min(max(local, 0), last_row), col
+
+    def open_context_menu(self) -> None:
+        """The right-click menu, at the cursor cell (Shift+F10, the menu key)."""
+        editor = self._editor
+        index, row, col = editor.cursor_cell
+        point: QPoint = editor.cell_point(index, row, col)
+        viewport = editor.viewport()
+        editor.contextMenuEvent(QContextMenuEvent(
+            QContextMenuEvent.Reason.Keyboard, point, viewport.mapToGlobal(point)))

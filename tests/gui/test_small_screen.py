@@ -1,0 +1,112 @@
+"""The console on a 1024×600 shop-floor panel: it fits with the default docks and the chart."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+from PySide6.QtCore import QEvent, QPoint, QRect, QSize
+from PySide6.QtGui import QFont
+from PySide6.QtWidgets import QApplication, QWidget
+from pytestqt.qtbot import QtBot
+
+from ladderworks.gui.main_window import MainWindow
+from ladderworks.gui.settings import Settings
+from ladderworks.paths import EXAMPLES
+
+PANEL = QSize(1024, 600)
+
+
+def minimum(window: MainWindow) -> QSize:
+    """The smallest size the window's layout allows, once the pending layouts are done."""
+    for _level in range(4):  # a label's change goes up through the dock to the window
+        QApplication.sendPostedEvents(None, QEvent.Type.LayoutRequest)
+    return window.minimumSizeHint().expandedTo(window.minimumSize())
+
+
+def inside(window: MainWindow, widget: QWidget) -> bool:
+    """True when `widget` is shown and wholly inside the window."""
+    top_left = widget.mapTo(window, QPoint(0, 0))
+    return widget.isVisible() and window.rect().contains(QRect(top_left, widget.size()))
+
+
+def on_the_panel(window: MainWindow, qtbot: QtBot) -> None:
+    window.resize(PANEL)
+    qtbot.waitUntil(lambda: window.size() == PANEL)
+
+
+@pytest.fixture(params=[None, 11.0], ids=["default font", "11 pt font"])
+def font_size(request: pytest.FixtureRequest) -> Iterator[float | None]:
+    """The application font as the offscreen platform gives it, or a desktop's 11 pt."""
+    saved = QApplication.font()
+    if request.param is not None:
+        font = QFont(saved)
+        font.setPointSizeF(request.param)
+        QApplication.setFont(font)
+    yield request.param
+    QApplication.setFont(saved)
+
+
+@pytest.mark.parametrize("language", ["en", "tr"])
+def test_the_default_docks_fit_1024_by_600(window: MainWindow, qtbot: QtBot, language: str,
+                                           font_size: float | None) -> None:
+    window.set_language(language)
+    assert minimum(window).boundedTo(PANEL) == minimum(window), minimum(window)
+    on_the_panel(window, qtbot)
+    for widget in (window.statusBar(), window.errors, window.plc_docks.alarms,
+                   window.tool_palette, window.menus.toolbar, window.editor):
+        assert inside(window, widget), widget.objectName()
+    assert window.editor.viewport().height() >= 200  # the ladder keeps most of the room
+    window.set_language("en")
+
+
+@pytest.mark.parametrize("language", ["en", "tr"])
+def test_the_time_chart_opens_as_a_tab_and_still_fits(window: MainWindow, qtbot: QtBot,
+                                                      language: str,
+                                                      font_size: float | None) -> None:
+    window.set_language(language)
+    on_the_panel(window, qtbot)
+    chart = window.plc_docks.time_chart
+    window.actions_by_name["action_dock_time_chart"].trigger()
+    qtbot.waitUntil(chart.isVisible)
+    assert window.plc_docks.alarms in window.tabifiedDockWidgets(chart)  # behind it, a tab
+    assert minimum(window).boundedTo(PANEL) == minimum(window), minimum(window)
+    assert window.size() == PANEL
+    for widget in (window.statusBar(), window.errors, chart.plot, chart.signals_edit,
+                   window.editor):
+        assert inside(window, widget), widget.objectName()
+    assert window.editor.viewport().height() >= 100
+    window.set_language("en")
+
+
+def test_the_plc_control_screen_fits_and_leaves_the_ladder_room(window: MainWindow,
+                                                                  qtbot: QtBot) -> None:
+    window.set_language("tr")  # the longer scan figures
+    assert window.load(EXAMPLES / "spindle_override.LAD")
+    on_the_panel(window, qtbot)
+    control = window.plc_docks.control
+    window.actions_by_name["action_dock_plc_control"].trigger()
+    qtbot.waitUntil(control.isVisible)
+    window.actions_by_name["action_compile"].trigger()
+    qtbot.waitUntil(lambda: control.figures.text() != "")  # the scan figures wrap
+    # the docks' minimum widths leave the ladder 250 px of the panel
+    assert minimum(window).width() <= PANEL.width() - 250, minimum(window)
+    assert minimum(window).height() <= PANEL.height(), minimum(window)
+    assert inside(window, control) and inside(window, window.statusBar())
+    assert window.editor.viewport().width() >= 250
+    window.set_language("en")
+
+
+def test_a_new_window_shown_at_1024_by_600_keeps_that_size(qtbot: QtBot,
+                                                           settings: Settings) -> None:
+    """The hidden PLC docks wait in their tab groups without widening the first layout."""
+    from ladderworks.gui.translation import UiLanguage
+
+    language = UiLanguage()
+    language.apply("en")
+    fresh = MainWindow(settings, language)
+    qtbot.addWidget(fresh)
+    fresh.resize(PANEL)
+    fresh.show()
+    qtbot.waitExposed(fresh)
+    assert fresh.size() == PANEL
