@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from enum import StrEnum
 from functools import lru_cache
@@ -222,6 +223,8 @@ def parse_address_cached(text: str, want_bit: bool | None, width: int) -> Addres
 
 
 _parse_address = parse_address_cached
+# the same parse without the cache, for texts read once (`check` reading a symbol table)
+parse_address_once: Callable[[str, bool | None, int], Address] = parse_address_cached.__wrapped__
 
 
 def looks_like_address(text: str) -> bool:

@@ -5,7 +5,13 @@ from __future__ import annotations
 import csv
 import re
 
-from ladderworks.core.address import AddressError, Area, parse_address, parse_address_cached
+from ladderworks.core.address import (
+    AddressError,
+    Area,
+    parse_address,
+    parse_address_cached,
+    parse_address_once,
+)
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.il.program import IoModule, Message, Program, Section
 from ladderworks.core.symbols import SymbolTable, add_entry, new_symbol
@@ -39,6 +45,7 @@ def read_symbols(section: Section, first: int, table: SymbolTable,
         _read_csv_symbols(section, first, table, out)
         return
     by_address, by_symbol = table.by_address, table.by_symbol
+    read = parse_address_cached if build else parse_address_once  # once: no cache to fill
     for offset, line in enumerate(section.lines):
         words = line.split(None, 2)
         if not words or words[0].startswith((";", "//")):  # blank or a comment line
@@ -46,7 +53,7 @@ def read_symbols(section: Section, first: int, table: SymbolTable,
         comment = words[2].strip() if len(words) > 2 else ""
         if len(words) == 2 and words[0][0] not in "Pp":  # `D37.4   C62179`: table.add inline
             try:
-                address = parse_address_cached(words[0], None, 1)
+                address = read(words[0], None, 1)
             except AddressError:
                 _warn(out, section, first + offset, line.strip())
                 continue
