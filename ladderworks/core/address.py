@@ -165,29 +165,31 @@ def _new_address(area: Area, byte: int, bit: int | None) -> Address:
 _AREA_OF: dict[str, Area] = {**{a.value: a for a in Area}, **{a.value.lower(): a for a in Area}}
 
 
-def _valid_bytes(area: Area) -> bytes:
-    """1 at each byte number that exists in the area, 0 elsewhere."""
-    valid = bytearray(AREA_SIZES[area])
-    for lo, hi in AREA_RANGES[area]:
-        valid[lo:hi + 1] = b"\x01" * (hi - lo + 1)
-    return bytes(valid)
+def _range_ids(area: Area) -> bytes:
+    """At each byte number of the area, which of its ranges holds it (1, 2, ...; 0: none)."""
+    ids = bytearray(AREA_SIZES[area])
+    for number, (lo, hi) in enumerate(AREA_RANGES[area], start=1):
+        ids[lo:hi + 1] = bytes([number]) * (hi - lo + 1)
+    return bytes(ids)
 
 
-# the common spelling (upper-case letter, up to 6 digits, an optional bit 0-7) of one byte,
-# read without the general checks; anything else (and every error) takes the full path
+# the common spelling (upper-case letter, up to 6 digits, an optional bit 0-7), read without
+# the general checks: its first and last byte lie in one range of the area; anything else
+# (and every error) takes the full path
 _PLAIN_RE = re.compile(r"([XYFGRADTCKE])([0-9]{1,6})(?:\.([0-7]))?")
-_PLAIN_AREAS: dict[str, tuple[Area, bytes]] = {a.value: (a, _valid_bytes(a)) for a in Area}
+_PLAIN_AREAS: dict[str, tuple[Area, bytes]] = {a.value: (a, _range_ids(a)) for a in Area}
 
 
 @lru_cache(maxsize=65536)
 def parse_address_cached(text: str, want_bit: bool | None, width: int) -> Address:
     """parse_address with positional arguments: the parser's fast path calls it directly."""
-    plain = _PLAIN_RE.fullmatch(text) if width == 1 else None
+    plain = _PLAIN_RE.fullmatch(text)
     if plain is not None:
-        common, valid = _PLAIN_AREAS[plain.group(1)]
+        common, ids = _PLAIN_AREAS[plain.group(1)]
         number = int(plain.group(2))
+        end = number + max(width, 1) - 1
         bit_digit = plain.group(3)
-        if number < len(valid) and valid[number] and (
+        if end < len(ids) and ids[number] and ids[number] == ids[end] and (
                 want_bit is None or want_bit is (bit_digit is not None)):
             return _new_address(common, number,
                                 None if bit_digit is None else ord(bit_digit) - 48)
