@@ -571,7 +571,7 @@ class _FileParser:
     def _check_ladder(self, recs: list[_Line | _Made], base: int,
                       builder: _NetworkBuilder) -> None:
         """The ladder's diagnostics only: the lines that make their instruction alone are
-        skipped; the others are read as when building (the networks are left incomplete)."""
+        skipped; the others are read as when building, but not added to the networks."""
         k = 0
         count = len(recs)
         while k < count:
@@ -652,6 +652,9 @@ class _FileParser:
         if alone and len(self.diagnostics) == reported:
             line.made = (spec, instruction.name, instruction.operand, instruction.params,
                          instruction.comment, instruction.column, starts, ends)
+        if not self.build:  # only the diagnostics are wanted
+            self.skipped = True
+            return k
         builder.add(instruction, end_line, starts, ends)
         return k
 
