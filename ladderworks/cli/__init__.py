@@ -10,17 +10,39 @@ from collections.abc import Sequence
 
 from ladderworks import version
 
+# The module that adds each subcommand: a run imports only its command's module (`check` does
+# not load the PLC engine); tests/core/test_cli_commands.py keeps this true to the modules.
+COMMANDS: dict[str, str] = {
+    "alarms": "alarms", "check": "text", "compile": "plc", "disasm": "plc", "format": "text",
+    "ladder": "ladder", "mnemonic": "ladder", "run": "plc", "signals": "signals",
+    "test": "scenario", "xref": "xref",
+}
 
-def build_parser() -> argparse.ArgumentParser:
-    """The argument parser with every subcommand of every module in this package."""
+
+class _Version(argparse.Action):
+    """`--version`: prints `ladderworks-cli VERSION` (the version is read only when asked)."""
+
+    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace,
+                 values: object, option_string: str | None = None) -> None:
+        print(f"{parser.prog} {version()}")
+        parser.exit()
+
+
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The argument parser with every subcommand of every module in this package, or only
+    the subcommands of the module that adds `command`."""
     parser = argparse.ArgumentParser(
         prog="ladderworks-cli", description="LadderWorks command-line tools")
-    parser.add_argument("--version", action="version", version=f"%(prog)s {version()}")
+    parser.add_argument("--version", action=_Version, nargs=0,
+                        help="show program's version number and exit")
     subparsers = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    for info in sorted(pkgutil.iter_modules(__path__), key=lambda m: m.name):
-        if info.name.startswith("_"):  # __main__ runs the CLI when imported
+    names = sorted(info.name for info in pkgutil.iter_modules(__path__))
+    if command in COMMANDS:
+        names = [COMMANDS[command]]
+    for name in names:
+        if name.startswith("_"):  # __main__ runs the CLI when imported
             continue
-        module = importlib.import_module(f"{__name__}.{info.name}")
+        module = importlib.import_module(f"{__name__}.{name}")
         register = getattr(module, "register", None)
         if register is not None:
             register(subparsers)
@@ -29,8 +51,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run one subcommand; returns the process exit code."""
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    words = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser(words[0] if words else None)
+    args = parser.parse_args(words)
     try:
         return int(args.handler(args) or 0)
     except BrokenPipeError:

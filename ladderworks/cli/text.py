@@ -5,7 +5,8 @@ from __future__ import annotations
 import argparse
 import sys
 
-from ladderworks.core.il import parse_file, print_program
+from ladderworks.core.diagnostics import has_errors
+from ladderworks.core.il import check_file, parse_file, print_program
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -21,10 +22,10 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 def _check(args: argparse.Namespace) -> int:
     failed = False
     for name in args.files:
-        result = parse_file(name)
-        for diagnostic in result.diagnostics:
+        diagnostics = check_file(name)
+        for diagnostic in diagnostics:
             print(diagnostic.located(name))
-        failed = failed or not result.ok
+        failed = failed or has_errors(diagnostics)
     return 1 if failed else 0
 
 

@@ -1,6 +1,13 @@
 """The LadderWorks instruction-list language: parse `.LAD` / `.MOD` text and print it back."""
 
-from ladderworks.core.il.parser import ParseResult, decode, parse, parse_bytes, parse_file
+from ladderworks.core.il.parser import (
+    ParseResult,
+    check_file,
+    decode,
+    parse,
+    parse_bytes,
+    parse_file,
+)
 from ladderworks.core.il.printer import print_instruction, print_program
 from ladderworks.core.il.program import Instruction, Network, Program, Section
 
@@ -10,6 +17,7 @@ __all__ = [
     "ParseResult",
     "Program",
     "Section",
+    "check_file",
     "decode",
     "parse",
     "parse_bytes",

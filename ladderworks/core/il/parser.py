@@ -2,15 +2,21 @@
 
 from __future__ import annotations
 
+import gc
 import re
+from bisect import bisect_left
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cache, lru_cache
 from importlib import resources
+from itertools import compress, count, repeat
+from operator import contains
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 from ladderworks.core import instructions as _table
-from ladderworks.core.address import Address, AddressError, parse_address
+from ladderworks.core.address import Address, AddressError, parse_address_cached
 from ladderworks.core.diagnostics import Diagnostic, Severity, has_errors
 from ladderworks.core.il.program import (
     FANUC,
@@ -22,9 +28,16 @@ from ladderworks.core.il.program import (
     Program,
     ProgramRef,
     Section,
+    new_instruction,
 )
 from ladderworks.core.il.sections import read_views
-from ladderworks.core.il.textform import TextForm, decode_text, dominant_newline, split_with_ends
+from ladderworks.core.il.textform import (
+    TextForm,
+    decode_lines,
+    decode_text,
+    dominant_newline,
+    split_with_ends,
+)
 from ladderworks.core.instructions import (
     BY_MNEMONIC,
     BY_SUB,
@@ -50,6 +63,9 @@ _LABEL = re.compile(r"^[ \t]*([Nn][0-9]+):[ \t]*$")
 _SAFE = re.compile(r"[A-Za-z0-9_.+\- \t]*")  # code the fast scanner splits at spaces/tabs
 _ADDRESS_SHAPE = re.compile(r"^[A-Za-z]\d+(\.\d+)?$")
 _REF = re.compile(r"^([PpLl])0*(\d{1,6})$")
+# a name and one operand that starts with a letter, nothing else: what _scan_fast reads as
+# two words (no sign, no comment)
+_SIMPLE = re.compile(r"[ \t]*([A-Za-z_][A-Za-z0-9_.]*)[ \t]+([A-Za-z][A-Za-z0-9_.]*)[ \t]*")
 
 # Known section headers by number (the suffix after `%@n`); `%@2-E(...)` has options.
 _KNOWN_SUFFIXES: dict[int, tuple[str, ...]] = {
@@ -92,6 +108,9 @@ def decode(data: bytes) -> tuple[str, str]:
     return text, form.encoding
 
 
+_CONTROLS = bytes(b for b in range(32) if b not in (9, 10, 12, 13))  # bytes text rarely has
+
+
 def _is_binary(data: bytes) -> bool:
     """True for bytes that are not text: NULs (without a UTF-16 BOM) or many control bytes."""
     if data.startswith((b"\xff\xfe", b"\xfe\xff")):
@@ -99,19 +118,53 @@ def _is_binary(data: bytes) -> bool:
     sample = data[:65536]
     if b"\x00" in sample:
         return True
-    controls = sum(1 for b in sample if b < 32 and b not in (9, 10, 12, 13))
+    controls = len(sample) - len(sample.translate(None, _CONTROLS))
     return controls * 20 > len(sample)
+
+
+@contextmanager
+def _collector_paused() -> Iterator[None]:
+    """Pause Python's cycle collector: a parse makes no cycles, but it makes a few hundred
+    thousand objects, and the collector would walk the growing heap many times over.
+
+    After it, the objects go straight to the oldest generation (freeze, then unfreeze: two
+    list moves) instead of being walked by the next young collection; they are still
+    collected with that generation. Skipped when something else keeps objects frozen."""
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if gc.get_freeze_count() == 0:
+            gc.freeze()
+            gc.unfreeze()
+        if was_enabled:
+            gc.enable()
 
 
 def parse_bytes(data: bytes) -> ParseResult:
     """Parse file contents given as bytes (any encoding LadderWorks reads)."""
-    text, form, diagnostics = decode_text(data)
+    with _collector_paused():
+        return _parse_bytes(data, build=True)
+
+
+def check_file(path: str | Path) -> list[Diagnostic]:
+    """The diagnostics `parse_file(path)` gives, found without building the program's
+    networks (what `ladderworks-cli check` prints)."""
+    data = Path(path).read_bytes()
+    with _collector_paused():
+        return _parse_bytes(data, build=False).diagnostics
+
+
+def _parse_bytes(data: bytes, *, build: bool) -> ParseResult:
+    text, form, diagnostics, split = decode_lines(data)
     if _is_binary(data):
         program = Program()
-        lines, ends = split_with_ends(text)
-        program.source = FileSource(form, lines, ends, -1, -1)
+        program.source = FileSource(form, *split, -1, -1)
         return ParseResult(program, [Diagnostic("not-a-program", {}, 1, 1)], form.encoding)
-    result = _FileParser(text, form).run()
+    parser = _FileParser(text, form, split)
+    parser.build = build
+    result = parser.run()
     if diagnostics:
         result.diagnostics = sorted(diagnostics + result.diagnostics,
                                     key=lambda d: (d.line, d.column))
@@ -135,7 +188,8 @@ def parse(text: str, dialect: str | None = None) -> ParseResult:
     parser = _FileParser(text, form)
     if dialect == FANUC:
         parser.dialect = FANUC
-    return parser.run()
+    with _collector_paused():
+        return parser.run()
 
 
 @dataclass(slots=True)
@@ -145,14 +199,27 @@ class _Token:
     is_int: bool
 
 
-@dataclass(slots=True)
-class _Line:
-    """One parsed line of the ladder section."""
+# What one line text makes on its own, found once per distinct text: the instruction's spec,
+# name, operand, parameters, comment and column, whether it starts a network after an output,
+# and whether it ends one (see _NetworkBuilder.add).
+_Made = tuple[InstructionSpec, str, Address | None, tuple[ParamValue, ...], str, int, bool, bool]
 
-    number: int
-    kind: str  # "blank", "comment", "instruction", "parameter", "label"
-    words: list[_Token] = field(default_factory=list)
-    comment: str | None = None
+
+class _Line:
+    """One scanned line text of the ladder section; the lines that repeat the text share it.
+
+    `made` is set once the text alone has made an instruction with no diagnostic; such a
+    line is read from it alone (a `RD X21.7` found by the fast scanner keeps no words)."""
+
+    __slots__ = ("comment", "kind", "made", "param", "words")
+
+    def __init__(self, kind: str, words: list[_Token] | None = None,
+                 comment: str | None = None, made: _Made | None = None) -> None:
+        self.kind = kind  # "blank", "comment", "instruction", "parameter", "label"
+        self.words: list[_Token] = words if words is not None else []
+        self.comment = comment
+        self.made = made
+        self.param = made is None and _is_param_line(self)  # a parameter line
 
 
 def _comment_text(raw: str) -> str:
@@ -161,16 +228,41 @@ def _comment_text(raw: str) -> str:
     return body.rstrip()
 
 
-def _scan_fast(text: str, number: int) -> _Line | None:
-    """The common lines without lark; None for a line only the grammar can judge."""
+@cache
+def _basic_with_operand(name: str) -> tuple[InstructionSpec, bool, bool] | None:
+    """The basic instruction a name spells, when it takes an address operand, with its
+    _flow(); None for any other name."""
+    spec = lookup(name)
+    if spec is None or spec.kind is not Kind.BASIC or not spec.operand:
+        return None
+    return (spec, *_flow(spec))
+
+
+def _scan_fast(text: str) -> _Line | _Made | None:
+    """The common lines without lark; None for a line only the grammar can judge. A basic
+    instruction with its operand and nothing else (`RD X21.7`) is the instruction it makes."""
+    simple = _SIMPLE.fullmatch(text)  # `RD  X21.7`, the most common shape, in one match
+    if simple is not None:
+        head, operand = simple.group(1, 2)
+        basic = _basic_with_operand(head)
+        if basic is not None:
+            try:  # read as the symbol table reads it (one cached parse for both)
+                address: Address | None = parse_address_cached(operand, None, 1)
+            except AddressError:
+                address = None  # the full path reports it
+            if address is not None and address.bit is not None:
+                spec, starts, ends = basic
+                return (spec, spec.name, address, (), "", simple.start(1) + 1, starts, ends)
+        return _Line("instruction", [_Token(head, simple.start(1) + 1, False),
+                                     _Token(operand, simple.start(2) + 1, False)])
     stripped = text.lstrip(" \t")
     if not stripped:
-        return _Line(number, "blank")
+        return _BLANK
     first = stripped[0]
     if first == ";" or stripped.startswith("//"):
-        return _Line(number, "comment", comment=_comment_text(stripped))
+        return _Line("comment", comment=_comment_text(stripped))
     if first == ",":
-        return _Line(number, "comment", comment=_comment_text(stripped.strip()))
+        return _Line("comment", comment=_comment_text(stripped.strip()))
     cut = len(text)
     if ";" in text or "/" in text:
         semi = text.find(";")
@@ -182,7 +274,7 @@ def _scan_fast(text: str, number: int) -> _Line | None:
     code = text[:cut] if cut < len(text) else text
     if _SAFE.fullmatch(code) is None:
         label = _LABEL.match(text)
-        return _Line(number, "label", [_Token(label.group(1), 1, False)]) if label else None
+        return _Line("label", [_Token(label.group(1), 1, False)]) if label else None
     words: list[_Token] = []
     position = 0
     for word in code.split():
@@ -204,13 +296,14 @@ def _scan_fast(text: str, number: int) -> _Line | None:
     if words[0].is_int:
         if len(words) > 1:
             return None
-        return _Line(number, "parameter", words, comment)
-    return _Line(number, "instruction", words, comment)
+        return _Line("parameter", words, comment)
+    return _Line("instruction", words, comment)
 
 
-def _scan_line(text: str, number: int) -> _Line | Diagnostic:
-    """One line of the ladder section: the fast scanner, else the lark grammar."""
-    fast = _scan_fast(text, number)
+def _scan_line(text: str, number: int) -> _Line | _Made | Diagnostic:
+    """One line text of the ladder section (at line `number`, for a syntax error): the fast
+    scanner, else the lark grammar."""
+    fast = _scan_fast(text)
     if fast is not None:
         return fast
     import lark
@@ -223,29 +316,36 @@ def _scan_line(text: str, number: int) -> _Line | Diagnostic:
         return Diagnostic("syntax", {"text": bad[:40]}, number, column)
     kind = tree.data
     if kind == "blank_line":
-        return _Line(number, "blank")
+        return _BLANK
     if kind == "comma_comment_line":
-        return _Line(number, "comment", comment=_comment_text(str(tree.children[0]).strip()))
+        return _Line("comment", comment=_comment_text(str(tree.children[0]).strip()))
     if kind == "comment_line":
         raw = str(_branch(tree.children[0]).children[0])
-        return _Line(number, "comment", comment=_comment_text(raw))
+        return _Line("comment", comment=_comment_text(raw))
     if kind == "label_line":
         tok = _leaf(tree.children[0])
-        return _Line(number, "label", [_Token(str(tok)[:-1], _column(tok), False)])
+        return _Line("label", [_Token(str(tok)[:-1], _column(tok), False)])
     statement = _branch(tree.children[0])
     comment: str | None = None
     if len(tree.children) > 1:
         comment = _comment_text(str(_branch(tree.children[1]).children[0])).strip()
     if statement.data == "parameter_line":
         tok = _leaf(statement.children[0])
-        return _Line(number, "parameter", [_Token(str(tok), _column(tok), True)], comment)
+        return _Line("parameter", [_Token(str(tok), _column(tok), True)], comment)
     name = _leaf(statement.children[0])
     words = [_Token(str(name), _column(name), False)]
     for child in statement.children[1:]:
         operand = _branch(child)
         tok = _leaf(operand.children[0])
         words.append(_Token(str(tok), _column(tok), operand.data == "int_operand"))
-    return _Line(number, "instruction", words, comment)
+    return _Line("instruction", words, comment)
+
+
+def _syntax_error(text: str, number: int) -> Diagnostic:
+    """The syntax error of a line text _scan_line found one in, at line `number`."""
+    item = _scan_line(text, number)
+    assert isinstance(item, Diagnostic), text
+    return item
 
 
 def _branch(node: lark.Tree[lark.Token] | lark.Token) -> lark.Tree[lark.Token]:
@@ -283,8 +383,9 @@ def _header_kind(rest: str) -> tuple[int, str, bool]:
 class _FileParser:
     """Splits the file into sections and parses the ladder section into networks."""
 
-    def __init__(self, text: str, form: TextForm) -> None:
-        self.lines, ends = split_with_ends(text)
+    def __init__(self, text: str, form: TextForm,
+                 split: tuple[list[str], list[str]] | None = None) -> None:
+        self.lines, ends = split if split is not None else split_with_ends(text)
         self.program = Program()
         self.source = FileSource(form, self.lines, ends, 0, len(self.lines))
         self.program.source = self.source
@@ -292,6 +393,15 @@ class _FileParser:
         self.firsts: dict[int, int] = {}
         self.labels = False
         self.dialect = "seed"  # decided before the ladder is read: parameter ranges depend on it
+        # False: only the diagnostics are wanted, so a line that makes its instruction alone
+        # (which never has one) is not built into the networks
+        self.build = True
+        self.skipped = False  # such a line was skipped
+        self.marks: list[int] | None = None  # the lines with a `%`, found when first needed
+        # the parameters read for a spec (by id: the table's rows live while a parse runs)
+        # from operands (their texts), when they gave no diagnostic
+        self.made_params: dict[tuple[int, tuple[tuple[str, bool], ...]],
+                               tuple[ParamValue, ...]] = {}
 
     def run(self) -> ParseResult:
         has_any_section = any(_HEADER.match(line) for line in self.lines if "%@" in line)
@@ -332,11 +442,7 @@ class _FileParser:
                     self.diagnostics.append(
                         Diagnostic("duplicate-section", {"number": rest[:20]}, i + 1, 1))
                 seen.add(key)
-                j = i + 1
-                while j < len(lines) and not _SECTION_END.match(lines[j]):
-                    if "%@" in lines[j] and _HEADER.match(lines[j]):
-                        break
-                    j += 1
+                j = self._next_mark(i + 1)
                 closed = j < len(lines) and bool(_SECTION_END.match(lines[j]))
                 if not closed:
                     self.diagnostics.append(Diagnostic("missing-end", {}, min(j, len(lines)), 1))
@@ -366,12 +472,25 @@ class _FileParser:
         if not ladder_found:
             self.diagnostics.append(Diagnostic("missing-start", {}, 1, 1))
             self.source.ladder_start = self.source.ladder_stop = -1
-        read_views(self.program, self.firsts, self.diagnostics)
+        read_views(self.program, self.firsts, self.diagnostics, build=self.build)
+
+    def _next_mark(self, start: int) -> int:
+        """The first line from `start` that ends a section or starts one (else past the end):
+        only the lines with a `%` are looked at."""
+        lines = self.lines
+        marks = self.marks
+        if marks is None:
+            marks = self.marks = list(compress(count(), map(contains, lines, repeat("%"))))
+        for j in marks[bisect_left(marks, start):]:
+            line = lines[j]
+            if _SECTION_END.match(line) or ("%@" in line and _HEADER.match(line)):
+                return j
+        return len(lines)
 
     def _not_a_program(self) -> None:
         """Text with no section and no instruction that has errors is not a ladder program."""
         errors = [d for d in self.diagnostics if d.is_error and d.code != "missing-start"]
-        if self.program.networks or not errors:
+        if self.program.networks or self.skipped or not errors:
             return
         self.diagnostics = [Diagnostic("not-a-program", {}, 1, 1), *errors[:2]]
 
@@ -384,165 +503,251 @@ class _FileParser:
     # -- the ladder section -------------------------------------------------------------
 
     def _parse_ladder(self, start: int, stop: int) -> None:
-        scanned: list[_Line] = []
         lines = self.lines
         if self.program.framed or self.dialect == FANUC or any(
                 line.endswith(":") and _LABEL.match(line) for line in lines[start:stop]):
             self.dialect = FANUC
-        seen: dict[str, _Line] = {}  # many lines repeat: scan each text once, share its words
-        for index in range(start, stop):
-            text = lines[index]
-            known = seen.get(text)
-            if known is not None:
-                if known.kind != "blank":
-                    scanned.append(_Line(index + 1, known.kind, known.words, known.comment))
-                continue
-            item = _scan_line(text, index + 1)
+        # many lines repeat ("RD X21.7"): each text is scanned once, and what it makes is
+        # built once; the lines that repeat it share its _Line (or its _Made)
+        body = lines[start:stop]
+        seen = cast("dict[str, _Line | _Made]", dict.fromkeys(body, _BLANK))
+        bad = False
+        for text in seen:
+            item = _scan_line(text, 0)
             if isinstance(item, Diagnostic):
-                self.diagnostics.append(item)
-                continue
+                item = _BAD
+                bad = True
             seen[text] = item
-            if item.kind != "blank":
-                scanned.append(item)
+        if bad:  # a syntax error is reported at each line that has it, in order
+            for number, text in enumerate(body, start + 1):
+                if seen[text] is _BAD:
+                    self.diagnostics.append(_syntax_error(text, number))
+        recs = list(map(seen.__getitem__, body))  # line start + 1 + k is recs[k]
+        base = start + 1
         builder = _NetworkBuilder(start)
+        add = builder.add
         k = 0
-        while k < len(scanned):
-            line = scanned[k]
-            k += 1
-            if line.kind == "comment":
-                builder.comment(line.comment or "")
-                continue
-            if line.kind == "label":
-                self.labels = True
-                builder.label(line.words[0].text)
-                continue
-            if line.kind == "parameter":
-                self._error("stray-parameter", line.number, line.words[0].column,
-                            text=line.words[0].text[:20])
-                continue
-            head = line.words[0]
-            operands = line.words[1:]
-            spec = lookup(head.text)
-            if spec is None and head.text[:4].upper() == "SUB.":
-                spec = spec_for(head.text, len(operands))  # one-line unknown `SUB.219 p1 p2`
-                if spec is not None:
-                    self.diagnostics.append(Diagnostic("unknown-sub", {"number": spec.sub},
-                                                       line.number, head.column,
-                                                       Severity.WARNING))
-            if spec is None:
-                if len(operands) == 0 and _ADDRESS_SHAPE.match(head.text):
-                    self._error("stray-parameter", line.number, head.column, text=head.text[:20])
+        count = len(recs)
+        if not self.build:
+            self._check_ladder(recs, base, builder)
+            k = count
+        while k < count:
+            rec = recs[k]
+            made = rec if rec.__class__ is tuple else rec.made  # type: ignore[union-attr]
+            if made is None:
+                assert isinstance(rec, _Line)
+                kind = rec.kind
+                if kind == "label":
+                    self.labels = True
+                    builder.label(rec.words[0].text)
+                    k += 1
+                elif kind == "blank" or kind == "bad":
+                    k += 1
                 else:
-                    self._error("unknown-instruction", line.number, head.column,
-                                name=head.text[:20])
+                    k = self._line(recs, base, k, builder)
                 continue
-            if spec.kind is Kind.BASIC and len(operands) > 1 and head.text.upper() in BY_MNEMONIC:
-                spec = BY_MNEMONIC[head.text.upper()]  # one-line `AND 1 R10 R11 R12`: LOGAND
-            end_line = line.number
-            if spec.name == "SUB" and len(operands) == 1 and operands[0].is_int:
-                number = _small_int(operands[0].text, 6)
-                number = number if number is not None and number >= 0 else None
-                sub_spec = BY_SUB.get(number) if number is not None else None
-                if sub_spec is None:
-                    k = self._unknown_sub(line, number, scanned, k, builder)
-                    continue
-                spec = sub_spec
-                operands = []
-                k = self._collect_params(spec, scanned, k, operands)
-            elif spec.kind is not Kind.BASIC and not operands and spec.params:
-                k = self._collect_params(spec, scanned, k, operands)
-            if k > 0 and scanned[k - 1].number > end_line:
-                end_line = scanned[k - 1].number
-            instruction = self._build(spec, line, operands)
-            if instruction is not None:
-                builder.add(instruction, end_line, spec)
+            number = base + k
+            k += 1
+            _spec, name, operand, params, comment, column, starts, ends = made
+            instruction = new_instruction(name, operand, params, comment, (), number, column)
+            current = builder.current
+            if current is None or builder.pending or (builder.closed and (
+                    starts or builder.pending_label)):
+                add(instruction, number, starts, ends)
+                continue
+            current.append(instruction)  # the common case of builder.add, inline
+            builder.lasts[-1] = builder.cursor = number
+            if ends:
+                builder.closed = True
         self.program.networks = builder.networks
         self.program.trailer = builder.finish_pending()
         source = self.source
         source.keys = [network.key() for network in builder.networks]
-        source.spans = builder.spans
+        source.spans = builder.spans()
         source.heads = builder.heads
         source.trailer = tuple(builder.pending)
         source.trailer_span = (builder.cursor, stop)
 
-    def _unknown_sub(self, line: _Line, number: int | None, scanned: list[_Line], k: int,
-                     builder: _NetworkBuilder) -> int:
+    def _check_ladder(self, recs: list[_Line | _Made], base: int,
+                      builder: _NetworkBuilder) -> None:
+        """The ladder's diagnostics only: the lines that make their instruction alone are
+        skipped; the others are read as when building, but not added to the networks."""
+        k = 0
+        count = len(recs)
+        while k < count:
+            rec = recs[k]
+            if rec.__class__ is tuple:
+                self.skipped = True
+                k += 1
+                continue
+            assert isinstance(rec, _Line)
+            if rec.made is not None:
+                self.skipped = True
+                k += 1
+            elif rec.kind == "label":
+                self.labels = True
+                k += 1
+            elif rec.kind == "blank" or rec.kind == "bad":
+                k += 1
+            else:
+                k = self._line(recs, base, k, builder)
+
+    def _line(self, recs: list[_Line | _Made], base: int, k: int,
+              builder: _NetworkBuilder) -> int:
+        """Read line `recs[k]` (number `base + k`, with the parameter lines it takes); returns
+        the next index."""
+        line = recs[k]
+        assert isinstance(line, _Line)
+        number = base + k
+        k += 1
+        last = k - 1  # the last line it reads
+        if line.kind == "comment":
+            builder.comment(line.comment or "")
+            return k
+        if line.kind == "label":
+            self.labels = True
+            builder.label(line.words[0].text)
+            return k
+        if line.kind == "parameter":
+            self._error("stray-parameter", number, line.words[0].column,
+                        text=line.words[0].text[:20])
+            return k
+        reported = len(self.diagnostics)
+        alone = True  # the text alone makes the instruction: no parameter lines taken
+        head = line.words[0]
+        operands = line.words[1:]
+        spec = lookup(head.text)
+        if spec is None and head.text[:4].upper() == "SUB.":
+            spec = spec_for(head.text, len(operands))  # one-line unknown `SUB.219 p1 p2`
+            if spec is not None:
+                self.diagnostics.append(Diagnostic("unknown-sub", {"number": spec.sub},
+                                                   number, head.column, Severity.WARNING))
+        if spec is None:
+            if len(operands) == 0 and _ADDRESS_SHAPE.match(head.text):
+                self._error("stray-parameter", number, head.column, text=head.text[:20])
+            else:
+                self._error("unknown-instruction", number, head.column, name=head.text[:20])
+            return k
+        if spec.kind is Kind.BASIC and len(operands) > 1 and head.text.upper() in BY_MNEMONIC:
+            spec = BY_MNEMONIC[head.text.upper()]  # one-line `AND 1 R10 R11 R12`: LOGAND
+        if spec.name == "SUB" and len(operands) == 1 and operands[0].is_int:
+            sub = _small_int(operands[0].text, 6)
+            sub = sub if sub is not None and sub >= 0 else None
+            sub_spec = BY_SUB.get(sub) if sub is not None else None
+            if sub_spec is None:
+                return self._unknown_sub(line, number, sub, recs, base, k, builder)
+            spec = sub_spec
+            operands = []
+            last = self._collect_params(spec, recs, last, operands)
+            alone = False
+        elif spec.kind is not Kind.BASIC and not operands and spec.params:
+            last = self._collect_params(spec, recs, last, operands)
+            alone = False
+        k = last + 1
+        end_line = base + last
+        instruction = self._build(spec, line, number, operands)
+        if instruction is None:
+            return k
+        starts, ends = _flow(spec)
+        if alone and len(self.diagnostics) == reported:
+            line.made = (spec, instruction.name, instruction.operand, instruction.params,
+                         instruction.comment, instruction.column, starts, ends)
+        if not self.build:  # only the diagnostics are wanted
+            self.skipped = True
+            return k
+        builder.add(instruction, end_line, starts, ends)
+        return k
+
+    def _unknown_sub(self, line: _Line, number: int, sub: int | None, recs: list[_Line | _Made],
+                     base: int, k: int, builder: _NetworkBuilder) -> int:
         """`SUB n` the table does not know: every following parameter line is its parameter."""
         column = line.words[1].column
         text = line.words[1].text
         make = getattr(_table, "unknown_sub", None)
-        if make is None or number is None:
-            self._error("unknown-sub", line.number, column, number=text[:20])
+        if make is None or sub is None:
+            self._error("unknown-sub", number, column, number=text[:20])
             return k
         operands: list[_Token] = []
-        while k < len(scanned) and _is_param_line(scanned[k]):
-            operands.append(scanned[k].words[0])
-            k += 1
-        self.diagnostics.append(Diagnostic("unknown-sub", {"number": number}, line.number,
+        last = self._collect_params(None, recs, k - 1, operands)
+        self.diagnostics.append(Diagnostic("unknown-sub", {"number": sub}, number,
                                            column, Severity.WARNING))
-        spec = make(number, len(operands))
-        instruction = self._build(spec, line, operands)
+        spec = make(sub, len(operands))
+        instruction = self._build(spec, line, number, operands)
         if instruction is not None:
-            builder.add(instruction, scanned[k - 1].number if operands else line.number, spec)
-        return k
+            builder.add(instruction, base + last, *_flow(spec))
+        return last + 1
 
-    def _collect_params(self, spec: InstructionSpec, scanned: list[_Line], k: int,
-                        out: list[_Token]) -> int:
-        """FANUC form: take the parameters from the following lines, one per line."""
-        needed = len(spec.fixed_params())
-        table = spec.table_param()
-        while k < len(scanned):
-            line = scanned[k]
-            if _is_param_line(line):
-                if len(out) >= needed:
-                    if table is None:
-                        break
-                    size = _table_size(spec, out)
-                    if size is None or len(out) >= needed + size:
-                        break
-                out.append(line.words[0])
+    def _collect_params(self, spec: InstructionSpec | None, recs: list[_Line | _Made],
+                        last: int, out: list[_Token]) -> int:
+        """FANUC form: take the parameters from the lines after `recs[last]`, one per line
+        (blank lines and lines with a syntax error skipped), as many as `spec` takes (every
+        one for None); returns the index of the last line taken (`last` for none)."""
+        needed, table = _shape(spec) if spec is not None else (0, None)
+        size: int | None = None
+        sized = False  # the table's size is read once the fixed parameters are all taken
+        count = len(recs)
+        k = last + 1
+        while k < count:
+            line = recs[k]
+            if line is _BLANK or line is _BAD:
                 k += 1
                 continue
-            break
-        return k
+            if not isinstance(line, _Line) or not line.param:
+                break
+            if spec is not None and len(out) >= needed:
+                if table is None:
+                    break
+                if not sized:
+                    size, sized = _table_size(spec, out), True
+                if size is None or len(out) >= needed + size:
+                    break
+            out.append(line.words[0])
+            last = k
+            k += 1
+        return last
 
     def _error(self, code: str, line: int, column: int, **args: object) -> None:
         self.diagnostics.append(Diagnostic(code, dict(args), line, column))
 
-    def _build(self, spec: InstructionSpec, line: _Line,
+    def _build(self, spec: InstructionSpec, line: _Line, number: int,
                operands: list[_Token]) -> Instruction | None:
         head = line.words[0]
         comment = line.comment or ""
         if spec.kind is Kind.BASIC:
             if not spec.operand:
                 if operands:
-                    self._error("extra-operand", line.number, operands[0].column,
+                    self._error("extra-operand", number, operands[0].column,
                                 name=spec.name, text=operands[0].text[:20])
                     return None
-                return Instruction(spec.name, comment=comment, line=line.number,
+                return Instruction(spec.name, comment=comment, line=number,
                                    column=head.column)
             if not operands:
-                self._error("missing-operand", line.number, head.column, name=spec.name)
+                self._error("missing-operand", number, head.column, name=spec.name)
                 return None
             if len(operands) > 1:
-                self._error("extra-operand", line.number, operands[1].column,
+                self._error("extra-operand", number, operands[1].column,
                             name=spec.name, text=operands[1].text[:20])
                 return None
-            address = self._address(operands[0], line.number, want_bit=True, width=1)
+            address = self._address(operands[0], number, want_bit=True, width=1)
             if address is None:
                 return None
-            return Instruction(spec.name, address, comment=comment, line=line.number,
+            return Instruction(spec.name, address, comment=comment, line=number,
                                column=head.column)
-        params = self._params(spec, operands, line.number, head.column)
+        key = (id(spec), tuple([(token.text, token.is_int) for token in operands]))
+        params = self.made_params.get(key)  # real programs repeat `SUB 43` with its lines
         if params is None:
-            return None
-        return Instruction(spec.name, params=params, comment=comment, line=line.number,
-                           column=head.column)
+            reported = len(self.diagnostics)
+            params = self._params(spec, operands, number, head.column)
+            if params is None:
+                return None
+            if len(self.diagnostics) == reported:
+                self.made_params[key] = params
+        return new_instruction(spec.name, None, params, comment, (), number, head.column)
 
     def _address(self, token: _Token, line: int, *, want_bit: bool | None,
                  width: int) -> Address | None:
         try:
-            return parse_address(token.text, want_bit=want_bit, width=width)
+            return parse_address_cached(token.text, want_bit, width)
         except AddressError as exc:
             args = {k: (v[:20] if isinstance(v, str) and k == "text" else v)
                     for k, v in exc.args_map.items()}
@@ -551,8 +756,7 @@ class _FileParser:
 
     def _params(self, spec: InstructionSpec, operands: list[_Token], line: int,
                 column: int) -> tuple[ParamValue, ...] | None:
-        fixed = spec.fixed_params()
-        table = spec.table_param()
+        fixed, table = _fixed_and_table(spec)
         size = _table_size(spec, operands) if table else 0
         expected = len(fixed) + (size or 0)
         if len(operands) < len(fixed) or (table is None and len(operands) != len(fixed)) or (
@@ -583,19 +787,19 @@ class _FileParser:
 
     def _param(self, spec: InstructionSpec, param: Param, token: _Token, index: int,
                values: dict[str, object], line: int) -> ParamValue | None:
-        kind = param.kind.value
-        if kind == "number":
+        kind = param.kind
+        if kind is ParamKind.NUMBER:
             return self._number(spec, param, token, index, line)
-        if kind == "mask":
+        if kind is ParamKind.MASK:
             if not token.is_int or not _MASK.match(token.text):
                 self._error("param-mask", line, token.column, name=spec.name, index=index,
                             param=param.name, text=token.text[:20])
                 return None
             return int(token.text, 2)
-        if kind in ("program", "label"):
-            return self._reference(spec, param, token, index, line, "P" if kind == "program"
-                                   else "L")
-        if kind == "raw":
+        if kind is ParamKind.PROGRAM or kind is ParamKind.LABEL:
+            return self._reference(spec, param, token, index, line,
+                                   "P" if kind is ParamKind.PROGRAM else "L")
+        if kind is ParamKind.RAW:
             return self._raw(token, line)
         width = width_of(spec, param, values)
         if param.kind is ParamKind.ADDRESS or (
@@ -685,10 +889,9 @@ def _is_param_line(line: _Line) -> bool:
 
 def _table_size(spec: InstructionSpec, operands: list[_Token]) -> int | None:
     """Number of table entries, read from the parameter that gives it (None if unknown)."""
-    table = spec.table_param()
+    fixed, table = _fixed_and_table(spec)
     if table is None:
         return 0
-    fixed = spec.fixed_params()
     for index, param in enumerate(fixed):
         if param.name == table.length_of and index < len(operands):
             token = operands[index]
@@ -698,20 +901,52 @@ def _table_size(spec: InstructionSpec, operands: list[_Token]) -> int | None:
     return None
 
 
+def _fixed_and_table(spec: InstructionSpec) -> tuple[tuple[Param, ...], Param | None]:
+    """A spec's fixed parameters and its TABLE parameter (found once per row)."""
+    found = _SHAPES.get(id(spec))
+    if found is None or found[0] is not spec:
+        found = _SHAPES[id(spec)] = (spec, spec.fixed_params(), spec.table_param())
+    return found[1], found[2]
+
+
+def _shape(spec: InstructionSpec) -> tuple[int, Param | None]:
+    """The number of fixed parameters of a spec and its TABLE parameter."""
+    fixed, table = _fixed_and_table(spec)
+    return len(fixed), table
+
+
+# by id(spec), holding the spec (so the id is not reused while the entry lives)
+_SHAPES: dict[int, tuple[InstructionSpec, tuple[Param, ...], Param | None]] = {}
+
+
+def _flow(spec: InstructionSpec) -> tuple[bool, bool]:
+    """Whether the instruction starts a network after an output (a READ without push, or a
+    function with no control input), and whether it ends one (a coil or a function)."""
+    starts = (spec.combine is Combine.READ and not spec.pushes) or (
+        spec.kind is not Kind.BASIC and not spec.inputs)
+    return starts, spec.writes or spec.kind is not Kind.BASIC
+
+
+_BLANK = _Line("blank")  # every blank line text scans to this one
+_BAD = _Line("bad")  # a line text with a syntax error
+
+
 class _NetworkBuilder:
     """Groups instructions into networks: a label, or an RD after an output, starts one.
 
-    Also records which source lines each network came from (`spans`, 0-based, end exclusive):
-    from the end of the previous network to its last instruction or parameter line."""
+    Also records which source lines each network came from (`spans()`, 0-based, end
+    exclusive): from the end of the previous network to its last instruction or parameter
+    line."""
 
     def __init__(self, start: int) -> None:
         self.networks: list[Network] = []
-        self.current: Network | None = None
+        self.current: list[Instruction] | None = None  # the instructions of the last network
         self.closed = False  # the current network has reached an output
         self.pending: list[str] = []
         self.pending_label = ""
         self.cursor = start  # first line index not yet in a network
-        self.spans: list[tuple[int, int]] = []
+        self.firsts: list[int] = []  # spans: first line index of each network
+        self.lasts: list[int] = []  # spans: end of each network
         self.heads: list[int] = []
 
     def comment(self, text: str) -> None:
@@ -723,27 +958,32 @@ class _NetworkBuilder:
         self.pending_label = text
         self.closed = True
 
-    def add(self, instruction: Instruction, end_line: int, spec: InstructionSpec) -> None:
-        starts = bool(self.pending_label) or (
-            spec.combine is Combine.READ and not spec.pushes) or (
-            spec.kind is not Kind.BASIC and not spec.inputs
-        )
-        if self.current is None or (starts and self.closed):
-            self.current = Network(comments=self.pending, label=self.pending_label)
+    def add(self, instruction: Instruction, end_line: int, starts: bool, ends: bool) -> None:
+        """Add an instruction (its last line `end_line`); `starts`, `ends` are its _flow()."""
+        current = self.current
+        if current is None or (self.closed and (starts or self.pending_label)):
+            network = Network(comments=self.pending, label=self.pending_label)
+            current = self.current = network.instructions
             self.pending = []
             self.pending_label = ""
-            self.networks.append(self.current)
-            self.spans.append((self.cursor, end_line))
+            self.networks.append(network)
+            self.firsts.append(self.cursor)
+            self.lasts.append(end_line)
             self.heads.append(instruction.line - 1)
             self.closed = False
-        elif self.pending:
-            instruction = _with_lead(instruction, self.pending)
-            self.pending = []
-        self.current.instructions.append(instruction)
-        self.spans[-1] = (self.spans[-1][0], end_line)
+        else:
+            if self.pending:
+                instruction = _with_lead(instruction, self.pending)
+                self.pending = []
+            self.lasts[-1] = end_line
+        current.append(instruction)
         self.cursor = end_line
-        if spec.writes or spec.kind is not Kind.BASIC:
+        if ends:
             self.closed = True
+
+    def spans(self) -> list[tuple[int, int]]:
+        """The source lines of each network."""
+        return list(zip(self.firsts, self.lasts, strict=True))
 
     def finish_pending(self) -> list[str]:
         """Comment lines after the last network (a label there is kept as its text)."""
@@ -756,3 +996,5 @@ class _NetworkBuilder:
 def _with_lead(instruction: Instruction, lead: list[str]) -> Instruction:
     return Instruction(instruction.name, instruction.operand, instruction.params,
                        instruction.comment, tuple(lead), instruction.line, instruction.column)
+
+

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -73,6 +74,33 @@ class Instruction:
         if table is not None:
             values[table.name] = tuple(self.params[len(fixed):])
         return values
+
+
+def _slot_setters(cls: type,
+                  names: tuple[str, ...]) -> tuple[Callable[[object, object], None], ...]:
+    """The `__set__` of each named slot of a slots dataclass."""
+    return tuple(vars(cls)[name].__set__ for name in names)
+
+
+_SET_NAME, _SET_OPERAND, _SET_PARAMS, _SET_COMMENT, _SET_LEAD, _SET_LINE, _SET_COLUMN = (
+    _slot_setters(Instruction, ("name", "operand", "params", "comment", "lead", "line",
+                                "column")))
+_new = object.__new__
+
+
+def new_instruction(name: str, operand: Address | None, params: tuple[ParamValue, ...],
+                    comment: str, lead: tuple[str, ...], line: int, column: int) -> Instruction:
+    """Instruction(...) with every field given, about twice as fast: the parser makes one per
+    line. It sets the slots as the frozen dataclass's __init__ does, without its checks."""
+    instruction = _new(Instruction)
+    _SET_NAME(instruction, name)
+    _SET_OPERAND(instruction, operand)
+    _SET_PARAMS(instruction, params)
+    _SET_COMMENT(instruction, comment)
+    _SET_LEAD(instruction, lead)
+    _SET_LINE(instruction, line)
+    _SET_COLUMN(instruction, column)
+    return instruction
 
 
 @dataclass(slots=True)

@@ -5,10 +5,16 @@ from __future__ import annotations
 import csv
 import re
 
-from ladderworks.core.address import AddressError, Area, parse_address
+from ladderworks.core.address import (
+    AddressError,
+    Area,
+    parse_address,
+    parse_address_cached,
+    parse_address_once,
+)
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.il.program import IoModule, Message, Program, Section
-from ladderworks.core.symbols import SymbolTable, add_entry
+from ladderworks.core.symbols import SymbolTable, add_entry, new_symbol
 
 _COLUMNS_RE = re.compile(r"(SYM|ADR|CM1|CM2)\s*=\s*(\d{1,2})", re.IGNORECASE)
 _MESSAGE_RE = re.compile(r"^\s*(\S+)\s+(\d{1,6})(?:[ \t](.*))?$")
@@ -30,18 +36,32 @@ def _is_comment(line: str) -> bool:
 
 
 def read_symbols(section: Section, first: int, table: SymbolTable,
-                 out: list[Diagnostic]) -> None:
-    """Add a `%@2`, `%@2-C`, `%@2-C2` or `%@2-E(...)` section's entries to `table`."""
+                 out: list[Diagnostic], *, build: bool = True) -> None:
+    """Add a `%@2`, `%@2-C`, `%@2-C2` or `%@2-E(...)` section's entries to `table` (with
+    `build` False, only its common lines' diagnostics are wanted: they are checked, not
+    added)."""
     kind = section.title[3:]
     if kind.upper().startswith("-E"):
         _read_csv_symbols(section, first, table, out)
         return
+    by_address, by_symbol = table.by_address, table.by_symbol
+    read = parse_address_cached if build else parse_address_once  # once: no cache to fill
     for offset, line in enumerate(section.lines):
-        if _is_comment(line):
-            continue
         words = line.split(None, 2)
+        if not words or words[0].startswith((";", "//")):  # blank or a comment line
+            continue
         comment = words[2].strip() if len(words) > 2 else ""
-        if len(words) < 2 or not add_entry(table, words[0], words[1], (comment,)):
+        if len(words) == 2 and words[0][0] not in "Pp":  # `D37.4   C62179`: table.add inline
+            try:
+                address = read(words[0], None, 1)
+            except AddressError:
+                _warn(out, section, first + offset, line.strip())
+                continue
+            if not build:
+                continue
+            by_address[address] = new_symbol(words[1], ())
+            by_symbol.setdefault(words[1], address)
+        elif len(words) < 2 or not add_entry(table, words[0], words[1], (comment,)):
             _warn(out, section, first + offset, line.strip())
 
 
@@ -112,8 +132,10 @@ def read_io_modules(section: Section, first: int, out: list[Diagnostic]) -> list
     return modules
 
 
-def read_views(program: Program, firsts: dict[int, int], out: list[Diagnostic]) -> None:
-    """Fill the program's views from its sections; `firsts[id(section)]` is its first line."""
+def read_views(program: Program, firsts: dict[int, int], out: list[Diagnostic], *,
+               build: bool = True) -> None:
+    """Fill the program's views from its sections; `firsts[id(section)]` is its first line
+    (with `build` False only the diagnostics are wanted: the symbol table may be partial)."""
     table = SymbolTable()
     for section in program.sections():
         first = firsts.get(id(section), 1)
@@ -124,7 +146,7 @@ def read_views(program: Program, firsts: dict[int, int], out: list[Diagnostic]) 
         elif section.number == 1:
             program.title.update(read_items(section, first, out))
         elif section.number == 2 and (title[3:] in _SYMBOL_KINDS or title.startswith("%@2-E")):
-            read_symbols(section, first, table, out)
+            read_symbols(section, first, table, out, build=build)
         elif section.number == 4:
             read_messages(section, first, program, out)
         elif section.number == 5:

@@ -128,6 +128,13 @@ def decode_text(data: bytes) -> tuple[str, TextForm, list[Diagnostic]]:
 
     Bytes that cannot be decoded are kept as surrogates, so encoding writes them back; each
     line holding some gets an `invalid-bytes` warning."""
+    text, form, diagnostics, _lines = decode_lines(data)
+    return text, form, diagnostics
+
+
+def decode_lines(data: bytes) -> tuple[str, TextForm, list[Diagnostic],
+                                       tuple[list[str], list[str]]]:
+    """decode_text, plus the text's lines and their ends (split_with_ends) found on the way."""
     diagnostics: list[Diagnostic] = []
     if data.startswith(BOM_UTF16LE) or data.startswith(BOM_UTF16BE):
         encoding = UTF16LE if data.startswith(BOM_UTF16LE) else UTF16BE
@@ -155,9 +162,10 @@ def decode_text(data: bytes) -> tuple[str, TextForm, list[Diagnostic]]:
             else:
                 encoding = CP1254
                 text = body.decode(CP1254, errors="surrogateescape")
-    _lines, ends = split_with_ends(text)
+    split = split_with_ends(text)
+    ends = split[1]
     form = TextForm(encoding, bom, dominant_newline(ends), not ends or ends[-1] != "")
-    return text, form, diagnostics
+    return text, form, diagnostics, split
 
 
 def encode_text(text: str, form: TextForm) -> bytes:

@@ -83,8 +83,15 @@ def damaged_drafts(lines: list[str]) -> list[Diagnostic]:
                                     Severity.WARNING))
         block.clear()
 
-    for number, line in enumerate(lines):
-        text = _draft_text(line)
+    previous = -1
+    # only the lines with the mark can be draft lines: a run of lines without it between two
+    # of them closes the block as each of its lines would (start: the last of the run)
+    for number in [n for n, line in enumerate(lines) if DRAFT_MARK in line]:
+        if number > previous + 1:
+            close()
+            start = number - 1
+        previous = number
+        text = _draft_text(lines[number])
         if text is None or text[len(DRAFT_MARK):].startswith(MAGIC):
             close()
             start = number

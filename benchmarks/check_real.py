@@ -1,0 +1,108 @@
+"""`ladderworks-cli check` of the 37,883-step FANUC_STUDER_S41_F036: ms as a whole process, and
+inside a fresh process (imports, then the check itself); run from the repository root.
+
+Each figure is the best and the median of RUNS fresh processes (the machine may be shared)."""
+
+from __future__ import annotations
+
+import os
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+NAME = "FANUC_STUDER_S41_F036"
+RUNS = 7
+GOAL_MS = 300
+
+# In a fresh interpreter: ms to import the CLI and ms for check itself (stdout discarded).
+INSIDE = """
+import io, sys, time, contextlib
+began = time.perf_counter()
+from ladderworks.cli import main
+imported = time.perf_counter()
+with contextlib.redirect_stdout(io.StringIO()):
+    main(["check", sys.argv[1]])
+done = time.perf_counter()
+print(f"{(imported - began) * 1000:.1f} {(done - imported) * 1000:.1f}")
+"""
+
+
+def _program() -> Path | None:
+    for base in ROOT.parents:
+        candidate = base / "shared" / "real-programs" / f"{NAME}.txt"
+        if candidate.exists():
+            return candidate
+    return None
+
+
+def _children_cpu() -> float:
+    """CPU seconds (user + system) of the finished child processes so far."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def _process_ms(path: Path, env: dict[str, str] | None = None) -> tuple[float, float]:
+    """(wall ms, CPU ms) of `python3 -m ladderworks.cli check FILE`, interpreter start
+    included (CPU time is less disturbed by other work on the machine)."""
+    cpu = _children_cpu()
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "ladderworks.cli", "check", str(path)], cwd=ROOT,
+                   stdout=subprocess.DEVNULL, check=False, env=env)
+    return (time.perf_counter() - start) * 1000, (_children_cpu() - cpu) * 1000
+
+
+def _inside_ms(path: Path) -> tuple[float, float]:
+    """(import ms, check ms) measured inside a fresh interpreter."""
+    done = subprocess.run([sys.executable, "-c", INSIDE, str(path)], cwd=ROOT,
+                          capture_output=True, text=True, check=True)
+    imported, checked = done.stdout.split()
+    return float(imported), float(checked)
+
+
+def _empty_ms() -> float:
+    """Wall ms of an interpreter that does nothing (the floor under the process figure)."""
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-c", "pass"], cwd=ROOT, check=True)
+    return (time.perf_counter() - start) * 1000
+
+
+def _line(label: str, values: list[float], goal: str = "") -> str:
+    return (f"{label:28s} best {min(values):6.0f} ms  median {statistics.median(values):6.0f} ms"
+            + (f"  ({goal})" if goal else ""))
+
+
+def main() -> int:
+    """Run the measurement and print the figures."""
+    path = _program()
+    if path is None:
+        print(f"no ../shared/real-programs/{NAME}.txt beside the repository", file=sys.stderr)
+        return 1
+    process = [_process_ms(path) for _ in range(RUNS)]
+    with tempfile.TemporaryDirectory() as cache:
+        # as an installed package runs: modules read from their bytecode cache, not compiled
+        # (PYTHONDONTWRITEBYTECODE, if set here, makes every run compile them)
+        env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+        env["PYTHONPYCACHEPREFIX"] = cache
+        _process_ms(path, env)
+        cached = [_process_ms(path, env) for _ in range(RUNS)]
+    inside = [_inside_ms(path) for _ in range(RUNS)]
+    empty = [_empty_ms() for _ in range(RUNS)]
+    load = os.getloadavg()
+    print(f"{NAME}: ladderworks-cli check, {RUNS} fresh processes each")
+    print(_line("check (CLI process):", [w for w, _c in process], f"goal under {GOAL_MS} ms"))
+    print(_line("  its CPU time:", [c for _w, c in process]))
+    print(_line("check, bytecode cached:", [w for w, _c in cached], f"goal under {GOAL_MS} ms"))
+    print(_line("  check in-process:", [c for _i, c in inside]))
+    print(_line("  importing the CLI:", [i for i, _c in inside]))
+    print(_line("  python3 -c pass:", empty))
+    print(f"load average: {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} on {os.cpu_count()} cores")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
