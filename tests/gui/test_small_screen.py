@@ -110,3 +110,36 @@ def test_a_new_window_shown_at_1024_by_600_keeps_that_size(qtbot: QtBot,
     fresh.show()
     qtbot.waitExposed(fresh)
     assert fresh.size() == PANEL
+
+
+@pytest.mark.parametrize("language", ["en", "tr"])
+def test_every_plc_dock_opened_at_once_still_fits(window: MainWindow, qtbot: QtBot,
+                                                  language: str,
+                                                  font_size: float | None) -> None:
+    """A technician opens every PLC screen from the View menu on the panel: the two tab
+    groups hold them, the window stays 1024×600 and the status bar stays in view."""
+    window.set_language(language)
+    assert window.load(EXAMPLES / "spindle_override.LAD")
+    on_the_panel(window, qtbot)
+    docks = window.plc_docks
+    for name, dock in (("action_dock_plc_control", docks.control),
+                       ("action_dock_plc_diagnostic", docks.diagnostic),
+                       ("action_dock_bit_display", docks.bit_display),
+                       ("action_dock_plc_tables", docks.tables),
+                       ("action_dock_time_chart", docks.time_chart),
+                       ("action_dock_scenario", docks.scenario),
+                       ("action_dock_force_list", docks.force_list),
+                       ("action_dock_cross_reference", window.cross_reference)):
+        window.actions_by_name[name].trigger()
+        qtbot.waitUntil(dock.isVisible)
+        assert minimum(window).boundedTo(PANEL) == minimum(window), (name, minimum(window))
+    docks.control.raise_()  # in front of its tab group, the chart in front of the other
+    docks.time_chart.raise_()
+    window.actions_by_name["action_compile"].trigger()
+    qtbot.waitUntil(lambda: docks.control.figures.text() != "")
+    assert minimum(window).boundedTo(PANEL) == minimum(window), minimum(window)
+    assert window.size() == PANEL
+    for widget in (window.statusBar(), docks.control.toolbar, docks.control.run_bar,
+                   docks.time_chart.plot, window.editor):
+        assert inside(window, widget), widget.objectName()
+    window.set_language("en")
