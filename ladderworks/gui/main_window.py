@@ -25,6 +25,7 @@ from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step, questions
 from ladderworks.gui.actions_table import CAN_REDO, CAN_UNDO, CONTEXT_MENU, LADDER_SHOWN
 from ladderworks.gui.console_menus import Condition, ConsoleMenus
+from ladderworks.gui.dock_tabs import WholeDockTitles
 from ladderworks.gui.docks import cross_reference
 from ladderworks.gui.docks.plc_docks import build_plc_docks
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
@@ -103,6 +104,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
             self.recent_actions.append(action)
             self.menus.register(action)
         self._make_docks()
+        self.dock_titles = WholeDockTitles(self)  # tabbed docks: whole titles, tabs scroll
         self._status_text: Callable[[], str] | None = None
         self._make_status_bar()
         named = self.actions_by_name

@@ -5,9 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 import pytest
-from PySide6.QtCore import QEvent, QPoint, QRect, QSize
+from PySide6.QtCore import QEvent, QPoint, QRect, QSize, Qt
 from PySide6.QtGui import QFont
-from PySide6.QtWidgets import QApplication, QWidget
+from PySide6.QtWidgets import QApplication, QTabBar, QWidget
 from pytestqt.qtbot import QtBot
 
 from ladderworks.gui.main_window import MainWindow
@@ -142,4 +142,31 @@ def test_every_plc_dock_opened_at_once_still_fits(window: MainWindow, qtbot: QtB
     for widget in (window.statusBar(), docks.control.toolbar, docks.control.run_bar,
                    docks.time_chart.plot, window.editor):
         assert inside(window, widget), widget.objectName()
+    window.set_language("en")
+
+
+def test_tabbed_docks_show_their_whole_titles(window: MainWindow, qtbot: QtBot) -> None:
+    """Four PLC screens in the bottom group on the panel, in Turkish: each tab reads its whole
+    title (the tabs scroll) rather than 'ALAR...' and 'PLC ZAMAN ...'."""
+    window.set_language("tr")
+    on_the_panel(window, qtbot)
+    docks = window.plc_docks
+    for name, dock in (("action_dock_plc_tables", docks.tables),
+                       ("action_dock_time_chart", docks.time_chart),
+                       ("action_dock_scenario", docks.scenario),
+                       ("action_dock_force_list", docks.force_list)):
+        window.actions_by_name[name].trigger()
+        qtbot.waitUntil(dock.isVisible)
+    window.resizeDocks([docks.time_chart], [300], Qt.Orientation.Horizontal)  # its narrowest
+    qtbot.waitUntil(lambda: docks.time_chart.width() < 480)
+    titles = {dock.windowTitle() for dock in (docks.alarms, docks.time_chart, docks.scenario,
+                                              docks.force_list)}
+    bars = [bar for bar in window.findChildren(QTabBar)
+            if bar.isVisible() and titles <= {bar.tabText(i) for i in range(bar.count())}]
+    assert len(bars) == 1
+    bar = bars[0]
+    for index in range(bar.count()):
+        text = bar.tabText(index)
+        # the style pads a whole title by some 20 px; a squeezed tab has 2 px and cuts it
+        assert bar.tabRect(index).width() >= bar.fontMetrics().horizontalAdvance(text) + 16, text
     window.set_language("en")
