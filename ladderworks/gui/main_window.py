@@ -263,6 +263,10 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
     def _program_shown(self, program: Program) -> None:
         """A program is now shown: its symbols and messages go to the docks."""
         self.program_info = program
+        # the cell under the cursor of the program now shown, not the last one's
+        shown = self.editor.networks and not self.model.showing_text
+        self.cell_label.setText(self.editor.describe_cell(*self.editor.cursor_cell) if shown
+                                else "")
         self.signals_dock.set_symbols(program.symbols)
         self.plc_docks.session.set_symbols(program.symbols)
         self.program_opened.emit(program)
@@ -304,6 +308,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
 
     def _show_mode(self, mode: str) -> None:
         self.pages.setCurrentWidget(self.text_view if mode == Mode.TEXT else self.editor)
+        if mode == Mode.TEXT:
+            self.cell_label.setText("")  # no cell: the text view has its own cursor
 
     def show_as_text(self) -> None:
         """Show the program as instruction-list text."""
