@@ -34,6 +34,7 @@ from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.editor.name_menu import NameDisplayMenu
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.editor.zoom import FitWidth
+from ladderworks.gui.elided_label import ElidedLabel
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
 from ladderworks.gui.find_replace import FindReplaceDialog
@@ -171,7 +172,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.tool_palette.raise_()
 
     def _make_status_bar(self) -> None:
-        self.cell_label = QLabel(self)
+        self.cell_label = ElidedLabel(self)
         self.cell_label.setObjectName("status_cell")
         self.cell_label.setMinimumWidth(140)
         self.statusBar().addPermanentWidget(self.cell_label)

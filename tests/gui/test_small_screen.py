@@ -170,3 +170,24 @@ def test_tabbed_docks_show_their_whole_titles(window: MainWindow, qtbot: QtBot) 
         # the style pads a whole title by some 20 px; a squeezed tab has 2 px and cuts it
         assert bar.tabRect(index).width() >= bar.fontMetrics().horizontalAdvance(text) + 16, text
     window.set_language("en")
+
+
+def test_a_long_status_ends_in_an_ellipsis_with_the_whole_text_as_tooltip(
+        window: MainWindow, qtbot: QtBot, tmp_path) -> None:
+    """A long symbol comment and element comment under the cursor on the panel: the status
+    bar says it was cut ('…'), the tooltip has it whole, the window does not widen."""
+    window.set_language("tr")
+    on_the_panel(window, qtbot)
+    path = tmp_path / "long.LAD"
+    comment = "ACİL STOP BUTONU BASILI DEĞİL VE KAPI KİLİTLİ İSE MAKİNE HAREKETİNE İZİN " * 2
+    path.write_text(f"%@2-C\nX0.0   UZUN_SEMBOL  {comment}\n%\n%@3\nN00001:\n"
+                    "RD X0.0  // bu kontağın kendi yorumu\nWRT Y0.0\n%\n", "utf-8")
+    assert window.load(path)
+    window.editor.move_cursor(0, 0, 0)
+    label = window.cell_label
+    qtbot.waitUntil(lambda: label.toolTip() == label.text() and "kendi yorumu" in label.text())
+    assert minimum(window).boundedTo(PANEL) == minimum(window)
+    assert window.size() == PANEL and inside(window, label)
+    assert label.shown_text().endswith("…")
+    assert label.fontMetrics().horizontalAdvance(label.shown_text()) <= label.width()
+    window.set_language("en")
