@@ -1,5 +1,6 @@
 """Open the 37,883-step FANUC_STUDER_S41_F036 in the console: ms to parse, lay out and paint,
-ms for `ladderworks-cli check`, resident memory; run from the repository root."""
+ms for `ladderworks-cli check`, resident memory; run from the repository root. An argument
+chooses View › Element names (`address`, `symbol`, `comment`; default: the screen's)."""
 
 from __future__ import annotations
 
@@ -81,6 +82,8 @@ def main() -> int:
     del result
     with tempfile.TemporaryDirectory() as tmp:
         settings = Settings(QSettings(str(Path(tmp) / "s.ini"), QSettings.Format.IniFormat))
+        if len(sys.argv) > 1:
+            settings.set_name_display(sys.argv[1])  # View › Element names, as if chosen
         language = UiLanguage()
         language.apply("en")
         window = MainWindow(settings, language)
@@ -101,6 +104,8 @@ def main() -> int:
             app.processEvents()
         laid_out = time.perf_counter() - start
         rss = _rss_mb()
+        names = window.names_menu.group.checkedAction().objectName().removeprefix("action_names_")
+        height = window.editor.layout_.total_height()
         count = len(window.editor.networks) - 1
         made = window.editor.network_items.made_count()
         start = time.perf_counter()
@@ -115,6 +120,7 @@ def main() -> int:
     check = _check_ms(path)
     load = os.getloadavg()
     print(f"{NAME}: {steps} steps, {count} networks ({made} graphics items made)")
+    print(f"element names: {names}; document height {height:.0f} px")
     print(f"parse alone (first):    {parse_ms:7.0f} ms")
     print(f"open to painted:        {painted * 1000:7.0f} ms (goal under 500 ms)")
     print(f"  parse inside open:    {parsed[0] * 1000:7.0f} ms")

@@ -904,83 +904,83 @@
 <context>
     <name>FindReplace</name>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="158"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="219"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="159"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="221"/>
         <source>Not found</source>
         <translation>Not found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="170"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="171"/>
         <source>network {0}</source>
         <translation>network {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="171"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="172"/>
         <source>{0} of {1}: {2}, {3}</source>
         <translation>{0} of {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="203"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="204"/>
         <source>Replace {0} with {1}</source>
         <translation>Replace {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="208"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="210"/>
         <source>Replaced; no more found</source>
         <translation>Replaced; no more found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="224"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="226"/>
         <source>Replace all {0} with {1}</source>
         <translation>Replace all {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="225"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="228"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{0} replaced in {1} networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="233"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="236"/>
         <source>Find and replace</source>
         <translation>Find and replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="234"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="237"/>
         <source>Find:</source>
         <translation>Find:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="235"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="238"/>
         <source>Replace with:</source>
         <translation>Replace with:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="237"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
         <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
         <translation>Address, symbol or words, e.g. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="239"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="242"/>
         <source>Address or symbol, e.g. R200</source>
         <translation>Address or symbol, e.g. R200</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="243"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="241"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="244"/>
         <source>&amp;Replace</source>
         <translation>&amp;Replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="242"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="245"/>
         <source>Replace &amp;all</source>
         <translation>Replace &amp;all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="243"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="246"/>
         <source>Close</source>
         <translation>Close</translation>
     </message>
@@ -1147,108 +1147,101 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="101"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="219"/>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="250"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="234"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="251"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="336"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="338"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="207"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="214"/>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="353"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="222"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="228"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="355"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="230"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="236"/>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="387"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="245"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="251"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="389"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="104"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="108"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="98"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="102"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="110"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="114"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="124"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="128"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="296"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="298"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="303"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="305"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="164"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="174"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="166"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="187"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="173"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="63"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="132"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="150"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="153"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="84"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="127"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="86"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="135"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="56"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="129"/>
-        <source>Address</source>
-        <translation>Address</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="247"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="263"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="259"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="275"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="267"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="284"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
@@ -1263,7 +1256,7 @@
         <translation>open circuit here: draw a wire or an element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="68"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="66"/>
         <source>N{0}</source>
         <translation>N{0}</translation>
     </message>
@@ -1317,11 +1310,13 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="88"/>
+        <location filename="../ladderworks/gui/undo_texts.py" line="13"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="91"/>
+        <location filename="../ladderworks/gui/undo_texts.py" line="14"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
@@ -1481,29 +1476,29 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="185"/>
+        <location filename="../ladderworks/gui/main_window.py" line="189"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="382"/>
+        <location filename="../ladderworks/gui/main_window.py" line="393"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="388"/>
+        <location filename="../ladderworks/gui/main_window.py" line="399"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="393"/>
+        <location filename="../ladderworks/gui/main_window.py" line="404"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="429"/>
-        <location filename="../ladderworks/gui/main_window.py" line="249"/>
-        <location filename="../ladderworks/gui/main_window.py" line="389"/>
+        <location filename="../ladderworks/gui/main_window.py" line="254"/>
+        <location filename="../ladderworks/gui/main_window.py" line="400"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -1642,34 +1637,44 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="352"/>
+        <location filename="../ladderworks/gui/main_window.py" line="363"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="368"/>
+        <location filename="../ladderworks/gui/main_window.py" line="379"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="419"/>
+        <location filename="../ladderworks/gui/main_window.py" line="430"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="422"/>
+        <location filename="../ladderworks/gui/main_window.py" line="433"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="454"/>
+        <location filename="../ladderworks/gui/main_window.py" line="465"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="455"/>
+        <location filename="../ladderworks/gui/main_window.py" line="466"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/undo_texts.py" line="15"/>
+        <source>&amp;Undo {0}</source>
+        <translation>&amp;Undo {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/undo_texts.py" line="16"/>
+        <source>&amp;Redo {0}</source>
+        <translation>&amp;Redo {0}</translation>
     </message>
 </context>
 <context>
@@ -2118,93 +2123,93 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="188"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="195"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="196"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="197"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="198"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="199"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="200"/>
         <source>Why?</source>
         <translation>Why?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="201"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="197"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="204"/>
         <source>Back to live</source>
         <translation>Back to live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="198"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="205"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="242"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="141"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="142"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="250"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="257"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="259"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="300"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="337"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="344"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="347"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="354"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="356"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="363"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="98"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="104"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
@@ -2212,73 +2217,73 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
         <source>On-line mode</source>
         <translation>On-line mode</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
         <source>Make passive (disable)</source>
         <translation>Make passive (disable)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
         <source>Make active again</source>
         <translation>Make active again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
         <source>Force to 1</source>
         <translation>Force to 1</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
         <source>Force to 0</source>
         <translation>Force to 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
         <source>Release the force</source>
         <translation>Release the force</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="83"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="84"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="88"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="89"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>On-line needs a compiled program in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="93"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="94"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>The drawing is not the program in the PLC: compile it in the PLC control screen first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="102"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="103"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="151"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>On-line: the drawing shows the running PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="120"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="121"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: the drawing was changed; it is no longer the program the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="173"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="174"/>
         <source>Select a contact, coil or function first</source>
         <translation>Select a contact, coil or function first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="178"/>
         <source>This element has no op in the PLC program</source>
         <translation>This element has no op in the PLC program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="200"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="201"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Select a contact or coil to force its signal</translation>
     </message>
@@ -2455,67 +2460,77 @@
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="154"/>
+        <source>Print preview</source>
+        <translation>Print preview</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="172"/>
         <source>Export PDF</source>
         <translation>Export PDF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="151"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF files (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="159"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="181"/>
         <source>&amp;Print...</source>
         <translation>&amp;Print...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="160"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
+        <source>Print pre&amp;view...</source>
+        <translation>Print pre&amp;view...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
         <source>Export P&amp;DF...</source>
         <translation>Export P&amp;DF...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="166"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
         <source>Printing was cancelled or failed</source>
         <translation>Printing was cancelled or failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="191"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} pages written to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="170"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="193"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} pages sent to the printer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="258"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="268"/>
         <source>Page {0} / {1}</source>
         <translation>Page {0} / {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="284"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="294"/>
         <source>Cross reference</source>
         <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="287"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="297"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="288"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="298"/>
         <source>Symbol</source>
         <translation>Symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="289"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="299"/>
         <source>Written in networks</source>
         <translation>Written in networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="290"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="300"/>
         <source>Read in networks</source>
         <translation>Read in networks</translation>
     </message>
@@ -2888,118 +2903,118 @@
 <context>
     <name>Scenario</name>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="88"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="90"/>
         <source>Run scenario</source>
         <translation>Run scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="89"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Scenario files (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="99"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="101"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="115"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="117"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="146"/>
         <source>passed</source>
         <translation>passed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="147"/>
         <source>FAILED</source>
         <translation>FAILED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="155"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: all {1} checks passed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="158"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {1} of {2} checks failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="190"/>
         <source>Save the recorded scenario</source>
         <translation>Save the recorded scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="198"/>
         <source>recorded in LadderWorks</source>
         <translation>recorded in LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="201"/>
         <source>Recording inputs and forces...</source>
         <translation>Recording inputs and forces...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="210"/>
         <source>Recorded {0} changes</source>
         <translation>Recorded {0} changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="211"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="218"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="221"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
         <source>PLC scenario</source>
         <translation>PLC scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="233"/>
         <source>Run scenario...</source>
         <translation>Run scenario...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="234"/>
         <source>Record scenario</source>
         <translation>Record scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="236"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="236"/>
         <source>Check</source>
         <translation>Check</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="237"/>
         <source>Expected</source>
         <translation>Expected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="237"/>
         <source>Got</source>
         <translation>Got</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="238"/>
         <source>Time (ms)</source>
         <translation>Time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="238"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
@@ -3241,152 +3256,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="96"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="97"/>
         <source>Select</source>
         <translation>Select</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="156"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="157"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="171"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="172"/>
         <source>NOT input</source>
         <translation>NOT input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="185"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="186"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="199"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="200"/>
         <source>NOT output</source>
         <translation>NOT output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="213"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="214"/>
         <source>SET coil</source>
         <translation>SET coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="228"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="229"/>
         <source>RST coil</source>
         <translation>RST coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="243"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="244"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="259"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="260"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="283"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="284"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="322"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="324"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="346"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="348"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="362"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="364"/>
         <source>Function</source>
         <translation>Function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="380"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="382"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="397"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="399"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="97"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="98"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Click an element or drag over cells to select; right-click: cut, copy, paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="157"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="158"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="172"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="173"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="186"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="187"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="200"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="201"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="214"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="215"/>
         <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
         <translation>Click a cell to place a SET coil (bit := 1 while the logic is 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="229"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="230"/>
         <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
         <translation>Click a cell to place an RST coil (bit := 0 while the logic is 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="244"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="245"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Click a contact or coil to turn it into its inverse</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="260"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="261"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="284"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="285"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="323"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="325"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Click the start of an empty row, type the comment, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="347"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="349"/>
         <source>Click an element to delete it</source>
         <translation>Click an element to delete it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="363"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="365"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Choose a function in the list, click the diagram, fill its table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="381"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="383"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Click a cell to insert an empty row before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="398"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="400"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Click a cell to insert an empty row after it</translation>
     </message>

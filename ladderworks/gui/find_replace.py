@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
-from PySide6.QtGui import QUndoCommand
 from PySide6.QtWidgets import (
     QDialog,
     QDialogButtonBox,
@@ -16,7 +15,7 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.address import Address
-from ladderworks.core.diagnostics import Refused
+from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP, Refused
 from ladderworks.core.ladder import Coil, Contact, Edit
 from ladderworks.core.ladder.find_replace import (
     Found,
@@ -27,17 +26,19 @@ from ladderworks.core.ladder.find_replace import (
     replacements,
 )
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.editor.step_name import NamedCommand, StepName
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
 
 
-class ReplaceAllCommand(QUndoCommand):
+class ReplaceAllCommand(NamedCommand):
     """Replace all: the edits of every network it touches, one undo step."""
 
-    def __init__(self, editor: LadderEditor, edits: list[tuple[int, Edit]], text: str) -> None:
-        super().__init__(text)
+    def __init__(self, editor: LadderEditor, edits: list[tuple[int, Edit]],
+                 name: StepName) -> None:
+        super().__init__(name)
         self._editor = editor
         self._edits = edits  # applied by redo; redo keeps the inverses for undo
 
@@ -200,8 +201,9 @@ class FindReplaceDialog(Retranslating, QDialog):
             self.find_next()
             return False
         [(index, edit)] = replacements(self.editor.networks, current, query, new)
-        text = translate("FindReplace", "Replace {0} with {1}").format(query.text, new)
-        self.editor.run_edit(index, edit.apply, text)
+        name = StepName("FindReplace", QT_TRANSLATE_NOOP("FindReplace", "Replace {0} with {1}"),
+                        (query.text, str(new)))
+        self.editor.run_edit(index, edit.apply, name)
         if self.hits():
             self.find_next()
         else:
@@ -221,7 +223,8 @@ class FindReplaceDialog(Retranslating, QDialog):
         edits = replacements(self.editor.networks, hits, query, new)
         self.editor.undo_stack.push(ReplaceAllCommand(
             self.editor, edits,
-            translate("FindReplace", "Replace all {0} with {1}").format(query.text, new)))
+            StepName("FindReplace", QT_TRANSLATE_NOOP("FindReplace", "Replace all {0} with {1}"),
+                     (query.text, str(new)))))
         self._say(translate("FindReplace", "{0} replaced in {1} networks").format(
             len(hits), len(edits)))
         return len(hits)

@@ -50,6 +50,7 @@ from ladderworks.gui.signal_list import SignalListDock
 from ladderworks.gui.text_view import ProgramTextView
 from ladderworks.gui.tools import Tool, icon
 from ladderworks.gui.translation import UiLanguage
+from ladderworks.gui.undo_texts import UndoTexts
 
 translate = QCoreApplication.translate
 
@@ -117,6 +118,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.cross_reference = cross_reference.install(self, self.menus, self.editor,
                                                        self.errors)
         self.printing = PrintActions(self, self.menus)  # File › Print, Export PDF
+        self.undo_texts = UndoTexts(self.model.undo_stack, self.actions_by_name["action_undo"],
+                                    self.actions_by_name["action_redo"])  # "Undo Delete"
         # PMC parameters (T/C/K/D set in the PLC tables) are saved with the program
         self.parameters = ParameterDocument(self.plc_docks.session)
         self.plc_docks.session.parameters_changed.connect(self._update_title)
@@ -192,6 +195,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.menus.retranslate()
         self.plc_docks.retranslate()
         self.printing.retranslate()
+        self.undo_texts.retranslate()  # after the menus: Edit › Undo names its step
         for code in ("en", "tr"):
             self.actions_by_name[f"action_language_{code}"].setChecked(
                 self.language.current == code

@@ -15,7 +15,7 @@ from PySide6.QtGui import (
     QPainter,
     QPdfWriter,
 )
-from PySide6.QtPrintSupport import QPrintDialog, QPrinter
+from PySide6.QtPrintSupport import QPrintDialog, QPrinter, QPrintPreviewDialog
 from PySide6.QtWidgets import QDialog, QFileDialog, QMainWindow, QProgressDialog
 
 from ladderworks.core.il.program import Program
@@ -115,20 +115,24 @@ def new_printer() -> QPrinter:
 
 
 class PrintActions(QObject):
-    """File › Print… (Ctrl+P) and File › Export PDF…, before Program properties. Not a
-    widget: the window's `retranslate()` calls this one's."""
+    """File › Print… (Ctrl+P), Print preview… and Export PDF…, before Program properties. Not
+    a widget: the window's `retranslate()` calls this one's."""
 
     def __init__(self, window: MainWindow, menus: ConsoleMenus) -> None:
         super().__init__(window)
         self.console = window
+        self.preview_printer: QPrinter | None = None  # the printer of the open print preview
         self.print_action = QAction(window)
         self.print_action.setObjectName("action_print")
         self.print_action.setShortcut(QKeySequence(QKeySequence.StandardKey.Print))
         self.print_action.triggered.connect(self.print_dialog)
+        self.preview_action = QAction(window)
+        self.preview_action.setObjectName("action_print_preview")
+        self.preview_action.triggered.connect(self.preview_dialog)
         self.pdf_action = QAction(window)
         self.pdf_action.setObjectName("action_export_pdf")
         self.pdf_action.triggered.connect(self.pdf_dialog)
-        for action in (self.print_action, self.pdf_action):
+        for action in (self.print_action, self.preview_action, self.pdf_action):
             menus.insert_before("menu_file", action, "action_program_properties")
             window.addAction(action)
         self.retranslate()
@@ -141,6 +145,24 @@ class PrintActions(QObject):
         dialog.setMinMax(1, 99_999)  # the dialog offers a page range; pages are counted after
         if dialog.exec() == QDialog.DialogCode.Accepted:
             _report(self.console, print_ladder(self.console, printer), None)
+
+    def make_preview(self) -> QPrintPreviewDialog:
+        """The print preview of the console's program (A4 landscape; it can print)."""
+        self.preview_printer = new_printer()  # the dialog does not own it: kept alive here
+        dialog = QPrintPreviewDialog(self.preview_printer, self.console)
+        dialog.setObjectName("print_preview")
+        dialog.setWindowTitle(translate("Print", "Print preview"))
+        dialog.paintRequested.connect(  # a long program: a progress dialog that can cancel
+            lambda printer: render(print_job(self.console), printer, self.console))
+        screen = self.console.screen().availableGeometry()
+        dialog.resize(min(1000, screen.width()), min(760, screen.height()))
+        return dialog
+
+    def preview_dialog(self) -> None:
+        """File › Print preview…: the pages as they will print."""
+        dialog = self.make_preview()
+        dialog.exec()
+        dialog.deleteLater()
 
     def pdf_dialog(self) -> None:
         """File › Export PDF…: a file name, then the pages."""
@@ -157,6 +179,7 @@ class PrintActions(QObject):
     def retranslate(self) -> None:
         """The actions' texts in the UI language."""
         self.print_action.setText(translate("Print", "&Print..."))
+        self.preview_action.setText(translate("Print", "Print pre&view..."))
         self.pdf_action.setText(translate("Print", "Export P&DF..."))
 
 

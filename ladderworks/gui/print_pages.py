@@ -23,13 +23,14 @@ from ladderworks.core.xref import Access, CrossReference, Use, UseKind
 from ladderworks.gui.editor.geometry import (
     LISTING_LINE_H,
     SPARE_ROWS,
-    cell_h,
+    RowMetrics,
     grid_top,
     network_height,
+    network_rows,
     network_width,
 )
+from ladderworks.gui.editor.label_text import CommentedAddresses, SignalLookup, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
-from ladderworks.gui.editor.network_item import SignalLookup
 
 translate = QCoreApplication.translate
 
@@ -92,16 +93,19 @@ def program_title(program: Program) -> str:
     return " · ".join(part for part in parts if part)
 
 
-def print_height(network: LadderNetwork) -> float:
-    """The network's height on paper: as on screen, less the spare row the editor adds."""
-    spare = SPARE_ROWS * cell_h() if network.listing is None else 0.0
-    return network_height(network) - spare
+def print_height(network: LadderNetwork, rows: RowMetrics) -> float:
+    """The network's height on paper (its rows are `rows`): as on screen, less the spare row
+    the editor adds."""
+    spare = SPARE_ROWS * rows.height if network.listing is None else 0.0
+    return network_height(network, rows) - spare
 
 
-def _row_cut(network: LadderNetwork, scale: float, top: float, limit: float) -> float:
+def _row_cut(network: LadderNetwork, rows_: RowMetrics, scale: float, top: float,
+             limit: float) -> float:
     """Where to cut a network continued on the next page: at the last row boundary (on
     paper) after `top` and not past `limit`; at `limit` when no row boundary fits."""
-    first, step = grid_top(network), LISTING_LINE_H if network.listing is not None else cell_h()
+    first = grid_top(network)
+    step = LISTING_LINE_H if network.listing is not None else rows_.height
     rows = int((limit / scale - first) // step)
     cut = (first + rows * step) * scale
     return cut if top < cut <= limit else limit
@@ -133,6 +137,7 @@ class LadderPages:
 
     def __init__(self, job: PrintJob, page_width: float, page_height: float) -> None:
         self.job = job
+        self.commented = CommentedAddresses(job.describe)  # addresses with a comment shown
         standard = network_width(LadderNetwork(columns=DEFAULT_COLUMNS))
         self.scale = min(1.0, page_width / standard)
         self.width = page_width / self.scale  # the page in drawing units
@@ -147,18 +152,23 @@ class LadderPages:
         self._plan_networks()
         self._plan_appendix()
 
+    def network_rows(self, network: LadderNetwork) -> RowMetrics:
+        """The rows `network` is drawn with (taller when an element has a comment shown)."""
+        return network_rows(network, lambda net: shows_comment(net, self.commented))
+
     def _plan_networks(self) -> None:
         page = Page()
         y = 0.0
         for index, network in enumerate(self.job.networks):
             scale = min(1.0, self.width / network_width(network))
-            height = print_height(network) * scale
+            rows = self.network_rows(network)
+            height = print_height(network, rows) * scale
             if y > 0 and y + height > self.body:  # a network is not split when it fits a page
                 self.pages.append(page)
                 page, y = Page(), 0.0
             top = 0.0
             while height - top > self.body - y:  # taller than a page: continued on the next
-                cut = _row_cut(network, scale, top, top + self.body - y)
+                cut = _row_cut(network, rows, scale, top, top + self.body - y)
                 page.networks.append(Placement(index, y, top, cut - top, scale))
                 top = cut
                 self.pages.append(page)

@@ -10,6 +10,7 @@ from ladderworks.core.address import parse_address
 from ladderworks.core.ladder import Coil, Contact, EditRefused, LadderNetwork
 from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
+from ladderworks.gui.editor.step_name import editor_step
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.paths import EXAMPLES
 
@@ -37,7 +38,7 @@ def test_pushing_an_edit_makes_it_and_undo_takes_it_back(qtbot: QtBot) -> None:
     seen = Recorder(model)
     edit = model.prepare(0, lambda n: core.place(n, 0, 0, _contact("X1.0")))
     assert first.is_empty() and seen.seen == []  # worked out on a copy: nothing changed yet
-    model.undo_stack.push(NetworkEditCommand(model, 0, edit, "Place contact"))
+    model.undo_stack.push(NetworkEditCommand(model, 0, edit, editor_step("Place contact")))
     assert first.cells == {(0, 0): _contact("X1.0")}
     assert len(model.networks) == 2 and model.networks[1].is_empty()  # room for the next one
     assert seen.seen == [("changed", 0), ("inserted", 1, 1), ("modified", True)]
@@ -53,10 +54,11 @@ def test_pushing_an_edit_makes_it_and_undo_takes_it_back(qtbot: QtBot) -> None:
 def test_an_edit_inside_the_program_appends_no_network(qtbot: QtBot) -> None:
     model = LadderModel()
     model.undo_stack.push(NetworkEditCommand(
-        model, 0, model.prepare(0, lambda n: core.place(n, 0, 0, _contact("X1.0"))), "a"))
+        model, 0, model.prepare(0, lambda n: core.place(n, 0, 0, _contact("X1.0"))),
+        editor_step("a")))
     model.undo_stack.push(NetworkEditCommand(
         model, 0, model.prepare(0, lambda n: core.place(n, 0, 10, Coil(parse_address("Y1.0")))),
-        "b"))
+        editor_step("b")))
     assert len(model.networks) == 2
     model.undo_stack.undo()
     assert len(model.networks) == 2 and (0, 10) not in model.networks[0].cells
@@ -76,7 +78,7 @@ def test_deleting_a_network_is_undone_with_the_same_network(qtbot: QtBot) -> Non
     core.place(kept, 0, 0, _contact("X2.0"))
     model.insert_network(0, kept)
     seen = Recorder(model)
-    model.undo_stack.push(NetworkListCommand(model, 0, None, "Delete network"))
+    model.undo_stack.push(NetworkListCommand(model, 0, None, editor_step("Delete network")))
     assert kept not in model.networks and seen.seen[0] == ("removed", 0)
     model.undo_stack.undo()
     assert model.networks[0] is kept and seen.seen[-2] == ("inserted", 0, 1)
@@ -104,9 +106,9 @@ def test_the_view_draws_what_the_model_announces(window: MainWindow) -> None:
     count = len(model.networks)
     moved = view.network_items[1].pos().y()
     model.undo_stack.push(NetworkEditCommand(  # made on the model, not through the view
-        model, 0, model.prepare(0, lambda n: core.insert_row(n, 0)), "Insert row"))
+        model, 0, model.prepare(0, lambda n: core.insert_row(n, 0)), editor_step("Insert row")))
     assert view.network_items[1].pos().y() > moved  # the networks below moved down
-    model.undo_stack.push(NetworkListCommand(model, 0, None, "Delete network"))
+    model.undo_stack.push(NetworkListCommand(model, 0, None, editor_step("Delete network")))
     assert len(view.network_items) == count - 1 == len(view.layout_.tops)
     assert view.network_items[0].number == 1 and view.network_items[0].network is model.networks[0]
     model.undo_stack.undo()

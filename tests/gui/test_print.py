@@ -13,7 +13,7 @@ from pytestqt.qtbot import QtBot
 from ladderworks.core.address import parse_address
 from ladderworks.core.ladder.model import Contact, LadderNetwork
 from ladderworks.gui import print_actions
-from ladderworks.gui.editor.geometry import cell_h, network_width
+from ladderworks.gui.editor.geometry import network_width
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.print_pages import LadderPages, PrintJob, print_height
 from tests.real_programs import real_bytes
@@ -72,7 +72,8 @@ def test_export_pdf_of_a_real_fragment_has_its_title_labels_and_pages(
         for placement in page.networks:
             network = plan.job.networks[placement.network]
             assert placement.top == 0
-            assert placement.height == print_height(network) * placement.scale
+            rows = plan.network_rows(network)
+            assert placement.height == print_height(network, rows) * placement.scale
             assert placement.y + placement.height <= body
     rows = {str(row.address): row for row in plan.rows}
     assert "D1602.1" in rows and "(R)" in rows["D1602.1"].written
@@ -86,10 +87,11 @@ def test_a_network_taller_than_a_page_is_continued_on_the_next() -> None:
     plan = LadderPages(job, 1000, 700)
     parts = [p for page in plan.pages for p in page.networks if p.network == 1]
     assert len(parts) >= 3 and parts[0].y == 0  # starts on a fresh page, then continues
-    assert sum(p.height for p in parts) == print_height(tall)
+    rows = plan.network_rows(tall)
+    assert sum(p.height for p in parts) == print_height(tall, rows)
     assert [p.top for p in parts] == sorted(p.top for p in parts)
     for part in parts[1:]:  # cut between rows, not through a contact
-        assert part.top % cell_h() == 0  # whole rows: the network has no comment lines
+        assert part.top % rows.height == 0  # whole rows: the network has no comment lines
 
 
 def test_print_sends_the_pages_to_the_printer_the_dialog_chose(

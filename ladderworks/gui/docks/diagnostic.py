@@ -25,6 +25,7 @@ from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
 from ladderworks.gui.docks.live_ladder import LivePower
 from ladderworks.gui.editor.geometry import Layout, cell_h, cell_origin
+from ladderworks.gui.editor.label_text import CommentedAddresses, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
@@ -53,7 +54,8 @@ class DiagnosticView(QGraphicsView):
         self.network_items: list[NetworkItem] = []
         self.symbols: SymbolTable | None = None  # the program's symbols, named under addresses
         self.networks: list[LadderNetwork] = []
-        self.layout_ = Layout()
+        self.comments = CommentedAddresses(self.describe_address)  # asked once per address
+        self.layout_ = Layout(self.commented)
         self.paints = 0  # viewport paint events (the benchmark's repaint rate)
         self.scale(VIEW_SCALE, VIEW_SCALE)  # a dock is narrower than the console
 
@@ -64,7 +66,8 @@ class DiagnosticView(QGraphicsView):
         for item in self.network_items:
             self.scene_.removeItem(item)
         self.networks = networks
-        self.layout_ = Layout()
+        self.comments.forget()  # the symbols may have changed with the program
+        self.layout_ = Layout(self.commented)
         self.layout_.rebuild(networks)
         self.network_items = []
         for index, (network, top) in enumerate(zip(networks, self.layout_.tops, strict=True)):
@@ -72,20 +75,19 @@ class DiagnosticView(QGraphicsView):
             item.setPos(0, top)
             self.scene_.addItem(item)
             self.network_items.append(item)
-        self.live.attach(networks, self.layout_.tops, binary, ops)
+        self.live.attach(networks, self.layout_, binary, ops)
         width = max((item.boundingRect().width() for item in self.network_items), default=600.0)
         self.scene_.setSceneRect(QRectF(0, 0, width, max(self.layout_.total_height(), cell_h())))
 
     def relayout(self) -> None:
         """The rows changed height (View › Element names): restack the networks."""
-        self.layout_ = Layout()
+        self.comments.forget()
+        self.layout_ = Layout(self.commented)
         self.layout_.rebuild(self.networks)
         for item, top in zip(self.network_items, self.layout_.tops, strict=True):
             item.refresh()
             item.setPos(0, top)
-        for overlay, top in zip(self.live.overlays, self.layout_.tops, strict=False):
-            overlay.prepareGeometryChange()
-            overlay.setPos(0, top)
+        self.live.restack(self.layout_)
         rect = self.scene_.sceneRect()
         self.scene_.setSceneRect(QRectF(0, 0, rect.width(),
                                         max(self.layout_.total_height(), cell_h())))
@@ -95,14 +97,19 @@ class DiagnosticView(QGraphicsView):
         """(symbol, comment) of the program, else (signal name, description) of the manual."""
         return name_and_text(address, self.symbols)
 
+    def commented(self, network: LadderNetwork) -> bool:
+        """True when an element of `network` has a comment to show (its rows are taller)."""
+        return shows_comment(network, self.comments)
+
     def visible_rect(self) -> QRectF:
         """The part of the scene on screen."""
         return self.mapToScene(self.viewport().rect()).boundingRect()
 
     def cell_rect(self, network: int, cell: Cell) -> QRectF:
         """Scene rectangle of a cell."""
-        x, y = cell_origin(self.networks[network], *cell)
-        return QRectF(x, y + self.layout_.tops[network], 96.0, cell_h())
+        rows = self.layout_.rows[network]
+        x, y = cell_origin(self.networks[network], *cell, rows)
+        return QRectF(x, y + self.layout_.tops[network], 96.0, rows.height)
 
     def viewportEvent(self, event: QEvent) -> bool:
         """Count paints (the benchmark reports the repaint rate)."""

@@ -12,6 +12,7 @@ from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.model import Cell, FunctionBox, LadderNetwork
 from ladderworks.gui.docks.cell_map import binary_networks, cell_ops, network_power, op_key
 from ladderworks.gui.docks.power_overlay import PowerOverlay
+from ladderworks.gui.editor.geometry import Layout
 from ladderworks.gui.plc_session import PlcSnapshot
 
 
@@ -76,20 +77,27 @@ class LivePower:
         """True while overlays are shown."""
         return self.binary is not None
 
-    def attach(self, networks: list[LadderNetwork], tops: list[float], binary: BinaryProgram,
+    def attach(self, networks: list[LadderNetwork], layout: Layout, binary: BinaryProgram,
                ops: list[list[int]]) -> None:
-        """Put an overlay on each network (at scene y `tops[i]`) for the ops of `binary`."""
+        """Put an overlay on each network (where `layout` stacks it, with its rows) for the ops
+        of `binary`."""
         self.detach()
         self.networks = list(networks)
         self.binary = binary
         self.ops = ops
         self.cells = [cell_ops(net, group, binary) for net, group in zip(networks, ops,
                                                                           strict=True)]
-        for network, top in zip(networks, tops, strict=True):
-            overlay = PowerOverlay(network)
+        for network, top, rows in zip(networks, layout.tops, layout.rows, strict=True):
+            overlay = PowerOverlay(network, rows)
             overlay.setPos(0, top)
             self.scene.addItem(overlay)
             self.overlays.append(overlay)
+
+    def restack(self, layout: Layout) -> None:
+        """The networks' rows changed height (View › Element names): follow `layout`."""
+        for overlay, top, rows in zip(self.overlays, layout.tops, layout.rows, strict=False):
+            overlay.set_rows(rows)
+            overlay.setPos(0, top)
 
     def detach(self) -> None:
         """Remove the overlays (off-line)."""

@@ -50,6 +50,7 @@ class OnlineMode(QObject):
         session.program_loaded.connect(self._on_program)
         session.forces_changed.connect(lambda _entries: self.refresh())
         editor.verticalScrollBar().valueChanged.connect(lambda _v: self.refresh())
+        editor.relaid_out.connect(lambda: self.live.restack(editor.layout_))  # rows' heights
         self._update_actions()
         self.retranslate()
 
@@ -96,7 +97,7 @@ class OnlineMode(QObject):
             return False
         if not self.live.attached:
             self.session.monitor(True)
-        self.live.attach(self.editor.model.networks, self.editor.layout_.tops, binary, ops)
+        self.live.attach(self.editor.model.networks, self.editor.layout_, binary, ops)
         self._sync_check(True)
         self.refresh()
         self._say(translate("PlcOnline", "On-line: the drawing shows the running PLC"))

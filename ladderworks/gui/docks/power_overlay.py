@@ -14,12 +14,11 @@ from ladderworks.gui.docks.cell_map import NetworkPower
 from ladderworks.gui.editor.geometry import (
     CELL_W,
     LEFT,
-    cell_h,
+    RowMetrics,
     cell_origin,
     grid_top,
     network_height,
     network_width,
-    wire_y,
 )
 
 LIVE = QColor("#00a000")
@@ -37,9 +36,10 @@ ValueText = Callable[[Address], str | None]
 class PowerOverlay(QGraphicsItem):
     """Paints one network's live state on top of its NetworkItem (same position and size)."""
 
-    def __init__(self, network: LadderNetwork) -> None:
+    def __init__(self, network: LadderNetwork, rows: RowMetrics) -> None:
         super().__init__()
         self.network = network
+        self.rows = rows  # the network's rows, as its drawing has them
         self.power = NetworkPower()
         self.values: dict[tuple[int, int], list[str]] = {}  # box anchor -> parameter values
         self.marked: set[tuple[int, int]] = set()  # cells found by a search
@@ -48,7 +48,13 @@ class PowerOverlay(QGraphicsItem):
 
     def boundingRect(self) -> QRectF:
         """Same extent as the network's drawing."""
-        return QRectF(0, 0, network_width(self.network), network_height(self.network))
+        return QRectF(0, 0, network_width(self.network), network_height(self.network, self.rows))
+
+    def set_rows(self, rows: RowMetrics) -> None:
+        """The network's rows changed height (View › Element names)."""
+        self.prepareGeometryChange()
+        self.rows = rows
+        self.update()
 
     def set_state(self, power: NetworkPower, values: dict[tuple[int, int], list[str]]) -> bool:
         """New live state; repaints (and returns True) only when something shown changed."""
@@ -71,18 +77,18 @@ class PowerOverlay(QGraphicsItem):
         live = QPen(LIVE, 3.2)
         painter.setPen(live)
         if (0, 0) in power.nodes:
-            painter.drawLine(QPointF(LEFT, top), QPointF(LEFT, top + net.rows * cell_h()))
+            painter.drawLine(QPointF(LEFT, top), QPointF(LEFT, top + net.rows * self.rows.height))
         for row, node in net.links:
             if (row, node) in power.nodes:
                 x = LEFT + node * CELL_W
-                y = top + row * cell_h() + wire_y()
-                painter.drawLine(QPointF(x, y), QPointF(x, y + cell_h()))
+                y = top + row * self.rows.height + self.rows.wire
+                painter.drawLine(QPointF(x, y), QPointF(x, y + self.rows.height))
         small = QFont()
         small.setPointSizeF(7.5)
         small.setBold(True)
         for (row, col), element in net.elements():
-            x, y = cell_origin(net, row, col)
-            mid = y + wire_y()
+            x, y = cell_origin(net, row, col, self.rows)
+            mid = y + self.rows.wire
             painter.setPen(live)
             painter.setBrush(Qt.BrushStyle.NoBrush)
             if isinstance(element, Wire):
@@ -101,7 +107,8 @@ class PowerOverlay(QGraphicsItem):
             if (row, col) in self.marked:
                 painter.setPen(QPen(FOUND, 2.5))
                 painter.setBrush(Qt.BrushStyle.NoBrush)
-                painter.drawRoundedRect(QRectF(x + 1, y + 1, CELL_W - 2, cell_h() - 2), 4, 4)
+                painter.drawRoundedRect(QRectF(x + 1, y + 1, CELL_W - 2, self.rows.height - 2),
+                                        4, 4)
 
     def _contact(self, painter: QPainter, row: int, col: int, x: float, y: float,
                  mid: float) -> None:
@@ -133,13 +140,13 @@ class PowerOverlay(QGraphicsItem):
         for index, on in enumerate(pins):
             if on:
                 pin = box.pins[index] if index < len(box.pins) else index
-                py = y + pin * cell_h() + wire_y()
+                py = y + pin * self.rows.height + self.rows.wire
                 painter.drawLine(QPointF(x, py), QPointF(x + 10, py))
         active = bool(pins) and pins[-1]  # ACT is the last control input
         if active or (row, col) in self.power.box_out:
-            painter.drawRect(QRectF(x + 10, y + 6, width - 20, box.height * cell_h() - 12))
+            painter.drawRect(QRectF(x + 10, y + 6, width - 20, box.height * self.rows.height - 12))
         if (row, col) in self.power.box_out:
-            py = y + wire_y()
+            py = y + self.rows.wire
             painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
         values = self.values.get((row, col))
         if values:

@@ -2,21 +2,20 @@
 
 from __future__ import annotations
 
-from PySide6.QtGui import QUndoCommand
-
 from ladderworks.core.ladder import Edit, LadderNetwork
 from ladderworks.gui.editor.ladder_model import LadderModel, is_blank
+from ladderworks.gui.editor.step_name import NamedCommand, StepName
 
 
-class NetworkEditCommand(QUndoCommand):
+class NetworkEditCommand(NamedCommand):
     """A change to one network: `edit` (from `LadderModel.prepare`) is applied by redo().
 
     When the change draws into the blank network at the end, a new blank one is appended (and
     removed again on undo), so there is always room for the next network.
     """
 
-    def __init__(self, model: LadderModel, index: int, edit: Edit, text: str) -> None:
-        super().__init__(text)
+    def __init__(self, model: LadderModel, index: int, edit: Edit, name: StepName) -> None:
+        super().__init__(name)
         self._model = model
         self._index = index
         self._edit = edit  # redo() applies it and keeps the inverse for undo(), and so on
@@ -39,12 +38,12 @@ class NetworkEditCommand(QUndoCommand):
         self._edit = model.apply(self._index, self._edit)
 
 
-class NetworkListCommand(QUndoCommand):
+class NetworkListCommand(NamedCommand):
     """Insert or remove a whole network (delete network, paste network)."""
 
     def __init__(self, model: LadderModel, index: int, network: LadderNetwork | None,
-                 text: str) -> None:
-        super().__init__(text)
+                 name: StepName) -> None:
+        super().__init__(name)
         self._model = model
         self._index = index
         self._network = network  # None: remove the network at index

@@ -11,6 +11,7 @@ from PySide6.QtWidgets import QApplication
 
 from ladderworks.core import ladder as core
 from ladderworks.core.address import Address
+from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
 from ladderworks.core.il import Instruction
 from ladderworks.core.instructions import lookup
 from ladderworks.core.ladder import (
@@ -24,6 +25,7 @@ from ladderworks.core.ladder import (
 )
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
+from ladderworks.gui.editor.step_name import StepName, editor_step
 from ladderworks.gui.function_dialog import FunctionDialog
 from ladderworks.gui.tools import Tool
 
@@ -59,15 +61,15 @@ class CursorEdits:
         def open_comment_editor(self, index: int, line: int) -> None: ...
 
     def run_edit(self, index: int, operation: Callable[[LadderNetwork], object],
-                 text: str) -> bool:
-        """Make a core edit on network `index` as an undo command; False (and a message)
-        when the core refuses it."""
+                 name: StepName) -> bool:
+        """Make a core edit on network `index` as an undo command named `name`; False (and a
+        message) when the core refuses it."""
         try:
             edit = self.model.prepare(index, operation)
         except EditRefused as refused:
             self.message.emit(diagnostic_text(refused.diagnostic))
             return False
-        self.undo_stack.push(NetworkEditCommand(self.model, index, edit, text))
+        self.undo_stack.push(NetworkEditCommand(self.model, index, edit, name))
         return True
 
     def assign_address_at_cursor(self, address: Address) -> bool:
@@ -81,30 +83,38 @@ class CursorEdits:
         (r, c), _element = found
         text = str(address)
         return self.run_edit(index, lambda n: core.set_address(n, r, c, text),
-                             translate("LadderEditor", "Address {0}").format(text))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), text))
 
     def place_bit(self, index: int, row: int, col: int, element: Contact | Coil) -> None:
         """Place a contact or coil and open its address; on one of the same kind, turn it
         into `element`'s kind (NOT, SET, RST) and open its address. A coil goes to the coil
-        column; a placed element is wired to its neighbours (core `place_wired`)."""
+        column; a placed element is wired to its neighbours (core `place_wired`). The cursor
+        goes where the element is."""
         row, col = core.target_cell(self.networks[index], row, col, element)
         found = self.networks[index].element_at(row, col)
+        self.cursor_to(index, *(found[0] if found is not None else (row, col)))
         if found is not None and type(found[1]) is type(element):
             old = found[1]
             assert isinstance(old, Contact | Coil)
             if isinstance(old, Coil) and isinstance(element, Coil) and old.write != element.write:
                 kind = replace(old, negated=element.negated, write=element.write)
                 self.run_edit(index, lambda n: core.replace_element(n, row, col, kind),
-                              translate("LadderEditor", "Place coil"))
+                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place coil")))
             elif old.negated != element.negated:
                 self.run_edit(index, lambda n: core.invert(n, row, col),
-                              translate("LadderEditor", "NOT"))
+                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "NOT")))
             self.open_address_editor(index, found[0][0], found[0][1])
             return
-        text = (translate("LadderEditor", "Place contact") if isinstance(element, Contact)
-                else translate("LadderEditor", "Place coil"))
+        text = (editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place contact"))
+                if isinstance(element, Contact)
+                else editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place coil")))
         if self.run_edit(index, lambda n: core.place_wired(n, row, col, element), text):
             self.open_address_editor(index, row, col)
+
+    def cursor_to(self, index: int, row: int, col: int) -> None:
+        """Put the cursor on the cell where an edit put an element (no scrolling)."""
+        self.cursor_cell = (index, row, col)
+        self._place_overlays()
 
     def add_parallel(self, index: int, row: int, col: int) -> None:
         """OR: a parallel contact or coil below the one at a cell, its address opened."""
@@ -115,7 +125,7 @@ class CursorEdits:
             return
         (row, col), _old = found
         if self.run_edit(index, lambda n: core.add_parallel(n, row, col),
-                         translate("LadderEditor", "OR")):
+                         editor_step(QT_TRANSLATE_NOOP("LadderEditor", "OR"))):
             self.open_address_editor(index, row + 1, col)
 
     def select_element(self, index: int, row: int, col: int) -> None:
@@ -160,18 +170,22 @@ class CursorEdits:
                 return
             if box is None:
                 element = FunctionBox.new(spec.name, instruction.params, dialog.comment_text)
-                self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
-                              translate("LadderEditor", "Place {0}").format(spec.name))
+                if self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
+                                 editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
+                                             spec.name)):
+                    self.cursor_to(index, *core.target_cell(self.networks[index], row, col,
+                                                            element))
             else:
-                title = translate("LadderEditor", "Parameters of {0}").format(spec.name)
-                self.undo_stack.beginMacro(title)
-                self.run_edit(index, lambda n: core.set_params(n, row, col, instruction.params),
-                              title)
-                if dialog.comment_text != box.comment:
-                    self.run_edit(index,
-                                  lambda n: core.set_comment(n, row, col, dialog.comment_text),
-                                  translate("LadderEditor", "Comment"))
-                self.undo_stack.endMacro()
+                new_comment = dialog.comment_text != box.comment
+
+                def params_and_comment(network: LadderNetwork) -> None:
+                    core.set_params(network, row, col, instruction.params)
+                    if new_comment:
+                        core.set_comment(network, row, col, dialog.comment_text)
+
+                self.run_edit(index, params_and_comment,  # one step: parameters and comment
+                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"),
+                                          spec.name))
             grid.setFocus()
 
         dialog.accepted.connect(done)
@@ -204,19 +218,20 @@ class CursorEdits:
         """DEL: delete the selection or the element at the cursor."""
         if self.selection is not None:
             index, sel = self.selection
-            if self.run_edit(index, lambda n: core.cut(n, sel), translate("LadderEditor",
-                                                                          "Delete")):
+            if self.run_edit(index, lambda n: core.cut(n, sel),
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete"))):
                 self.selection = None
                 self._place_overlays()
             return
         index, row, col = self.cursor_cell
         self.run_edit(index, lambda n: core.delete(n, row, col),
-                      translate("LadderEditor", "Delete"))
+                      editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete")))
 
     def invert_at_cursor(self) -> None:
         """NOT on the element at the cursor."""
         index, row, col = self._cursor_target()
-        self.run_edit(index, lambda n: core.invert(n, row, col), translate("LadderEditor", "NOT"))
+        self.run_edit(index, lambda n: core.invert(n, row, col),
+                      editor_step(QT_TRANSLATE_NOOP("LadderEditor", "NOT")))
 
     def or_at_cursor(self) -> None:
         """OR on the element at the cursor (a parallel contact or coil)."""
@@ -227,13 +242,13 @@ class CursorEdits:
         """Insert an empty row before the cursor's row."""
         index, row, _ = self.cursor_cell
         self.run_edit(index, lambda n: core.insert_row(n, row),
-                      translate("LadderEditor", "Insert row"))
+                      editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Insert row")))
 
     def insert_row_after(self) -> None:
         """Insert an empty row after the cursor's row."""
         index, row, _ = self.cursor_cell
         self.run_edit(index, lambda n: core.insert_row(n, row, after=True),
-                      translate("LadderEditor", "Insert row"))
+                      editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Insert row")))
 
     def copy(self) -> None:
         """Copy the selection (or the element at the cursor) to the clipboard as grid text."""
@@ -244,7 +259,8 @@ class CursorEdits:
         """Cut the selection (or the element at the cursor)."""
         index, sel = self._selection_or_cursor()
         text = core.copy_text(self.networks[index], sel)
-        if self.run_edit(index, lambda n: core.cut(n, sel), translate("LadderEditor", "Cut")):
+        if self.run_edit(index, lambda n: core.cut(n, sel),
+                         editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Cut"))):
             QApplication.clipboard().setText(text)
             self.selection = None
             self._place_overlays()
@@ -256,15 +272,16 @@ class CursorEdits:
             return
         index, row, col = self.cursor_cell
         self.run_edit(index, lambda n: core.paste(n, row, col, text),
-                      translate("LadderEditor", "Paste"))
+                      editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Paste")))
 
     def delete_network(self) -> None:
         """Delete the network at the cursor."""
         index = self.cursor_cell[0]
         if index >= len(self.networks) - 1:
             return
-        self.undo_stack.push(NetworkListCommand(self.model, index, None,
-                                                translate("LadderEditor", "Delete network")))
+        self.undo_stack.push(NetworkListCommand(
+            self.model, index, None,
+            editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete network"))))
 
     def _selection_or_cursor(self) -> tuple[int, Selection]:
         if self.selection is not None:

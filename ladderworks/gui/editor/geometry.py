@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import bisect
+from collections.abc import Callable
 from dataclasses import dataclass
 from enum import Enum
 
@@ -67,21 +68,35 @@ def row_metrics() -> RowMetrics:
 
 
 def cell_h() -> float:
-    """Height of a grid row (it grows with the names shown under the elements)."""
+    """Height of the tallest grid row of the current display (a network whose elements have
+    no comment to show has shorter rows: `network_rows`)."""
     return ROW_METRICS[_shown[0]].height
 
 
 def wire_y() -> float:
-    """Y of the wire inside a row."""
+    """Y of the wire inside the tallest row of the current display."""
     return ROW_METRICS[_shown[0]].wire
 
 
-def network_height(network: LadderNetwork) -> float:
+# Whether a network has an element comment to show (the views know the program's symbols).
+CommentCheck = Callable[[LadderNetwork], bool]
+
+
+def network_rows(network: LadderNetwork, commented: CommentCheck | None) -> RowMetrics:
+    """The rows of one network: with comments shown, a network none of whose elements has a
+    comment gets the shorter address-and-symbol rows (`commented` None: every network has)."""
+    display = _shown[0]
+    if display is NameDisplay.COMMENT and commented is not None and not commented(network):
+        return ROW_METRICS[NameDisplay.SYMBOL]
+    return ROW_METRICS[display]
+
+
+def network_height(network: LadderNetwork, rows: RowMetrics) -> float:
     """Height of a network's drawing: comment lines plus its rows (or its kept listing)."""
     comments = len(network.comments) * COMMENT_H
     if network.listing is not None:
         return comments + max(len(network.listing), 1) * LISTING_LINE_H + 8
-    return comments + (network.rows + SPARE_ROWS) * cell_h() + GAP
+    return comments + (network.rows + SPARE_ROWS) * rows.height + GAP
 
 
 def network_width(network: LadderNetwork) -> float:
@@ -94,20 +109,23 @@ def grid_top(network: LadderNetwork) -> float:
     return len(network.comments) * COMMENT_H
 
 
-def cell_origin(network: LadderNetwork, row: int, col: int) -> tuple[float, float]:
-    """Top-left corner of a cell inside the network's item."""
-    return LEFT + col * CELL_W, grid_top(network) + row * cell_h()
+def cell_origin(network: LadderNetwork, row: int, col: int,
+                rows: RowMetrics) -> tuple[float, float]:
+    """Top-left corner of a cell inside the network's item (its rows are `rows`)."""
+    return LEFT + col * CELL_W, grid_top(network) + row * rows.height
 
 
-def cell_centre(network: LadderNetwork, row: int, col: int) -> tuple[float, float]:
+def cell_centre(network: LadderNetwork, row: int, col: int,
+                rows: RowMetrics) -> tuple[float, float]:
     """Centre of a cell inside the network's item."""
-    x, y = cell_origin(network, row, col)
-    return x + CELL_W / 2, y + cell_h() / 2
+    x, y = cell_origin(network, row, col, rows)
+    return x + CELL_W / 2, y + rows.height / 2
 
 
-def node_point(network: LadderNetwork, row: int, node: int) -> tuple[float, float]:
+def node_point(network: LadderNetwork, row: int, node: int,
+               rows: RowMetrics) -> tuple[float, float]:
     """A grid node (left edge of column `node`, middle of `row`) inside the network's item."""
-    return LEFT + node * CELL_W, grid_top(network) + row * cell_h() + wire_y()
+    return LEFT + node * CELL_W, grid_top(network) + row * rows.height + rows.wire
 
 
 @dataclass(frozen=True, slots=True)
@@ -122,21 +140,46 @@ class Hit:
 
 
 class Layout:
-    """The vertical stacking of networks; maps scene points to cells."""
+    """The vertical stacking of networks and each one's rows; maps scene points to cells.
+    `commented` tells which networks have element comments to show (their rows are taller
+    when comments are shown)."""
 
-    def __init__(self) -> None:
+    def __init__(self, commented: CommentCheck | None = None) -> None:
+        self.commented = commented
         self.tops: list[float] = []
         self.heights: list[float] = []
+        self.rows: list[RowMetrics] = []
+        # each network's rows, worked out once (a real program has 10,000 networks)
+        self._known: dict[int, tuple[LadderNetwork, RowMetrics]] = {}
+
+    def forget(self, network: LadderNetwork | None = None) -> None:
+        """Work out `network`'s rows again (it changed), or every network's (None: the name
+        display, the symbols or the language changed)."""
+        if network is None:
+            self._known.clear()
+        else:
+            self._known.pop(id(network), None)
+
+    def _rows(self, network: LadderNetwork) -> RowMetrics:
+        known = self._known.get(id(network))
+        if known is not None and known[0] is network:
+            return known[1]
+        rows = network_rows(network, self.commented)
+        self._known[id(network)] = (network, rows)
+        return rows
 
     def rebuild(self, networks: list[LadderNetwork], start: int = 0) -> None:
-        """Recompute tops and heights from network `start` on."""
+        """Recompute rows, tops and heights from network `start` on."""
         del self.tops[start:]
         del self.heights[start:]
+        del self.rows[start:]
         y = self.tops[-1] + self.heights[-1] if self.tops else 0.0
         for network in networks[start:]:
-            height = network_height(network)
+            rows = self._rows(network)
+            height = network_height(network, rows)
             self.tops.append(y)
             self.heights.append(height)
+            self.rows.append(rows)
             y += height
 
     def total_height(self) -> float:
@@ -162,6 +205,6 @@ class Layout:
         node = min(max(node, 0), network.columns)
         if local_y < top:
             return Hit(index, 0, col, node, int(local_y // COMMENT_H))
-        row = int((local_y - top) // cell_h())
+        row = int((local_y - top) // self.rows[index].height)
         row = min(max(row, 0), network.rows - 1 + SPARE_ROWS)
         return Hit(index, row, col, node)

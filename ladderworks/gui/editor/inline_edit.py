@@ -9,10 +9,11 @@ from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QLabel, QLineEdit
 
 from ladderworks.core import ladder as core
-from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.ladder import Coil, Contact, EditRefused
+from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP, Diagnostic
+from ladderworks.core.ladder import Coil, Contact, EditRefused, LadderNetwork
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.geometry import CELL_W, COMMENT_H, LEFT, cell_origin
+from ladderworks.gui.editor.step_name import editor_step
 
 if TYPE_CHECKING:
     from ladderworks.gui.editor.view import LadderEditor
@@ -49,7 +50,7 @@ class InlineEdit(QObject):
         text = str(element.address) if element.address is not None else ""
         if element.comment:
             text += "  // " + element.comment
-        x, y = cell_origin(net, row, col)
+        x, y = cell_origin(net, row, col, self.editor.layout_.rows[index])
         rect = QRectF(x - 10, self.editor.layout_.tops[index] + y, CELL_W + 60, 24)
         self._open(("address", index, row, col), text, rect,
                    translate("LadderEditor", "Address or symbol, e.g. X2.1 (// comment)"))
@@ -123,14 +124,16 @@ class InlineEdit(QObject):
         assert found is not None
         element = found[1]
         assert isinstance(element, Contact | Coil)
-        stack = editor.undo_stack
-        stack.beginMacro(translate("LadderEditor", "Address {0}").format(address_text))
-        editor.run_edit(index, lambda n: core.set_address(n, row, col, address_text),
-                        translate("LadderEditor", "Address"))
-        if comment != element.comment:
-            editor.run_edit(index, lambda n: core.set_comment(n, row, col, comment),
-                            translate("LadderEditor", "Comment"))
-        stack.endMacro()
+        new_comment = comment != element.comment
+
+        def address_and_comment(network: LadderNetwork) -> None:
+            core.set_address(network, row, col, address_text)
+            if new_comment:
+                core.set_comment(network, row, col, comment)
+
+        editor.run_edit(index, address_and_comment,  # one step: the address and its comment
+                        editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"),
+                                    address_text))
         self.close()
 
     def _commit_comment(self, index: int, line: int, text: str) -> None:
@@ -147,7 +150,7 @@ class InlineEdit(QObject):
             return
         self.close()
         self.editor.run_edit(index, lambda n: core.set_network_comments(n, lines),
-                             translate("LadderEditor", "Comment"))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Comment")))
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """ENTER in the line edit commits it, ESC cancels it."""

@@ -16,6 +16,7 @@ from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
 from ladderworks.core.instructions import Write
 from ladderworks.core.ladder import Coil, Contact
 from ladderworks.gui.editor.geometry import Hit, node_point
+from ladderworks.gui.editor.step_name import editor_step
 from ladderworks.gui.tools import Tool, icon
 
 if TYPE_CHECKING:
@@ -247,7 +248,7 @@ class InvertInteraction(Interaction):
         """Invert the element at the cell."""
         row, col = hit.row, hit.col
         self.editor.run_edit(hit.network, lambda n: core.invert(n, row, col),
-                             translate("LadderEditor", "NOT"))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "NOT")))
 
 
 class OrInteraction(Interaction):
@@ -289,7 +290,8 @@ class LineInteraction(Interaction):
         index, row, node = hit.network, hit.row, hit.node
         if self.start is None or self.start[0] != index:
             self.start = (index, row, node)
-            x, y = node_point(self.editor.networks[index], row, node)
+            x, y = node_point(self.editor.networks[index], row, node,
+                              self.editor.layout_.rows[index])
             top = self.editor.layout_.tops[index]
             self.marker.setRect(QRectF(x - 4, top + y - 4, 8, 8))
             self.marker.show()
@@ -300,7 +302,7 @@ class LineInteraction(Interaction):
         if (row1, node1) == (row, node):
             return
         self.editor.run_edit(index, lambda n: core.draw_line(n, (row1, node1), (row, node)),
-                             translate("LadderEditor", "Line"))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Line")))
 
     def cancel(self) -> None:
         """Forget the first point."""
@@ -350,7 +352,7 @@ class DeleteInteraction(Interaction):
         """Delete the element at the cell."""
         row, col = hit.row, hit.col
         self.editor.run_edit(hit.network, lambda n: core.delete(n, row, col),
-                             translate("LadderEditor", "Delete"))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete")))
 
 
 class FunctionInteraction(Interaction):
@@ -384,7 +386,7 @@ class RowBeforeInteraction(Interaction):
         """Insert the row."""
         row, after = hit.row, self.after
         self.editor.run_edit(hit.network, lambda n: core.insert_row(n, row, after=after),
-                             translate("LadderEditor", "Insert row"))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Insert row")))
 
 
 class RowAfterInteraction(RowBeforeInteraction):

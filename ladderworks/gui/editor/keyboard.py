@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QPoint, Qt
 from PySide6.QtGui import QContextMenuEvent, QKeyEvent
 
-from ladderworks.gui.editor.geometry import SPARE_ROWS, cell_h, grid_top, wire_y
+from ladderworks.gui.editor.geometry import SPARE_ROWS, cell_h, grid_top
 
 if TYPE_CHECKING:
     from ladderworks.gui.editor.view import LadderEditor
@@ -61,11 +61,12 @@ class GridKeys:
         if down and index >= len(networks) - 2:
             editor.finish_loading()  # a large program: page on into the networks still pending
         page = max(editor.viewport().height() / max(editor.zoom(), 0.01) - cell_h(), cell_h())
-        y = tops[index] + grid_top(networks[index]) + row * cell_h() + wire_y()
+        rows = editor.layout_.rows
+        y = tops[index] + grid_top(networks[index]) + row * rows[index].height + rows[index].wire
         y += page if down else -page
         target = editor.layout_.network_at(y)
         net = networks[target]
-        local = int((y - tops[target] - grid_top(net)) // cell_h())
+        local = int((y - tops[target] - grid_top(net)) // rows[target].height)
         last_row = net.rows - 1 + SPARE_ROWS
         if target == index and local == row:  # at the first or last page: to its first/last row
             local = last_row if down else 0

@@ -6,7 +6,7 @@ from PySide6.QtCore import QRectF, Qt
 from PySide6.QtGui import QFont, QPainter
 from PySide6.QtWidgets import QStyleOptionGraphicsItem, QWidget
 
-from ladderworks.gui.editor.geometry import LEFT, grid_top, wire_y
+from ladderworks.gui.editor.geometry import LEFT, grid_top
 from ladderworks.gui.editor.network_item import RAIL, NetworkItem
 
 
@@ -24,6 +24,6 @@ class LabelledNetworkItem(NetworkItem):
         font.setPointSizeF(7)
         painter.setFont(font)
         painter.setPen(RAIL)
-        top = grid_top(self.network) + wire_y()
+        top = grid_top(self.network) + self.rows.wire
         painter.drawText(QRectF(0, top - 2, LEFT - 3, 14),
                          Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter, label)

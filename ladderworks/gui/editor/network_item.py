@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
 from PySide6.QtCore import QCoreApplication, QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPainter, QPen
 from PySide6.QtWidgets import QGraphicsItem, QStyleOptionGraphicsItem, QWidget
@@ -18,16 +16,19 @@ from ladderworks.gui.editor.geometry import (
     COMMENT_H,
     LEFT,
     LISTING_LINE_H,
-    cell_h,
     cell_origin,
     grid_top,
     name_display,
     network_height,
+    network_rows,
     network_width,
-    row_metrics,
-    wire_y,
 )
-from ladderworks.gui.editor.label_text import wrapped
+from ladderworks.gui.editor.label_text import (
+    CommentedAddresses,
+    SignalLookup,
+    shows_comment,
+    wrapped,
+)
 from ladderworks.gui.translation import instruction_label, ui_is_turkish
 
 INK = QColor("#1a1a1a")
@@ -38,9 +39,6 @@ ERROR = QColor("#d32f2f")
 BOX_FILL = QColor("#eef3fb")
 EMPTY_HINT = QColor("#9e9e9e")
 COMMENT_LINE_H = 12.0  # a wrapped comment line under an element
-
-# Describes an address for the drawing: (signal name, description) or None.
-SignalLookup = Callable[[object], tuple[str, str] | None]
 
 
 def _fonts() -> tuple[QFont, QFont, QFont]:
@@ -81,14 +79,20 @@ class NetworkItem(QGraphicsItem):
         self.open_ends: list[OpenEnd] = open_ends(network)  # breaks marked as the user draws
         # what is written with each element, by display and language (wrapping costs)
         self._label_cache: dict[tuple[object, ...], tuple[str, str, list[str]]] = {}
-        self._size = (network_width(network), network_height(network))
+        self.rows = network_rows(network, self.commented)
+        self._size = (network_width(network), network_height(network, self.rows))
         self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemUsesExtendedStyleOption, True)
 
+    def commented(self, network: LadderNetwork) -> bool:
+        """True when an element of `network` has a comment to show (taller rows)."""
+        return shows_comment(network, CommentedAddresses(self.describe))
+
     def refresh(self) -> None:
-        """The network changed (or the rows did): recompute the marks and size, repaint."""
+        """The network changed (or the rows did): recompute the marks, rows and size, repaint."""
         self.open_ends = open_ends(self.network)
         self._label_cache.clear()
-        size = (network_width(self.network), network_height(self.network))
+        self.rows = network_rows(self.network, self.commented)
+        size = (network_width(self.network), network_height(self.network, self.rows))
         if size != self._size:
             self.prepareGeometryChange()
             self._size = size
@@ -102,6 +106,7 @@ class NetworkItem(QGraphicsItem):
               widget: QWidget | None = None) -> None:
         """Draw the network."""
         net = self.network
+        rows = self.rows
         label_font, small_font, comment_font = _fonts()
         painter.setRenderHint(QPainter.RenderHint.Antialiasing, True)
         painter.setFont(comment_font)
@@ -112,13 +117,13 @@ class NetworkItem(QGraphicsItem):
         top = grid_top(net)
         painter.setFont(label_font)
         painter.setPen(EMPTY_HINT if self.is_new else RAIL)
-        painter.drawText(QRectF(0, top, LEFT - 8, wire_y()),
+        painter.drawText(QRectF(0, top, LEFT - 8, rows.wire),
                          Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter,
                          "+" if self.is_new else network_tag(self.number))
         if net.listing is not None:
             self._paint_listing(painter, top)
             return
-        bottom = top + net.rows * cell_h()
+        bottom = top + net.rows * rows.height
         right = LEFT + (net.columns + 1) * CELL_W
         rail = QPen(EMPTY_HINT if self.is_new else RAIL, 3)
         painter.setPen(rail)
@@ -134,16 +139,16 @@ class NetworkItem(QGraphicsItem):
         painter.setPen(ink)
         for row, node in net.links:
             x = LEFT + node * CELL_W
-            y1 = top + row * cell_h() + wire_y()
-            painter.drawLine(QPointF(x, y1), QPointF(x, y1 + cell_h()))
+            y1 = top + row * rows.height + rows.wire
+            painter.drawLine(QPointF(x, y1), QPointF(x, y1 + rows.height))
         exposed = option.exposedRect
         for (row, col), element in net.elements():
-            x, y = cell_origin(net, row, col)
-            if not exposed.intersects(QRectF(x, y, CELL_W * 2, cell_h() * 8)):
+            x, y = cell_origin(net, row, col, rows)
+            if not exposed.intersects(QRectF(x, y, CELL_W * 2, rows.height * 8)):
                 continue
             painter.setPen(ink)
             if isinstance(element, Wire):
-                painter.drawLine(QPointF(x, y + wire_y()), QPointF(x + CELL_W, y + wire_y()))
+                painter.drawLine(QPointF(x, y + rows.wire), QPointF(x + CELL_W, y + rows.wire))
             elif isinstance(element, Contact):
                 self._paint_contact(painter, element, x, y, label_font, small_font)
             elif isinstance(element, Coil):
@@ -154,17 +159,17 @@ class NetworkItem(QGraphicsItem):
             painter.setPen(QPen(ERROR, 2, Qt.PenStyle.DashLine))
             painter.setBrush(Qt.BrushStyle.NoBrush)
             for row, col in self.error_cells:
-                x, y = cell_origin(net, row, col)
-                painter.drawRect(QRectF(x + 2, y + 2, CELL_W - 4, cell_h() - 4))
+                x, y = cell_origin(net, row, col, rows)
+                painter.drawRect(QRectF(x + 2, y + 2, CELL_W - 4, rows.height - 4))
         if self.open_ends and not self.is_new:
             self._paint_open_ends(painter)
 
     def _paint_open_ends(self, painter: QPainter) -> None:
         """A red dashed gap across an empty cell where the circuit breaks, or a red bar and
         cross on the open side of an element."""
-        mid = wire_y()
+        mid = self.rows.wire
         for mark in self.open_ends:
-            x, y = cell_origin(self.network, *mark.cell)
+            x, y = cell_origin(self.network, *mark.cell, self.rows)
             if mark.gap:
                 painter.setPen(QPen(ERROR, 2, Qt.PenStyle.DashLine))
                 painter.drawLine(QPointF(x + 4, y + mid), QPointF(x + CELL_W - 4, y + mid))
@@ -180,7 +185,7 @@ class NetworkItem(QGraphicsItem):
         symbol is the program's (else the manual's signal name); the comment is the element's
         own, else the program's comment of the address, else the manual's text, wrapped to
         the cell in up to two lines."""
-        key = (element, name_display(), ui_is_turkish())
+        key = (element, name_display(), self.rows, ui_is_turkish())
         cached = self._label_cache.get(key)
         if cached is None:
             cached = self._label_cache[key] = self._label_lines(element)
@@ -188,7 +193,7 @@ class NetworkItem(QGraphicsItem):
 
     def _label_lines(self, element: Contact | Coil) -> tuple[str, str, list[str]]:
         address = str(element.address) if element.address is not None else "?"
-        rows = row_metrics()
+        rows = self.rows
         if not rows.symbol:
             return address, "", []
         described = self.describe(element.address) if element.address is not None else None
@@ -207,7 +212,7 @@ class NetworkItem(QGraphicsItem):
         painter.setFont(label_font)
         painter.setPen(INK if element.address is not None else ERROR)
         painter.drawText(QRectF(x, y + 1, CELL_W, 16), Qt.AlignmentFlag.AlignCenter, address)
-        below = y + row_metrics().wire + 12
+        below = y + self.rows.wire + 12
         if symbol:
             metrics = QFontMetricsF(small_font)
             painter.setFont(small_font)
@@ -224,7 +229,7 @@ class NetworkItem(QGraphicsItem):
 
     def _paint_contact(self, painter: QPainter, element: Contact, x: float, y: float,
                        label_font: QFont, small_font: QFont) -> None:
-        mid = y + wire_y()
+        mid = y + self.rows.wire
         left, right = x + CELL_W / 2 - 8, x + CELL_W / 2 + 8
         painter.drawLine(QPointF(x, mid), QPointF(left, mid))
         painter.drawLine(QPointF(right, mid), QPointF(x + CELL_W, mid))
@@ -236,7 +241,7 @@ class NetworkItem(QGraphicsItem):
 
     def _paint_coil(self, painter: QPainter, element: Coil, x: float, y: float, col: int,
                     label_font: QFont, small_font: QFont) -> None:
-        mid = y + wire_y()
+        mid = y + self.rows.wire
         left, right = x + CELL_W / 2 - 10, x + CELL_W / 2 + 10
         painter.drawLine(QPointF(x, mid), QPointF(left, mid))
         end = x + CELL_W if col >= self.network.columns else right + 6
@@ -253,8 +258,9 @@ class NetworkItem(QGraphicsItem):
 
     def _paint_box(self, painter: QPainter, box: FunctionBox, x: float, y: float,
                    label_font: QFont, small_font: QFont) -> None:
+        rows = self.rows
         width = box.width * CELL_W
-        height = box.height * cell_h()
+        height = box.height * rows.height
         rect = QRectF(x + 10, y + 6, width - 20, height - 12)
         painter.setBrush(BOX_FILL)
         painter.drawRect(rect)
@@ -262,11 +268,11 @@ class NetworkItem(QGraphicsItem):
         painter.setFont(small_font)
         for index, name in enumerate(box.inputs):
             pin = box.pins[index] if index < len(box.pins) else index
-            py = y + pin * cell_h() + wire_y()
+            py = y + pin * rows.height + rows.wire
             painter.drawLine(QPointF(x, py), QPointF(x + 10, py))
             painter.drawText(QRectF(x + 12, py - 7, 60, 14), Qt.AlignmentFlag.AlignLeft, name)
         if box.has_output:
-            py = y + wire_y()
+            py = y + rows.wire
             painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
             painter.drawText(QRectF(x + width - 40, py - 7, 28, 14),
                              Qt.AlignmentFlag.AlignRight, "W1")
@@ -281,7 +287,6 @@ class NetworkItem(QGraphicsItem):
                              Qt.AlignmentFlag.AlignHCenter,
                              metrics.elidedText(params, Qt.TextElideMode.ElideRight,
                                                 rect.width() - 8))
-        rows = row_metrics()
         if box.comment and rows.symbol:
             pen = painter.pen()
             painter.setPen(NAME)

@@ -31,14 +31,17 @@ from ladderworks.gui.editor.geometry import (
     SPARE_ROWS,
     Hit,
     Layout,
+    NameDisplay,
     cell_centre,
     cell_h,
     cell_origin,
+    name_display,
     node_point,
 )
 from ladderworks.gui.editor.inline_edit import InlineEdit
 from ladderworks.gui.editor.interactions import BY_KEY, BY_TOOL, Interaction, SelectInteraction
 from ladderworks.gui.editor.keyboard import GridKeys
+from ladderworks.gui.editor.label_text import CommentedAddresses, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.editor.lazy_items import LazyItems
@@ -65,6 +68,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
     message = Signal(str)
     zoom_changed = Signal(float)  # the new zoom factor (the status bar shows it)
     drawing_changed = Signal()
+    relaid_out = Signal()  # every network's rows were worked out again (View › Element names)
 
     def __init__(self, model: LadderModel, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -79,7 +83,8 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         self.setMouseTracking(True)
         self.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
         self.network_items = LazyItems(self._make_item)  # made when shown (a real program: 10,000+)
-        self.layout_ = Layout()
+        self.comments = CommentedAddresses(self.describe_address)  # asked once per address
+        self.layout_ = Layout(self.commented)
         self.function_name = "TMR"
         self.cursor_cell: tuple[int, int, int] = (0, 0, 0)  # network, row, col
         self.selection: tuple[int, Selection] | None = None
@@ -151,7 +156,8 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         for _index, item in self.network_items.made():
             self._scene.removeItem(item)
         self.network_items.reset(len(self.networks))
-        self.layout_ = Layout()
+        self.comments.forget()  # another program: other symbols
+        self.layout_ = Layout(self.commented)
         self.layout_.rebuild(self.networks)
         self.selection = None
         self.interaction.cancel()
@@ -175,6 +181,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         self._renumber(max(index - 1, 0))
 
     def _on_changed(self, index: int) -> None:
+        self.layout_.forget(self.networks[index])  # its rows may change (a comment typed)
         self.network_items[index].error_cells = set()
         self.network_items[index].refresh()
         self._relayout(index)
@@ -185,6 +192,8 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         if not indices:
             return
         changed = set(indices)
+        for index in changed:
+            self.layout_.forget(self.networks[index])
         for index, item in self.network_items.made(min(changed)):
             if index in changed:
                 item.error_cells = set()
@@ -219,6 +228,10 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         """(symbol, comment) of the program, else (signal name, description) of the manual."""
         return name_and_text(address, self.model.symbols)
 
+    def commented(self, network: LadderNetwork) -> bool:
+        """True when an element of `network` has a comment to show (its rows are taller)."""
+        return shows_comment(network, self.comments)
+
     def resolve_address(self, text: str) -> str:
         """The address a typed text names: itself, or the address of a program symbol."""
         try:
@@ -245,11 +258,15 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         self._scene.setSceneRect(QRectF(-4, -4, widest + 8, self.layout_.total_height() + 40))
 
     def relayout(self) -> None:
-        """The rows changed height (View › Element names): lay every network out again."""
+        """The rows changed height (View › Element names, the language): lay every network
+        out again."""
+        self.comments.forget()
+        self.layout_.forget()
         for _index, item in self.network_items.made():
             item.refresh()
         self._relayout(0)
         self.viewport().update()
+        self.relaid_out.emit()
 
     def mark_diagnostics(self, diagnostics: list[Diagnostic]) -> None:
         """Outline the cells the diagnostics point at."""
@@ -291,19 +308,20 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
 
     def cell_rect(self, index: int, row: int, col: int) -> QRectF:
         """A cell's rectangle in scene coordinates."""
-        x, y = cell_origin(self.networks[index], row, col)
-        return QRectF(x, self.layout_.tops[index] + y, CELL_W, cell_h())
+        rows = self.layout_.rows[index]
+        x, y = cell_origin(self.networks[index], row, col, rows)
+        return QRectF(x, self.layout_.tops[index] + y, CELL_W, rows.height)
 
     def cell_point(self, index: int, row: int, col: int) -> QPoint:
         """Viewport point at a cell's centre (scrolled into view first)."""
-        x, y = cell_centre(self.networks[index], row, col)
+        x, y = cell_centre(self.networks[index], row, col, self.layout_.rows[index])
         scene = QPointF(x, self.layout_.tops[index] + y)
         self.ensureVisible(QRectF(scene.x() - 60, scene.y() - 60, 120, 120), 10, 10)
         return self.mapFromScene(scene)
 
     def node_point(self, index: int, row: int, node: int) -> QPoint:
         """Viewport point at a grid node (left edge of column `node`, middle of `row`)."""
-        x, y = node_point(self.networks[index], row, node)
+        x, y = node_point(self.networks[index], row, node, self.layout_.rows[index])
         scene = QPointF(x, self.layout_.tops[index] + y)
         self.ensureVisible(QRectF(scene.x() - 60, scene.y() - 60, 120, 120), 10, 10)
         return self.mapFromScene(scene)
@@ -517,7 +535,10 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         super().keyPressEvent(event)
 
     def retranslate(self) -> None:
-        """Repaint the signal descriptions in the new language."""
+        """Repaint the signal descriptions in the new language (which networks have a comment
+        to show may change with it: lay out again when comments are shown)."""
+        if name_display() is NameDisplay.COMMENT:
+            self.relayout()
         self.viewport().update()
 
 
