@@ -191,3 +191,27 @@ def test_a_long_status_ends_in_an_ellipsis_with_the_whole_text_as_tooltip(
     assert label.shown_text().endswith("…")
     assert label.fontMetrics().horizontalAdvance(label.shown_text()) <= label.width()
     window.set_language("en")
+
+
+def test_a_long_status_leaves_room_for_the_compile_message(window: MainWindow,
+                                                           qtbot: QtBot, tmp_path) -> None:
+    """The cell text takes at most 60 % of the status bar: F9's result stays readable on the
+    left even with a long comment under the cursor."""
+    window.set_language("tr")
+    on_the_panel(window, qtbot)
+    path = tmp_path / "long.LAD"
+    comment = "ACİL STOP BUTONU BASILI DEĞİL VE KAPI KİLİTLİ İSE HAREKETE İZİN VERİLİR " * 3
+    path.write_text(f"%@2-C\nX0.0   UZUN_SEMBOL  {comment}\n%\n%@3\nN00001:\n"
+                    "RD X0.0\nWRT Y0.0\n%\n", "utf-8")
+    assert window.load(path)
+    window.editor.move_cursor(0, 0, 0)
+    window.actions_by_name["action_compile"].trigger()
+    bar = window.statusBar()
+    message = bar.currentMessage()
+    assert message.startswith("Derleme bitti")
+    label = window.cell_label
+    qtbot.waitUntil(lambda: label.geometry().left() > 0)
+    room = label.geometry().left()
+    assert room >= bar.width() * 0.35
+    assert room >= bar.fontMetrics().horizontalAdvance(message)
+    window.set_language("en")
