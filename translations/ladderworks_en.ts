@@ -107,77 +107,77 @@
 <context>
     <name>BitDisplay</name>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="258"/>
         <source>Forced to {0}</source>
         <translation>Forced to {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="260"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="261"/>
         <source>Click: force to the other value; right-click: force menu</source>
         <translation>Click: force to the other value; right-click: force menu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="279"/>
         <source>Load a program to force inputs</source>
         <translation>Load a program to force inputs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="295"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="296"/>
         <source>Force to 1</source>
         <translation>Force to 1</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="301"/>
         <source>Force to 0</source>
         <translation>Force to 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="305"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="306"/>
         <source>Release the force</source>
         <translation>Release the force</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="319"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="320"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="319"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="320"/>
         <source>Stopped</source>
         <translation>Stopped</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="326"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="327"/>
         <source>PLC bit display</source>
         <translation>PLC bit display</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="327"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="329"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="329"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="330"/>
         <source>Byte</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="330"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="331"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="331"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="332"/>
         <source>Dec</source>
         <translation>Dec</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="333"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="334"/>
         <source>e.g. X12</source>
         <translation>e.g. X12</translation>
     </message>
@@ -275,47 +275,47 @@
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="242"/>
         <source>All addresses — uses: {0}</source>
         <translation>All addresses — uses: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="252"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="260"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
         <source>{0} is not used in the program</source>
         <translation>{0} is not used in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="266"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — uses: {1} (read: {2}, written: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="281"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="286"/>
         <source>Cross reference</source>
         <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="292"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Address or symbol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="288"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="293"/>
         <source>e.g. X21.7, R100, ESKIP</source>
         <translation>e.g. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="284"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="289"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Cross &amp;reference of this address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="285"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="290"/>
         <source>List every place the program reads and writes the address</source>
         <translation>List every place the program reads and writes the address</translation>
     </message>
@@ -664,186 +664,191 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="145"/>
+        <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
+        <translation>coil {address} is written by WRT and by SET/RST (also in network {other})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="160"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="158"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="172"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="184"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="196"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="207"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
@@ -1124,17 +1129,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="138"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="145"/>
         <source>No reference entry for this instruction.</source>
         <translation>No reference entry for this instruction.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="150"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="157"/>
         <source>Instruction reference</source>
         <translation>Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="151"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="158"/>
         <source>Search, e.g. TMR</source>
         <translation>Search, e.g. TMR</translation>
     </message>
@@ -1251,7 +1256,7 @@
         <translation>open circuit here: draw a wire or an element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="61"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="66"/>
         <source>N{0}</source>
         <translation>N{0}</translation>
     </message>
@@ -1471,29 +1476,29 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="186"/>
+        <location filename="../ladderworks/gui/main_window.py" line="189"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="384"/>
+        <location filename="../ladderworks/gui/main_window.py" line="393"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="390"/>
+        <location filename="../ladderworks/gui/main_window.py" line="399"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="404"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="429"/>
-        <location filename="../ladderworks/gui/main_window.py" line="251"/>
-        <location filename="../ladderworks/gui/main_window.py" line="391"/>
+        <location filename="../ladderworks/gui/main_window.py" line="254"/>
+        <location filename="../ladderworks/gui/main_window.py" line="400"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -1632,32 +1637,32 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="354"/>
+        <location filename="../ladderworks/gui/main_window.py" line="363"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="370"/>
+        <location filename="../ladderworks/gui/main_window.py" line="379"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="421"/>
+        <location filename="../ladderworks/gui/main_window.py" line="430"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="424"/>
+        <location filename="../ladderworks/gui/main_window.py" line="433"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="456"/>
+        <location filename="../ladderworks/gui/main_window.py" line="465"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="457"/>
+        <location filename="../ladderworks/gui/main_window.py" line="466"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -1989,128 +1994,128 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="146"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC CONTROL SCREEN</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="134"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="148"/>
         <source>Open .MOD…</source>
         <translation>Open .MOD…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="135"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="149"/>
         <source>Take the console&apos;s program</source>
         <translation>Take the console&apos;s program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="136"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
         <source>Compile</source>
         <translation>Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="137"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="300"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="138"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="161"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="175"/>
         <source>Program loaded from the console</source>
         <translation>Program loaded from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="165"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
         <source>In the PLC: {0}</source>
         <translation>In the PLC: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="188"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="193"/>
         <source>Opened {0}</source>
         <translation>Opened {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="185"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="199"/>
         <source>Open mnemonic program</source>
         <translation>Open mnemonic program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="200"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="208"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>The console&apos;s program cannot be coded: see the error list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="198"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="212"/>
         <source>Program taken from the console</source>
         <translation>Program taken from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="233"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="247"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Compile failed: {0} error(s). {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="259"/>
         <source>Converting…</source>
         <translation>Converting…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="283"/>
         <source>the program on this screen</source>
         <translation>the program on this screen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="273"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="287"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Compile finished — {0} networks, {1} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="276"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="290"/>
         <source>({0} warning(s))</source>
         <translation>({0} warning(s))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="301"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="294"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="308"/>
         <source>Compile a program first</source>
         <translation>Compile a program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="315"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="329"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="318"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="332"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="324"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="338"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>
@@ -2118,88 +2123,88 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="195"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="188"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="196"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="197"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="198"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="199"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="200"/>
         <source>Why?</source>
         <translation>Why?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="201"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="196"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="204"/>
         <source>Back to live</source>
         <translation>Back to live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="197"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="205"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="241"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="141"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="142"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="257"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="251"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="259"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="300"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="336"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="344"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="346"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="354"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="355"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="363"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
@@ -2212,73 +2217,73 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
         <source>On-line mode</source>
         <translation>On-line mode</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
         <source>Make passive (disable)</source>
         <translation>Make passive (disable)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
         <source>Make active again</source>
         <translation>Make active again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
         <source>Force to 1</source>
         <translation>Force to 1</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
         <source>Force to 0</source>
         <translation>Force to 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
         <source>Release the force</source>
         <translation>Release the force</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="83"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="84"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="88"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="89"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>On-line needs a compiled program in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="93"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="94"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>The drawing is not the program in the PLC: compile it in the PLC control screen first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="102"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="103"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="151"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>On-line: the drawing shows the running PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="120"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="121"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: the drawing was changed; it is no longer the program the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="173"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="174"/>
         <source>Select a contact, coil or function first</source>
         <translation>Select a contact, coil or function first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="178"/>
         <source>This element has no op in the PLC program</source>
         <translation>This element has no op in the PLC program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="200"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="201"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Select a contact or coil to force its signal</translation>
     </message>
@@ -2455,77 +2460,77 @@
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="152"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="154"/>
         <source>Print preview</source>
         <translation>Print preview</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="169"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="172"/>
         <source>Export PDF</source>
         <translation>Export PDF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="170"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF files (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="181"/>
         <source>&amp;Print...</source>
         <translation>&amp;Print...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="179"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
         <source>Print pre&amp;view...</source>
         <translation>Print pre&amp;view...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="180"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
         <source>Export P&amp;DF...</source>
         <translation>Export P&amp;DF...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="186"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
         <source>Printing was cancelled or failed</source>
         <translation>Printing was cancelled or failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="188"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="191"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} pages written to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="190"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="193"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} pages sent to the printer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="267"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="268"/>
         <source>Page {0} / {1}</source>
         <translation>Page {0} / {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="293"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="294"/>
         <source>Cross reference</source>
         <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="296"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="297"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="297"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="298"/>
         <source>Symbol</source>
         <translation>Symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="298"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="299"/>
         <source>Written in networks</source>
         <translation>Written in networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="299"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="300"/>
         <source>Read in networks</source>
         <translation>Read in networks</translation>
     </message>
@@ -2898,118 +2903,118 @@
 <context>
     <name>Scenario</name>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="88"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="90"/>
         <source>Run scenario</source>
         <translation>Run scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="89"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Scenario files (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="99"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="101"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="115"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="117"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="146"/>
         <source>passed</source>
         <translation>passed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="147"/>
         <source>FAILED</source>
         <translation>FAILED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="155"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: all {1} checks passed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="158"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {1} of {2} checks failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="190"/>
         <source>Save the recorded scenario</source>
         <translation>Save the recorded scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="198"/>
         <source>recorded in LadderWorks</source>
         <translation>recorded in LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="201"/>
         <source>Recording inputs and forces...</source>
         <translation>Recording inputs and forces...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="210"/>
         <source>Recorded {0} changes</source>
         <translation>Recorded {0} changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="211"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="218"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="221"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
         <source>PLC scenario</source>
         <translation>PLC scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="233"/>
         <source>Run scenario...</source>
         <translation>Run scenario...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="234"/>
         <source>Record scenario</source>
         <translation>Record scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="236"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="236"/>
         <source>Check</source>
         <translation>Check</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="237"/>
         <source>Expected</source>
         <translation>Expected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="237"/>
         <source>Got</source>
         <translation>Got</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="238"/>
         <source>Time (ms)</source>
         <translation>Time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="238"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
@@ -3070,147 +3075,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="157"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="176"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="188"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="200"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="346"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="347"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="360"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="361"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="364"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="372"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="373"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="370"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
         <source>Cannot write {0}</source>
         <translation>Cannot write {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="379"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="380"/>
         <source>Export time chart as CSV</source>
         <translation>Export time chart as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
         <source>Export time chart as PNG</source>
         <translation>Export time chart as PNG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="429"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="434"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="442"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="446"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="449"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="451"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>

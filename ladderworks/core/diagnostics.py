@@ -142,6 +142,9 @@ MESSAGES: dict[str, str] = {
     # program structure (levels, subprograms, labels)
     "coil-mixed": QT_TRANSLATE_NOOP(
         "Diagnostic", "coil {address} is written by WRT and by SET/RST (also on line {line})"),
+    "coil-mixed-network": QT_TRANSLATE_NOOP(  # the drawing compiled: no line, its network
+        "Diagnostic",
+        "coil {address} is written by WRT and by SET/RST (also in network {other})"),
     "label-in-range": QT_TRANSLATE_NOOP("Diagnostic", "LBL inside a JMP or COM range"),
     "label-missing": QT_TRANSLATE_NOOP(
         "Diagnostic", "no LBL L{label} where this jump can reach it"),

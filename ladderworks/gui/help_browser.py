@@ -5,7 +5,8 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtCore import QCoreApplication, QSize, Qt
+from PySide6.QtGui import QShowEvent
 from PySide6.QtWidgets import (
     QDialog,
     QHBoxLayout,
@@ -20,6 +21,7 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.instructions import ALL, InstructionSpec, lookup
 from ladderworks.gui.retranslate import Retranslating
+from ladderworks.gui.screen_fit import fit_to_screen, keep_on_screen
 from ladderworks.gui.translation import instruction_title, ui_is_turkish
 from ladderworks.paths import help_page
 
@@ -67,7 +69,7 @@ class InstructionHelp(Retranslating, QDialog):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("dialog_instruction_help")
-        self.resize(900, 600)
+        fit_to_screen(self, QSize(900, 600))
         self.filter = QLineEdit(self)
         self.filter.setObjectName("help_filter")
         self.filter.setClearButtonEnabled(True)
@@ -104,6 +106,11 @@ class InstructionHelp(Retranslating, QDialog):
         scroll = self.list.verticalScrollBar().sizeHint().width()
         self.list.setMinimumWidth(self.list.sizeHintForColumn(0) + scroll
                                   + 2 * self.list.frameWidth() + 8)
+
+    def showEvent(self, event: QShowEvent) -> None:
+        """Shown wholly on the screen, not centred half off it over a larger main window."""
+        super().showEvent(event)
+        keep_on_screen(self)
 
     def show_instruction(self, name: str) -> bool:
         """Select and show the entry of instruction `name`; False if there is none."""

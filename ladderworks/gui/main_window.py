@@ -25,6 +25,7 @@ from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step, questions
 from ladderworks.gui.actions_table import CAN_REDO, CAN_UNDO, CONTEXT_MENU, LADDER_SHOWN
 from ladderworks.gui.console_menus import Condition, ConsoleMenus
+from ladderworks.gui.dock_tabs import WholeDockTitles
 from ladderworks.gui.docks import cross_reference
 from ladderworks.gui.docks.plc_docks import build_plc_docks
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
@@ -33,6 +34,7 @@ from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.editor.name_menu import NameDisplayMenu
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.editor.zoom import FitWidth
+from ladderworks.gui.elided_label import ElidedLabel
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
 from ladderworks.gui.find_replace import FindReplaceDialog
@@ -104,6 +106,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
             self.recent_actions.append(action)
             self.menus.register(action)
         self._make_docks()
+        self.dock_titles = WholeDockTitles(self)  # tabbed docks: whole titles, tabs scroll
         self._status_text: Callable[[], str] | None = None
         self._make_status_bar()
         named = self.actions_by_name
@@ -172,7 +175,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.tool_palette.raise_()
 
     def _make_status_bar(self) -> None:
-        self.cell_label = QLabel(self)
+        self.cell_label = ElidedLabel(self)
         self.cell_label.setObjectName("status_cell")
         self.cell_label.setMinimumWidth(140)
         self.statusBar().addPermanentWidget(self.cell_label)
@@ -265,6 +268,10 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
     def _program_shown(self, program: Program) -> None:
         """A program is now shown: its symbols and messages go to the docks."""
         self.program_info = program
+        # the cell under the cursor of the program now shown, not the last one's
+        shown = self.editor.networks and not self.model.showing_text
+        self.cell_label.setText(self.editor.describe_cell(*self.editor.cursor_cell) if shown
+                                else "")
         self.signals_dock.set_symbols(program.symbols)
         self.plc_docks.session.set_symbols(program.symbols)
         self.program_opened.emit(program)
@@ -306,6 +313,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
 
     def _show_mode(self, mode: str) -> None:
         self.pages.setCurrentWidget(self.text_view if mode == Mode.TEXT else self.editor)
+        if mode == Mode.TEXT:
+            self.cell_label.setText("")  # no cell: the text view has its own cursor
 
     def show_as_text(self) -> None:
         """Show the program as instruction-list text."""

@@ -144,3 +144,18 @@ def test_turkish_texts(qtbot: QtBot, spindle: tuple[PlcSession, BitDisplayDock])
         assert "bilinmeyen alan" in dock.rows[4].error.text()
     finally:
         language.apply("en")
+
+
+def test_a_tall_dock_keeps_the_boxes_together_at_the_top(
+        qtbot: QtBot, spindle: tuple[PlcSession, BitDisplayDock]) -> None:
+    """On a large screen the dock is taller than its eight boxes: the room goes below them,
+    not between the header and the rows (they floated in the middle at 1920×1080)."""
+    _session, dock = spindle
+    dock.resize(520, 900)
+    first, second = dock.rows[0].edit, dock.rows[1].edit
+    qtbot.waitUntil(lambda: dock.height() == 900)
+    qtbot.wait(20)
+    assert second.y() - first.y() <= 2 * first.height()
+    assert first.y() - dock.address_header.y() <= 2 * first.height()
+    last = dock.rows[-1].edit
+    assert last.mapTo(dock, last.rect().bottomLeft()).y() < dock.height() // 2

@@ -96,3 +96,18 @@ def test_turkish_texts_of_the_one_path(window: MainWindow) -> None:
     assert message.startswith("Derleme bitti: ") and "PLC'ye yüklendi" in message
     assert "compile" not in message.lower()
     assert window.plc_docks.control.loaded.text() == "PLC'deki program: spindle_override.LAD"
+
+
+def test_a_coil_mixed_in_the_drawing_names_the_other_network(qtbot: QtBot, window: MainWindow,
+                                                               tmp_path) -> None:
+    """F9 compiles the drawing, which has no source lines: the warning about a coil written
+    by WRT and by SET names the network of the other write, not 'line 0'."""
+    path = tmp_path / "mixed.LAD"
+    path.write_text("%@3\nN00001:\nRD X0.0\nWRT Y0.0\nN00002:\nRD X0.1\nSET Y0.0\n%\n",
+                    "utf-8")
+    assert window.load(path)
+    window.actions_by_name["action_compile"].trigger()
+    tree = window.errors.tree
+    texts = [tree.topLevelItem(i).text(2) for i in range(tree.topLevelItemCount())]
+    assert texts == ["coil Y0.0 is written by WRT and by SET/RST (also in network 1)"]
+    assert tree.topLevelItem(0).text(1).startswith("network 2")

@@ -167,3 +167,22 @@ def test_the_dock_speaks_turkish_after_a_live_switch(qtbot: QtBot, window: MainW
     assert dock.summary.text() == "R10.2 — kullanım: 4 (okuma: 2, yazma: 2)"
     assert window.actions_by_name["action_cross_reference"].text().startswith("Bu adresin")
     assert window.actions_by_name["action_export_pdf"].text() == "P&DF olarak dışa aktar..."
+
+
+def test_a_long_list_still_fits_its_columns(qtbot: QtBot, window: MainWindow,
+                                            tmp_path: Path) -> None:
+    """Every use of a large program: each title readable, the address column not 100 px of
+    mostly blank (the real S41 program lists 37,733 uses)."""
+    networks = "".join(f"N{n:05d}:\nRD         X0.1\nWRT        Y0.0\n" for n in range(1200))
+    path = tmp_path / "long.LAD"
+    path.write_text(f"%@3\n{networks}%\n", "utf-8")
+    assert window.load(path)
+    dock = window.cross_reference
+    assert isinstance(dock, CrossReferenceDock)
+    _ask(qtbot, dock, "")
+    assert dock.model.rowCount() == 2400
+    header = dock.table.horizontalHeader()
+    for column in range(dock.model.columnCount() - 1):  # the last one stretches
+        assert header.sectionSize(column) >= header.sectionSizeHint(column), column
+    address = dock.table.fontMetrics().horizontalAdvance("X0.1")
+    assert header.sectionSize(0) <= max(header.sectionSizeHint(0), address + 24)

@@ -106,3 +106,23 @@ def test_element_names_choice_restacks_the_diagnostic_view(qtbot: QtBot,
                                   strict=True):
         assert item.pos().y() == overlay.pos().y() == top  # the live power stays on its rung
         assert item.boundingRect() == overlay.boundingRect()
+
+
+def test_a_long_state_does_not_widen_the_dock(qtbot: QtBot, window: MainWindow) -> None:
+    """The state (RUNNING — scan N, PAST — scan N at T ms) grows with the run; in Turkish on
+    a long run it must not push the dock, and the ladder beside it, wider."""
+    from dataclasses import replace
+
+    window.set_language("tr")
+    docks = loaded(window, TIMER)
+    dock = docks.diagnostic
+    docks.session.run_scans(3)
+    qtbot.waitUntil(lambda: dock.state.text() != "")
+    narrow = dock.minimumSizeHint().width()
+    assert narrow <= 520, narrow
+    dock.show_past(replace(docks.session.snapshot(), scan_count=12345678, now_ms=98765432))
+    assert "12345678" in dock.state.text()
+    assert dock.minimumSizeHint().width() <= 520
+    assert dock.state.isVisible()
+    dock.back_to_live()
+    window.set_language("en")

@@ -72,3 +72,15 @@ def test_turkish_ui_shows_the_turkish_reference(window: MainWindow, qtbot: QtBot
     with qtbot.waitSignal(window.language_changed):
         window.actions_by_name["action_language_en"].trigger()
     assert "TMR — Timer" in help_window.browser.toPlainText()  # retranslated live
+
+
+def test_the_help_window_fits_the_screen(window: MainWindow, qtbot: QtBot) -> None:
+    """The 900×600 window is smaller on a screen without the room (a 1024×600 panel, the
+    test platform's 800-px screen), with its list of names still whole."""
+    help_window = window.show_instruction_help("TMR")
+    qtbot.waitUntil(help_window.isVisible)
+    room = help_window.screen().availableGeometry()
+    assert room.contains(help_window.frameGeometry()), (room, help_window.frameGeometry())
+    assert help_window.height() < room.height()  # the title bar has room above it
+    assert help_window.list.width() >= help_window.list.minimumWidth()
+    assert help_window.browser.width() >= 200

@@ -108,6 +108,24 @@ def test_open_an_example_shows_it_as_ladder(window: MainWindow) -> None:
     assert window.recent_actions[0].text() == str(EXAMPLES / "spindle_override.LAD")
 
 
+def test_the_status_bar_describes_the_program_just_opened(window: MainWindow,
+                                                          tmp_path: Path) -> None:
+    """The cell under the cursor is the new program's, not the one the last program had
+    there; a file shown as text names no cell."""
+    assert window.load(EXAMPLES / "spindle_override.LAD")
+    window.editor.move_cursor(1, 0, 0)
+    assert "X2.1" in window.cell_label.text()
+    assert window.load(EXAMPLES / "timer_relay.LAD")
+    assert "X2.1" not in window.cell_label.text()
+    assert window.cell_label.text() == window.editor.describe_cell(
+        *window.editor.cursor_cell)
+    window.editor.move_cursor(0, 0, 0)
+    assert "R1.4" in window.cell_label.text()
+    broken = tmp_path / "broken.LAD"
+    broken.write_text(BROKEN, encoding="utf-8")
+    assert window.load(broken)
+    assert window.cell_label.text() == ""
+
 def test_a_file_with_errors_opens_as_text_and_is_never_overwritten(
         window: MainWindow, tmp_path: Path, qtbot: QtBot) -> None:
     broken = tmp_path / "broken.LAD"

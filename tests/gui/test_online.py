@@ -85,3 +85,36 @@ def test_editing_takes_the_view_off_line(qtbot: QtBot, window: MainWindow) -> No
     docks.online.actions["action_plc_online"].trigger()  # the drawing differs now
     assert not docks.online.online
     assert "not the program in the PLC" in messages[-1]
+
+
+def test_the_release_buttons_are_in_view_in_a_narrow_dock(qtbot: QtBot) -> None:
+    """The force list in its default place on a 1024×600 panel (some 290 px, in Turkish): each
+    row's Release button is in view; the signal column gives way (its text elided)."""
+    from ladderworks.core.address import parse_address
+    from ladderworks.gui.docks.force_list import ForceListDock
+    from ladderworks.gui.translation import UiLanguage
+    from tests.gui.plc_examples import running_session
+
+    language = UiLanguage()
+    language.apply("tr")
+    session = running_session("spindle_override.LAD")
+    try:
+        dock = ForceListDock(session)
+        qtbot.addWidget(dock)
+        dock.resize(290, 240)
+        dock.show()
+        qtbot.waitExposed(dock)
+        session.force(parse_address("X2.1"), 1)
+        session.force(parse_address("G30.0"), 0)
+        table = dock.table
+        qtbot.waitUntil(lambda: table.rowCount() == 2)
+        for row in range(2):
+            button = table.cellWidget(row, 3)
+            right = button.mapTo(table.viewport(), button.rect().topRight()).x()
+            qtbot.waitUntil(lambda b=button: b.isVisible())
+            assert 0 < right <= table.viewport().width(), (right, table.viewport().width())
+            assert button.width() >= button.fontMetrics().horizontalAdvance(button.text())
+        assert table.columnWidth(0) >= table.fontMetrics().horizontalAdvance("ZORLANMIŞ")
+    finally:
+        language.apply("en")
+        session.stop()

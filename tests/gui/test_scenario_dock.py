@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QMenu
 from pytestqt.qtbot import QtBot
 
@@ -90,3 +91,45 @@ def test_plc_menu_has_run_and_record(window: MainWindow) -> None:
     names = [action.objectName() for action in menu.actions()]
     assert RUN in names and RECORD in names
     assert isinstance(window.plc_docks.others["scenario"], ScenarioDock)
+
+
+def test_the_result_column_is_in_view_in_a_narrow_dock(qtbot: QtBot) -> None:
+    """The columns fit their contents, so a 420-px dock shows passed / FAILED without
+    scrolling (100-px columns pushed it out of view even at 1920×1080); an error line of
+    the file spans the row rather than widening the first column."""
+    session = running_session("spindle_override.LAD")
+    dock, _chart = docks(qtbot, session)
+    dock.resize(420, 300)
+    dock.show()
+    qtbot.waitExposed(dock)
+    with qtbot.waitSignal(dock.finished):
+        dock.run_text("PMC SIGNAL DATA\nSET,0,X2.1,1\nEXPECT,16,R102,2\nNOT A LINE\n")
+    tree = dock.checks
+    header = tree.header()
+    last = header.count() - 1
+    right = header.sectionViewportPosition(last) + header.sectionSizeHint(last)
+    assert right <= tree.viewport().width(), (right, tree.viewport().width())
+    for row in range(tree.topLevelItemCount()):
+        item = tree.topLevelItem(row)
+        if item.data(0, Qt.ItemDataRole.UserRole) is None:  # an error of the file
+            assert item.isFirstColumnSpanned()
+    session.stop()
+
+
+def test_a_bad_line_of_the_scenario_is_said_in_turkish(qtbot: QtBot) -> None:
+    """The file's problems are listed in the UI language with their line, not as the CLI's
+    English `name:4:1: scenario-command ...`."""
+    session = running_session("spindle_override.LAD")
+    dock, _chart = docks(qtbot, session)
+    language = UiLanguage()  # kept: its translators live as long as it does
+    language.apply("tr")
+    try:
+        with qtbot.waitSignal(dock.finished):
+            dock.run_text("PMC SIGNAL DATA\nSET,0,X2.1,1\nNOT A LINE\n")
+        text = dock.checks.topLevelItem(0).text(0)
+        assert text.startswith("satır 3")
+        assert "scenario-command" not in text and "unknown command" not in text
+        assert "NOT A LINE" in text
+    finally:
+        language.apply("en")
+        session.stop()

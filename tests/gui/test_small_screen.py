@@ -5,9 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 import pytest
-from PySide6.QtCore import QEvent, QPoint, QRect, QSize
+from PySide6.QtCore import QEvent, QPoint, QRect, QSize, Qt
 from PySide6.QtGui import QFont
-from PySide6.QtWidgets import QApplication, QWidget
+from PySide6.QtWidgets import QApplication, QTabBar, QWidget
 from pytestqt.qtbot import QtBot
 
 from ladderworks.gui.main_window import MainWindow
@@ -110,3 +110,108 @@ def test_a_new_window_shown_at_1024_by_600_keeps_that_size(qtbot: QtBot,
     fresh.show()
     qtbot.waitExposed(fresh)
     assert fresh.size() == PANEL
+
+
+@pytest.mark.parametrize("language", ["en", "tr"])
+def test_every_plc_dock_opened_at_once_still_fits(window: MainWindow, qtbot: QtBot,
+                                                  language: str,
+                                                  font_size: float | None) -> None:
+    """A technician opens every PLC screen from the View menu on the panel: the two tab
+    groups hold them, the window stays 1024×600 and the status bar stays in view."""
+    window.set_language(language)
+    assert window.load(EXAMPLES / "spindle_override.LAD")
+    on_the_panel(window, qtbot)
+    docks = window.plc_docks
+    for name, dock in (("action_dock_plc_control", docks.control),
+                       ("action_dock_plc_diagnostic", docks.diagnostic),
+                       ("action_dock_bit_display", docks.bit_display),
+                       ("action_dock_plc_tables", docks.tables),
+                       ("action_dock_time_chart", docks.time_chart),
+                       ("action_dock_scenario", docks.scenario),
+                       ("action_dock_force_list", docks.force_list),
+                       ("action_dock_cross_reference", window.cross_reference)):
+        window.actions_by_name[name].trigger()
+        qtbot.waitUntil(dock.isVisible)
+        assert minimum(window).boundedTo(PANEL) == minimum(window), (name, minimum(window))
+    docks.control.raise_()  # in front of its tab group, the chart in front of the other
+    docks.time_chart.raise_()
+    window.actions_by_name["action_compile"].trigger()
+    qtbot.waitUntil(lambda: docks.control.figures.text() != "")
+    assert minimum(window).boundedTo(PANEL) == minimum(window), minimum(window)
+    assert window.size() == PANEL
+    for widget in (window.statusBar(), docks.control.toolbar, docks.control.run_bar,
+                   docks.time_chart.plot, window.editor):
+        assert inside(window, widget), widget.objectName()
+    window.set_language("en")
+
+
+def test_tabbed_docks_show_their_whole_titles(window: MainWindow, qtbot: QtBot) -> None:
+    """Four PLC screens in the bottom group on the panel, in Turkish: each tab reads its whole
+    title (the tabs scroll) rather than 'ALAR...' and 'PLC ZAMAN ...'."""
+    window.set_language("tr")
+    on_the_panel(window, qtbot)
+    docks = window.plc_docks
+    for name, dock in (("action_dock_plc_tables", docks.tables),
+                       ("action_dock_time_chart", docks.time_chart),
+                       ("action_dock_scenario", docks.scenario),
+                       ("action_dock_force_list", docks.force_list)):
+        window.actions_by_name[name].trigger()
+        qtbot.waitUntil(dock.isVisible)
+    window.resizeDocks([docks.time_chart], [300], Qt.Orientation.Horizontal)  # its narrowest
+    qtbot.waitUntil(lambda: docks.time_chart.width() < 480)
+    titles = {dock.windowTitle() for dock in (docks.alarms, docks.time_chart, docks.scenario,
+                                              docks.force_list)}
+    bars = [bar for bar in window.findChildren(QTabBar)
+            if bar.isVisible() and titles <= {bar.tabText(i) for i in range(bar.count())}]
+    assert len(bars) == 1
+    bar = bars[0]
+    for index in range(bar.count()):
+        text = bar.tabText(index)
+        # the style pads a whole title by some 20 px; a squeezed tab has 2 px and cuts it
+        assert bar.tabRect(index).width() >= bar.fontMetrics().horizontalAdvance(text) + 16, text
+    window.set_language("en")
+
+
+def test_a_long_status_ends_in_an_ellipsis_with_the_whole_text_as_tooltip(
+        window: MainWindow, qtbot: QtBot, tmp_path) -> None:
+    """A long symbol comment and element comment under the cursor on the panel: the status
+    bar says it was cut ('…'), the tooltip has it whole, the window does not widen."""
+    window.set_language("tr")
+    on_the_panel(window, qtbot)
+    path = tmp_path / "long.LAD"
+    comment = "ACİL STOP BUTONU BASILI DEĞİL VE KAPI KİLİTLİ İSE MAKİNE HAREKETİNE İZİN " * 2
+    path.write_text(f"%@2-C\nX0.0   UZUN_SEMBOL  {comment}\n%\n%@3\nN00001:\n"
+                    "RD X0.0  // bu kontağın kendi yorumu\nWRT Y0.0\n%\n", "utf-8")
+    assert window.load(path)
+    window.editor.move_cursor(0, 0, 0)
+    label = window.cell_label
+    qtbot.waitUntil(lambda: label.toolTip() == label.text() and "kendi yorumu" in label.text())
+    assert minimum(window).boundedTo(PANEL) == minimum(window)
+    assert window.size() == PANEL and inside(window, label)
+    assert label.shown_text().endswith("…")
+    assert label.fontMetrics().horizontalAdvance(label.shown_text()) <= label.width()
+    window.set_language("en")
+
+
+def test_a_long_status_leaves_room_for_the_compile_message(window: MainWindow,
+                                                           qtbot: QtBot, tmp_path) -> None:
+    """The cell text takes at most 60 % of the status bar: F9's result stays readable on the
+    left even with a long comment under the cursor."""
+    window.set_language("tr")
+    on_the_panel(window, qtbot)
+    path = tmp_path / "long.LAD"
+    comment = "ACİL STOP BUTONU BASILI DEĞİL VE KAPI KİLİTLİ İSE HAREKETE İZİN VERİLİR " * 3
+    path.write_text(f"%@2-C\nX0.0   UZUN_SEMBOL  {comment}\n%\n%@3\nN00001:\n"
+                    "RD X0.0\nWRT Y0.0\n%\n", "utf-8")
+    assert window.load(path)
+    window.editor.move_cursor(0, 0, 0)
+    window.actions_by_name["action_compile"].trigger()
+    bar = window.statusBar()
+    message = bar.currentMessage()
+    assert message.startswith("Derleme bitti")
+    label = window.cell_label
+    qtbot.waitUntil(lambda: label.geometry().left() > 0)
+    room = label.geometry().left()
+    assert room >= bar.width() * 0.35
+    assert room >= bar.fontMetrics().horizontalAdvance(message)
+    window.set_language("en")

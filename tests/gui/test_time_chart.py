@@ -274,3 +274,40 @@ def test_the_time_axis_label_stays_above_the_cursor_readout(
     assert dock.plot.geometry().bottom() < readout.geometry().top()
     assert label_bottom.y() <= readout.geometry().top()
     assert readout.geometry().bottom() <= dock.widget().height()
+
+
+def _left_axis_texts(dock: TimeChartDock) -> list[str]:
+    """The texts the chart's left axis draws (its tick labels)."""
+    from PySide6.QtGui import QImage, QPainter
+
+    axis = dock.plot.getPlotItem().getAxis("left")
+    image = QImage(200, 200, QImage.Format.Format_ARGB32)
+    painter = QPainter(image)
+    try:
+        specs = axis.generateDrawSpecs(painter)
+    finally:
+        painter.end()
+    return [] if specs is None else [text for _rect, _flags, text in specs[2]]
+
+
+def test_an_empty_chart_has_no_numbered_lanes(qtbot: QtBot) -> None:
+    """Before any signal is sampled the left axis names no lane: no meaningless 0 … 1.0
+    written with a decimal point on a Turkish screen."""
+    language = UiLanguage()
+    language.apply("tr")
+    try:
+        session = running_session("spindle_override.LAD")
+        dock = TimeChartDock(session)
+        qtbot.addWidget(dock)
+        dock.resize(420, 300)
+        dock.show()
+        qtbot.waitExposed(dock)
+        qtbot.wait(50)
+        assert _left_axis_texts(dock) == []
+        dock.signals_edit.setText("G30.0 X2.1")
+        assert dock.start()
+        names = ["G30.0 SOV0", "X2.1 FP_Din_1"]
+        qtbot.waitUntil(lambda: _left_axis_texts(dock) == names)  # once the axis is laid out
+        session.stop()
+    finally:
+        language.apply("en")

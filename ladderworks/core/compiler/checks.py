@@ -76,7 +76,7 @@ class _Checker:
 
     def __init__(self, program: Program, dialect: str | None) -> None:
         self.out: list[Diagnostic] = []
-        self.coils: dict[Address, tuple[Write, Instruction]] = {}
+        self.coils: dict[Address, tuple[Write, Instruction, int]] = {}
         self.registry = load_all()
         self.dialect = dialect or dialect_of(program)
         self.flat: list[tuple[int, Instruction, InstructionSpec | None]] = [
@@ -199,10 +199,14 @@ class _Checker:
                 if kind is Write.OUT and before[0] is Write.OUT:
                     self.add("coil-twice", ins, network, warning=True, address=str(address))
                 elif (kind is Write.OUT) != (before[0] is Write.OUT):
-                    self.add("coil-mixed", ins, network, warning=True, address=str(address),
-                             line=before[1].line)
+                    if before[1].line > 0:
+                        self.add("coil-mixed", ins, network, warning=True,
+                                 address=str(address), line=before[1].line)
+                    else:  # compiled from the drawing: no line 0, the network it is in
+                        self.add("coil-mixed-network", ins, network, warning=True,
+                                 address=str(address), other=before[2] + 1)
             if before is None or kind is Write.OUT:
-                self.coils[address] = (kind, ins)
+                self.coils[address] = (kind, ins, network)
 
     def function(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
         flow = spec.flow

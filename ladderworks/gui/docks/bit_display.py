@@ -147,6 +147,7 @@ class BitDisplayDock(Retranslating, QDockWidget):
         grid.addWidget(self.dec_header, 0, 10)
         self.rows = [BitRow(self, index, grid) for index in range(BOX_COUNT)]
         grid.setColumnStretch(11, 1)
+        grid.setRowStretch(BOX_COUNT + 1, 1)  # a tall dock: the room below the boxes
         self._scroll = scroll = QScrollArea(body)
         scroll.setWidgetResizable(True)
         scroll.setWidget(grid_holder)

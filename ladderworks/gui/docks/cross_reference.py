@@ -149,6 +149,9 @@ class CrossReferenceModel(QAbstractTableModel):
         return access_text(use.access)
 
 
+FIT_ROWS = 200  # rows measured to fit the columns to their contents
+
+
 class CrossReferenceDock(Retranslating, QDockWidget):
     """An address or symbol field over the list of its uses; `jump_requested` on double-click."""
 
@@ -264,8 +267,10 @@ class CrossReferenceDock(Retranslating, QDockWidget):
             address, len(uses), reads, writes)
 
     def _fit_columns(self) -> None:
-        if len(self.model.uses) <= 2000:  # measuring every row of a huge list costs seconds
-            self.table.resizeColumnsToContents()
+        """Columns as wide as their title and the rows measured (a huge list: the first
+        FIT_ROWS and those in view, measuring every row costs seconds)."""
+        self.table.horizontalHeader().setResizeContentsPrecision(FIT_ROWS)
+        self.table.resizeColumnsToContents()
 
     def _on_activated(self, index: QModelIndex) -> None:
         if 0 <= index.row() < len(self.model.uses):

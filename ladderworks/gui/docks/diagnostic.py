@@ -156,14 +156,22 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.live_button.setObjectName("diagnosticLive")
         self.live_button.clicked.connect(self.back_to_live)
         self.live_button.hide()
-        for widget in (self.search, self.find_button, self.written_button, self.why_button,
-                       self.live_button, self.follow):
+        for widget in (self.search, self.find_button, self.written_button, self.follow):
             bar.addWidget(widget)
-        bar.addWidget(self.state, 1)
+        bar.addStretch(1)
         layout.addLayout(bar)
+        # the state grows with the run (scan 1234567, PAST … at … ms): a row of its own,
+        # wrapped, so a long run never widens the dock and squeezes the ladder beside it
+        self.state.setWordWrap(True)
         self.message = QLabel(body)
         self.message.setObjectName("diagnosticMessage")
-        layout.addWidget(self.message)
+        self.message.setWordWrap(True)
+        state_row = QHBoxLayout()  # with the search's message: no row more than before
+        state_row.addWidget(self.state, 1)
+        state_row.addWidget(self.message, 2)
+        state_row.addWidget(self.why_button)
+        state_row.addWidget(self.live_button)
+        layout.addLayout(state_row)
         self.view = DiagnosticView(body)
         layout.addWidget(self.view, 1)
         self.setWidget(body)

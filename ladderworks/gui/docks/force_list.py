@@ -6,6 +6,7 @@ from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import (
     QDockWidget,
     QHBoxLayout,
+    QHeaderView,
     QLabel,
     QPushButton,
     QTableWidget,
@@ -38,7 +39,15 @@ class ForceListDock(Retranslating, QDockWidget):
         self.table.setObjectName("forceListTable")
         self.table.verticalHeader().hide()
         self.table.setTabKeyNavigation(False)  # Tab leaves the dock (issue 18: no Tab trap)
-        self.table.horizontalHeader().setStretchLastSection(False)
+        # kind, value and Release as wide as they need; the signal column gives way (its
+        # text elided, whole in the tooltip), so Release stays in view in a narrow dock
+        header = self.table.horizontalHeader()
+        header.setStretchLastSection(False)
+        for column, mode in enumerate((QHeaderView.ResizeMode.ResizeToContents,
+                                       QHeaderView.ResizeMode.Stretch,
+                                       QHeaderView.ResizeMode.ResizeToContents,
+                                       QHeaderView.ResizeMode.ResizeToContents)):
+            header.setSectionResizeMode(column, mode)
         self.table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
         layout.addWidget(self.table, 1)
         bottom = QHBoxLayout()
@@ -87,12 +96,13 @@ class ForceListDock(Retranslating, QDockWidget):
         self.table.setRowCount(len(entries))
         for row, entry in enumerate(entries):
             for col, text in enumerate(self.describe(entry)):
-                self.table.setItem(row, col, QTableWidgetItem(text))
+                item = QTableWidgetItem(text)
+                item.setToolTip(text)
+                self.table.setItem(row, col, item)
             button = QPushButton(translate("ForceList", "Release"), self.table)
             button.setObjectName(f"forceListRelease_{row}")
             button.clicked.connect(lambda _checked=False, e=entry: self.release(e))
             self.table.setCellWidget(row, 3, button)
-        self.table.resizeColumnsToContents()
         self.summary.setText(translate("ForceList", "{0} forced, {1} passive").format(
             sum(1 for e in entries if e.kind == "force"),
             sum(1 for e in entries if e.kind != "force")))

@@ -5,15 +5,17 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, Qt, QTimer, Signal
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import (
     QDockWidget,
     QFileDialog,
+    QFrame,
     QHBoxLayout,
     QLabel,
     QMessageBox,
     QProgressBar,
+    QScrollArea,
     QToolBar,
     QVBoxLayout,
     QWidget,
@@ -93,8 +95,12 @@ class PlcControlDock(Retranslating, QDockWidget):
             action.triggered.connect(lambda _checked=False, s=slot: s())
             bar.addAction(action)
             self.control_actions[name] = action
-        layout.addWidget(self.toolbar)
-        layout.addWidget(self.run_bar)
+        bars = QHBoxLayout()  # one row: a 1024×600 screen keeps the time chart below
+        bars.setSpacing(0)
+        bars.addWidget(self.toolbar)
+        bars.addWidget(self.run_bar)
+        bars.addStretch(1)
+        layout.addLayout(bars)
         self.setMinimumWidth(440)
         state = QHBoxLayout()
         self.indicator = QLabel(body)
@@ -121,7 +127,15 @@ class PlcControlDock(Retranslating, QDockWidget):
         self.message.setObjectName("plcCompileMessage")
         self.message.setWordWrap(True)
         layout.addWidget(self.message)
-        self.setWidget(body)
+        # a 1024×600 screen with the time chart below: the screen scrolls rather than
+        # making the window taller than the panel
+        scroll = QScrollArea(self)
+        scroll.setObjectName("plcControlScroll")
+        scroll.setWidgetResizable(True)
+        scroll.setFrameShape(QFrame.Shape.NoFrame)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        scroll.setWidget(body)
+        self.setWidget(scroll)
         session.status_changed.connect(self._show_status)
         session.running_changed.connect(lambda _running: self._update_actions())
         self.retranslate()

@@ -27,9 +27,11 @@ from ladderworks.core.plc.scenario import (
     run_scenario,
 )
 from ladderworks.core.plc.session import PlcRun
+from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks import trace_files
 from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord
+from ladderworks.gui.error_list import location_text
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
@@ -137,14 +139,17 @@ class ScenarioDock(Retranslating, QDockWidget):
 
     def _fill(self, result: ScenarioResult) -> None:
         self.checks.clear()
-        for text in result.scenario.error_texts():
-            self._item([text], _FAIL, None)
+        for diagnostic in result.scenario.diagnostics:  # in the UI language, no codes
+            text = f"{location_text(diagnostic)}: {diagnostic_text(diagnostic)}"
+            self._item([text], _FAIL, None).setFirstColumnSpanned(True)  # not a wide Line
         for check in result.checks:
             state = (translate("Scenario", "passed") if check.passed
                      else translate("Scenario", "FAILED"))
             self._item([str(check.line), f"{check.command} {check.target}", str(check.expected),
                         str(check.got), str(check.time_ms), state],
                        _PASS if check.passed else _FAIL, check)
+        for column in range(self.checks.columnCount() - 1):  # passed / FAILED in view
+            self.checks.resizeColumnToContents(column)
         failed = sum(not c.passed for c in result.checks)
         if result.passed:
             self._say(translate("Scenario", "{0}: all {1} checks passed").format(
@@ -154,11 +159,13 @@ class ScenarioDock(Retranslating, QDockWidget):
                 Path(result.scenario.name).name, failed + len(result.scenario.diagnostics),
                 len(result.checks) + len(result.scenario.diagnostics)), error=True)
 
-    def _item(self, texts: list[str], colour: QColor, check: CheckResult | None) -> None:
+    def _item(self, texts: list[str], colour: QColor,
+              check: CheckResult | None) -> QTreeWidgetItem:
         item = QTreeWidgetItem(texts)
         item.setForeground(len(texts) - 1, QBrush(colour))
         item.setData(0, Qt.ItemDataRole.UserRole, check)
         self.checks.addTopLevelItem(item)
+        return item
 
     def failing_times(self) -> list[int]:
         """The times (ms) of the failed checks."""

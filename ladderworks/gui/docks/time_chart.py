@@ -129,6 +129,7 @@ class TimeChartDock(Retranslating, QDockWidget):
         for side in ("left", "bottom"):
             item.getAxis(side).setTextPen("k")
             item.getAxis(side).setPen("k")
+        item.getAxis("left").setTicks([[], []])  # it names the lanes: none yet, no 0 … 1.0
         self.time_cursor = pg.InfiniteLine(angle=90, movable=True,
                                            pen=pg.mkPen("#e07000", width=1.5))
         self.time_cursor.setZValue(10)
