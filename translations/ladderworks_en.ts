@@ -988,52 +988,52 @@
 <context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="70"/>
         <source>Forced and passive</source>
         <translation>Forced and passive</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="72"/>
         <source>Kind</source>
         <translation>Kind</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="72"/>
         <source>Signal / element</source>
         <translation>Signal / element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="74"/>
         <source>Release all</source>
         <translation>Release all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="82"/>
         <source>FORCED</source>
         <translation>FORCED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="80"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>network {0}, line {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="102"/>
         <source>Release</source>
         <translation>Release</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="96"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="106"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} forced, {1} passive</translation>
     </message>

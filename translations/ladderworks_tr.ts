@@ -988,52 +988,52 @@
 <context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="70"/>
         <source>Forced and passive</source>
         <translation>Zorlananlar ve pasifler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="72"/>
         <source>Kind</source>
         <translation>Tür</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="72"/>
         <source>Signal / element</source>
         <translation>Sinyal / eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="74"/>
         <source>Release all</source>
         <translation>Hepsini bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="82"/>
         <source>FORCED</source>
         <translation>ZORLANMIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="80"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>devre {0}, satır {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="102"/>
         <source>Release</source>
         <translation>Bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="96"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="106"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} zorlanmış, {1} pasif</translation>
     </message>
