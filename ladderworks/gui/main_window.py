@@ -469,7 +469,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         )
 
     def showEvent(self, event: QShowEvent) -> None:
-        """On the first show, keep the bottom docks low so the ladder has the room."""
+        """On the first show, keep the bottom docks low (a fifth of the window, at most 170 px)
+        so the ladder has the room."""
         super().showEvent(event)
         if self._first_show:
             self._first_show = False
@@ -478,7 +479,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
                           if self.dockWidgetArea(dock) == Qt.DockWidgetArea.BottomDockWidgetArea
                           and dock.isVisible()]
                 if bottom:
-                    self.resizeDocks(bottom, [170] * len(bottom), Qt.Orientation.Vertical)
+                    low = max(100, min(170, self.height() // 5))
+                    self.resizeDocks(bottom, [low] * len(bottom), Qt.Orientation.Vertical)
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Ask about unsaved changes; remember the window layout."""

@@ -110,6 +110,9 @@ def test_a_new_window_shown_at_1024_by_600_keeps_that_size(qtbot: QtBot,
     fresh.show()
     qtbot.waitExposed(fresh)
     assert fresh.size() == PANEL
+    # the bottom docks stay low: the ladder keeps more than half the panel's height
+    qtbot.wait(100)
+    assert fresh.editor.height() > PANEL.height() * 6 // 10  # 344 px with 170-px docks
 
 
 @pytest.mark.parametrize("language", ["en", "tr"])
