@@ -148,10 +148,10 @@ def _menu_position(window: MainWindow, qtbot: QtBot, press: object,
     place)."""
     seen: list[tuple[QPoint, list[str]]] = []
 
-    def record(menu: QMenu, where: QPoint, *_args: object) -> None:
+    def record(menu: QMenu, where: QPoint) -> None:
         seen.append((QPoint(where), [a.objectName() for a in menu.actions()]))
 
-    monkeypatch.setattr(QMenu, "exec", record)
+    monkeypatch.setattr(window.editor, "show_menu", record)
     press()  # type: ignore[operator]
     assert seen, "no context menu opened"
     return seen[-1]

@@ -474,6 +474,10 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         where = event.globalPos()
         if event.reason() == QContextMenuEvent.Reason.Keyboard:  # Shift+F10, the menu key
             where = self.viewport().mapToGlobal(self.cell_point(*self.cursor_cell))
+        self.show_menu(menu, where)
+
+    def show_menu(self, menu: QMenu, where: QPoint) -> None:
+        """Show a menu at `where` (global) until it closes."""
         menu.exec(where)
 
     def keyPressEvent(self, event: QKeyEvent) -> None:
