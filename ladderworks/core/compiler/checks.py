@@ -71,6 +71,19 @@ def dialect_of(program: object) -> str:
     return dialect if isinstance(dialect, str) else "seed"
 
 
+# What the checks need of an instruction table row, found once per name in a run: the row,
+# whether it is BASIC, takes an operand, is a plain read (RD-like, no push), its pushes and
+# its write.
+_Shape = tuple[InstructionSpec, bool, bool, bool, int, Write]
+_MISSING: _Shape | None = None
+
+
+def _shape(spec: InstructionSpec) -> _Shape:
+    """The fields of `spec` the walk reads for every instruction."""
+    return (spec, spec.kind is Kind.BASIC, spec.operand,
+            spec.combine is Combine.READ and spec.pushes == 0, spec.pushes, spec.write)
+
+
 class _Checker:
     """Walks the program once, collecting diagnostics."""
 
@@ -79,11 +92,13 @@ class _Checker:
         self.coils: dict[Address, tuple[Write, Instruction, int]] = {}
         self.registry = load_all()
         self.dialect = dialect or dialect_of(program)
-        self.flat: list[tuple[int, Instruction, InstructionSpec | None]] = [
-            (n, ins, spec_for(ins.name, len(ins.params)))
-            for n, network in enumerate(program.networks) for ins in network.instructions]
+        self.program = program
         self.jumps: list[tuple[int, Instruction, int | None]] = []  # network, JMP, coils left
         self.commons: list[tuple[int, Instruction, int | None]] = []
+        # the diagnostics a functional instruction gives whatever surrounds it (its
+        # implementation, parameters and the addresses it writes), by the identity of its row
+        # and of its parameter tuple (the parser shares one tuple among equal lines)
+        self.own: dict[tuple[int, int], list[tuple[str, dict[str, object], bool]]] = {}
 
     def add(self, code: str, ins: Instruction, network: int, *,
             warning: bool = False, **args: object) -> None:
@@ -95,74 +110,126 @@ class _Checker:
             code, dict(args), ins.line, ins.column,
             Severity.WARNING if warning else Severity.ERROR, network))
 
+    def specs(self) -> tuple[list[_Shape | None], list[Instruction]]:
+        """The table row (as a _Shape, None if unknown) of every instruction, in order."""
+        shapes: dict[str, _Shape | None] = {}
+        found: list[_Shape | None] = []
+        every: list[Instruction] = []
+        append = found.append
+        for network in self.program.networks:
+            instructions = network.instructions
+            every += instructions
+            for ins in instructions:
+                name = ins.name
+                shape = shapes.get(name, shapes)
+                if shape is shapes:
+                    spec = spec_for(name, len(ins.params))
+                    shape = None if spec is None else _shape(spec)
+                    if spec is None or spec.known:  # an unknown SUB's row depends on the count
+                        shapes[name] = shape
+                append(shape)  # type: ignore[arg-type]
+        return found, every
+
     def run(self) -> list[Diagnostic]:
-        known = [(n, ins, spec) for n, ins, spec in self.flat if spec is not None]
-        structure = analyse([(spec, ins.params) for _, ins, spec in known])
+        shapes, every = self.specs()
+        known = [k for k, shape in enumerate(shapes) if shape is not None]
+        structure = analyse([(shape[0], ins.params)
+                             for shape, ins in zip(shapes, every, strict=True) if shape is not None])
         bounds = {k for unit in structure.units() for k in (unit.start, unit.end)}
+        add = self.add
+        basic_write = self.basic_write
         previous_network = -1
         depth, logic = 0, False
-        last: tuple[Instruction, InstructionSpec | None] | None = None
-        broken = -1  # a network with an unknown instruction is not checked further
+        last: Instruction | None = None
+        last_spec: InstructionSpec | None = None
         position = 0  # index among the known instructions (the structure's items)
-        for n, ins, spec in self.flat:
-            if n != previous_network:
-                self.end_network(previous_network, last, logic)
-                previous_network, depth, logic = n, 0, False
-            if spec is None:
-                self.add("unknown-instruction", ins, n, name=ins.name)
-                broken = n
+        flat = 0  # index among every instruction
+        for n, network in enumerate(self.program.networks):
+            instructions = network.instructions
+            if not instructions:
                 continue
-            if position in bounds:
-                self.close_ranges()
-            position += 1
-            if n == broken:
-                continue
-            last = (ins, spec)
-            depth, logic = self.instruction(n, ins, spec, depth, logic)
-        self.end_network(previous_network, last, logic)
+            self.end_network(previous_network, last, last_spec, logic)
+            previous_network, depth, logic = n, 0, False
+            broken = False  # after an unknown instruction the network is not checked further
+            for ins in instructions:
+                shape = shapes[flat]
+                flat += 1
+                if shape is None:
+                    add("unknown-instruction", ins, n, name=ins.name)
+                    broken = True
+                    continue
+                if position in bounds:
+                    self.close_ranges()
+                position += 1
+                if broken:
+                    continue
+                spec, is_basic, needs_operand, plain_read, pushes, writes = shape
+                last, last_spec = ins, spec
+                if not is_basic:
+                    depth, logic = self.other(n, ins, spec, depth, logic)
+                    continue
+                if needs_operand:
+                    operand = ins.operand
+                    if operand is None:
+                        add("missing-operand", ins, n, name=spec.name)
+                        continue
+                    if not isinstance(operand, Address):
+                        add("bad-address", ins, n, text=str(operand))
+                        continue
+                if plain_read:
+                    logic = True
+                    continue
+                if not logic:
+                    add("no-logic", ins, n, name=spec.name)
+                    logic = True
+                if pushes > 0:
+                    depth += 1
+                    if depth > MAX_PUSHES:
+                        add("stack-depth", ins, n)
+                elif pushes < 0:
+                    if depth == 0:
+                        add("stack-underflow", ins, n, name=spec.name)
+                    else:
+                        depth -= 1
+                elif writes is not Write.NONE:
+                    assert ins.operand is not None
+                    basic_write(ins, n, spec.name, ins.operand, writes)
+        self.end_network(previous_network, last, last_spec, logic)
         self.close_ranges()
         for problem in structure.problems:
-            network, ins, _ = known[problem.index]
-            self.report(problem.code, ins, network, problem.args, warning=problem.warning)
+            index = known[problem.index]
+            ins = every[index]
+            self.report(problem.code, ins, self.network_of(index), problem.args,
+                        warning=problem.warning)
         self.out.sort(key=lambda d: (d.line, d.column))
         return self.out
 
-    def end_network(self, network: int, last: tuple[Instruction, InstructionSpec | None] | None,
-                    logic: bool) -> None:
-        if network < 0 or not logic or last is None:
+    def network_of(self, index: int) -> int:
+        """The network of the instruction at `index` among every instruction."""
+        for n, network in enumerate(self.program.networks):
+            count = len(network.instructions)
+            if index < count:
+                return n
+            index -= count
+        raise IndexError(index)
+
+    def basic_write(self, ins: Instruction, network: int, name: str, address: Address,
+                    kind: Write) -> None:
+        """A coil: its write, then it counts for the open JMP n / COM n ranges."""
+        self.write(ins, network, name, address, kind)
+        if self.jumps or self.commons:
+            self.count_coil()
+
+    def end_network(self, network: int, ins: Instruction | None,
+                    spec: InstructionSpec | None, logic: bool) -> None:
+        if network < 0 or not logic or ins is None:
             return
-        ins, spec = last
         if spec is not None and spec.kind is Kind.BASIC and spec.write is Write.NONE:
             self.add("dangling-logic", ins, network, warning=True)
 
-    def instruction(self, n: int, ins: Instruction, spec: InstructionSpec, depth: int,
-                    logic: bool) -> tuple[int, bool]:
-        if spec.kind is Kind.BASIC:
-            if spec.operand and ins.operand is None:
-                self.add("missing-operand", ins, n, name=spec.name)
-                return depth, logic
-            if spec.operand and not isinstance(ins.operand, Address):
-                self.add("bad-address", ins, n, text=str(ins.operand))
-                return depth, logic
-            if spec.combine is Combine.READ and spec.pushes == 0:
-                return depth, True
-            if not logic:
-                self.add("no-logic", ins, n, name=spec.name)
-                logic = True
-            if spec.pushes > 0:
-                depth += 1
-                if depth > MAX_PUSHES:
-                    self.add("stack-depth", ins, n)
-            elif spec.pushes < 0:
-                if depth == 0:
-                    self.add("stack-underflow", ins, n, name=spec.name)
-                else:
-                    depth -= 1
-            elif spec.write is not Write.NONE:
-                assert ins.operand is not None
-                self.write(ins, n, spec.name, ins.operand, spec.write)
-                self.count_coil()
-            return depth, logic
+    def other(self, n: int, ins: Instruction, spec: InstructionSpec, depth: int,
+              logic: bool) -> tuple[int, bool]:
+        """A functional (or END) instruction: its inputs from the stack, then its own checks."""
         if spec.kind is Kind.END:
             return depth, logic
         count = len(spec.inputs)
@@ -232,12 +299,26 @@ class _Checker:
         elif flow is Flow.LABEL:
             if self.jumps or self.commons:
                 self.add("label-in-range", ins, network)
-        elif flow is Flow.NONE:
-            if not spec.known:
-                self.add("unknown-sub", ins, network, warning=True, number=spec.sub)
-            elif implementation_of(spec, self.registry) is None:
-                self.add("not-implemented", ins, network, name=spec.name)
-        self.params(ins, spec, network)
+        self.own_checks(ins, spec, network)
+
+    def own_checks(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
+        """The checks of a functional instruction that depend on it alone (found once for
+        the lines that share a row and a parameter tuple, then repeated at each)."""
+        key = (id(spec), id(ins.params))
+        found = self.own.get(key)
+        if found is None:
+            out, self.out = self.out, []
+            if spec.flow is Flow.NONE:
+                if not spec.known:
+                    self.add("unknown-sub", ins, network, warning=True, number=spec.sub)
+                elif implementation_of(spec, self.registry) is None:
+                    self.add("not-implemented", ins, network, name=spec.name)
+            self.params(ins, spec, network)
+            found = [(d.code, d.args, d.severity is Severity.WARNING) for d in self.out]
+            self.own[key] = found
+            self.out = out
+        for code, args, warning in found:
+            self.report(code, ins, network, args, warning=warning)
 
     def close_ranges(self) -> None:
         """At the end of a unit: its JMP 0 / COM 0 ranges must be closed."""

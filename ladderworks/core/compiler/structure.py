@@ -6,6 +6,7 @@ the checks pass can be generated, and every structural error is found by `check`
 
 from __future__ import annotations
 
+from bisect import bisect_left
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
@@ -87,15 +88,24 @@ class _Builder:
         self.levels: dict[int, Unit] = {}
         self.subprograms: dict[int, Unit] = {}
         self.unit_of: list[Unit | None] = [None] * len(items)
+        self.label_jumps: list[int] = []  # the items jumping to a label, in order
 
     def build(self) -> Structure:
-        ends = [spec.level for spec, _ in self.items if spec.flow is Flow.LEVEL_END]
-        level = 1 if ends and ends[0] == 1 else 2  # no END1 first: the program is level 2
+        first_end = next((spec.level for spec, _ in self.items if spec.flow is Flow.LEVEL_END),
+                         None)
+        level = 1 if first_end == 1 else 2  # no END1 first: the program is level 2
         current: Unit | None = Unit(f"L{level}", level, 0, 0, 0)
         sub_area = False
         ended = False
+        unit_of = self.unit_of
+        plain = Flow.NONE
         for index, (spec, params) in enumerate(self.items):
             flow = spec.flow
+            if flow is plain and current is not None and not ended:
+                unit_of[index] = current  # most items: in the current unit, nothing else
+                continue
+            if flow is Flow.LABEL_JUMP or flow is Flow.LABEL_JUMP_MAIN:
+                self.label_jumps.append(index)
             if ended:
                 self.problems.append(Problem("after-end", index))
                 continue
@@ -219,8 +229,9 @@ class _Builder:
 
     def check_labels(self, structure: Structure) -> None:
         reach = structure.callers()
+        jumps = self.label_jumps
         for unit in structure.units():
-            for index in range(unit.start, unit.end):
+            for index in jumps[bisect_left(jumps, unit.start):bisect_left(jumps, unit.end)]:
                 spec, params = self.items[index]
                 if spec.flow is Flow.LABEL_JUMP:
                     label = _target(spec, params)
