@@ -5,8 +5,9 @@ from __future__ import annotations
 import argparse
 import sys
 
-from ladderworks.core.diagnostics import has_errors
-from ladderworks.core.il import check_file, parse_file, print_program
+from ladderworks.core.compiler import check
+from ladderworks.core.diagnostics import Diagnostic, has_errors
+from ladderworks.core.il import parse_file, print_program
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -19,10 +20,19 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     fmt.set_defaults(handler=_format)
 
 
+def check_path(name: str) -> list[Diagnostic]:
+    """Everything `check` reports for a file: the parser's diagnostics and, when they hold no
+    error, the compiler's (the checks `compile` runs), by line; the file parsed once."""
+    result = parse_file(name)
+    if not result.ok:
+        return result.diagnostics
+    return sorted(result.diagnostics + check(result.program), key=lambda d: (d.line, d.column))
+
+
 def _check(args: argparse.Namespace) -> int:
     failed = False
     for name in args.files:
-        diagnostics = check_file(name)
+        diagnostics = check_path(name)
         for diagnostic in diagnostics:
             print(diagnostic.located(name))
         failed = failed or has_errors(diagnostics)

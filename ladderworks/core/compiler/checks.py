@@ -133,8 +133,8 @@ class _Checker:
     def run(self) -> list[Diagnostic]:
         shapes, every = self.specs()
         known = [k for k, shape in enumerate(shapes) if shape is not None]
-        structure = analyse([(shape[0], ins.params)
-                             for shape, ins in zip(shapes, every, strict=True) if shape is not None])
+        structure = analyse([(shape[0], ins.params) for shape, ins in zip(
+            shapes, every, strict=True) if shape is not None])
         bounds = {k for unit in structure.units() for k in (unit.start, unit.end)}
         add = self.add
         basic_write = self.basic_write
@@ -296,9 +296,8 @@ class _Checker:
                     break
             else:
                 self.add("come-without-com", ins, network)
-        elif flow is Flow.LABEL:
-            if self.jumps or self.commons:
-                self.add("label-in-range", ins, network)
+        elif flow is Flow.LABEL and (self.jumps or self.commons):
+            self.add("label-in-range", ins, network)
         self.own_checks(ins, spec, network)
 
     def own_checks(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
