@@ -19,6 +19,7 @@ from ladderworks.core.instructions import (
     Flow,
     InstructionSpec,
     Kind,
+    Param,
     ParamKind,
     Write,
     spec_for,
@@ -75,13 +76,16 @@ def dialect_of(program: object) -> str:
 # whether it is BASIC, takes an operand, is a plain read (RD-like, no push), its pushes and
 # its write.
 _Shape = tuple[InstructionSpec, bool, bool, bool, int, Write]
-_MISSING: _Shape | None = None
 
 
 def _shape(spec: InstructionSpec) -> _Shape:
     """The fields of `spec` the walk reads for every instruction."""
     return (spec, spec.kind is Kind.BASIC, spec.operand,
             spec.combine is Combine.READ and spec.pushes == 0, spec.pushes, spec.write)
+
+
+# A functional instruction's parameters as the checks read them (see _Checker.layout).
+_Layout = tuple[tuple[Param, ...], tuple[str, ...], Param | None, frozenset[str]]
 
 
 class _Checker:
@@ -99,6 +103,7 @@ class _Checker:
         # implementation, parameters and the addresses it writes), by the identity of its row
         # and of its parameter tuple (the parser shares one tuple among equal lines)
         self.own: dict[tuple[int, int], list[tuple[str, dict[str, object], bool]]] = {}
+        self.layouts: dict[int, _Layout] = {}  # by the identity of the row
 
     def add(self, code: str, ins: Instruction, network: int, *,
             warning: bool = False, **args: object) -> None:
@@ -256,24 +261,27 @@ class _Checker:
 
     def write(self, ins: Instruction, network: int, name: str, address: Address,
               kind: Write | None) -> None:
-        if address.area in INPUT_AREAS:
-            self.add("write-input", ins, network, name=name, address=str(address))
-        elif address.is_result_register():
-            self.add("write-result-register", ins, network, name=name, address=str(address))
-        elif kind is not None:
-            before = self.coils.get(address)
-            if before is not None:
-                if kind is Write.OUT and before[0] is Write.OUT:
-                    self.add("coil-twice", ins, network, warning=True, address=str(address))
-                elif (kind is Write.OUT) != (before[0] is Write.OUT):
-                    if before[1].line > 0:
-                        self.add("coil-mixed", ins, network, warning=True,
-                                 address=str(address), line=before[1].line)
-                    else:  # compiled from the drawing: no line 0, the network it is in
-                        self.add("coil-mixed-network", ins, network, warning=True,
-                                 address=str(address), other=before[2] + 1)
-            if before is None or kind is Write.OUT:
+        before = None if kind is None else self.coils.get(address)
+        if before is None:  # an address in self.coils was found writable before
+            if address.area in INPUT_AREAS:
+                self.add("write-input", ins, network, name=name, address=str(address))
+            elif address.is_result_register():
+                self.add("write-result-register", ins, network, name=name,
+                         address=str(address))
+            elif kind is not None:
                 self.coils[address] = (kind, ins, network)
+            return
+        if kind is Write.OUT and before[0] is Write.OUT:
+            self.add("coil-twice", ins, network, warning=True, address=str(address))
+        elif (kind is Write.OUT) != (before[0] is Write.OUT):
+            if before[1].line > 0:
+                self.add("coil-mixed", ins, network, warning=True,
+                         address=str(address), line=before[1].line)
+            else:  # compiled from the drawing: no line 0, the network it is in
+                self.add("coil-mixed-network", ins, network, warning=True,
+                         address=str(address), other=before[2] + 1)
+        if kind is Write.OUT:
+            self.coils[address] = (kind, ins, network)
 
     def function(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
         flow = spec.flow
@@ -330,10 +338,21 @@ class _Checker:
         self.jumps.clear()
         self.commons.clear()
 
+    def layout(self, spec: InstructionSpec) -> _Layout:
+        """The fixed parameters of `spec`, its table parameter and its outputs' names."""
+        found = self.layouts.get(id(spec))
+        if found is None:
+            fixed = spec.fixed_params()
+            found = (fixed, tuple(p.name for p in fixed), spec.table_param(),
+                     output_params(spec.name))
+            self.layouts[id(spec)] = found
+        return found
+
     def params(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
-        fixed = spec.fixed_params()
-        table = spec.table_param()
-        values = ins.param_map()
+        fixed, names, table, outputs = self.layout(spec)
+        values: dict[str, object] = dict(zip(names, ins.params, strict=False))  # param_map()
+        if table is not None:
+            values[table.name] = tuple(ins.params[len(fixed):])
         expected = len(fixed)
         if table is not None:
             size = values.get(table.length_of)
@@ -342,7 +361,6 @@ class _Checker:
             self.add("param-count", ins, network, name=spec.name, expected=expected,
                      found=len(ins.params))
             return
-        outputs = output_params(spec.name)
         for number, (param, raw) in enumerate(zip(fixed, ins.params, strict=False), 1):
             info: dict[str, object] = {"name": spec.name, "index": number, "param": param.name}
             value: int | Address
