@@ -115,31 +115,35 @@ class _Checker:
             code, dict(args), ins.line, ins.column,
             Severity.WARNING if warning else Severity.ERROR, network))
 
-    def specs(self) -> tuple[list[_Shape | None], list[Instruction]]:
-        """The table row (as a _Shape, None if unknown) of every instruction, in order."""
+    def specs(self) -> tuple[list[_Shape | None], list[Instruction],
+                             list[tuple[InstructionSpec, tuple[object, ...]]]]:
+        """The table row (as a _Shape, None if unknown) of every instruction, every instruction,
+        and (row, parameters) of the known ones: the structure's items."""
         shapes: dict[str, _Shape | None] = {}
         found: list[_Shape | None] = []
         every: list[Instruction] = []
-        append = found.append
+        items: list[tuple[InstructionSpec, tuple[object, ...]]] = []
+        append, item = found.append, items.append
         for network in self.program.networks:
             instructions = network.instructions
             every += instructions
             for ins in instructions:
                 name = ins.name
-                shape = shapes.get(name, shapes)
-                if shape is shapes:
+                try:
+                    shape = shapes[name]
+                except KeyError:
                     spec = spec_for(name, len(ins.params))
                     shape = None if spec is None else _shape(spec)
                     if spec is None or spec.known:  # an unknown SUB's row depends on the count
                         shapes[name] = shape
-                append(shape)  # type: ignore[arg-type]
-        return found, every
+                append(shape)
+                if shape is not None:
+                    item((shape[0], ins.params))
+        return found, every, items
 
     def run(self) -> list[Diagnostic]:
-        shapes, every = self.specs()
-        known = [k for k, shape in enumerate(shapes) if shape is not None]
-        structure = analyse([(shape[0], ins.params) for shape, ins in zip(
-            shapes, every, strict=True) if shape is not None])
+        shapes, every, items = self.specs()
+        structure = analyse(items)
         bounds = {k for unit in structure.units() for k in (unit.start, unit.end)}
         add = self.add
         basic_write = self.basic_write
@@ -201,6 +205,8 @@ class _Checker:
                     basic_write(ins, n, spec.name, ins.operand, writes)
         self.end_network(previous_network, last, last_spec, logic)
         self.close_ranges()
+        known = [k for k, shape in enumerate(shapes) if shape is not None] \
+            if structure.problems else []
         for problem in structure.problems:
             index = known[problem.index]
             ins = every[index]
