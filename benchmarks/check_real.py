@@ -1,5 +1,6 @@
 """`ladderworks-cli check` of the 37,883-step FANUC_STUDER_S41_F036: ms as a whole process, and
-inside a fresh process (imports, then the check itself); run from the repository root.
+inside a fresh process (imports, then the check itself: the parse, then the compiler's checks);
+run from the repository root.
 
 Each figure is the best and the median of RUNS fresh processes (the machine may be shared)."""
 
@@ -31,6 +32,19 @@ done = time.perf_counter()
 print(f"{(imported - began) * 1000:.1f} {(done - imported) * 1000:.1f}")
 """
 
+# In a fresh interpreter: ms of parse_file, then of the compiler's checks alone on its program.
+PARTS = """
+import sys, time
+from ladderworks.core.compiler import check
+from ladderworks.core.il import parse_file
+began = time.perf_counter()
+result = parse_file(sys.argv[1])
+parsed = time.perf_counter()
+check(result.program)
+done = time.perf_counter()
+print(f"{(parsed - began) * 1000:.1f} {(done - parsed) * 1000:.1f}")
+"""
+
 
 def _program() -> Path | None:
     for base in ROOT.parents:
@@ -56,9 +70,10 @@ def _process_ms(path: Path, env: dict[str, str] | None = None) -> tuple[float, f
     return (time.perf_counter() - start) * 1000, (_children_cpu() - cpu) * 1000
 
 
-def _inside_ms(path: Path) -> tuple[float, float]:
-    """(import ms, check ms) measured inside a fresh interpreter."""
-    done = subprocess.run([sys.executable, "-c", INSIDE, str(path)], cwd=ROOT,
+def _inside_ms(path: Path, script: str = INSIDE) -> tuple[float, float]:
+    """(import ms, check ms) measured inside a fresh interpreter (or the two figures `script`
+    prints)."""
+    done = subprocess.run([sys.executable, "-c", script, str(path)], cwd=ROOT,
                           capture_output=True, text=True, check=True)
     imported, checked = done.stdout.split()
     return float(imported), float(checked)
@@ -91,6 +106,7 @@ def main() -> int:
         _process_ms(path, env)
         cached = [_process_ms(path, env) for _ in range(RUNS)]
     inside = [_inside_ms(path) for _ in range(RUNS)]
+    parts = [_inside_ms(path, PARTS) for _ in range(RUNS)]
     empty = [_empty_ms() for _ in range(RUNS)]
     load = os.getloadavg()
     print(f"{NAME}: ladderworks-cli check, {RUNS} fresh processes each")
@@ -98,6 +114,8 @@ def main() -> int:
     print(_line("  its CPU time:", [c for _w, c in process]))
     print(_line("check, bytecode cached:", [w for w, _c in cached], f"goal under {GOAL_MS} ms"))
     print(_line("  check in-process:", [c for _i, c in inside]))
+    print(_line("    parse_file:", [p for p, _c in parts]))
+    print(_line("    compiler checks alone:", [c for _p, c in parts]))
     print(_line("  importing the CLI:", [i for i, _c in inside]))
     print(_line("  python3 -c pass:", empty))
     print(f"load average: {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} on {os.cpu_count()} cores")
