@@ -205,24 +205,16 @@ class _Checker:
                     basic_write(ins, n, spec.name, ins.operand, writes)
         self.end_network(previous_network, last, last_spec, logic)
         self.close_ranges()
-        known = [k for k, shape in enumerate(shapes) if shape is not None] \
-            if structure.problems else []
-        for problem in structure.problems:
-            index = known[problem.index]
-            ins = every[index]
-            self.report(problem.code, ins, self.network_of(index), problem.args,
-                        warning=problem.warning)
+        if structure.problems:
+            known = [k for k, shape in enumerate(shapes) if shape is not None]
+            network_at = [n for n, network in enumerate(self.program.networks)
+                          for _ in network.instructions]
+            for problem in structure.problems:
+                index = known[problem.index]
+                self.report(problem.code, every[index], network_at[index], problem.args,
+                            warning=problem.warning)
         self.out.sort(key=lambda d: (d.line, d.column))
         return self.out
-
-    def network_of(self, index: int) -> int:
-        """The network of the instruction at `index` among every instruction."""
-        for n, network in enumerate(self.program.networks):
-            count = len(network.instructions)
-            if index < count:
-                return n
-            index -= count
-        raise IndexError(index)
 
     def basic_write(self, ins: Instruction, network: int, name: str, address: Address,
                     kind: Write) -> None:
