@@ -9,7 +9,6 @@ from PySide6.QtCore import QCoreApplication, QLocale, Qt
 from PySide6.QtGui import QAction, QBrush, QColor
 from PySide6.QtWidgets import (
     QDockWidget,
-    QFileDialog,
     QLabel,
     QToolBar,
     QTreeWidget,
@@ -22,6 +21,7 @@ from ladderworks import paths
 from ladderworks.core.alarms import ActiveAlarm, AlarmTable, format_number, load_alarm_file
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il.program import Program
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
@@ -137,7 +137,7 @@ class AlarmDock(Retranslating, QDockWidget):
     def open_dialog(self) -> None:
         """File → Alarm file: choose an AlarmMsg.dat."""
         start = str(self.alarm_file or DEFAULT_ALARM_FILE)
-        path, _filter = QFileDialog.getOpenFileName(
+        path = file_dialogs.open_file_name(
             self,
             translate("AlarmPanel", "Alarm message file"),
             start,
