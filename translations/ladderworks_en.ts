@@ -2445,62 +2445,62 @@
 <context>
     <name>Print</name>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="46"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="47"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="71"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="72"/>
         <source>Printing the ladder…</source>
         <translation>Printing the ladder…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="72"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="73"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="154"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="155"/>
         <source>Print preview</source>
         <translation>Print preview</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="172"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
         <source>Export PDF</source>
         <translation>Export PDF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="174"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF files (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="181"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
         <source>&amp;Print...</source>
         <translation>&amp;Print...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
         <source>Print pre&amp;view...</source>
         <translation>Print pre&amp;view...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
         <source>Export P&amp;DF...</source>
         <translation>Export P&amp;DF...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="190"/>
         <source>Printing was cancelled or failed</source>
         <translation>Printing was cancelled or failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="191"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="192"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} pages written to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="193"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="194"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} pages sent to the printer</translation>
     </message>
@@ -3022,52 +3022,57 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="109"/>
+        <source>Program symbol</source>
+        <translation>Program symbol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
         <source>{0} signals</source>
         <translation>{0} signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
         <source>Signals</source>
         <translation>Signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
+        <source>In English</source>
+        <translation>In English</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="177"/>
+        <source>In Turkish</source>
+        <translation>In Turkish</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="179"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="173"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="180"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
-        <source>English</source>
-        <translation>English</translation>
+        <location filename="../ladderworks/gui/signal_list.py" line="181"/>
+        <source>Description</source>
+        <translation>Description</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="108"/>
-        <source>program symbol</source>
-        <translation>program symbol</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="162"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program symbols, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Address, symbol, name or words, e.g. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
-        <source>Turkish</source>
-        <translation>Turkish</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="184"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Double-click: use the address for the contact or coil at the cursor</translation>
     </message>

@@ -2445,62 +2445,62 @@
 <context>
     <name>Print</name>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="46"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="47"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="71"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="72"/>
         <source>Printing the ladder…</source>
         <translation>Ladder yazdırılıyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="72"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="73"/>
         <source>Cancel</source>
         <translation>İptal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="154"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="155"/>
         <source>Print preview</source>
         <translation>Baskı önizleme</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="172"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
         <source>Export PDF</source>
         <translation>PDF olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="174"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF dosyaları (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="181"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
         <source>&amp;Print...</source>
         <translation>&amp;Yazdır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
         <source>Print pre&amp;view...</source>
         <translation>Baskı ön&amp;izleme...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
         <source>Export P&amp;DF...</source>
         <translation>P&amp;DF olarak dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="190"/>
         <source>Printing was cancelled or failed</source>
         <translation>Yazdırma iptal edildi veya başarısız oldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="191"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="192"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} sayfa {1} dosyasına yazıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="193"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="194"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} sayfa yazıcıya gönderildi</translation>
     </message>
@@ -3022,52 +3022,57 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="109"/>
+        <source>Program symbol</source>
+        <translation>Program sembolü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
         <source>{0} signals</source>
         <translation>{0} sinyal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
         <source>Signals</source>
         <translation>Sinyaller</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
+        <source>In English</source>
+        <translation>İngilizce</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="177"/>
+        <source>In Turkish</source>
+        <translation>Türkçe</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="179"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="173"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="180"/>
         <source>Name</source>
         <translation>Ad</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
-        <source>English</source>
-        <translation>İngilizce</translation>
+        <location filename="../ladderworks/gui/signal_list.py" line="181"/>
+        <source>Description</source>
+        <translation>Açıklama</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="108"/>
-        <source>program symbol</source>
-        <translation>program sembolü</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="162"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program sembolü, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Adres, sembol, ad veya sözcükler, örn. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
-        <source>Turkish</source>
-        <translation>Türkçe</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="184"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Çift tıklama: adresi imleçteki kontak veya bobine ver</translation>
     </message>
