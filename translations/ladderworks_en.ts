@@ -4,102 +4,107 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="119"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
         <source>Alarm message file</source>
         <translation>Alarm message file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm files (*.dat);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="163"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>The program&apos;s messages (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="166"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm file... uses an AlarmMsg.dat instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="170"/>
         <source>No alarm file</source>
         <translation>No alarm file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="160"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="172"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} messages</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="176"/>
         <source>{0} lines with problems</source>
         <translation>{0} lines with problems</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="183"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="201"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(no message {0} in the alarm file)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="223"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="235"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
+        <source>Seen at {0}</source>
+        <translation>Seen at {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="280"/>
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="281"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="283"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="285"/>
         <source>Alarm file...</source>
         <translation>Alarm file...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="288"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
         <source>PLC time</source>
         <translation>PLC time</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
         <source>Clock</source>
         <translation>Clock</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="250"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>

@@ -4,102 +4,107 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="119"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
         <source>Alarm message file</source>
         <translation>Alarm mesaj dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm dosyaları (*.dat);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="163"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>Programın mesajları (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="166"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm dosyası... bunun yerine bir AlarmMsg.dat kullanır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="170"/>
         <source>No alarm file</source>
         <translation>Alarm dosyası yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="160"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="172"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} mesaj</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="176"/>
         <source>{0} lines with problems</source>
         <translation>{0} satırda sorun var</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="183"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="201"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(alarm dosyasında {0} numaralı mesaj yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="223"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="235"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>Bit yeniden 0: RESET bu alarmı siler</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
+        <source>Seen at {0}</source>
+        <translation>Görüldüğü saat: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="280"/>
         <source>Alarms</source>
         <translation>ALARMLAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="281"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="283"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="285"/>
         <source>Alarm file...</source>
         <translation>Alarm dosyası...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="288"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
         <source>PLC time</source>
         <translation>PLC zamanı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
         <source>Clock</source>
         <translation>Saat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="250"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
