@@ -64,47 +64,47 @@
         <translation>Görüldüğü saat: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="280"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="281"/>
         <source>Alarms</source>
         <translation>ALARMLAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="281"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="282"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="284"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="285"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="286"/>
         <source>Alarm file...</source>
         <translation>Alarm dosyası...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="288"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
         <source>PLC time</source>
         <translation>PLC zamanı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
         <source>Clock</source>
         <translation>Saat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="293"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
@@ -1481,29 +1481,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <location filename="../ladderworks/gui/main_window.py" line="190"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="393"/>
+        <location filename="../ladderworks/gui/main_window.py" line="394"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="400"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="404"/>
+        <location filename="../ladderworks/gui/main_window.py" line="405"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="429"/>
-        <location filename="../ladderworks/gui/main_window.py" line="254"/>
-        <location filename="../ladderworks/gui/main_window.py" line="400"/>
+        <location filename="../ladderworks/gui/main_window.py" line="255"/>
+        <location filename="../ladderworks/gui/main_window.py" line="401"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1642,32 +1642,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="363"/>
+        <location filename="../ladderworks/gui/main_window.py" line="364"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="379"/>
+        <location filename="../ladderworks/gui/main_window.py" line="380"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="430"/>
+        <location filename="../ladderworks/gui/main_window.py" line="431"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="433"/>
+        <location filename="../ladderworks/gui/main_window.py" line="434"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="465"/>
+        <location filename="../ladderworks/gui/main_window.py" line="466"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="466"/>
+        <location filename="../ladderworks/gui/main_window.py" line="467"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2128,88 +2128,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="195"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="243"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="196"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="244"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="197"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="245"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="198"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="246"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="199"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="247"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="200"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="204"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="252"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="205"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="253"/>
+        <source>Zoom out (Ctrl+wheel)</source>
+        <translation>Uzaklaştır (Ctrl+tekerlek)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="254"/>
+        <source>Zoom in (Ctrl+wheel)</source>
+        <translation>Yakınlaştır (Ctrl+tekerlek)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="265"/>
+        <source>{0} %</source>
+        <translation>%{0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="309"/>
         <location filename="../ladderworks/gui/docks/online.py" line="142"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="315"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="317"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="259"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="319"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="360"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="404"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="414"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="423"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
