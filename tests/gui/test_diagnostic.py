@@ -175,4 +175,5 @@ def test_zoom_buttons_wheel_limits_and_settings(qtbot: QtBot, window: MainWindow
                                                                   * diagnostic.ZOOM_STEP)
     window.set_language("tr")
     assert dock.zoom_in_button.toolTip() == "Yakınlaştır (Ctrl+tekerlek)"
+    assert dock.zoom_label.text() == f"%{round(view.zoom() * 100)}"  # the Turkish way
     window.set_language("en")

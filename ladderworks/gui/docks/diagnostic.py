@@ -253,6 +253,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.live_button.setText(translate("PlcDiagnostic", "Back to live"))
         self.zoom_out_button.setToolTip(translate("PlcDiagnostic", "Zoom out (Ctrl+wheel)"))
         self.zoom_in_button.setToolTip(translate("PlcDiagnostic", "Zoom in (Ctrl+wheel)"))
+        self._show_zoom(self.view.zoom())  # "62 %" / "%62"
         self.follow.setToolTip(translate(
             "PlcDiagnostic", "Keep the searched address in view while the PLC runs"))
         self._show_state()
