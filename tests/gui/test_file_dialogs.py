@@ -3,18 +3,35 @@
 from __future__ import annotations
 
 import shutil
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from PySide6.QtCore import QTimer
-from PySide6.QtWidgets import QApplication, QFileDialog, QTreeView
+from PySide6.QtCore import QEvent, QSettings, QStandardPaths, QTimer
+from PySide6.QtWidgets import QApplication, QFileDialog, QListView, QTreeView
 from pytestqt.qtbot import QtBot
 
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.paths import EXAMPLES
 
-LONG_NAME = "spindle_override_with_a_long_name.LAD"
+
+@pytest.fixture(autouse=True)
+def qt_dialog_state(tmp_path: Path) -> Iterator[Path]:
+    """Qt's file dialog keeps its state (sidebar width, columns) in QtProject.conf: in a
+    temporary folder, so the user's is never touched nor read."""
+    folder = tmp_path / "qt-config"
+    folder.mkdir()  # as a dialog once shrunk by hand left it: a narrow places list
+    (folder / "QtProject.conf").write_text(
+        "[FileDialog]\nsidebarWidth=60\nviewMode=Detail\nshortcuts=file:\n", encoding="utf-8")
+    native, scope = QSettings.Format.NativeFormat, QSettings.Scope.UserScope
+    QSettings.setPath(native, scope, str(folder))
+    yield folder
+    QSettings.setPath(native, scope, QStandardPaths.writableLocation(
+        QStandardPaths.StandardLocation.GenericConfigLocation))
+
+
+LONG_NAME = "spindle_override_with_long_name.LAD"  # fits a 720-px dialog
 
 
 def _columns_when_listed(seen: dict[str, object]) -> None:
@@ -30,6 +47,8 @@ def _columns_when_listed(seen: dict[str, object]) -> None:
     seen["size"] = dialog.size()
     seen["room"] = dialog.screen().availableGeometry().size()
     seen["viewport"] = tree.viewport().width()
+    places = dialog.findChild(QListView, "sidebar")
+    seen["places"] = (places.viewport().width(), places.sizeHintForColumn(0))
     seen["columns"] = [(header.sectionSize(column),
                         max(tree.sizeHintForColumn(column), header.sectionSizeHint(column)))
                        for column in range(header.count()) if not header.isSectionHidden(column)]
@@ -38,7 +57,8 @@ def _columns_when_listed(seen: dict[str, object]) -> None:
 
 @pytest.mark.parametrize("language", ["en", "tr"])
 def test_open_dialog_shows_name_size_type_and_date_whole(
-        window: MainWindow, qtbot: QtBot, tmp_path: Path, language: str) -> None:
+        window: MainWindow, qtbot: QtBot, tmp_path: Path, language: str,
+        qt_dialog_state: Path) -> None:
     program = tmp_path / LONG_NAME
     shutil.copy(EXAMPLES / "spindle_override.LAD", program)
     assert window.load(program)
@@ -53,7 +73,12 @@ def test_open_dialog_shows_name_size_type_and_date_whole(
     for width, needed in columns:  # name, size, type and date: each as wide as its texts
         assert width >= needed, columns
     assert sum(width for width, _needed in columns) <= viewport, columns
+    places, names = seen["places"]  # type: ignore[misc]
+    assert places >= names  # "Bilgisayar" (Computer) whole
     assert seen["size"].boundedTo(seen["room"]) == seen["size"]  # type: ignore[attr-defined]
+    QApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)  # the dialog saves its state
+    state = (qt_dialog_state / "QtProject.conf").read_text(encoding="utf-8")
+    assert "treeViewHeader" in state  # saved there, not in the user's folder
     window.set_language("en")
 
 
@@ -67,3 +92,4 @@ def test_save_dialog_keeps_title_filters_and_suggested_name(window: MainWindow) 
     assert dialog.directory().absolutePath() == "/tmp"
     assert dialog.width() >= 700  # not Qt's 632 × 408
     dialog.deleteLater()
+    QApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)  # its state: to tmp_path
