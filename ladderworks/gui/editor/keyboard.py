@@ -1,4 +1,5 @@
-"""Grid keys beyond the arrows: Home/End, Ctrl+Home/End, PageUp/PageDown, the menu key."""
+"""Grid keys that move: arrows (Shift: select), Home/End, Ctrl+Home/End, PageUp/PageDown, the
+menu key."""
 
 from __future__ import annotations
 
@@ -13,6 +14,10 @@ if TYPE_CHECKING:
     from ladderworks.gui.editor.view import LadderEditor
 
 Cursor = tuple[int, int, int]  # network, row, column
+ARROWS: dict[int, tuple[int, int]] = {
+    Qt.Key.Key_Left: (0, -1), Qt.Key.Key_Right: (0, 1), Qt.Key.Key_Up: (-1, 0),
+    Qt.Key.Key_Down: (1, 0)}
+MODIFIER_KEYS = (Qt.Key.Key_Shift, Qt.Key.Key_Control, Qt.Key.Key_Alt, Qt.Key.Key_Meta)
 
 
 class GridKeys:
@@ -20,6 +25,32 @@ class GridKeys:
 
     def __init__(self, editor: LadderEditor) -> None:
         self._editor = editor
+        self.anchor: Cursor | None = None  # where a Shift+arrows selection started
+
+    def _arrow(self, key: int, shift: bool) -> bool:
+        """An arrow moves the cursor (into the next or previous network at an end); with Shift
+        it stretches a selection from where the first Shift+arrow started."""
+        if key not in ARROWS:
+            return False
+        editor = self._editor
+        index, row, col = editor.cursor_cell
+        drow, dcol = ARROWS[key]
+        if shift:
+            if self.anchor is None or self.anchor[0] != index:
+                self.anchor = (index, row, col)
+            editor.move_cursor(index, max(row + drow, 0), max(col + dcol, 0))
+            editor.select_rectangle(index, self.anchor[1:], editor.cursor_cell[1:])
+            return True
+        row += drow
+        col += dcol
+        if row < 0 and index > 0:
+            index -= 1
+            row = editor.networks[index].rows - 1
+        elif row >= editor.networks[index].rows + SPARE_ROWS and index < len(editor.networks) - 1:
+            index += 1
+            row = 0
+        editor.move_cursor(index, row, col)
+        return True
 
     def handle(self, event: QKeyEvent) -> bool:
         """Do what the key means in the grid (cursor moves, the context menu)."""
@@ -27,6 +58,10 @@ class GridKeys:
         modifiers = event.modifiers()
         ctrl = bool(modifiers & Qt.KeyboardModifier.ControlModifier)
         shift = bool(modifiers & Qt.KeyboardModifier.ShiftModifier)
+        if not (shift and key in ARROWS) and key not in MODIFIER_KEYS:
+            self.anchor = None  # any other key ends a Shift+arrows selection
+        if self._arrow(key, shift):
+            return True
         if key == Qt.Key.Key_Menu or (key == Qt.Key.Key_F10 and shift):
             self.open_context_menu()
             return True

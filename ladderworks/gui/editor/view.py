@@ -88,7 +88,6 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         self.function_name = "TMR"
         self.cursor_cell: tuple[int, int, int] = (0, 0, 0)  # network, row, col
         self.selection: tuple[int, Selection] | None = None
-        self._shift_anchor: tuple[int, int, int] | None = None  # Shift+arrows: the fixed corner
         self.function_dialog: FunctionDialog | None = None
         self.context_actions: list[QAction | None] = []
         self._zoom = 1.0
@@ -419,7 +418,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         if event.button() == Qt.MouseButton.LeftButton:
             self.setFocus()
             self.cursor_cell = (hit.network, hit.row, hit.col)
-            self._shift_anchor = None
+            self.keys.anchor = None  # a click ends a Shift+arrows selection
             self.interaction.mouse_press(event, hit)
             index = min(self.cursor_cell[0], len(self.networks) - 1)
             net = self.networks[index]
@@ -484,35 +483,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         """Arrows move, letters pick tools, ENTER edits, SPACE uses the tool, DEL deletes."""
         key = event.key()
         index, row, col = self.cursor_cell
-        net = self.networks[index]
-        moves = {
-            Qt.Key.Key_Left: (0, -1),
-            Qt.Key.Key_Right: (0, 1),
-            Qt.Key.Key_Up: (-1, 0),
-            Qt.Key.Key_Down: (1, 0),
-        }
-        if key in moves and event.modifiers() & Qt.KeyboardModifier.ShiftModifier:
-            drow, dcol = moves[Qt.Key(key)]
-            if self._shift_anchor is None or self._shift_anchor[0] != index:
-                self._shift_anchor = (index, row, col)
-            self.move_cursor(index, max(row + drow, 0), max(col + dcol, 0))
-            self.select_rectangle(index, self._shift_anchor[1:], self.cursor_cell[1:])
-            return
-        if key not in (Qt.Key.Key_Shift, Qt.Key.Key_Control, Qt.Key.Key_Alt, Qt.Key.Key_Meta):
-            self._shift_anchor = None  # any other key ends a Shift+arrows selection
-        if self.keys.handle(event):
-            return
-        if key in moves:
-            drow, dcol = moves[Qt.Key(key)]
-            row += drow
-            col += dcol
-            if row < 0 and index > 0:
-                index -= 1
-                row = self.networks[index].rows - 1
-            elif row >= net.rows + SPARE_ROWS and index < len(self.networks) - 1:
-                index += 1
-                row = 0
-            self.move_cursor(index, row, col)
+        if self.keys.handle(event):  # arrows, Shift+arrows, Home/End, pages, the menu key
             return
         if key in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
             self.edit_at_cursor()
