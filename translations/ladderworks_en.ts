@@ -2128,103 +2128,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="244"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="245"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="246"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="247"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
         <source>Why?</source>
         <translation>Why?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="250"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="253"/>
         <source>Back to live</source>
         <translation>Back to live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="254"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Zoom out (Ctrl+wheel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="254"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Zoom in (Ctrl+wheel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="257"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
         <source>{0} %</source>
         <translation>{0} %</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="309"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="311"/>
         <location filename="../ladderworks/gui/docks/online.py" line="142"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="315"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="317"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="317"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="319"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="319"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="321"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="360"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="362"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="404"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="406"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="414"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="416"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="423"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="425"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
