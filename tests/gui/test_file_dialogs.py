@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import shutil
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from PySide6.QtCore import QEvent, QSettings, QStandardPaths, QTimer
+from PySide6.QtCore import QEvent, QTimer
 from PySide6.QtWidgets import QApplication, QFileDialog, QListView, QTreeView
 from pytestqt.qtbot import QtBot
 
@@ -17,18 +16,13 @@ from ladderworks.paths import EXAMPLES
 
 
 @pytest.fixture(autouse=True)
-def qt_dialog_state(tmp_path: Path) -> Iterator[Path]:
-    """Qt's file dialog keeps its state (sidebar width, columns) in QtProject.conf: in a
-    temporary folder, so the user's is never touched nor read."""
-    folder = tmp_path / "qt-config"
-    folder.mkdir()  # as a dialog once shrunk by hand left it: a narrow places list
-    (folder / "QtProject.conf").write_text(
-        "[FileDialog]\nsidebarWidth=60\nviewMode=Detail\nshortcuts=file:\n", encoding="utf-8")
-    native, scope = QSettings.Format.NativeFormat, QSettings.Scope.UserScope
-    QSettings.setPath(native, scope, str(folder))
-    yield folder
-    QSettings.setPath(native, scope, QStandardPaths.writableLocation(
-        QStandardPaths.StandardLocation.GenericConfigLocation))
+def narrow_places(qt_dialog_state: Path) -> Path:
+    """Qt's saved state (kept in a temporary folder by conftest) as a dialog once shrunk by
+    hand left it: a narrow places list."""
+    state = qt_dialog_state / "QtProject.conf"
+    state.write_text("[FileDialog]\nsidebarWidth=60\nviewMode=Detail\nshortcuts=file:\n",
+                     encoding="utf-8")
+    return state
 
 
 LONG_NAME = "spindle_override_with_long_name.LAD"  # fits a 720-px dialog
@@ -58,7 +52,7 @@ def _columns_when_listed(seen: dict[str, object]) -> None:
 @pytest.mark.parametrize("language", ["en", "tr"])
 def test_open_dialog_shows_name_size_type_and_date_whole(
         window: MainWindow, qtbot: QtBot, tmp_path: Path, language: str,
-        qt_dialog_state: Path) -> None:
+        narrow_places: Path) -> None:
     program = tmp_path / LONG_NAME
     shutil.copy(EXAMPLES / "spindle_override.LAD", program)
     assert window.load(program)
@@ -77,8 +71,7 @@ def test_open_dialog_shows_name_size_type_and_date_whole(
     assert places >= names  # "Bilgisayar" (Computer) whole
     assert seen["size"].boundedTo(seen["room"]) == seen["size"]  # type: ignore[attr-defined]
     QApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)  # the dialog saves its state
-    state = (qt_dialog_state / "QtProject.conf").read_text(encoding="utf-8")
-    assert "treeViewHeader" in state  # saved there, not in the user's folder
+    assert "treeViewHeader" in narrow_places.read_text(encoding="utf-8")  # not the user's
     window.set_language("en")
 
 
