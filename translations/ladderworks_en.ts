@@ -4,102 +4,107 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="119"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
         <source>Alarm message file</source>
         <translation>Alarm message file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm files (*.dat);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="163"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>The program&apos;s messages (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="166"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm file... uses an AlarmMsg.dat instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="170"/>
         <source>No alarm file</source>
         <translation>No alarm file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="160"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="172"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} messages</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="176"/>
         <source>{0} lines with problems</source>
         <translation>{0} lines with problems</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="183"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="201"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(no message {0} in the alarm file)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="223"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="235"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
+        <source>Seen at {0}</source>
+        <translation>Seen at {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="281"/>
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="282"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="284"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="286"/>
         <source>Alarm file...</source>
         <translation>Alarm file...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
         <source>PLC time</source>
         <translation>PLC time</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
         <source>Clock</source>
         <translation>Clock</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="250"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="293"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -1476,29 +1481,29 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <location filename="../ladderworks/gui/main_window.py" line="190"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="393"/>
+        <location filename="../ladderworks/gui/main_window.py" line="394"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="400"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="404"/>
+        <location filename="../ladderworks/gui/main_window.py" line="405"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="429"/>
-        <location filename="../ladderworks/gui/main_window.py" line="254"/>
-        <location filename="../ladderworks/gui/main_window.py" line="400"/>
+        <location filename="../ladderworks/gui/main_window.py" line="255"/>
+        <location filename="../ladderworks/gui/main_window.py" line="401"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -1637,32 +1642,32 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="363"/>
+        <location filename="../ladderworks/gui/main_window.py" line="364"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="379"/>
+        <location filename="../ladderworks/gui/main_window.py" line="380"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="430"/>
+        <location filename="../ladderworks/gui/main_window.py" line="431"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="433"/>
+        <location filename="../ladderworks/gui/main_window.py" line="434"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="465"/>
+        <location filename="../ladderworks/gui/main_window.py" line="466"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="466"/>
+        <location filename="../ladderworks/gui/main_window.py" line="467"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2123,88 +2128,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="195"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="244"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="196"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="245"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="197"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="246"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="198"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="247"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="199"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="200"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
         <source>Why?</source>
         <translation>Why?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="250"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="204"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="253"/>
         <source>Back to live</source>
         <translation>Back to live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="205"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="254"/>
+        <source>Zoom out (Ctrl+wheel)</source>
+        <translation>Zoom out (Ctrl+wheel)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
+        <source>Zoom in (Ctrl+wheel)</source>
+        <translation>Zoom in (Ctrl+wheel)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="257"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <source>{0} %</source>
+        <translation>{0} %</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="311"/>
         <location filename="../ladderworks/gui/docks/online.py" line="142"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="317"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="319"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="259"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="321"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="362"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="406"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="416"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="425"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
@@ -2445,62 +2465,62 @@
 <context>
     <name>Print</name>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="46"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="47"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="71"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="72"/>
         <source>Printing the ladder…</source>
         <translation>Printing the ladder…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="72"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="73"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="154"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="155"/>
         <source>Print preview</source>
         <translation>Print preview</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="172"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
         <source>Export PDF</source>
         <translation>Export PDF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="174"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF files (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="181"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
         <source>&amp;Print...</source>
         <translation>&amp;Print...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
         <source>Print pre&amp;view...</source>
         <translation>Print pre&amp;view...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
         <source>Export P&amp;DF...</source>
         <translation>Export P&amp;DF...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="190"/>
         <source>Printing was cancelled or failed</source>
         <translation>Printing was cancelled or failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="191"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="192"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} pages written to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="193"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="194"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} pages sent to the printer</translation>
     </message>
@@ -3022,52 +3042,57 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="109"/>
+        <source>Program symbol</source>
+        <translation>Program symbol</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
         <source>{0} signals</source>
         <translation>{0} signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
         <source>Signals</source>
         <translation>Signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
+        <source>In English</source>
+        <translation>In English</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="177"/>
+        <source>In Turkish</source>
+        <translation>In Turkish</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="179"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="173"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="180"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
-        <source>English</source>
-        <translation>English</translation>
+        <location filename="../ladderworks/gui/signal_list.py" line="181"/>
+        <source>Description</source>
+        <translation>Description</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="108"/>
-        <source>program symbol</source>
-        <translation>program symbol</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="162"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program symbols, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Address, symbol, name or words, e.g. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
-        <source>Turkish</source>
-        <translation>Turkish</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="184"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Double-click: use the address for the contact or coil at the cursor</translation>
     </message>

@@ -4,102 +4,107 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="119"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
         <source>Alarm message file</source>
         <translation>Alarm mesaj dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm dosyaları (*.dat);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="163"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>Programın mesajları (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="166"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm dosyası... bunun yerine bir AlarmMsg.dat kullanır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="170"/>
         <source>No alarm file</source>
         <translation>Alarm dosyası yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="160"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="172"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} mesaj</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="176"/>
         <source>{0} lines with problems</source>
         <translation>{0} satırda sorun var</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="183"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="201"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(alarm dosyasında {0} numaralı mesaj yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="223"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="235"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>Bit yeniden 0: RESET bu alarmı siler</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
+        <source>Seen at {0}</source>
+        <translation>Görüldüğü saat: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="281"/>
         <source>Alarms</source>
         <translation>ALARMLAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="282"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="241"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="284"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="286"/>
         <source>Alarm file...</source>
         <translation>Alarm dosyası...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
         <source>PLC time</source>
         <translation>PLC zamanı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
         <source>Clock</source>
         <translation>Saat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="250"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="293"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
@@ -1476,29 +1481,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="189"/>
+        <location filename="../ladderworks/gui/main_window.py" line="190"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="393"/>
+        <location filename="../ladderworks/gui/main_window.py" line="394"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="400"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="404"/>
+        <location filename="../ladderworks/gui/main_window.py" line="405"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="429"/>
-        <location filename="../ladderworks/gui/main_window.py" line="254"/>
-        <location filename="../ladderworks/gui/main_window.py" line="400"/>
+        <location filename="../ladderworks/gui/main_window.py" line="255"/>
+        <location filename="../ladderworks/gui/main_window.py" line="401"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1637,32 +1642,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="363"/>
+        <location filename="../ladderworks/gui/main_window.py" line="364"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="379"/>
+        <location filename="../ladderworks/gui/main_window.py" line="380"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="430"/>
+        <location filename="../ladderworks/gui/main_window.py" line="431"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="433"/>
+        <location filename="../ladderworks/gui/main_window.py" line="434"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="465"/>
+        <location filename="../ladderworks/gui/main_window.py" line="466"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="466"/>
+        <location filename="../ladderworks/gui/main_window.py" line="467"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2123,88 +2128,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="195"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="244"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="196"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="245"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="197"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="246"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="198"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="247"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="199"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="200"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="250"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="204"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="253"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="205"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="254"/>
+        <source>Zoom out (Ctrl+wheel)</source>
+        <translation>Uzaklaştır (Ctrl+tekerlek)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
+        <source>Zoom in (Ctrl+wheel)</source>
+        <translation>Yakınlaştır (Ctrl+tekerlek)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="257"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <source>{0} %</source>
+        <translation>%{0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="311"/>
         <location filename="../ladderworks/gui/docks/online.py" line="142"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="317"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="319"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="259"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="321"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="362"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="406"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="416"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="425"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
@@ -2445,62 +2465,62 @@
 <context>
     <name>Print</name>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="46"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="47"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="71"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="72"/>
         <source>Printing the ladder…</source>
         <translation>Ladder yazdırılıyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="72"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="73"/>
         <source>Cancel</source>
         <translation>İptal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="154"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="155"/>
         <source>Print preview</source>
         <translation>Baskı önizleme</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="172"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
         <source>Export PDF</source>
         <translation>PDF olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="174"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF dosyaları (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="181"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
         <source>&amp;Print...</source>
         <translation>&amp;Yazdır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
         <source>Print pre&amp;view...</source>
         <translation>Baskı ön&amp;izleme...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
         <source>Export P&amp;DF...</source>
         <translation>P&amp;DF olarak dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="190"/>
         <source>Printing was cancelled or failed</source>
         <translation>Yazdırma iptal edildi veya başarısız oldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="191"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="192"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} sayfa {1} dosyasına yazıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="193"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="194"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} sayfa yazıcıya gönderildi</translation>
     </message>
@@ -3022,52 +3042,57 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="160"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="109"/>
+        <source>Program symbol</source>
+        <translation>Program sembolü</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
         <source>{0} signals</source>
         <translation>{0} sinyal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
         <source>Signals</source>
         <translation>Sinyaller</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
+        <source>In English</source>
+        <translation>İngilizce</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="177"/>
+        <source>In Turkish</source>
+        <translation>Türkçe</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="179"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="173"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="180"/>
         <source>Name</source>
         <translation>Ad</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
-        <source>English</source>
-        <translation>İngilizce</translation>
+        <location filename="../ladderworks/gui/signal_list.py" line="181"/>
+        <source>Description</source>
+        <translation>Açıklama</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="108"/>
-        <source>program symbol</source>
-        <translation>program sembolü</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="162"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program sembolü, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="169"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Adres, sembol, ad veya sözcükler, örn. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="170"/>
-        <source>Turkish</source>
-        <translation>Türkçe</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="184"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Çift tıklama: adresi imleçteki kontak veya bobine ver</translation>
     </message>

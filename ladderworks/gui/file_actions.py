@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QDateTime, QLocale
-from PySide6.QtWidgets import QFileDialog, QMessageBox
+from PySide6.QtWidgets import QMessageBox
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, print_program
@@ -17,7 +17,7 @@ from ladderworks.core.il.textform import EncodeError
 from ladderworks.core.ladder.convert import ladder_to_program
 from ladderworks.core.plc.parameters import format_parameters, parameters_beside
 from ladderworks.core.plc.timer_table import dialect_of
-from ladderworks.gui import questions
+from ladderworks.gui import file_dialogs, questions
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.document import (
     DiskState,
@@ -206,7 +206,7 @@ class FileActions(_Window):
         """File > Open."""
         if not self.maybe_save():
             return
-        name, _ = QFileDialog.getOpenFileName(
+        name = file_dialogs.open_file_name(
             self, translate("MainWindow", "Open program"),
             str(self.path.parent if self.path else ""),
             translate(
@@ -341,7 +341,7 @@ class FileActions(_Window):
 
     def save_as_dialog(self) -> bool:
         """File > Save As."""
-        name, _ = QFileDialog.getSaveFileName(
+        name = file_dialogs.save_file_name(
             self, translate("MainWindow", "Save program"), str(self.path or "program.LAD"),
             translate("MainWindow", "Ladder programs (*.LAD *.lad);;All files (*)"))
         return bool(name) and self.save_to(name)
@@ -350,7 +350,7 @@ class FileActions(_Window):
         """File > Import .MOD: open mnemonic text as a new, untitled ladder."""
         if not self.maybe_save():
             return
-        name, _ = QFileDialog.getOpenFileName(
+        name = file_dialogs.open_file_name(
             self, translate("MainWindow", "Import .MOD"), "",
             translate("MainWindow", "Mnemonic programs (*.MOD *.mod);;All files (*)"))
         if name:
@@ -368,7 +368,7 @@ class FileActions(_Window):
     def export_mod_dialog(self) -> None:
         """File > Export .MOD."""
         base = self.path.with_suffix(".MOD") if self.path else Path("program.MOD")
-        name, _ = QFileDialog.getSaveFileName(
+        name = file_dialogs.save_file_name(
             self, translate("MainWindow", "Export .MOD"), str(base),
             translate("MainWindow", "Mnemonic programs (*.MOD);;All files (*)"))
         if name:

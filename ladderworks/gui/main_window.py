@@ -115,6 +115,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.program_opened.connect(self.plc_docks.alarms.use_program)
         self.names_menu.changed.connect(self.editor.relayout)
         self.names_menu.changed.connect(self.plc_docks.diagnostic.view.relayout)
+        self.plc_docks.diagnostic.remember_zoom(self.settings)  # its zoom, saved
         self.cross_reference = cross_reference.install(self, self.menus, self.editor,
                                                        self.errors)
         self.printing = PrintActions(self, self.menus)  # File › Print, Export PDF

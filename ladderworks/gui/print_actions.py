@@ -16,9 +16,10 @@ from PySide6.QtGui import (
     QPdfWriter,
 )
 from PySide6.QtPrintSupport import QPrintDialog, QPrinter, QPrintPreviewDialog
-from PySide6.QtWidgets import QDialog, QFileDialog, QMainWindow, QProgressDialog
+from PySide6.QtWidgets import QDialog, QMainWindow, QProgressDialog
 
 from ladderworks.core.il.program import Program
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.console_menus import ConsoleMenus
 from ladderworks.gui.print_pages import PRINT_DPI, LadderPages, PrintJob, program_title
 
@@ -168,7 +169,7 @@ class PrintActions(QObject):
         """File › Export PDF…: a file name, then the pages."""
         path = self.console.path
         suggested = str(Path(path).with_suffix(".pdf")) if path is not None else ""
-        name, _ = QFileDialog.getSaveFileName(
+        name = file_dialogs.save_file_name(
             self.console, translate("Print", "Export PDF"), suggested,
             translate("Print", "PDF files (*.pdf)"))
         if name:

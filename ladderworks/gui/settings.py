@@ -82,6 +82,18 @@ class Settings:
         fit = str(self._store.value("view/fit_width", "false")).lower() == "true"
         return factor, fit
 
+    def diagnostic_zoom(self, default: float) -> float:
+        """The PLC diagnostic's saved zoom (`default` at first)."""
+        try:
+            return float(self._store.value("view/diagnostic_zoom", default))  # type: ignore[arg-type]
+        except (TypeError, ValueError):
+            return default
+
+    def set_diagnostic_zoom(self, factor: float) -> None:
+        """Remember the PLC diagnostic's zoom."""
+        self._store.setValue("view/diagnostic_zoom", factor)
+        self._store.sync()
+
     def set_zoom(self, factor: float, fit_width: bool) -> None:
         """Remember the ladder's zoom."""
         self._store.setValue("view/zoom", factor)

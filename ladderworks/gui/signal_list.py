@@ -26,7 +26,8 @@ from ladderworks.gui.translation import ui_is_turkish
 
 translate = QCoreApplication.translate
 
-_COLUMNS = 4  # address, name, English, Turkish (a program symbol: address, symbol, comment)
+_COLUMNS = 4  # address, name, description in the UI language, description in the other one
+# (a program symbol: address, symbol, its comment; the other language is left empty)
 MAX_SYMBOL_ROWS = 500  # program symbols listed for one query (a real program has 12,000+)
 
 
@@ -105,11 +106,11 @@ class SignalListDock(Retranslating, QDockWidget):
         self.table.setRowCount(len(named) + len(found))
         turkish_first = ui_is_turkish()
         rows: list[tuple[tuple[str, ...], str]] = []
-        program = translate("SignalList", "program symbol")
+        program = translate("SignalList", "Program symbol")
         for address, entry in named:
             comment = " / ".join(entry.comments)
-            rows.append(((str(address), entry.symbol, comment, program),
-                         "\n".join(t for t in (entry.symbol, *entry.comments) if t)))
+            rows.append(((str(address), entry.symbol, comment, ""),
+                         "\n".join(t for t in (program, entry.symbol, *entry.comments) if t)))
         for signal in found:
             own, other = ((signal.turkish, signal.english) if turkish_first
                           else (signal.english, signal.turkish))
@@ -119,6 +120,10 @@ class SignalListDock(Retranslating, QDockWidget):
             for column, text in enumerate(texts):
                 item = QTableWidgetItem(text)
                 item.setToolTip(tip)
+                if row < len(named):  # the program's own symbols: in italics
+                    font = item.font()
+                    font.setItalic(True)
+                    item.setFont(font)
                 self.table.setItem(row, column, item)
         for column in range(_COLUMNS - 1):
             self.table.resizeColumnToContents(column)
@@ -167,11 +172,14 @@ class SignalListDock(Retranslating, QDockWidget):
         self.setWindowTitle(translate("SignalList", "Signals"))
         self.query.setPlaceholderText(
             translate("SignalList", "Address, symbol, name or words, e.g. G8.4, SPL, acil"))
-        english, turkish = translate("SignalList", "English"), translate("SignalList", "Turkish")
+        # A program symbol's comment is its description, whatever language it is written in.
+        other = (translate("SignalList", "In English") if ui_is_turkish()
+                 else translate("SignalList", "In Turkish"))
         self.table.setHorizontalHeaderLabels([
             translate("SignalList", "Address"),
             translate("SignalList", "Name"),
-            *((turkish, english) if ui_is_turkish() else (english, turkish)),
+            translate("SignalList", "Description"),
+            other,
         ])
         self.table.setToolTip(translate(
             "SignalList", "Double-click: use the address for the contact or coil at the cursor"))

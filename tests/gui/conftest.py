@@ -9,7 +9,7 @@ from pathlib import Path
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
 import pytest
-from PySide6.QtCore import QEvent, QPoint, QSettings, Qt
+from PySide6.QtCore import QEvent, QPoint, QSettings, QStandardPaths, Qt
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QApplication, QMessageBox, QWidget
 from pytestqt.qtbot import QtBot
@@ -29,6 +29,20 @@ def data_folder(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     folder = tmp_path / "xdg-data"
     monkeypatch.setenv("XDG_DATA_HOME", str(folder))
     return folder
+
+
+@pytest.fixture(autouse=True)
+def qt_dialog_state(tmp_path: Path) -> Iterator[Path]:
+    """Qt's own file dialog keeps its state in QtProject.conf: in a temporary folder, so the
+    user's is never read nor written."""
+    folder = tmp_path / "qt-config"
+    folder.mkdir()
+    native, scope = QSettings.Format.NativeFormat, QSettings.Scope.UserScope
+    QSettings.setPath(native, scope, str(folder))
+    yield folder
+    QApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)  # dialogs save on deletion
+    QSettings.setPath(native, scope, QStandardPaths.writableLocation(
+        QStandardPaths.StandardLocation.GenericConfigLocation))
 
 
 @pytest.fixture

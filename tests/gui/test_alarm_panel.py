@@ -6,6 +6,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from PySide6.QtCore import QRect, Qt
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
@@ -120,3 +121,30 @@ def test_turkish(qtbot: QtBot, panel: tuple[PlcSession, AlarmDock]) -> None:
         assert dock.tree.headerItem().text(4) == "Mesaj"
     finally:
         language.apply("en")
+
+
+def test_a_narrow_dock_leaves_the_message_readable(
+        qtbot: QtBot, panel: tuple[PlcSession, AlarmDock]) -> None:
+    session, dock = panel
+    dock.resize(290, 170)  # the dock's width on a 1024×600 panel
+    session.set_bit(MOVING, 1)
+    session.run_scans(1)
+    qtbot.waitUntil(lambda: len(dock.shown_rows()) == 1)
+    tree = dock.tree
+    qtbot.waitUntil(lambda: tree.viewport().width() < 290)
+    header = tree.header()
+    shown = [column for column in range(alarm_panel.COLUMNS) if not tree.isColumnHidden(column)]
+    assert sum(header.sectionSize(column) for column in shown) <= tree.viewport().width()
+    message = header.sectionSize(alarm_panel.MESSAGE)
+    metrics = tree.fontMetrics()
+    assert message >= metrics.averageCharWidth() * alarm_panel.MESSAGE_CHARS
+    item = tree.topLevelItem(0)
+    text = item.text(alarm_panel.MESSAGE)
+    wrapped = metrics.boundingRect(QRect(0, 0, message - 8, 10000), Qt.TextFlag.TextWordWrap,
+                                   text)
+    assert tree.visualItemRect(item).height() >= wrapped.height()  # every line shows
+    assert item.toolTip(alarm_panel.MESSAGE) == text == "X EKSENİ HAREKET EDİYOR / X AXIS IS MOVING"
+    assert "Seen at" in item.toolTip(2)  # the clock, when its column is hidden
+    dock.resize(900, 170)
+    qtbot.waitUntil(lambda: not any(tree.isColumnHidden(c) for c in range(alarm_panel.COLUMNS)))
+    assert header.sectionSize(alarm_panel.MESSAGE) > 500  # a wide dock: all of it on one line

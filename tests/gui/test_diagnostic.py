@@ -2,11 +2,17 @@
 
 from __future__ import annotations
 
+import pytest
+from PySide6.QtCore import QPoint, QPointF, Qt
+from PySide6.QtGui import QWheelEvent
+from PySide6.QtWidgets import QApplication, QWidget
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
 from ladderworks.core.il import parse
+from ladderworks.gui.docks import diagnostic
 from ladderworks.gui.main_window import MainWindow
+from ladderworks.gui.settings import Settings
 from tests.gui.plc_docks_help import plc_docks
 
 TIMER = """%@3
@@ -125,4 +131,49 @@ def test_a_long_state_does_not_widen_the_dock(qtbot: QtBot, window: MainWindow) 
     assert dock.minimumSizeHint().width() <= 520
     assert dock.state.isVisible()
     dock.back_to_live()
+    window.set_language("en")
+
+
+def _wheel(view: QWidget, notches: int, modifiers: Qt.KeyboardModifier) -> None:
+    """Turn the mouse wheel over the middle of `view` by `notches` (positive: away)."""
+    middle = QPointF(view.width() / 2, view.height() / 2)
+    event = QWheelEvent(middle, QPointF(view.mapToGlobal(middle.toPoint())), QPoint(),
+                        QPoint(0, 120 * notches), Qt.MouseButton.NoButton, modifiers,
+                        Qt.ScrollPhase.NoScrollPhase, False)
+    QApplication.sendEvent(view, event)
+
+
+def test_zoom_buttons_wheel_limits_and_settings(qtbot: QtBot, window: MainWindow,
+                                                settings: Settings) -> None:
+    docks = loaded(window, TIMER)
+    dock, view = docks.diagnostic, docks.diagnostic.view
+    assert view.zoom() == pytest.approx(diagnostic.VIEW_SCALE)
+    assert dock.zoom_label.text() == "62 %"
+    before = view.mapFromScene(view.cell_rect(0, (0, 1)).topLeft()).x()
+    dock.zoom_in_button.click()
+    assert view.zoom() == pytest.approx(diagnostic.VIEW_SCALE * diagnostic.ZOOM_STEP)
+    assert view.mapFromScene(view.cell_rect(0, (0, 1)).topLeft()).x() > before  # drawn larger
+    assert dock.zoom_label.text() == "78 %"
+    _wheel(view.viewport(), 1, Qt.KeyboardModifier.ControlModifier)
+    assert view.zoom() == pytest.approx(diagnostic.VIEW_SCALE * diagnostic.ZOOM_STEP ** 2)
+    _wheel(view.viewport(), -1, Qt.KeyboardModifier.NoModifier)  # the wheel alone scrolls
+    assert view.zoom() == pytest.approx(diagnostic.VIEW_SCALE * diagnostic.ZOOM_STEP ** 2)
+    for _step in range(12):
+        dock.zoom_in_button.click()
+    assert view.zoom() == pytest.approx(diagnostic.ZOOM_MAX)
+    assert not dock.zoom_in_button.isEnabled() and dock.zoom_out_button.isEnabled()
+    for _step in range(20):
+        _wheel(view.viewport(), -1, Qt.KeyboardModifier.ControlModifier)
+    assert view.zoom() == pytest.approx(diagnostic.ZOOM_MIN)
+    assert not dock.zoom_out_button.isEnabled() and dock.zoom_in_button.isEnabled()
+    dock.zoom_in_button.click()
+    assert settings.diagnostic_zoom(1.0) == pytest.approx(diagnostic.ZOOM_MIN
+                                                          * diagnostic.ZOOM_STEP)
+    again = MainWindow(settings, window.language)  # the next start: the zoom remembered
+    qtbot.addWidget(again)
+    assert again.plc_docks.diagnostic.view.zoom() == pytest.approx(diagnostic.ZOOM_MIN
+                                                                  * diagnostic.ZOOM_STEP)
+    window.set_language("tr")
+    assert dock.zoom_in_button.toolTip() == "Yakınlaştır (Ctrl+tekerlek)"
+    assert dock.zoom_label.text() == f"%{round(view.zoom() * 100)}"  # the Turkish way
     window.set_language("en")

@@ -6,10 +6,10 @@ import difflib
 from pathlib import Path
 
 import pytest
-from PySide6.QtWidgets import QFileDialog
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.il import parse_bytes
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.paths import EXAMPLES
 from tests.gui.conftest import Answers, Drawer
@@ -28,8 +28,8 @@ def _save(window: MainWindow, qtbot: QtBot) -> None:
 def _save_as(window: MainWindow, qtbot: QtBot, monkeypatch: pytest.MonkeyPatch,
              target: Path) -> None:
     """File > Save As, choosing `target` in the dialog."""
-    monkeypatch.setattr(QFileDialog, "getSaveFileName",
-                        lambda *_a, **_k: (str(target), "Ladder programs (*.LAD *.lad)"))
+    monkeypatch.setattr(file_dialogs, "save_file_name",
+                        lambda *_a, **_k: str(target))
     with qtbot.waitSignal(window.file_saved, timeout=20000):
         window.actions_by_name["action_save_as"].trigger()
 

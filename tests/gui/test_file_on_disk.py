@@ -7,9 +7,9 @@ import stat
 from pathlib import Path
 
 import pytest
-from PySide6.QtWidgets import QFileDialog
 from pytestqt.qtbot import QtBot
 
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.files import default_mode
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.paths import EXAMPLES
@@ -34,8 +34,8 @@ def _changed_outside(window: MainWindow, qtbot: QtBot, path: Path) -> None:
 
 
 def _choose_in_save_dialog(monkeypatch: pytest.MonkeyPatch, target: Path) -> None:
-    monkeypatch.setattr(QFileDialog, "getSaveFileName",
-                        lambda *_a, **_k: (str(target), "Ladder programs (*.LAD *.lad)"))
+    monkeypatch.setattr(file_dialogs, "save_file_name",
+                        lambda *_a, **_k: str(target))
 
 
 @pytest.mark.parametrize("answer", ["cancel", "keep", "reload", "save_as"])

@@ -8,11 +8,12 @@ from pathlib import Path
 
 import pytest
 from PySide6.QtCore import QPoint, Qt
-from PySide6.QtWidgets import QApplication, QFileDialog, QMenu
+from PySide6.QtWidgets import QApplication, QMenu
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
 from ladderworks.core.ladder import Coil, Contact
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.tools import Tool
 from ladderworks.paths import EXAMPLES
@@ -30,7 +31,7 @@ def _focused_grid(window: MainWindow, qtbot: QtBot) -> None:
 def test_a_network_is_built_from_an_empty_file_with_the_keyboard_alone(
         window: MainWindow, qtbot: QtBot, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     target = tmp_path / "keys.LAD"
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *_a, **_k: (str(target), ""))
+    monkeypatch.setattr(file_dialogs, "save_file_name", lambda *_a, **_k: str(target))
     view = window.editor
     _focused_grid(window, qtbot)
     assert view.cursor_cell == (0, 0, 0)

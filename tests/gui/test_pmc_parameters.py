@@ -7,9 +7,10 @@ import sys
 from pathlib import Path
 
 import pytest
-from PySide6.QtWidgets import QFileDialog, QMessageBox
+from PySide6.QtWidgets import QMessageBox
 from pytestqt.qtbot import QtBot
 
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.docks.table_entries import TableKind
 from ladderworks.gui.docks.tables import PlcTablesDock
 from ladderworks.gui.main_window import MainWindow
@@ -21,8 +22,8 @@ PROGRAM = "%@3\nRD R1.4\nTMR 1\nWRT R1.7\n%\n"
 
 def open_with_dialog(window: MainWindow, monkeypatch: pytest.MonkeyPatch, path: Path) -> None:
     """File > Open, choosing `path` in the file dialog."""
-    monkeypatch.setattr(QFileDialog, "getOpenFileName",
-                        lambda *_args, **_kwargs: (str(path), ""))
+    monkeypatch.setattr(file_dialogs, "open_file_name",
+                        lambda *_args, **_kwargs: str(path))
     window.actions_by_name["action_open"].trigger()
 
 

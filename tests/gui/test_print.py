@@ -7,12 +7,12 @@ from pathlib import Path
 
 import pytest
 from PySide6.QtPrintSupport import QPrintDialog, QPrinter
-from PySide6.QtWidgets import QDialog, QFileDialog, QProgressDialog
+from PySide6.QtWidgets import QDialog, QProgressDialog
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
 from ladderworks.core.ladder.model import Contact, LadderNetwork
-from ladderworks.gui import print_actions
+from ladderworks.gui import file_dialogs, print_actions
 from ladderworks.gui.editor.geometry import network_width
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.print_pages import LadderPages, PrintJob, print_height
@@ -38,8 +38,8 @@ def test_export_pdf_of_a_seed_example(qtbot: QtBot, window: MainWindow, tmp_path
                                       monkeypatch: pytest.MonkeyPatch) -> None:
     assert window.load(EXAMPLES / "spindle_override.LAD")
     target = tmp_path / "spindle"
-    monkeypatch.setattr(QFileDialog, "getSaveFileName",
-                        lambda *_args, **_kwargs: (str(target), ""))
+    monkeypatch.setattr(file_dialogs, "save_file_name",
+                        lambda *_args, **_kwargs: str(target))
     window.actions_by_name["action_export_pdf"].trigger()
     pdf = tmp_path / "spindle.pdf"  # the extension is added
     data = pdf.read_bytes()

@@ -8,12 +8,13 @@ from pathlib import Path
 
 import pytest
 from PySide6.QtCore import QSettings, Qt
-from PySide6.QtWidgets import QApplication, QFileDialog, QMessageBox
+from PySide6.QtWidgets import QApplication, QMessageBox
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import Address, Area, parse_address
 from ladderworks.core.il import Program, parse
 from ladderworks.core.ladder import Contact
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.docks.tables import TableKind
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.main_window import MainWindow
@@ -43,12 +44,12 @@ def opened(qapp: QApplication, tmp_path_factory: pytest.TempPathFactory
     window.show()
     filters: list[str] = []
 
-    def choose(*args: object) -> tuple[str, str]:
+    def choose(*args: object) -> str:
         filters.append(str(args[3]))
-        return str(_x22()), ""
+        return str(_x22())
 
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(QFileDialog, "getOpenFileName", staticmethod(choose))
+        patch.setattr(file_dialogs, "open_file_name", choose)
         patch.setattr(QMessageBox, "question", staticmethod(
             lambda *_a, **_k: (_ for _ in ()).throw(AssertionError("unexpected question"))))
         window.actions_by_name["action_open"].trigger()

@@ -8,6 +8,7 @@ from pytestqt.qtbot import QtBot
 from ladderworks.core.address import parse_address
 from ladderworks.core.ladder import Contact
 from ladderworks.core.signals import load_signals
+from ladderworks.core.symbols import SymbolTable, add_entry
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.paths import EXAMPLES
 
@@ -67,7 +68,25 @@ def test_signal_list_is_reachable_and_translated(window: MainWindow, qtbot: QtBo
     dock = window.signals_dock
     assert dock.windowTitle() == "Sinyaller"
     dock.query.setText("G8.4")  # in Turkish the Turkish description comes first
-    assert dock.table.horizontalHeaderItem(2).text() == "Türkçe"
+    assert dock.table.horizontalHeaderItem(2).text() == "Açıklama"
+    assert dock.table.horizontalHeaderItem(3).text() == "İngilizce"
+    assert dock.table.item(0, 3).text() == "EMERGENCY STOP"
     assert dock.table.item(0, 2).text().startswith("ACİL")
     with qtbot.waitSignal(window.language_changed):
         window.actions_by_name["action_language_en"].trigger()
+
+
+def test_program_symbols_sit_under_name_and_description(window: MainWindow) -> None:
+    symbols = SymbolTable()
+    assert add_entry(symbols, "R100.0", "SPDLRDY", ("SPINDLE READY",))
+    dock = window.signals_dock
+    dock.set_symbols(symbols)
+    dock.query.setText("SPDL")
+    headers = [dock.table.horizontalHeaderItem(column).text() for column in range(4)]
+    assert headers == ["Address", "Name", "Description", "In Turkish"]
+    assert dock.row_texts(0) == ["R100.0", "SPDLRDY", "SPINDLE READY", ""]
+    assert dock.table.item(0, 1).font().italic()
+    assert dock.table.item(0, 1).toolTip().startswith("Program symbol")
+    dock.query.setText("acil")  # a manual's signal: its English under Description, then Turkish
+    assert dock.row_texts(0)[2:] == ["EMERGENCY STOP", dock.signal_at_row(0).turkish]
+    assert not dock.table.item(0, 1).font().italic()

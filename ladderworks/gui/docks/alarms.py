@@ -5,11 +5,11 @@ from __future__ import annotations
 from datetime import datetime
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QLocale, Qt
+from PySide6.QtCore import QCoreApplication, QEvent, QLocale, QObject, QRect, QSize, Qt
 from PySide6.QtGui import QAction, QBrush, QColor
 from PySide6.QtWidgets import (
     QDockWidget,
-    QFileDialog,
+    QHeaderView,
     QLabel,
     QToolBar,
     QTreeWidget,
@@ -22,6 +22,7 @@ from ladderworks import paths
 from ladderworks.core.alarms import ActiveAlarm, AlarmTable, format_number, load_alarm_file
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il.program import Program
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
@@ -31,6 +32,10 @@ translate = QCoreApplication.translate
 
 DEFAULT_ALARM_FILE = paths.alarm_file()
 COLUMNS = 5  # number, address, PLC time, clock, message
+MESSAGE = COLUMNS - 1
+NARROW_HIDES = (3, 1)  # a narrow dock drops the clock, then the bit (the number names it)
+MESSAGE_CHARS = 24  # the message keeps room for this many characters before a column goes
+TEXT_MARGIN = 4  # a cell's text from its edge
 
 
 def plc_time_text(ms: int) -> str:
@@ -86,8 +91,15 @@ class AlarmDock(Retranslating, QDockWidget):
         self.tree.setColumnCount(COLUMNS)
         self.tree.setRootIsDecorated(False)
         self.tree.setAlternatingRowColors(True)
-        self.tree.setUniformRowHeights(True)
+        self.tree.setWordWrap(True)  # a long message wraps in its column (tooltip: all of it)
+        self.tree.setUniformRowHeights(False)
+        header = self.tree.header()
+        header.setStretchLastSection(True)  # the message takes the room the others leave
+        for column in range(MESSAGE):
+            header.setSectionResizeMode(column, QHeaderView.ResizeMode.ResizeToContents)
+        header.setSectionResizeMode(MESSAGE, QHeaderView.ResizeMode.Stretch)
         layout.addWidget(self.tree, 1)
+        self.tree.viewport().installEventFilter(self)  # its width: columns and row heights
         self.setWidget(body)
         self._alarms: list[ActiveAlarm] = []
         session.alarms_changed.connect(self._on_alarms)
@@ -137,7 +149,7 @@ class AlarmDock(Retranslating, QDockWidget):
     def open_dialog(self) -> None:
         """File → Alarm file: choose an AlarmMsg.dat."""
         start = str(self.alarm_file or DEFAULT_ALARM_FILE)
-        path, _filter = QFileDialog.getOpenFileName(
+        path = file_dialogs.open_file_name(
             self,
             translate("AlarmPanel", "Alarm message file"),
             start,
@@ -222,9 +234,40 @@ class AlarmDock(Retranslating, QDockWidget):
                 item.setToolTip(
                     4, translate("AlarmPanel", "The bit is 0 again: RESET clears this alarm")
                 )
+            if seen is not None:  # the clock column may be hidden in a narrow dock
+                item.setToolTip(2, translate("AlarmPanel", "Seen at {0}").format(
+                    seen.strftime("%H:%M:%S")))
             self.tree.addTopLevelItem(item)
-        for column in range(COLUMNS - 1):
-            self.tree.resizeColumnToContents(column)
+        self._fit_columns()
+
+    def _fit_columns(self) -> None:
+        """Hide the clock, then the bit, while the message would have too little room; the
+        rows grow to the message wrapped in its column (a tree sizes rows unwrapped)."""
+        for column in NARROW_HIDES:
+            self.tree.setColumnHidden(column, False)
+        metrics = self.tree.fontMetrics()
+        width = self.tree.viewport().width()
+        header = self.tree.header()
+        used = sum(max(self.tree.sizeHintForColumn(column), header.sectionSizeHint(column))
+                   for column in range(MESSAGE))
+        for column in NARROW_HIDES:
+            if used <= width - metrics.averageCharWidth() * MESSAGE_CHARS:
+                break
+            used -= max(self.tree.sizeHintForColumn(column), header.sectionSizeHint(column))
+            self.tree.setColumnHidden(column, True)
+        text_width = max(width - used - 2 * TEXT_MARGIN, metrics.averageCharWidth())
+        room = QRect(0, 0, text_width, 1 << 20)
+        for row in range(self.tree.topLevelItemCount()):
+            item = self.tree.topLevelItem(row)
+            if item is not None:
+                lines = metrics.boundingRect(room, Qt.TextFlag.TextWordWrap, item.text(MESSAGE))
+                item.setSizeHint(MESSAGE, QSize(text_width, lines.height() + 2))
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        """The list's new width: fit the columns and the rows to it."""
+        if watched is self.tree.viewport() and event.type() == QEvent.Type.Resize:
+            self._fit_columns()
+        return super().eventFilter(watched, event)
 
     def shown_rows(self) -> list[list[str]]:
         """The texts of the list, row by row (for tests and for copying)."""

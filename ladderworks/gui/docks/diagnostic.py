@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, Signal
-from PySide6.QtGui import QBrush, QColor, QPainter
+from PySide6.QtGui import QBrush, QColor, QPainter, QTransform, QWheelEvent
 from PySide6.QtWidgets import (
     QCheckBox,
     QDockWidget,
@@ -13,6 +13,7 @@ from PySide6.QtWidgets import (
     QLabel,
     QLineEdit,
     QPushButton,
+    QToolButton,
     QVBoxLayout,
     QWidget,
 )
@@ -30,15 +31,20 @@ from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 from ladderworks.gui.retranslate import Retranslating
+from ladderworks.gui.settings import Settings
 from ladderworks.gui.symbol_text import name_and_text
 
 translate = QCoreApplication.translate
 
-VIEW_SCALE = 0.62
+VIEW_SCALE = 0.62  # the first zoom: a dock is narrower than the console
+ZOOM_MIN, ZOOM_MAX = 0.3, 2.0
+ZOOM_STEP = 1.25  # one button press or wheel notch
 
 
 class DiagnosticView(QGraphicsView):
     """A read-only ladder view: the console's network drawings with live overlays."""
+
+    zoom_changed = Signal(float)  # the new zoom factor
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -57,7 +63,35 @@ class DiagnosticView(QGraphicsView):
         self.comments = CommentedAddresses(self.describe_address)  # asked once per address
         self.layout_ = Layout(self.commented)
         self.paints = 0  # viewport paint events (the benchmark's repaint rate)
-        self.scale(VIEW_SCALE, VIEW_SCALE)  # a dock is narrower than the console
+        self.set_zoom(VIEW_SCALE)
+
+    def zoom(self) -> float:
+        """The drawing's scale (1.0 = as in the console at 100 %)."""
+        return self.transform().m11()
+
+    def set_zoom(self, factor: float) -> None:
+        """Scale the drawing by `factor`, kept within ZOOM_MIN..ZOOM_MAX."""
+        factor = min(max(factor, ZOOM_MIN), ZOOM_MAX)
+        if abs(factor - self.zoom()) > 1e-6:
+            self.setTransform(QTransform.fromScale(factor, factor))
+        self.zoom_changed.emit(factor)
+
+    def zoom_by(self, steps: int) -> None:
+        """Zoom in (`steps` > 0) or out by whole steps."""
+        self.set_zoom(self.zoom() * ZOOM_STEP ** steps)
+
+    def wheelEvent(self, event: QWheelEvent) -> None:
+        """Ctrl+wheel zooms about the mouse; the wheel alone scrolls."""
+        if not event.modifiers() & Qt.KeyboardModifier.ControlModifier:
+            super().wheelEvent(event)
+            return
+        delta = event.angleDelta().y()
+        if delta:
+            anchor = self.transformationAnchor()
+            self.setTransformationAnchor(QGraphicsView.ViewportAnchor.AnchorUnderMouse)
+            self.zoom_by(1 if delta > 0 else -1)
+            self.setTransformationAnchor(anchor)
+        event.accept()
 
     def show_networks(self, networks: list[LadderNetwork], binary: BinaryProgram,
                       ops: list[list[int]]) -> None:
@@ -159,6 +193,15 @@ class DiagnosticDock(Retranslating, QDockWidget):
         for widget in (self.search, self.find_button, self.written_button, self.follow):
             bar.addWidget(widget)
         bar.addStretch(1)
+        self.zoom_out_button = QToolButton(body)
+        self.zoom_out_button.setObjectName("diagnosticZoomOut")
+        self.zoom_out_button.setText("−")
+        self.zoom_label = QLabel(body)
+        self.zoom_label.setObjectName("diagnosticZoom")
+        self.zoom_in_button = QToolButton(body)
+        self.zoom_in_button.setObjectName("diagnosticZoomIn")
+        self.zoom_in_button.setText("+")
+
         layout.addLayout(bar)
         # the state grows with the run (scan 1234567, PAST … at … ms): a row of its own,
         # wrapped, so a long run never widens the dock and squeezes the ladder beside it
@@ -171,9 +214,15 @@ class DiagnosticDock(Retranslating, QDockWidget):
         state_row.addWidget(self.message, 2)
         state_row.addWidget(self.why_button)
         state_row.addWidget(self.live_button)
+        for part in (self.zoom_out_button, self.zoom_label, self.zoom_in_button):
+            state_row.addWidget(part)  # here: the search row is full in Turkish at 520 px
         layout.addLayout(state_row)
         self.view = DiagnosticView(body)
         layout.addWidget(self.view, 1)
+        self.view.zoom_changed.connect(self._show_zoom)
+        self.zoom_out_button.clicked.connect(lambda: self.view.zoom_by(-1))
+        self.zoom_in_button.clicked.connect(lambda: self.view.zoom_by(1))
+        self._show_zoom(self.view.zoom())
         self.setWidget(body)
         self.setMinimumWidth(520)
         self.hits: list[tuple[int, Cell]] = []
@@ -202,9 +251,22 @@ class DiagnosticDock(Retranslating, QDockWidget):
             "PlcDiagnostic", "Go to the scan where the address last changed and mark the "
             "contacts that changed it"))
         self.live_button.setText(translate("PlcDiagnostic", "Back to live"))
+        self.zoom_out_button.setToolTip(translate("PlcDiagnostic", "Zoom out (Ctrl+wheel)"))
+        self.zoom_in_button.setToolTip(translate("PlcDiagnostic", "Zoom in (Ctrl+wheel)"))
+        self._show_zoom(self.view.zoom())  # "62 %" / "%62"
         self.follow.setToolTip(translate(
             "PlcDiagnostic", "Keep the searched address in view while the PLC runs"))
         self._show_state()
+
+    def remember_zoom(self, settings: Settings) -> None:
+        """Start at the zoom `settings` saved, and save every change there."""
+        self.view.set_zoom(settings.diagnostic_zoom(VIEW_SCALE))
+        self.view.zoom_changed.connect(settings.set_diagnostic_zoom)
+
+    def _show_zoom(self, factor: float) -> None:
+        self.zoom_label.setText(translate("PlcDiagnostic", "{0} %").format(round(factor * 100)))
+        self.zoom_out_button.setEnabled(factor > ZOOM_MIN + 1e-6)
+        self.zoom_in_button.setEnabled(factor < ZOOM_MAX - 1e-6)
 
     # -- the program -------------------------------------------------------------------
 

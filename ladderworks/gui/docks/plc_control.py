@@ -9,7 +9,6 @@ from PySide6.QtCore import QCoreApplication, Qt, QTimer, Signal
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import (
     QDockWidget,
-    QFileDialog,
     QFrame,
     QHBoxLayout,
     QLabel,
@@ -24,6 +23,7 @@ from PySide6.QtWidgets import (
 from ladderworks.core.compiler import CompileResult, compile_program
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, decode, parse, print_program
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
 from ladderworks.gui.live_text import set_live_text
@@ -195,7 +195,7 @@ class PlcControlDock(Retranslating, QDockWidget):
 
     def open_dialog(self) -> None:
         """File > open a mnemonic program."""
-        name, _ = QFileDialog.getOpenFileName(
+        name = file_dialogs.open_file_name(
             self, translate("PlcControl", "Open mnemonic program"), "",
             translate("PlcControl", "Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)"))
         if name:

@@ -8,7 +8,6 @@ from PySide6.QtCore import QCoreApplication, Qt, Signal
 from PySide6.QtGui import QAction, QBrush, QColor
 from PySide6.QtWidgets import (
     QDockWidget,
-    QFileDialog,
     QLabel,
     QToolBar,
     QTreeWidget,
@@ -27,6 +26,7 @@ from ladderworks.core.plc.scenario import (
     run_scenario,
 )
 from ladderworks.core.plc.session import PlcRun
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks import trace_files
 from ladderworks.gui.docks.time_chart import TimeChartDock
@@ -86,7 +86,7 @@ class ScenarioDock(Retranslating, QDockWidget):
 
     def run_dialog(self) -> None:
         """Ask for a scenario file and run it."""
-        path, _filter = QFileDialog.getOpenFileName(
+        path = file_dialogs.open_file_name(
             self, translate("Scenario", "Run scenario"), "",
             translate("Scenario", "Scenario files (*.csv);;All files (*)"))
         if path:
@@ -186,7 +186,7 @@ class ScenarioDock(Retranslating, QDockWidget):
             self.start_recording()
             return
         text = self.stop_recording()
-        path, _filter = QFileDialog.getSaveFileName(
+        path = file_dialogs.save_file_name(
             self, translate("Scenario", "Save the recorded scenario"), "scenario.csv",
             translate("Scenario", "Scenario files (*.csv);;All files (*)"))
         if path:

@@ -16,7 +16,6 @@ from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtGui import QAction, QColor, QFontMetrics, QResizeEvent
 from PySide6.QtWidgets import (
     QDockWidget,
-    QFileDialog,
     QHBoxLayout,
     QLabel,
     QLineEdit,
@@ -27,6 +26,7 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.address import AddressError
 from ladderworks.core.symbols import describe
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks import trace_files
@@ -375,7 +375,7 @@ class TimeChartDock(Retranslating, QDockWidget):
 
     def export_csv_dialog(self) -> None:
         """Ask for a file and export the CSV."""
-        path, _filter = QFileDialog.getSaveFileName(
+        path = file_dialogs.save_file_name(
             self,
             translate("TimeChart", "Export time chart as CSV"),
             "trace.csv",
@@ -386,7 +386,7 @@ class TimeChartDock(Retranslating, QDockWidget):
 
     def export_png_dialog(self) -> None:
         """Ask for a file and export the PNG."""
-        path, _filter = QFileDialog.getSaveFileName(
+        path = file_dialogs.save_file_name(
             self,
             translate("TimeChart", "Export time chart as PNG"),
             "trace.png",

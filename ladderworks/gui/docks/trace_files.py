@@ -7,11 +7,11 @@ from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QAction
-from PySide6.QtWidgets import QFileDialog
 
 from ladderworks.core.address import AddressError
 from ladderworks.core.plc.trace import TraceSample
 from ladderworks.core.plc.trace_file import TraceFileError, TraceTable, ladder3_text, read_trace
+from ladderworks.gui import file_dialogs
 from ladderworks.gui.docks.trace_record import TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.os_errors import os_error_text
@@ -104,7 +104,7 @@ def show_record(dock: TimeChartDock, record: TraceRecord) -> None:
 
 def export_dialog(dock: TimeChartDock) -> None:
     """Ask for a file and export the LADDER-III trace result."""
-    path, _filter = QFileDialog.getSaveFileName(
+    path = file_dialogs.save_file_name(
         dock, translate("TraceFiles", "Export as LADDER-III trace result"), "trace.csv",
         translate("TimeChart", "CSV files (*.csv)"))
     if path:
@@ -113,7 +113,7 @@ def export_dialog(dock: TimeChartDock) -> None:
 
 def import_dialog(dock: TimeChartDock) -> None:
     """Ask for a trace file and show it."""
-    path, _filter = QFileDialog.getOpenFileName(
+    path = file_dialogs.open_file_name(
         dock, translate("TraceFiles", "Import a trace"), "",
         translate("TimeChart", "CSV files (*.csv)"))
     if path:
