@@ -32,11 +32,10 @@ def data_folder(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
 
 
 @pytest.fixture(autouse=True)
-def qt_dialog_state(tmp_path: Path) -> Iterator[Path]:
-    """Qt's own file dialog keeps its state in QtProject.conf: in a temporary folder, so the
-    user's is never read nor written."""
-    folder = tmp_path / "qt-config"
-    folder.mkdir()
+def qt_dialog_state(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Path]:
+    """Qt's own file dialog keeps its state in QtProject.conf: in a temporary folder (not in
+    the test's own `tmp_path`, which tests list), so the user's is never read nor written."""
+    folder = tmp_path_factory.mktemp("qt-config")
     native, scope = QSettings.Format.NativeFormat, QSettings.Scope.UserScope
     QSettings.setPath(native, scope, str(folder))
     yield folder
