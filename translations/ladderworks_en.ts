@@ -861,47 +861,57 @@
 <context>
     <name>ErrorList</name>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="17"/>
+        <location filename="../ladderworks/gui/error_list.py" line="26"/>
         <source>network {0}, row {1}, column {2}</source>
         <translation>network {0}, row {1}, column {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="21"/>
+        <location filename="../ladderworks/gui/error_list.py" line="30"/>
         <source>network {0}</source>
         <translation>network {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="24"/>
+        <location filename="../ladderworks/gui/error_list.py" line="33"/>
         <source>line {0}, column {1}</source>
         <translation>line {0}, column {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="62"/>
+        <location filename="../ladderworks/gui/error_list.py" line="90"/>
+        <source>Errors: {0}   Warnings: {1}</source>
+        <translation>Errors: {0}   Warnings: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/error_list.py" line="96"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="63"/>
+        <location filename="../ladderworks/gui/error_list.py" line="97"/>
         <source>Warning</source>
         <translation>Warning</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="77"/>
+        <location filename="../ladderworks/gui/error_list.py" line="111"/>
         <source>Errors</source>
         <translation>Errors</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="79"/>
+        <location filename="../ladderworks/gui/error_list.py" line="112"/>
+        <source>Show warnings</source>
+        <translation>Show warnings</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/error_list.py" line="114"/>
         <source>Kind</source>
         <translation>Kind</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="80"/>
+        <location filename="../ladderworks/gui/error_list.py" line="115"/>
         <source>Where</source>
         <translation>Where</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="81"/>
+        <location filename="../ladderworks/gui/error_list.py" line="116"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
