@@ -5,7 +5,8 @@ from __future__ import annotations
 import argparse
 import sys
 
-from ladderworks.core.il import parse_file, print_program
+from ladderworks.cli._programs import load_program
+from ladderworks.core.il import print_program
 from ladderworks.core.ladder.art import draw_document
 from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
 
@@ -21,17 +22,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     mnemonic.set_defaults(handler=_mnemonic)
 
 
-def _load(name: str):  # -> Program | None
-    result = parse_file(name)
-    if not result.ok:
-        for diagnostic in result.diagnostics:
-            print(diagnostic.located(name), file=sys.stderr)
-        return None
-    return result.program
-
 
 def _ladder(args: argparse.Namespace) -> int:
-    program = _load(args.file)
+    program = load_program(args.file)
     if program is None:
         return 1
     sys.stdout.write(draw_document(program_to_ladder(program)))
@@ -39,7 +32,7 @@ def _ladder(args: argparse.Namespace) -> int:
 
 
 def _mnemonic(args: argparse.Namespace) -> int:
-    program = _load(args.file)
+    program = load_program(args.file)
     if program is None:
         return 1
     converted, diagnostics = ladder_to_program(program_to_ladder(program))

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from ladderworks.cli._programs import load_program
 from ladderworks.core.compiler import check
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import parse_file, print_program
@@ -40,10 +41,8 @@ def _check(args: argparse.Namespace) -> int:
 
 
 def _format(args: argparse.Namespace) -> int:
-    result = parse_file(args.file)
-    if not result.ok:
-        for diagnostic in result.diagnostics:
-            print(diagnostic.located(args.file), file=sys.stderr)
+    program = load_program(args.file)
+    if program is None:
         return 1
-    sys.stdout.write(print_program(result.program))
+    sys.stdout.write(print_program(program))
     return 0

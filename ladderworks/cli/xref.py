@@ -6,8 +6,8 @@ import argparse
 import sys
 from collections.abc import Sequence
 
+from ladderworks.cli._programs import load_program
 from ladderworks.core.address import Address, AddressError, looks_like_address
-from ladderworks.core.il import Program, parse_file
 from ladderworks.core.symbols import SymbolTable, describe, resolve
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
 
@@ -57,17 +57,9 @@ def table(rows: Sequence[tuple[str, ...]]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _load(name: str) -> Program | None:
-    result = parse_file(name)
-    if not result.ok:
-        for diagnostic in result.diagnostics:
-            print(diagnostic.located(name), file=sys.stderr)
-        return None
-    return result.program
-
 
 def _xref(args: argparse.Namespace) -> int:
-    program = _load(args.file)
+    program = load_program(args.file)
     if program is None:
         return 1
     symbols = program.symbols
