@@ -15,6 +15,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from real_files import real_file
+
 ROOT = Path(__file__).resolve().parent.parent
 NAME = "FANUC_STUDER_S41_F036"
 RUNS = 7
@@ -44,14 +46,6 @@ check(result.program)
 done = time.perf_counter()
 print(f"{(parsed - began) * 1000:.1f} {(done - parsed) * 1000:.1f}")
 """
-
-
-def _program() -> Path | None:
-    for base in ROOT.parents:
-        candidate = base / "shared" / "real-programs" / f"{NAME}.txt"
-        if candidate.exists():
-            return candidate
-    return None
 
 
 def _children_cpu() -> float:
@@ -93,7 +87,7 @@ def _line(label: str, values: list[float], goal: str = "") -> str:
 
 def main() -> int:
     """Run the measurement and print the figures."""
-    path = _program()
+    path = real_file(NAME)
     if path is None:
         print(f"no ../shared/real-programs/{NAME}.txt beside the repository", file=sys.stderr)
         return 1

@@ -16,16 +16,9 @@ sys.path.insert(0, str(ROOT))
 
 from PySide6.QtCore import QSettings  # noqa: E402
 from PySide6.QtWidgets import QApplication  # noqa: E402
+from real_files import real_file  # noqa: E402
 
 NAME = "FANUC_STUDER_S41_F036"
-
-
-def _program() -> Path | None:
-    for base in ROOT.parents:
-        candidate = base / "shared" / "real-programs" / f"{NAME}.txt"
-        if candidate.exists():
-            return candidate
-    return None
 
 
 def _ms(began: float) -> float:
@@ -34,7 +27,7 @@ def _ms(began: float) -> float:
 
 def main() -> int:
     """Run the measurement and print the figures."""
-    path = _program()
+    path = real_file(NAME)
     if path is None:
         print(f"no ../shared/real-programs/{NAME}.txt beside the repository", file=sys.stderr)
         return 1

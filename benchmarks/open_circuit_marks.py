@@ -11,23 +11,16 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from real_files import NAMES, real_folder  # noqa: E402
+
 from ladderworks.core.il import parse_bytes  # noqa: E402
 from ladderworks.core.ladder import open_ends  # noqa: E402
 from ladderworks.core.ladder.convert import program_to_ladder  # noqa: E402
 
-NAMES = ("FANUC_STUDER_X22_P036", "FANUC_STUDER_S41_F036", "FANUC_STUDER_S41_F034")
-
-
-def _folder() -> Path | None:
-    for base in ROOT.parents:
-        if (base / "shared" / "real-programs").is_dir():
-            return base / "shared" / "real-programs"
-    return None
-
 
 def main() -> int:
     """One line per program: networks, µs per network, networks marked."""
-    folder = _folder()
+    folder = real_folder()
     if folder is None:
         print("no ../shared/real-programs beside the repository", file=sys.stderr)
         return 1

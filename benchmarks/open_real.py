@@ -19,16 +19,9 @@ sys.path.insert(0, str(ROOT))
 from paint_watch import PaintWatch  # noqa: E402
 from PySide6.QtCore import QSettings  # noqa: E402
 from PySide6.QtWidgets import QApplication  # noqa: E402
+from real_files import real_file  # noqa: E402
 
 NAME = "FANUC_STUDER_S41_F036"
-
-
-def _program() -> Path | None:
-    for base in ROOT.parents:
-        candidate = base / "shared" / "real-programs" / f"{NAME}.txt"
-        if candidate.exists():
-            return candidate
-    return None
 
 
 def _rss_mb() -> float:
@@ -52,7 +45,7 @@ def _check_ms(path: Path) -> float:
 
 def main() -> int:
     """Run the measurement and print the figures."""
-    path = _program()
+    path = real_file(NAME)
     if path is None:
         print(f"no ../shared/real-programs/{NAME}.txt beside the repository", file=sys.stderr)
         return 1

@@ -4,39 +4,21 @@ ms to write it back (faithful Save). Run from the repository root: python3 bench
 
 from __future__ import annotations
 
-import statistics
 import sys
-import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from real_files import NAMES, median_ms, real_folder  # noqa: E402
+
 from ladderworks.core.il import parse_bytes  # noqa: E402
 from ladderworks.core.il.printer import encode_program  # noqa: E402
-
-NAMES = ("FANUC_STUDER_X22_P036", "FANUC_STUDER_S41_F036", "FANUC_STUDER_S41_F034")
-
-
-def _folder() -> Path | None:
-    for base in ROOT.parents:
-        if (base / "shared" / "real-programs").is_dir():
-            return base / "shared" / "real-programs"
-    return None
-
-
-def _median_ms(fn: object, repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()  # type: ignore[operator]
-        times.append((time.perf_counter() - start) * 1000)
-    return statistics.median(times)
 
 
 def main() -> int:
     """One line per program: lines, parse ms, µs/line, save ms, diagnostics."""
-    folder = _folder()
+    folder = real_folder()
     if folder is None:
         print("no ../shared/real-programs beside the repository", file=sys.stderr)
         return 1
@@ -44,8 +26,8 @@ def main() -> int:
         data = (folder / f"{name}.txt").read_bytes()
         lines = data.count(b"\n")
         result = parse_bytes(data)
-        parse_ms = _median_ms(lambda data=data: parse_bytes(data), 3)
-        save_ms = _median_ms(lambda r=result: encode_program(r.program), 3)
+        parse_ms = median_ms(lambda data=data: parse_bytes(data), 3)
+        save_ms = median_ms(lambda r=result: encode_program(r.program), 3)
         print(f"{name:24s} {lines:6d} lines  parse {parse_ms:7.1f} ms "
               f"({1000 * parse_ms / lines:5.2f} µs/line)  save {save_ms:6.1f} ms  "
               f"{len(result.diagnostics)} diagnostics")

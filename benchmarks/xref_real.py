@@ -7,7 +7,6 @@ Run from the repository root: python3 benchmarks/xref_real.py [--pdf]
 from __future__ import annotations
 
 import os
-import statistics
 import sys
 import tempfile
 import time
@@ -16,27 +15,11 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from real_files import NAMES, median_ms, real_folder  # noqa: E402
+
 from ladderworks.core.il import parse_bytes  # noqa: E402
 from ladderworks.core.ladder.convert import program_to_ladder  # noqa: E402
 from ladderworks.core.xref import CrossReference  # noqa: E402
-
-NAMES = ("FANUC_STUDER_X22_P036", "FANUC_STUDER_S41_F036", "FANUC_STUDER_S41_F034")
-
-
-def _folder() -> Path | None:
-    for base in ROOT.parents:
-        if (base / "shared" / "real-programs").is_dir():
-            return base / "shared" / "real-programs"
-    return None
-
-
-def _median_ms(fn: object, repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()  # type: ignore[operator]
-        times.append((time.perf_counter() - start) * 1000)
-    return statistics.median(times)
 
 
 def _pdf(path: Path) -> tuple[float, int]:
@@ -66,7 +49,7 @@ def _pdf(path: Path) -> tuple[float, int]:
 
 def main() -> int:
     """One line per program: steps, uses, build ms (program, grid), µs per query."""
-    folder = _folder()
+    folder = real_folder()
     if folder is None:
         print("no ../shared/real-programs beside the repository", file=sys.stderr)
         return 1
@@ -74,15 +57,15 @@ def main() -> int:
         program = parse_bytes((folder / f"{name}.txt").read_bytes()).program
         networks = program_to_ladder(program).networks
         xref = CrossReference.from_program(program)
-        from_program = _median_ms(lambda p=program: CrossReference.from_program(p), 5)
-        from_grid = _median_ms(
+        from_program = median_ms(lambda p=program: CrossReference.from_program(p), 5)
+        from_grid = median_ms(
             lambda n=networks, d=program.dialect: CrossReference.from_ladder(n, d), 5)
         addresses = xref.addresses()
         start = time.perf_counter()
         for address in addresses:
             xref.uses_of(address)
         query_us = (time.perf_counter() - start) * 1e6 / max(len(addresses), 1)
-        sort_ms = _median_ms(lambda u=xref.uses: CrossReference(u).sorted_uses(), 3)
+        sort_ms = median_ms(lambda u=xref.uses: CrossReference(u).sorted_uses(), 3)
         print(f"{name:24s} {program.step_count():6d} steps {len(xref):6d} uses "
               f"{len(addresses):6d} addresses  build {from_program:6.1f} ms (program) "
               f"{from_grid:6.1f} ms (grid)  query {query_us:5.1f} µs  "
