@@ -2475,62 +2475,62 @@
 <context>
     <name>Print</name>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="47"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="41"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="72"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="66"/>
         <source>Printing the ladder…</source>
         <translation>Printing the ladder…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="73"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="67"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="149"/>
         <source>Print preview</source>
         <translation>Print preview</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="167"/>
         <source>Export PDF</source>
         <translation>Export PDF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="174"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF files (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="176"/>
         <source>&amp;Print...</source>
         <translation>&amp;Print...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="177"/>
         <source>Print pre&amp;view...</source>
         <translation>Print pre&amp;view...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
         <source>Export P&amp;DF...</source>
         <translation>Export P&amp;DF...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="190"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
         <source>Printing was cancelled or failed</source>
         <translation>Printing was cancelled or failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="192"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="186"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} pages written to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="194"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="188"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} pages sent to the printer</translation>
     </message>
@@ -3336,7 +3336,7 @@
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="284"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="274"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
@@ -3411,7 +3411,7 @@
         <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="285"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="275"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>

@@ -2475,62 +2475,62 @@
 <context>
     <name>Print</name>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="47"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="41"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="72"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="66"/>
         <source>Printing the ladder…</source>
         <translation>Ladder yazdırılıyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="73"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="67"/>
         <source>Cancel</source>
         <translation>İptal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="149"/>
         <source>Print preview</source>
         <translation>Baskı önizleme</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="173"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="167"/>
         <source>Export PDF</source>
         <translation>PDF olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="174"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF dosyaları (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="182"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="176"/>
         <source>&amp;Print...</source>
         <translation>&amp;Yazdır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="177"/>
         <source>Print pre&amp;view...</source>
         <translation>Baskı ön&amp;izleme...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
         <source>Export P&amp;DF...</source>
         <translation>P&amp;DF olarak dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="190"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
         <source>Printing was cancelled or failed</source>
         <translation>Yazdırma iptal edildi veya başarısız oldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="192"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="186"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} sayfa {1} dosyasına yazıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="194"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="188"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} sayfa yazıcıya gönderildi</translation>
     </message>
@@ -3336,7 +3336,7 @@
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="284"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="274"/>
         <source>Line</source>
         <translation>ÇİZGİ</translation>
     </message>
@@ -3411,7 +3411,7 @@
         <translation>Altına paralel eklemek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="285"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="275"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Birinci noktaya, sonra ikinci noktaya tıklayın: yatay veya dikey çizgi</translation>
     </message>

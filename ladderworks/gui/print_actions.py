@@ -18,7 +18,6 @@ from PySide6.QtGui import (
 from PySide6.QtPrintSupport import QPrintDialog, QPrinter, QPrintPreviewDialog
 from PySide6.QtWidgets import QDialog, QMainWindow, QProgressDialog
 
-from ladderworks.core.il.program import Program
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.console_menus import ConsoleMenus
 from ladderworks.gui.print_pages import PRINT_DPI, LadderPages, PrintJob, program_title
@@ -35,15 +34,10 @@ PROGRESS_FROM_PAGES = 20  # a longer job shows a progress dialog that can cancel
 def print_job(window: MainWindow) -> PrintJob:
     """The console's program as a print job (a large program still laying out is finished)."""
     editor = window.editor
-    if editor.loading:
-        editor.finish_loading()
-    networks = list(editor.networks)
-    while networks and networks[-1].is_empty():  # the empty network where a new one is drawn
-        networks.pop()
-    path, info = window.path, window.program_info
+    path = window.path
     return PrintJob(
-        networks=networks, describe=editor.describe_address, symbols=editor.model.symbols,
-        title=program_title(info) if isinstance(info, Program) else "",
+        networks=editor.model.ladder_document().networks, describe=editor.describe_address,
+        symbols=editor.model.symbols, title=program_title(window.program_info),
         file_name=Path(path).name if path is not None else translate("Print", "Untitled"),
         dialect=editor.model.dialect)
 

@@ -271,6 +271,9 @@ class LineInteraction(Interaction):
     tool = Tool.LINE
     icon_name = "line"
     key = "L"
+    title = QT_TRANSLATE_NOOP("Tool", "Line")
+    hint = QT_TRANSLATE_NOOP(
+        "Tool", "Click a first point, then a second point: a horizontal or vertical wire")
 
     def __init__(self, editor: LadderEditor) -> None:
         super().__init__(editor)
@@ -281,9 +284,6 @@ class LineInteraction(Interaction):
         self.marker.setZValue(11)
         self.marker.hide()
         editor.scene().addItem(self.marker)
-    title = QT_TRANSLATE_NOOP("Tool", "Line")
-    hint = QT_TRANSLATE_NOOP(
-        "Tool", "Click a first point, then a second point: a horizontal or vertical wire")
 
     def apply(self, hit: Hit) -> None:
         """First point: mark it; second point (same network): draw the wire."""
