@@ -180,19 +180,14 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         self._renumber(max(index - 1, 0))
 
     def _on_changed(self, index: int) -> None:
-        self.layout_.forget(self.networks[index])  # its rows may change (a comment typed)
-        self.network_items[index].error_cells = set()
-        self.network_items[index].refresh()
-        self._relayout(index)
-        self._renumber(index)
-        self.drawing_changed.emit()
+        self._on_many_changed([index])
 
     def _on_many_changed(self, indices: list[int]) -> None:
         if not indices:
             return
         changed = set(indices)
         for index in changed:
-            self.layout_.forget(self.networks[index])
+            self.layout_.forget(self.networks[index])  # its rows may change (a comment typed)
         for index, item in self.network_items.made(min(changed)):
             if index in changed:
                 item.error_cells = set()
