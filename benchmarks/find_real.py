@@ -14,7 +14,7 @@ os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from PySide6.QtCore import QSettings  # noqa: E402
+from paint_watch import shown_console  # noqa: E402
 from PySide6.QtWidgets import QApplication  # noqa: E402
 from real_files import real_file  # noqa: E402
 
@@ -35,10 +35,7 @@ def main() -> int:
     from ladderworks.core.il import parse_file
     from ladderworks.core.ladder import convert
     from ladderworks.core.ladder.find_replace import find, parse_query
-    from ladderworks.gui.main_window import MainWindow
     from ladderworks.gui.refcount_guard import guard_singletons
-    from ladderworks.gui.settings import Settings
-    from ladderworks.gui.translation import UiLanguage
 
     guard_singletons()
     program = parse_file(path).program
@@ -54,13 +51,7 @@ def main() -> int:
         kind = "address" if query.address is not None else "words"
         print(f"core find {text!r:8} ({kind:7}): {len(hits):6} hits {_ms(began):7.1f} ms")
     with tempfile.TemporaryDirectory() as tmp:
-        settings = Settings(QSettings(str(Path(tmp) / "s.ini"), QSettings.Format.IniFormat))
-        language = UiLanguage()
-        language.apply("en")
-        window = MainWindow(settings, language)
-        window.resize(1200, 800)
-        window.show()
-        app.processEvents()
+        window = shown_console(Path(tmp))
         window.load(path)
         window.editor.finish_loading()
         app.processEvents()

@@ -10,8 +10,7 @@ from pathlib import Path
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
-from paint_watch import PaintWatch
-from PySide6.QtCore import QSettings
+from paint_watch import PaintWatch, shown_console
 from PySide6.QtWidgets import QApplication
 
 NETWORKS = 2000
@@ -46,20 +45,11 @@ def main() -> int:
     from ladderworks.gui.refcount_guard import guard_singletons
 
     guard_singletons()
-    from ladderworks.gui.main_window import MainWindow
-    from ladderworks.gui.settings import Settings
-    from ladderworks.gui.translation import UiLanguage
 
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "large.LAD"
         path.write_text(generate(NETWORKS), encoding="utf-8")
-        settings = Settings(QSettings(str(Path(tmp) / "s.ini"), QSettings.Format.IniFormat))
-        language = UiLanguage()
-        language.apply("en")
-        window = MainWindow(settings, language)
-        window.resize(1200, 800)
-        window.show()
-        app.processEvents()
+        window = shown_console(Path(tmp))
         watch = PaintWatch()
         window.editor.viewport().installEventFilter(watch)
         watch.painted = False

@@ -16,8 +16,7 @@ os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from paint_watch import PaintWatch  # noqa: E402
-from PySide6.QtCore import QSettings  # noqa: E402
+from paint_watch import PaintWatch, shown_console  # noqa: E402
 from PySide6.QtWidgets import QApplication  # noqa: E402
 from real_files import real_file  # noqa: E402
 
@@ -51,10 +50,7 @@ def main() -> int:
         return 1
     app = QApplication.instance() or QApplication(sys.argv)
     from ladderworks.core.il import parse_bytes, parse_file
-    from ladderworks.gui.main_window import MainWindow
     from ladderworks.gui.refcount_guard import guard_singletons
-    from ladderworks.gui.settings import Settings
-    from ladderworks.gui.translation import UiLanguage
 
     guard_singletons()
     import ladderworks.gui.document as document  # the window reads through ProgramDocument
@@ -74,15 +70,7 @@ def main() -> int:
     steps = sum(len(n.instructions) for n in result.program.networks)
     del result
     with tempfile.TemporaryDirectory() as tmp:
-        settings = Settings(QSettings(str(Path(tmp) / "s.ini"), QSettings.Format.IniFormat))
-        if len(sys.argv) > 1:
-            settings.set_name_display(sys.argv[1])  # View › Element names, as if chosen
-        language = UiLanguage()
-        language.apply("en")
-        window = MainWindow(settings, language)
-        window.resize(1200, 800)
-        window.show()
-        app.processEvents()
+        window = shown_console(Path(tmp), sys.argv[1] if len(sys.argv) > 1 else None)
         watch = PaintWatch()
         window.editor.viewport().installEventFilter(watch)
         watch.painted = False

@@ -1,8 +1,35 @@
-"""Shared by the open benchmarks: an event filter that notes when a viewport has been painted."""
+"""Shared by the window benchmarks: the console shown offscreen, and an event filter that notes
+when a viewport has been painted."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QEvent, QObject
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QEvent, QObject, QSettings
+from PySide6.QtWidgets import QApplication
+
+if TYPE_CHECKING:
+    from ladderworks.gui.main_window import MainWindow
+
+
+def shown_console(folder: Path, names: str | None = None) -> MainWindow:
+    """The main window in English at 1200×800, shown, its settings in `folder` (`names`: the
+    View › Element names choice, as if made)."""
+    from ladderworks.gui.main_window import MainWindow
+    from ladderworks.gui.settings import Settings
+    from ladderworks.gui.translation import UiLanguage
+
+    settings = Settings(QSettings(str(folder / "s.ini"), QSettings.Format.IniFormat))
+    if names is not None:
+        settings.set_name_display(names)
+    language = UiLanguage()
+    language.apply("en")
+    window = MainWindow(settings, language)
+    window.resize(1200, 800)
+    window.show()
+    QApplication.processEvents()
+    return window
 
 
 class PaintWatch(QObject):
