@@ -118,12 +118,16 @@ class Address:
         return format_address(self)
 
 
+# each area's letter: a dict lookup is C-speed, Enum's `.value` a Python descriptor (3.11)
+_LETTER: dict[Area, str] = {area: area.value for area in Area}
+
+
 def format_address(address: Address) -> str:
     """Canonical spelling: area letter, byte without leading zeros, `.bit` for bits (`A21.0`)."""
-    text = f"{address.area.value}{address.byte}"
-    if address.bit is not None:
-        text += f".{address.bit}"
-    return text
+    bit = address.bit
+    if bit is None:
+        return f"{_LETTER[address.area]}{address.byte}"
+    return f"{_LETTER[address.area]}{address.byte}.{bit}"
 
 
 def ranges_text(area: Area) -> str:

@@ -7,11 +7,24 @@ implementations. Dispatch is on the instruction table's fields, never on spellin
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from itertools import compress, count
+from operator import attrgetter
 from typing import Any
 
-from ladderworks.core.address import INPUT_AREAS, Address, AddressError, parse_address
-from ladderworks.core.compiler.structure import analyse, number_of
+from ladderworks.core.address import (
+    AREA_RANGES,
+    INPUT_AREAS,
+    Address,
+    AddressError,
+    parse_address,
+)
+from ladderworks.core.compiler.structure import (
+    FlowItem,
+    Structure,
+    analyse_flows,
+    number_of,
+)
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.il.program import Instruction, Program
 from ladderworks.core.instructions import (
@@ -72,20 +85,46 @@ def dialect_of(program: object) -> str:
     return dialect if isinstance(dialect, str) else "seed"
 
 
-# What the checks need of an instruction table row, found once per name in a run: the row,
-# whether it is BASIC, takes an operand, is a plain read (RD-like, no push), its pushes and
-# its write.
-_Shape = tuple[InstructionSpec, bool, bool, bool, int, Write]
+# What the walk does at an instruction, by its table row (found once per name in a run).
+_UNKNOWN = 0  # no row: an unknown instruction
+_READ = 1  # a contact reading its operand (RD, AND.NOT, ...): most instructions
+_WRITE = 2  # a coil writing its operand (WRT, SET, ...)
+_BASIC = 3  # any other basic instruction (the stack operations)
+_OTHER = 4  # a functional instruction or END
+_FLOW = 5  # a functional instruction or END with a part in the structure (Flow is not NONE)
+
+# An instruction's step in the walk: its action, its row, and whether a unit (level or
+# subprogram) starts there, closing the JMP/COM ranges of the one before.
+_Step = tuple[int, InstructionSpec | None, bool]
+_UNKNOWN_STEP: _Step = (_UNKNOWN, None, False)
 
 
-def _shape(spec: InstructionSpec) -> _Shape:
-    """The fields of `spec` the walk reads for every instruction."""
-    return (spec, spec.kind is Kind.BASIC, spec.operand,
-            spec.combine is Combine.READ and spec.pushes == 0, spec.pushes, spec.write)
+def _step(spec: InstructionSpec | None) -> _Step:
+    """The step of an instruction with row `spec` (None: unknown)."""
+    if spec is None:
+        return _UNKNOWN_STEP
+    if spec.kind is not Kind.BASIC:
+        return (_OTHER if spec.flow is Flow.NONE else _FLOW, spec, False)
+    if spec.operand and spec.combine is Combine.READ and spec.pushes == 0:
+        return (_READ, spec, False)
+    if spec.operand and spec.pushes == 0 and spec.write is not Write.NONE:
+        return (_WRITE, spec, False)
+    return (_BASIC, spec, False)
 
+
+_NAME = attrgetter("name")
+
+
+# A fixed parameter as the checks read it: the row's Param; whether it holds a P/L number,
+# may hold an address, is a VALUE, is an ADDRESS, is an output; its upper limit in the
+# dialect; its width in bytes (None when a format parameter gives it).
+_ParamPlan = tuple[Param, bool, bool, bool, bool, bool, int, int | None]
 
 # A functional instruction's parameters as the checks read them (see _Checker.layout).
-_Layout = tuple[tuple[Param, ...], tuple[str, ...], Param | None, frozenset[str]]
+_Layout = tuple[tuple[_ParamPlan, ...], tuple[str, ...], Param | None, bool]
+
+# A diagnostic found once for the lines that share it: code, arguments, whether a warning.
+_Own = tuple[str, dict[str, object], bool]
 
 
 class _Checker:
@@ -93,7 +132,7 @@ class _Checker:
 
     def __init__(self, program: Program, dialect: str | None) -> None:
         self.out: list[Diagnostic] = []
-        self.coils: dict[Address, tuple[Write, Instruction, int]] = {}
+        self.coils: dict[tuple[object, ...], tuple[Write, Instruction, int]] = {}  # see write
         self.registry = load_all()
         self.dialect = dialect or dialect_of(program)
         self.program = program
@@ -102,7 +141,7 @@ class _Checker:
         # the diagnostics a functional instruction gives whatever surrounds it (its
         # implementation, parameters and the addresses it writes), by the identity of its row
         # and of its parameter tuple (the parser shares one tuple among equal lines)
-        self.own: dict[tuple[int, int], list[tuple[str, dict[str, object], bool]]] = {}
+        self.own: dict[tuple[int, int], list[_Own]] = {}
         self.layouts: dict[int, _Layout] = {}  # by the identity of the row
 
     def add(self, code: str, ins: Instruction, network: int, *,
@@ -115,98 +154,119 @@ class _Checker:
             code, dict(args), ins.line, ins.column,
             Severity.WARNING if warning else Severity.ERROR, network))
 
-    def specs(self) -> tuple[list[_Shape | None], list[Instruction],
-                             list[tuple[InstructionSpec, tuple[object, ...]]]]:
-        """The table row (as a _Shape, None if unknown) of every instruction, every instruction,
-        and (row, parameters) of the known ones: the structure's items."""
-        shapes: dict[str, _Shape | None] = {}
-        found: list[_Shape | None] = []
+    def steps(self) -> tuple[list[_Step], list[Instruction], Sequence[int], list[FlowItem]]:
+        """The step of every instruction, every instruction, the index in them of each known
+        instruction (of the structure's items), and the structure's flow items."""
         every: list[Instruction] = []
-        items: list[tuple[InstructionSpec, tuple[object, ...]]] = []
-        append, item = found.append, items.append
         for network in self.program.networks:
-            instructions = network.instructions
-            every += instructions
-            for ins in instructions:
-                name = ins.name
-                try:
-                    shape = shapes[name]
-                except KeyError:
-                    spec = spec_for(name, len(ins.params))
-                    shape = None if spec is None else _shape(spec)
-                    if spec is None or spec.known:  # an unknown SUB's row depends on the count
-                        shapes[name] = shape
-                append(shape)
-                if shape is not None:
-                    item((shape[0], ins.params))
-        return found, every, items
+            every += network.instructions
+        # map and compress run in C, where a Python loop over every instruction costs more
+        names = list(map(_NAME, every))
+        by_name: dict[str, _Step] = {}
+        counted: set[str] = set()  # unknown SUBs: their row depends on the parameter count
+        for name in set(names):
+            spec = spec_for(name)
+            if spec is None or spec.known:
+                by_name[name] = _step(spec)
+            else:
+                counted.add(name)
+        if counted:
+            steps = [_step(spec_for(name, len(ins.params))) if name in counted
+                     else by_name[name] for name, ins in zip(names, every, strict=True)]
+        else:
+            steps = list(map(by_name.__getitem__, names))
+        unknown = {name for name, step in by_name.items() if step is _UNKNOWN_STEP}
+        known: Sequence[int] = range(len(steps))
+        if unknown:
+            known = list(compress(count(), map((set(names) - unknown).__contains__, names)))
+        flows: list[FlowItem] = []
+        flow_names = {name for name, step in by_name.items() if step[0] == _FLOW}
+        if flow_names:
+            position = dict(zip(known, count())) if unknown else None
+            for k in compress(count(), map(flow_names.__contains__, names)):
+                spec = steps[k][1]
+                assert spec is not None
+                flows.append((k if position is None else position[k], spec, every[k].params))
+        return steps, every, known, flows
+
+    def mark_unit_starts(self, steps: list[_Step], structure: Structure,
+                         known: Sequence[int]) -> None:
+        """Mark the steps where a unit starts or the one before ends (the ranges of JMP n
+        and COM n close there)."""
+        for unit in structure.units():
+            for position in (unit.start, unit.end):
+                if position < len(known):
+                    action, spec, _ = steps[known[position]]
+                    steps[known[position]] = (action, spec, True)
+
+    def operand_problem(self, ins: Instruction, network: int, spec: InstructionSpec) -> None:
+        """An instruction that needs an address as its operand has none, or no address."""
+        if ins.operand is None:
+            self.add("missing-operand", ins, network, name=spec.name)
+        else:
+            self.add("bad-address", ins, network, text=str(ins.operand))
 
     def run(self) -> list[Diagnostic]:
-        shapes, every, items = self.specs()
-        structure = analyse(items)
-        bounds = {k for unit in structure.units() for k in (unit.start, unit.end)}
-        add = self.add
-        basic_write = self.basic_write
+        steps, every, known, flows = self.steps()
+        structure = analyse_flows(len(known), flows)
+        self.mark_unit_starts(steps, structure, known)
+        add, write = self.add, self.write
+        jumps, commons = self.jumps, self.commons
         previous_network = -1
         depth, logic = 0, False
         last: Instruction | None = None
         last_spec: InstructionSpec | None = None
-        position = 0  # index among the known instructions (the structure's items)
-        flat = 0  # index among every instruction
+        all_steps = iter(steps)
         for n, network in enumerate(self.program.networks):
             instructions = network.instructions
             if not instructions:
                 continue
             self.end_network(previous_network, last, last_spec, logic)
             previous_network, depth, logic = n, 0, False
-            broken = False  # after an unknown instruction the network is not checked further
-            for ins in instructions:
-                shape = shapes[flat]
-                flat += 1
-                if shape is None:
-                    add("unknown-instruction", ins, n, name=ins.name)
-                    broken = True
-                    continue
-                if position in bounds:
+            # zip takes the instruction first: at the network's end it stops, taking no step
+            walk = zip(instructions, all_steps)  # noqa: B905
+            for ins, (action, spec, starts_unit) in walk:
+                if starts_unit:
                     self.close_ranges()
-                position += 1
-                if broken:
+                if action == _READ:
+                    last, last_spec = ins, spec
+                    if isinstance(ins.operand, Address):
+                        logic = True
+                    else:
+                        assert spec is not None
+                        self.operand_problem(ins, n, spec)
                     continue
-                spec, is_basic, needs_operand, plain_read, pushes, writes = shape
+                if spec is None:  # after an unknown instruction the network is not checked
+                    add("unknown-instruction", ins, n, name=ins.name)
+                    for ins, (_, rest_spec, rest_starts_unit) in walk:
+                        if rest_spec is None:
+                            add("unknown-instruction", ins, n, name=ins.name)
+                        elif rest_starts_unit:
+                            self.close_ranges()
+                    break
                 last, last_spec = ins, spec
-                if not is_basic:
+                if action >= _OTHER:
                     depth, logic = self.other(n, ins, spec, depth, logic)
                     continue
-                if needs_operand:
+                if action == _WRITE:
                     operand = ins.operand
-                    if operand is None:
-                        add("missing-operand", ins, n, name=spec.name)
-                        continue
                     if not isinstance(operand, Address):
-                        add("bad-address", ins, n, text=str(operand))
+                        self.operand_problem(ins, n, spec)
                         continue
-                if plain_read:
-                    logic = True
+                    if not logic:
+                        add("no-logic", ins, n, name=spec.name)
+                        logic = True
+                    write(ins, n, spec.name, operand, spec.write)
+                    if jumps or commons:
+                        self.count_coil()
                     continue
-                if not logic:
-                    add("no-logic", ins, n, name=spec.name)
-                    logic = True
-                if pushes > 0:
-                    depth += 1
-                    if depth > MAX_PUSHES:
-                        add("stack-depth", ins, n)
-                elif pushes < 0:
-                    if depth == 0:
-                        add("stack-underflow", ins, n, name=spec.name)
-                    else:
-                        depth -= 1
-                elif writes is not Write.NONE:
-                    assert ins.operand is not None
-                    basic_write(ins, n, spec.name, ins.operand, writes)
+                if spec.operand and not isinstance(ins.operand, Address):
+                    self.operand_problem(ins, n, spec)
+                    continue
+                depth, logic = self.basic(ins, n, spec, depth, logic)
         self.end_network(previous_network, last, last_spec, logic)
         self.close_ranges()
         if structure.problems:
-            known = [k for k, shape in enumerate(shapes) if shape is not None]
             network_at = [n for n, network in enumerate(self.program.networks)
                           for _ in network.instructions]
             for problem in structure.problems:
@@ -216,12 +276,30 @@ class _Checker:
         self.out.sort(key=lambda d: (d.line, d.column))
         return self.out
 
-    def basic_write(self, ins: Instruction, network: int, name: str, address: Address,
-                    kind: Write) -> None:
-        """A coil: its write, then it counts for the open JMP n / COM n ranges."""
-        self.write(ins, network, name, address, kind)
-        if self.jumps or self.commons:
-            self.count_coil()
+    def basic(self, ins: Instruction, n: int, spec: InstructionSpec, depth: int,
+              logic: bool) -> tuple[int, bool]:
+        """A basic instruction other than a contact or a coil with its operand: a push or pop
+        of the stack, in general."""
+        if spec.combine is Combine.READ and spec.pushes == 0:
+            return depth, True
+        if not logic:
+            self.add("no-logic", ins, n, name=spec.name)
+            logic = True
+        if spec.pushes > 0:
+            depth += 1
+            if depth > MAX_PUSHES:
+                self.add("stack-depth", ins, n)
+        elif spec.pushes < 0:
+            if depth == 0:
+                self.add("stack-underflow", ins, n, name=spec.name)
+            else:
+                depth -= 1
+        elif spec.write is not Write.NONE:
+            assert ins.operand is not None
+            self.write(ins, n, spec.name, ins.operand, spec.write)
+            if self.jumps or self.commons:
+                self.count_coil()
+        return depth, logic
 
     def end_network(self, network: int, ins: Instruction | None,
                     spec: InstructionSpec | None, logic: bool) -> None:
@@ -258,16 +336,17 @@ class _Checker:
                     ranges[-1] = (network, ins, left - 1)
 
     def write(self, ins: Instruction, network: int, name: str, address: Address,
-              kind: Write | None) -> None:
-        before = None if kind is None else self.coils.get(address)
+              kind: Write) -> None:
+        """A coil's write: refused in an input area, a warning when the address has a coil."""
+        # keyed by the fields: a tuple hashes in C, Address's dataclass hash is Python code
+        key = (address.area, address.byte, address.bit)
+        before = self.coils.get(key)
         if before is None:  # an address in self.coils was found writable before
-            if address.area in INPUT_AREAS:
-                self.add("write-input", ins, network, name=name, address=str(address))
-            elif address.is_result_register():
-                self.add("write-result-register", ins, network, name=name,
-                         address=str(address))
-            elif kind is not None:
-                self.coils[address] = (kind, ins, network)
+            problem = _write_problem(name, address)
+            if problem is not None:
+                self.report(problem[0], ins, network, problem[1])
+            else:
+                self.coils[key] = (kind, ins, network)
             return
         if kind is Write.OUT and before[0] is Write.OUT:
             self.add("coil-twice", ins, network, warning=True, address=str(address))
@@ -279,7 +358,7 @@ class _Checker:
                 self.add("coil-mixed-network", ins, network, warning=True,
                          address=str(address), other=before[2] + 1)
         if kind is Write.OUT:
-            self.coils[address] = (kind, ins, network)
+            self.coils[key] = (kind, ins, network)
 
     def function(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
         flow = spec.flow
@@ -312,16 +391,14 @@ class _Checker:
         key = (id(spec), id(ins.params))
         found = self.own.get(key)
         if found is None:
-            out, self.out = self.out, []
+            found = []
             if spec.flow is Flow.NONE:
                 if not spec.known:
-                    self.add("unknown-sub", ins, network, warning=True, number=spec.sub)
+                    found.append(("unknown-sub", {"number": spec.sub}, True))
                 elif implementation_of(spec, self.registry) is None:
-                    self.add("not-implemented", ins, network, name=spec.name)
-            self.params(ins, spec, network)
-            found = [(d.code, d.args, d.severity is Severity.WARNING) for d in self.out]
+                    found.append(("not-implemented", {"name": spec.name}, False))
+            found += self.params(spec, ins.params)
             self.own[key] = found
-            self.out = out
         for code, args, warning in found:
             self.report(code, ins, network, args, warning=warning)
 
@@ -337,75 +414,121 @@ class _Checker:
         self.commons.clear()
 
     def layout(self, spec: InstructionSpec) -> _Layout:
-        """The fixed parameters of `spec`, its table parameter and its outputs' names."""
+        """The fixed parameters of `spec` (as _ParamPlans), its table parameter, and whether
+        the checks read parameters by name (a VALUE, a width given by a format, a table)."""
         found = self.layouts.get(id(spec))
         if found is None:
             fixed = spec.fixed_params()
-            found = (fixed, tuple(p.name for p in fixed), spec.table_param(),
-                     output_params(spec.name))
+            outputs = output_params(spec.name)
+            plans = tuple(
+                (param, param.kind in (ParamKind.PROGRAM, ParamKind.LABEL),
+                 param.allows_address(), param.kind is ParamKind.VALUE,
+                 param.kind is ParamKind.ADDRESS, param.name in outputs,
+                 param.highest(self.dialect),
+                 param.width if isinstance(param.width, int) else None)
+                for param in fixed)
+            table = spec.table_param()
+            by_name = table is not None or any(
+                plan[3] or plan[7] is None for plan in plans)
+            found = (plans, tuple(p.name for p in fixed), table, by_name)
             self.layouts[id(spec)] = found
         return found
 
-    def params(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
-        fixed, names, table, outputs = self.layout(spec)
-        values: dict[str, object] = dict(zip(names, ins.params, strict=False))  # param_map()
+    def params(self, spec: InstructionSpec, raws: tuple[object, ...]) -> list[_Own]:
+        """The diagnostics of parameters `raws` of an instruction of row `spec`."""
+        plans, names, table, by_name = self.layout(spec)
+        name = spec.name
+        # param_map(), built only for the rows that read it
+        values: dict[str, object] = dict(zip(names, raws, strict=False)) if by_name else {}
+        fixed = len(plans)
+        expected = fixed
         if table is not None:
-            values[table.name] = tuple(ins.params[len(fixed):])
-        expected = len(fixed)
-        if table is not None:
+            values[table.name] = tuple(raws[fixed:])
             size = values.get(table.length_of)
             expected += size if isinstance(size, int) else 0
-        if len(ins.params) != expected:
-            self.add("param-count", ins, network, name=spec.name, expected=expected,
-                     found=len(ins.params))
-            return
-        for number, (param, raw) in enumerate(zip(fixed, ins.params, strict=False), 1):
-            info: dict[str, object] = {"name": spec.name, "index": number, "param": param.name}
+        if len(raws) != expected:
+            return [("param-count", {"name": name, "expected": expected, "found": len(raws)},
+                     False)]
+        found: list[_Own] = []
+        for number, plan in enumerate(plans, 1):
+            param, target, may_address, is_value, is_address, output, hi, width = plan
+            raw = raws[number - 1]
             value: int | Address
-            if param.kind in (ParamKind.PROGRAM, ParamKind.LABEL):
-                target = number_of(raw)
-                if target is None:
-                    self.report("param-kind-number", ins, network, {**info, "text": "?"})
+            if target:
+                program_or_label = number_of(raw)
+                if program_or_label is None:
+                    found.append(("param-kind-number", {
+                        "name": name, "index": number, "param": param.name, "text": "?"}, False))
                     continue
-                value = target
-            elif isinstance(raw, int | Address):
+                value = program_or_label
+            elif isinstance(raw, (int, Address)):
                 value = raw
             else:  # a P/L reference where a number or an address belongs
-                self.report("param-kind-number", ins, network, {**info, "text": str(raw)})
+                found.append(("param-kind-number", {
+                    "name": name, "index": number, "param": param.name, "text": str(raw)},
+                    False))
                 continue
-            address_wanted = param.kind is ParamKind.ADDRESS or (
-                param.kind is ParamKind.VALUE and value_is_address(spec, values) is True)
+            chosen = value_is_address(spec, values) if is_value else None
             if isinstance(value, Address):
-                if not param.allows_address() or (
-                        param.kind is ParamKind.VALUE
-                        and value_is_address(spec, values) is False):
-                    self.report("param-kind-number", ins, network, {**info, "text": str(value)})
+                if not may_address or chosen is False:
+                    found.append(("param-kind-number", {
+                        "name": name, "index": number, "param": param.name,
+                        "text": str(value)}, False))
                     continue
-                width = width_of(spec, param, values)
-                try:
-                    parse_address(str(value), want_bit=False, width=width)
-                except AddressError as exc:
-                    self.report(exc.code, ins, network, exc.args_map)
-                    continue
-                if param.name in outputs:
-                    self.write(ins, network, spec.name, value, None)
+                if width is None:
+                    width = width_of(spec, param, values)
+                if not _byte_data_fits(value, width):
+                    try:  # the parse of its spelling says why, as for a typed address
+                        parse_address(str(value), want_bit=False, width=width)
+                    except AddressError as exc:
+                        found.append((exc.code, exc.args_map, False))
+                        continue
+                if output:
+                    problem = _write_problem(name, value)
+                    if problem is not None:
+                        found.append((*problem, False))
                 continue
-            hi = param.highest(self.dialect)
-            if address_wanted:
-                self.report("param-kind-address", ins, network, {**info, "text": str(value)})
+            if is_address or chosen is True:
+                found.append(("param-kind-address", {
+                    "name": name, "index": number, "param": param.name, "text": str(value)},
+                    False))
             elif param.choices and value not in param.choices:
-                self.report("param-choice", ins, network, {
-                    **info, "value": value,
-                    "choices": ", ".join(str(c) for c in param.choices)})
+                found.append(("param-choice", {
+                    "name": name, "index": number, "param": param.name, "value": value,
+                    "choices": ", ".join(str(c) for c in param.choices)}, False))
             elif not param.lo <= value <= hi:
-                self.report("param-range", ins, network,
-                            {**info, "lo": param.lo, "hi": hi, "value": value})
+                found.append(("param-range", {
+                    "name": name, "index": number, "param": param.name, "lo": param.lo,
+                    "hi": hi, "value": value}, False))
         if table is not None:
-            for offset, item in enumerate(ins.params[len(fixed):]):
+            for offset, item in enumerate(raws[fixed:]):
                 if not isinstance(item, int) or not table.lo <= item <= table.hi:
-                    self.add("param-range", ins, network, name=spec.name,
-                             index=len(fixed) + offset + 1, param=table.name, lo=table.lo,
-                             hi=table.hi, value=str(item))
+                    found.append(("param-range", {
+                        "name": name, "index": fixed + offset + 1, "param": table.name,
+                        "lo": table.lo, "hi": table.hi, "value": str(item)}, False))
+        return found
+
+
+def _byte_data_fits(address: Address, width: int) -> bool:
+    """True when `address` is a byte address with room for `width` bytes: what parsing its
+    spelling with want_bit=False accepts, found without formatting and parsing it."""
+    byte = address.byte
+    if address.bit is not None or type(byte) is not int:
+        return False
+    last = byte + max(width, 1) - 1
+    for lo, hi in AREA_RANGES[address.area]:  # noqa: SIM110 (any() of a generator is slower)
+        if lo <= byte and last <= hi:
+            return True
+    return False
+
+
+def _write_problem(name: str, address: Address) -> tuple[str, dict[str, object]] | None:
+    """Why instruction `name` may not write `address` (code and arguments), None if it may."""
+    if address.area in INPUT_AREAS:
+        return "write-input", {"name": name, "address": str(address)}
+    if address.is_result_register():
+        return "write-result-register", {"name": name, "address": str(address)}
+    return None
 
 
 def check(program: Program, dialect: str | None = None) -> list[Diagnostic]:

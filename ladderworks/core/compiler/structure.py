@@ -9,6 +9,7 @@ from __future__ import annotations
 from bisect import bisect_left
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from operator import itemgetter
 
 from ladderworks.core.instructions import Flow, InstructionSpec, ParamKind
 
@@ -74,6 +75,9 @@ def number_of(value: object) -> int | None:
     return number if isinstance(number, int) else None
 
 
+_index = itemgetter(0)
+
+
 def _target(spec: InstructionSpec, params: Sequence[object]) -> int | None:
     for param, value in zip(spec.params, params, strict=False):
         if param.kind in (ParamKind.PROGRAM, ParamKind.LABEL):
@@ -81,31 +85,47 @@ def _target(spec: InstructionSpec, params: Sequence[object]) -> int | None:
     return None
 
 
+# An item whose flow is not Flow.NONE: its index among the items, its row and its parameters.
+FlowItem = tuple[int, InstructionSpec, Sequence[object]]
+
+
 class _Builder:
-    def __init__(self, items: Sequence[tuple[InstructionSpec, Sequence[object]]]) -> None:
-        self.items = items
+    def __init__(self, count: int, flows: Sequence[FlowItem]) -> None:
+        self.count = count
+        self.flows = flows
         self.problems: list[Problem] = []
         self.levels: dict[int, Unit] = {}
         self.subprograms: dict[int, Unit] = {}
-        self.unit_of: list[Unit | None] = [None] * len(items)
-        self.label_jumps: list[int] = []  # the items jumping to a label, in order
+        self.unit_of: list[Unit | None] = [None] * count
+        self.label_jumps: list[FlowItem] = []  # the items jumping to a label, in order
+
+    def place_plain(self, start: int, end: int, current: Unit | None, ended: bool) -> None:
+        """Items `start`..`end` (end exclusive), whose flow is NONE: in the current unit."""
+        if start >= end:
+            return
+        if ended:
+            self.problems += [Problem("after-end", index) for index in range(start, end)]
+        elif current is None:
+            self.problems += [Problem("outside-subprogram", index)
+                              for index in range(start, end)]
+        else:
+            self.unit_of[start:end] = [current] * (end - start)
 
     def build(self) -> Structure:
-        first_end = next((spec.level for spec, _ in self.items if spec.flow is Flow.LEVEL_END),
-                         None)
+        first_end = next((spec.level for _, spec, _ in self.flows
+                          if spec.flow is Flow.LEVEL_END), None)
         level = 1 if first_end == 1 else 2  # no END1 first: the program is level 2
         current: Unit | None = Unit(f"L{level}", level, 0, 0, 0)
         sub_area = False
         ended = False
-        unit_of = self.unit_of
-        plain = Flow.NONE
-        for index, (spec, params) in enumerate(self.items):
+        placed = 0  # the items before it are placed
+        for item in self.flows:
+            index, spec, params = item
+            self.place_plain(placed, index, current, ended)
+            placed = index + 1
             flow = spec.flow
-            if flow is plain and current is not None and not ended:
-                unit_of[index] = current  # most items: in the current unit, nothing else
-                continue
             if flow is Flow.LABEL_JUMP or flow is Flow.LABEL_JUMP_MAIN:
-                self.label_jumps.append(index)
+                self.label_jumps.append(item)
             if ended:
                 self.problems.append(Problem("after-end", index))
                 continue
@@ -166,10 +186,11 @@ class _Builder:
                 called = _target(spec, params)
                 if called is not None:
                     current.calls.append((index, called))
+        self.place_plain(placed, self.count, current, ended)
         if current is not None:
             if current.level == 0:
                 self.problems.append(Problem("sp-without-spe", current.start))
-            self.close(current, len(self.items))
+            self.close(current, self.count)
         structure = Structure(self.levels, self.subprograms, self.unit_of, self.problems)
         self.check_calls(structure)
         self.check_labels(structure)
@@ -231,8 +252,8 @@ class _Builder:
         reach = structure.callers()
         jumps = self.label_jumps
         for unit in structure.units():
-            for index in jumps[bisect_left(jumps, unit.start):bisect_left(jumps, unit.end)]:
-                spec, params = self.items[index]
+            for index, spec, params in jumps[bisect_left(jumps, unit.start, key=_index):
+                                             bisect_left(jumps, unit.end, key=_index)]:
                 if spec.flow is Flow.LABEL_JUMP:
                     label = _target(spec, params)
                     if label is not None and label not in unit.labels:
@@ -254,4 +275,13 @@ class _Builder:
 
 def analyse(items: Sequence[tuple[InstructionSpec, Sequence[object]]]) -> Structure:
     """The units of a program given as (spec, params) per instruction, in program order."""
-    return _Builder(items).build()
+    plain = Flow.NONE
+    return analyse_flows(len(items), [(index, spec, params)
+                                      for index, (spec, params) in enumerate(items)
+                                      if spec.flow is not plain])
+
+
+def analyse_flows(count: int, flows: Sequence[FlowItem]) -> Structure:
+    """The units of a program of `count` items, given only the items whose flow is not
+    Flow.NONE, in program order (the others are read by no part of the analysis)."""
+    return _Builder(count, flows).build()
