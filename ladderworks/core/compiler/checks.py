@@ -86,12 +86,13 @@ def dialect_of(program: object) -> str:
 
 
 # What the walk does at an instruction, by its table row (found once per name in a run).
-_UNKNOWN = 0  # no row: an unknown instruction
-_READ = 1  # a contact reading its operand (RD, AND.NOT, ...): most instructions
+_READ = 0  # a contact starting the logic (RD, RD.NOT)
+_CONTACT = 1  # a contact joining the logic before it (AND, OR.NOT, ...): with _READ, most
 _WRITE = 2  # a coil writing its operand (WRT, SET, ...)
 _BASIC = 3  # any other basic instruction (the stack operations)
 _OTHER = 4  # a functional instruction or END
 _FLOW = 5  # a functional instruction or END with a part in the structure (Flow is not NONE)
+_UNKNOWN = 6  # no row: an unknown instruction
 
 # An instruction's step in the walk: its action, its row, and whether a unit (level or
 # subprogram) starts there, closing the JMP/COM ranges of the one before.
@@ -105,11 +106,11 @@ def _step(spec: InstructionSpec | None) -> _Step:
         return _UNKNOWN_STEP
     if spec.kind is not Kind.BASIC:
         return (_OTHER if spec.flow is Flow.NONE else _FLOW, spec, False)
-    if spec.operand and spec.combine is Combine.READ and spec.pushes == 0:
-        return (_READ, spec, False)
-    if spec.operand and spec.pushes == 0 and spec.write is not Write.NONE:
+    if not spec.operand or spec.pushes != 0:
+        return (_BASIC, spec, False)
+    if spec.write is not Write.NONE:
         return (_WRITE, spec, False)
-    return (_BASIC, spec, False)
+    return (_READ if spec.combine is Combine.READ else _CONTACT, spec, False)
 
 
 _NAME = attrgetter("name")
@@ -214,27 +215,32 @@ class _Checker:
         jumps, commons = self.jumps, self.commons
         previous_network = -1
         depth, logic = 0, False
-        last: Instruction | None = None
-        last_spec: InstructionSpec | None = None
+        last: Instruction | None = None  # the last instruction checked
+        dangles = False  # it is a basic instruction that is not a coil
         all_steps = iter(steps)
         for n, network in enumerate(self.program.networks):
             instructions = network.instructions
             if not instructions:
                 continue
-            self.end_network(previous_network, last, last_spec, logic)
+            if logic and dangles:
+                self.dangling(last, previous_network)
             previous_network, depth, logic = n, 0, False
             # zip takes the instruction first: at the network's end it stops, taking no step
             walk = zip(instructions, all_steps)  # noqa: B905
             for ins, (action, spec, starts_unit) in walk:
                 if starts_unit:
                     self.close_ranges()
-                if action == _READ:
-                    last, last_spec = ins, spec
-                    if isinstance(ins.operand, Address):
+                if action <= _CONTACT:
+                    last, dangles = ins, True
+                    if isinstance(ins.operand, Address) and (logic or action == _READ):
                         logic = True
-                    else:
-                        assert spec is not None
+                        continue
+                    assert spec is not None
+                    if not isinstance(ins.operand, Address):
                         self.operand_problem(ins, n, spec)
+                    else:
+                        add("no-logic", ins, n, name=spec.name)
+                        logic = True
                     continue
                 if spec is None:  # after an unknown instruction the network is not checked
                     add("unknown-instruction", ins, n, name=ins.name)
@@ -244,11 +250,13 @@ class _Checker:
                         elif rest_starts_unit:
                             self.close_ranges()
                     break
-                last, last_spec = ins, spec
+                last = ins
                 if action >= _OTHER:
+                    dangles = False
                     depth, logic = self.other(n, ins, spec, depth, logic)
                     continue
                 if action == _WRITE:
+                    dangles = False
                     operand = ins.operand
                     if not isinstance(operand, Address):
                         self.operand_problem(ins, n, spec)
@@ -260,11 +268,13 @@ class _Checker:
                     if jumps or commons:
                         self.count_coil()
                     continue
+                dangles = spec.write is Write.NONE
                 if spec.operand and not isinstance(ins.operand, Address):
                     self.operand_problem(ins, n, spec)
                     continue
                 depth, logic = self.basic(ins, n, spec, depth, logic)
-        self.end_network(previous_network, last, last_spec, logic)
+        if logic and dangles:
+            self.dangling(last, previous_network)
         self.close_ranges()
         if structure.problems:
             network_at = [n for n, network in enumerate(self.program.networks)
@@ -301,12 +311,10 @@ class _Checker:
                 self.count_coil()
         return depth, logic
 
-    def end_network(self, network: int, ins: Instruction | None,
-                    spec: InstructionSpec | None, logic: bool) -> None:
-        if network < 0 or not logic or ins is None:
-            return
-        if spec is not None and spec.kind is Kind.BASIC and spec.write is Write.NONE:
-            self.add("dangling-logic", ins, network, warning=True)
+    def dangling(self, last: Instruction | None, network: int) -> None:
+        """A network that ends in logic no coil takes."""
+        assert last is not None
+        self.add("dangling-logic", last, network, warning=True)
 
     def other(self, n: int, ins: Instruction, spec: InstructionSpec, depth: int,
               logic: bool) -> tuple[int, bool]:
@@ -321,7 +329,9 @@ class _Checker:
                 self.add("box-inputs", ins, n, name=spec.name, count=count)
             depth = max(0, depth - (count - 1))
         logic = spec.w1 or logic
-        self.function(ins, spec, n)
+        if spec.flow is not Flow.NONE:
+            self.flow(ins, spec, n)
+        self.own_checks(ins, spec, n)
         return depth, logic
 
     def count_coil(self) -> None:
@@ -360,7 +370,8 @@ class _Checker:
         if kind is Write.OUT:
             self.coils[key] = (kind, ins, network)
 
-    def function(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
+    def flow(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
+        """A functional instruction with a part in the structure: JMP/COM ranges, labels."""
         flow = spec.flow
         coils = ins.params[0] if ins.params and isinstance(ins.params[0], int) else 0
         if flow is Flow.JUMP:
@@ -383,7 +394,6 @@ class _Checker:
                 self.add("come-without-com", ins, network)
         elif flow is Flow.LABEL and (self.jumps or self.commons):
             self.add("label-in-range", ins, network)
-        self.own_checks(ins, spec, network)
 
     def own_checks(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
         """The checks of a functional instruction that depend on it alone (found once for
