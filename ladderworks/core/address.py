@@ -72,6 +72,8 @@ AREA_MEANING: dict[Area, str] = {
     Area.E: "extra relay",
 }
 
+_R = Area.R
+
 # Areas the program may not write: inputs from the machine and the CNC.
 INPUT_AREAS: frozenset[Area] = frozenset({Area.X, Area.F})
 
@@ -110,7 +112,7 @@ class Address:
     def is_result_register(self) -> bool:
         """True for R9000..R9005, the function result register."""
         return (
-            self.area is Area.R
+            self.area is _R  # not Area.R: an Enum member read from its class is slow (3.11)
             and RESULT_REGISTER_FIRST <= self.byte <= RESULT_REGISTER_LAST
         )
 

@@ -47,6 +47,14 @@ MAX_PUSHES = 8  # ST0..ST8: eight levels above ST0
 # Flows the code generator turns into control flow, not function calls.
 CONTROL_FLOWS = frozenset(Flow) - {Flow.NONE}
 
+# Enum members read on every instruction, as module constants: reading one as `Write.OUT`
+# goes through the Enum metaclass (about 200 ns in Python 3.11), a global does not.
+_OUT, _NO_WRITE = Write.OUT, Write.NONE
+_NO_FLOW = Flow.NONE
+_END = Kind.END
+_WARNING, _ERROR = Severity.WARNING, Severity.ERROR
+_STARTS = Combine.READ
+
 # Parameters a functional instruction writes to (its outputs), by name.
 _OUTPUT_PARAMS = frozenset({"output", "result", "register"})
 
@@ -153,7 +161,7 @@ class _Checker:
                warning: bool = False) -> None:
         self.out.append(Diagnostic(
             code, dict(args), ins.line, ins.column,
-            Severity.WARNING if warning else Severity.ERROR, network))
+            _WARNING if warning else _ERROR, network))
 
     def steps(self) -> tuple[list[_Step], list[Instruction], Sequence[int], list[FlowItem]]:
         """The step of every instruction, every instruction, the index in them of each known
@@ -268,7 +276,7 @@ class _Checker:
                     if jumps or commons:
                         self.count_coil()
                     continue
-                dangles = spec.write is Write.NONE
+                dangles = spec.write is _NO_WRITE
                 if spec.operand and not isinstance(ins.operand, Address):
                     self.operand_problem(ins, n, spec)
                     continue
@@ -290,7 +298,7 @@ class _Checker:
               logic: bool) -> tuple[int, bool]:
         """A basic instruction other than a contact or a coil with its operand: a push or pop
         of the stack, in general."""
-        if spec.combine is Combine.READ and spec.pushes == 0:
+        if spec.combine is _STARTS and spec.pushes == 0:
             return depth, True
         if not logic:
             self.add("no-logic", ins, n, name=spec.name)
@@ -304,7 +312,7 @@ class _Checker:
                 self.add("stack-underflow", ins, n, name=spec.name)
             else:
                 depth -= 1
-        elif spec.write is not Write.NONE:
+        elif spec.write is not _NO_WRITE:
             assert ins.operand is not None
             self.write(ins, n, spec.name, ins.operand, spec.write)
             if self.jumps or self.commons:
@@ -319,7 +327,7 @@ class _Checker:
     def other(self, n: int, ins: Instruction, spec: InstructionSpec, depth: int,
               logic: bool) -> tuple[int, bool]:
         """A functional (or END) instruction: its inputs from the stack, then its own checks."""
-        if spec.kind is Kind.END:
+        if spec.kind is _END:
             return depth, logic
         count = len(spec.inputs)
         if count:
@@ -329,7 +337,7 @@ class _Checker:
                 self.add("box-inputs", ins, n, name=spec.name, count=count)
             depth = max(0, depth - (count - 1))
         logic = spec.w1 or logic
-        if spec.flow is not Flow.NONE:
+        if spec.flow is not _NO_FLOW:
             self.flow(ins, spec, n)
         self.own_checks(ins, spec, n)
         return depth, logic
@@ -358,16 +366,16 @@ class _Checker:
             else:
                 self.coils[key] = (kind, ins, network)
             return
-        if kind is Write.OUT and before[0] is Write.OUT:
+        if kind is _OUT and before[0] is _OUT:
             self.add("coil-twice", ins, network, warning=True, address=str(address))
-        elif (kind is Write.OUT) != (before[0] is Write.OUT):
+        elif (kind is _OUT) != (before[0] is _OUT):
             if before[1].line > 0:
                 self.add("coil-mixed", ins, network, warning=True,
                          address=str(address), line=before[1].line)
             else:  # compiled from the drawing: no line 0, the network it is in
                 self.add("coil-mixed-network", ins, network, warning=True,
                          address=str(address), other=before[2] + 1)
-        if kind is Write.OUT:
+        if kind is _OUT:
             self.coils[key] = (kind, ins, network)
 
     def flow(self, ins: Instruction, spec: InstructionSpec, network: int) -> None:
@@ -402,7 +410,7 @@ class _Checker:
         found = self.own.get(key)
         if found is None:
             found = []
-            if spec.flow is Flow.NONE:
+            if spec.flow is _NO_FLOW:
                 if not spec.known:
                     found.append(("unknown-sub", {"number": spec.sub}, True))
                 elif implementation_of(spec, self.registry) is None:

@@ -76,11 +76,13 @@ def number_of(value: object) -> int | None:
 
 
 _index = itemgetter(0)
+# the kinds of a P or L number (a global: an Enum member read from its class is slow in 3.11)
+_NUMBERED = (ParamKind.PROGRAM, ParamKind.LABEL)
 
 
 def _target(spec: InstructionSpec, params: Sequence[object]) -> int | None:
     for param, value in zip(spec.params, params, strict=False):
-        if param.kind in (ParamKind.PROGRAM, ParamKind.LABEL):
+        if param.kind in _NUMBERED:
             return number_of(value)
     return None
 
