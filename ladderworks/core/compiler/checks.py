@@ -132,6 +132,8 @@ _ParamPlan = tuple[Param, bool, bool, bool, bool, bool, int, int | None]
 # A functional instruction's parameters as the checks read them (see _Checker.layout).
 _Layout = tuple[tuple[_ParamPlan, ...], tuple[str, ...], Param | None, bool]
 
+_NUMBER_OR_ADDRESS = (int, Address)  # what a parameter holds (a P/L reference aside)
+
 # A diagnostic found once for the lines that share it: code, arguments, whether a warning.
 _Own = tuple[str, dict[str, object], bool]
 
@@ -454,10 +456,10 @@ class _Checker:
 
     def params(self, spec: InstructionSpec, raws: tuple[object, ...]) -> list[_Own]:
         """The diagnostics of parameters `raws` of an instruction of row `spec`."""
-        plans, names, table, by_name = self.layout(spec)
+        plans, names, table, by_name = self.layouts.get(id(spec)) or self.layout(spec)
         name = spec.name
-        # param_map(), built only for the rows that read it
-        values: dict[str, object] = dict(zip(names, raws, strict=False)) if by_name else {}
+        # param_map(), built only for the rows that read it (zip's strict= costs a keyword call)
+        values: dict[str, object] = dict(zip(names, raws)) if by_name else {}  # noqa: B905
         fixed = len(plans)
         expected = fixed
         if table is not None:
@@ -479,7 +481,7 @@ class _Checker:
                         "name": name, "index": number, "param": param.name, "text": "?"}, False))
                     continue
                 value = program_or_label
-            elif isinstance(raw, (int, Address)):
+            elif isinstance(raw, _NUMBER_OR_ADDRESS):
                 value = raw
             else:  # a P/L reference where a number or an address belongs
                 found.append(("param-kind-number", {
