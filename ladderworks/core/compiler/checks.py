@@ -7,6 +7,7 @@ implementations. Dispatch is on the instruction table's fields, never on spellin
 
 from __future__ import annotations
 
+import gc
 from collections.abc import Callable, Sequence
 from itertools import compress, count
 from operator import attrgetter
@@ -557,4 +558,12 @@ def check(program: Program, dialect: str | None = None) -> list[Diagnostic]:
     `compile` runs exactly these; a program they pass always compiles and generates.
     `dialect` overrides the program's own ("seed" or "fanuc": the ranges of numbers).
     """
-    return _Checker(program, dialect).run()
+    # no cycle collection meanwhile: the checks make tens of thousands of objects and no
+    # cycles, and a collection would walk the program's whole heap (as parse and xref do)
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        return _Checker(program, dialect).run()
+    finally:
+        if enabled:
+            gc.enable()

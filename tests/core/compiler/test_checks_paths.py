@@ -3,6 +3,8 @@ positions and order (programs built in code have line 0: their order is the walk
 
 from __future__ import annotations
 
+import gc
+
 from ladderworks.core.address import Address, Area, format_address
 from ladderworks.core.compiler import check
 from ladderworks.core.il import Instruction, Network, Program, parse
@@ -214,3 +216,18 @@ def test_an_unknown_sub_has_a_row_for_its_parameter_count() -> None:
         ("unknown-sub", {"number": 219}, 0, "warning", 2),
         ("param-range", {"name": "SUB.219", "index": 1, "param": "p1", "lo": -2**31,
                          "hi": 2**32 - 1, "value": 2**33}, 0, "error", 2)]
+
+
+def test_check_leaves_the_cycle_collector_as_it_found_it() -> None:
+    program = function("MOVB", Address(Area.R, 0), Address(Area.X, 3))
+    was = gc.isenabled()
+    try:
+        gc.enable()
+        assert [code for code, *_ in found(program)] == ["write-input"]
+        assert gc.isenabled()
+        gc.disable()
+        assert [code for code, *_ in found(program)] == ["write-input"]
+        assert not gc.isenabled()
+    finally:
+        if was:
+            gc.enable()
