@@ -162,8 +162,9 @@ class _Checker:
 
     def report(self, code: str, ins: Instruction, network: int, args: dict[str, object], *,
                warning: bool = False) -> None:
+        """A diagnostic at `ins` with `args` (its own dict: callers copy one they share)."""
         self.out.append(Diagnostic(
-            code, dict(args), ins.line, ins.column,
+            code, args, ins.line, ins.column,
             _WARNING if warning else _ERROR, network))
 
     def steps(self) -> tuple[list[_Step], list[Instruction], Sequence[int], list[FlowItem]]:
@@ -292,8 +293,8 @@ class _Checker:
                           for _ in network.instructions]
             for problem in structure.problems:
                 index = known[problem.index]
-                self.report(problem.code, every[index], network_at[index], problem.args,
-                            warning=problem.warning)
+                self.report(problem.code, every[index], network_at[index],
+                            dict(problem.args), warning=problem.warning)
         self.out.sort(key=lambda d: (d.line, d.column))
         return self.out
 
@@ -370,14 +371,14 @@ class _Checker:
                 self.coils[key] = (kind, ins, network)
             return
         if kind is _OUT and before[0] is _OUT:
-            self.add("coil-twice", ins, network, warning=True, address=str(address))
+            self.report("coil-twice", ins, network, {"address": str(address)}, warning=True)
         elif (kind is _OUT) != (before[0] is _OUT):
             if before[1].line > 0:
-                self.add("coil-mixed", ins, network, warning=True,
-                         address=str(address), line=before[1].line)
+                self.report("coil-mixed", ins, network,
+                            {"address": str(address), "line": before[1].line}, warning=True)
             else:  # compiled from the drawing: no line 0, the network it is in
-                self.add("coil-mixed-network", ins, network, warning=True,
-                         address=str(address), other=before[2] + 1)
+                self.report("coil-mixed-network", ins, network,
+                            {"address": str(address), "other": before[2] + 1}, warning=True)
         if kind is _OUT:
             self.coils[key] = (kind, ins, network)
 
@@ -421,7 +422,7 @@ class _Checker:
             found += self.params(spec, ins.params)
             self.own[key] = found
         for code, args, warning in found:
-            self.report(code, ins, network, args, warning=warning)
+            self.report(code, ins, network, dict(args), warning=warning)
 
     def close_ranges(self) -> None:
         """At the end of a unit: its JMP 0 / COM 0 ranges must be closed."""
