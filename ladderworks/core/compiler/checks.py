@@ -117,9 +117,12 @@ def _step(spec: InstructionSpec | None) -> _Step:
         return (_OTHER if spec.flow is Flow.NONE else _FLOW, spec, False)
     if not spec.operand or spec.pushes != 0:
         return (_BASIC, spec, False)
-    if spec.write is not Write.NONE:
-        return (_WRITE, spec, False)
-    return (_READ if spec.combine is Combine.READ else _CONTACT, spec, False)
+    reads, writes = spec.combine is Combine.READ, spec.write is not Write.NONE
+    if reads and not writes:
+        return (_READ, spec, False)
+    if not reads:
+        return (_WRITE if writes else _CONTACT, spec, False)
+    return (_BASIC, spec, False)  # no such row: the walk's general path
 
 
 _NAME = attrgetter("name")
