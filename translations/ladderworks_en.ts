@@ -919,83 +919,89 @@
 <context>
     <name>FindReplace</name>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="159"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="221"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="161"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="172"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
         <source>Not found</source>
         <translation>Not found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="171"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="190"/>
         <source>network {0}</source>
         <translation>network {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="172"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
         <source>{0} of {1}: {2}, {3}</source>
         <translation>{0} of {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="204"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
         <source>Replace {0} with {1}</source>
         <translation>Replace {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="210"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="229"/>
         <source>Replaced; no more found</source>
         <translation>Replaced; no more found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="226"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="245"/>
         <source>Replace all {0} with {1}</source>
         <translation>Replace all {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="228"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="247"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{0} replaced in {1} networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="236"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="255"/>
         <source>Find and replace</source>
         <translation>Find and replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="237"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="256"/>
         <source>Find:</source>
         <translation>Find:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="238"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="257"/>
         <source>Replace with:</source>
         <translation>Replace with:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
         <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
         <translation>Address, symbol or words, e.g. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="242"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="261"/>
         <source>Address or symbol, e.g. R200</source>
         <translation>Address or symbol, e.g. R200</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="243"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="262"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="244"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="263"/>
+        <source>Find &amp;previous</source>
+        <translation>Find &amp;previous</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="264"/>
         <source>&amp;Replace</source>
         <translation>&amp;Replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="245"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
         <source>Replace &amp;all</source>
         <translation>Replace &amp;all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="246"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="266"/>
         <source>Close</source>
         <translation>Close</translation>
     </message>
@@ -1397,51 +1403,61 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="122"/>
+        <source>Find &amp;next</source>
+        <translation>Find &amp;next</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="124"/>
+        <source>Find pre&amp;vious</source>
+        <translation>Find pre&amp;vious</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="126"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="129"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="128"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="134"/>
         <source>Fit &amp;width</source>
         <translation>Fit &amp;width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="133"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="139"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="141"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="139"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="143"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="147"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="151"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="149"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="153"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
@@ -1662,22 +1678,22 @@
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="431"/>
+        <location filename="../ladderworks/gui/main_window.py" line="442"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="434"/>
+        <location filename="../ladderworks/gui/main_window.py" line="445"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="466"/>
+        <location filename="../ladderworks/gui/main_window.py" line="477"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="467"/>
+        <location filename="../ladderworks/gui/main_window.py" line="478"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
