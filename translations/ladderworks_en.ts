@@ -2496,87 +2496,92 @@
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="66"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="67"/>
         <source>Printing the ladder…</source>
         <translation>Printing the ladder…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="67"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="68"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="149"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="150"/>
         <source>Print preview</source>
         <translation>Print preview</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="167"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
         <source>Export PDF</source>
         <translation>Export PDF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="169"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF files (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="176"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="177"/>
         <source>&amp;Print...</source>
         <translation>&amp;Print...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="177"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
         <source>Print pre&amp;view...</source>
         <translation>Print pre&amp;view...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="179"/>
         <source>Export P&amp;DF...</source>
         <translation>Export P&amp;DF...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="185"/>
         <source>Printing was cancelled or failed</source>
         <translation>Printing was cancelled or failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="186"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="187"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} pages written to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="188"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} pages sent to the printer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="268"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="278"/>
+        <source>Printed {0}</source>
+        <translation>Printed {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="280"/>
         <source>Page {0} / {1}</source>
         <translation>Page {0} / {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="294"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="306"/>
         <source>Cross reference</source>
         <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="297"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="309"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="298"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="310"/>
         <source>Symbol</source>
         <translation>Symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="299"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="311"/>
         <source>Written in networks</source>
         <translation>Written in networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="300"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="312"/>
         <source>Read in networks</source>
         <translation>Read in networks</translation>
     </message>

@@ -2496,87 +2496,92 @@
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="66"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="67"/>
         <source>Printing the ladder…</source>
         <translation>Ladder yazdırılıyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="67"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="68"/>
         <source>Cancel</source>
         <translation>İptal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="149"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="150"/>
         <source>Print preview</source>
         <translation>Baskı önizleme</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="167"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
         <source>Export PDF</source>
         <translation>PDF olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="169"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF dosyaları (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="176"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="177"/>
         <source>&amp;Print...</source>
         <translation>&amp;Yazdır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="177"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
         <source>Print pre&amp;view...</source>
         <translation>Baskı ön&amp;izleme...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="179"/>
         <source>Export P&amp;DF...</source>
         <translation>P&amp;DF olarak dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="185"/>
         <source>Printing was cancelled or failed</source>
         <translation>Yazdırma iptal edildi veya başarısız oldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="186"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="187"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} sayfa {1} dosyasına yazıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="188"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} sayfa yazıcıya gönderildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="268"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="278"/>
+        <source>Printed {0}</source>
+        <translation>Yazdırıldı: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="280"/>
         <source>Page {0} / {1}</source>
         <translation>Sayfa {0} / {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="294"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="306"/>
         <source>Cross reference</source>
         <translation>Çapraz referans</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="297"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="309"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="298"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="310"/>
         <source>Symbol</source>
         <translation>Sembol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="299"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="311"/>
         <source>Written in networks</source>
         <translation>Yazıldığı devreler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="300"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="312"/>
         <source>Read in networks</source>
         <translation>Okunduğu devreler</translation>
     </message>
