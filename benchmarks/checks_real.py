@@ -1,6 +1,6 @@
 """Prints ms of the compiler's checks alone (`check(program)`) on each real FANUC program
-(../shared/real-programs), parsed once: the first run in this process (it imports the function
-implementations) and the median of warm runs, wall and CPU. Run from the repository root:
+(../shared/real-programs), parsed once: the first run in this process and the median of warm
+runs, wall and CPU. Run from the repository root:
 python3 benchmarks/checks_real.py
 """
 

@@ -11,7 +11,7 @@ import gc
 from collections.abc import Callable, Sequence
 from itertools import compress, count
 from operator import attrgetter
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ladderworks.core.address import (
     AREA_RANGES,
@@ -40,8 +40,10 @@ from ladderworks.core.instructions import (
     value_is_address,
     width_of,
 )
-from ladderworks.core.plc import functions
-from ladderworks.core.plc.functions import FunctionImpl, load_all
+from ladderworks.core.plc.families import IMPLEMENTED
+
+if TYPE_CHECKING:
+    from ladderworks.core.plc.functions import FunctionImpl
 
 MAX_PUSHES = 8  # ST0..ST8: eight levels above ST0
 
@@ -77,6 +79,8 @@ def implementation_of(spec: InstructionSpec,
     impl = registry.get(spec.name)
     if impl is not None:
         return impl
+    from ladderworks.core.plc import functions  # loaded with the engine, never by `check`
+
     impl_for: Callable[[InstructionSpec], Any] | None = getattr(functions, "impl_for", None)
     if impl_for is not None and (spec.cnc or not spec.known):
         try:
@@ -148,7 +152,7 @@ class _Checker:
     def __init__(self, program: Program, dialect: str | None) -> None:
         self.out: list[Diagnostic] = []
         self.coils: dict[tuple[object, ...], tuple[Write, Instruction, int]] = {}  # see write
-        self.registry = load_all()
+        self.implemented = IMPLEMENTED  # names only: `check` loads no implementation
         self.dialect = dialect or dialect_of(program)
         self.program = program
         self.jumps: list[tuple[int, Instruction, int | None]] = []  # network, JMP, coils left
@@ -420,7 +424,7 @@ class _Checker:
             if spec.flow is _NO_FLOW:
                 if not spec.known:
                     found.append(("unknown-sub", {"number": spec.sub}, True))
-                elif implementation_of(spec, self.registry) is None:
+                elif spec.name not in self.implemented:
                     found.append(("not-implemented", {"name": spec.name}, False))
             found += self.params(spec, ins.params)
             self.own[key] = found

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import csv
 import re
 
 from ladderworks.core.address import (
@@ -67,6 +66,8 @@ def read_symbols(section: Section, first: int, table: SymbolTable,
 
 def _read_csv_symbols(section: Section, first: int, table: SymbolTable,
                       out: list[Diagnostic]) -> None:
+    import csv  # only for a `%@2-E` section: most programs have none
+
     columns = {name.upper(): int(number) - 1 for name, number in
                _COLUMNS_RE.findall(section.title)}
     sym, adr = columns.get("SYM", 0), columns.get("ADR", 1)
