@@ -67,7 +67,7 @@ class Structure:
         return reach
 
 
-# The flows as module constants: reading an Enum member from its class (`Flow.LABEL`)
+# The flows (and kinds) as module constants: reading an Enum member from its class (`Flow.LABEL`)
 # goes through the Enum metaclass, about 200 ns in Python 3.11; a global does not.
 _CALL = Flow.CALL
 _CALL_ALWAYS = Flow.CALL_ALWAYS
@@ -79,6 +79,7 @@ _NONE = Flow.NONE
 _PROGRAM_END = Flow.PROGRAM_END
 _SUBPROGRAM = Flow.SUBPROGRAM
 _SUBPROGRAM_END = Flow.SUBPROGRAM_END
+_NUMBERED = (ParamKind.PROGRAM, ParamKind.LABEL)  # the kinds of a P or L number
 
 
 def number_of(value: object) -> int | None:
@@ -89,9 +90,7 @@ def number_of(value: object) -> int | None:
     return number if isinstance(number, int) else None
 
 
-_index = itemgetter(0)
-# the kinds of a P or L number (a global: an Enum member read from its class is slow in 3.11)
-_NUMBERED = (ParamKind.PROGRAM, ParamKind.LABEL)
+_index = itemgetter(0)  # a FlowItem's index: the key the label jumps are bisected by
 
 
 def _target(spec: InstructionSpec, params: Sequence[object]) -> int | None:
