@@ -919,83 +919,89 @@
 <context>
     <name>FindReplace</name>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="159"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="221"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="161"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="172"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
         <source>Not found</source>
         <translation>Not found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="171"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="190"/>
         <source>network {0}</source>
         <translation>network {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="172"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
         <source>{0} of {1}: {2}, {3}</source>
         <translation>{0} of {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="204"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
         <source>Replace {0} with {1}</source>
         <translation>Replace {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="210"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="229"/>
         <source>Replaced; no more found</source>
         <translation>Replaced; no more found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="226"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="245"/>
         <source>Replace all {0} with {1}</source>
         <translation>Replace all {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="228"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="247"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{0} replaced in {1} networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="236"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="255"/>
         <source>Find and replace</source>
         <translation>Find and replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="237"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="256"/>
         <source>Find:</source>
         <translation>Find:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="238"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="257"/>
         <source>Replace with:</source>
         <translation>Replace with:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
         <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
         <translation>Address, symbol or words, e.g. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="242"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="261"/>
         <source>Address or symbol, e.g. R200</source>
         <translation>Address or symbol, e.g. R200</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="243"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="262"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="244"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="263"/>
+        <source>Find &amp;previous</source>
+        <translation>Find &amp;previous</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="264"/>
         <source>&amp;Replace</source>
         <translation>&amp;Replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="245"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
         <source>Replace &amp;all</source>
         <translation>Replace &amp;all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="246"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="266"/>
         <source>Close</source>
         <translation>Close</translation>
     </message>
@@ -1397,51 +1403,61 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="122"/>
+        <source>Find &amp;next</source>
+        <translation>Find &amp;next</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="124"/>
+        <source>Find pre&amp;vious</source>
+        <translation>Find pre&amp;vious</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="126"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="129"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="128"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="134"/>
         <source>Fit &amp;width</source>
         <translation>Fit &amp;width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="133"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="139"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="141"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="139"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="143"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="147"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="151"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="149"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="153"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
@@ -1662,22 +1678,22 @@
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="431"/>
+        <location filename="../ladderworks/gui/main_window.py" line="442"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="434"/>
+        <location filename="../ladderworks/gui/main_window.py" line="445"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="466"/>
+        <location filename="../ladderworks/gui/main_window.py" line="477"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="467"/>
+        <location filename="../ladderworks/gui/main_window.py" line="478"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2480,87 +2496,92 @@
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="66"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="67"/>
         <source>Printing the ladder…</source>
         <translation>Printing the ladder…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="67"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="68"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="149"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="150"/>
         <source>Print preview</source>
         <translation>Print preview</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="167"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
         <source>Export PDF</source>
         <translation>Export PDF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="169"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF files (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="176"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="177"/>
         <source>&amp;Print...</source>
         <translation>&amp;Print...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="177"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
         <source>Print pre&amp;view...</source>
         <translation>Print pre&amp;view...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="179"/>
         <source>Export P&amp;DF...</source>
         <translation>Export P&amp;DF...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="185"/>
         <source>Printing was cancelled or failed</source>
         <translation>Printing was cancelled or failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="186"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="187"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} pages written to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="188"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} pages sent to the printer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="268"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="278"/>
+        <source>Printed {0}</source>
+        <translation>Printed {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/print_pages.py" line="280"/>
         <source>Page {0} / {1}</source>
         <translation>Page {0} / {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="294"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="306"/>
         <source>Cross reference</source>
         <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="297"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="309"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="298"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="310"/>
         <source>Symbol</source>
         <translation>Symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="299"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="311"/>
         <source>Written in networks</source>
         <translation>Written in networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="300"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="312"/>
         <source>Read in networks</source>
         <translation>Read in networks</translation>
     </message>

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 import importlib
-import pkgutil
 import sys
 from collections.abc import Sequence
 
@@ -36,9 +35,12 @@ def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     parser.add_argument("--version", action=_Version, nargs=0,
                         help="show program's version number and exit")
     subparsers = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    names = sorted(info.name for info in pkgutil.iter_modules(__path__))
     if command in COMMANDS:
         names = [COMMANDS[command]]
+    else:
+        import pkgutil  # only to list every command module
+
+        names = sorted(info.name for info in pkgutil.iter_modules(__path__))
     for name in names:
         if name.startswith("_"):  # __main__ runs the CLI when imported
             continue

@@ -8,7 +8,7 @@ import sys
 from ladderworks.cli._programs import load_program
 from ladderworks.core.compiler import check
 from ladderworks.core.diagnostics import Diagnostic, has_errors
-from ladderworks.core.il import parse_file, print_program
+from ladderworks.core.il import parse_file
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -41,6 +41,8 @@ def _check(args: argparse.Namespace) -> int:
 
 
 def _format(args: argparse.Namespace) -> int:
+    from ladderworks.core.il import print_program  # `check` loads no printer
+
     program = load_program(args.file)
     if program is None:
         return 1

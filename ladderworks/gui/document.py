@@ -15,6 +15,7 @@ from ladderworks.core.il.parser import ParseResult, parse_bytes
 from ladderworks.core.il.printer import encode_program, print_faithful
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text
 from ladderworks.core.ladder.convert import Kept, adopt_origin, damaged_drafts
+from ladderworks.gui import heap
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.files import atomic_write_bytes, write_target
 from ladderworks.gui.parameter_document import ParameterDocument
@@ -140,6 +141,7 @@ class ProgramDocument(QObject):
     def read(self, path: Path) -> tuple[ParseResult, bytes]:
         """Read and parse `path` (OSError); it becomes the document's file."""
         data = path.read_bytes()
+        heap.release()  # the program shown so far is dropped
         result = parse_bytes(data)
         if result.program.source is not None:
             result.diagnostics = sorted(

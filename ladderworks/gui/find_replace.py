@@ -60,7 +60,8 @@ def _position(hit: Found) -> tuple[int, int, int]:
 
 
 class FindReplaceDialog(Retranslating, QDialog):
-    """Find next, Replace, Replace all over the editor's networks; hits move its cursor."""
+    """Find next/previous, Replace, Replace all over the editor's networks; hits move its
+    cursor."""
 
     def __init__(self, editor: LadderEditor, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -82,6 +83,7 @@ class FindReplaceDialog(Retranslating, QDialog):
         form.addRow(self._replace_label, self.replace_text)
         self.buttons = QDialogButtonBox(self)
         self.find_next_button = self._button("find_next", self.find_next)
+        self.find_previous_button = self._button("find_previous", self.find_previous)
         self.replace_button = self._button("replace_one", self.replace_one)
         self.replace_all_button = self._button("replace_all", self.replace_all)
         self.close_button = self._button("find_close", self.close)
@@ -163,6 +165,23 @@ class FindReplaceDialog(Retranslating, QDialog):
         self._go_to(hits, number)
         return hits[number]
 
+    def find_previous(self) -> Found | None:
+        """Move the editor's cursor to the hit before it (wrapping round); None if none."""
+        hits = self.hits()
+        if not hits:
+            self._say(translate("FindReplace", "Not found"))
+            return None
+        here = self.editor.cursor_cell
+        before = [k for k, hit in enumerate(hits) if _position(hit) < here]
+        number = before[-1] if before else len(hits) - 1
+        self._go_to(hits, number)
+        return hits[number]
+
+    def find_again(self, forward: bool) -> Found | None:
+        """Find next (F3) or previous (Shift+F3) with the text already typed; the message
+        says "Not found" for none."""
+        return self.find_next() if forward else self.find_previous()
+
     def _go_to(self, hits: list[Found], number: int) -> None:
         hit = hits[number]
         self.editor.selection = None
@@ -241,6 +260,7 @@ class FindReplaceDialog(Retranslating, QDialog):
         self.replace_text.setPlaceholderText(
             translate("FindReplace", "Address or symbol, e.g. R200"))
         self.find_next_button.setText(translate("FindReplace", "Find &next"))
+        self.find_previous_button.setText(translate("FindReplace", "Find &previous"))
         self.replace_button.setText(translate("FindReplace", "&Replace"))
         self.replace_all_button.setText(translate("FindReplace", "Replace &all"))
         self.close_button.setText(translate("FindReplace", "Close"))

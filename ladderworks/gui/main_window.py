@@ -423,6 +423,17 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.find_dialog.start(replacing)
         return self.find_dialog
 
+    def find_again(self, forward: bool = True) -> None:
+        """Edit › Find next (F3) / Find previous (Shift+F3): the last search again, from the
+        cursor; the Find dialog opens when nothing was searched for yet."""
+        dialog = self.find_dialog
+        if dialog is None or dialog.query() is None:
+            self.show_find(False)
+            return
+        if self.show_as_ladder():
+            dialog.find_again(forward)
+            self._show_message(dialog.message.text())
+
     # -- help and closing ----------------------------------------------------------------
 
     def use_signal(self, address: Address) -> None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QCoreApplication, QMarginsF, QObject, Qt
+from PySide6.QtCore import QCoreApplication, QDateTime, QLocale, QMarginsF, QObject, Qt
 from PySide6.QtGui import (
     QAction,
     QKeySequence,
@@ -39,7 +39,8 @@ def print_job(window: MainWindow) -> PrintJob:
         networks=editor.model.ladder_document().networks, describe=editor.describe_address,
         symbols=editor.model.symbols, title=program_title(window.program_info),
         file_name=Path(path).name if path is not None else translate("Print", "Untitled"),
-        dialect=editor.model.dialect)
+        dialect=editor.model.dialect,
+        printed=QLocale().toString(QDateTime.currentDateTime(), QLocale.FormatType.ShortFormat))
 
 
 def _page_layout() -> QPageLayout:

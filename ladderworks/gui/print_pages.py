@@ -54,6 +54,7 @@ class PrintJob:
     title: str
     file_name: str
     dialect: str = "seed"
+    printed: str = ""  # when it was printed, in the UI language's short date and time
 
 
 @dataclass(frozen=True, slots=True)
@@ -263,9 +264,20 @@ class LadderPages:
         bottom = HEADER_H + self.body
         painter.drawLine(0, int(bottom + 4), int(self.width), int(bottom + 4))
         painter.setPen(INK)
+        printed, page = self.footer(number)
         painter.drawText(QRectF(0, bottom + 6, self.width, FOOTER_H - 6),
-                         Qt.AlignmentFlag.AlignCenter,
-                         translate("Print", "Page {0} / {1}").format(number, len(self.pages)))
+                         Qt.AlignmentFlag.AlignCenter, page)
+        if printed:
+            painter.drawText(QRectF(0, bottom + 6, self.width * 0.35, FOOTER_H - 6),
+                             Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter,
+                             self.metrics.elidedText(printed, Qt.TextElideMode.ElideRight,
+                                                     self.width * 0.35))
+
+    def footer(self, number: int) -> tuple[str, str]:
+        """The footer of page `number`: when it was printed ("" if unknown), its number."""
+        printed = translate("Print", "Printed {0}").format(self.job.printed) \
+            if self.job.printed else ""
+        return printed, translate("Print", "Page {0} / {1}").format(number, len(self.pages))
 
     def _paint_network(self, painter: QPainter, placement: Placement) -> None:
         network = self.job.networks[placement.network]

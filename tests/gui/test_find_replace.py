@@ -129,3 +129,32 @@ def test_a_wrong_replacement_says_why_in_the_ui_language(window: MainWindow,
     assert dialog.replace_all() == 0
     assert "bit ile" in dialog.message.text()
     assert dialog.windowTitle() == "Bul ve değiştir"
+
+
+def test_find_previous_walks_back_and_f3_repeats_the_search(window: MainWindow,
+                                                             qtbot: QtBot) -> None:
+    window.load(EXAMPLES / "or_double.LAD")
+    uses = _uses(window, "R1.0")
+    window.editor.move_cursor(0, 0, 0)
+    window.find_again(True)  # F3 with nothing searched for yet opens the dialog
+    dialog = window.find_dialog
+    assert dialog is not None and dialog.isVisible()
+    dialog.find_text.setText("R1.0")
+    dialog.close()
+    window.editor.setFocus()
+    forward = []
+    for _ in range(len(uses)):
+        qtbot.keyClick(window.editor, Qt.Key.Key_F3)
+        index, row, col = window.editor.cursor_cell
+        forward.append((index, (row, col)))
+    assert forward == uses
+    backward = []
+    for _ in range(len(uses)):
+        qtbot.keyClick(window.editor, Qt.Key.Key_F3, Qt.KeyboardModifier.ShiftModifier)
+        index, row, col = window.editor.cursor_cell
+        backward.append((index, (row, col)))
+    # from the last hit back: each earlier one, then round to the last again
+    assert backward == [*reversed(uses[:-1]), uses[-1]]
+    assert " of " in window.statusBar().currentMessage()
+    dialog.find_text.setText("Y99.9")
+    assert dialog.find_previous() is None and dialog.message.text() == "Not found"

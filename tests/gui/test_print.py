@@ -6,6 +6,7 @@ import re
 from pathlib import Path
 
 import pytest
+from PySide6.QtCore import QDate
 from PySide6.QtPrintSupport import QPrintDialog, QPrinter
 from PySide6.QtWidgets import QDialog, QProgressDialog
 from pytestqt.qtbot import QtBot
@@ -166,3 +167,19 @@ def test_print_honours_the_page_range_of_the_dialog(qtbot: QtBot, window: MainWi
     window.actions_by_name["action_print"].trigger()
     assert _page_count(out.read_bytes()) == 2 < len(_plan(window).pages)
     assert window.statusBar().currentMessage().startswith("2 pages sent to the printer")
+
+
+def test_every_page_footer_says_when_it_was_printed_in_the_ui_language(
+        window: MainWindow) -> None:
+    assert window.load(EXAMPLES / "spindle_override.LAD")
+    today = QDate.currentDate()
+    plan = _plan(window)
+    printed, page = plan.footer(2)
+    assert printed.startswith("Printed ") and str(today.year() % 100) in printed
+    assert page == f"Page 2 / {len(plan.pages)}"
+    window.set_language("tr")
+    printed, page = _plan(window).footer(1)
+    # Turkish dates put the day first: 24.11.2026
+    assert printed.startswith("Yazdırıldı: "), printed
+    assert today.toString("dd.MM.yyyy") in printed, printed
+    assert page.startswith("Sayfa 1 / ")

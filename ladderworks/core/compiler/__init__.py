@@ -3,19 +3,22 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
-from ladderworks.core.compiler.binary import (
-    FORMAT_VERSION,
-    BinaryFormatError,
-    BinaryProgram,
-    Op,
-    SourcePosition,
-    decode,
-    encode,
-)
 from ladderworks.core.compiler.checks import check, dialect_of
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError, has_errors
 from ladderworks.core.il.program import Instruction, Network, Program
+
+if TYPE_CHECKING:
+    from ladderworks.core.compiler.binary import (
+        FORMAT_VERSION,
+        BinaryFormatError,
+        BinaryProgram,
+        Op,
+        SourcePosition,
+        decode,
+        encode,
+    )
 
 __all__ = [
     "FORMAT_VERSION",
@@ -33,6 +36,24 @@ __all__ = [
     "to_ops",
 ]
 
+# The binary format's names, imported from compiler.binary when first asked for (PEP 562):
+# `check` needs no binary.
+_BINARY_NAMES = frozenset({
+    "FORMAT_VERSION", "BinaryFormatError", "BinaryProgram", "Op", "SourcePosition", "decode",
+    "encode",
+})
+
+
+def __getattr__(name: str) -> object:
+    """A name of the binary format, imported when first asked for."""
+    if name not in _BINARY_NAMES:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    from ladderworks.core.compiler import binary
+
+    value = getattr(binary, name)
+    globals()[name] = value
+    return value
+
 
 @dataclass(slots=True)
 class CompileResult:
@@ -49,6 +70,8 @@ class CompileResult:
 
 def to_ops(program: Program) -> list[Op]:
     """The ops of a program, each with its source position."""
+    from ladderworks.core.compiler.binary import Op, SourcePosition
+
     ops: list[Op] = []
     for n, network in enumerate(program.networks):
         for k, ins in enumerate(network.instructions):
@@ -62,6 +85,8 @@ def compile_program(program: Program) -> CompileResult:
 
     The checks are the whole set `check` runs: a program they pass always compiles.
     """
+    from ladderworks.core.compiler.binary import encode
+
     diagnostics = check(program)
     if has_errors(diagnostics):
         return CompileResult(None, diagnostics)
@@ -78,6 +103,8 @@ def compile(program: Program) -> bytes:
 
 def disassemble(data: bytes) -> Program:
     """The Program held in a binary (no comments); raises BinaryFormatError if it is bad."""
+    from ladderworks.core.compiler.binary import decode
+
     binary = decode(data)
     networks: list[Network] = []
     current = -1

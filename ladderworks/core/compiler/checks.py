@@ -8,7 +8,7 @@ implementations. Dispatch is on the instruction table's fields, never on spellin
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ladderworks.core.address import INPUT_AREAS, Address, AddressError, parse_address
 from ladderworks.core.compiler.structure import analyse, number_of
@@ -26,8 +26,10 @@ from ladderworks.core.instructions import (
     value_is_address,
     width_of,
 )
-from ladderworks.core.plc import functions
-from ladderworks.core.plc.functions import FunctionImpl, load_all
+from ladderworks.core.plc.families import IMPLEMENTED
+
+if TYPE_CHECKING:
+    from ladderworks.core.plc.functions import FunctionImpl
 
 MAX_PUSHES = 8  # ST0..ST8: eight levels above ST0
 
@@ -55,6 +57,8 @@ def implementation_of(spec: InstructionSpec,
     impl = registry.get(spec.name)
     if impl is not None:
         return impl
+    from ladderworks.core.plc import functions  # loaded with the engine, never by `check`
+
     impl_for: Callable[[InstructionSpec], Any] | None = getattr(functions, "impl_for", None)
     if impl_for is not None and (spec.cnc or not spec.known):
         try:
@@ -94,7 +98,7 @@ class _Checker:
     def __init__(self, program: Program, dialect: str | None) -> None:
         self.out: list[Diagnostic] = []
         self.coils: dict[Address, tuple[Write, Instruction, int]] = {}
-        self.registry = load_all()
+        self.implemented = IMPLEMENTED  # names only: `check` loads no implementation
         self.dialect = dialect or dialect_of(program)
         self.program = program
         self.jumps: list[tuple[int, Instruction, int | None]] = []  # network, JMP, coils left
@@ -316,7 +320,7 @@ class _Checker:
             if spec.flow is Flow.NONE:
                 if not spec.known:
                     self.add("unknown-sub", ins, network, warning=True, number=spec.sub)
-                elif implementation_of(spec, self.registry) is None:
+                elif spec.name not in self.implemented:
                     self.add("not-implemented", ins, network, name=spec.name)
             self.params(ins, spec, network)
             found = [(d.code, d.args, d.severity is Severity.WARNING) for d in self.out]

@@ -9,10 +9,8 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cache, lru_cache
-from importlib import resources
 from itertools import compress, count, repeat
 from operator import contains, is_
-from pathlib import Path
 from typing import TYPE_CHECKING, cast
 
 from ladderworks.core import instructions as _table
@@ -58,6 +56,8 @@ from ladderworks.core.instructions import (
 )
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     import lark
 
 _HEADER = re.compile(r"^\s*%@(.*)$")
@@ -101,6 +101,8 @@ class ParseResult:
 def line_parser() -> lark.Lark:
     """The lark parser for one line, loaded once from grammar.lark (lark is imported only
     when a line needs it: the fast scanner reads the common lines, and `check` starts faster)."""
+    from importlib import resources
+
     import lark
 
     grammar = resources.files("ladderworks.core.il").joinpath("grammar.lark").read_text("utf-8")
@@ -156,7 +158,7 @@ def parse_bytes(data: bytes) -> ParseResult:
 def check_file(path: str | Path) -> list[Diagnostic]:
     """The diagnostics `parse_file(path)` gives, found without building the program's
     networks (what `ladderworks-cli check` prints)."""
-    data = Path(path).read_bytes()
+    data = _read(path)
     with _collector_paused():
         return _parse_bytes(data, build=False).diagnostics
 
@@ -179,7 +181,13 @@ def _parse_bytes(data: bytes, *, build: bool) -> ParseResult:
 
 def parse_file(path: str | Path) -> ParseResult:
     """Parse a `.LAD` / `.MOD` / `.mnc` / `.txt` file."""
-    return parse_bytes(Path(path).read_bytes())
+    return parse_bytes(_read(path))
+
+
+def _read(path: str | Path) -> bytes:
+    """The bytes of a file (with open(), as Path.read_bytes does: `check` loads no pathlib)."""
+    with open(path, "rb") as file:
+        return file.read()
 
 
 def parse(text: str, dialect: str | None = None) -> ParseResult:

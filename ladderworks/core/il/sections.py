@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import csv
 import re
 from collections import deque
 from itertools import compress, count, repeat
@@ -100,6 +99,8 @@ def _add_plain(table: SymbolTable, addresses: list[Address | None],
 
 def _read_csv_symbols(section: Section, first: int, table: SymbolTable,
                       out: list[Diagnostic]) -> None:
+    import csv  # only for a `%@2-E` section: most programs have none
+
     columns = {name.upper(): int(number) - 1 for name, number in
                _COLUMNS_RE.findall(section.title)}
     sym, adr = columns.get("SYM", 0), columns.get("ADR", 1)

@@ -167,8 +167,8 @@ def _replace_in_listing(work: LadderNetwork, hit: Found, new: Address) -> None:
     listing = list(work.listing)
     instruction = listing[hit.instruction]
     if hit.slot == OPERAND:
-        listing[hit.instruction] = replace(instruction, operand=new)
+        listing[hit.instruction] = instruction._replace(operand=new)
     else:
-        listing[hit.instruction] = replace(instruction,
-                                           params=_swap(instruction.params, hit.slot, new))
+        listing[hit.instruction] = instruction._replace(
+            params=_swap(instruction.params, hit.slot, new))
     work.listing = tuple(listing)

@@ -97,11 +97,9 @@ def test_parameters_out_of_range_in_a_program_built_in_code() -> None:
 
 
 def test_not_implemented_function_is_a_diagnostic(monkeypatch: pytest.MonkeyPatch) -> None:
-    from ladderworks.core.plc import functions
+    from ladderworks.core.plc.families import IMPLEMENTED
 
-    registry = dict(functions.load_all())
-    registry.pop("TMR")
-    monkeypatch.setattr("ladderworks.core.compiler.checks.load_all", lambda: registry)
+    monkeypatch.setattr("ladderworks.core.compiler.checks.IMPLEMENTED", IMPLEMENTED - {"TMR"})
     result = compile_program(parse("%@3\nRD R0.0\nTMR 1\nWRT R0.1\n%\n").program)
     assert result.binary is None
     assert [(d.code, d.args, d.line) for d in result.diagnostics] == [

@@ -67,6 +67,14 @@ def test_other_sections_kept_verbatim() -> None:
     assert again == program
 
 
+def test_a_csv_symbol_section_gives_symbols_and_comments() -> None:
+    result = parse('%@A\n%@2-E(SYM=1,ADR=2,CM1=3)\nESKIP,X21.7,"skip, signal"\n'
+                   "BAD,Q1,x\n%\n%@3\nRD X21.7\nWRT Y0.1\n%\n%@E\n")
+    symbol = result.program.symbols.lookup(Address(Area.X, 21, 7))
+    assert symbol is not None and (symbol.symbol, symbol.comments) == ("ESKIP", ("skip, signal",))
+    assert [(d.code, d.line) for d in result.diagnostics] == [("section-line", 4)]
+
+
 def test_comments_survive() -> None:
     result = parse(cases.COMMENTS)
     assert result.ok, result.diagnostics

@@ -18,6 +18,7 @@ from typing import Any
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.instructions import InstructionSpec
+from ladderworks.core.plc.families import FAMILIES, IMPLEMENTED
 from ladderworks.core.plc.memory import Memory
 
 RESULT_REGISTER = Address(Area.R, 9000)
@@ -56,9 +57,14 @@ REGISTRY: dict[str, FunctionImpl] = {}
 
 
 def function(name: str) -> Callable[[FunctionImpl], FunctionImpl]:
-    """Decorator: register the implementation of functional instruction `name`."""
+    """Decorator: register the implementation of functional instruction `name`, which its
+    module declares in `plc/families.py`."""
 
     def register(impl: FunctionImpl) -> FunctionImpl:
+        family = impl.__module__.rpartition(".")[2]
+        if name not in FAMILIES.get(family, ()):
+            raise LookupError(f"{impl.__module__} implements {name}: declare it in FAMILIES "
+                              "of ladderworks/core/plc/families.py")
         REGISTRY[name] = impl
         return impl
 
@@ -109,6 +115,9 @@ def load_all() -> dict[str, FunctionImpl]:
 
     for info in sorted(pkgutil.iter_modules(__path__), key=lambda m: m.name):
         importlib.import_module(f"{__name__}.{info.name}")
+    missing = IMPLEMENTED - REGISTRY.keys()
+    if missing:
+        raise LookupError(f"declared in plc/families.py, not implemented: {sorted(missing)}")
     return REGISTRY
 
 
