@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from enum import StrEnum
 from functools import lru_cache
@@ -240,12 +240,19 @@ def parse_plain_addresses(texts: list[str]) -> dict[str, Address]:
     found = _PLAIN_LINE_RE.findall("\n".join(texts) + "\n")
     if len(found) != len(texts):  # a text with a line break: read them the usual way
         return {}
+    return plain_addresses(texts, found)
+
+
+def plain_addresses(texts: Iterable[str],
+                    parts: Iterable[tuple[str, str, str]]) -> dict[str, Address]:
+    """parse_plain_addresses of texts already split by a regex into the parts of _PLAIN_RE
+    (letter, byte digits, bit digit or ""; a letter "" for a text of another spelling)."""
     kept: list[str] = []
     letters: list[str] = []
     numbers: list[int] = []
     bits: list[str] = []
     plain = _PLAIN_AREAS
-    for text, (letter, digits, bit) in zip(texts, found, strict=True):
+    for text, (letter, digits, bit) in zip(texts, parts, strict=True):
         if letter:  # "": another spelling
             ids = plain[letter][1]
             number = int(digits)

@@ -463,6 +463,9 @@ class _FileParser:
         # from operands (their texts), when they gave no diagnostic
         self.made_params: dict[tuple[int, tuple[tuple[str, bool], ...]],
                                tuple[ParamValue, ...]] = {}
+        # _valid_params' reading of each spec (by id, holding the spec), in this dialect
+        self.plans: dict[int, tuple[InstructionSpec,
+                                    tuple[tuple[Param, ParamKind, int, int], ...] | None]] = {}
 
     def run(self) -> ParseResult:
         has_any_section = any(_HEADER.match(line) for line in self.lines if "%@" in line)
@@ -803,24 +806,52 @@ class _FileParser:
         lines are read by _collect_params and _params, which report what is wrong.
 
         One pass with no diagnostic to keep: most functions of a real program are valid."""
-        fixed, table = _fixed_and_table(spec)
-        if table is not None:
+        plan = self.plans.get(id(spec))
+        if plan is None or plan[0] is not spec:
+            plan = self.plans[id(spec)] = (spec, self._plan(spec))
+        steps = plan[1]
+        if steps is None:
             return None
-        end = last + 1 + len(fixed)
+        end = last + 1 + len(steps)
         lines = recs[last + 1:end]
-        if len(lines) < len(fixed):
+        if len(lines) < len(steps):
             return None
         values: dict[str, object] = {}
         out: list[ParamValue] = []
-        for param, rec in zip(fixed, lines, strict=True):
+        for (param, kind, width, hi), rec in zip(steps, lines, strict=True):
             if rec.__class__ is not _Line or not rec.param:
                 return None  # a blank line, a syntax error, no parameter: _collect_params
-            value = self._valid_param(spec, param, rec.words[0], values)
-            if value is None:
-                return None
+            token = rec.words[0]
+            value: ParamValue | None
+            # the two common kinds inline (as _valid_param reads them), the others through it
+            if kind is _NUMBER and token.is_int and len(token.text) <= MAX_NUMBER_DIGITS:
+                value = int(token.text)
+                if (param.choices and value not in param.choices) or not (
+                        param.lo <= value <= hi):
+                    return None
+            elif kind is _ADDRESS and not token.is_int:
+                try:
+                    value = parse_address_cached(token.text, False,
+                                                 width or width_of(spec, param, values))
+                except AddressError:
+                    return None
+            else:
+                value = self._valid_param(spec, param, token, values)
+                if value is None:
+                    return None
             values[param.name] = value
             out.append(value)
         return tuple(out), end - 1
+
+    def _plan(self, spec: InstructionSpec) -> tuple[tuple[Param, ParamKind, int, int], ...] | None:
+        """For _valid_params: each fixed parameter of `spec` with its kind, its width when
+        fixed (else 0) and its upper limit in this program's dialect; None for a spec with
+        a TABLE parameter (left to _collect_params)."""
+        fixed, table = _fixed_and_table(spec)
+        if table is not None:
+            return None
+        return tuple((param, param.kind, param.width if isinstance(param.width, int) else 0,
+                      param.highest(self.dialect)) for param in fixed)
 
     def _valid_param(self, spec: InstructionSpec, param: Param, token: _Token,
                      values: dict[str, object]) -> ParamValue | None:
@@ -1125,6 +1156,9 @@ def _flow(spec: InstructionSpec) -> tuple[bool, bool]:
         spec.kind is not Kind.BASIC and not spec.inputs)
     return starts, spec.writes or spec.kind is not Kind.BASIC
 
+
+_NUMBER = ParamKind.NUMBER  # the kinds _valid_params reads inline, as module names
+_ADDRESS = ParamKind.ADDRESS
 
 _BLANK = _Line("blank")  # every blank line text scans to this one
 _BAD = _Line("bad")  # a line text with a syntax error

@@ -15,7 +15,7 @@ from ladderworks.core.address import (
     parse_address,
     parse_address_cached,
     parse_address_once,
-    parse_plain_addresses,
+    plain_addresses,
 )
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.il.program import IoModule, Message, Program, Section
@@ -28,7 +28,8 @@ _IO_RE = re.compile(r"^\s*([XYxy]\d{1,6})\s+(\d{1,4})\s+(\d{1,4})\s+(\d{1,4})\s*
 
 # one line a line of a `%@2` section's joined lines: a plain address at the line's start and
 # one symbol word (`D37.4   C62179`), or any other line (empty groups)
-_PLAIN_SYMBOL_RE = re.compile(r"([XYFGRADTCKE][0-9]{1,6}(?:\.[0-7])?)[ \t]+(\S+)[ \t]*\n|[^\n]*\n")
+_PLAIN_SYMBOL_RE = re.compile(
+    r"(([XYFGRADTCKE])([0-9]{1,6})(?:\.([0-7]))?)[ \t]+(\S+)[ \t]*\n|[^\n]*\n")
 
 # the `%@2` variants read as `ADDRESS symbol [comment ...]`; `%@2-E(...)` is CSV
 _SYMBOL_KINDS = ("", "-C", "-C2")
@@ -60,9 +61,11 @@ def read_symbols(section: Section, first: int, table: SymbolTable,
     # a line whose address is None here is read alone below
     found = _PLAIN_SYMBOL_RE.findall("\n".join(lines) + "\n")
     if len(found) != len(lines):  # a line with a line break (never read from a file)
-        found = [("", "")] * len(lines)
-    texts, symbols = zip(*found, strict=True) if found else ((), ())
-    addresses = list(map(parse_plain_addresses(list(dict.fromkeys(texts))).get, texts))
+        found = [("", "", "", "", "")] * len(lines)
+    texts, letters, digits, bits, symbols = zip(*found, strict=True) if found else (
+        (), (), (), (), ())
+    address_of = plain_addresses(texts, zip(letters, digits, bits, strict=True)).get
+    addresses = list(map(address_of, texts))
     start = 0  # the common lines from here to the next other line are added at once
     for offset in compress(count(), map(is_, addresses, repeat(None))):
         if build:
