@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 from collections import deque
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
 from functools import lru_cache
@@ -226,8 +226,9 @@ def parse_address_cached(text: str, want_bit: bool | None, width: int) -> Addres
     return _new_address(area, byte, bit)
 
 
-# one text a line: its plain spelling's parts, or nothing (every text makes one match)
-_PLAIN_LINE_RE = re.compile(r"([XYFGRADTCKE])([0-9]{1,6})(?:\.([0-7]))?\n|[^\n]*\n")
+# one text a line: the text and its plain spelling's parts, or nothing (every text makes one
+# match)
+_PLAIN_LINE_RE = re.compile(r"(([XYFGRADTCKE])([0-9]{1,6})(?:\.([0-7]))?)\n|[^\n]*\n")
 _BIT_OF: dict[str, int] = {str(bit): bit for bit in range(8)}  # "" (no bit) is not a key
 _AREA_LETTERS: dict[str, Area] = {a.value: a for a in Area}
 
@@ -240,27 +241,28 @@ def parse_plain_addresses(texts: list[str]) -> dict[str, Address]:
     found = _PLAIN_LINE_RE.findall("\n".join(texts) + "\n")
     if len(found) != len(texts):  # a text with a line break: read them the usual way
         return {}
-    return plain_addresses(texts, found)
+    return plain_addresses(found)
 
 
-def plain_addresses(texts: Iterable[str],
-                    parts: Iterable[tuple[str, str, str]]) -> dict[str, Address]:
-    """parse_plain_addresses of texts already split by a regex into the parts of _PLAIN_RE
-    (letter, byte digits, bit digit or ""; a letter "" for a text of another spelling)."""
+def plain_addresses(rows: Iterable[Sequence[str]]) -> dict[str, Address]:
+    """parse_plain_addresses of texts a regex found with the parts of _PLAIN_RE: each row
+    starts with the text, its letter, byte digits and bit digit ("" for none); a row whose
+    letter is "" is of another spelling."""
     kept: list[str] = []
     letters: list[str] = []
     numbers: list[int] = []
     bits: list[str] = []
     plain = _PLAIN_AREAS
-    for text, (letter, digits, bit) in zip(texts, parts, strict=True):
-        if letter:  # "": another spelling
+    for row in rows:
+        letter = row[1]
+        if letter:
             ids = plain[letter][1]
-            number = int(digits)
+            number = int(row[2])
             if number < len(ids) and ids[number]:  # width 1: the byte is in one range
-                kept.append(text)
+                kept.append(row[0])
                 letters.append(letter)
                 numbers.append(number)
-                bits.append(bit)
+                bits.append(row[3])
     made = list(map(_new, repeat(Address, len(kept))))
     deque(map(_SET_AREA, made, map(_AREA_LETTERS.__getitem__, letters)), maxlen=0)
     deque(map(_SET_BYTE, made, numbers), maxlen=0)

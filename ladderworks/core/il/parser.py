@@ -430,6 +430,24 @@ def _column(token: lark.Token) -> int:
     return token.column or 1
 
 
+def _percent_lines(text: str, lines: list[str]) -> list[int]:
+    """The indexes of the `lines` (split_with_ends of `text`) that hold a `%`."""
+    if "\r" in text:  # lines end at CR too: look at each line
+        return list(compress(count(), map(contains, lines, repeat("%"))))
+    # each `%` of the text, at the line the LFs before it say: a few finds, not a look at
+    # each of the (many thousand) lines
+    marks: list[int] = []
+    line = previous = 0
+    found = text.find("%")
+    while found >= 0:
+        line += text.count("\n", previous, found)
+        previous = found
+        if not marks or marks[-1] != line:
+            marks.append(line)
+        found = text.find("%", found + 1)
+    return marks
+
+
 def _header_kind(rest: str) -> tuple[int, str, bool]:
     """(number, suffix, known) of a header's text after `%@` (number -1: not numbered)."""
     match = _NUMBERED.match(rest.strip())
@@ -447,6 +465,7 @@ class _FileParser:
     def __init__(self, text: str, form: TextForm,
                  split: tuple[list[str], list[str]] | None = None) -> None:
         self.lines, ends = split if split is not None else split_with_ends(text)
+        self.text = text  # the lines joined (split_with_ends)
         self.program = Program()
         self.source = FileSource(form, self.lines, ends, 0, len(self.lines))
         self.program.source = self.source
@@ -544,7 +563,7 @@ class _FileParser:
         lines = self.lines
         marks = self.marks
         if marks is None:
-            marks = self.marks = list(compress(count(), map(contains, lines, repeat("%"))))
+            marks = self.marks = _percent_lines(self.text, lines)
         for j in marks[bisect_left(marks, start):]:
             line = lines[j]
             if _SECTION_END.match(line) or ("%@" in line and _HEADER.match(line)):
@@ -598,7 +617,7 @@ class _FileParser:
         self.program.networks = builder.networks
         self.program.trailer = builder.finish_pending()
         source = self.source
-        source.keys = [network.key() for network in builder.networks]
+        source.keys = list(map(Network.key, builder.networks))
         source.spans = builder.spans()
         source.heads = builder.heads
         source.trailer = tuple(builder.pending)

@@ -62,10 +62,8 @@ def read_symbols(section: Section, first: int, table: SymbolTable,
     found = _PLAIN_SYMBOL_RE.findall("\n".join(lines) + "\n")
     if len(found) != len(lines):  # a line with a line break (never read from a file)
         found = [("", "", "", "", "")] * len(lines)
-    texts, letters, digits, bits, symbols = zip(*found, strict=True) if found else (
-        (), (), (), (), ())
-    address_of = plain_addresses(texts, zip(letters, digits, bits, strict=True)).get
-    addresses = list(map(address_of, texts))
+    texts, _, _, _, symbols = zip(*found, strict=True) if found else ((), (), (), (), ())
+    addresses = list(map(plain_addresses(found).get, texts))
     start = 0  # the common lines from here to the next other line are added at once
     for offset in compress(count(), map(is_, addresses, repeat(None))):
         if build:

@@ -9,9 +9,10 @@ import pytest
 from ladderworks.core.address import AddressError, parse_address_cached, parse_plain_addresses
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il import parse
-from ladderworks.core.il.parser import _Line, _Made, _scan_common, _scan_fast
+from ladderworks.core.il.parser import _Line, _Made, _percent_lines, _scan_common, _scan_fast
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.il.sections import read_symbols
+from ladderworks.core.il.textform import split_with_ends
 from ladderworks.core.instructions import lookup
 from ladderworks.core.symbols import SymbolTable
 
@@ -248,3 +249,10 @@ def test_crlf_and_tabs_read_as_lf_and_spaces() -> None:
     assert lf.ok and crlf.ok
     assert lf.program == crlf.program
     assert lf.program.networks[0].label == "N00001"
+
+
+@pytest.mark.parametrize("text", ["", "%", "%\n", "a\n%\n%@3\nx%y%z\n\n%", "\n\n%\n", "abc",
+                                  "%%\n%\n", "a\r\n%\r\nb%", "a\rb%\r%", "%@3\nRD X1.0\n%\n"])
+def test_percent_lines_are_the_lines_holding_a_percent_sign(text: str) -> None:
+    lines = split_with_ends(text)[0]
+    assert _percent_lines(text, lines) == [i for i, line in enumerate(lines) if "%" in line]
