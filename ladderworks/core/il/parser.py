@@ -224,7 +224,7 @@ class _Line:
     `made` is set once the text alone has made an instruction with no diagnostic; such a
     line is read from it alone (a `RD X21.7` found by the fast scanner keeps no words)."""
 
-    __slots__ = ("comment", "function", "groups", "kind", "made", "param", "words")
+    __slots__ = ("comment", "function", "kind", "made", "param", "words")
 
     def __init__(self, kind: str, words: list[_Token] | None = None,
                  comment: str | None = None, made: _Made | None = None) -> None:
@@ -233,9 +233,6 @@ class _Line:
         self.comment = comment
         self.made = made
         self.param = made is None and _is_param_line(self)  # a parameter line
-        # a function's text with the parameter lines after it (the same _Line objects, all
-        # its fixed parameters) that made its instruction with no diagnostic: what it made
-        self.groups: dict[tuple[_Line | _Made, ...], _Made] | None = None
         # the function whose parameters follow on the next lines (`SUB 43`, `MOVB`), once
         # the text was read so with no diagnostic
         self.function: InstructionSpec | None = None
@@ -630,30 +627,29 @@ class _FileParser:
         # the current network) is kept in locals, and written back before any other line
         current = builder.current
         closed = builder.closed
+        pending = builder.pending
+        pending_label = builder.pending_label
         last = 0  # the last line added here since the builder was told (0: none)
-        k = 0
-        count = len(recs)
-        while k < count:
-            rec = recs[k]
+        skip = 0  # the lines before this number were read with a line before them
+        for number, rec in enumerate(recs, base):  # line `number` is recs[number - base]
+            if number < skip:
+                continue
             made = rec if rec.__class__ is tuple else rec.made  # type: ignore[union-attr]
             if made is not None:
-                number = base + k
-                k += 1
                 _spec, name, operand, params, comment, column, starts, ends = made
                 instruction = new_instruction(name, operand, params, comment, (), number,
                                               column)
-                if current is not None and not (closed and (starts or builder.pending_label)
-                                                ) and not builder.pending:
+                if current is not None and not pending and not (
+                        closed and (starts or pending_label)):
                     current.append(instruction)  # the common case of builder.add, inline
                     last = number
                     if ends:
                         closed = True
                     continue
-            elif rec.kind == "label" and not builder.pending_label:  # type: ignore[union-attr]
+            elif rec.kind == "label" and not pending_label:  # type: ignore[union-attr]
                 self.labels = True  # builder.label, inline: one a network in LADDER-III text
-                builder.pending_label = rec.words[0].text  # type: ignore[union-attr]
+                pending_label = builder.pending_label = rec.words[0].text  # type: ignore
                 closed = True
-                k += 1
                 continue
             if last:
                 builder.lasts[-1] = builder.cursor = last
@@ -667,13 +663,12 @@ class _FileParser:
                 if kind == "label":
                     self.labels = True
                     builder.label(rec.words[0].text)
-                    k += 1
-                elif kind == "blank" or kind == "bad":
-                    k += 1
-                else:
-                    k = self._line(recs, base, k, builder)
+                elif kind != "blank" and kind != "bad":
+                    skip = base + self._line(recs, base, number - base, builder)
             current = builder.current
             closed = builder.closed
+            pending = builder.pending
+            pending_label = builder.pending_label
         if last:
             builder.lasts[-1] = builder.cursor = last
         builder.closed = closed
@@ -722,22 +717,10 @@ class _FileParser:
             self._error("stray-parameter", number, line.words[0].column,
                         text=line.words[0].text[:20])
             return k
-        groups = line.groups
-        if groups is not None:  # read before with the same parameter lines: made at once
-            size = len(next(iter(groups)))
-            made = groups.get(tuple(recs[k:k + size]))
-            if made is not None:
-                k += size
-                if not self.build:
-                    self.skipped = True
-                    return k
-                builder.add(new_instruction(made[1], None, made[3], made[4], (), number,
-                                            made[5]), base + k - 1, made[6], made[7])
-                return k
         if line.function is not None:  # the text was read before: its parameters now
             fast = self._valid_params(line.function, recs, last)
             if fast is not None:
-                return self._add_function(line, recs, base, number, line.function, *fast,
+                return self._add_function(line, base, number, line.function, *fast,
                                           builder)
         reported = len(self.diagnostics)
         alone = True  # the text alone makes the instruction: no parameter lines taken
@@ -774,7 +757,7 @@ class _FileParser:
             fast = self._valid_params(spec, recs, last)
             if fast is not None:  # what the lines below would make, with no diagnostic
                 params, last = fast
-                return self._add_function(line, recs, base, number, spec, params, last,
+                return self._add_function(line, base, number, spec, params, last,
                                           builder)
             last = self._collect_params(spec, recs, last, operands)
         k = last + 1
@@ -783,34 +766,23 @@ class _FileParser:
         if instruction is None:
             return k
         starts, ends = _flow(spec)
-        if len(self.diagnostics) == reported:
-            made = (spec, instruction.name, instruction.operand, instruction.params,
-                    instruction.comment, instruction.column, starts, ends)
-            if alone:
-                line.made = made
-            elif k - 1 - (number - base) == len(operands) and _shape(spec)[1] is None:
-                # every fixed parameter taken, from the lines right after it
-                if line.groups is None:
-                    line.groups = {}
-                line.groups[tuple(recs[number - base + 1:k])] = made
+        if alone and len(self.diagnostics) == reported:
+            line.made = (spec, instruction.name, instruction.operand, instruction.params,
+                         instruction.comment, instruction.column, starts, ends)
         if not self.build:  # only the diagnostics are wanted
             self.skipped = True
             return k
         builder.add(instruction, end_line, starts, ends)
         return k
 
-    def _add_function(self, line: _Line, recs: list[_Line | _Made], base: int, number: int,
-                      spec: InstructionSpec, params: tuple[ParamValue, ...], last: int,
+    def _add_function(self, line: _Line, base: int, number: int, spec: InstructionSpec,
+                      params: tuple[ParamValue, ...], last: int,
                       builder: _NetworkBuilder) -> int:
         """Add the function `line` (number `number`) makes with its valid parameters from the
-        lines after it up to `recs[last]`; remember it for the same lines (line.groups)."""
+        lines after it up to `recs[last]`."""
         comment = line.comment or ""
         column = line.words[0].column
         starts, ends = _flow(spec)
-        if line.groups is None:
-            line.groups = {}
-        line.groups[tuple(recs[number - base + 1:last + 1])] = (
-            spec, spec.name, None, params, comment, column, starts, ends)
         if not self.build:  # only the diagnostics are wanted
             self.skipped = True
             return last + 1
