@@ -1162,6 +1162,9 @@ class _NetworkBuilder:
     exclusive): from the end of the previous network to its last instruction or parameter
     line."""
 
+    __slots__ = ("closed", "current", "cursor", "firsts", "heads", "lasts", "networks",
+                 "pending", "pending_label")
+
     def __init__(self, start: int) -> None:
         self.networks: list[Network] = []
         self.current: list[Instruction] | None = None  # the instructions of the last network
