@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections import deque
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
 from functools import lru_cache
+from itertools import repeat
 
 from ladderworks.core.diagnostics import Refused
 
@@ -228,6 +230,50 @@ def parse_address_cached(text: str, want_bit: bool | None, width: int) -> Addres
     if want_bit is False and bit is not None:
         raise AddressError("byte-expected", text=text)
     return _new_address(area, byte, bit)
+
+
+# one text a line: the text and its plain spelling's parts, or nothing (every text makes one
+# match)
+_PLAIN_LINE_RE = re.compile(r"(([XYFGRADTCKE])([0-9]{1,6})(?:\.([0-7]))?)\n|[^\n]*\n")
+_BIT_OF: dict[str, int] = {str(bit): bit for bit in range(8)}  # "" (no bit) is not a key
+_AREA_LETTERS: dict[str, Area] = {a.value: a for a in Area}
+
+
+def parse_plain_addresses(texts: list[str]) -> dict[str, Address]:
+    """`parse_address_cached(text, None, 1)` of each text of the common spelling (_PLAIN_RE)
+    whose byte lies in its area, made in one go; the other texts are left out (the caller
+    reads them the usual way). For the thousands of operands and symbols of a real program:
+    one findall reads them all, and the objects are made by C loops (map)."""
+    found = _PLAIN_LINE_RE.findall("\n".join(texts) + "\n")
+    if len(found) != len(texts):  # a text with a line break: read them the usual way
+        return {}
+    return plain_addresses(found)
+
+
+def plain_addresses(rows: Iterable[Sequence[str]]) -> dict[str, Address]:
+    """parse_plain_addresses of texts a regex found with the parts of _PLAIN_RE: each row
+    starts with the text, its letter, byte digits and bit digit ("" for none); a row whose
+    letter is "" is of another spelling."""
+    kept: list[str] = []
+    letters: list[str] = []
+    numbers: list[int] = []
+    bits: list[str] = []
+    plain = _PLAIN_AREAS
+    for row in rows:
+        letter = row[1]
+        if letter:
+            ids = plain[letter][1]
+            number = int(row[2])
+            if number < len(ids) and ids[number]:  # width 1: the byte is in one range
+                kept.append(row[0])
+                letters.append(letter)
+                numbers.append(number)
+                bits.append(row[3])
+    made = list(map(_new, repeat(Address, len(kept))))
+    deque(map(_SET_AREA, made, map(_AREA_LETTERS.__getitem__, letters)), maxlen=0)
+    deque(map(_SET_BYTE, made, numbers), maxlen=0)
+    deque(map(_SET_BIT, made, map(_BIT_OF.get, bits)), maxlen=0)
+    return dict(zip(kept, made, strict=True))
 
 
 _parse_address = parse_address_cached

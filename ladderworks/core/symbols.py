@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterator
+from collections import deque
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
+from itertools import repeat
 
 from ladderworks.core.address import Address, AddressError, parse_address, parse_address_cached
 
@@ -35,6 +37,15 @@ def new_symbol(symbol: str, comments: tuple[str, ...]) -> Symbol:
     _SET_SYMBOL(entry, symbol)
     _SET_COMMENTS(entry, comments)
     return entry
+
+
+def new_symbols(symbols: Sequence[str]) -> list[Symbol]:
+    """new_symbol(symbol, ()) of each symbol, the objects made and their slots set by C loops
+    (map), not one Python call each."""
+    entries = list(map(_new, repeat(Symbol, len(symbols))))
+    deque(map(_SET_SYMBOL, entries, symbols), maxlen=0)
+    deque(map(_SET_COMMENTS, entries, repeat(())), maxlen=0)
+    return entries
 
 
 @dataclass(slots=True)

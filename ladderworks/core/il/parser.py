@@ -10,11 +10,16 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cache, lru_cache
 from itertools import compress, count, repeat
-from operator import contains
+from operator import contains, is_
 from typing import TYPE_CHECKING, cast
 
 from ladderworks.core import instructions as _table
-from ladderworks.core.address import Address, AddressError, parse_address_cached
+from ladderworks.core.address import (
+    Address,
+    AddressError,
+    parse_address_cached,
+    parse_plain_addresses,
+)
 from ladderworks.core.diagnostics import Diagnostic, Severity, has_errors
 from ladderworks.core.il.program import (
     FANUC,
@@ -219,7 +224,7 @@ class _Line:
     `made` is set once the text alone has made an instruction with no diagnostic; such a
     line is read from it alone (a `RD X21.7` found by the fast scanner keeps no words)."""
 
-    __slots__ = ("comment", "kind", "made", "param", "words")
+    __slots__ = ("comment", "function", "kind", "made", "param", "words")
 
     def __init__(self, kind: str, words: list[_Token] | None = None,
                  comment: str | None = None, made: _Made | None = None) -> None:
@@ -228,6 +233,9 @@ class _Line:
         self.comment = comment
         self.made = made
         self.param = made is None and _is_param_line(self)  # a parameter line
+        # the function whose parameters follow on the next lines (`SUB 43`, `MOVB`), once
+        # the text was read so with no diagnostic
+        self.function: InstructionSpec | None = None
 
 
 def _comment_text(raw: str) -> str:
@@ -308,6 +316,48 @@ def _scan_fast(text: str) -> _Line | _Made | None:
     return _Line("instruction", words, comment)
 
 
+# one line text a line of the joined texts: the most common shape, `RD  X21.7` (a name at the
+# line's start and a plain bit address); a parameter line `R100` or `0001`; a label `N00012:`;
+# or any other line (every group empty)
+_COMMON = re.compile(
+    r"([A-Za-z_][A-Za-z0-9_.]*)[ \t]+([XYFGRADTCKE][0-9]{1,6}\.[0-7])[ \t]*\n"
+    r"|(?:([A-Za-z][0-9]+)|([0-9]+)|([Nn][0-9]+):)[ \t]*\n|[^\n]*\n")
+
+
+@cache
+def _basic_made(name: str) -> tuple[InstructionSpec, str, bool, bool] | None:
+    """What _scan_fast takes from a basic instruction's name (its spec, name and _flow())."""
+    basic = _basic_with_operand(name)
+    return None if basic is None else (basic[0], basic[0].name, basic[1], basic[2])
+
+
+def _scan_common(texts: list[str]) -> list[_Line | _Made | None]:
+    """What _scan_fast makes of each text of the common shapes, found for all the texts at
+    once; None for the others.
+
+    One findall over the joined texts and one go for their addresses do in C what a match,
+    a lookup and an address parse a text would do in Python."""
+    found = _COMMON.findall("\n".join(texts) + "\n")
+    if len(found) != len(texts):  # a text with a line break (never read from a file)
+        return [None] * len(texts)
+    names, operands, words, numbers, labels = zip(*found, strict=True) if found else (
+        (), (), (), (), ())
+    addresses = parse_plain_addresses(list(dict.fromkeys(operands)))
+    address_of = addresses.get
+    made: list[_Line | _Made | None] = [
+        None if basic is None or (address := address_of(operand)) is None
+        else (basic[0], basic[1], address, (), "", 1, basic[2], basic[3])
+        for basic, operand in zip(map(_basic_made, names), operands, strict=True)]
+    for index in compress(count(), map(is_, made, repeat(None))):
+        if words[index]:  # `R100`: a word with no sign and no comment, at column 1
+            made[index] = _Line("instruction", [_Token(words[index], 1, False)])
+        elif numbers[index]:  # `0001`
+            made[index] = _Line("parameter", [_Token(numbers[index], 1, True)])
+        elif labels[index]:  # `N00012:`
+            made[index] = _Line("label", [_Token(labels[index], 1, False)])
+    return made
+
+
 def _scan_line(text: str, number: int) -> _Line | _Made | Diagnostic:
     """One line text of the ladder section (at line `number`, for a syntax error): the fast
     scanner, else the lark grammar."""
@@ -377,6 +427,24 @@ def _column(token: lark.Token) -> int:
     return token.column or 1
 
 
+def _percent_lines(text: str, lines: list[str]) -> list[int]:
+    """The indexes of the `lines` (split_with_ends of `text`) that hold a `%`."""
+    if "\r" in text:  # lines end at CR too: look at each line
+        return list(compress(count(), map(contains, lines, repeat("%"))))
+    # each `%` of the text, at the line the LFs before it say: a few finds, not a look at
+    # each of the (many thousand) lines
+    marks: list[int] = []
+    line = previous = 0
+    found = text.find("%")
+    while found >= 0:
+        line += text.count("\n", previous, found)
+        previous = found
+        if not marks or marks[-1] != line:
+            marks.append(line)
+        found = text.find("%", found + 1)
+    return marks
+
+
 def _header_kind(rest: str) -> tuple[int, str, bool]:
     """(number, suffix, known) of a header's text after `%@` (number -1: not numbered)."""
     match = _NUMBERED.match(rest.strip())
@@ -394,6 +462,7 @@ class _FileParser:
     def __init__(self, text: str, form: TextForm,
                  split: tuple[list[str], list[str]] | None = None) -> None:
         self.lines, ends = split if split is not None else split_with_ends(text)
+        self.text = text  # the lines joined (split_with_ends)
         self.program = Program()
         self.source = FileSource(form, self.lines, ends, 0, len(self.lines))
         self.program.source = self.source
@@ -410,6 +479,9 @@ class _FileParser:
         # from operands (their texts), when they gave no diagnostic
         self.made_params: dict[tuple[int, tuple[tuple[str, bool], ...]],
                                tuple[ParamValue, ...]] = {}
+        # _valid_params' reading of each spec (by id, holding the spec), in this dialect
+        self.plans: dict[int, tuple[InstructionSpec,
+                                    tuple[tuple[Param, ParamKind, int, int], ...] | None]] = {}
 
     def run(self) -> ParseResult:
         has_any_section = any(_HEADER.match(line) for line in self.lines if "%@" in line)
@@ -488,7 +560,7 @@ class _FileParser:
         lines = self.lines
         marks = self.marks
         if marks is None:
-            marks = self.marks = list(compress(count(), map(contains, lines, repeat("%"))))
+            marks = self.marks = _percent_lines(self.text, lines)
         for j in marks[bisect_left(marks, start):]:
             line = lines[j]
             if _SECTION_END.match(line) or ("%@" in line and _HEADER.match(line)):
@@ -518,9 +590,11 @@ class _FileParser:
         # many lines repeat ("RD X21.7"): each text is scanned once, and what it makes is
         # built once; the lines that repeat it share its _Line (or its _Made)
         body = lines[start:stop]
-        seen = cast("dict[str, _Line | _Made]", dict.fromkeys(body, _BLANK))
+        texts = list(dict.fromkeys(body))
+        seen = cast("dict[str, _Line | _Made]", dict(zip(texts, _scan_common(texts),
+                                                         strict=True)))
         bad = False
-        for text in seen:
+        for text in [text for text, item in seen.items() if item is None]:
             item = _scan_line(text, 0)
             if isinstance(item, Diagnostic):
                 item = _BAD
@@ -533,48 +607,71 @@ class _FileParser:
         recs = list(map(seen.__getitem__, body))  # line start + 1 + k is recs[k]
         base = start + 1
         builder = _NetworkBuilder(start)
-        add = builder.add
-        k = 0
-        count = len(recs)
-        if not self.build:
+        if self.build:
+            self._build_ladder(recs, base, builder)
+        else:
             self._check_ladder(recs, base, builder)
-            k = count
-        while k < count:
-            rec = recs[k]
+        self.program.networks = builder.networks
+        self.program.trailer = builder.finish_pending()
+        source = self.source
+        source.keys = list(map(Network.key, builder.networks))
+        source.spans = builder.spans()
+        source.heads = builder.heads
+        source.trailer = tuple(builder.pending)
+        source.trailer_span = (builder.cursor, stop)
+
+    def _build_ladder(self, recs: list[_Line | _Made], base: int,
+                      builder: _NetworkBuilder) -> None:
+        """Read the ladder's lines into the builder's networks."""
+        # the builder's state for the common line (an instruction its text alone makes, in
+        # the current network) is kept in locals, and written back before any other line
+        current = builder.current
+        closed = builder.closed
+        pending = builder.pending
+        pending_label = builder.pending_label
+        last = 0  # the last line added here since the builder was told (0: none)
+        skip = 0  # the lines before this number were read with a line before them
+        for number, rec in enumerate(recs, base):  # line `number` is recs[number - base]
+            if number < skip:
+                continue
             made = rec if rec.__class__ is tuple else rec.made  # type: ignore[union-attr]
-            if made is None:
+            if made is not None:
+                _spec, name, operand, params, comment, column, starts, ends = made
+                instruction = new_instruction(name, operand, params, comment, (), number,
+                                              column)
+                if current is not None and not pending and not (
+                        closed and (starts or pending_label)):
+                    current.append(instruction)  # the common case of builder.add, inline
+                    last = number
+                    if ends:
+                        closed = True
+                    continue
+            elif rec.kind == "label" and not pending_label:  # type: ignore[union-attr]
+                self.labels = True  # builder.label, inline: one a network in LADDER-III text
+                pending_label = builder.pending_label = rec.words[0].text  # type: ignore
+                closed = True
+                continue
+            if last:
+                builder.lasts[-1] = builder.cursor = last
+                last = 0
+            builder.closed = closed
+            if made is not None:
+                builder.add(instruction, number, starts, ends)
+            else:
                 assert isinstance(rec, _Line)
                 kind = rec.kind
                 if kind == "label":
                     self.labels = True
                     builder.label(rec.words[0].text)
-                    k += 1
-                elif kind == "blank" or kind == "bad":
-                    k += 1
-                else:
-                    k = self._line(recs, base, k, builder)
-                continue
-            number = base + k
-            k += 1
-            _spec, name, operand, params, comment, column, starts, ends = made
-            instruction = new_instruction(name, operand, params, comment, (), number, column)
+                elif kind != "blank" and kind != "bad":
+                    skip = base + self._line(recs, base, number - base, builder)
             current = builder.current
-            if current is None or builder.pending or (builder.closed and (
-                    starts or builder.pending_label)):
-                add(instruction, number, starts, ends)
-                continue
-            current.append(instruction)  # the common case of builder.add, inline
-            builder.lasts[-1] = builder.cursor = number
-            if ends:
-                builder.closed = True
-        self.program.networks = builder.networks
-        self.program.trailer = builder.finish_pending()
-        source = self.source
-        source.keys = [network.key() for network in builder.networks]
-        source.spans = builder.spans()
-        source.heads = builder.heads
-        source.trailer = tuple(builder.pending)
-        source.trailer_span = (builder.cursor, stop)
+            closed = builder.closed
+            pending = builder.pending
+            pending_label = builder.pending_label
+        if last:
+            builder.lasts[-1] = builder.cursor = last
+        builder.closed = closed
 
     def _check_ladder(self, recs: list[_Line | _Made], base: int,
                       builder: _NetworkBuilder) -> None:
@@ -620,6 +717,11 @@ class _FileParser:
             self._error("stray-parameter", number, line.words[0].column,
                         text=line.words[0].text[:20])
             return k
+        if line.function is not None:  # the text was read before: its parameters now
+            fast = self._valid_params(line.function, recs, last)
+            if fast is not None:
+                return self._add_function(line, base, number, line.function, *fast,
+                                          builder)
         reported = len(self.diagnostics)
         alone = True  # the text alone makes the instruction: no parameter lines taken
         head = line.words[0]
@@ -646,11 +748,18 @@ class _FileParser:
                 return self._unknown_sub(line, number, sub, recs, base, k, builder)
             spec = sub_spec
             operands = []
-            last = self._collect_params(spec, recs, last, operands)
             alone = False
         elif spec.kind is not Kind.BASIC and not operands and spec.params:
-            last = self._collect_params(spec, recs, last, operands)
             alone = False
+        if not alone:
+            if len(self.diagnostics) == reported:
+                line.function = spec
+            fast = self._valid_params(spec, recs, last)
+            if fast is not None:  # what the lines below would make, with no diagnostic
+                params, last = fast
+                return self._add_function(line, base, number, spec, params, last,
+                                          builder)
+            last = self._collect_params(spec, recs, last, operands)
         k = last + 1
         end_line = base + last
         instruction = self._build(spec, line, number, operands)
@@ -665,6 +774,110 @@ class _FileParser:
             return k
         builder.add(instruction, end_line, starts, ends)
         return k
+
+    def _add_function(self, line: _Line, base: int, number: int, spec: InstructionSpec,
+                      params: tuple[ParamValue, ...], last: int,
+                      builder: _NetworkBuilder) -> int:
+        """Add the function `line` (number `number`) makes with its valid parameters from the
+        lines after it up to `recs[last]`."""
+        comment = line.comment or ""
+        column = line.words[0].column
+        starts, ends = _flow(spec)
+        if not self.build:  # only the diagnostics are wanted
+            self.skipped = True
+            return last + 1
+        builder.add(new_instruction(spec.name, None, params, comment, (), number, column),
+                    base + last, starts, ends)
+        return last + 1
+
+    def _valid_params(self, spec: InstructionSpec, recs: list[_Line | _Made],
+                      last: int) -> tuple[tuple[ParamValue, ...], int] | None:
+        """The fixed parameters of `spec` from the lines right after `recs[last]`, and the
+        index of the last line taken, when they are all there and valid; else None, and the
+        lines are read by _collect_params and _params, which report what is wrong.
+
+        One pass with no diagnostic to keep: most functions of a real program are valid."""
+        plan = self.plans.get(id(spec))
+        if plan is None or plan[0] is not spec:
+            plan = self.plans[id(spec)] = (spec, self._plan(spec))
+        steps = plan[1]
+        if steps is None:
+            return None
+        end = last + 1 + len(steps)
+        lines = recs[last + 1:end]
+        if len(lines) < len(steps):
+            return None
+        values: dict[str, object] = {}
+        out: list[ParamValue] = []
+        for (param, kind, width, hi), rec in zip(steps, lines, strict=True):
+            if rec.__class__ is not _Line or not rec.param:
+                return None  # a blank line, a syntax error, no parameter: _collect_params
+            token = rec.words[0]
+            value: ParamValue | None
+            # the two common kinds inline (as _valid_param reads them), the others through it
+            if kind is _NUMBER and token.is_int and len(token.text) <= MAX_NUMBER_DIGITS:
+                value = int(token.text)
+                if (param.choices and value not in param.choices) or not (
+                        param.lo <= value <= hi):
+                    return None
+            elif kind is _ADDRESS and not token.is_int:
+                try:
+                    value = parse_address_cached(token.text, False,
+                                                 width or width_of(spec, param, values))
+                except AddressError:
+                    return None
+            else:
+                value = self._valid_param(spec, param, token, values)
+                if value is None:
+                    return None
+            values[param.name] = value
+            out.append(value)
+        return tuple(out), end - 1
+
+    def _plan(self, spec: InstructionSpec) -> tuple[tuple[Param, ParamKind, int, int], ...] | None:
+        """For _valid_params: each fixed parameter of `spec` with its kind, its width when
+        fixed (else 0) and its upper limit in this program's dialect; None for a spec with
+        a TABLE parameter (left to _collect_params)."""
+        fixed, table = _fixed_and_table(spec)
+        if table is not None:
+            return None
+        return tuple((param, param.kind, param.width if isinstance(param.width, int) else 0,
+                      param.highest(self.dialect)) for param in fixed)
+
+    def _valid_param(self, spec: InstructionSpec, param: Param, token: _Token,
+                     values: dict[str, object]) -> ParamValue | None:
+        """What _param gives for a valid parameter; None where it would report (and for the
+        rare kinds, MASK and RAW, left to it)."""
+        kind = param.kind
+        text = token.text
+        if kind is ParamKind.NUMBER or (kind is ParamKind.VALUE and token.is_int):
+            if not token.is_int or len(text) > MAX_NUMBER_DIGITS or (
+                    kind is ParamKind.VALUE and value_is_address(spec, values) is True):
+                return None
+            value = int(text)
+            if (param.choices and value not in param.choices) or not (
+                    param.lo <= value <= param.highest(self.dialect)):
+                return None
+            return value
+        if kind is ParamKind.ADDRESS or kind is ParamKind.VALUE:
+            if token.is_int or (
+                    kind is ParamKind.VALUE and value_is_address(spec, values) is False):
+                return None
+            try:
+                return parse_address_cached(text, False, width_of(spec, param, values))
+            except AddressError:
+                return None
+        if kind is ParamKind.PROGRAM or kind is ParamKind.LABEL:
+            letter = "P" if kind is ParamKind.PROGRAM else "L"
+            match = _REF.match(text)
+            if match is None or match.group(1).upper() != letter:
+                return None
+            number = int(match.group(2))
+            hi = param.highest(self.dialect)
+            if hi and not param.lo <= number <= hi:
+                return None
+            return ProgramRef(number) if letter == "P" else LabelRef(number)
+        return None
 
     def _unknown_sub(self, line: _Line, number: int, sub: int | None, recs: list[_Line | _Made],
                      base: int, k: int, builder: _NetworkBuilder) -> int:
@@ -935,6 +1148,9 @@ def _flow(spec: InstructionSpec) -> tuple[bool, bool]:
     return starts, spec.writes or spec.kind is not Kind.BASIC
 
 
+_NUMBER = ParamKind.NUMBER  # the kinds _valid_params reads inline, as module names
+_ADDRESS = ParamKind.ADDRESS
+
 _BLANK = _Line("blank")  # every blank line text scans to this one
 _BAD = _Line("bad")  # a line text with a syntax error
 
@@ -945,6 +1161,9 @@ class _NetworkBuilder:
     Also records which source lines each network came from (`spans()`, 0-based, end
     exclusive): from the end of the previous network to its last instruction or parameter
     line."""
+
+    __slots__ = ("closed", "current", "cursor", "firsts", "heads", "lasts", "networks",
+                 "pending", "pending_label")
 
     def __init__(self, start: int) -> None:
         self.networks: list[Network] = []

@@ -3,22 +3,33 @@
 from __future__ import annotations
 
 import re
+from collections import deque
+from itertools import compress, count, repeat
+from operator import is_
+from typing import cast
 
 from ladderworks.core.address import (
+    Address,
     AddressError,
     Area,
     parse_address,
     parse_address_cached,
     parse_address_once,
+    plain_addresses,
 )
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.il.program import IoModule, Message, Program, Section
-from ladderworks.core.symbols import SymbolTable, add_entry, new_symbol
+from ladderworks.core.symbols import SymbolTable, add_entry, new_symbol, new_symbols
 
 _COLUMNS_RE = re.compile(r"(SYM|ADR|CM1|CM2)\s*=\s*(\d{1,2})", re.IGNORECASE)
 _MESSAGE_RE = re.compile(r"^\s*(\S+)\s+(\d{1,6})(?:[ \t](.*))?$")
 _ITEM_RE = re.compile(r"^\s*(\d{1,6})(?:[ \t](.*))?$")
 _IO_RE = re.compile(r"^\s*([XYxy]\d{1,6})\s+(\d{1,4})\s+(\d{1,4})\s+(\d{1,4})\s*(.*)$")
+
+# one line a line of a `%@2` section's joined lines: a plain address at the line's start and
+# one symbol word (`D37.4   C62179`), or any other line (empty groups)
+_PLAIN_SYMBOL_RE = re.compile(
+    r"(([XYFGRADTCKE])([0-9]{1,6})(?:\.([0-7]))?)[ \t]+(\S+)[ \t]*\n|[^\n]*\n")
 
 # the `%@2` variants read as `ADDRESS symbol [comment ...]`; `%@2-E(...)` is CSV
 _SYMBOL_KINDS = ("", "-C", "-C2")
@@ -45,7 +56,20 @@ def read_symbols(section: Section, first: int, table: SymbolTable,
         return
     by_address, by_symbol = table.by_address, table.by_symbol
     read = parse_address_cached if build else parse_address_once  # once: no cache to fill
-    for offset, line in enumerate(section.lines):
+    lines = section.lines
+    # the common lines (`D37.4   C62179`) found in one findall, their addresses made at once;
+    # a line whose address is None here is read alone below
+    found = _PLAIN_SYMBOL_RE.findall("\n".join(lines) + "\n")
+    if len(found) != len(lines):  # a line with a line break (never read from a file)
+        found = [("", "", "", "", "")] * len(lines)
+    texts, _, _, _, symbols = zip(*found, strict=True) if found else ((), (), (), (), ())
+    addresses = list(map(plain_addresses(found).get, texts))
+    start = 0  # the common lines from here to the next other line are added at once
+    for offset in compress(count(), map(is_, addresses, repeat(None))):
+        if build:
+            _add_plain(table, addresses[start:offset], symbols[start:offset])
+        start = offset + 1
+        line = lines[offset]
         words = line.split(None, 2)
         if not words or words[0].startswith((";", "//")):  # blank or a comment line
             continue
@@ -62,6 +86,16 @@ def read_symbols(section: Section, first: int, table: SymbolTable,
             by_symbol.setdefault(words[1], address)
         elif len(words) < 2 or not add_entry(table, words[0], words[1], (comment,)):
             _warn(out, section, first + offset, line.strip())
+    if build:
+        _add_plain(table, addresses[start:], symbols[start:])
+
+
+def _add_plain(table: SymbolTable, addresses: list[Address | None],
+               symbols: tuple[str, ...]) -> None:
+    """Add two-word lines' entries, as the line-by-line branch of read_symbols adds them."""
+    known = cast("list[Address]", addresses)  # the common lines' addresses: never None
+    table.by_address.update(zip(known, new_symbols(symbols), strict=True))
+    deque(map(table.by_symbol.setdefault, symbols, known), maxlen=0)  # the first one stays
 
 
 def _read_csv_symbols(section: Section, first: int, table: SymbolTable,

@@ -164,7 +164,9 @@ def decode_lines(data: bytes) -> tuple[str, TextForm, list[Diagnostic],
                 text = body.decode(CP1254, errors="surrogateescape")
     split = split_with_ends(text)
     ends = split[1]
-    form = TextForm(encoding, bom, dominant_newline(ends), not ends or ends[-1] != "")
+    # without a CR every line end is LF: no need to count them
+    newline = dominant_newline(ends) if "\r" in text else "\n"
+    form = TextForm(encoding, bom, newline, not ends or ends[-1] != "")
     return text, form, diagnostics, split
 
 
