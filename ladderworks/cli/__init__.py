@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 from collections.abc import Sequence
+from typing import NoReturn
 
 from ladderworks import version
 
@@ -65,5 +67,18 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
 
 
+def run() -> NoReturn:
+    """The `ladderworks-cli` program: `main()`, then exit once the output is flushed, without
+    tearing the interpreter down (freeing the ~400,000 objects of a real FANUC program takes
+    ~10 ms and changes nothing: the commands hold no other open file; mypy exits so too)."""
+    code = main()
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+    except BrokenPipeError:  # `ladderworks-cli check FILE | head`: the reader has gone
+        pass
+    os._exit(code)
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    run()

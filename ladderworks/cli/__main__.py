@@ -1,7 +1,5 @@
 """`python -m ladderworks.cli` runs the command line."""
 
-import sys
+from ladderworks.cli import run
 
-from ladderworks.cli import main
-
-sys.exit(main())
+run()

@@ -8,7 +8,7 @@ import sys
 from ladderworks.cli._programs import load_program
 from ladderworks.core.compiler import check
 from ladderworks.core.diagnostics import Diagnostic, has_errors
-from ladderworks.core.il import parse_file
+from ladderworks.core.il import parse_for_check
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -24,7 +24,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 def check_path(name: str) -> list[Diagnostic]:
     """Everything `check` reports for a file: the parser's diagnostics and, when they hold no
     error, the compiler's (the checks `compile` runs), by line; the file parsed once."""
-    result = parse_file(name)
+    result = parse_for_check(name)
     if not result.ok:
         return result.diagnostics
     return sorted(result.diagnostics + check(result.program), key=lambda d: (d.line, d.column))

@@ -11,7 +11,7 @@ import pytest
 
 from ladderworks.cli import main
 from ladderworks.core.compiler import compile_program
-from ladderworks.core.il import check_file, parse_file
+from ladderworks.core.il import parse_file, parse_for_check
 from ladderworks.paths import EXAMPLES
 from tests.real_programs import real_programs_dir
 
@@ -43,7 +43,7 @@ def positions(lines: list[str], path: Path) -> list[tuple[int, int, str]]:
 def test_an_unmatched_jmp_is_an_error_of_check(tmp_path: Path) -> None:
     path = tmp_path / "jump.LAD"
     path.write_text(UNMATCHED_JMP)
-    assert check_file(path) == []  # the parser alone finds nothing wrong
+    assert parse_for_check(path).diagnostics == []  # the parser alone finds nothing wrong
     code, lines = check(path)
     assert code == 1
     assert positions(lines, path) == [(3, 1, "jmp-without-jmpe"), (7, 1, "coil-twice")]
@@ -62,7 +62,8 @@ def test_parser_errors_alone_when_the_parse_fails(tmp_path: Path) -> None:
     path.write_text(UNMATCHED_JMP.replace("RD X0.2", "RD X0.2 extra"))
     code, lines = check(path)
     assert code == 1
-    assert [c for _l, _c, c in positions(lines, path)] == [d.code for d in check_file(path)]
+    found = parse_for_check(path).diagnostics
+    assert [c for _l, _c, c in positions(lines, path)] == [d.code for d in found]
     assert "jmp-without-jmpe" not in "\n".join(lines)
 
 

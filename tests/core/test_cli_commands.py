@@ -63,3 +63,32 @@ def test_check_loads_neither_lark_nor_the_plc(tmp_path: Path) -> None:
     done = subprocess.run([sys.executable, "-c", CHECK_SCRIPT, str(program)], cwd=CHECKOUT,
                           capture_output=True, text=True, timeout=120, check=True)
     assert done.stdout.strip() == "0"  # passed, and none of the heavy modules was loaded
+
+
+def test_the_program_exits_with_main_s_code_and_all_its_output(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.LAD"
+    bad.write_text("%@3\n" + "RD X1.0\nWRT X2.0\n" * 500 + "%\n", encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "ladderworks.cli", "check", str(bad)],
+                          cwd=CHECKOUT, capture_output=True, text=True, check=False)
+    lines = done.stdout.splitlines()
+    assert done.returncode == 1 and done.stderr == ""
+    assert len(lines) == 500 and all("write-input" in line for line in lines)  # all flushed
+    good = tmp_path / "good.LAD"
+    good.write_text("%@3\nRD X1.0\nWRT Y2.0\n%\n", encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "ladderworks.cli", "check", str(good)],
+                          cwd=CHECKOUT, capture_output=True, text=True, check=False)
+    assert (done.returncode, done.stdout, done.stderr) == (0, "", "")
+
+
+def test_a_reader_that_stops_early_gets_no_traceback(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.LAD"
+    bad.write_text("%@3\n" + "RD X1.0\nWRT X2.0\n" * 20000 + "%\n", encoding="utf-8")
+    with subprocess.Popen([sys.executable, "-m", "ladderworks.cli", "check", str(bad)],
+                          cwd=CHECKOUT, stdout=subprocess.PIPE, stderr=subprocess.PIPE) as cli:
+        assert cli.stdout is not None and cli.stderr is not None
+        first = cli.stdout.readline()
+        cli.stdout.close()  # as `| head -1` does
+        errors = cli.stderr.read()
+        cli.wait(timeout=60)
+    assert b"write-input" in first
+    assert b"Traceback" not in errors and b"BrokenPipe" not in errors

@@ -8,11 +8,11 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from ladderworks.core.il.parser import (
         ParseResult,
-        check_file,
         decode,
         parse,
         parse_bytes,
         parse_file,
+        parse_for_check,
     )
     from ladderworks.core.il.printer import print_instruction, print_program
     from ladderworks.core.il.program import Instruction, Network, Program, Section
@@ -23,11 +23,11 @@ __all__ = [
     "ParseResult",
     "Program",
     "Section",
-    "check_file",
     "decode",
     "parse",
     "parse_bytes",
     "parse_file",
+    "parse_for_check",
     "print_instruction",
     "print_program",
 ]
@@ -35,8 +35,8 @@ __all__ = [
 # The module of each name, imported when the name is first asked for (PEP 562): `check` loads
 # no printer, and importing il.program loads no parser.
 _MODULE_OF = {
-    "ParseResult": "parser", "check_file": "parser", "decode": "parser", "parse": "parser",
-    "parse_bytes": "parser", "parse_file": "parser",
+    "ParseResult": "parser", "decode": "parser", "parse": "parser",
+    "parse_bytes": "parser", "parse_file": "parser", "parse_for_check": "parser",
     "print_instruction": "printer", "print_program": "printer",
     "Instruction": "program", "Network": "program", "Program": "program", "Section": "program",
 }

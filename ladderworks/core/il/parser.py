@@ -152,25 +152,27 @@ def _collector_paused() -> Iterator[None]:
 def parse_bytes(data: bytes) -> ParseResult:
     """Parse file contents given as bytes (any encoding LadderWorks reads)."""
     with _collector_paused():
-        return _parse_bytes(data, build=True)
+        return _parse_bytes(data)
 
 
-def check_file(path: str | Path) -> list[Diagnostic]:
-    """The diagnostics `parse_file(path)` gives, found without building the program's
-    networks (what `ladderworks-cli check` prints)."""
+def parse_for_check(path: str | Path) -> ParseResult:
+    """parse_file(path) without what only the editor and Save use: the same networks and
+    diagnostics, but the other sections' views (symbol table, messages, title) only as far
+    as their diagnostics need, and no lossless bookkeeping (the networks' keys and spans):
+    what `ladderworks-cli check` runs the compiler's checks on."""
     data = _read(path)
     with _collector_paused():
-        return _parse_bytes(data, build=False).diagnostics
+        return _parse_bytes(data, whole=False)
 
 
-def _parse_bytes(data: bytes, *, build: bool) -> ParseResult:
+def _parse_bytes(data: bytes, *, whole: bool = True) -> ParseResult:
     text, form, diagnostics, split = decode_lines(data)
     if _is_binary(data):
         program = Program()
         program.source = FileSource(form, *split, -1, -1)
         return ParseResult(program, [Diagnostic("not-a-program", {}, 1, 1)], form.encoding)
     parser = _FileParser(text, form, split)
-    parser.build = build
+    parser.whole = whole
     result = parser.run()
     if diagnostics:
         result.diagnostics = sorted(diagnostics + result.diagnostics,
@@ -470,10 +472,9 @@ class _FileParser:
         self.firsts: dict[int, int] = {}
         self.labels = False
         self.dialect = "seed"  # decided before the ladder is read: parameter ranges depend on it
-        # False: only the diagnostics are wanted, so a line that makes its instruction alone
-        # (which never has one) is not built into the networks
-        self.build = True
-        self.skipped = False  # such a line was skipped
+        # False: the networks are for the compiler's checks only (parse_for_check), so the
+        # other sections' views and what Save needs to write them back are not made
+        self.whole = True
         self.marks: list[int] | None = None  # the lines with a `%`, found when first needed
         # the parameters read for a spec (by id: the table's rows live while a parse runs)
         # from operands (their texts), when they gave no diagnostic
@@ -552,7 +553,8 @@ class _FileParser:
         if not ladder_found:
             self.diagnostics.append(Diagnostic("missing-start", {}, 1, 1))
             self.source.ladder_start = self.source.ladder_stop = -1
-        read_views(self.program, self.firsts, self.diagnostics, build=self.build)
+        read_views(self.program, self.firsts, self.diagnostics,
+                   build=self.whole)
 
     def _next_mark(self, start: int) -> int:
         """The first line from `start` that ends a section or starts one (else past the end):
@@ -570,7 +572,7 @@ class _FileParser:
     def _not_a_program(self) -> None:
         """Text with no section and no instruction that has errors is not a ladder program."""
         errors = [d for d in self.diagnostics if d.is_error and d.code != "missing-start"]
-        if self.program.networks or self.skipped or not errors:
+        if self.program.networks or not errors:
             return
         self.diagnostics = [Diagnostic("not-a-program", {}, 1, 1), *errors[:2]]
 
@@ -607,12 +609,11 @@ class _FileParser:
         recs = list(map(seen.__getitem__, body))  # line start + 1 + k is recs[k]
         base = start + 1
         builder = _NetworkBuilder(start)
-        if self.build:
-            self._build_ladder(recs, base, builder)
-        else:
-            self._check_ladder(recs, base, builder)
+        self._build_ladder(recs, base, builder)
         self.program.networks = builder.networks
         self.program.trailer = builder.finish_pending()
+        if not self.whole:
+            return
         source = self.source
         source.keys = list(map(Network.key, builder.networks))
         source.spans = builder.spans()
@@ -672,30 +673,6 @@ class _FileParser:
         if last:
             builder.lasts[-1] = builder.cursor = last
         builder.closed = closed
-
-    def _check_ladder(self, recs: list[_Line | _Made], base: int,
-                      builder: _NetworkBuilder) -> None:
-        """The ladder's diagnostics only: the lines that make their instruction alone are
-        skipped; the others are read as when building, but not added to the networks."""
-        k = 0
-        count = len(recs)
-        while k < count:
-            rec = recs[k]
-            if rec.__class__ is tuple:
-                self.skipped = True
-                k += 1
-                continue
-            assert isinstance(rec, _Line)
-            if rec.made is not None:
-                self.skipped = True
-                k += 1
-            elif rec.kind == "label":
-                self.labels = True
-                k += 1
-            elif rec.kind == "blank" or rec.kind == "bad":
-                k += 1
-            else:
-                k = self._line(recs, base, k, builder)
 
     def _line(self, recs: list[_Line | _Made], base: int, k: int,
               builder: _NetworkBuilder) -> int:
@@ -769,9 +746,6 @@ class _FileParser:
         if alone and len(self.diagnostics) == reported:
             line.made = (spec, instruction.name, instruction.operand, instruction.params,
                          instruction.comment, instruction.column, starts, ends)
-        if not self.build:  # only the diagnostics are wanted
-            self.skipped = True
-            return k
         builder.add(instruction, end_line, starts, ends)
         return k
 
@@ -783,9 +757,6 @@ class _FileParser:
         comment = line.comment or ""
         column = line.words[0].column
         starts, ends = _flow(spec)
-        if not self.build:  # only the diagnostics are wanted
-            self.skipped = True
-            return last + 1
         builder.add(new_instruction(spec.name, None, params, comment, (), number, column),
                     base + last, starts, ends)
         return last + 1

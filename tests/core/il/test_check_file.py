@@ -1,5 +1,5 @@
-"""check_file (what `ladderworks-cli check` prints) gives exactly parse_file's diagnostics,
-though it does not build the lines that make their instruction alone."""
+"""parse_for_check (what `ladderworks-cli check` runs the compiler's checks on) gives exactly
+parse_file's diagnostics and networks, though it makes no section views or lossless keys."""
 
 from __future__ import annotations
 
@@ -8,7 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from ladderworks.core.il import check_file, parse_bytes, parse_file
+from ladderworks.core.il import parse_bytes, parse_file, parse_for_check
+from ladderworks.core.il.parser import ParseResult
 from tests.real_programs import WHOLE, fragment_names, real_bytes
 
 DATA = Path(__file__).resolve().parents[2] / "data" / "fuzz"
@@ -22,7 +23,17 @@ JUNK = ["", " ", "\t", ";", "//x", ",", "SUB", "SUB 99", "SUB 43", "SUB 27", "0"
 
 def _same(path: Path, data: bytes) -> None:
     path.write_bytes(data)
-    assert check_file(path) == parse_bytes(data).diagnostics
+    _same_as_parse_file(path, parse_bytes(data))
+
+
+def _same_as_parse_file(path: Path, whole: ParseResult) -> None:
+    light = parse_for_check(path)
+    assert light.diagnostics == whole.diagnostics
+    assert light.program.networks == whole.program.networks
+    assert [n.line for n in light.program.networks] == [n.line for n in whole.program.networks]
+    assert (light.program.trailer, light.program.dialect) == (
+        whole.program.trailer, whole.program.dialect)
+    assert light.program.source is not None and light.program.source.keys == []
 
 
 @pytest.mark.parametrize("name", [*WHOLE, *fragment_names()])
@@ -32,7 +43,7 @@ def test_a_real_program(tmp_path: Path, name: str) -> None:
 
 @pytest.mark.parametrize("path", sorted(DATA.iterdir()), ids=lambda p: p.name)
 def test_the_fuzz_files(path: Path) -> None:
-    assert check_file(path) == parse_file(path).diagnostics
+    _same_as_parse_file(path, parse_file(path))
 
 
 @pytest.mark.parametrize("text", [

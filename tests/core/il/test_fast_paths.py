@@ -233,13 +233,13 @@ def test_repeated_function_with_a_bad_parameter_reports_at_its_line() -> None:
 def test_repeated_function_lines_give_the_same_check_diagnostics(tmp_path: object) -> None:
     from pathlib import Path
 
-    from ladderworks.core.il import check_file
+    from ladderworks.core.il import parse_for_check
 
     text = ("%@3\nRD X1.0\nSUB 24\n1\n1000\nRD X1.1\nSUB 24\n1\n1000\nRD X1.2\nSUB 24\n1\n"
             "R5\nWRT Y0.1\n%\n")
     path = Path(str(tmp_path)) / "p.LAD"
     path.write_text(text)
-    assert check_file(path) == parse(text).diagnostics
+    assert parse_for_check(path).diagnostics == parse(text).diagnostics
 
 
 def test_crlf_and_tabs_read_as_lf_and_spaces() -> None:
