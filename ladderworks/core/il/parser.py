@@ -1160,7 +1160,7 @@ class _NetworkBuilder:
         """Add an instruction (its last line `end_line`); `starts`, `ends` are its _flow()."""
         current = self.current
         if current is None or (self.closed and (starts or self.pending_label)):
-            network = Network(comments=self.pending, label=self.pending_label)
+            network = Network(None, self.pending, self.pending_label)  # positional: quicker
             current = self.current = network.instructions
             self.pending = []
             self.pending_label = ""
