@@ -1,12 +1,12 @@
 """Open the 37,883-step FANUC_STUDER_S41_F036 in the console: ms to parse, lay out and paint,
-ms for `ladderworks-cli check`, resident memory; run from the repository root. An argument
-chooses View › Element names (`address`, `symbol`, `comment`; default: the screen's)."""
+resident memory (`ladderworks-cli check` of it: benchmarks/check_real.py); run from the
+repository root. An argument chooses View › Element names (`address`, `symbol`, `comment`;
+default: the screen's)."""
 
 from __future__ import annotations
 
 import os
 import resource
-import subprocess
 import sys
 import tempfile
 import time
@@ -32,14 +32,6 @@ def _rss_mb() -> float:
     except OSError:
         pass
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-
-
-def _check_ms(path: Path) -> float:
-    """Wall ms of `python3 -m ladderworks.cli check FILE` (process start included)."""
-    start = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "ladderworks.cli", "check", str(path)], cwd=ROOT,
-                   stdout=subprocess.DEVNULL, check=False)
-    return (time.perf_counter() - start) * 1000
 
 
 def main() -> int:
@@ -98,7 +90,6 @@ def main() -> int:
         scrolled = time.perf_counter() - start
         window.editor.undo_stack.setClean()
         window.close()
-    check = _check_ms(path)
     load = os.getloadavg()
     print(f"{NAME}: {steps} steps, {count} networks ({made} graphics items made)")
     print(f"element names: {names}; document height {height:.0f} px")
@@ -109,7 +100,6 @@ def main() -> int:
           f"(load() returned after {loaded * 1000:.0f} ms)")
     print(f"all laid out (background): {laid_out * 1000:4.0f} ms")
     print(f"scroll to the middle:   {scrolled * 1000:7.0f} ms")
-    print(f"check (CLI process):    {check:7.0f} ms (goal under 300 ms)")
     print(f"resident memory open:   {rss:7.0f} MB (goal under 400 MB)")
     print(f"load average:           {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} "
           f"on {os.cpu_count()} cores")
