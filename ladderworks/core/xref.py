@@ -10,13 +10,12 @@ networks (the console, which also knows the cell of each use).
 
 from __future__ import annotations
 
-import gc
 from collections.abc import Iterable, Iterator, Sequence
-from contextlib import contextmanager
 from enum import StrEnum
 from typing import NamedTuple
 
 from ladderworks.core.address import Address, Area, byte_in_range
+from ladderworks.core.collector import collector_paused
 from ladderworks.core.compiler.checks import output_params
 from ladderworks.core.il.program import FANUC, Program
 from ladderworks.core.instructions import (
@@ -274,26 +273,14 @@ class CrossReference:
     @classmethod
     def from_program(cls, program: Program) -> CrossReference:
         """The cross reference of a parsed program (no cells: the lines are known)."""
-        with _collector_paused():
+        with collector_paused():
             return cls(_collect(list(_program_items(program)), program.dialect))
 
     @classmethod
     def from_ladder(cls, networks: Sequence[LadderNetwork], dialect: str) -> CrossReference:
         """The cross reference of the console's networks, with the cell of every element."""
-        with _collector_paused():
+        with collector_paused():
             return cls(_collect(list(_ladder_items(networks)), dialect))
-
-
-@contextmanager
-def _collector_paused() -> Iterator[None]:
-    """No garbage collection while tens of thousands of uses are made (none is garbage)."""
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()
 
 
 _Item = tuple[InstructionSpec, Sequence[object], Address | None, tuple[int, int] | None, str,

@@ -7,15 +7,16 @@ from ladderworks.core.il import Program
 
 
 def check(program: Program) -> list[Diagnostic]:
-    """The compiler's checks of a program (stack depth, ranges, pairs, written inputs ...)."""
+    """The compiler's checks of a program (stack depth, ranges, pairs, written inputs ...),
+    naming other places by network."""
     from ladderworks.core.compiler import check as compiler_check
 
-    return compiler_check(program)
+    return compiler_check(program, by_network=True)
 
 
 def compile_program(program: Program) -> tuple[bytes | None, list[Diagnostic]]:
     """The binary PLC program (None on errors) and every diagnostic."""
     from ladderworks.core.compiler import compile_program as core_compile
 
-    result = core_compile(program)
+    result = core_compile(program, by_network=True)
     return result.binary, list(result.diagnostics)

@@ -10,12 +10,12 @@ from pathlib import Path
 from PySide6.QtCore import QFileSystemWatcher, QObject, Signal
 from PySide6.QtGui import QTextDocument
 
+from ladderworks.core.collector import release_frozen
 from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult, parse_bytes
 from ladderworks.core.il.printer import encode_program, print_faithful
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text
 from ladderworks.core.ladder.convert import Kept, adopt_origin, damaged_drafts
-from ladderworks.gui import heap
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.files import atomic_write_bytes, write_target
 from ladderworks.gui.parameter_document import ParameterDocument
@@ -141,7 +141,7 @@ class ProgramDocument(QObject):
     def read(self, path: Path) -> tuple[ParseResult, bytes]:
         """Read and parse `path` (OSError); it becomes the document's file."""
         data = path.read_bytes()
-        heap.release()  # the program shown so far is dropped
+        release_frozen()  # the program shown so far is dropped: its objects walked again
         result = parse_bytes(data)
         if result.program.source is not None:
             result.diagnostics = sorted(

@@ -14,7 +14,6 @@ from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.il.parser import parse_bytes
 from ladderworks.core.il.textform import EncodeError
-from ladderworks.core.ladder.convert import ladder_to_program
 from ladderworks.core.plc.parameters import format_parameters, parameters_beside
 from ladderworks.core.plc.timer_table import dialect_of
 from ladderworks.gui import file_dialogs, questions
@@ -238,10 +237,7 @@ class FileActions(_Window):
 
     def _program_to_save(self) -> tuple[Program, list[Diagnostic]]:
         """The drawn program (unfinished networks as drafts, unchanged ones as read)."""
-        program, diagnostics = ladder_to_program(self.model.ladder_document(),
-                                                 self.document.kept)
-        self.editor.mark_diagnostics(diagnostics)
-        return program, diagnostics
+        return self.model.saved_program()
 
     def _may_write(self, path: Path) -> bool | None:
         """Ask before writing `path` (changed outside, read-only): True to go on, False when

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from ladderworks.core.collector import release_frozen
 from ladderworks.gui.editor import progressive
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.paths import EXAMPLES
@@ -39,7 +40,7 @@ def test_a_laid_out_program_is_frozen_and_released_by_the_next_one(
         window.editor.finish_loading()
         assert alive() is None
     finally:
-        gc.unfreeze()
+        release_frozen()
 
 
 def test_an_edit_compares_networks_as_the_saved_drawing_does(window: MainWindow) -> None:

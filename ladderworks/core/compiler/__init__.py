@@ -80,14 +80,15 @@ def to_ops(program: Program) -> list[Op]:
     return ops
 
 
-def compile_program(program: Program) -> CompileResult:
+def compile_program(program: Program, *, by_network: bool = False) -> CompileResult:
     """Check and compile; never raises for a bad program.
 
     The checks are the whole set `check` runs: a program they pass always compiles.
+    `by_network` as for `check`.
     """
     from ladderworks.core.compiler.binary import encode
 
-    diagnostics = check(program)
+    diagnostics = check(program, by_network=by_network)
     if has_errors(diagnostics):
         return CompileResult(None, diagnostics)
     return CompileResult(encode(to_ops(program), dialect_of(program)), diagnostics)

@@ -7,7 +7,6 @@ implementations. Dispatch is on the instruction table's fields, never on spellin
 
 from __future__ import annotations
 
-import gc
 from collections.abc import Callable, Sequence
 from itertools import compress, count
 from operator import attrgetter
@@ -20,6 +19,7 @@ from ladderworks.core.address import (
     AddressError,
     parse_address,
 )
+from ladderworks.core.collector import collector_paused
 from ladderworks.core.compiler.structure import (
     FlowItem,
     Structure,
@@ -153,6 +153,7 @@ class _Checker:
         self.out: list[Diagnostic] = []
         self.coils: dict[tuple[object, ...], tuple[Write, Instruction, int]] = {}  # see write
         self.implemented = IMPLEMENTED  # names only: `check` loads no implementation
+        self.by_network = False  # see check()
         self.dialect = dialect or dialect_of(program)
         self.program = program
         self.jumps: list[tuple[int, Instruction, int | None]] = []  # network, JMP, coils left
@@ -380,10 +381,10 @@ class _Checker:
         if kind is _OUT and before[0] is _OUT:
             self.report("coil-twice", ins, network, {"address": str(address)}, warning=True)
         elif (kind is _OUT) != (before[0] is _OUT):
-            if before[1].line > 0:
+            if before[1].line > 0 and not self.by_network:
                 self.report("coil-mixed", ins, network,
                             {"address": str(address), "line": before[1].line}, warning=True)
-            else:  # compiled from the drawing: no line 0, the network it is in
+            else:  # no source line (drawn), or the console's: the network it is in
                 self.report("coil-mixed-network", ins, network,
                             {"address": str(address), "other": before[2] + 1}, warning=True)
         if kind is _OUT:
@@ -560,18 +561,18 @@ def _write_problem(name: str, address: Address) -> tuple[str, dict[str, object]]
     return None
 
 
-def check(program: Program, dialect: str | None = None) -> list[Diagnostic]:
+def check(program: Program, dialect: str | None = None, *,
+          by_network: bool = False) -> list[Diagnostic]:
     """Every compile diagnostic of `program` (errors and warnings), in program order.
 
     `compile` runs exactly these; a program they pass always compiles and generates.
     `dialect` overrides the program's own ("seed" or "fanuc": the ranges of numbers).
+    `by_network`: a message naming another place names its network, not its source line
+    (the console, whose unchanged networks keep the lines they were read from).
     """
     # no cycle collection meanwhile: the checks make tens of thousands of objects and no
     # cycles, and a collection would walk the program's whole heap (as parse and xref do)
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        return _Checker(program, dialect).run()
-    finally:
-        if enabled:
-            gc.enable()
+    with collector_paused():
+        checker = _Checker(program, dialect)
+        checker.by_network = by_network
+        return checker.run()

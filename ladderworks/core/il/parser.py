@@ -2,11 +2,8 @@
 
 from __future__ import annotations
 
-import gc
 import re
 from bisect import bisect_left
-from collections.abc import Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cache, lru_cache
 from itertools import compress, count, repeat
@@ -20,6 +17,7 @@ from ladderworks.core.address import (
     parse_address_cached,
     parse_plain_addresses,
 )
+from ladderworks.core.collector import collector_paused
 from ladderworks.core.diagnostics import Diagnostic, Severity, has_errors
 from ladderworks.core.il.program import (
     FANUC,
@@ -129,29 +127,9 @@ def _is_binary(data: bytes) -> bool:
     return controls * 20 > len(sample)
 
 
-@contextmanager
-def _collector_paused() -> Iterator[None]:
-    """Pause Python's cycle collector: a parse makes no cycles, but it makes a few hundred
-    thousand objects, and the collector would walk the growing heap many times over.
-
-    After it, the objects go straight to the oldest generation (freeze, then unfreeze: two
-    list moves) instead of being walked by the next young collection; they are still
-    collected with that generation. Skipped when something else keeps objects frozen."""
-    was_enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if gc.get_freeze_count() == 0:
-            gc.freeze()
-            gc.unfreeze()
-        if was_enabled:
-            gc.enable()
-
-
 def parse_bytes(data: bytes) -> ParseResult:
     """Parse file contents given as bytes (any encoding LadderWorks reads)."""
-    with _collector_paused():
+    with collector_paused(promote=True):
         return _parse_bytes(data)
 
 
@@ -161,7 +139,7 @@ def parse_for_check(path: str | Path) -> ParseResult:
     as their diagnostics need, and no lossless bookkeeping (the networks' keys and spans):
     what `ladderworks-cli check` runs the compiler's checks on."""
     data = _read(path)
-    with _collector_paused():
+    with collector_paused(promote=True):
         return _parse_bytes(data, whole=False)
 
 
@@ -203,7 +181,7 @@ def parse(text: str, dialect: str | None = None) -> ParseResult:
     parser = _FileParser(text, form)
     if dialect == FANUC:
         parser.dialect = FANUC
-    with _collector_paused():
+    with collector_paused(promote=True):
         return parser.run()
 
 

@@ -49,6 +49,9 @@ class LadderModel(QObject):
         self.symbols: SymbolTable | None = None  # the program's `%@2` symbols
         self.networks: list[LadderNetwork] = [LadderNetwork()]
         self.loader = ProgressiveLoader(self)
+        # each network as laid out with the one it was read as: an unchanged network is
+        # saved, checked and compiled as read, not decomposed from its grid again
+        self.kept: Kept | None = None
         self._mode = Mode.LADDER
 
     # -- the mode ------------------------------------------------------------------------
@@ -77,12 +80,14 @@ class LadderModel(QObject):
         laid out with the one it came from (the faithful Save)."""
         document = self.loader.head(program, kept)
         self.set_document(document, keep_pending=True)
+        self.kept = kept
         self.loader.start()
 
     def set_document(self, document: LadderDocument, *, keep_pending: bool = False) -> None:
         """Make `document` the one edited (clears undo)."""
         if not keep_pending:
             self.loader.cancel()
+        self.kept = None
         self.undo_stack.clear()
         self.document = document
         self.symbols = document.origin.symbols if document.origin is not None else None
@@ -115,8 +120,9 @@ class LadderModel(QObject):
                               doc.origin)
 
     def saved_program(self) -> tuple[Program, list[Diagnostic]]:
-        """The program to save: a network that cannot be coded yet is kept as a draft."""
-        program, diagnostics = convert.ladder_to_program(self.ladder_document())
+        """The program to save: a network that cannot be coded yet is kept as a draft, one
+        still as it was read is its instructions as read."""
+        program, diagnostics = convert.ladder_to_program(self.ladder_document(), self.kept)
         self.diagnostics_found.emit(diagnostics)
         return program, diagnostics
 

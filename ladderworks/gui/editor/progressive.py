@@ -7,9 +7,9 @@ from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QObject, QTimer
 
+from ladderworks.core.collector import freeze_alive
 from ladderworks.core.il import Network, Program
 from ladderworks.core.ladder import LadderDocument, convert
-from ladderworks.gui import heap
 
 if TYPE_CHECKING:
     from ladderworks.gui.editor.ladder_model import LadderModel
@@ -77,7 +77,7 @@ class ProgressiveLoader(QObject):
         if last:
             self.model.document.trailer = part.trailer
             self.trailer = []
-            heap.settle()  # a large program: collections no longer walk it
+            freeze_alive()  # a large program laid out: collections no longer walk it
         else:
             self._timer.start()
 
