@@ -3,6 +3,7 @@ START / STOP are on the main toolbar and in the PLC menu, compiling while runnin
 
 from __future__ import annotations
 
+import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import QMenu, QToolBar
@@ -111,3 +112,31 @@ def test_a_coil_mixed_in_the_drawing_names_the_other_network(qtbot: QtBot, windo
     texts = [tree.topLevelItem(i).text(2) for i in range(tree.topLevelItemCount())]
     assert texts == ["coil Y0.0 is written by WRT and by SET/RST (also in network 1)"]
     assert tree.topLevelItem(0).text(1).startswith("network 2")
+
+
+def test_check_and_compile_take_unchanged_networks_as_read(
+        qtbot: QtBot, window: MainWindow, monkeypatch: pytest.MonkeyPatch) -> None:
+    """F7 and F9 code only the networks that changed since the program was read (each
+    other network is its instructions as read, as Save writes it): one network edited, one
+    coded again, and the same diagnostics as before the edit."""
+    from ladderworks.core.ladder import convert
+
+    coded: list[int] = []
+    real = convert.network_to_instructions
+
+    def counting(network: object, index: int, dialect: str) -> object:
+        coded.append(index)
+        return real(network, index, dialect)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(convert, "network_to_instructions", counting)
+    _open(window)
+    before = window.check()
+    assert coded == []
+    window.editor.move_cursor(1, 0, 0)
+    window.editor.invert_at_cursor()
+    after = window.check()
+    assert coded == [1]
+    assert [d.code for d in after] == [d.code for d in before]
+    coded.clear()
+    _action(window, "action_compile").trigger()
+    assert coded == [1] and window.plc_docks.session.run.binary is not None
