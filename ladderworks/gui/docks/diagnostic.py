@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, Signal
-from PySide6.QtGui import QBrush, QColor, QPainter, QTransform, QWheelEvent
+from PySide6.QtGui import QBrush, QColor, QPainter, QPaintEvent, QTransform, QWheelEvent
 from PySide6.QtWidgets import (
     QCheckBox,
     QDockWidget,
@@ -20,14 +20,16 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.address import Address, AddressError, parse_address
 from ladderworks.core.compiler.binary import BinaryProgram
+from ladderworks.core.il.program import Program
 from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork
 from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
 from ladderworks.gui.docks.live_ladder import LivePower
-from ladderworks.gui.editor.geometry import Layout, cell_h, cell_origin
+from ladderworks.gui.editor.geometry import Layout, cell_h, cell_origin, network_width
 from ladderworks.gui.editor.label_text import CommentedAddresses, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
+from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 from ladderworks.gui.retranslate import Retranslating
@@ -57,7 +59,7 @@ class DiagnosticView(QGraphicsView):
         self.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.MinimalViewportUpdate)
         self.setDragMode(QGraphicsView.DragMode.ScrollHandDrag)
         self.live = LivePower(self.scene_)
-        self.network_items: list[NetworkItem] = []
+        self.network_items = LazyItems(self._make_item)  # made when shown
         self.symbols: SymbolTable | None = None  # the program's symbols, named under addresses
         self.networks: list[LadderNetwork] = []
         self.comments = CommentedAddresses(self.describe_address)  # asked once per address
@@ -95,32 +97,49 @@ class DiagnosticView(QGraphicsView):
 
     def show_networks(self, networks: list[LadderNetwork], binary: BinaryProgram,
                       ops: list[list[int]]) -> None:
-        """Draw `networks` (coded as `ops` of `binary`) with power overlays."""
+        """Draw `networks` (coded as `ops` of `binary`) with power overlays; a network's item
+        is made when first shown (a real program has 10,000+ networks)."""
         self.live.detach()
-        for item in self.network_items:
+        for _index, item in self.network_items.made():
             self.scene_.removeItem(item)
         self.networks = networks
         self.comments.forget()  # the symbols may have changed with the program
         self.layout_ = Layout(self.commented)
         self.layout_.rebuild(networks)
-        self.network_items = []
-        for index, (network, top) in enumerate(zip(networks, self.layout_.tops, strict=True)):
-            item = LabelledNetworkItem(network, index + 1, self.describe_address)
-            item.setPos(0, top)
-            self.scene_.addItem(item)
-            self.network_items.append(item)
+        self.network_items.reset(len(networks))
         self.live.attach(networks, self.layout_, binary, ops)
-        width = max((item.boundingRect().width() for item in self.network_items), default=600.0)
+        width = max((network_width(network) for network in networks), default=600.0)
         self.scene_.setSceneRect(QRectF(0, 0, width, max(self.layout_.total_height(), cell_h())))
+
+    def _make_item(self, index: int) -> NetworkItem:
+        item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
+        item.setPos(0, self.layout_.tops[index])
+        self.scene_.addItem(item)
+        return item
+
+    def make_visible_items(self) -> None:
+        """Make the items of the networks in (and just around) the viewport."""
+        if not self.networks or not self.layout_.tops:
+            return
+        shown = self.visible_rect()
+        first = self.layout_.network_at(shown.top() - cell_h())
+        last = self.layout_.network_at(shown.bottom() + cell_h())
+        for index in range(first, last + 1):
+            self.network_items[index]
+
+    def paintEvent(self, event: QPaintEvent) -> None:
+        """Make the visible networks' items, then paint."""
+        self.make_visible_items()
+        super().paintEvent(event)
 
     def relayout(self) -> None:
         """The rows changed height (View › Element names): restack the networks."""
         self.comments.forget()
         self.layout_ = Layout(self.commented)
         self.layout_.rebuild(self.networks)
-        for item, top in zip(self.network_items, self.layout_.tops, strict=True):
+        for index, item in self.network_items.made():
             item.refresh()
-            item.setPos(0, top)
+            item.setPos(0, self.layout_.tops[index])
         self.live.restack(self.layout_)
         rect = self.scene_.sceneRect()
         self.scene_.setSceneRect(QRectF(0, 0, rect.width(),
@@ -229,6 +248,8 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.hit_index = -1
         self._monitoring = False
         self._snapshot: PlcSnapshot | None = None
+        # the shown program's networks as laid out, by what each was laid out from
+        self._laid: dict[tuple[object, ...], LadderNetwork] = {}
         session.program_loaded.connect(self._on_program)
         session.snapshot_ready.connect(self._on_snapshot)
         session.forces_changed.connect(lambda _entries: self._repaint())
@@ -274,12 +295,29 @@ class DiagnosticDock(Retranslating, QDockWidget):
         program = self.session.program
         if program is None or not program_matches(program, binary):
             program = program_of(binary)
-        networks = [layout_network(net.instructions, net.comments) for net in program.networks]
+        networks = self._lay_out(program)
         self.view.symbols = self.session.symbols
         self.view.show_networks(networks, binary, binary_networks(binary))
         self.hits = []
         self.hit_index = -1
         self._repaint()
+
+    def _lay_out(self, program: Program) -> list[LadderNetwork]:
+        """Each network of `program` laid out; one the program shown before has (every field
+        of every instruction, and the comments, the same) is reused, not laid out again."""
+        known = self._laid
+        self._laid = {}
+        networks: list[LadderNetwork] = []
+        for net in program.networks:
+            # plain tuples: every field counts (an Instruction's == ignores its line), and
+            # their hash is C's (F9 again after an edit re-lays out only what changed)
+            key = (tuple(map(tuple, net.instructions)), tuple(net.comments))
+            laid = known.get(key)
+            if laid is None:
+                laid = layout_network(net.instructions, net.comments)
+            self._laid[key] = laid
+            networks.append(laid)
+        return networks
 
     def _on_visible(self, visible: bool) -> None:
         if visible != self._monitoring:
@@ -384,7 +422,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
         return found
 
     def _mark(self, hits: list[tuple[int, Cell]]) -> None:
-        for overlay in self.view.live.overlays:
+        for _index, overlay in self.view.live.overlays.made():
             if overlay.marked:
                 overlay.marked = set()
                 overlay.update()

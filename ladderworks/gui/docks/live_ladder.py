@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import bisect
+
 from PySide6.QtCore import QRectF
 from PySide6.QtWidgets import QGraphicsScene
 
@@ -12,7 +14,8 @@ from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.model import Cell, FunctionBox, LadderNetwork
 from ladderworks.gui.docks.cell_map import binary_networks, cell_ops, network_power, op_key
 from ladderworks.gui.docks.power_overlay import PowerOverlay
-from ladderworks.gui.editor.geometry import Layout
+from ladderworks.gui.editor.geometry import Layout, RowMetrics
+from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.plc_session import PlcSnapshot
 
 
@@ -61,16 +64,23 @@ def box_values(box: FunctionBox, snapshot: PlcSnapshot) -> list[str]:
 
 
 class LivePower:
-    """Green power flow over the network items of a scene, from the session's snapshots."""
+    """Green power flow over the network items of a scene, from the session's snapshots.
+
+    An overlay, and the op index of each cell of its network, is made only when first needed
+    (its network on screen, or asked for): a real program has 10,000+ networks."""
 
     def __init__(self, scene: QGraphicsScene) -> None:
         self.scene = scene
         self.networks: list[LadderNetwork] = []
-        self.overlays: list[PowerOverlay] = []
-        self.cells: list[dict[Cell, int]] = []  # op index of each element cell, per network
+        self.overlays: LazyItems[PowerOverlay] = LazyItems(self._make_overlay)
         self.ops: list[list[int]] = []
         self.binary: BinaryProgram | None = None
         self.repaints = 0  # overlays repainted since creation (for the benchmark)
+        self._tops: list[float] = []  # where each network is stacked (copied at attach)
+        self._rows: list[RowMetrics] = []
+        self._cells: list[dict[Cell, int] | None] = []  # op index of each element cell
+        self._firsts: list[int] = []  # first op of each network with ops (cell_of bisects)
+        self._owners: list[int] = []  # the network of each entry of _firsts
 
     @property
     def attached(self) -> bool:
@@ -80,45 +90,76 @@ class LivePower:
     def attach(self, networks: list[LadderNetwork], layout: Layout, binary: BinaryProgram,
                ops: list[list[int]]) -> None:
         """Put an overlay on each network (where `layout` stacks it, with its rows) for the ops
-        of `binary`."""
+        of `binary`; each is made when first shown."""
         self.detach()
+        if not len(ops) == len(networks) == len(layout.tops) == len(layout.rows):
+            raise ValueError("one op group and one place per network")
         self.networks = list(networks)
         self.binary = binary
         self.ops = ops
-        self.cells = [cell_ops(net, group, binary) for net, group in zip(networks, ops,
-                                                                          strict=True)]
-        for network, top, rows in zip(networks, layout.tops, layout.rows, strict=True):
-            overlay = PowerOverlay(network, rows)
-            overlay.setPos(0, top)
-            self.scene.addItem(overlay)
-            self.overlays.append(overlay)
+        self._tops = list(layout.tops)
+        self._rows = list(layout.rows)
+        self._cells = [None] * len(networks)
+        self._firsts = [group[0] for group in ops if group]
+        self._owners = [index for index, group in enumerate(ops) if group]
+        self.overlays.reset(len(networks))
+
+    def _make_overlay(self, index: int) -> PowerOverlay:
+        overlay = PowerOverlay(self.networks[index], self._rows[index])
+        overlay.setPos(0, self._tops[index])
+        self.scene.addItem(overlay)
+        return overlay
+
+    def cells(self, network: int) -> dict[Cell, int]:
+        """The op index of each element cell of network `network` (worked out once)."""
+        found = self._cells[network]
+        if found is None:
+            assert self.binary is not None
+            found = cell_ops(self.networks[network], self.ops[network], self.binary)
+            self._cells[network] = found
+        return found
 
     def restack(self, layout: Layout) -> None:
         """The networks' rows changed height (View › Element names): follow `layout`."""
-        for overlay, top, rows in zip(self.overlays, layout.tops, layout.rows, strict=False):
-            overlay.set_rows(rows)
-            overlay.setPos(0, top)
+        self._tops = list(layout.tops)
+        self._rows = list(layout.rows)
+        for index, overlay in self.overlays.made():
+            if index < len(self._rows):
+                overlay.set_rows(self._rows[index])
+                overlay.setPos(0, self._tops[index])
 
     def detach(self) -> None:
         """Remove the overlays (off-line)."""
-        for overlay in self.overlays:
+        for _index, overlay in self.overlays.made():
             self.scene.removeItem(overlay)
-        self.overlays = []
+        self.overlays.reset(0)
         self.networks = []
-        self.cells = []
+        self._cells = []
+        self._firsts = []
+        self._owners = []
         self.ops = []
         self.binary = None
+
+    def _shown(self, visible: QRectF | None) -> range:
+        """The networks whose bands `visible` reaches (all when None)."""
+        count = len(self.networks)
+        if visible is None or not self._tops:
+            return range(count)
+        first = max(bisect.bisect_right(self._tops, visible.top()) - 1, 0)
+        last = max(bisect.bisect_right(self._tops, visible.bottom()) - 1, 0)
+        return range(min(first, count), min(last + 1, count))
 
     def update(self, snapshot: PlcSnapshot, forced: dict[Address, bool],
                visible: QRectF | None = None) -> int:
         """Recompute the power of the networks in `visible` (all when None); returns how many
         overlays changed."""
         changed = 0
-        for index, overlay in enumerate(self.overlays):
+        for index in self._shown(visible):
+            overlay = self.overlays[index]
             if visible is not None and not visible.intersects(overlay.sceneBoundingRect()):
                 continue
             network = self.networks[index]
-            power = network_power(network, snapshot.bit, self.cells[index], snapshot.disabled,
+            power = network_power(network, snapshot.bit, self.cells(index), snapshot.disabled,
                                   snapshot.power_flow if snapshot.monitored else b"", forced)
             values = {cell: box_values(element, snapshot)
                       for cell, element in network.cells.items()
@@ -130,14 +171,20 @@ class LivePower:
 
     def op_at(self, network: int, cell: Cell) -> int | None:
         """The op index of the element anchored at `cell` of network `network`."""
-        if not 0 <= network < len(self.cells):
+        if not 0 <= network < len(self.networks):
             return None
-        return self.cells[network].get(cell)
+        return self.cells(network).get(cell)
 
     def cell_of(self, op: int) -> tuple[int, Cell] | None:
         """(network, cell) where op `op` is drawn."""
-        for index, cells in enumerate(self.cells):
-            for cell, found in cells.items():
-                if found == op:
-                    return index, cell
+        # the op groups are consecutive runs of op indices: only one network can hold `op`
+        at = bisect.bisect_right(self._firsts, op) - 1
+        if at < 0:
+            return None
+        network = self._owners[at]
+        if op not in self.ops[network]:
+            return None
+        for cell, found in self.cells(network).items():
+            if found == op:
+                return network, cell
         return None

@@ -1,18 +1,20 @@
-"""The editor's network items, made only when first needed (shown on screen or asked for)."""
+"""Network items (the editor's, the live ladder's and its overlays), made only when first
+needed (shown on screen or asked for)."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from typing import Generic, TypeVar
 
-from ladderworks.gui.editor.network_item import NetworkItem
+Item = TypeVar("Item")
 
 
-class LazyItems:
+class LazyItems(Generic[Item]):
     """One slot per network; `items[i]` makes network i's item on first use."""
 
-    def __init__(self, make: Callable[[int], NetworkItem]) -> None:
+    def __init__(self, make: Callable[[int], Item]) -> None:
         self._make = make
-        self._slots: list[NetworkItem | None] = []
+        self._slots: list[Item | None] = []
 
     def reset(self, count: int) -> None:
         """`count` networks, none made yet."""
@@ -21,7 +23,7 @@ class LazyItems:
     def __len__(self) -> int:
         return len(self._slots)
 
-    def __getitem__(self, index: int) -> NetworkItem:
+    def __getitem__(self, index: int) -> Item:
         if index < 0:
             index += len(self._slots)
         item = self._slots[index]
@@ -30,7 +32,7 @@ class LazyItems:
             self._slots[index] = item
         return item
 
-    def made(self, start: int = 0) -> Iterator[tuple[int, NetworkItem]]:
+    def made(self, start: int = 0) -> Iterator[tuple[int, Item]]:
         """(index, item) of the items made so far, from network `start` on."""
         for index in range(start, len(self._slots)):
             item = self._slots[index]
@@ -45,6 +47,6 @@ class LazyItems:
         """A network was inserted at `index` (its item is made when needed)."""
         self._slots.insert(index, None)
 
-    def pop(self, index: int) -> NetworkItem | None:
+    def pop(self, index: int) -> Item | None:
         """A network was removed: its item, if it was made."""
         return self._slots.pop(index)
