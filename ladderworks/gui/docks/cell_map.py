@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address
 from ladderworks.core.compiler.binary import BinaryProgram, Op
-from ladderworks.core.il.program import Instruction, Network, Program
+from ladderworks.core.il.program import Instruction, LabelRef, Network, Program, ProgramRef
 from ladderworks.core.instructions import Write
 from ladderworks.core.ladder.decompose import NodeNets, read_grid
 from ladderworks.core.ladder.logic import code_rung
@@ -21,8 +21,10 @@ OpKey = tuple[str, object, tuple[object, ...]]
 
 
 def op_key(name: str, operand: object, params: Sequence[object]) -> OpKey:
-    """What an op does, without where it came from (compares source with binary)."""
-    return (name, operand, tuple(params))
+    """What an op does, without where it came from (compares source with binary): a
+    subprogram or label reference as its number, as the binary holds it (`P44` is 44)."""
+    return (name, operand, tuple(p.number if isinstance(p, ProgramRef | LabelRef) else p
+                                 for p in params))
 
 
 def binary_networks(binary: BinaryProgram) -> list[list[int]]:
