@@ -11,6 +11,7 @@ from pytestqt.qtbot import QtBot
 
 from ladderworks import paths
 from ladderworks.core.address import parse_address
+from ladderworks.core.il import print_program
 from ladderworks.gui.main_window import MainWindow
 from tests.gui.conftest import Answers
 
@@ -59,11 +60,44 @@ def test_f9_loads_the_program_and_toolbar_start_runs_it(qtbot: QtBot,
 
 def test_the_control_screen_shows_the_loaded_program(window: MainWindow) -> None:
     _open(window)
-    _action(window, "action_compile").trigger()
     control = window.plc_docks.control
-    assert "WRT R102.1" in " ".join(control.editor.toPlainText().split())
+    control.hide()
+    _action(window, "action_compile").trigger()
+    program, _diagnostics = window.model.program()
+    assert program is not None
     assert control.loaded.text() == "In the PLC: spindle_override.LAD"
     assert control.indicator.text() == "STOPPED"
+    assert control.editor.toPlainText() == ""  # hidden: the text waits until it is shown
+    control.show()
+    assert control.editor.toPlainText() == print_program(program)
+    assert "WRT R102.1" in " ".join(control.editor.toPlainText().split())
+    assert control.editor.converted_lines == control.editor.blockCount() > 1
+
+
+def test_a_shown_control_screen_takes_the_loaded_text_at_once(window: MainWindow) -> None:
+    _open(window)
+    control = window.plc_docks.control
+    control.show()
+    _action(window, "action_compile").trigger()
+    program, _diagnostics = window.model.program()
+    assert program is not None
+    assert control.editor.toPlainText() == print_program(program)
+    assert control.editor.converted_lines == control.editor.blockCount()
+
+
+def test_a_hidden_control_screen_compiles_the_loaded_text(window: MainWindow) -> None:
+    _open(window)
+    control = window.plc_docks.control
+    control.hide()
+    _action(window, "action_compile").trigger()
+    program, _diagnostics = window.model.program()
+    assert program is not None
+    assert control.program_text() == print_program(program)
+    control.stripe_ms = 0
+    assert control.compile().ok
+    control.set_text("RD X2.1\n")  # a new text drops a text still waiting
+    control.show()
+    assert control.editor.toPlainText() == "RD X2.1\n"
 
 
 def test_compile_while_running_asks_and_reloads(window: MainWindow, answers: Answers) -> None:

@@ -191,6 +191,45 @@ def test_values_follow_the_plc_and_a_new_program(
     assert [row[1] for row in dock.cell_texts(TableKind.TIMER)] == ["TMR"]  # no TMRB now
 
 
+def _widths(dock: PlcTablesDock, kind: TableKind) -> list[int]:
+    """The column widths, but the last (it stretches to the view's width)."""
+    table = dock.tables[kind]
+    return [table.columnWidth(column) for column in range(table.model().columnCount() - 1)]
+
+
+def _fitted(dock: PlcTablesDock, kind: TableKind) -> list[int]:
+    """The widths resizeColumnsToContents gives the table now."""
+    dock.tables[kind].resizeColumnsToContents()
+    return _widths(dock, kind)
+
+
+def test_hidden_tables_fit_their_columns_when_shown(
+        qtbot: QtBot, tables: tuple[PlcSession, PlcTablesDock]) -> None:
+    session, dock = tables
+    dock.hide()
+    session.load_program(parse_file(EXAMPLES / "timer_relay.LAD").program)
+    for kind in TableKind:
+        dock.tables[kind].setColumnWidth(0, 333)  # what a fit made while hidden would change
+    dock.show()
+    dock.tabs.setCurrentWidget(dock.tables[TableKind.TIMER])
+    shown = _widths(dock, TableKind.TIMER)
+    assert shown[0] != 333 and shown == _fitted(dock, TableKind.TIMER)
+    assert _widths(dock, TableKind.DATA)[0] == 333  # not shown yet: not fitted yet
+    dock.tabs.setCurrentWidget(dock.tables[TableKind.DATA])
+    shown = _widths(dock, TableKind.DATA)
+    assert shown[0] != 333 and shown == _fitted(dock, TableKind.DATA)
+
+
+def test_a_shown_table_fits_its_columns_at_once(
+        qtbot: QtBot, tables: tuple[PlcSession, PlcTablesDock]) -> None:
+    session, dock = tables
+    dock.tabs.setCurrentWidget(dock.tables[TableKind.TIMER])
+    dock.tables[TableKind.TIMER].setColumnWidth(0, 333)
+    session.load_program(parse_file(EXAMPLES / "timer_relay.LAD").program)
+    shown = _widths(dock, TableKind.TIMER)
+    assert shown[0] != 333 and shown == _fitted(dock, TableKind.TIMER)
+
+
 def test_turkish(qtbot: QtBot, tables: tuple[PlcSession, PlcTablesDock]) -> None:
     _session, dock = tables
     language = UiLanguage()

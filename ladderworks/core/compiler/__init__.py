@@ -102,11 +102,12 @@ def compile(program: Program) -> bytes:
     return result.binary
 
 
-def disassemble(data: bytes) -> Program:
-    """The Program held in a binary (no comments); raises BinaryFormatError if it is bad."""
-    from ladderworks.core.compiler.binary import decode
+def disassemble(data: bytes | BinaryProgram) -> Program:
+    """The Program held in a binary (no comments), or in one already decoded; raises
+    BinaryFormatError if it is bad."""
+    from ladderworks.core.compiler.binary import BinaryProgram, decode
 
-    binary = decode(data)
+    binary = data if isinstance(data, BinaryProgram) else decode(data)
     networks: list[Network] = []
     current = -1
     for op in binary.ops:

@@ -15,6 +15,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Collection
 from dataclasses import dataclass
+from functools import lru_cache
+from types import CodeType
 from typing import Any
 
 from ladderworks.core.address import Address, Area
@@ -125,7 +127,10 @@ class _Generator:
         self.registry = registry
         self.disabled = disabled
         self.monitored = monitored
-        self.structure = analyse([(op.spec, op.params) for op in ops])
+        # each op's table row, looked up once (Op.spec looks it up by name on every read)
+        self.specs = [op.spec for op in ops]
+        self.structure = analyse([(spec, op.params)
+                                  for spec, op in zip(self.specs, ops, strict=True)])
         self.out: list[str] = []  # every finished function
         self.lines: list[str] = []  # the chunk being generated
         self.values: list[_Value] = [_Value("0")]
@@ -304,7 +309,7 @@ class _Generator:
         nxt = self.ops[index + 1] if index + 1 < len(self.ops) else None
         if nxt is None or nxt.source.network != self.ops[index].source.network:
             return False
-        spec = nxt.spec
+        spec = self.specs[index + 1]
         return not (spec.combine is Combine.READ and spec.pushes == 0 and spec.operand)
 
     def close_jumps(self, ended: list[_Range], index: int, live: bool) -> None:
@@ -321,7 +326,7 @@ class _Generator:
                 self.var(d) for d in range(len(self.values))) + " = 0")
 
     def op(self, index: int, op: Op, labelled: bool) -> None:
-        spec = op.spec
+        spec = self.specs[index]
         off = index in self.disabled
         ended: list[_Range] = []
         if spec.kind is Kind.BASIC:
@@ -346,7 +351,7 @@ class _Generator:
             self.close_jumps(ended, index, self.live_after(index))
 
     def logic(self, index: int, op: Op, off: bool) -> None:
-        spec = op.spec
+        spec = self.specs[index]
         if spec.operand:
             assert op.operand is not None
             term = "0" if off else _bit_expr(op.operand, spec.negated)
@@ -430,7 +435,7 @@ class _Generator:
         return self.count_coil()
 
     def function(self, index: int, op: Op, off: bool, labelled: bool) -> list[_Range]:
-        spec = op.spec
+        spec = self.specs[index]
         count = len(spec.inputs)
         if count and len(self.values) < count:
             raise self.fail(index, f"{spec.name} needs {count} control inputs")
@@ -544,6 +549,14 @@ def _loop(ops: tuple[Op, ...], units: list[Unit]) -> Callable[..., None]:
     return loop
 
 
+@lru_cache(maxsize=4)
+def compiled(source: str) -> CodeType:
+    """The compiled scan module of `source`; kept for a program loaded again (F9 of an
+    unchanged program, a second engine): compiling 38k ops takes ~0.5 s. A code object holds
+    no state: each exec makes new functions over the engine's own namespace."""
+    return compile(source, "<ladder scan>", "exec")
+
+
 def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
              registry: dict[str, FunctionImpl], states: list[dict[str, Any]] | None = None, *,
              disabled: Collection[int] = (), monitored: bool = False) -> GeneratedScan:
@@ -569,7 +582,6 @@ def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
     namespace["SV"] = [()]
     namespace["JM"] = JumpToMain
     namespace["LOOP"] = _loop(ops, generator.structure.units())
-    code = compile(source, "<ladder scan>", "exec")
-    exec(code, namespace)
+    exec(compiled(source), namespace)
     return GeneratedScan(source, namespace["scan"])
 

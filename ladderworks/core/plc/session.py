@@ -142,8 +142,9 @@ class PlcRun:
              program: Program | None = None) -> list[Diagnostic]:
         """Load a binary (stops first): cold start, then the parameters; [] when loaded."""
         try:
+            # monitored from the start when a view monitors: one variant generated, not two
             engine = ScanEngine(binary, period_ms=self.period_ms, memory=self.memory,
-                                divisions=self.divisions)
+                                divisions=self.divisions, monitored=self._monitors > 0)
         except DiagnosticError as error:
             return list(error.diagnostics)
         self.stop()

@@ -136,10 +136,11 @@ class PlcTableModel(QAbstractTableModel):
 
     # -- following the PLC ---------------------------------------------------------------
 
-    def set_program(self, program: BinaryProgram | None) -> None:
-        """A new program: new rows and (for timers of another dialect) new columns."""
+    def set_program(self, program: BinaryProgram | None, use: ProgramUse | None = None) -> None:
+        """A new program: new rows and (for timers of another dialect) new columns. `use` is
+        ProgramUse.of(program) when the caller has it (the dock's four tables share one)."""
         self.beginResetModel()
-        self.use = ProgramUse.of(program)
+        self.use = use if use is not None else ProgramUse.of(program)
         self._headers = self.spec.headers(self.session)
         self._rows = self.spec.rows(self.session.snapshot().areas, self.use, self.session)
         self.endResetModel()

@@ -69,6 +69,12 @@ def test_disassembly_is_the_program_without_its_comments(path: Path) -> None:
         for n in program.networks]
 
 
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
+def test_disassembling_a_decoded_binary_equals_disassembling_its_bytes(path: Path) -> None:
+    binary = compile(parse_file(path).program)
+    assert disassemble(decode(binary)) == disassemble(binary)
+
+
 def test_functions_and_their_parameters_round_trip() -> None:
     program = parse(MIXED).program
     binary = compile(program)

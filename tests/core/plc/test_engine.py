@@ -9,6 +9,7 @@ from hypothesis import strategies as st
 
 from ladderworks.core.address import Area
 from ladderworks.core.compiler import SourcePosition
+from ladderworks.core.plc.codegen import compiled
 from ladderworks.core.plc.engine import ScanEngine
 from ladderworks.core.plc.functions.timers import write_timer_preset
 from tests.core.plc.conftest import (
@@ -342,3 +343,22 @@ def test_power_flow_shows_a_jump_taken_and_the_skipped_ops_off() -> None:
     engine.memory.set_bit(at("X0.0"), 1)
     engine.scan()
     assert list(engine.power_flow) == [1, 1, 0, 0, 0, 1, 1]
+
+
+def test_engines_of_one_program_share_compiled_code_but_not_memory_or_state() -> None:
+    program = "RD X0.0\nTMR 9\nWRT R0.1\nRD X0.1\nOR Y0.0\nWRT Y0.0"
+    first, second = engine_for(program), engine_for(program)
+    assert first.source == second.source
+    assert compiled.cache_info().hits > 0  # the second engine's code came from the cache
+    for engine in (first, second):
+        write_timer_preset(engine.memory, 9, 40)
+    first.memory.set_bit(at("X0.0"), 1)
+    first.memory.set_bit(at("X0.1"), 1)
+    first.step(48)
+    assert (bit(first, "R0.1"), bit(first, "Y0.0")) == (1, 1)
+    assert (bit(second, "R0.1"), bit(second, "Y0.0")) == (0, 0)
+    second.memory.set_bit(at("X0.0"), 1)
+    second.step(32)  # its own timer started at its own first scan: not yet 40 ms
+    assert bit(second, "R0.1") == 0
+    second.step(16)
+    assert bit(second, "R0.1") == 1

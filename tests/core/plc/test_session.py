@@ -2,8 +2,14 @@
 
 from __future__ import annotations
 
+from typing import Any
+
+import pytest
+
 from ladderworks.core.address import Address, Area, parse_address
 from ladderworks.core.il import parse
+from ladderworks.core.plc import engine as engine_module
+from ladderworks.core.plc.codegen import GeneratedScan, generate
 from ladderworks.core.plc.parameters import parse_parameters
 from ladderworks.core.plc.session import PlcRun
 
@@ -102,3 +108,44 @@ def test_a_refused_binary_leaves_the_run_as_it_was() -> None:
     problems = run.load(b"not a program")
     assert problems and problems[0].code == "bad-binary"
     assert run.running and run.engine is not None
+
+
+def test_a_load_while_a_view_monitors_generates_one_scan_variant(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    made: list[bool] = []
+
+    def counted(*args: Any, **kwargs: Any) -> GeneratedScan:
+        made.append(kwargs["monitored"])
+        return generate(*args, **kwargs)
+
+    monkeypatch.setattr(engine_module, "generate", counted)
+    run = PlcRun()
+    run.monitor(True)
+    assert run.load_program(parse(TIMER).program).binary is not None
+    assert made == [True] and run.engine is not None and run.engine.monitored
+    run.start()
+    run.set_bit(a("R1.4"), 1)
+    run.set_bit(a("X2.1"), 1)
+    run.step(8)
+    assert list(run.engine.power_flow)[3:5] == [1, 1]  # RD X2.1, WRT R2.0
+    run.monitor(False)  # the fast variant is made when first needed
+    assert made == [True, False] and not run.engine.monitored
+    run.set_bit(a("X2.1"), 0)
+    run.step(8)
+    assert run.bit(a("R2.0")) == 0
+    run.set_bit(a("X2.1"), 1)
+    run.step(8)
+    assert run.bit(a("R2.0")) == 1
+
+
+def test_a_load_without_monitoring_generates_the_fast_variant_only(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    made: list[bool] = []
+
+    def counted(*args: Any, **kwargs: Any) -> GeneratedScan:
+        made.append(kwargs["monitored"])
+        return generate(*args, **kwargs)
+
+    monkeypatch.setattr(engine_module, "generate", counted)
+    assert loaded().engine is not None
+    assert made == [False]
