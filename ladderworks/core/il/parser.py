@@ -795,38 +795,14 @@ class _FileParser:
 
     def _valid_param(self, spec: InstructionSpec, param: Param, token: _Token,
                      values: dict[str, object]) -> ParamValue | None:
-        """What _param gives for a valid parameter; None where it would report (and for the
-        rare kinds, MASK and RAW, left to it)."""
-        kind = param.kind
-        text = token.text
-        if kind is ParamKind.NUMBER or (kind is ParamKind.VALUE and token.is_int):
-            if not token.is_int or len(text) > MAX_NUMBER_DIGITS or (
-                    kind is ParamKind.VALUE and value_is_address(spec, values) is True):
-                return None
-            value = int(text)
-            if (param.choices and value not in param.choices) or not (
-                    param.lo <= value <= param.highest(self.dialect)):
-                return None
-            return value
-        if kind is ParamKind.ADDRESS or kind is ParamKind.VALUE:
-            if token.is_int or (
-                    kind is ParamKind.VALUE and value_is_address(spec, values) is False):
-                return None
-            try:
-                return parse_address_cached(text, False, width_of(spec, param, values))
-            except AddressError:
-                return None
-        if kind is ParamKind.PROGRAM or kind is ParamKind.LABEL:
-            letter = "P" if kind is ParamKind.PROGRAM else "L"
-            match = _REF.match(text)
-            if match is None or match.group(1).upper() != letter:
-                return None
-            number = int(match.group(2))
-            hi = param.highest(self.dialect)
-            if hi and not param.lo <= number <= hi:
-                return None
-            return ProgramRef(number) if letter == "P" else LabelRef(number)
-        return None
+        """What _param gives for a valid parameter; None (and nothing reported) where it
+        would report."""
+        reported = len(self.diagnostics)
+        value = self._param(spec, param, token, 0, values, 0)
+        if len(self.diagnostics) > reported:  # the slow path reads it again and reports
+            del self.diagnostics[reported:]
+            return None
+        return value
 
     def _unknown_sub(self, line: _Line, number: int, sub: int | None, recs: list[_Line | _Made],
                      base: int, k: int, builder: _NetworkBuilder) -> int:
