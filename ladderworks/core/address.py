@@ -183,8 +183,9 @@ def _range_ids(area: Area) -> bytes:
 
 # the common spelling (upper-case letter, up to 6 digits, an optional bit 0-7), read without
 # the general checks: its first and last byte lie in one range of the area; anything else
-# (and every error) takes the full path
-_PLAIN_RE = re.compile(r"([XYFGRADTCKE])([0-9]{1,6})(?:\.([0-7]))?")
+# (and every error) takes the full path; its groups: letter, byte digits, bit digit
+PLAIN_SPELLING = r"([XYFGRADTCKE])([0-9]{1,6})(?:\.([0-7]))?"
+_PLAIN_RE = re.compile(PLAIN_SPELLING)
 _PLAIN_AREAS: dict[str, tuple[Area, bytes]] = {a.value: (a, _range_ids(a)) for a in Area}
 
 
@@ -234,9 +235,8 @@ def parse_address_cached(text: str, want_bit: bool | None, width: int) -> Addres
 
 # one text a line: the text and its plain spelling's parts, or nothing (every text makes one
 # match)
-_PLAIN_LINE_RE = re.compile(r"(([XYFGRADTCKE])([0-9]{1,6})(?:\.([0-7]))?)\n|[^\n]*\n")
+_PLAIN_LINE_RE = re.compile(rf"({PLAIN_SPELLING})\n|[^\n]*\n")
 _BIT_OF: dict[str, int] = {str(bit): bit for bit in range(8)}  # "" (no bit) is not a key
-_AREA_LETTERS: dict[str, Area] = {a.value: a for a in Area}
 
 
 def parse_plain_addresses(texts: list[str]) -> dict[str, Address]:
@@ -270,7 +270,7 @@ def plain_addresses(rows: Iterable[Sequence[str]]) -> dict[str, Address]:
                 numbers.append(number)
                 bits.append(row[3])
     made = list(map(_new, repeat(Address, len(kept))))
-    deque(map(_SET_AREA, made, map(_AREA_LETTERS.__getitem__, letters)), maxlen=0)
+    deque(map(_SET_AREA, made, map(_AREA_OF.__getitem__, letters)), maxlen=0)
     deque(map(_SET_BYTE, made, numbers), maxlen=0)
     deque(map(_SET_BIT, made, map(_BIT_OF.get, bits)), maxlen=0)
     return dict(zip(kept, made, strict=True))

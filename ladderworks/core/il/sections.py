@@ -9,6 +9,7 @@ from operator import is_
 from typing import cast
 
 from ladderworks.core.address import (
+    PLAIN_SPELLING,
     Address,
     AddressError,
     Area,
@@ -28,8 +29,7 @@ _IO_RE = re.compile(r"^\s*([XYxy]\d{1,6})\s+(\d{1,4})\s+(\d{1,4})\s+(\d{1,4})\s*
 
 # one line a line of a `%@2` section's joined lines: a plain address at the line's start and
 # one symbol word (`D37.4   C62179`), or any other line (empty groups)
-_PLAIN_SYMBOL_RE = re.compile(
-    r"(([XYFGRADTCKE])([0-9]{1,6})(?:\.([0-7]))?)[ \t]+(\S+)[ \t]*\n|[^\n]*\n")
+_PLAIN_SYMBOL_RE = re.compile(rf"({PLAIN_SPELLING})[ \t]+(\S+)[ \t]*\n|[^\n]*\n")
 
 # the `%@2` variants read as `ADDRESS symbol [comment ...]`; `%@2-E(...)` is CSV
 _SYMBOL_KINDS = ("", "-C", "-C2")
