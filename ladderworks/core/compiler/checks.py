@@ -149,11 +149,10 @@ _Own = tuple[str, dict[str, object], bool]
 class _Checker:
     """Walks the program once, collecting diagnostics."""
 
-    def __init__(self, program: Program, dialect: str | None) -> None:
+    def __init__(self, program: Program, dialect: str | None, by_network: bool) -> None:
         self.out: list[Diagnostic] = []
         self.coils: dict[tuple[object, ...], tuple[Write, Instruction, int]] = {}  # see write
-        self.implemented = IMPLEMENTED  # names only: `check` loads no implementation
-        self.by_network = False  # see check()
+        self.by_network = by_network  # see check()
         self.dialect = dialect or dialect_of(program)
         self.program = program
         self.jumps: list[tuple[int, Instruction, int | None]] = []  # network, JMP, coils left
@@ -425,7 +424,7 @@ class _Checker:
             if spec.flow is _NO_FLOW:
                 if not spec.known:
                     found.append(("unknown-sub", {"number": spec.sub}, True))
-                elif spec.name not in self.implemented:
+                elif spec.name not in IMPLEMENTED:  # names only: `check` loads no functions
                     found.append(("not-implemented", {"name": spec.name}, False))
             found += self.params(spec, ins.params)
             self.own[key] = found
@@ -573,6 +572,4 @@ def check(program: Program, dialect: str | None = None, *,
     # no cycle collection meanwhile: the checks make tens of thousands of objects and no
     # cycles, and a collection would walk the program's whole heap (as parse and xref do)
     with collector_paused():
-        checker = _Checker(program, dialect)
-        checker.by_network = by_network
-        return checker.run()
+        return _Checker(program, dialect, by_network).run()
