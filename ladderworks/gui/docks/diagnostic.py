@@ -122,9 +122,7 @@ class DiagnosticView(QGraphicsView):
         if not self.networks or not self.layout_.tops:
             return
         shown = self.visible_rect()
-        first = self.layout_.network_at(shown.top() - cell_h())
-        last = self.layout_.network_at(shown.bottom() + cell_h())
-        for index in range(first, last + 1):
+        for index in self.layout_.shown(shown.top() - cell_h(), shown.bottom() + cell_h()):
             self.network_items[index]
 
     def paintEvent(self, event: QPaintEvent) -> None:

@@ -193,6 +193,12 @@ class Layout:
         index = bisect.bisect_right(self.tops, y) - 1
         return min(max(index, 0), len(self.tops) - 1)
 
+    def shown(self, top: float, bottom: float) -> range:
+        """The networks whose bands the scene's ys `top` .. `bottom` reach (none when empty)."""
+        if not self.tops:
+            return range(0)
+        return range(self.network_at(top), self.network_at(bottom) + 1)
+
     def hit(self, networks: list[LadderNetwork], x: float, y: float) -> Hit:
         """The network and cell (or comment line) under a scene point."""
         index = self.network_at(y)

@@ -208,10 +208,9 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         if not self.networks or not self.layout_.tops:
             return
         shown = self.mapToScene(self.viewport().rect()).boundingRect()
-        first = self.layout_.network_at(shown.top() - cell_h())
-        last = self.layout_.network_at(shown.bottom() + cell_h())
-        for index in range(first, min(last, len(self.networks) - 1) + 1):
-            self.network_items[index]
+        for index in self.layout_.shown(shown.top() - cell_h(), shown.bottom() + cell_h()):
+            if index < len(self.networks):
+                self.network_items[index]
 
     def paintEvent(self, event: QPaintEvent) -> None:
         """Make the visible networks' items, then paint."""
