@@ -11,7 +11,8 @@ from pytestqt.qtbot import QtBot
 
 from ladderworks import paths
 from ladderworks.core.address import parse_address
-from ladderworks.core.il import print_program
+from ladderworks.core.il import Program, print_program
+from ladderworks.gui.docks.plc_control import PlcControlDock
 from ladderworks.gui.main_window import MainWindow
 from tests.gui.conftest import Answers
 
@@ -58,13 +59,20 @@ def test_f9_loads_the_program_and_toolbar_start_runs_it(qtbot: QtBot,
     assert not session.running
 
 
-def test_the_control_screen_shows_the_loaded_program(window: MainWindow) -> None:
+def _compiled(window: MainWindow, shown: bool) -> tuple[PlcControlDock, Program]:
+    """F9 of the example with the PLC control screen shown or hidden: the screen and the
+    program compiled."""
     _open(window)
     control = window.plc_docks.control
-    control.hide()
+    control.setVisible(shown)
     _action(window, "action_compile").trigger()
     program, _diagnostics = window.model.program()
     assert program is not None
+    return control, program
+
+
+def test_the_control_screen_shows_the_loaded_program(window: MainWindow) -> None:
+    control, program = _compiled(window, shown=False)
     assert control.loaded.text() == "In the PLC: spindle_override.LAD"
     assert control.indicator.text() == "STOPPED"
     assert control.editor.toPlainText() == ""  # hidden: the text waits until it is shown
@@ -75,23 +83,13 @@ def test_the_control_screen_shows_the_loaded_program(window: MainWindow) -> None
 
 
 def test_a_shown_control_screen_takes_the_loaded_text_at_once(window: MainWindow) -> None:
-    _open(window)
-    control = window.plc_docks.control
-    control.show()
-    _action(window, "action_compile").trigger()
-    program, _diagnostics = window.model.program()
-    assert program is not None
+    control, program = _compiled(window, shown=True)
     assert control.editor.toPlainText() == print_program(program)
     assert control.editor.converted_lines == control.editor.blockCount()
 
 
 def test_a_hidden_control_screen_compiles_the_loaded_text(window: MainWindow) -> None:
-    _open(window)
-    control = window.plc_docks.control
-    control.hide()
-    _action(window, "action_compile").trigger()
-    program, _diagnostics = window.model.program()
-    assert program is not None
+    control, program = _compiled(window, shown=False)
     assert control.program_text() == print_program(program)
     control.stripe_ms = 0
     assert control.compile().ok
