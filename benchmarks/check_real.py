@@ -100,13 +100,6 @@ def _inside_ms(path: Path, script: str = INSIDE) -> tuple[float, float]:
     return float(imported), float(checked)
 
 
-def _empty_ms() -> float:
-    """Wall ms of an interpreter that does nothing (the floor under the process figure)."""
-    start = time.perf_counter()
-    subprocess.run([sys.executable, "-c", "pass"], cwd=ROOT, check=True)
-    return (time.perf_counter() - start) * 1000
-
-
 def _line(label: str, values: list[float], goal: str = "") -> str:
     return (f"{label:30s} best {min(values):6.0f} ms  median {statistics.median(values):6.0f} ms"
             + (f"  ({goal})" if goal else ""))
@@ -138,7 +131,8 @@ def main() -> int:
         cached = [_process_ms(path, env) for _ in range(RUNS)]
     inside = [_inside_ms(path) for _ in range(RUNS)]
     parts = [_inside_ms(path, PARTS) for _ in range(RUNS)]
-    empty = [_empty_ms() for _ in range(RUNS)]
+    # an interpreter that does nothing: the floor under the process figure
+    empty = [_command_ms([sys.executable, "-c", "pass"])[0] for _ in range(RUNS)]
     load = os.getloadavg()
     print(f"{NAME}: ladderworks-cli check, {RUNS} fresh processes each")
     if installed:
