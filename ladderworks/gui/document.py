@@ -15,7 +15,7 @@ from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult, parse_bytes
 from ladderworks.core.il.printer import encode_program, print_faithful
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text
-from ladderworks.core.ladder.convert import Kept, adopt_origin, damaged_drafts
+from ladderworks.core.ladder.convert import adopt_origin, damaged_drafts
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.files import atomic_write_bytes, write_target
 from ladderworks.gui.parameter_document import ParameterDocument
@@ -88,7 +88,6 @@ class ProgramDocument(QObject):
         self.form = TextForm()
         self.origin: Program | None = None
         self.disk: DiskState | None = None
-        self.kept: Kept = []  # the networks as read, to save an unchanged one as it was
         self.watcher = QFileSystemWatcher(self)
         self.watcher.fileChanged.connect(self._on_file_changed)
         model.modified_changed.connect(self.modified_changed)
@@ -135,7 +134,6 @@ class ProgramDocument(QObject):
         self.form = TextForm()
         self.origin = None
         self.disk = None
-        self.kept = []
         self._watch(None)
 
     def read(self, path: Path) -> tuple[ParseResult, bytes]:

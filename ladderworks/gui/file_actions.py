@@ -183,8 +183,7 @@ class FileActions(_Window):
             self.errors.show()
         if ok:
             self.failed_path = None
-            self.document.kept = []
-            self.model.set_program(program, self.document.kept)
+            self.model.set_program(program, kept=[])  # an unchanged network saves as read
             self.model.set_mode(Mode.LADDER)
             self._program_shown(program)
         else:
