@@ -65,6 +65,35 @@ class ParamKind(StrEnum):
     RAW = "raw"  # a constant or an address, kept as written (a `SUB n` we do not know)
 
 
+class ParamAccess(StrEnum):
+    """What an instruction does with the data at a parameter's address."""
+
+    READ = "read"
+    WRITE = "write"  # written: the checks refuse an input (X, F) here
+    READ_WRITE = "read-write"  # read and written (a register it keeps, SFT's data): an output too
+    EITHER = "either"  # read or written as the run decides (XMOV's RW, a CNC window): not refused
+
+
+class Numbered(StrEnum):
+    """The T/C memory a numbered timer or counter uses; its number is its first parameter."""
+
+    NONE = ""
+    TIMER = "timer"  # TMR: its preset in T (FANUC: and a precision); the timer table lists it
+    FIXED_TIMER = "fixed-timer"  # TMRB: its preset a constant; the timer table lists it
+    COUNTER = "counter"  # CTR: its preset and value in C; the counter table lists it
+    FIXED_COUNTER = "fixed-counter"  # CTRB: its value in C, after the CTRs'
+
+
+class Operation(StrEnum):
+    """The arithmetic an instruction does with its two operands."""
+
+    NONE = ""
+    ADD = "add"
+    SUBTRACT = "subtract"
+    MULTIPLY = "multiply"
+    DIVIDE = "divide"  # the binary form also leaves the remainder in R9002
+
+
 @dataclass(frozen=True, slots=True)
 class Param:
     """One parameter of a functional instruction."""
@@ -77,6 +106,9 @@ class Param:
     choices: tuple[int, ...] = ()
     length_of: str = ""  # TABLE: the NUMBER param giving the number of entries
     hi_pmc: int | None = None  # the upper limit in a FANUC (LADDER-III) program, if wider
+    access: ParamAccess = ParamAccess.READ  # what is done with the data at its address
+    entries: str = ""  # the param giving how many entries of `width` bytes it addresses (XMOV)
+    preset: bool = False  # the preset of a timer or counter kept at this address (TMRC, CTRC)
 
     def highest(self, dialect: str = "seed") -> int:
         """The upper limit in a program of `dialect` ("seed" or "fanuc")."""
@@ -113,6 +145,11 @@ class InstructionSpec:
     mnemonic: str = ""  # the name written in the text when it differs from `name`
     known: bool = True  # False for a `SUB n` that is not in the table
     source: str = "seed"  # "seed": the seed manual's instruction; "pmc": FANUC 30i PMC
+    family: str = ""  # the module of plc/functions that implements it ("" for none)
+    numbered: Numbered = Numbered.NONE  # the T/C memory its number selects
+    operation: Operation = Operation.NONE  # arithmetic: what it computes
+    binary: bool = False  # arithmetic: signed binary data (ADDB, ...), else BCD
+
     @property
     def help_key(self) -> str:
         """Key of the instruction's entry in docs/instructions.md and the help browser."""
@@ -171,8 +208,18 @@ def _fmt(name: str = "format") -> Param:
     return Param(name, ParamKind.NUMBER, 1, 4, choices=FORMAT_124)
 
 
-def _addr(name: str, width: int | str = 1) -> Param:
-    return Param(name, ParamKind.ADDRESS, width=width)
+def _addr(name: str, width: int | str = 1, access: ParamAccess = ParamAccess.READ,
+          **extra: object) -> Param:
+    return Param(name, ParamKind.ADDRESS, width=width, access=access,
+                 **extra)  # type: ignore[arg-type]
+
+
+def _out(name: str, width: int | str = 1) -> Param:
+    """An address the instruction writes."""
+    return _addr(name, width, ParamAccess.WRITE)
+
+
+_RW, _EITHER = ParamAccess.READ_WRITE, ParamAccess.EITHER
 
 
 def _value(name: str, width: int | str = 2) -> Param:
@@ -218,62 +265,66 @@ _BASIC: tuple[InstructionSpec, ...] = (
 _F = Kind.FUNCTION
 
 _FUNCTIONS: tuple[InstructionSpec, ...] = (
-    InstructionSpec("TMR", _F, 3, inputs=("ACT",), params=(_num("timer", 1, 100, 250),), w1=True,
+    InstructionSpec("TMR", _F, 3, family="timers", numbered=Numbered.TIMER, inputs=("ACT",),
+                    params=(_num("timer", 1, 100, 250),), w1=True,
                     title="Timer", title_tr="ZAMANLAYICI"),
-    InstructionSpec("TMRB", _F, 24, inputs=("ACT",),
+    InstructionSpec("TMRB", _F, 24, family="timers", numbered=Numbered.FIXED_TIMER, inputs=("ACT",),
                     params=(_num("timer", 1, 100, 500), _num("preset", 0, MAX32)), w1=True,
                     title="Fixed timer", title_tr="STATİK ZAMANLAYICI"),
-    InstructionSpec("TMRC", _F, 54, inputs=("ACT",),
-                    params=(_num("accuracy", 0, 1, 7), _addr("preset", 2), _addr("register", 4)),
+    InstructionSpec("TMRC", _F, 54, family="timers", inputs=("ACT",),
+                    params=(_num("accuracy", 0, 1, 7), _addr("preset", 2, preset=True),
+                            _addr("register", 4, _RW)),
                     w1=True, title="Timer (preset at an address)", title_tr="ZAMANLAYICI"),
-    InstructionSpec("DEC", _F, 4, inputs=("ACT",),
+    InstructionSpec("DEC", _F, 4, family="decode", inputs=("ACT",),
                     params=(_addr("code", 1), _num("spec", 0, 9911)), w1=True,
                     title="Decode (BCD)", title_tr="KOD ÇÖZÜCÜ"),
-    InstructionSpec("DECB", _F, 25, inputs=("ACT",),
+    InstructionSpec("DECB", _F, 25, family="decode", inputs=("ACT",),
                     params=(_fmt(), _addr("code", "format"), _num("first", 0, MAX32),
-                            _addr("result", 1)),
+                            _out("result", 1)),
                     title="Binary decode", title_tr="BINARY KOD ÇÖZÜCÜ"),
-    InstructionSpec("CTR", _F, 5, inputs=("CN0", "UPDOWN", "RST", "ACT"),
+    InstructionSpec("CTR", _F, 5, family="counters", numbered=Numbered.COUNTER,
+                    inputs=("CN0", "UPDOWN", "RST", "ACT"),
                     params=(_num("counter", 1, 20, 100),), w1=True,
                     title="Counter", title_tr="SAYICI"),
-    InstructionSpec("CTRC", _F, 55, inputs=("CN0", "UPDOWN", "RST", "ACT"),
-                    params=(_addr("preset", 2), _addr("register", 4)), w1=True,
+    InstructionSpec("CTRC", _F, 55, family="counters", inputs=("CN0", "UPDOWN", "RST", "ACT"),
+                    params=(_addr("preset", 2, preset=True), _addr("register", 4, _RW)), w1=True,
                     title="Counter (preset at an address)", title_tr="SAYICI"),
-    InstructionSpec("ROT", _F, 6, inputs=("RN0", "BYT", "DIR", "POS", "INC", "ACT"),
+    InstructionSpec("ROT", _F, 6, family="rotation",
+                    inputs=("RN0", "BYT", "DIR", "POS", "INC", "ACT"),
                     params=(_num("positions", 1, 9999), _addr("current", 2),
-                            _addr("target", 2), _addr("result", 2)), w1=True,
+                            _addr("target", 2), _out("result", 2)), w1=True,
                     title="Rotation control", title_tr="DÖNER KONTROL"),
-    InstructionSpec("ROTB", _F, 26, inputs=("RN0", "DIR", "POS", "INC", "ACT"),
+    InstructionSpec("ROTB", _F, 26, family="rotation", inputs=("RN0", "DIR", "POS", "INC", "ACT"),
                     params=(_fmt(), _addr("positions", "format"), _addr("current", "format"),
-                            _addr("target", "format"), _addr("result", "format")), w1=True,
+                            _addr("target", "format"), _out("result", "format")), w1=True,
                     title="Binary rotation control", title_tr="BINARY DÖNER KONTROL"),
-    InstructionSpec("COD", _F, 7, inputs=("BYT", "RST", "ACT"),
-                    params=(_num("size", 1, 100), _addr("index", 1), _addr("output", 2),
+    InstructionSpec("COD", _F, 7, family="convert", inputs=("BYT", "RST", "ACT"),
+                    params=(_num("size", 1, 100), _addr("index", 1), _out("output", 2),
                             Param("table", ParamKind.TABLE, 0, 9999, length_of="size")),
                     w1=True, title="Code conversion", title_tr="KOD TRANSFORMASYON"),
-    InstructionSpec("CODB", _F, 27, inputs=("RST", "ACT"),
+    InstructionSpec("CODB", _F, 27, family="convert", inputs=("RST", "ACT"),
                     params=(_fmt(), _num("size", 1, 256), _addr("index", 1),
-                            _addr("output", "format"),
+                            _out("output", "format"),
                             Param("table", ParamKind.TABLE, -INT32, UINT32, length_of="size")),
                     w1=True, title="Binary code conversion",
                     title_tr="BINARY KOD TRANSFORMASYON"),
-    InstructionSpec("DCNV", _F, 14, inputs=("BYT", "CNV", "RST", "ACT"),
-                    params=(_addr("input", 2), _addr("output", 2)), w1=True,
+    InstructionSpec("DCNV", _F, 14, family="convert", inputs=("BYT", "CNV", "RST", "ACT"),
+                    params=(_addr("input", 2), _out("output", 2)), w1=True,
                     title="Data conversion", title_tr="BİLGİ ÇEVİRİCİ"),
-    InstructionSpec("DCNVB", _F, 31, inputs=("SIN", "CNV", "RST", "ACT"),
-                    params=(_fmt(), _addr("input", "format"), _addr("output", "format")),
+    InstructionSpec("DCNVB", _F, 31, family="convert", inputs=("SIN", "CNV", "RST", "ACT"),
+                    params=(_fmt(), _addr("input", "format"), _out("output", "format")),
                     w1=True, title="Extended data conversion",
                     title_tr="GENİŞLETİLMİŞ BİLGİ ÇEVİRİCİ"),
-    InstructionSpec("MOVE", _F, 8, inputs=("ACT",),
+    InstructionSpec("MOVE", _F, 8, family="transfer", inputs=("ACT",),
                     params=(Param("high_mask", ParamKind.MASK, 0, 15),
                             Param("low_mask", ParamKind.MASK, 0, 15),
-                            _addr("input", 1), _addr("output", 1)),
+                            _addr("input", 1), _out("output", 1)),
                     title="Masked transfer", title_tr="MASKELİ BİLGİ TRANSFERİ"),
-    InstructionSpec("MOVOR", _F, 28, inputs=("ACT",),
-                    params=(_addr("input", 1), _addr("or_data", 1), _addr("output", 1)),
+    InstructionSpec("MOVOR", _F, 28, family="transfer", inputs=("ACT",),
+                    params=(_addr("input", 1), _addr("or_data", 1), _out("output", 1)),
                     title="Transfer with OR", title_tr="VEYA İLE TRANSFER"),
-    InstructionSpec("SFT", _F, 33, inputs=("DIR", "CONT", "RST", "ACT"),
-                    params=(_addr("data", 2),), w1=True,
+    InstructionSpec("SFT", _F, 33, family="shift", inputs=("DIR", "CONT", "RST", "ACT"),
+                    params=(_addr("data", 2, _RW),), w1=True,
                     title="Shift register", title_tr="KAYIT KAYDIRMA"),
     InstructionSpec("JMP", _F, 10, inputs=("ACT",), params=(_num("coils", 0, 9999),),
                     flow=Flow.JUMP, title="Jump", title_tr="ATLA"),
@@ -282,70 +333,76 @@ _FUNCTIONS: tuple[InstructionSpec, ...] = (
                     flow=Flow.COMMON, title="Common line control", title_tr="ORTAK HAT KONTROLU"),
     InstructionSpec("COME", _F, 29, flow=Flow.COMMON_END, title="Common line control end",
                     title_tr="ORTAK HAT KONTROLU İPTAL"),
-    InstructionSpec("PARI", _F, 11, inputs=("O.E", "RST", "ACT"),
+    InstructionSpec("PARI", _F, 11, family="parity", inputs=("O.E", "RST", "ACT"),
                     params=(_addr("data", 1),), w1=True,
                     title="Parity check", title_tr="PARITY KONTROL"),
-    InstructionSpec("COMP", _F, 15, inputs=("BYT", "ACT"),
+    InstructionSpec("COMP", _F, 15, family="compare", inputs=("BYT", "ACT"),
                     params=(_num("input_format", 0, 1), _value("input", 2),
                             _addr("compare", 2)), w1=True,
                     title="Compare", title_tr="MUKAYESE"),
-    InstructionSpec("COMPB", _F, 32, inputs=("ACT",),
+    InstructionSpec("COMPB", _F, 32, family="compare", inputs=("ACT",),
                     params=(Param("format", ParamKind.NUMBER, 1, 1004, choices=ARITH_FORMATS),
                             _value("input", "format"), _addr("compare", "format")),
                     address_format=True, title="Binary compare", title_tr="BINARY MUKAYESE"),
-    InstructionSpec("COIN", _F, 16, inputs=("BYT", "ACT"),
+    InstructionSpec("COIN", _F, 16, family="compare", inputs=("BYT", "ACT"),
                     params=(_num("input_format", 0, 1), _value("input", 2),
                             _addr("compare", 2)), w1=True,
                     title="Coincidence check", title_tr="EŞİTLİK KONTROLU"),
-    InstructionSpec("DSCH", _F, 17, inputs=("BYT", "RST", "ACT"),
-                    params=(_num("size", 1, 9999), _addr("table", 2), _addr("search", 2),
-                            _addr("result", 2)), w1=True,
+    InstructionSpec("DSCH", _F, 17, family="search", inputs=("BYT", "RST", "ACT"),
+                    params=(_num("size", 1, 9999), _addr("table", 2, entries="size"),
+                            _addr("search", 2),
+                            _out("result", 2)), w1=True,
                     title="Data search", title_tr="VERİ ARAMA"),
-    InstructionSpec("DSCHB", _F, 34, inputs=("RST", "ACT"),
+    InstructionSpec("DSCHB", _F, 34, family="search", inputs=("RST", "ACT"),
                     params=(_fmt(), _addr("size", 4), _addr("table", "format"),
-                            _addr("search", "format"), _addr("result", 4)), w1=True,
+                            _addr("search", "format"), _out("result", 4)), w1=True,
                     title="Binary data search", title_tr="BINARY VERİ ARAMA"),
-    InstructionSpec("XMOV", _F, 18, inputs=("BYT", "RW", "RST", "ACT"),
-                    params=(_num("size", 1, 9999), _addr("table", 2), _addr("data", 2),
+    InstructionSpec("XMOV", _F, 18, family="transfer", inputs=("BYT", "RW", "RST", "ACT"),
+                    params=(_num("size", 1, 9999), _addr("table", 2, _EITHER, entries="size"),
+                            _addr("data", 2, _EITHER),
                             _addr("index", 2)), w1=True,
                     title="Indexed transfer", title_tr="INDEX DÜZELTME VERİ TRANSFERİ"),
-    InstructionSpec("XMOVB", _F, 35, inputs=("RW", "RST", "ACT"),
-                    params=(_fmt(), _value("size", 2), _addr("table", "format"),
-                            _addr("data", "format"), _addr("index", 4)), w1=True,
+    InstructionSpec("XMOVB", _F, 35, family="transfer", inputs=("RW", "RST", "ACT"),
+                    params=(_fmt(), _value("size", 2),
+                            _addr("table", "format", _EITHER, entries="size"),
+                            _addr("data", "format", _EITHER), _addr("index", 4)), w1=True,
                     title="Binary indexed transfer",
                     title_tr="BINARY INDEX DÜZELTME VERİ TRANSFERİ"),
 )
 
 
-def _arith(name: str, sub: int, title: str, title_tr: str) -> InstructionSpec:
+def _arith(name: str, sub: int, operation: Operation, title: str,
+           title_tr: str) -> InstructionSpec:
     return InstructionSpec(
-        name, _F, sub, inputs=("BYT", "RST", "ACT"),
-        params=(_num("operand_format", 0, 1), _addr("a", 2), _value("b", 2), _addr("result", 2)),
+        name, _F, sub, family="arithmetic", operation=operation, inputs=("BYT", "RST", "ACT"),
+        params=(_num("operand_format", 0, 1), _addr("a", 2), _value("b", 2), _out("result", 2)),
         w1=True, title=title, title_tr=title_tr)
 
 
-def _arith_b(name: str, sub: int, title: str, title_tr: str) -> InstructionSpec:
+def _arith_b(name: str, sub: int, operation: Operation, title: str,
+             title_tr: str) -> InstructionSpec:
     return InstructionSpec(
-        name, _F, sub, inputs=("RST", "ACT"),
+        name, _F, sub, family="arithmetic", operation=operation, binary=True,
+        inputs=("RST", "ACT"),
         params=(Param("format", ParamKind.NUMBER, 1, 1004, choices=ARITH_FORMATS),
-                _addr("a", "format"), _value("b", "format"), _addr("result", "format")),
+                _addr("a", "format"), _value("b", "format"), _out("result", "format")),
         w1=True, address_format=True, title=title, title_tr=title_tr)
 
 
 _ARITHMETIC: tuple[InstructionSpec, ...] = (
-    _arith("ADD", 19, "Addition (BCD)", "TOPLAMA"),
-    _arith_b("ADDB", 36, "Binary addition", "BINARY TOPLAMA"),
-    _arith("SUB", 20, "Subtraction (BCD)", "ÇIKARTMA"),
-    _arith_b("SUBB", 37, "Binary subtraction", "BINARY ÇIKARTMA"),
-    _arith("MUL", 21, "Multiplication (BCD)", "ÇARPMA"),
-    _arith_b("MULB", 38, "Binary multiplication", "BINARY ÇARPMA"),
-    _arith("DIV", 22, "Division (BCD)", "BÖLME"),
-    _arith_b("DIVB", 39, "Binary division", "BINARY BÖLME"),
-    InstructionSpec("NUME", _F, 23, inputs=("BYT", "ACT"),
-                    params=(_num("constant", 0, 9999), _addr("output", 2)),
+    _arith("ADD", 19, Operation.ADD, "Addition (BCD)", "TOPLAMA"),
+    _arith_b("ADDB", 36, Operation.ADD, "Binary addition", "BINARY TOPLAMA"),
+    _arith("SUB", 20, Operation.SUBTRACT, "Subtraction (BCD)", "ÇIKARTMA"),
+    _arith_b("SUBB", 37, Operation.SUBTRACT, "Binary subtraction", "BINARY ÇIKARTMA"),
+    _arith("MUL", 21, Operation.MULTIPLY, "Multiplication (BCD)", "ÇARPMA"),
+    _arith_b("MULB", 38, Operation.MULTIPLY, "Binary multiplication", "BINARY ÇARPMA"),
+    _arith("DIV", 22, Operation.DIVIDE, "Division (BCD)", "BÖLME"),
+    _arith_b("DIVB", 39, Operation.DIVIDE, "Binary division", "BINARY BÖLME"),
+    InstructionSpec("NUME", _F, 23, family="arithmetic", inputs=("BYT", "ACT"),
+                    params=(_num("constant", 0, 9999), _out("output", 2)),
                     title="Constant (BCD)", title_tr="SABİT"),
-    InstructionSpec("NUMEB", _F, 40, inputs=("ACT",),
-                    params=(_fmt(), _num("constant", -INT32, UINT32), _addr("output", "format")),
+    InstructionSpec("NUMEB", _F, 40, family="arithmetic", inputs=("ACT",),
+                    params=(_fmt(), _num("constant", -INT32, UINT32), _out("output", "format")),
                     title="Binary constant", title_tr="BINARY SABİT"),
 )
 
@@ -371,16 +428,16 @@ def _pmc(name: str, sub: int, *, inputs: tuple[str, ...] = ("ACT",),
 
 
 def _logic(name: str, sub: int, title: str, title_tr: str, mnemonic: str = "") -> InstructionSpec:
-    return _pmc(name, sub, params=(
+    return _pmc(name, sub, family="logic", params=(
         Param("format", ParamKind.NUMBER, 1, 1004, choices=ARITH_FORMATS),
         _addr("input", "format"), Param("operand", ParamKind.VALUE, -INT32, UINT32,
                                         width="format"),
-        _addr("output", "format")), address_format=True, mnemonic=mnemonic,
+        _out("output", "format")), address_format=True, mnemonic=mnemonic,
         title=title, title_tr=title_tr)
 
 
 def _range_cmp(name: str, sub: int, width: int, title: str, title_tr: str) -> InstructionSpec:
-    return _pmc(name, sub, params=(
+    return _pmc(name, sub, family="compare", params=(
         Param("limit1", ParamKind.VALUE, -INT32, UINT32, width=width),
         Param("limit2", ParamKind.VALUE, -INT32, UINT32, width=width),
         Param("input", ParamKind.VALUE, -INT32, UINT32, width=width)), w1=True,
@@ -388,29 +445,35 @@ def _range_cmp(name: str, sub: int, width: int, title: str, title_tr: str) -> In
 
 
 _PMC: tuple[InstructionSpec, ...] = (
-    _pmc("DIFU", 57, params=(_num("edge", 1, 2000),), w1=True,
+    _pmc("DIFU", 57, family="edges", params=(_num("edge", 1, 2000),), w1=True,
          title="Rising edge detection", title_tr="YÜKSELEN KENAR"),
-    _pmc("DIFD", 58, params=(_num("edge", 1, 2000),), w1=True,
+    _pmc("DIFD", 58, family="edges", params=(_num("edge", 1, 2000),), w1=True,
          title="Falling edge detection", title_tr="DÜŞEN KENAR"),
-    _pmc("MOVB", 43, params=(_addr("input", 1), _addr("output", 1)),
+    _pmc("MOVB", 43, family="transfer", params=(_addr("input", 1), _out("output", 1)),
          title="Transfer of 1 byte", title_tr="1 BAYT TRANSFERİ"),
-    _pmc("MOVW", 44, params=(_addr("input", 2), _addr("output", 2)),
+    _pmc("MOVW", 44, family="transfer", params=(_addr("input", 2), _out("output", 2)),
          title="Transfer of 2 bytes", title_tr="2 BAYT TRANSFERİ"),
-    _pmc("MOVN", 45, params=(_num("bytes", 1, 9999), _addr("input", "bytes"),
-                             _addr("output", "bytes")),
+    _pmc("MOVN", 45, family="transfer", params=(_num("bytes", 1, 9999), _addr("input", "bytes"),
+                             _out("output", "bytes")),
          title="Transfer of n bytes", title_tr="N BAYT TRANSFERİ"),
-    _pmc("MOVD", 47, params=(_addr("input", 4), _addr("output", 4)),
+    _pmc("MOVD", 47, family="transfer", params=(_addr("input", 4), _out("output", 4)),
          title="Transfer of 4 bytes", title_tr="4 BAYT TRANSFERİ"),
     _logic("LOGAND", 60, "Logical AND", "MANTIKSAL VE", mnemonic="AND"),
     _logic("LOGOR", 61, "Logical OR", "MANTIKSAL VEYA", mnemonic="OR"),
     _logic("EOR", 59, "Exclusive OR", "ÖZEL VEYA"),
-    _pmc("NOT", 62, params=(_fmt(), _addr("input", "format"), _addr("output", "format")),
+    _pmc("NOT", 62, family="logic",
+         params=(_fmt(), _addr("input", "format"), _out("output", "format")),
          title="Logical NOT", title_tr="MANTIKSAL DEĞİL"),
-    _pmc("TMRBF", 77, params=(_num("timer", 1, 500), _num("preset", 0, MAX32)), w1=True,
+    _pmc("TMRBF", 77, family="timers", params=(_num("timer", 1, 500), _num("preset", 0, MAX32)),
+         w1=True,
          title="Fixed off-delay timer", title_tr="STATİK KAPANMA GECİKMELİ ZAMANLAYICI"),
-    _pmc("CTRB", 56, inputs=("CN0", "UPDOWN", "RST", "ACT"),
+    _pmc("CTRB", 56, family="counters", numbered=Numbered.FIXED_COUNTER,
+         inputs=("CN0", "UPDOWN", "RST", "ACT"),
          params=(_num("counter", 1, 100), _num("preset", 0, 32767)), w1=True,
          title="Fixed counter", title_tr="STATİK SAYICI"),
+    _range_cmp("RNGB", 218, 1, "Range comparison, 1 byte", "ARALIK KARŞILAŞTIRMA (1 BAYT)"),
+    _range_cmp("RNGW", 219, 2, "Range comparison, 2 bytes", "ARALIK KARŞILAŞTIRMA (2 BAYT)"),
+    _range_cmp("RNGD", 220, 4, "Range comparison, 4 bytes", "ARALIK KARŞILAŞTIRMA (4 BAYT)"),
     _pmc("CALL", 65, params=(Param("program", ParamKind.PROGRAM, 1, 5000),), flow=Flow.CALL,
          title="Conditional subprogram call", title_tr="ŞARTLI ALT PROGRAM ÇAĞRISI"),
     _pmc("CALLU", 66, inputs=(), params=(Param("program", ParamKind.PROGRAM, 1, 5000),),
@@ -420,26 +483,23 @@ _PMC: tuple[InstructionSpec, ...] = (
          flow=Flow.SUBPROGRAM, title="Subprogram", title_tr="ALT PROGRAM"),
     _pmc("SPE", 72, inputs=(), flow=Flow.SUBPROGRAM_END,
          title="End of subprogram", title_tr="ALT PROGRAM SONU"),
-    _pmc("LBL", 69, inputs=(), params=(Param("label", ParamKind.LABEL, 1, 9999),),
-         flow=Flow.LABEL, title="Label", title_tr="ETİKET"),
     _pmc("JMPB", 68, params=(Param("label", ParamKind.LABEL, 1, 9999),),
          flow=Flow.LABEL_JUMP, title="Label jump", title_tr="ETİKETE ATLA"),
     _pmc("JMPC", 73, params=(Param("label", ParamKind.LABEL, 1, 9999),),
          flow=Flow.LABEL_JUMP_MAIN, title="Label jump to the main program",
          title_tr="ANA PROGRAMDAKİ ETİKETE ATLA"),
-    _range_cmp("RNGB", 218, 1, "Range comparison, 1 byte", "ARALIK KARŞILAŞTIRMA (1 BAYT)"),
-    _range_cmp("RNGW", 219, 2, "Range comparison, 2 bytes", "ARALIK KARŞILAŞTIRMA (2 BAYT)"),
-    _range_cmp("RNGD", 220, 4, "Range comparison, 4 bytes", "ARALIK KARŞILAŞTIRMA (4 BAYT)"),
-    _pmc("AXCTL", 53, inputs=("RST", "ACT"),
-         params=(Param("group", ParamKind.NUMBER, 1, 1004), _addr("data", 8)), w1=True,
+    _pmc("LBL", 69, inputs=(), params=(Param("label", ParamKind.LABEL, 1, 9999),),
+         flow=Flow.LABEL, title="Label", title_tr="ETİKET"),
+    _pmc("AXCTL", 53, family="cnc", inputs=("RST", "ACT"),
+         params=(Param("group", ParamKind.NUMBER, 1, 1004), _addr("data", 8, _EITHER)), w1=True,
          cnc=True, title="PMC axis control", title_tr="PMC EKSEN KONTROLÜ"),
-    _pmc("WINDR", 51, params=(_addr("control", 10),), w1=True, cnc=True,
+    _pmc("WINDR", 51, family="cnc", params=(_addr("control", 10, _EITHER),), w1=True, cnc=True,
          title="Read CNC window data", title_tr="CNC PENCERE VERİSİ OKU"),
-    _pmc("WINDW", 52, params=(_addr("control", 10),), w1=True, cnc=True,
+    _pmc("WINDW", 52, family="cnc", params=(_addr("control", 10),), w1=True, cnc=True,
          title="Write CNC window data", title_tr="CNC PENCERE VERİSİ YAZ"),
-    _pmc("EXIN", 42, params=(_addr("control", 4),), w1=True, cnc=True,
+    _pmc("EXIN", 42, family="cnc", params=(_addr("control", 4, _EITHER),), w1=True, cnc=True,
          title="External data input", title_tr="HARİCİ VERİ GİRİŞİ"),
-    _pmc("DISPB", 41, params=(_num("messages", 0, 9999),), cnc=True,
+    _pmc("DISPB", 41, family="cnc", params=(_num("messages", 0, 9999),), cnc=True,
          title="Extended message display", title_tr="GENİŞLETİLMİŞ MESAJ GÖSTERİMİ"),
 )
 
@@ -468,21 +528,33 @@ BY_OPCODE: dict[int, InstructionSpec] = {spec.opcode: spec for spec in BASIC}
 BY_MNEMONIC: dict[str, InstructionSpec] = {spec.mnemonic: spec for spec in FUNCTIONS
                                            if spec.mnemonic}
 
-# The seed manual's order of the functional instructions (its table in section 5).
-MANUAL_ORDER: tuple[str, ...] = (
-    "TMR", "TMRB", "TMRC", "DEC", "DECB", "CTR", "CTRC", "ROT", "ROTB", "COD", "CODB",
-    "DCNV", "DCNVB", "MOVE", "MOVOR", "SFT", "JMP", "JMPE", "COM", "COME", "PARI", "COMP",
-    "COMPB", "COIN", "DSCH", "DSCHB", "XMOV", "XMOVB", "ADD", "ADDB", "SUB", "SUBB", "MUL",
-    "MULB", "DIV", "DIVB", "NUME", "NUMEB",
-)
+# The seed manual's order of the functional instructions (its table in section 5): the rows'.
+MANUAL_ORDER: tuple[str, ...] = tuple(spec.name for spec in SEED_FUNCTIONS)
+# The FANUC 30i PMC instructions beyond the seed manual, in the palette's order: the rows'.
+PMC_ORDER: tuple[str, ...] = tuple(spec.name for spec in PMC_FUNCTIONS)
+# The text form of a functional instruction by its number: `SUB 219` (beside the arithmetic SUB).
+SUB_KEYWORD = "SUB"
 
 
-# The FANUC 30i PMC instructions beyond the seed manual, in the palette's order.
-PMC_ORDER: tuple[str, ...] = (
-    "DIFU", "DIFD", "MOVB", "MOVW", "MOVN", "MOVD", "LOGAND", "LOGOR", "EOR", "NOT",
-    "TMRBF", "CTRB", "RNGB", "RNGW", "RNGD", "CALL", "CALLU", "SP", "SPE", "JMPB", "JMPC",
-    "LBL", "AXCTL", "WINDR", "WINDW", "EXIN", "DISPB",
-)
+def palette_groups() -> tuple[tuple[str, tuple[InstructionSpec, ...]], ...]:
+    """The functional instructions by palette group (their `source`), in the table's order."""
+    groups: dict[str, list[InstructionSpec]] = {}
+    for spec in FUNCTIONS:
+        groups.setdefault(spec.source, []).append(spec)
+    return tuple((source, tuple(specs)) for source, specs in groups.items())
+
+
+def numbered_row(numbered: Numbered) -> InstructionSpec:
+    """The row of the timer or counter that uses `numbered` T/C memory (TMR for TIMER)."""
+    for spec in FUNCTIONS:
+        if spec.numbered is numbered:
+            return spec
+    raise KeyError(numbered)
+
+
+def implemented() -> frozenset[str]:
+    """The names of the functional instructions that a module of `plc/functions` implements."""
+    return frozenset(spec.name for spec in FUNCTIONS if spec.family)
 
 
 def lookup(name: str) -> InstructionSpec | None:
@@ -497,7 +569,8 @@ def unknown_sub(number: int, count: int) -> InstructionSpec:
     It is drawn as a box, compiled, and simulated as a CNC-side instruction with no CNC
     (W1 = ACT); docs/instructions.md says so.
     """
-    params = tuple(Param(f"p{k}", ParamKind.RAW, -INT32, UINT32) for k in range(1, count + 1))
+    params = tuple(Param(f"p{k}", ParamKind.RAW, -INT32, UINT32, access=ParamAccess.EITHER)
+                   for k in range(1, count + 1))
     return InstructionSpec(f"SUB.{number}", Kind.FUNCTION, number, inputs=("ACT",),
                            params=params, w1=True, cnc=True, known=False, source="pmc",
                            opcode=FUNCTION_OPCODE, title=f"SUB {number}",

@@ -16,19 +16,21 @@ from typing import NamedTuple
 
 from ladderworks.core.address import Address, Area, byte_in_range
 from ladderworks.core.collector import collector_paused
-from ladderworks.core.compiler.checks import output_params
 from ladderworks.core.il.program import FANUC, Program
 from ladderworks.core.instructions import (
     BASIC,
     Flow,
     InstructionSpec,
+    Numbered,
     Param,
+    ParamAccess,
     ParamKind,
     Write,
     spec_for,
     value_is_address,
     width_of,
 )
+from ladderworks.core.ladder.logic import coil_spec, contact_spec
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork
 from ladderworks.core.plc.functions.counters import (
     counter_preset_address,
@@ -81,21 +83,9 @@ class Use(NamedTuple):
     comment: str  # the element's own comment (`// ...` of its instruction)
 
 
-# Parameters that an instruction both reads and writes, beyond `output_params` (written).
-_READ_WRITE: dict[str, frozenset[str]] = {
-    "SFT": frozenset({"data"}),
-    "TMRC": frozenset({"register"}),
-    "CTRC": frozenset({"register"}),
-    "XMOV": frozenset({"table", "data"}),  # RW selects the direction at run time
-    "XMOVB": frozenset({"table", "data"}),
-    "AXCTL": frozenset({"data"}),
-    "WINDR": frozenset({"control"}),  # the control block receives the data read
-    "EXIN": frozenset({"control"}),
-}
-# Table parameters whose extent is `size` entries of the parameter's width.
-_SIZED_TABLES: dict[str, tuple[str, str]] = {
-    "XMOV": ("table", "size"), "DSCH": ("table", "size"), "XMOVB": ("table", "size"),
-}
+# A parameter's access in the table, as the cross reference says it (EITHER: read-write).
+_ACCESS = {ParamAccess.READ: Access.READ, ParamAccess.WRITE: Access.WRITE,
+           ParamAccess.READ_WRITE: Access.READ_WRITE, ParamAccess.EITHER: Access.READ_WRITE}
 
 _CONTACT_KIND = {False: UseKind.CONTACT, True: UseKind.CONTACT_NOT}
 _COIL_KIND = {(Write.OUT, False): UseKind.COIL, (Write.OUT, True): UseKind.COIL_NOT,
@@ -127,20 +117,13 @@ class Operand(NamedTuple):
     parameter: str
 
 
-def _access(name: str, param: str) -> Access:
-    if param in _READ_WRITE.get(name, ()):
-        return Access.READ_WRITE
-    return Access.WRITE if param in output_params(name) else Access.READ
-
-
 def _width(spec: InstructionSpec, param: Param, values: dict[str, object]) -> int:
-    if param.width == "bytes":  # MOVN: the byte count itself
-        count = values.get("bytes")
+    if isinstance(param.width, str) and not spec.param(param.width).choices:
+        count = values.get(param.width)  # MOVN: the byte count itself, not a format
         return count if isinstance(count, int) and count > 0 else 1
     width = width_of(spec, param, values)
-    sized = _SIZED_TABLES.get(spec.name)
-    if sized is not None and sized[0] == param.name:
-        size = values.get(sized[1])
+    if param.entries:
+        size = values.get(param.entries)
         if isinstance(size, int) and size > 0:
             return width * size
     return width
@@ -153,7 +136,6 @@ def function_operands(spec: InstructionSpec, params: Sequence[object],
     fixed = spec.fixed_params()
     for param, value in zip(fixed, params, strict=False):
         values[param.name] = value
-    unknown_access = Access.READ_WRITE  # a `SUB n` the table lacks: it may do either
     for param, value in zip(fixed, params, strict=False):
         if not isinstance(value, Address):
             continue
@@ -161,7 +143,7 @@ def function_operands(spec: InstructionSpec, params: Sequence[object],
             continue
         if param.kind not in (ParamKind.ADDRESS, ParamKind.VALUE, ParamKind.RAW):
             continue
-        access = unknown_access if not spec.known else _access(spec.name, param.name)
+        access = _ACCESS[param.access]
         width = 0 if value.is_bit else _width(spec, param, values)
         yield Operand(value, width, UseKind.PARAMETER, access, param.name)
     yield from _numbered_operands(spec, values, dialect)
@@ -169,12 +151,16 @@ def function_operands(spec: InstructionSpec, params: Sequence[object],
 
 def _numbered_operands(spec: InstructionSpec, values: dict[str, object],
                        dialect: str) -> Iterator[Operand]:
-    """TMR n reads its preset (and a FANUC precision code); CTR n its preset and value;
-    CTRB n its value: where the engine keeps them (core/plc/functions/timers, counters)."""
-    number = values.get("timer" if spec.name == "TMR" else "counter")
+    """A numbered timer (TMR) reads its preset (and a FANUC precision code); a counter (CTR) its
+    preset and value; a fixed counter (CTRB) its value: where the engine keeps them
+    (core/plc/functions/timers, counters). The number is the first parameter."""
+    numbered = spec.numbered
+    if numbered is Numbered.NONE or numbered is Numbered.FIXED_TIMER:
+        return
+    number = values.get(spec.params[0].name)
     if not isinstance(number, int) or number <= 0:
         return
-    if spec.name == "TMR":
+    if numbered is Numbered.TIMER:
         fanuc = dialect == FANUC
         size = FANUC_TIMER_BYTES if fanuc else TIMER_BYTES
         yield from _area_operand(timer_preset_address(number, dialect), size, Access.READ,
@@ -182,10 +168,10 @@ def _numbered_operands(spec: InstructionSpec, values: dict[str, object],
         if fanuc:
             yield from _area_operand(timer_precision_address(number), FANUC_TIMER_BYTES,
                                      Access.READ, "precision")
-    elif spec.name == "CTR":
+    elif numbered is Numbered.COUNTER:
         yield from _area_operand(counter_preset_address(number), 2, Access.READ, "preset")
         yield from _area_operand(counter_value_address(number), 2, Access.READ_WRITE, "value")
-    elif spec.name == "CTRB":
+    else:  # Numbered.FIXED_COUNTER
         yield from _area_operand(ctrb_value_address(number), 2, Access.READ_WRITE, "value")
 
 
@@ -347,11 +333,6 @@ class _SpecCache:
             return spec
 
 
-_CONTACT_SPECS = {False: spec_for("RD"), True: spec_for("RD.NOT")}
-_COIL_SPECS = {(Write.OUT, False): spec_for("WRT"), (Write.OUT, True): spec_for("WRT.NOT"),
-               (Write.SET, False): spec_for("SET"), (Write.RESET, False): spec_for("RST")}
-
-
 def _network_elements(network: LadderNetwork) -> Iterator[_Item]:
     """(spec, params, bit operand, cell, comment, line) of each element, in program order."""
     if network.listing is not None:
@@ -363,15 +344,10 @@ def _network_elements(network: LadderNetwork) -> Iterator[_Item]:
     for cell, element in network.cells.items():
         if isinstance(element, Contact):
             if element.address is not None:
-                spec = _CONTACT_SPECS[element.negated]
-                assert spec is not None
-                yield spec, (), element.address, cell, element.comment, 0
+                yield contact_spec(element), (), element.address, cell, element.comment, 0
         elif isinstance(element, Coil):
             if element.address is not None:
-                spec = _COIL_SPECS.get((element.write, element.negated)) or _COIL_SPECS[
-                    (Write.OUT, False)]
-                assert spec is not None
-                yield spec, (), element.address, cell, element.comment, 0
+                yield coil_spec(element), (), element.address, cell, element.comment, 0
         elif isinstance(element, FunctionBox):
             spec = spec_for(element.name, len(element.params))
             if spec is not None:

@@ -22,6 +22,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
+from ladderworks.core.ladder.logic import coil_spec, contact_spec
 from ladderworks.gui import compile_step, questions
 from ladderworks.gui.actions_table import CAN_REDO, CAN_UNDO, CONTEXT_MENU, LADDER_SHOWN
 from ladderworks.gui.console_menus import Condition, ConsoleMenus
@@ -457,9 +458,9 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
                 if isinstance(element, FunctionBox):
                     return element.name
                 if isinstance(element, Contact):
-                    return "RD.NOT" if element.negated else "RD"
+                    return contact_spec(element).name
                 if isinstance(element, Coil):
-                    return "WRT.NOT" if element.negated else "WRT"
+                    return coil_spec(element).name
         return self.tool_palette.current_function()
 
     def show_instruction_help(self, name: str | None = None) -> InstructionHelp:

@@ -16,9 +16,14 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from ladderworks.core.instructions import MANUAL_ORDER, PMC_ORDER, lookup
+from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
+from ladderworks.core.instructions import lookup, palette_groups
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import instruction_title
+
+# The title of each palette group, by the rows' `source` (a source without one shows its name).
+GROUP_TITLES = {"seed": QT_TRANSLATE_NOOP("ToolPalette", "Seed manual instructions"),
+                "pmc": QT_TRANSLATE_NOOP("ToolPalette", "FANUC PMC instructions")}
 
 
 class ToolPalette(Retranslating, QDockWidget):
@@ -52,11 +57,11 @@ class ToolPalette(Retranslating, QDockWidget):
         layout.addWidget(self._function_label)
         self.functions = QComboBox(body)
         self.functions.setObjectName("function_combo")
-        self._groups: list[int] = []  # rows of the group titles (not choosable)
-        for group in (MANUAL_ORDER, PMC_ORDER):
-            self._add_group_title()
-            for name in group:
-                self.functions.addItem(name, name)
+        self._groups: list[tuple[int, str]] = []  # rows of the group titles (not choosable)
+        for source, specs in palette_groups():
+            self._add_group_title(source)
+            for spec in specs:
+                self.functions.addItem(spec.name, spec.name)
         self.functions.setCurrentIndex(1)
         self.functions.currentIndexChanged.connect(self._on_function)
         self.functions.activated.connect(self._on_function)  # chosen again: the tool again
@@ -74,8 +79,8 @@ class ToolPalette(Retranslating, QDockWidget):
         self.setWidget(scroll)
         self.retranslate()
 
-    def _add_group_title(self) -> None:
-        """A bold, disabled row naming the group of instructions below it."""
+    def _add_group_title(self, source: str) -> None:
+        """A bold, disabled row naming the group of instructions below it (their `source`)."""
         row = self.functions.count()
         self.functions.addItem("", None)
         model = self.functions.model()
@@ -85,7 +90,7 @@ class ToolPalette(Retranslating, QDockWidget):
         font = QFont(item.font())
         font.setBold(True)
         item.setFont(font)
-        self._groups.append(row)
+        self._groups.append((row, source))
 
     def current_function(self) -> str:
         """The instruction name chosen in the drop-down."""
@@ -105,12 +110,12 @@ class ToolPalette(Retranslating, QDockWidget):
         """Set the texts in the current UI language."""
         self.setWindowTitle(QCoreApplication.translate("ToolPalette", "Tools"))
         self._function_label.setText(QCoreApplication.translate("ToolPalette", "Function:"))
-        titles = [QCoreApplication.translate("ToolPalette", "Seed manual instructions"),
-                  QCoreApplication.translate("ToolPalette", "FANUC PMC instructions")]
-        for row, title in zip(self._groups, titles, strict=True):
+        for row, source in self._groups:
+            title = QCoreApplication.translate("ToolPalette", GROUP_TITLES.get(source, source))
             self.functions.setItemText(row, f"— {title} —")
+        titles = {row for row, _ in self._groups}
         for index in range(self.functions.count()):
-            if index in self._groups:
+            if index in titles:
                 continue
             spec = lookup(str(self.functions.itemData(index)))
             assert spec is not None

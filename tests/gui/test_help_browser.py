@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from PySide6.QtCore import Qt
+from PySide6.QtGui import QKeySequence
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.instructions import ALL, BY_NAME
+from ladderworks.core.ladder import Coil
 from ladderworks.gui.function_dialog import FunctionDialog
 from ladderworks.gui.help_browser import reference_sections
 from ladderworks.gui.main_window import MainWindow
@@ -84,3 +88,25 @@ def test_the_help_window_fits_the_screen(window: MainWindow, qtbot: QtBot) -> No
     assert help_window.height() < room.height()  # the title bar has room above it
     assert help_window.list.width() >= help_window.list.minimumWidth()
     assert help_window.browser.width() >= 200
+
+
+def test_f1_on_each_coil_kind_opens_its_own_entry(window: MainWindow, qtbot: QtBot,
+                                                  tmp_path: Path) -> None:
+    program = tmp_path / "coils.LAD"
+    program.write_text("%@3\nRD R1.0\nWRT R2.0\nRD R1.1\nWRT.NOT R2.1\n"
+                       "RD R1.2\nSET R2.2\nRD R1.3\nRST R2.3\n%\n", encoding="utf-8")
+    assert window.load(program)
+    action = window.actions_by_name["action_instruction_help"]
+    assert action.shortcut() == QKeySequence(QKeySequence.StandardKey.HelpContents)
+    shown: dict[str, str] = {}
+    for index, network in enumerate(window.editor.networks):
+        for (row, col), element in network.cells.items():
+            if isinstance(element, Coil):
+                window.editor.cursor_cell = (index, row, col)
+                action.trigger()
+                help_window = window.help_window
+                assert help_window is not None
+                qtbot.waitUntil(help_window.isVisible)
+                shown[str(element.address)] = str(help_window.shown_name())
+    assert shown == {"R2.0": "WRT", "R2.1": "WRT.NOT", "R2.2": "SET", "R2.3": "RST"}
+    assert help_window.browser.toPlainText().startswith("RST")

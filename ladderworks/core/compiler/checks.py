@@ -34,6 +34,7 @@ from ladderworks.core.instructions import (
     InstructionSpec,
     Kind,
     Param,
+    ParamAccess,
     ParamKind,
     Write,
     spec_for,
@@ -58,13 +59,8 @@ _END = Kind.END
 _WARNING, _ERROR = Severity.WARNING, Severity.ERROR
 _STARTS = Combine.READ
 
-# Parameters a functional instruction writes to (its outputs), by name.
-_OUTPUT_PARAMS = frozenset({"output", "result", "register"})
-
-
-def output_params(name: str) -> frozenset[str]:
-    """Names of the parameters instruction `name` writes to."""
-    return _OUTPUT_PARAMS | {"data"} if name == "SFT" else _OUTPUT_PARAMS
+# The accesses of a parameter the checks treat as a write (no input address there).
+_OUTPUTS = frozenset({ParamAccess.WRITE, ParamAccess.READ_WRITE})
 
 
 def cnc_stub(ctx: object, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
@@ -448,11 +444,10 @@ class _Checker:
         found = self.layouts.get(id(spec))
         if found is None:
             fixed = spec.fixed_params()
-            outputs = output_params(spec.name)
             plans = tuple(
                 (param, param.kind in (ParamKind.PROGRAM, ParamKind.LABEL),
                  param.allows_address(), param.kind is ParamKind.VALUE,
-                 param.kind is ParamKind.ADDRESS, param.name in outputs,
+                 param.kind is ParamKind.ADDRESS, param.access in _OUTPUTS,
                  param.highest(self.dialect),
                  param.width if isinstance(param.width, int) else None)
                 for param in fixed)

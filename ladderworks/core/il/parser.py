@@ -42,6 +42,7 @@ from ladderworks.core.il.textform import (
 from ladderworks.core.instructions import (
     BY_MNEMONIC,
     BY_SUB,
+    SUB_KEYWORD,
     Combine,
     InstructionSpec,
     Kind,
@@ -695,7 +696,7 @@ class _FileParser:
             return k
         if spec.kind is Kind.BASIC and len(operands) > 1 and head.text.upper() in BY_MNEMONIC:
             spec = BY_MNEMONIC[head.text.upper()]  # one-line `AND 1 R10 R11 R12`: LOGAND
-        if spec.name == "SUB" and len(operands) == 1 and operands[0].is_int:
+        if spec.name == SUB_KEYWORD and len(operands) == 1 and operands[0].is_int:
             sub = _small_int(operands[0].text, 6)
             sub = sub if sub is not None and sub >= 0 else None
             sub_spec = BY_SUB.get(sub) if sub is not None else None

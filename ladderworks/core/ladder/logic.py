@@ -77,6 +77,11 @@ def _basic(combine: Combine, write: Write, negated: bool, pushes: int, operand: 
     raise KeyError((combine, write, negated, pushes))
 
 
+def contact_spec(contact: Contact) -> InstructionSpec:
+    """The contact's row of the table, read on its own: RD or RD.NOT."""
+    return _basic(Combine.READ, Write.NONE, contact.negated, 0, True)
+
+
 def _contact_instruction(contact: Contact, combine: Combine, push: bool) -> Instruction:
     spec = _basic(combine, Write.NONE, contact.negated, 1 if push else 0, True)
     return Instruction(spec.name, contact.address, comment=contact.comment, lead=contact.lead)

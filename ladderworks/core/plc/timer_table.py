@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ladderworks.core.address import AREA_SIZES, Address, Area
-from ladderworks.core.instructions import BY_NAME
+from ladderworks.core.instructions import Numbered, numbered_row
 from ladderworks.core.plc.functions.timers import effective_preset, timer_tick
 
 SEED = "seed"
@@ -64,7 +64,8 @@ class TimerLayout:
 def timer_layout(dialect: str) -> TimerLayout:
     """The timer layout of a dialect."""
     size = AREA_SIZES[Area.T]
-    count = BY_NAME["TMR"].param("timer").highest(dialect)  # seed 1..100, 30i memory-B 1..250
+    timer = numbered_row(Numbered.TIMER).params[0]
+    count = timer.highest(dialect)  # seed 1..100, 30i memory-B 1..250
     if dialect == FANUC:
         return TimerLayout(FANUC, 2, "ticks", min(count, size // 2), 32767)
     return TimerLayout(SEED, 4, "ms", min(count, size // 4), MAX_SEED_PRESET_MS)

@@ -20,7 +20,7 @@ from PySide6.QtGui import (
 from PySide6.QtWidgets import QPlainTextEdit, QTextEdit, QWidget
 
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.instructions import ALL
+from ladderworks.core.instructions import ALL, SUB_KEYWORD
 
 STRIPE = QColor(0, 170, 0, 70)  # lines already converted ("green stripes")
 ERROR_LINE = QColor(211, 47, 47, 40)
@@ -44,7 +44,7 @@ class MnemonicHighlighter(QSyntaxHighlighter):
 
     def __init__(self, document: QTextDocument) -> None:
         super().__init__(document)
-        self.names = {spec.name for spec in ALL} | {"SUB"}
+        self.names = {spec.name for spec in ALL} | {SUB_KEYWORD}
         self.instruction = _format("#0d47a1", bold=True)
         self.address = _format("#880e4f")
         self.number = _format("#00695c")

@@ -12,6 +12,7 @@ from enum import StrEnum
 from ladderworks.core.address import AREA_SIZES, Address, Area
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.diagnostics import Refused
+from ladderworks.core.instructions import InstructionSpec, Numbered
 from ladderworks.core.plc.functions.counters import (
     MAX_PRESET,
     counter_preset_address,
@@ -116,13 +117,16 @@ class ProgramUse:
         if program is None:
             return use
         for op in program.ops:
-            if op.name == "TMR" and isinstance(op.params[0], int):
+            spec = op.spec
+            numbered = spec.numbered
+            if numbered is Numbered.TIMER and isinstance(op.params[0], int):
                 use.timers.add(op.params[0])
-            elif op.name == "TMRB" and all(isinstance(p, int) for p in op.params[:2]):
+            elif numbered is Numbered.FIXED_TIMER and all(
+                    isinstance(p, int) for p in op.params[:2]):
                 number, preset = op.params[0], op.params[1]
                 assert isinstance(number, int) and isinstance(preset, int)
                 use.fixed_timers[number] = preset
-            elif op.name == "CTR" and isinstance(op.params[0], int):
+            elif numbered is Numbered.COUNTER and isinstance(op.params[0], int):
                 use.counters.add(op.params[0])
             addresses = [op.operand, *op.params]
             for index, where in enumerate(addresses):
@@ -131,15 +135,18 @@ class ProgramUse:
                 if where.area is Area.K:
                     use.keep.add(where.byte)
                 elif where.area is Area.D:
-                    width = 1 if where.bit is not None else _data_width(op.name, index)
+                    width = 1 if where.bit is not None else _data_width(spec, index)
                     use.data[where.byte] = max(use.data.get(where.byte, 1), width)
         return use
 
 
-def _data_width(name: str, index: int) -> int:
-    """The width to show a D address of a program with: 2 for the presets of TMRC and CTRC."""
-    if name in ("TMRC", "CTRC") and index == (2 if name == "TMRC" else 1):
-        return 2
+def _data_width(spec: InstructionSpec, index: int) -> int:
+    """The width to show a D address of a program with (`index` 0: the bit operand, then the
+    parameters): a timer's or counter's preset (TMRC, CTRC) its own, else 1."""
+    fixed = spec.fixed_params()
+    param = fixed[index - 1] if 0 < index <= len(fixed) else None
+    if param is not None and param.preset and isinstance(param.width, int):
+        return param.width
     return 1
 
 

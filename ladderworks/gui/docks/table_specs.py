@@ -12,6 +12,7 @@ from typing import ClassVar
 from PySide6.QtCore import QCoreApplication
 
 from ladderworks.core.address import Address, Area
+from ladderworks.core.instructions import Numbered, numbered_row
 from ladderworks.core.plc.functions.counters import counter_value_address
 from ladderworks.gui.docks.table_entries import (
     Areas,
@@ -42,6 +43,9 @@ from ladderworks.gui.plc_session import PlcSession
 translate = QCoreApplication.translate
 
 Row = TimerRow | CounterRow | DataRow | KeepRow
+# The instruction a timer row stands for, by `TimerRow.fixed`: TMR, TMRB.
+_TIMER_NAMES = {False: numbered_row(Numbered.TIMER).name,
+                True: numbered_row(Numbered.FIXED_TIMER).name}
 
 
 @dataclass
@@ -128,7 +132,7 @@ class TimerSpec(TableSpec):
         """No., type, preset, [precision,] tick, delay."""
         assert isinstance(row, TimerRow)
         precision = [str(row.precision)] if session.timers.has_precision else []
-        return [str(row.number), "TMRB" if row.fixed else "TMR", str(row.preset), *precision,
+        return [str(row.number), _TIMER_NAMES[row.fixed], str(row.preset), *precision,
                 str(row.tick_ms), str(row.delay_ms)]
 
     def editable(self, row: Row, column: int, session: PlcSession) -> bool:

@@ -21,6 +21,7 @@ from PySide6.QtWidgets import QGraphicsRectItem, QGraphicsScene, QGraphicsView, 
 from ladderworks.core.address import AddressError
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il import Program
+from ladderworks.core.instructions import FUNCTIONS
 from ladderworks.core.ladder import LadderNetwork, Selection
 from ladderworks.core.symbols import resolve
 from ladderworks.gui.editor.editing import CursorEdits
@@ -85,7 +86,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         self.network_items = LazyItems(self._make_item)  # made when shown (a real program: 10,000+)
         self.comments = CommentedAddresses(self.describe_address)  # asked once per address
         self.layout_ = Layout(self.commented)
-        self.function_name = "TMR"
+        self.function_name = FUNCTIONS[0].name  # the palette's first
         self.cursor_cell: tuple[int, int, int] = (0, 0, 0)  # network, row, col
         self.selection: tuple[int, Selection] | None = None
         self.function_dialog: FunctionDialog | None = None

@@ -1,4 +1,5 @@
-"""plc/families.py, the names the checks read, agrees with the implementations registered."""
+"""plc/families.py (the table's `family` fields), the names the checks read, agrees with the
+implementations registered."""
 
 from __future__ import annotations
 
@@ -23,7 +24,7 @@ def test_a_name_its_module_does_not_declare_is_refused() -> None:
     def tmr(ctx: object, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
         return False
 
-    with pytest.raises(LookupError, match="declare it in FAMILIES"):
+    with pytest.raises(LookupError, match="must say family='test_families'"):
         function("TMR")(tmr)  # type: ignore[arg-type]
     assert before == REGISTRY
 

@@ -57,14 +57,14 @@ REGISTRY: dict[str, FunctionImpl] = {}
 
 
 def function(name: str) -> Callable[[FunctionImpl], FunctionImpl]:
-    """Decorator: register the implementation of functional instruction `name`, which its
-    module declares in `plc/families.py`."""
+    """Decorator: register the implementation of functional instruction `name`, whose row's
+    `family` names its module."""
 
     def register(impl: FunctionImpl) -> FunctionImpl:
         family = impl.__module__.rpartition(".")[2]
         if name not in FAMILIES.get(family, ()):
-            raise LookupError(f"{impl.__module__} implements {name}: declare it in FAMILIES "
-                              "of ladderworks/core/plc/families.py")
+            raise LookupError(f"{impl.__module__} implements {name}: its row in "
+                              f"ladderworks/core/instructions.py must say family={family!r}")
         REGISTRY[name] = impl
         return impl
 
@@ -117,7 +117,7 @@ def load_all() -> dict[str, FunctionImpl]:
         importlib.import_module(f"{__name__}.{info.name}")
     missing = IMPLEMENTED - REGISTRY.keys()
     if missing:
-        raise LookupError(f"declared in plc/families.py, not implemented: {sorted(missing)}")
+        raise LookupError(f"a family in the table, not implemented: {sorted(missing)}")
     return REGISTRY
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from ladderworks.core.address import Address
+from ladderworks.core.instructions import FUNCTIONS, InstructionSpec, Operation
 from ladderworks.core.plc.bcd import bcd_limit
 from ladderworks.core.plc.functions import (
     FLAG_OVERFLOW,
@@ -27,18 +28,18 @@ def truncated_division(a: int, b: int) -> tuple[int, int]:
 
 
 # (a, b) -> result, or None when the operation is an error (divide by zero).
-_OPERATIONS: dict[str, Callable[[int, int], int | None]] = {
-    "ADD": lambda a, b: a + b,
-    "SUB": lambda a, b: a - b,
-    "MUL": lambda a, b: a * b,
-    "DIV": lambda a, b: truncated_division(a, b)[0] if b else None,
+_OPERATIONS: dict[Operation, Callable[[int, int], int | None]] = {
+    Operation.ADD: lambda a, b: a + b,
+    Operation.SUBTRACT: lambda a, b: a - b,
+    Operation.MULTIPLY: lambda a, b: a * b,
+    Operation.DIVIDE: lambda a, b: truncated_division(a, b)[0] if b else None,
 }
 
 
-def _bcd_arithmetic(operation: str) -> None:
-    compute = _OPERATIONS[operation]
+def _bcd_arithmetic(spec: InstructionSpec) -> None:
+    compute = _OPERATIONS[spec.operation]
 
-    @function(operation)
+    @function(spec.name)
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
         byt, rst, act = inputs
@@ -59,14 +60,15 @@ def _bcd_arithmetic(operation: str) -> None:
             return output(state, True)
         return output(state, not ctx.memory.write_bcd(result_at, result, width))
 
-    impl.__name__ = operation.lower()
-    impl.__doc__ = f"BCD {operation}: 2 (BYT=0) or 4 digits; W1 = 1 on error, result kept."
+    impl.__name__ = spec.name.lower()
+    impl.__doc__ = f"BCD {spec.name}: 2 (BYT=0) or 4 digits; W1 = 1 on error, result kept."
 
 
-def _binary_arithmetic(operation: str) -> None:
-    compute = _OPERATIONS[operation]
+def _binary_arithmetic(spec: InstructionSpec) -> None:
+    compute = _OPERATIONS[spec.operation]
+    keeps_remainder = spec.operation is Operation.DIVIDE
 
-    @function(operation + "B")
+    @function(spec.name)
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
         rst, act = inputs
@@ -85,17 +87,17 @@ def _binary_arithmetic(operation: str) -> None:
             return output(state, True)
         ctx.memory.write(result_at, result, width)
         ctx.set_result_register(result_flags(result), 1)
-        if operation == "DIV":
+        if keeps_remainder:
             ctx.memory.write(REMAINDER_REGISTER, truncated_division(a, b)[1], width)
         return output(state, False)
 
-    impl.__name__ = operation.lower() + "b"
-    impl.__doc__ = f"Signed binary {operation}: 1/2/4 bytes, R9000 flags; W1 = 1 on error."
+    impl.__name__ = spec.name.lower()
+    impl.__doc__ = f"Signed binary {spec.name}: 1/2/4 bytes, R9000 flags; W1 = 1 on error."
 
 
-for _name in _OPERATIONS:
-    _bcd_arithmetic(_name)
-    _binary_arithmetic(_name)
+for _spec in FUNCTIONS:  # each row with an operation, in its encoding
+    if _spec.operation is not Operation.NONE:
+        (_binary_arithmetic if _spec.binary else _bcd_arithmetic)(_spec)
 
 
 @function("NUME")
