@@ -6,6 +6,7 @@ refuses a row's name that nothing registered."""
 
 from __future__ import annotations
 
+from ladderworks.core.dialects.delta.instructions import FAMILIES as DELTA_FAMILIES
 from ladderworks.core.instructions import FUNCTIONS, implemented
 
 FAMILIES: dict[str, tuple[str, ...]] = {}
@@ -14,5 +15,9 @@ for _spec in FUNCTIONS:
         FAMILIES.setdefault(_spec.family, ())
         FAMILIES[_spec.family] += (_spec.name,)
 
+# A dialect's families (core/dialects/<name>/instructions.py says which module runs which row).
+FAMILIES.update(DELTA_FAMILIES)
+
 # Every functional instruction that has an implementation.
-IMPLEMENTED: frozenset[str] = implemented()
+IMPLEMENTED: frozenset[str] = implemented() | {name for names in DELTA_FAMILIES.values()
+                                               for name in names}
