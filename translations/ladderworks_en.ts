@@ -1759,6 +1759,64 @@
     </message>
 </context>
 <context>
+    <name>ModbusDock</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="90"/>
+        <source>Modbus server</source>
+        <translation>Modbus server</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="91"/>
+        <source>&amp;Address (host:port):</source>
+        <translation>&amp;Address (host:port):</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="92"/>
+        <source>Clients connected:</source>
+        <translation>Clients connected:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="93"/>
+        <source>Requests a second:</source>
+        <translation>Requests a second:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="109"/>
+        <source>Type the address as host:port, e.g. {0}.</source>
+        <translation>Type the address as host:port, e.g. {0}.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="120"/>
+        <source>Cannot listen on {0}: {1}</source>
+        <translation>Cannot listen on {0}: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="148"/>
+        <source>Stop server</source>
+        <translation>Stop server</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="149"/>
+        <source>Start server</source>
+        <translation>Start server</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="153"/>
+        <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
+        <translation>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="157"/>
+        <source>Other computers on the network can read and write this PLC.</source>
+        <translation>Other computers on the network can read and write this PLC.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
+        <source>Stopped. An HMI on this computer connects to {0} once started.</source>
+        <translation>Stopped. An HMI on this computer connects to {0} once started.</translation>
+    </message>
+</context>
+<context>
     <name>NameDisplayMenu</name>
     <message>
         <location filename="../ladderworks/gui/editor/name_menu.py" line="23"/>

@@ -1759,6 +1759,64 @@
     </message>
 </context>
 <context>
+    <name>ModbusDock</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="90"/>
+        <source>Modbus server</source>
+        <translation>Modbus sunucusu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="91"/>
+        <source>&amp;Address (host:port):</source>
+        <translation>&amp;Adres (sunucu:port):</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="92"/>
+        <source>Clients connected:</source>
+        <translation>Bağlı istemciler:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="93"/>
+        <source>Requests a second:</source>
+        <translation>Saniyedeki istek:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="109"/>
+        <source>Type the address as host:port, e.g. {0}.</source>
+        <translation>Adresi sunucu:port olarak yazın, ör. {0}.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="120"/>
+        <source>Cannot listen on {0}: {1}</source>
+        <translation>{0} dinlenemiyor: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="148"/>
+        <source>Stop server</source>
+        <translation>Sunucuyu durdur</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="149"/>
+        <source>Start server</source>
+        <translation>Sunucuyu başlat</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="153"/>
+        <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
+        <translation>{0}:{1} dinleniyor (Modbus/TCP, her birim no), harita: {2}.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="157"/>
+        <source>Other computers on the network can read and write this PLC.</source>
+        <translation>Ağdaki başka bilgisayarlar bu PLC&apos;yi okuyup yazabilir.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
+        <source>Stopped. An HMI on this computer connects to {0} once started.</source>
+        <translation>Durduruldu. Başlatıldığında bu bilgisayardaki bir HMI {0} adresine bağlanır.</translation>
+    </message>
+</context>
+<context>
     <name>NameDisplayMenu</name>
     <message>
         <location filename="../ladderworks/gui/editor/name_menu.py" line="23"/>
