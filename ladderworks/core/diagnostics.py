@@ -243,6 +243,8 @@ MESSAGES: dict[str, str] = {
     "modbus-map-overlap": QT_TRANSLATE_NOOP(
         "Diagnostic", "{table} {start}-{end} overlap the row on line {other}"),
     "modbus-map-empty": QT_TRANSLATE_NOOP("Diagnostic", "the map has no row"),
+    "modbus-map-width": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{device}: a device's register is 16 bits: the width must be 2"),
 }
 
 

@@ -12,12 +12,13 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from ladderworks.core.address import Address
-from ladderworks.core.modbus import cells
-from ladderworks.core.modbus.maps import MapRow, ModbusMap, Table
+from ladderworks.core.modbus.cells import Cells, PmcCells, cells_for
+from ladderworks.core.modbus.maps import MapRow, ModbusMap, Table, default_map
 from ladderworks.core.plc.session import MACHINE_AREAS, PlcRun
 
 ILLEGAL_ADDRESS = 2  # Modbus exception 02: outside the map, or a read-only element written
 ILLEGAL_VALUE = 3  # Modbus exception 03: a value that does not fit its register
+PMC_DEFAULT = default_map("seed")
 
 
 class ModbusError(Exception):
@@ -31,13 +32,32 @@ class ModbusError(Exception):
 Chunk = tuple[MapRow, int, int]  # a row, the index of the first element, how many
 
 
-class PlcBridge:
-    """Reads and writes the Modbus tables of `modbus_map` on the PLC of `plc`."""
+def program_dialect(plc: PlcRun) -> str:
+    """The dialect of the program loaded in `plc` ("seed", "fanuc", "delta", ...)."""
+    loaded = plc.program if plc.program is not None else plc.binary
+    return str(getattr(loaded, "dialect", "seed"))
 
-    def __init__(self, plc: PlcRun, modbus_map: ModbusMap) -> None:
+
+class PlcBridge:
+    """Reads and writes the Modbus tables of a map on the PLC of `plc`.
+
+    The map is the loaded program's dialect's default unless one is given; its rows reach
+    memory as that dialect spells its elements (`cells_for`)."""
+
+    def __init__(self, plc: PlcRun, modbus_map: ModbusMap | None = None,
+                 dialect: str | None = None) -> None:
         self.plc = plc
-        self.map = modbus_map
+        self.map = PMC_DEFAULT
+        self.cells: Cells = PmcCells()
+        self.use(modbus_map, dialect)
         self.listeners: list[Callable[[], None]] = []  # told after every applied write
+
+    def use(self, modbus_map: ModbusMap | None = None, dialect: str | None = None) -> None:
+        """Serve `modbus_map` (default: the dialect's) with the elements of `dialect`
+        (default: the loaded program's): after a program of another dialect is loaded."""
+        name = dialect or program_dialect(self.plc)
+        self.map = modbus_map or default_map(name)
+        self.cells = cells_for(name)
 
     def _chunks(self, table: Table, address: int, count: int, write: bool) -> list[Chunk]:
         """The rows a request covers, or ModbusError 02 when an address is not mapped (or
@@ -59,15 +79,20 @@ class PlcBridge:
         """`count` coils or discrete inputs from `address`."""
         chunks = self._chunks(table, address, count, False)
         values: list[bool] = []
-        memory = self.plc.memory
+        areas = self.plc.memory.areas
+        cells = self.cells
         with self.plc.lock():
             for row, first, taken in chunks:
-                start = cells.bit_address(row, first)
-                data = memory.areas[start.area]
-                assert start.bit is not None
-                position = start.byte * 8 + start.bit
-                values.extend(bool(data[p >> 3] >> (p & 7) & 1)
-                              for p in range(position, position + taken))
+                if isinstance(cells, PmcCells):  # one run of bits
+                    start = cells.bit(row, first)
+                    data = areas[start.area]
+                    position = start.byte * 8 + (start.bit or 0)
+                    values.extend(bool(data[p >> 3] >> (p & 7) & 1)
+                                  for p in range(position, position + taken))
+                    continue
+                for index in range(first, first + taken):
+                    bit = cells.bit(row, index)
+                    values.append(bool(areas[bit.area][bit.byte] >> (bit.bit or 0) & 1))
         return values
 
     def write_bits(self, table: Table, address: int, values: Sequence[bool | int]) -> None:
@@ -77,7 +102,7 @@ class PlcBridge:
         with self.plc.lock():
             for row, first, taken in chunks:
                 for index in range(first, first + taken):
-                    self.plc.set_bit(cells.bit_address(row, index), values[done])
+                    self.plc.set_bit(self.cells.bit(row, index), values[done])
                     done += 1
             self._reforce()
         self._told()
@@ -88,18 +113,24 @@ class PlcBridge:
         """`count` holding or input registers from `address`."""
         chunks = self._chunks(table, address, count, False)
         values: list[int] = []
-        memory = self.plc.memory
+        areas = self.plc.memory.areas
+        cells = self.cells
         with self.plc.lock():
             for row, first, taken in chunks:
-                start = cells.register_address(row, first)
-                data = memory.areas[start.area]
-                width = row.width
-                low = start.byte
-                if width == 1:
-                    values.extend(data[low:low + taken])
-                else:
-                    values.extend(data[b] | data[b + 1] << 8
-                                  for b in range(low, low + 2 * taken, 2))
+                if isinstance(cells, PmcCells):  # one run of bytes
+                    start = cells.register(row, first)
+                    data = areas[start.area]
+                    low = start.byte
+                    if row.width == 1:
+                        values.extend(data[low:low + taken])
+                    else:
+                        values.extend(data[b] | data[b + 1] << 8
+                                      for b in range(low, low + 2 * taken, 2))
+                    continue
+                for index in range(first, first + taken):
+                    word = cells.register(row, index)
+                    data = areas[word.area]
+                    values.append(data[word.byte] | data[word.byte + 1] << 8)
         return values
 
     def write_registers(self, table: Table, address: int, values: Sequence[int]) -> None:
@@ -116,7 +147,7 @@ class PlcBridge:
             forced = engine.force_table.forced() if engine is not None else {}
             for row, first, taken in chunks:
                 for index in range(first, first + taken):
-                    self._write_register(cells.register_address(row, index), row.width,
+                    self._write_register(self.cells.register(row, index), row.width,
                                          values[done], forced)
                     done += 1
             self._reforce()

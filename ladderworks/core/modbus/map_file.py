@@ -1,8 +1,9 @@
 """A user's own Modbus map: a CSV file of rows `TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH]`.
 
 Blank lines and lines starting with `#` are skipped, and so is a first line naming the columns
-(`table,start,...`). START and COUNT are decimal or `0x` hexadecimal. Every bad line is reported
-at its line number (docs/modbus.md).
+(`table,start,...`). START and COUNT are decimal or `0x` hexadecimal; PLC ADDRESS is spelled
+as the program's dialect spells it (`X2.0`, `D100` in a PMC program; `M0`, `D10` in a Delta
+one). Every bad line is reported at its line number (docs/modbus.md).
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ import csv
 from pathlib import Path
 
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError, Refused
-from ladderworks.core.modbus.cells import check_row
+from ladderworks.core.modbus.cells import Cells, cells_for
 from ladderworks.core.modbus.maps import LAST_ADDRESS, Access, MapRow, ModbusMap, Table
 
 _TABLE_NAMES: dict[str, Table] = {
@@ -33,8 +34,9 @@ def _number(text: str, lo: int, hi: int) -> int:
     return value
 
 
-def parse_row(cells: list[str], line: int) -> MapRow:
-    """One row from its cells (Refused, with a diagnostic, when a cell is wrong)."""
+def parse_row(cells: list[str], line: int, elements: Cells) -> MapRow:
+    """One row from its cells (Refused, with a diagnostic, when a cell is wrong); its PLC
+    elements are checked by `elements` (the program's dialect's)."""
     if len(cells) not in (5, 6):
         raise Refused("modbus-map-columns", count=len(cells))
     table = _TABLE_NAMES.get(cells[0].strip().lower())
@@ -54,12 +56,14 @@ def parse_row(cells: list[str], line: int) -> MapRow:
     if width != 1 and table.bits:
         raise Refused("modbus-map-bit-width", table=table.value)
     row = MapRow(table, start, count, cells[3].strip(), access, width, line)
-    check_row(row)
+    elements.check(row)
     return row
 
 
-def parse_map(text: str, name: str = "map") -> ModbusMap:
-    """A map from CSV text; DiagnosticError with every bad line's diagnostic."""
+def parse_map(text: str, name: str = "map", dialect: str = "seed") -> ModbusMap:
+    """A map from CSV text for programs of `dialect`; DiagnosticError with every bad line's
+    diagnostic."""
+    elements = cells_for(dialect)
     rows: list[MapRow] = []
     problems: list[Diagnostic] = []
     reader = csv.reader(text.splitlines())
@@ -69,7 +73,7 @@ def parse_map(text: str, name: str = "map") -> ModbusMap:
         if not rows and not problems and cells[0].strip().lower() == "table":
             continue  # the column names
         try:
-            row = parse_row(cells, number)
+            row = parse_row(cells, number, elements)
         except DiagnosticError as error:
             problems.extend(Diagnostic(d.code, d.args, line=number, column=1)
                             for d in error.diagnostics)
@@ -88,6 +92,6 @@ def parse_map(text: str, name: str = "map") -> ModbusMap:
     return ModbusMap(name, tuple(rows))
 
 
-def read_map(path: str | Path) -> ModbusMap:
+def read_map(path: str | Path, dialect: str = "seed") -> ModbusMap:
     """A map from a CSV file (UTF-8, a BOM allowed); OSError or DiagnosticError."""
-    return parse_map(Path(path).read_text(encoding="utf-8-sig"), str(path))
+    return parse_map(Path(path).read_text(encoding="utf-8-sig"), str(path), dialect)

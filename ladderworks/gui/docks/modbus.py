@@ -19,7 +19,6 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.modbus.bridge import PlcBridge
-from ladderworks.core.modbus.maps import default_map
 from ladderworks.core.modbus.server import (
     DEFAULT_HOST,
     DEFAULT_PORT,
@@ -110,8 +109,7 @@ class ModbusDock(Retranslating, QDockWidget):
                                    ).format(f"{DEFAULT_HOST}:{DEFAULT_PORT}")
             self.show_state()
             return False
-        run = self.session.run
-        bridge = PlcBridge(run, default_map(run.dialect))
+        bridge = PlcBridge(self.session.run)  # the loaded program's dialect's map
         bridge.listeners.append(self.written.emit)
         server = ModbusServer(bridge, host, port)
         try:
@@ -167,7 +165,7 @@ class ModbusDock(Retranslating, QDockWidget):
     def _program_loaded(self, _binary: object) -> None:
         """A new program: serve it with its dialect's map."""
         if self.server is not None:
-            self.server.bridge.map = default_map(self.session.run.dialect)
+            self.server.bridge.use()
             self.show_state()
 
     def _publish_if_idle(self) -> None:

@@ -69,3 +69,28 @@ def test_bad_options_are_refused(option: list[str], text: str,
                                  capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["serve", str(SPINDLE), *option]) == 2
     assert text in capsys.readouterr().err
+
+
+def test_serve_takes_a_delta_program_s_period_and_map() -> None:
+    program = CHECKOUT / "resources" / "examples" / "delta" / "cmp_d10.txt"
+    with subprocess.Popen([sys.executable, "-m", "ladderworks.cli", "serve", str(program),
+                           "--modbus", "127.0.0.1:0"], cwd=CHECKOUT, text=True,
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE) as served:
+        try:
+            assert served.stdout is not None
+            first = served.stdout.readline()
+            assert "(delta, 10 ms scans)" in first and "map delta" in first
+            found = SERVING.search(first)
+            assert found, first
+            client = ModbusTcpClient("127.0.0.1", port=int(found.group(1)), timeout=TIMEOUT)
+            assert client.connect()
+            assert not client.write_register(0x1000 + 10, 30).isError()  # D10
+            assert not client.write_coil(0x0400, True).isError()  # X0
+            assert wait_for(lambda: client.read_coils(0x0502, count=1).bits[0])  # Y2
+            client.close()
+            served.send_signal(signal.SIGTERM)
+            assert served.wait(timeout=2) == 0
+        finally:
+            if served.poll() is None:
+                served.kill()
+                served.wait()

@@ -8,7 +8,7 @@ import pytest
 
 from ladderworks.core.address import parse_address
 from ladderworks.core.diagnostics import DiagnosticError
-from ladderworks.core.modbus import cells
+from ladderworks.core.modbus.cells import PMC_CELLS as cells
 from ladderworks.core.modbus.map_file import parse_map, read_map
 from ladderworks.core.modbus.maps import (
     DEFAULT_MAPS,
@@ -28,8 +28,8 @@ def element(modbus_map: ModbusMap, table: Table, address: int) -> str:
     assert row is not None, (table, address)
     index = address - row.start
     if table.bits:
-        return str(cells.bit_address(row, index))
-    return str(cells.register_address(row, index))
+        return str(cells.bit(row, index))
+    return str(cells.register(row, index))
 
 
 def test_pmc_coil_8b_plus_n_is_bit_n_of_x_byte_b() -> None:
@@ -72,7 +72,7 @@ def test_pmc_y_bits_are_discrete_inputs_and_r_bits_coils() -> None:
 
 def test_every_pmc_row_lies_in_its_area() -> None:
     for row in PMC_MAP.rows:
-        cells.check_row(row)  # raises when a row runs past its area
+        cells.check(row)  # raises when a row runs past its area
 
 
 @pytest.mark.parametrize("modbus_map", [PMC_MAP, DELTA_MAP, FATEK_MAP])
@@ -185,4 +185,4 @@ def test_a_map_file_with_a_bom_reads(tmp_path: Path) -> None:
     path = tmp_path / "bom.csv"
     path.write_bytes("\ufeffcoils,0,8,X0.0,rw\r\n".encode())
     assert read_map(path).rows[0].device == "X0.0"
-    assert cells.first_element(read_map(path).rows[0]) == parse_address("X0.0")
+    assert cells.first(read_map(path).rows[0]) == parse_address("X0.0")
