@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from ladderworks.core.address import Address
+from ladderworks.core.diagnostics import DiagnosticError
 from ladderworks.core.modbus.cells import Cells, PmcCells, cells_for
 from ladderworks.core.modbus.maps import MapRow, ModbusMap, Table, default_map
 from ladderworks.core.plc.session import MACHINE_AREAS, PlcRun
@@ -38,6 +39,22 @@ def program_dialect(plc: PlcRun) -> str:
     return str(getattr(loaded, "dialect", "seed"))
 
 
+def servable(modbus_map: ModbusMap, cells: Cells) -> ModbusMap:
+    """The rows of `modbus_map` whose elements all exist in the dialect (`cells`): a default
+    map may name devices a dialect does not have (Fatek R5000-R5998); a client asking for
+    them gets exception 02, as for any address outside the map."""
+    rows = []
+    for row in modbus_map.rows:
+        try:
+            cells.check(row)
+        except DiagnosticError:
+            continue
+        rows.append(row)
+    if len(rows) == len(modbus_map.rows):
+        return modbus_map
+    return ModbusMap(modbus_map.name, tuple(rows))
+
+
 class PlcBridge:
     """Reads and writes the Modbus tables of a map on the PLC of `plc`.
 
@@ -56,8 +73,8 @@ class PlcBridge:
         """Serve `modbus_map` (default: the dialect's) with the elements of `dialect`
         (default: the loaded program's): after a program of another dialect is loaded."""
         name = dialect or program_dialect(self.plc)
-        self.map = modbus_map or default_map(name)
         self.cells = cells_for(name)
+        self.map = modbus_map or servable(default_map(name), self.cells)
 
     def _chunks(self, table: Table, address: int, count: int, write: bool) -> list[Chunk]:
         """The rows a request covers, or ModbusError 02 when an address is not mapped (or

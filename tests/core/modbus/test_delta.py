@@ -11,10 +11,10 @@ from ladderworks.core import dialects
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.diagnostics import DiagnosticError
 from ladderworks.core.il import parse_file
-from ladderworks.core.modbus.bridge import PlcBridge
+from ladderworks.core.modbus.bridge import PlcBridge, servable
 from ladderworks.core.modbus.cells import cells_for
 from ladderworks.core.modbus.map_file import parse_map
-from ladderworks.core.modbus.maps import DELTA_MAP, Table
+from ladderworks.core.modbus.maps import DELTA_MAP, Access, MapRow, ModbusMap, Table
 from ladderworks.core.modbus.server import ModbusServer
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.paths import EXAMPLES
@@ -102,3 +102,12 @@ def test_a_delta_map_file_names_delta_devices() -> None:
         parse_map("coils,0,8,M0,rw\ncoils,8,8,X8,rw\nholding,0,1,D0,rw\n", "bad.csv", "delta")
     found = {d.line: d.code for d in caught.value.diagnostics}
     assert found == {2: "device-octal", 3: "modbus-map-width"}
+
+
+def test_rows_naming_devices_the_dialect_lacks_are_not_served() -> None:
+    good = MapRow(Table.HOLDING, 0, 10, "D0", Access.READ_WRITE, 2)
+    past = MapRow(Table.HOLDING, 100, 10, "D9995", Access.READ_WRITE, 2)  # D10000 is none
+    unknown = MapRow(Table.COILS, 0, 8, "Q0", Access.READ_WRITE)  # no Q in Delta
+    served = servable(ModbusMap("mixed", (good, past, unknown)), cells_for("delta"))
+    assert served.rows == (good,)
+    assert servable(DELTA_MAP, cells_for("delta")) is DELTA_MAP
