@@ -7,6 +7,7 @@ from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
 from ladderworks.gui.main_window import MainWindow
+from ladderworks.gui.translation import UiLanguage
 from tests.core.modbus.conftest import spindle_binary
 from tests.gui.plc_docks_help import plc_docks
 
@@ -68,3 +69,16 @@ def test_an_address_in_use_or_malformed_is_said(window: MainWindow) -> None:
     assert f"Cannot listen on 127.0.0.1:{port}" in other.status.text()
     dock.stop_server()
     other.deleteLater()
+
+
+def test_turkish(qtbot: QtBot, window: MainWindow) -> None:
+    dock = plc_docks(window).modbus
+    language = UiLanguage()
+    try:
+        language.apply("tr")
+        qtbot.waitUntil(lambda: dock.windowTitle() == "Modbus sunucusu")
+        assert dock.button.text() == "Sunucuyu başlat"
+        assert window.menus.actions_by_name["action_dock_modbus"].text() == "Modbus sunucusu"
+        assert "Durduruldu" in dock.status.text()
+    finally:
+        language.apply("en")
