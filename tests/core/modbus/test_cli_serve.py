@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 import signal
+import socket
 import subprocess
 import sys
 from pathlib import Path
@@ -94,3 +95,12 @@ def test_serve_takes_a_delta_program_s_period_and_map() -> None:
             if served.poll() is None:
                 served.kill()
                 served.wait()
+
+
+def test_a_port_in_use_is_said_and_exit_2(capsys: pytest.CaptureFixture[str]) -> None:
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        assert main(["serve", str(SPINDLE), "--modbus", f"127.0.0.1:{port}"]) == 2
+    assert f"Modbus server on 127.0.0.1:{port}: cannot listen" in capsys.readouterr().err
