@@ -897,6 +897,61 @@
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
+        <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
+        <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
+        <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
+        <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
+        <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
+        <source>{count} addresses from {start} run past Modbus address 65535</source>
+        <translation>{count} addresses from {start} run past Modbus address 65535</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
+        <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
+        <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <source>{table} cannot be written over Modbus: the access must be r</source>
+        <translation>{table} cannot be written over Modbus: the access must be r</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
+        <source>{table} are bits: a width is for registers only</source>
+        <translation>{table} are bits: a width is for registers only</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="241"/>
+        <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
+        <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <source>{table} {start}-{end} overlap the row on line {other}</source>
+        <translation>{table} {start}-{end} overlap the row on line {other}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <source>the map has no row</source>
+        <translation>the map has no row</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
+        <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
+    </message>
 </context>
 <context>
     <name>ErrorList</name>
@@ -1746,6 +1801,64 @@
         <location filename="../ladderworks/gui/undo_texts.py" line="16"/>
         <source>&amp;Redo {0}</source>
         <translation>&amp;Redo {0}</translation>
+    </message>
+</context>
+<context>
+    <name>ModbusDock</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="89"/>
+        <source>Modbus server</source>
+        <translation>Modbus server</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="90"/>
+        <source>&amp;Address (host:port):</source>
+        <translation>&amp;Address (host:port):</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="91"/>
+        <source>Clients connected:</source>
+        <translation>Clients connected:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="92"/>
+        <source>Requests a second:</source>
+        <translation>Requests a second:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="108"/>
+        <source>Type the address as host:port, e.g. {0}.</source>
+        <translation>Type the address as host:port, e.g. {0}.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="118"/>
+        <source>Cannot listen on {0}: {1}</source>
+        <translation>Cannot listen on {0}: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="146"/>
+        <source>Stop server</source>
+        <translation>Stop server</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="147"/>
+        <source>Start server</source>
+        <translation>Start server</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="151"/>
+        <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
+        <translation>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="155"/>
+        <source>Other computers on the network can read and write this PLC.</source>
+        <translation>Other computers on the network can read and write this PLC.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="160"/>
+        <source>Stopped. An HMI on this computer connects to {0} once started.</source>
+        <translation>Stopped. An HMI on this computer connects to {0} once started.</translation>
     </message>
 </context>
 <context>

@@ -897,6 +897,61 @@
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
+        <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
+        <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
+        <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
+        <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
+        <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
+        <source>{count} addresses from {start} run past Modbus address 65535</source>
+        <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
+        <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
+        <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <source>{table} cannot be written over Modbus: the access must be r</source>
+        <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
+        <source>{table} are bits: a width is for registers only</source>
+        <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="241"/>
+        <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
+        <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <source>{table} {start}-{end} overlap the row on line {other}</source>
+        <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <source>the map has no row</source>
+        <translation>haritada hiç satır yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
+        <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
+    </message>
 </context>
 <context>
     <name>ErrorList</name>
@@ -1746,6 +1801,64 @@
         <location filename="../ladderworks/gui/undo_texts.py" line="16"/>
         <source>&amp;Redo {0}</source>
         <translation>&amp;Yinele: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>ModbusDock</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="89"/>
+        <source>Modbus server</source>
+        <translation>Modbus sunucusu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="90"/>
+        <source>&amp;Address (host:port):</source>
+        <translation>&amp;Adres (sunucu:port):</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="91"/>
+        <source>Clients connected:</source>
+        <translation>Bağlı istemciler:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="92"/>
+        <source>Requests a second:</source>
+        <translation>Saniyedeki istek:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="108"/>
+        <source>Type the address as host:port, e.g. {0}.</source>
+        <translation>Adresi sunucu:port olarak yazın, ör. {0}.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="118"/>
+        <source>Cannot listen on {0}: {1}</source>
+        <translation>{0} dinlenemiyor: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="146"/>
+        <source>Stop server</source>
+        <translation>Sunucuyu durdur</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="147"/>
+        <source>Start server</source>
+        <translation>Sunucuyu başlat</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="151"/>
+        <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
+        <translation>{0}:{1} dinleniyor (Modbus/TCP, her birim no), harita: {2}.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="155"/>
+        <source>Other computers on the network can read and write this PLC.</source>
+        <translation>Ağdaki başka bilgisayarlar bu PLC&apos;yi okuyup yazabilir.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="160"/>
+        <source>Stopped. An HMI on this computer connects to {0} once started.</source>
+        <translation>Durduruldu. Başlatıldığında bu bilgisayardaki bir HMI {0} adresine bağlanır.</translation>
     </message>
 </context>
 <context>

@@ -222,6 +222,29 @@ MESSAGES: dict[str, str] = {
     "preset-fixed": QT_TRANSLATE_NOOP(
         "Diagnostic",
         "TMRB {number}: its preset is fixed in the program and cannot be changed here"),
+    # a Modbus map file (docs/modbus.md)
+    "modbus-map-columns": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)"),
+    "modbus-map-table": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not a Modbus table (use coils, discrete, holding or input)"),
+    "modbus-map-number": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not a number from {lo} to {hi}"),
+    "modbus-map-end": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{count} addresses from {start} run past Modbus address 65535"),
+    "modbus-map-access": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}': the access must be r (read) or rw (read and write)"),
+    "modbus-map-read-only": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{table} cannot be written over Modbus: the access must be r"),
+    "modbus-map-bit-width": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{table} are bits: a width is for registers only"),
+    "modbus-map-area": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{count} elements from {device} run past the end of area {area} ({ranges})"),
+    "modbus-map-overlap": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{table} {start}-{end} overlap the row on line {other}"),
+    "modbus-map-empty": QT_TRANSLATE_NOOP("Diagnostic", "the map has no row"),
+    "modbus-map-width": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{device}: a device's register is 16 bits: the width must be 2"),
 }
 
 

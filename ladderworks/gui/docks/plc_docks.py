@@ -13,6 +13,7 @@ from ladderworks.gui.docks.alarms import AlarmDock
 from ladderworks.gui.docks.bit_display import BitDisplayDock
 from ladderworks.gui.docks.diagnostic import DiagnosticDock
 from ladderworks.gui.docks.force_list import ForceListDock
+from ladderworks.gui.docks.modbus import ModbusDock
 from ladderworks.gui.docks.online import ACTION_NAMES, OnlineMode
 from ladderworks.gui.docks.plc_control import PlcControlDock
 from ladderworks.gui.docks.scenario import RECORD, RUN, ScenarioDock
@@ -41,6 +42,7 @@ class PlcDocks:
     tables: PlcTablesDock
     scenario: ScenarioDock
     time_travel: TimeTravel  # PLC › Keep scan history
+    modbus: ModbusDock  # PLC › Modbus server
 
     @property
     def others(self) -> dict[str, QDockWidget]:
@@ -103,6 +105,7 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     force_list = ForceListDock(session, window)
     online = OnlineMode(editor, session, window)
     travel = TimeTravel(session, diagnostic, chart, online, window)
+    modbus = ModbusDock(session, window)
 
     plc = "menu_plc"
     menus.add_dock(control, "action_dock_plc_control", RIGHT, plc, separator=True)
@@ -136,8 +139,13 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
         action.triggered.connect(scenario.raise_)
         menus.add(plc, action)
     menus.add(plc, travel.action)
+    menus.add_dock(modbus, "action_dock_modbus", RIGHT, plc, separator=True)
+    modbus.hide()
+    _raise_when_shown(window, modbus)
+    window.tabifyDockWidget(control, modbus)
     app = QCoreApplication.instance()
     if app is not None:
+        app.aboutToQuit.connect(modbus.stop_server)  # the server thread ends with the program
         app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
     return PlcDocks(session, control, diagnostic, force_list, online, bits, chart, alarms,
-                    tables, scenario, travel)
+                    tables, scenario, travel, modbus)

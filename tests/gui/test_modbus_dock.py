@@ -1,0 +1,84 @@
+"""PLC › Modbus server: started for the console's PLC, a real client drives what the docks show."""
+
+from __future__ import annotations
+
+from pymodbus.client import ModbusTcpClient
+from pytestqt.qtbot import QtBot
+
+from ladderworks.core.address import parse_address
+from ladderworks.gui.main_window import MainWindow
+from ladderworks.gui.translation import UiLanguage
+from tests.core.modbus.conftest import spindle_binary
+from tests.gui.plc_docks_help import plc_docks
+
+
+def test_the_menu_entry_shows_the_dock(window: MainWindow) -> None:
+    docks = plc_docks(window)
+    action = window.menus.actions_by_name["action_dock_modbus"]
+    assert action in window.menus.menus["menu_plc"].actions()
+    assert action.text() == "Modbus server"
+    action.trigger()
+    assert docks.modbus.isVisible()
+    assert docks.modbus.address.text() == "127.0.0.1:5020"  # loopback unless told
+
+
+def test_a_client_drives_the_running_plc_and_the_docks_see_it(
+        qtbot: QtBot, window: MainWindow) -> None:
+    docks = plc_docks(window)
+    session, dock = docks.session, docks.modbus
+    assert session.load(spindle_binary()) == []
+    session.start()
+    dock.show()
+    dock.address.setText("127.0.0.1:0")
+    dock.button.click()
+    assert dock.running and dock.server is not None
+    assert "Listening on 127.0.0.1:" in dock.status.text() and "map: pmc" in dock.status.text()
+    assert dock.button.text() == "Stop server" and not dock.address.isEnabled()
+    client = ModbusTcpClient("127.0.0.1", port=dock.server.port, timeout=3)
+    try:
+        assert client.connect()
+        assert not client.write_coils(17, [True, False, True]).isError()  # X2.1, X2.3
+        session.run_scans(1)  # the virtual clock: one scan
+        assert client.read_holding_registers(3030, count=1).registers == [60]
+        snapshots: list[object] = []
+        session.snapshot_ready.connect(snapshots.append)
+        assert not client.write_register(20010, 42).isError()  # D10, PLC on the virtual clock
+        qtbot.waitUntil(lambda: bool(snapshots), timeout=3000)  # published to the docks
+        assert session.snapshot().read(parse_address("D10")) == 42
+        dock.show_figures()
+        assert dock.clients.text() == "1"
+    finally:
+        client.close()
+    dock.button.click()
+    assert not dock.running and dock.button.text() == "Start server"
+    assert "Stopped" in dock.status.text()
+
+
+def test_an_address_in_use_or_malformed_is_said(window: MainWindow) -> None:
+    dock = plc_docks(window).modbus
+    dock.address.setText("here")
+    assert not dock.start_server()
+    assert "host:port" in dock.status.text()
+    dock.address.setText("127.0.0.1:0")
+    assert dock.start_server()
+    assert dock.server is not None
+    port = dock.server.port
+    other = type(dock)(dock.session, window)
+    other.address.setText(f"127.0.0.1:{port}")
+    assert not other.start_server()
+    assert f"Cannot listen on 127.0.0.1:{port}" in other.status.text()
+    dock.stop_server()
+    other.deleteLater()
+
+
+def test_turkish(qtbot: QtBot, window: MainWindow) -> None:
+    dock = plc_docks(window).modbus
+    language = UiLanguage()
+    try:
+        language.apply("tr")
+        qtbot.waitUntil(lambda: dock.windowTitle() == "Modbus sunucusu")
+        assert dock.button.text() == "Sunucuyu başlat"
+        assert window.menus.actions_by_name["action_dock_modbus"].text() == "Modbus sunucusu"
+        assert "Durduruldu" in dock.status.text()
+    finally:
+        language.apply("en")
