@@ -110,7 +110,7 @@ def commands(python: Path, name: str, args: list[str]) -> list[list[str]]:
         return [[py, "-m", "ruff", "check", *LINTED]]
     if name == "test":
         return [[py, "-m", "ruff", "check", *LINTED], [py, "-m", "mypy", "ladderworks"],
-                [py, "-m", "pytest", "-q", *args]]
+                [py, "-m", "pytest", "-q", "-n", "auto", *args]]
     if name == "bench":
         return [[py, str(script), *args]
                 for script in sorted((CHECKOUT / "benchmarks").glob("*.py"))]

@@ -59,13 +59,13 @@ def test_an_old_python_is_named(monkeypatch: pytest.MonkeyPatch) -> None:
     assert problem is not None and sys.executable in problem
 
 
-def test_test_runs_ruff_mypy_then_the_whole_suite_and_run_starts_the_ide() -> None:
+def test_test_runs_ruff_mypy_then_the_whole_suite_in_parallel_and_run_starts_the_ide() -> None:
     python = Path("venv/bin/python")
     ruff, mypy, pytest_run = dev.commands(python, "test", [])
     assert ruff == [str(python), "-m", "ruff", "check", "ladderworks", "tests", "benchmarks",
                     "tools"]
     assert mypy == [str(python), "-m", "mypy", "ladderworks"]
-    assert pytest_run == [str(python), "-m", "pytest", "-q"]
+    assert pytest_run == [str(python), "-m", "pytest", "-q", "-n", "auto"]  # pytest-xdist
     assert dev.commands(python, "run", ["a.LAD"]) == [[str(python), "-m", "ladderworks", "a.LAD"]]
     assert dev.EXTRAS["run"] == () and dev.EXTRAS["test"] == ("test",)
 
