@@ -54,6 +54,8 @@ def measure(before: bool, seconds: float) -> None:
     from ladderworks.gui.translation import UiLanguage
 
     snapshot_gate.UPDATE_ALWAYS = before
+    if os.environ.get("SHARE"):
+        snapshot_gate.SHARE = float(os.environ["SHARE"])
     if os.environ.get("SWITCH"):
         sys.setswitchinterval(float(os.environ["SWITCH"]))
     guard_singletons()

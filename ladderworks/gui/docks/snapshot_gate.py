@@ -26,9 +26,10 @@ class UpdateBudget:
     """Lets an update run when the GUI thread's CPU time since the last one (the update, the
     repaints it caused, every other dock's work) is at most `share` of the time gone by."""
 
-    def __init__(self, share: float = SHARE, clock: Callable[[], float] = time.perf_counter,
+    def __init__(self, share: float | None = None,
+                 clock: Callable[[], float] = time.perf_counter,
                  cpu: Callable[[], float] = time.thread_time) -> None:
-        self.share = share
+        self.share = share if share is not None else SHARE
         self.clock = clock
         self.cpu = cpu  # this thread's CPU time: the GUI thread's, as updates run there
         self.marks: tuple[float, float] | None = None  # (clock, cpu) when the last one began

@@ -194,8 +194,8 @@ class PlcTablesDock(Retranslating, QDockWidget):
         kind = self._current_kind()
         if kind is None or not self.isVisible():
             return
+        self.gate.flush()  # a snapshot held back: the table shown takes a new one
         self._catch_up(kind)
-        self.gate.flush()
         if kind in self._unfitted:  # it missed a fit while hidden
             self._fit_columns(kind)
 
