@@ -12,6 +12,8 @@ when shown, within the GUI thread's share: `gui/docks/snapshot_gate.py`).
 Run: python benchmarks/realtime_docks.py [SECONDS] [--fifo]
 `--fifo` (Linux, root) runs the process at SCHED_FIFO priority so that other processes of a
 busy machine do not show in the figures (the GUI and scan threads still share the GIL).
+Environment, for experiments: SETS="technician" (the dock sets to run), SHARE=0.15 (the GUI
+thread's share, `snapshot_gate.SHARE`), PROFILE=1 (cProfile of the GUI thread per set).
 """
 
 from __future__ import annotations
@@ -56,8 +58,6 @@ def measure(before: bool, seconds: float) -> None:
     snapshot_gate.UPDATE_ALWAYS = before
     if os.environ.get("SHARE"):
         snapshot_gate.SHARE = float(os.environ["SHARE"])
-    if os.environ.get("SWITCH"):
-        sys.setswitchinterval(float(os.environ["SWITCH"]))
     guard_singletons()
     app = QApplication.instance() or QApplication([])
     folder = tempfile.mkdtemp()

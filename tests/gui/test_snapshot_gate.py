@@ -166,3 +166,24 @@ def test_docks_update_without_the_engine_lock(qtbot: QtBot, session: PlcSession)
     session.run_scans(1)
     session.run_scans(1)
     assert free == [True, True]
+
+
+def test_the_chart_lets_a_due_scan_in_between_its_lanes_only_while_the_thread_scans(
+        qtbot: QtBot, session: PlcSession, monkeypatch: pytest.MonkeyPatch) -> None:
+    from ladderworks.gui.docks.time_chart import TimeChartDock
+
+    chart = TimeChartDock(session)
+    qtbot.addWidget(chart)
+    chart.show()
+    chart.signals_edit.setText("X2.1 R1.0 R9091.1")
+    assert chart.start()
+    session.run_scans(2)
+    sleeps: list[float] = []
+    monkeypatch.setattr(snapshot_gate.time, "sleep", sleeps.append)
+    chart.gate.flush()
+    session.run_scans(1)
+    assert sleeps == []  # the virtual clock: nothing to let in
+    monkeypatch.setattr(PlcRun, "threaded", property(lambda _self: True))
+    chart.gate.update(session.snapshot())
+    assert len(sleeps) == 3 and all(0 < s < 0.001 for s in sleeps)  # one per bit lane
+    chart.stop()
