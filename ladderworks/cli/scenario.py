@@ -24,7 +24,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "test", help="run scenario files (FANUC signal operations + EXPECT/WAITFOR) on a program",
         description="Run scenario files. PROGRAM may be left out when every scenario names its "
                     "program on a line PROGRAM,path; when given, it is used for every scenario.")
-    test.add_argument("files", metavar="[PROGRAM] SCENARIO", nargs="+")
+    test.add_argument("files", metavar="FILE", nargs="+",
+                      help="[PROGRAM] SCENARIO...: the program to run every scenario on "
+                           "(optional), then the scenario files")
     test.add_argument("--junit", metavar="FILE", help="write a JUnit XML report to FILE")
     test.add_argument("--scan-period", type=int, default=DEFAULT_PERIOD_MS, metavar="MS",
                       help=f"scan period in ms (default {DEFAULT_PERIOD_MS})")
