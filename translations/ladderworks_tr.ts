@@ -112,77 +112,77 @@
 <context>
     <name>BitDisplay</name>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="266"/>
         <source>Forced to {0}</source>
         <translation>{0} değerine zorlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="261"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="269"/>
         <source>Click: force to the other value; right-click: force menu</source>
         <translation>Tıklama: diğer değere zorla; sağ tuş: zorlama menüsü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="279"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="287"/>
         <source>Load a program to force inputs</source>
         <translation>Girişleri zorlamak için bir program yükleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="296"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="304"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="309"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="306"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="314"/>
         <source>Release the force</source>
         <translation>Zorlamayı kaldır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="320"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
         <source>Live</source>
         <translation>Canlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="320"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
         <source>Stopped</source>
         <translation>Durduruldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="327"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="335"/>
         <source>PLC bit display</source>
         <translation>PLC BIT GÖSTERİMİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="336"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="329"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="337"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="330"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="338"/>
         <source>Byte</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="331"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="339"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="340"/>
         <source>Dec</source>
         <translation>Ondalık</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="334"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
         <source>e.g. X12</source>
         <translation>örn. X12</translation>
     </message>
@@ -819,136 +819,156 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="196"/>
-        <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
-        <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
+        <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
+        <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="207"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
+        <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
+        <source>a second PROGRAM line (the one on line {first} counts)</source>
+        <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
+        <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
+        <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
+        <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
+        <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="241"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1602,29 +1622,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="190"/>
+        <location filename="../ladderworks/gui/main_window.py" line="191"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="394"/>
+        <location filename="../ladderworks/gui/main_window.py" line="395"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="400"/>
+        <location filename="../ladderworks/gui/main_window.py" line="401"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="406"/>
+        <location filename="../ladderworks/gui/main_window.py" line="408"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="424"/>
-        <location filename="../ladderworks/gui/main_window.py" line="255"/>
-        <location filename="../ladderworks/gui/main_window.py" line="401"/>
+        <location filename="../ladderworks/gui/main_window.py" line="256"/>
+        <location filename="../ladderworks/gui/main_window.py" line="403"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1763,32 +1783,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="364"/>
+        <location filename="../ladderworks/gui/main_window.py" line="365"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="380"/>
+        <location filename="../ladderworks/gui/main_window.py" line="381"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="443"/>
+        <location filename="../ladderworks/gui/main_window.py" line="445"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="446"/>
+        <location filename="../ladderworks/gui/main_window.py" line="448"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="478"/>
+        <location filename="../ladderworks/gui/main_window.py" line="480"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="479"/>
+        <location filename="../ladderworks/gui/main_window.py" line="481"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2307,103 +2327,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="265"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="264"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="266"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="268"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="270"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="271"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="274"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="273"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="275"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Uzaklaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="276"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Yakınlaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="276"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="278"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="288"/>
         <source>{0} %</source>
         <translation>%{0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="347"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="144"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="353"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="360"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="355"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="362"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="357"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="364"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="398"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="405"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="442"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="449"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="452"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="459"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="461"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="468"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
@@ -2416,73 +2436,73 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
         <source>On-line mode</source>
         <translation>On-line mod</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
         <source>Make passive (disable)</source>
         <translation>Pasif hale getir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
         <source>Make active again</source>
         <translation>Tekrar aktif yap</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
         <source>Release the force</source>
         <translation>Zorlamayı bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="84"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="86"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="91"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>On-line mod için PLC&apos;de derlenmiş bir program gerekir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="94"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="96"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>Çizim PLC&apos;deki program değil: önce PLC kontrol ekranında derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="103"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="105"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="153"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>On-line: çizim çalışan PLC&apos;yi gösteriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="123"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: çizim değişti; artık PLC&apos;nin çalıştırdığı program değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="176"/>
         <source>Select a contact, coil or function first</source>
         <translation>Önce bir kontak, çıkış veya fonksiyon seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="178"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="180"/>
         <source>This element has no op in the PLC program</source>
         <translation>Bu elemanın PLC programında karşılığı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="203"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Sinyalini zorlamak için bir kontak veya çıkış seçin</translation>
     </message>
@@ -2490,153 +2510,153 @@
 <context>
     <name>PlcTables</name>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="107"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="111"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="187"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="111"/>
         <source>Type</source>
         <translation>Tip</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="105"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="115"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="119"/>
         <source>Preset (ms)</source>
         <translation>Ayar değeri (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="104"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="114"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="118"/>
         <source>Preset (ticks)</source>
         <translation>Ayar değeri (tık)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="106"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="110"/>
         <source>Precision</source>
         <translation>Hassasiyet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="112"/>
         <source>Tick (ms)</source>
         <translation>Adım (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="113"/>
         <source>Delay (ms)</source>
         <translation>Gecikme (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="116"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="120"/>
         <source>Timer number (1-{0})</source>
         <translation>Zamanlayıcı numarası (1-{0})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="183"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="192"/>
         <source>Preset</source>
         <translation>Ayar değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="184"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="193"/>
         <source>Current value</source>
         <translation>Şimdiki değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="243"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="303"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="243"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="252"/>
         <source>Bytes</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="244"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="253"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="244"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="299"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="303"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="308"/>
         <source>Bits 7..0</source>
         <translation>Bitler 7..0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="192"/>
         <source>Counter number (1-20)</source>
         <translation>Sayıcı numarası (1-20)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="252"/>
         <source>Address (D)</source>
         <translation>Adres (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="308"/>
         <source>Address (K)</source>
         <translation>Adres (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="57"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="283"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="174"/>
         <source>TMRB: the preset is fixed in the program</source>
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="286"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="317"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="288"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="319"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="321"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="291"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="322"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="329"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
@@ -3107,118 +3127,118 @@
 <context>
     <name>Scenario</name>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="90"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="92"/>
         <source>Run scenario</source>
         <translation>Senaryo çalıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="91"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="93"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="210"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Senaryo dosyaları (*.csv);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="101"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="103"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="119"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="164"/>
         <source>passed</source>
         <translation>geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="165"/>
         <source>FAILED</source>
         <translation>BAŞARISIZ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="174"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: {1} denetimin tümü geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="177"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {2} denetimden {1} tanesi başarısız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="209"/>
         <source>Save the recorded scenario</source>
         <translation>Kaydedilen senaryoyu sakla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="198"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="218"/>
         <source>recorded in LadderWorks</source>
         <translation>LadderWorks ile kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="222"/>
         <source>Recording inputs and forces...</source>
         <translation>Girişler ve zorlamalar kaydediliyor...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="210"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
         <source>Recorded {0} changes</source>
         <translation>{0} değişiklik kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="239"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="242"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="253"/>
         <source>PLC scenario</source>
         <translation>PLC senaryosu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="233"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="254"/>
         <source>Run scenario...</source>
         <translation>Senaryo çalıştır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="234"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="255"/>
         <source>Record scenario</source>
         <translation>Senaryo kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="257"/>
         <source>Line</source>
         <translation>Satır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="257"/>
         <source>Check</source>
         <translation>Denetim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="258"/>
         <source>Expected</source>
         <translation>Beklenen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="258"/>
         <source>Got</source>
         <translation>Okunan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="238"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="259"/>
         <source>Time (ms)</source>
         <translation>Zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="238"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="259"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
@@ -3284,147 +3304,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="157"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="161"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="181"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="193"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="205"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="218"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="347"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="355"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="369"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="365"/>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="373"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="379"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="399"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="401"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="443"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="444"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="445"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="446"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="448"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="449"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="442"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="455"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="458"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>
@@ -3618,22 +3638,22 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="106"/>
+        <location filename="../ladderworks/gui/palette.py" line="111"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="107"/>
+        <location filename="../ladderworks/gui/palette.py" line="112"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="108"/>
+        <location filename="../ladderworks/gui/palette.py" line="25"/>
         <source>Seed manual instructions</source>
         <translation>Kılavuzdaki komutlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="109"/>
+        <location filename="../ladderworks/gui/palette.py" line="26"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC komutları</translation>
     </message>

@@ -195,7 +195,8 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),
     "scenario-command": QT_TRANSLATE_NOOP(
         "Diagnostic",
-        "unknown command '{text}' (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)"),
+        "unknown command '{text}'"
+        " (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)"),
     "scenario-wait": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a wait in ms"),
     "scenario-negative": QT_TRANSLATE_NOOP("Diagnostic", "negative wait {text} ms"),
     "scenario-fields": QT_TRANSLATE_NOOP("Diagnostic", "{command} needs {expected}"),
@@ -205,6 +206,16 @@ MESSAGES: dict[str, str] = {
     "scenario-type": QT_TRANSLATE_NOOP(
         "Diagnostic", "unknown type '{text}' (use BIT, BYTE, WORD or DWORD)"),
     "scenario-bit": QT_TRANSLATE_NOOP("Diagnostic", "'{text}': only bits can be forced"),
+    "scenario-no-program": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the scenario names no program: add a line PROGRAM,path"
+        " (relative to the scenario file) or give the program on the command line"),
+    "scenario-program-twice": QT_TRANSLATE_NOOP(
+        "Diagnostic", "a second PROGRAM line (the one on line {first} counts)"),
+    "scenario-program": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the program '{path}' cannot be loaded: {reason}"),
+    "scenario-other-program": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the scenario names the program '{path}'; it runs on the one loaded"
+        " in the PLC"),
     # the PMC parameter file (PROGRAM.LAD.prm)
     "prm-line": QT_TRANSLATE_NOOP(
         "Diagnostic",

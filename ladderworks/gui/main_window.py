@@ -399,6 +399,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
             self.errors.set_diagnostics(problems)
             self.errors.show()
             return translate("MainWindow", "Compile finished, but the PLC refused the program")
+        self.plc_docks.scenario.program_path = self.path  # a recorded scenario's PROGRAM
         name = self.path.name if self.path else translate("MainWindow", "Untitled")
         # printed when the control screen is shown (~1.4 s of F9 behind a hidden dock)
         self.plc_docks.control.show_loaded(lambda: print_program(program), name)

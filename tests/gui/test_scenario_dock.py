@@ -133,3 +133,35 @@ def test_a_bad_line_of_the_scenario_is_said_in_turkish(qtbot: QtBot) -> None:
     finally:
         language.apply("en")
         session.stop()
+
+
+def test_a_recording_names_the_plc_program_and_a_run_warns_of_another(
+        qtbot: QtBot, tmp_path: Path) -> None:
+    session = running_text(LATCH)
+    dock, _chart = docks(qtbot, session)
+    dock.program_path = tmp_path / "programs" / "latch.LAD"
+    dock.start_recording()
+    session.set_bit(parse_address("X2.1"), 1)
+    session.run_scans(2)
+    text = dock.stop_recording()
+    saved = tmp_path / "scenarios" / "latch.scenario.csv"
+    saved.parent.mkdir()
+    assert dock.save(saved, text)
+    lines = saved.read_text(encoding="utf-8").splitlines()
+    assert lines[:2] == ["PMC SIGNAL DATA", "PROGRAM,../programs/latch.LAD"]
+    with qtbot.waitSignal(dock.finished) as blocker:
+        dock.run_file(saved)
+    assert blocker.args[0].passed  # no warning: the same program
+    assert dock.checks.topLevelItemCount() == len(blocker.args[0].checks)
+    dock.program_path = tmp_path / "programs" / "other.LAD"
+    language = UiLanguage()
+    language.apply("tr")
+    try:
+        with qtbot.waitSignal(dock.finished) as blocker:
+            dock.run_file(saved)
+        assert blocker.args[0].passed  # a warning: it runs on the PLC's program
+        text = dock.checks.topLevelItem(0).text(0)
+        assert text.startswith("satır 2") and "PLC'ye yüklenmiş" in text, text
+    finally:
+        language.apply("en")
+        session.stop()

@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import contextlib
+import os
 from dataclasses import dataclass
+from pathlib import Path
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.plc.scenario import HEADER
@@ -38,9 +41,10 @@ _COMMANDS = {"set": "SET", "write": "SET", "force": "FORCE", "release": "RELEASE
 class ScenarioRecorder:
     """Listens to a PlcRun's input changes from `start()` to `stop()`; `text()` is the file."""
 
-    def __init__(self, plc: PlcRun, remark: str = "") -> None:
+    def __init__(self, plc: PlcRun, remark: str = "", program: Path | None = None) -> None:
         self.plc = plc
         self.remark = remark
+        self.program = program  # the loaded program's file, written as the PROGRAM line
         self.events: list[Recorded] = []
         self.start_ms = 0
         self.end_ms: int | None = None
@@ -72,6 +76,8 @@ class ScenarioRecorder:
         """The scenario: one line per change, then an EXPECT of each (address, width) given
         (default: every Y byte that is not 0 at the end) at the last scan recorded."""
         lines = [HEADER]
+        if self.program is not None:
+            lines.append(f"PROGRAM,{Path(os.path.abspath(self.program)).as_posix()}")
         if self.remark:
             lines.append(f"REMARK,{self.remark}")
         last = self.start_ms
@@ -97,3 +103,18 @@ class ScenarioRecorder:
         data = self.plc.memory.areas[Area.Y]
         found = [(Address(Area.Y, byte), 1) for byte, value in enumerate(data) if value]
         return found or [(Address(Area.Y, 0), 1)]
+
+
+def relative_program(text: str, scenario_path: str | Path) -> str:
+    """The scenario text with an absolute PROGRAM path made relative to the folder the file
+    is saved in (so program and scenarios move together); as it is on another drive."""
+    lines = text.split("\n")
+    for index, line in enumerate(lines):
+        if line.startswith("PROGRAM,"):
+            program = Path(line.split(",", 1)[1])
+            if program.is_absolute():
+                folder = Path(os.path.abspath(scenario_path)).parent
+                with contextlib.suppress(ValueError):  # Windows: on another drive
+                    lines[index] = "PROGRAM," + Path(os.path.relpath(program, folder)).as_posix()
+            break
+    return "\n".join(lines)

@@ -2,7 +2,8 @@
 
 A file is `PMC SIGNAL DATA`, then one command a line (docs/scenarios.md):
 `REMARK,text`, `SET,wait,ADDR,VALUE[,TYPE][,ADDR,VALUE[,TYPE]]...`, `EXPECT,wait,ADDR,VALUE[,TYPE]`,
-`WAITFOR,timeout,ADDR,VALUE[,TYPE]`, `FORCE,wait,BIT,VALUE` and `RELEASE,wait,BIT`.
+`WAITFOR,timeout,ADDR,VALUE[,TYPE]`, `FORCE,wait,BIT,VALUE`, `RELEASE,wait,BIT` and
+`PROGRAM,path` (the program it tests, relative to the file).
 A wait is in ms after the previous line, rounded up to the scan period. A line at time T acts
 at T: SET writes before the scan at T, EXPECT reads after it. `run_scenario` plays a parsed
 scenario on a `PlcRun`, so the session policy is shared.
@@ -27,7 +28,7 @@ TYPES: dict[str, int] = {"BIT": 0, "B": 1, "BYTE": 1, "1": 1, "WORD": 2, "W": 2,
                          "DWORD": 4, "D": 4, "4": 4}
 COMMANDS = {"S": "SET", "SET": "SET", "R": "REMARK", "REMARK": "REMARK",
             "E": "EXPECT", "EXPECT": "EXPECT", "W": "WAITFOR", "WAITFOR": "WAITFOR",
-            "FORCE": "FORCE", "RELEASE": "RELEASE"}
+            "FORCE": "FORCE", "RELEASE": "RELEASE", "PROGRAM": "PROGRAM"}
 
 @dataclass(frozen=True, slots=True)
 class Target:
@@ -69,6 +70,15 @@ class Scenario:
     remark: str = ""
     steps: list[Step] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    program: str = ""  # the PROGRAM line's path as written ("" without one)
+    program_line: int = 0  # its line (else the header's)
+
+    def program_path(self) -> Path | None:
+        """The program the file names: absolute, or relative to the file's folder."""
+        if not self.program:
+            return None
+        path = Path(self.program).expanduser()
+        return path if path.is_absolute() else Path(self.name).parent / path
 
     @property
     def ok(self) -> bool:
@@ -218,7 +228,7 @@ class _Reader:
 
 
 _NEEDS = {"SET": "a wait and at least one ADDR,VALUE", "FORCE": "a wait, a bit and 0 or 1",
-          "RELEASE": "a wait and a forced bit",
+          "RELEASE": "a wait and a forced bit", "PROGRAM": "a program path",
           "EXPECT": "a wait, ADDR and VALUE", "WAITFOR": "a timeout, ADDR and VALUE"}
 
 
@@ -230,6 +240,7 @@ def parse_scenario(text: str, name: str = "scenario",
     reader = _Reader(symbols, dialect)
     lines = text.splitlines()
     first = next((i for i, line in enumerate(lines) if line.strip()), None)
+    scenario.program_line = (first or 0) + 1
     if first is None or lines[first].strip().strip(",").upper() != HEADER:
         reader.error("scenario-header", (first or 0) + 1, 1)
         scenario.diagnostics = reader.diagnostics
@@ -247,6 +258,17 @@ def parse_scenario(text: str, name: str = "scenario",
         if command == "REMARK":
             if not scenario.remark:  # later REMARK lines are ignored, as the simulator does
                 scenario.remark = raw.split(",", 1)[1].strip() if "," in raw else ""
+            continue
+        if command == "PROGRAM":
+            path = raw.split(",", 1)[1].strip().strip('"') if "," in raw else ""
+            if not path:
+                reader.error("scenario-fields", number, 1, command=command,
+                             expected=_NEEDS[command])
+            elif scenario.program:
+                reader.error("scenario-program-twice", number, 1,
+                             first=scenario.program_line)
+            else:
+                scenario.program, scenario.program_line = path, number
             continue
         if command == "RELEASE" and len(fields) == 3:
             fields.append("0")  # RELEASE,wait,ADDR: read as an item with no value

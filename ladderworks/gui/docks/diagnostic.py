@@ -26,6 +26,7 @@ from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, Ladd
 from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
 from ladderworks.gui.docks.live_ladder import LivePower
+from ladderworks.gui.docks.snapshot_gate import SnapshotGate
 from ladderworks.gui.editor.geometry import Layout, cell_h, cell_origin, network_width
 from ladderworks.gui.editor.label_text import CommentedAddresses, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
@@ -249,6 +250,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
         # the shown program's networks as laid out, by what each was laid out from
         self._laid: dict[tuple[object, ...], LadderNetwork] = {}
         session.program_loaded.connect(self._on_program)
+        self.gate = SnapshotGate(self, self._show_snapshot, session)  # in budget
         session.snapshot_ready.connect(self._on_snapshot)
         session.forces_changed.connect(lambda _entries: self._repaint())
         self.visibilityChanged.connect(self._on_visible)
@@ -326,7 +328,12 @@ class DiagnosticDock(Retranslating, QDockWidget):
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
         self._snapshot = snapshot
-        if not self.isVisible() or self.past is not None:
+        if self.past is None:
+            self.gate.offer(snapshot)
+
+    def _show_snapshot(self, snapshot: PlcSnapshot) -> None:
+        self._snapshot = snapshot
+        if self.past is not None:
             return
         self._repaint()
         if self.follow.isChecked() and self.hits:

@@ -10,6 +10,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox
 from ladderworks.gui.docks.live_ladder import LivePower, match_networks
+from ladderworks.gui.docks.snapshot_gate import SnapshotGate
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 
@@ -46,6 +47,7 @@ class OnlineMode(QObject):
         editor.context_actions.extend(self.actions[n] for n in ACTION_NAMES[1:])
         editor.model.undo_stack.indexChanged.connect(self._edited)
         self.past: PlcSnapshot | None = None  # time travel: an earlier scan shown instead
+        self.gate = SnapshotGate(editor, self._update, session)  # shown, in budget
         session.snapshot_ready.connect(self._on_snapshot)
         session.program_loaded.connect(self._on_program)
         session.forces_changed.connect(lambda _entries: self.refresh())
@@ -127,7 +129,7 @@ class OnlineMode(QObject):
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
         if self.online and self.past is None:
-            self._update(snapshot)
+            self.gate.offer(snapshot)
 
     def refresh(self) -> None:
         """Repaint the power flow now."""

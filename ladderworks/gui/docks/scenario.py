@@ -16,7 +16,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from ladderworks.core.plc.recorder import ScenarioRecorder
+from ladderworks.core.diagnostics import Diagnostic, Severity
+from ladderworks.core.plc.recorder import ScenarioRecorder, relative_program
 from ladderworks.core.plc.scenario import (
     CheckResult,
     Scenario,
@@ -40,7 +41,7 @@ from ladderworks.gui.retranslate import Retranslating
 translate = QCoreApplication.translate
 RUN = "action_plc_run_scenario"
 RECORD = "action_plc_record_scenario"
-_PASS, _FAIL = QColor("#1a7f37"), QColor("#c00000")
+_PASS, _FAIL, _WARN = QColor("#1a7f37"), QColor("#c00000"), QColor("#b35c00")
 
 
 class ScenarioDock(Retranslating, QDockWidget):
@@ -56,6 +57,7 @@ class ScenarioDock(Retranslating, QDockWidget):
         self.chart = chart
         self.result: ScenarioResult | None = None
         self.recorder: ScenarioRecorder | None = None
+        self.program_path: Path | None = None  # the file of the program loaded in the PLC
         body = QWidget(self)
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
@@ -120,6 +122,7 @@ class ScenarioDock(Retranslating, QDockWidget):
         plc.set_parameters(self.session.parameters)
         if plc.load(binary, self.session.program) or plc.engine is None:
             return None
+        self._check_program(scenario)
         signals = _signals(scenario)
         trace = (plc.engine.start_trace([s.address for s in signals], plc.engine.period_ms,
                                         widths=[s.width for s in signals]) if signals else None)
@@ -137,11 +140,26 @@ class ScenarioDock(Retranslating, QDockWidget):
         self.finished.emit(result)
         return result
 
+    def _check_program(self, scenario: Scenario) -> None:
+        """A warning at the PROGRAM line when it names another file than the PLC's program."""
+        named = scenario.program_path()
+        if named is None or self.program_path is None:
+            return
+        try:
+            same = named.resolve() == self.program_path.resolve()
+        except OSError:
+            same = False
+        if not same:
+            scenario.diagnostics.append(Diagnostic(
+                "scenario-other-program", {"path": scenario.program}, scenario.program_line,
+                2, Severity.WARNING))
+
     def _fill(self, result: ScenarioResult) -> None:
         self.checks.clear()
         for diagnostic in result.scenario.diagnostics:  # in the UI language, no codes
             text = f"{location_text(diagnostic)}: {diagnostic_text(diagnostic)}"
-            self._item([text], _FAIL, None).setFirstColumnSpanned(True)  # not a wide Line
+            colour = _FAIL if diagnostic.is_error else _WARN
+            self._item([text], colour, None).setFirstColumnSpanned(True)  # not a wide Line
         for check in result.checks:
             state = (translate("Scenario", "passed") if check.passed
                      else translate("Scenario", "FAILED"))
@@ -151,13 +169,14 @@ class ScenarioDock(Retranslating, QDockWidget):
         for column in range(self.checks.columnCount() - 1):  # passed / FAILED in view
             self.checks.resizeColumnToContents(column)
         failed = sum(not c.passed for c in result.checks)
+        errors = sum(d.is_error for d in result.scenario.diagnostics)
         if result.passed:
             self._say(translate("Scenario", "{0}: all {1} checks passed").format(
                 Path(result.scenario.name).name, len(result.checks)))
         else:
             self._say(translate("Scenario", "{0}: {1} of {2} checks failed").format(
-                Path(result.scenario.name).name, failed + len(result.scenario.diagnostics),
-                len(result.checks) + len(result.scenario.diagnostics)), error=True)
+                Path(result.scenario.name).name, failed + errors,
+                len(result.checks) + errors), error=True)
 
     def _item(self, texts: list[str], colour: QColor,
               check: CheckResult | None) -> QTreeWidgetItem:
@@ -193,9 +212,11 @@ class ScenarioDock(Retranslating, QDockWidget):
             self.save(path, text)
 
     def start_recording(self) -> None:
-        """Record the inputs set and the bits forced on the PLC from now on."""
+        """Record the inputs set and the bits forced on the PLC from now on (the file names
+        the PLC's program on its PROGRAM line when it has a file)."""
         self.recorder = ScenarioRecorder(self.session.run,
-                                         translate("Scenario", "recorded in LadderWorks"))
+                                         translate("Scenario", "recorded in LadderWorks"),
+                                         self.program_path)
         self.recorder.start()
         self.actions_by_name[RECORD].setChecked(True)
         self._say(translate("Scenario", "Recording inputs and forces..."))
@@ -211,9 +232,9 @@ class ScenarioDock(Retranslating, QDockWidget):
         return recorder.text()
 
     def save(self, path: str | Path, text: str) -> bool:
-        """Write a scenario file."""
+        """Write a scenario file (its PROGRAM path relative to the file's folder)."""
         try:
-            atomic_write(path, text)
+            atomic_write(path, relative_program(text, path))
         except OSError as error:
             self._say(translate("Scenario", "Cannot write {0}: {1}").format(
                       path, os_error_text(error)), error=True)

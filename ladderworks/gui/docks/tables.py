@@ -31,6 +31,8 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.docks import snapshot_gate
+from ladderworks.gui.docks.snapshot_gate import SnapshotGate
 from ladderworks.gui.docks.table_entries import DATA_WIDTHS, ProgramUse, TableError, TableKind
 from ladderworks.gui.docks.table_model import PlcTableModel
 from ladderworks.gui.docks.table_specs import Row, TableSpec, table_specs
@@ -122,6 +124,7 @@ class PlcTablesDock(Retranslating, QDockWidget):
         self.tabs = QTabWidget(body)
         self.tabs.setObjectName("plcTablesTabs")
         self._unfitted: set[TableKind] = set()  # tables whose columns wait to be fitted
+        self._stale: set[TableKind] = set()  # tables that missed a snapshot (not shown)
         for kind, spec in self.specs.items():
             model = PlcTableModel(spec, session)
             model.setParent(self)
@@ -138,10 +141,12 @@ class PlcTablesDock(Retranslating, QDockWidget):
         self.insert_action: QAction | None = None  # the last right-click menu's actions
         self.delete_action: QAction | None = None
         self.setWidget(body)
+        # only the table shown takes snapshots, within its share of the GUI thread
+        self.gate = SnapshotGate(self, self._show_snapshot, session)
         session.snapshot_ready.connect(self._on_snapshot)
         session.program_loaded.connect(self._on_program)
-        self.tabs.currentChanged.connect(lambda _index: self._fit_shown())
-        self.visibilityChanged.connect(lambda _shown: self._fit_shown())
+        self.tabs.currentChanged.connect(lambda _index: self._shown_changed())
+        self.visibilityChanged.connect(lambda _shown: self._shown_changed())
         self.retranslate()
 
     def _make_view(self, kind: TableKind, model: PlcTableModel) -> QTableView:
@@ -180,34 +185,59 @@ class PlcTablesDock(Retranslating, QDockWidget):
         else:
             self._unfitted.add(kind)
 
-    def _fit_shown(self) -> None:
-        """Fit the columns of the table now shown, if it missed a fit while hidden."""
-        kind = next((k for k, table in self.tables.items()
+    def _current_kind(self) -> TableKind | None:
+        return next((k for k, table in self.tables.items()
                      if table is self.tabs.currentWidget()), None)
-        if kind in self._unfitted and self.isVisible():
+
+    def _shown_changed(self) -> None:
+        """Another tab, or the dock shown or hidden: the table shown catches up."""
+        kind = self._current_kind()
+        if kind is None or not self.isVisible():
+            return
+        self.gate.flush()  # a snapshot held back: the table shown takes a new one
+        self._catch_up(kind)
+        if kind in self._unfitted:  # it missed a fit while hidden
             self._fit_columns(kind)
 
     def _on_program(self, program: BinaryProgram) -> None:
         use = ProgramUse.of(program)  # once, not once a table: ~80 ms for 38k ops
         for model in self.models.values():
             model.set_program(program, use)
+        self._stale.clear()
         self.retranslate()  # the timer columns follow the program's dialect
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
-        for model in self.models.values():
-            model.update(snapshot.areas)
+        self._stale.update(self.models)
+        self.gate.offer(snapshot)
+
+    def _show_snapshot(self, snapshot: PlcSnapshot) -> None:
+        """The table shown takes the snapshot (every table did before the gate)."""
+        kinds = list(self.models) if snapshot_gate.UPDATE_ALWAYS else [self._current_kind()]
+        for kind in kinds:
+            if kind is not None:
+                self._stale.discard(kind)
+                self.models[kind].update(snapshot.areas)
+
+    def _catch_up(self, kind: TableKind) -> None:
+        """A table that missed snapshots reads the memory now."""
+        if kind in self._stale:
+            self._stale.discard(kind)
+            self.models[kind].update()
 
     def refresh(self) -> None:
         """Show the tables' values now."""
+        self._stale.clear()
         for model in self.models.values():
             model.update()
 
     def rows(self, kind: TableKind) -> list[Row]:
-        """The rows a table shows."""
+        """The rows a table shows (brought up to date when it missed snapshots)."""
+        self._catch_up(kind)
         return self.models[kind].rows
 
     def cell_texts(self, kind: TableKind) -> list[list[str]]:
-        """What a table shows, row by row."""
+        """What a table shows, row by row (brought up to date when it missed snapshots)."""
+        self._catch_up(kind)
         return self.models[kind].texts()
 
     # -- editing -------------------------------------------------------------------------------
@@ -215,6 +245,7 @@ class PlcTablesDock(Retranslating, QDockWidget):
     def edit_cell(self, kind: TableKind, row: int, column: int, text: str) -> str | None:
         """Store a value typed in a cell; the translated reason when it is refused (the cell
         then shows the stored value again)."""
+        self._catch_up(kind)
         model = self.models[kind]
         if model.setData(model.index(row, column), text):
             return None

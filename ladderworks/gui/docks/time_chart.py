@@ -31,12 +31,13 @@ from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks import trace_files
 from ladderworks.gui.docks.bus_lane import BusLane
+from ladderworks.gui.docks.snapshot_gate import SnapshotGate
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.locale_numbers import LocaleAxis
 from ladderworks.gui.os_errors import os_error_text
-from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
@@ -142,7 +143,10 @@ class TimeChartDock(Retranslating, QDockWidget):
         self.cursor_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         layout.addWidget(self.cursor_label)
         self.setWidget(body)
+        # samples are taken at every snapshot; the lanes are drawn when shown, in budget
+        self.gate = SnapshotGate(self, lambda _snapshot: self._redraw(), session)
         session.snapshot_ready.connect(self._take_samples)
+        self.visibilityChanged.connect(lambda _shown: self.gate.flush())
         session.program_loaded.connect(self._on_program_loaded)
         trace_files.add_actions(self)  # LADDER-III export and trace import
         self.retranslate()
@@ -213,13 +217,16 @@ class TimeChartDock(Retranslating, QDockWidget):
         if self.sampling:  # the session keeps the sampler across a reload
             self._say(lambda: translate("TimeChart", "New program loaded; sampling goes on"))
 
-    def _take_samples(self, _snapshot: object = None) -> None:
+    def _take_samples(self, snapshot: object = None) -> None:
         if not self.sampling:
             return
         samples = self.session.trace_samples()
         if samples and len(samples[0].values) == len(self.record.signals):
             self.record.extend(samples)
-            self._redraw()
+            if isinstance(snapshot, PlcSnapshot):
+                self.gate.offer(snapshot)
+            else:  # STOP: the whole record at once
+                self._redraw()
 
     # -- drawing -----------------------------------------------------------------------------
 
@@ -292,6 +299,7 @@ class TimeChartDock(Retranslating, QDockWidget):
             xs, ys = self.lane_points(lane)
             curve.setData(xs, ys)
             next(fills).setData(xs, ys)
+            self.gate.let_scan()  # ~1 ms a lane: a scan that is due goes first
         if self.record.times and self.time_cursor.value() < self.record.times[0]:
             self.time_cursor.setValue(self.record.times[0])
         self._show_cursor()

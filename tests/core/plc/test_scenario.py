@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -184,3 +186,38 @@ def test_any_text_reads_and_runs_without_a_crash(lines: list[str]) -> None:
     scenario.steps = capped
     result = run_scenario(loaded(TIMER), scenario)
     assert result.passed in (True, False)
+
+
+def test_program_line_names_the_program_relative_to_the_file(tmp_path: Path) -> None:
+    scenario = parse_scenario("PMC SIGNAL DATA\nREMARK,x\nPROGRAM,../p/prog.LAD\n"
+                              "EXPECT,0,Y0.0,0\n", str(tmp_path / "s" / "a.scenario.csv"))
+    assert scenario.ok and (scenario.program, scenario.program_line) == ("../p/prog.LAD", 3)
+    assert scenario.program_path() == tmp_path / "s" / ".." / "p" / "prog.LAD"
+    absolute = parse_scenario(f"PMC SIGNAL DATA\nPROGRAM,{tmp_path / 'x.LAD'}\n", "b.csv")
+    assert absolute.program_path() == tmp_path / "x.LAD"
+    none = parse_scenario("\nPMC SIGNAL DATA\nEXPECT,0,Y0.0,0\n")
+    assert none.program_path() is None and none.program_line == 2  # the header's line
+    empty = parse_scenario("PMC SIGNAL DATA\nPROGRAM,\n")
+    assert [(d.code, d.line) for d in empty.diagnostics] == [("scenario-fields", 2)]
+
+
+def test_recorder_writes_the_program_line_relative_to_where_it_is_saved(
+        tmp_path: Path) -> None:
+    from ladderworks.core.plc.recorder import ScenarioRecorder, relative_program
+
+    plc = loaded("%@3\nRD X2.1\nWRT Y0.0\n%\n")
+    plc.start()
+    recorder = ScenarioRecorder(plc, "r", tmp_path / "progs" / "m.LAD")
+    recorder.start()
+    plc.set_bit(parse_address("X2.1"), 1)
+    plc.run_scans(2)
+    recorder.stop()
+    text = recorder.text()
+    assert text.splitlines()[:2] == ["PMC SIGNAL DATA",
+                                     f"PROGRAM,{(tmp_path / 'progs' / 'm.LAD').as_posix()}"]
+    moved = relative_program(text, tmp_path / "tests" / "m.scenario.csv")
+    assert moved.splitlines()[1] == "PROGRAM,../progs/m.LAD"
+    assert moved.splitlines()[2:] == text.splitlines()[2:]
+    read = parse_scenario(moved, str(tmp_path / "tests" / "m.scenario.csv"))
+    assert read.program_path() is not None
+    assert read.program_path().resolve() == tmp_path / "progs" / "m.LAD"

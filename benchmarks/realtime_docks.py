@@ -1,0 +1,165 @@
+"""Real-time PLC with docks open: S41_F036 scanning at 8 ms in the main window (issue 30).
+
+Opens the real program as a user does (File › Open, F9, START), then for each set of docks
+runs the PLC on its wall-clock thread and prints, after the first second: the scans, the
+overruns (a scan that ended after the next one was due), the worst scan and the share of the
+GUI thread's CPU time. Dock sets: none (the alarm panel closed too), default (the window as it
+starts: the alarm panel), technician (PLC diagnostic, bit display live on six bytes, time
+chart sampling six bits). Each set runs twice in one run: "before" (every dock updates on
+every snapshot, shown or not: `snapshot_gate.UPDATE_ALWAYS`) and "after" (docks update only
+when shown, within the GUI thread's share: `gui/docks/snapshot_gate.py`).
+
+Run: python benchmarks/realtime_docks.py [SECONDS] [--fifo]
+`--fifo` (Linux, root) runs the process at SCHED_FIFO priority so that other processes of a
+busy machine do not show in the figures (the GUI and scan threads still share the GIL).
+Environment, for experiments: SETS="technician" (the dock sets to run), SHARE=0.15 (the GUI
+thread's share, `snapshot_gate.SHARE`), PROFILE=1 (cProfile of the GUI thread per set).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+PROGRAM = "FANUC_STUDER_S41_F036"
+SETS = tuple(os.environ.get("SETS", "none default technician").split())
+
+
+def real_program() -> Path:
+    """The real program beside the checkout (shared/real-programs)."""
+    for base in ROOT.parents:
+        path = base / "shared" / "real-programs" / f"{PROGRAM}.txt"
+        if path.exists():
+            return path
+    raise SystemExit(f"{PROGRAM}.txt not found in shared/real-programs beside {ROOT}")
+
+
+def measure(before: bool, seconds: float) -> None:
+    """One process: open, compile, then each dock set for `seconds`; prints a line each."""
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    sys.path.insert(0, str(ROOT))
+    from PySide6.QtCore import QEventLoop, QSettings, Qt, QTimer
+    from PySide6.QtWidgets import QApplication
+
+    from ladderworks.core.address import parse_address
+    from ladderworks.core.plc.runner import RealTimeRunner
+    from ladderworks.gui.docks import snapshot_gate
+    from ladderworks.gui.main_window import MainWindow
+    from ladderworks.gui.refcount_guard import guard_singletons
+    from ladderworks.gui.settings import Settings
+    from ladderworks.gui.translation import UiLanguage
+
+    snapshot_gate.UPDATE_ALWAYS = before
+    if os.environ.get("SHARE"):
+        snapshot_gate.SHARE = float(os.environ["SHARE"])
+    guard_singletons()
+    app = QApplication.instance() or QApplication([])
+    folder = tempfile.mkdtemp()
+    settings = Settings(QSettings(str(Path(folder) / "s.ini"), QSettings.Format.IniFormat))
+    language = UiLanguage()
+    language.apply("en")
+    window = MainWindow(settings, language)
+    window.resize(1400, 900)
+    window.show()
+    window.load(real_program())
+    while window.editor.loading:
+        app.processEvents()
+    if window.compile() is None:
+        raise SystemExit("S41_F036 did not compile")
+    docks = window.plc_docks
+    session = docks.session
+    inputs = [parse_address(f"X{byte}") for byte in (0, 1, 2, 3, 4, 8, 9, 10)]
+    toggle = [0]
+
+    def machine() -> None:  # inputs change as on a running machine
+        toggle[0] ^= 0xFF
+        for n, address in enumerate(inputs):
+            session.write(address, toggle[0] ^ n)
+
+    for name in SETS:
+        technician = (docks.diagnostic, docks.bit_display, docks.time_chart)
+        for dock in (*technician, docks.alarms):
+            dock.hide()
+        if name == "default":
+            docks.alarms.show()
+        if name == "technician":  # all three in view: the diagnostic beside the bit display
+            for dock in technician:
+                dock.show()
+            window.splitDockWidget(docks.diagnostic, docks.bit_display, Qt.Orientation.Vertical)
+            for index, text in enumerate(("X0", "Y0", "R0", "F0", "G0", "R100")):
+                docks.bit_display.set_address(index, text)
+            docks.bit_display.start()
+            docks.time_chart.signals_edit.setText("X0.0 Y0.0 R0.1 F0.0 G4.3 R100.0")
+        app.processEvents()
+        session.start()
+        if name == "technician":
+            docks.time_chart.start()
+        runner = session.run._runner
+        assert runner is not None
+        timer = QTimer()
+        timer.timeout.connect(machine)
+        timer.start(250)
+        marks: list[tuple[float, float]] = []
+
+        def first_second(runner: RealTimeRunner = runner,
+                         marks: list[tuple[float, float]] = marks) -> None:
+            runner.reset_stats()
+            marks.append((time.perf_counter(), time.thread_time()))
+
+        QTimer.singleShot(1000, lambda: first_second())
+        loop = QEventLoop()  # not app.exec(): quitting the application hides the window
+        QTimer.singleShot(int((seconds + 1) * 1000), loop.quit)
+        if os.environ.get("PROFILE"):
+            import cProfile
+            import pstats
+            profile = cProfile.Profile()
+            profile.runcall(loop.exec)
+            pstats.Stats(profile).sort_stats("tottime").print_stats(25)
+        else:
+            loop.exec()
+        wall = time.perf_counter() - marks[0][0]
+        gui = (time.thread_time() - marks[0][1]) / wall * 100
+        stats = runner.stats()
+        timer.stop()
+        shown = [dock for dock in technician if dock.isVisible()]
+        if name == "technician":
+            assert len(shown) == 3, [dock.objectName() for dock in shown]
+            docks.time_chart.stop()
+            docks.bit_display.stop()
+        session.stop()
+        print(f"{'before' if before else 'after':6}  {name:10}  {stats.scans:6}  "
+              f"{stats.overruns:8}  {stats.max_ms:8.1f}  {stats.avg_ms:6.2f}  {gui:5.0f} %",
+              flush=True)
+
+
+def main() -> None:
+    """Both modes, each in a fresh process, figures side by side."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("seconds", nargs="?", type=float, default=6.0,
+                        help="seconds measured per dock set, after the first (default 6)")
+    parser.add_argument("--fifo", action="store_true",
+                        help="SCHED_FIFO priority (Linux, root): a busy machine's other "
+                             "processes out of the figures")
+    parser.add_argument("--mode", choices=("before", "after"), help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.mode:
+        measure(args.mode == "before", args.seconds)
+        return
+    if args.fifo:
+        os.sched_setscheduler(0, os.SCHED_FIFO, os.sched_param(10))  # children inherit it
+    print(f"{PROGRAM}: 8 ms scans on the wall clock, {args.seconds:.0f} s per dock set after "
+          f"the first second{' (SCHED_FIFO)' if args.fifo else ''}")
+    print("mode    docks        scans  overruns  worst ms  avg ms  GUI thread")
+    for mode in ("before", "after"):
+        subprocess.run([sys.executable, __file__, str(args.seconds), "--mode", mode],
+                       check=True)
+
+
+if __name__ == "__main__":
+    main()

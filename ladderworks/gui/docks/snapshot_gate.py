@@ -1,0 +1,99 @@
+"""Which PLC snapshots a dock's update takes: none while it is hidden, and no more than keep
+its share of the GUI thread small, so the real-time scan thread gets the interpreter's lock
+(the GIL) when its period comes (issue 30: a hidden tables dock refreshing 1,500 D rows 25
+times a second left S41_F036's scans waiting for it)."""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+
+from PySide6.QtCore import QObject, QTimer
+from PySide6.QtWidgets import QWidget
+
+from ladderworks.core.plc.session import PlcSnapshot
+from ladderworks.gui.plc_session import PlcSession
+
+# True: the behaviour before the gate (every snapshot updates the dock, shown or not);
+# benchmarks/realtime_docks.py sets it to measure before and after in one run
+UPDATE_ALWAYS = False
+# of the GUI thread's time that may be spent while the PLC scans in real time: the rest
+# leaves the interpreter to the scan thread
+SHARE = 0.25
+
+
+class UpdateBudget:
+    """Lets an update run when the GUI thread's CPU time since the last one (the update, the
+    repaints it caused, every other dock's work) is at most `share` of the time gone by."""
+
+    def __init__(self, share: float | None = None,
+                 clock: Callable[[], float] = time.perf_counter,
+                 cpu: Callable[[], float] = time.thread_time) -> None:
+        self.share = share if share is not None else SHARE
+        self.clock = clock
+        self.cpu = cpu  # this thread's CPU time: the GUI thread's, as updates run there
+        self.marks: tuple[float, float] | None = None  # (clock, cpu) when the last one began
+
+    def wait(self) -> float:
+        """Seconds until an update may run (0: now)."""
+        if self.marks is None:
+            return 0.0
+        began, busy = self.marks
+        return max(0.0, (self.cpu() - busy) / self.share - (self.clock() - began))
+
+    def run(self, update: Callable[[], None]) -> None:
+        """Run `update` and start counting from it."""
+        self.marks = (self.clock(), self.cpu())
+        update()
+
+
+class SnapshotGate(QObject):
+    """Hands the session's snapshots to `update` when `widget` is shown and, while the
+    real-time thread scans, the budget allows; one held back is made up for (with a new
+    snapshot, never an older one over a newer state) when the budget allows or the widget is
+    shown again. On the virtual clock (tests, stepping) every snapshot is shown at once."""
+
+    def __init__(self, widget: QWidget, update: Callable[[PlcSnapshot], None],
+                 session: PlcSession, budget: UpdateBudget | None = None) -> None:
+        super().__init__(widget)
+        self.widget = widget
+        self.update = update
+        self.session = session
+        self.budget = budget if budget is not None else UpdateBudget()
+        self.pending = False  # a snapshot was held back
+        self.updates = 0  # how many ran (tests, benchmarks)
+        self._timer = QTimer(self)
+        self._timer.setSingleShot(True)
+        self._timer.timeout.connect(self.flush)
+
+    def offer(self, snapshot: PlcSnapshot) -> None:
+        """A new snapshot: shown now, later, or when the widget is shown."""
+        if UPDATE_ALWAYS:
+            self._run(snapshot)
+            return
+        self.pending = True
+        if not self.widget.isVisible():
+            return
+        wait = self.budget.wait() if self.session.run.threaded else 0.0
+        if wait <= 0:
+            self._run(snapshot)
+        elif not self._timer.isActive():
+            self._timer.start(max(1, round(wait * 1000)))
+
+    def flush(self) -> None:
+        """Make up for a snapshot held back, with the latest (when the widget is shown)."""
+        if self.pending and self.widget.isVisible():
+            self._run(self.session.snapshot())
+
+    def let_scan(self) -> None:
+        """Between two pieces of a long update: while the real-time thread scans, give it the
+        interpreter if its period has come (a sleep of 0 releases the GIL), so it does not wait
+        for the rest of the update (a switch comes only every 5 ms otherwise)."""
+        if self.session.run.threaded and not UPDATE_ALWAYS:
+            time.sleep(0.0002)
+
+    def _run(self, snapshot: PlcSnapshot) -> None:
+        self.pending = False
+        self._timer.stop()
+        self.updates += 1
+        self.budget.run(lambda: self.update(snapshot))
