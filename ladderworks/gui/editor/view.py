@@ -289,9 +289,10 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         """The functional instruction the function tool places."""
         self.function_name = name
 
-    def open_address_editor(self, index: int, row: int, col: int) -> None:
-        """Edit the address (and `// comment`) of the contact or coil at a cell."""
-        self.inline.open_address(index, row, col)
+    def open_address_editor(self, index: int, row: int, col: int, placed: bool = False) -> None:
+        """Edit the address (and `// comment`) of the contact or coil at a cell; `placed`: the
+        element was just placed (ESC takes it away again)."""
+        self.inline.open_address(index, row, col, placed)
 
     def open_comment_editor(self, index: int, line: int) -> None:
         """Edit (or add) network comment line `line` (the comment tool)."""
