@@ -137,9 +137,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self._first_show = True
         self.help_window: InstructionHelp | None = None
         self.find_dialog: FindReplaceDialog | None = None
-        geometry, state = settings.window_state()
-        if geometry is not None:
-            self.restoreGeometry(geometry)
+        state = settings.window_state()[1]  # the geometry: screen_fit.place_main_window
         if state is not None:
             self.restoreState(state)
         self.new_file()

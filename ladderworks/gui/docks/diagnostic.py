@@ -185,7 +185,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
         bar = QHBoxLayout()
         self.search = QLineEdit(body)
         self.search.setObjectName("diagnosticSearch")
-        self.search.setMinimumWidth(150)
+        self.search.setMinimumWidth(110)
         self.search.returnPressed.connect(self.find_next)
         self.find_button = QPushButton(body)
         self.find_button.setObjectName("diagnosticFind")
@@ -241,7 +241,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.zoom_in_button.clicked.connect(lambda: self.view.zoom_by(1))
         self._show_zoom(self.view.zoom())
         self.setWidget(body)
-        self.setMinimumWidth(520)
+        self.setMinimumWidth(440)  # as the control screen: its tab group leaves the ladder room
         self.hits: list[tuple[int, Cell]] = []
         self.hit_index = -1
         self._monitoring = False

@@ -15,7 +15,6 @@ from PySide6.QtWidgets import (
     QMessageBox,
     QProgressBar,
     QScrollArea,
-    QToolBar,
     QVBoxLayout,
     QWidget,
 )
@@ -24,6 +23,7 @@ from ladderworks.core.compiler import CompileResult, compile_program
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, decode, parse, print_program
 from ladderworks.gui import file_dialogs
+from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
 from ladderworks.gui.live_text import set_live_text
@@ -82,28 +82,27 @@ class PlcControlDock(Retranslating, QDockWidget):
         body = QWidget(self)
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
-        self.toolbar = QToolBar(body)
+        # buttons that wrap onto a second line in a narrow dock: START and STOP never hide
+        # behind a toolbar's "»" overflow (a 1024×600 panel, the Turkish texts)
+        self.toolbar = ButtonFlow(body)
         self.toolbar.setObjectName("plcControlToolbar")
-        self.run_bar = QToolBar(body)
-        self.run_bar.setObjectName("plcRunToolbar")
         self.control_actions: dict[str, QAction] = {}
-        for name, slot, bar in (
-                ("action_plc_open_mod", self.open_dialog, self.toolbar),
-                ("action_plc_take_console", self.take_console_program, self.toolbar),
-                ("action_plc_control_compile", self.compile, self.run_bar),
-                ("action_plc_start", self.start, self.run_bar),
-                ("action_plc_stop", self.stop, self.run_bar)):
+        for name, slot in (
+                ("action_plc_open_mod", self.open_dialog),
+                ("action_plc_take_console", self.take_console_program),
+                (None, None),
+                ("action_plc_control_compile", self.compile),
+                ("action_plc_start", self.start),
+                ("action_plc_stop", self.stop)):
+            if name is None or slot is None:
+                self.toolbar.add_separator()
+                continue
             action = QAction(self)
             action.setObjectName(name)
             action.triggered.connect(lambda _checked=False, s=slot: s())
-            bar.addAction(action)
+            self.toolbar.add_action(action)
             self.control_actions[name] = action
-        bars = QHBoxLayout()  # one row: a 1024×600 screen keeps the time chart below
-        bars.setSpacing(0)
-        bars.addWidget(self.toolbar)
-        bars.addWidget(self.run_bar)
-        bars.addStretch(1)
-        layout.addLayout(bars)
+        layout.addWidget(self.toolbar)
         self.setMinimumWidth(440)
         state = QHBoxLayout()
         self.indicator = QLabel(body)
