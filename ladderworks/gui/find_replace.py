@@ -26,6 +26,7 @@ from ladderworks.core.ladder.find_replace import (
     replacements,
 )
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.editor.network_item import network_tag
 from ladderworks.gui.editor.step_name import NamedCommand, StepName
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.retranslate import Retranslating
@@ -187,7 +188,10 @@ class FindReplaceDialog(Retranslating, QDialog):
         self.editor.selection = None
         self.editor.move_cursor(*_position(hit))
         network = self.editor.networks[hit.network]
-        where = network.label or translate("FindReplace", "network {0}").format(hit.network + 1)
+        where = translate("FindReplace", "network {0}").format(hit.network + 1)
+        if network.label:  # the LADDER-III label beside the number the console shows (N15)
+            where = translate("FindReplace", "{0} ({1})").format(network_tag(hit.network + 1),
+                                                                 network.label)
         self._say(translate("FindReplace", "{0} of {1}: {2}, {3}").format(
             number + 1, len(hits), where, hit.address))
 

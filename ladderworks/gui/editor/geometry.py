@@ -12,7 +12,7 @@ from ladderworks.core.ladder.model import LadderNetwork
 CELL_W = 84.0
 COMMENT_H = 20.0
 LISTING_LINE_H = 18.0
-LEFT = 44.0  # room for the network number left of the left rail
+LEFT = 72.0  # room for the network number left of the left rail: five digits (N10821, D10821)
 GAP = 10.0  # space between networks
 SPARE_ROWS = 1  # an empty row drawn under each network: clicking there adds a row
 
