@@ -1012,6 +1012,19 @@
     </message>
 </context>
 <context>
+    <name>FitWidth</name>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="66"/>
+        <source>Fit width: every network fits the window&apos;s width</source>
+        <translation>Genişliğe sığdır: her devre pencerenin genişliğine sığıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="67"/>
+        <source>Fit width: {0} of {1} networks fit the window&apos;s width; the {2} wider ones scroll sideways</source>
+        <translation>Genişliğe sığdır: {1} devreden {0} tanesi pencerenin genişliğine sığıyor; daha geniş {2} devre yana kaydırılır</translation>
+    </message>
+</context>
+<context>
     <name>ForceList</name>
     <message>
         <location filename="../ladderworks/gui/docks/force_list.py" line="70"/>
@@ -1512,29 +1525,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="188"/>
+        <location filename="../ladderworks/gui/main_window.py" line="195"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="392"/>
+        <location filename="../ladderworks/gui/main_window.py" line="399"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="398"/>
+        <location filename="../ladderworks/gui/main_window.py" line="405"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="404"/>
+        <location filename="../ladderworks/gui/main_window.py" line="411"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="424"/>
-        <location filename="../ladderworks/gui/main_window.py" line="253"/>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="260"/>
+        <location filename="../ladderworks/gui/main_window.py" line="406"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1673,32 +1686,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="362"/>
+        <location filename="../ladderworks/gui/main_window.py" line="369"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="378"/>
+        <location filename="../ladderworks/gui/main_window.py" line="385"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="441"/>
+        <location filename="../ladderworks/gui/main_window.py" line="448"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="444"/>
+        <location filename="../ladderworks/gui/main_window.py" line="451"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="476"/>
+        <location filename="../ladderworks/gui/main_window.py" line="483"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="477"/>
+        <location filename="../ladderworks/gui/main_window.py" line="484"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>

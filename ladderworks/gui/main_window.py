@@ -95,6 +95,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         fit = self.actions_by_name["action_zoom_fit_width"]
         for name in ("action_zoom_in", "action_zoom_out", "action_zoom_reset"):
             self.actions_by_name[name].triggered.connect(lambda _c=False: fit.setChecked(False))
+        fit.toggled.connect(self._fit_toggled)  # after fit_width.set_enabled: says what fits
         self.names_menu = NameDisplayMenu(self.settings, self)  # View › Element names
         self.menus.add_menu("menu_view", self.names_menu)
         self.recent_menu = self.menus.menus["menu_recent"]
@@ -182,10 +183,17 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.zoom_label.setObjectName("status_zoom")
         self.statusBar().addPermanentWidget(self.zoom_label)
         self.editor.zoom_changed.connect(self._show_zoom)
+        self.fit_width.fitted_changed.connect(self._show_zoom)
+
+    def _fit_toggled(self, on: bool) -> None:
+        self._show_zoom()
+        if on:
+            self._show_message(self.fit_width.describe)
 
     def _show_zoom(self, *_args: object) -> None:
         self.zoom_label.setText(percent(self.editor.zoom() * 100))
-        self.zoom_label.setToolTip(translate("MainWindow", "Zoom"))
+        # fit width says what it fitted: "9,812 of 10,000 networks fit…" (issue 31)
+        self.zoom_label.setToolTip(self.fit_width.describe() or translate("MainWindow", "Zoom"))
 
     # -- language ------------------------------------------------------------------------
 
