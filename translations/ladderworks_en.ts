@@ -919,94 +919,110 @@
 <context>
     <name>FindReplace</name>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="162"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="173"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="244"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="202"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="276"/>
         <source>Not found</source>
         <translation>Not found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="221"/>
         <source>network {0}</source>
         <translation>network {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="193"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
         <source>{0} ({1})</source>
         <translation>{0} ({1})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="195"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="226"/>
+        <source>network comment</source>
+        <translation>network comment</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="227"/>
         <source>{0} of {1}: {2}, {3}</source>
         <translation>{0} of {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="227"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
         <source>Replace {0} with {1}</source>
         <translation>Replace {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="233"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
         <source>Replaced; no more found</source>
         <translation>Replaced; no more found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="249"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="281"/>
         <source>Replace all {0} with {1}</source>
         <translation>Replace all {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="251"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="283"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{0} replaced in {1} networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="291"/>
         <source>Find and replace</source>
         <translation>Find and replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="260"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
+        <source>Also in comments and signal descriptions</source>
+        <translation>Also in comments and signal descriptions</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
+        <source>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</source>
+        <translation>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="173"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="292"/>
         <source>Find:</source>
         <translation>Find:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="261"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="293"/>
         <source>Replace with:</source>
         <translation>Replace with:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="263"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="295"/>
         <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
         <translation>Address, symbol or words, e.g. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="297"/>
         <source>Address or symbol, e.g. R200</source>
         <translation>Address or symbol, e.g. R200</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="266"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="267"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="299"/>
         <source>Find &amp;previous</source>
         <translation>Find &amp;previous</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="268"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="300"/>
         <source>&amp;Replace</source>
         <translation>&amp;Replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="269"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="301"/>
         <source>Replace &amp;all</source>
         <translation>Replace &amp;all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="270"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="302"/>
         <source>Close</source>
         <translation>Close</translation>
     </message>
@@ -1525,29 +1541,29 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="195"/>
+        <location filename="../ladderworks/gui/main_window.py" line="196"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="400"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="405"/>
+        <location filename="../ladderworks/gui/main_window.py" line="406"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="411"/>
+        <location filename="../ladderworks/gui/main_window.py" line="412"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="424"/>
-        <location filename="../ladderworks/gui/main_window.py" line="260"/>
-        <location filename="../ladderworks/gui/main_window.py" line="406"/>
+        <location filename="../ladderworks/gui/main_window.py" line="261"/>
+        <location filename="../ladderworks/gui/main_window.py" line="407"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -1686,32 +1702,32 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="369"/>
+        <location filename="../ladderworks/gui/main_window.py" line="370"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="385"/>
+        <location filename="../ladderworks/gui/main_window.py" line="386"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="448"/>
+        <location filename="../ladderworks/gui/main_window.py" line="449"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="451"/>
+        <location filename="../ladderworks/gui/main_window.py" line="452"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="483"/>
+        <location filename="../ladderworks/gui/main_window.py" line="484"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="484"/>
+        <location filename="../ladderworks/gui/main_window.py" line="485"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>

@@ -919,94 +919,110 @@
 <context>
     <name>FindReplace</name>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="162"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="173"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="244"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="202"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="276"/>
         <source>Not found</source>
         <translation>Bulunamadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="221"/>
         <source>network {0}</source>
         <translation>devre {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="193"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
         <source>{0} ({1})</source>
         <translation>{0} ({1})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="195"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="226"/>
+        <source>network comment</source>
+        <translation>devre yorumu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="227"/>
         <source>{0} of {1}: {2}, {3}</source>
         <translation>{0} / {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="227"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
         <source>Replace {0} with {1}</source>
         <translation>{0} yerine {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="233"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
         <source>Replaced; no more found</source>
         <translation>Değiştirildi; başka bulunamadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="249"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="281"/>
         <source>Replace all {0} with {1}</source>
         <translation>Tüm {0} yerine {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="251"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="283"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{1} devrede {0} yer değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="291"/>
         <source>Find and replace</source>
         <translation>Bul ve değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="260"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
+        <source>Also in comments and signal descriptions</source>
+        <translation>Yorumlarda ve sinyal açıklamalarında da ara</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
+        <source>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</source>
+        <translation>Kelimeleri elemanların yorumlarında, programın adres yorumlarında, kılavuzun sinyal açıklamalarında ve devre yorumlarında ara</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="173"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="292"/>
         <source>Find:</source>
         <translation>Bul:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="261"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="293"/>
         <source>Replace with:</source>
         <translation>Yerine:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="263"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="295"/>
         <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
         <translation>Adres, sembol veya sözcükler, örn. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="297"/>
         <source>Address or symbol, e.g. R200</source>
         <translation>Adres veya sembol, örn. R200</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="266"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
         <source>Find &amp;next</source>
         <translation>&amp;Sonrakini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="267"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="299"/>
         <source>Find &amp;previous</source>
         <translation>Ö&amp;ncekini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="268"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="300"/>
         <source>&amp;Replace</source>
         <translation>&amp;Değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="269"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="301"/>
         <source>Replace &amp;all</source>
         <translation>&amp;Tümünü değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="270"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="302"/>
         <source>Close</source>
         <translation>Kapat</translation>
     </message>
@@ -1525,29 +1541,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="195"/>
+        <location filename="../ladderworks/gui/main_window.py" line="196"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="400"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="405"/>
+        <location filename="../ladderworks/gui/main_window.py" line="406"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="411"/>
+        <location filename="../ladderworks/gui/main_window.py" line="412"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="424"/>
-        <location filename="../ladderworks/gui/main_window.py" line="260"/>
-        <location filename="../ladderworks/gui/main_window.py" line="406"/>
+        <location filename="../ladderworks/gui/main_window.py" line="261"/>
+        <location filename="../ladderworks/gui/main_window.py" line="407"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1686,32 +1702,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="369"/>
+        <location filename="../ladderworks/gui/main_window.py" line="370"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="385"/>
+        <location filename="../ladderworks/gui/main_window.py" line="386"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="448"/>
+        <location filename="../ladderworks/gui/main_window.py" line="449"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="451"/>
+        <location filename="../ladderworks/gui/main_window.py" line="452"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="483"/>
+        <location filename="../ladderworks/gui/main_window.py" line="484"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="484"/>
+        <location filename="../ladderworks/gui/main_window.py" line="485"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>

@@ -333,7 +333,7 @@ def install(window: QMainWindow, menus: ConsoleMenus, editor: LadderEditor,
         if not 0 <= network < len(editor.networks):
             return
         row, col = cell if cell is not None else (0, 0)
-        editor.move_cursor(network, row, col)
+        editor.jump_to(network, row, col)  # in the middle of the view
         editor.setFocus()
 
     dock.jump_requested.connect(jump)

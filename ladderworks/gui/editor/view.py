@@ -23,6 +23,7 @@ from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il import Program
 from ladderworks.core.ladder import LadderNetwork, Selection
 from ladderworks.core.symbols import resolve
+from ladderworks.gui.editor.centre import centre_on
 from ladderworks.gui.editor.editing import CursorEdits
 from ladderworks.gui.editor.geometry import (
     CELL_W,
@@ -352,6 +353,12 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         else:
             self._selection_item.hide()
 
+    def jump_to(self, index: int, row: int, col: int) -> None:
+        """The cursor on a cell found elsewhere (Find, cross reference, error list), that cell
+        brought to the middle of the view (not to its bottom edge)."""
+        self.move_cursor(index, row, col)
+        centre_on(self, self.cell_rect(*self.cursor_cell))
+
     def go_to(self, diagnostic: Diagnostic) -> None:
         """Jump to a diagnostic's network and cell."""
         if diagnostic.network is not None and diagnostic.network >= len(self.networks) - 1:
@@ -359,7 +366,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         if diagnostic.network is None or not 0 <= diagnostic.network < len(self.networks):
             return
         row, col = diagnostic.cell if diagnostic.cell is not None else (0, 0)
-        self.move_cursor(diagnostic.network, row, col)
+        self.jump_to(diagnostic.network, row, col)
         self.setFocus()
 
     def tooltip_at(self, index: int, row: int, col: int) -> str:
