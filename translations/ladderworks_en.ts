@@ -3165,147 +3165,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="157"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="160"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="180"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="192"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="204"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="217"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="347"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="362"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="377"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="365"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="373"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="389"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="387"/>
         <source>Cannot write {0}</source>
         <translation>Cannot write {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
         <source>Export time chart as CSV</source>
         <translation>Export time chart as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="398"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
         <source>Export time chart as PNG</source>
         <translation>Export time chart as PNG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="409"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="446"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="448"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="449"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="451"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="453"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="454"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="455"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="456"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="457"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="442"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="458"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="463"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="468"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>
@@ -3318,27 +3318,37 @@
 <context>
     <name>TimeTravel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="62"/>
         <source>Keep scan history (time travel)</source>
         <translation>Keep scan history (time travel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="63"/>
         <source>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</source>
         <translation>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="128"/>
+        <source>before the scan history, which begins at {0} ms</source>
+        <translation>before the scan history, which begins at {0} ms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="138"/>
+        <source>The cursor is before the scan history, which begins at {0} ms: no scan to show</source>
+        <translation>The cursor is before the scan history, which begins at {0} ms: no scan to show</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="173"/>
         <source>Turn on PLC › Keep scan history and give a bit address</source>
         <translation>Turn on PLC › Keep scan history and give a bit address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="181"/>
         <source>{0} did not change in the scans kept</source>
         <translation>{0} did not change in the scans kept</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="188"/>
         <source>{0} went to {1} in scan {2} at {3} ms</source>
         <translation>{0} went to {1} in scan {2} at {3} ms</translation>
     </message>
