@@ -24,6 +24,7 @@ from ladderworks.core.il import Program, print_program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui import compile_step, questions
 from ladderworks.gui.actions_table import CAN_REDO, CAN_UNDO, CONTEXT_MENU, LADDER_SHOWN
+from ladderworks.gui.cell_status import CellStatus
 from ladderworks.gui.console_menus import Condition, ConsoleMenus
 from ladderworks.gui.dock_tabs import WholeDockTitles
 from ladderworks.gui.docks import cross_reference
@@ -179,6 +180,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.cell_label.setObjectName("status_cell")
         self.cell_label.setMinimumWidth(140)
         self.statusBar().addPermanentWidget(self.cell_label)
+        self.cell_status = CellStatus(self.editor, self.cell_label)  # the cursor's cell, now
         self.zoom_label = QLabel(self)
         self.zoom_label.setObjectName("status_zoom")
         self.statusBar().addPermanentWidget(self.zoom_label)

@@ -66,6 +66,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
 
     tool_requested = Signal(object)  # Tool picked with a letter key
     hover_changed = Signal(str)
+    cursor_placed = Signal()  # the cursor's frame was put on its cell (moved, or a relayout)
     message = Signal(str)
     zoom_changed = Signal(float)  # the new zoom factor (the status bar shows it)
     drawing_changed = Signal()
@@ -352,6 +353,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
             self._selection_item.show()
         else:
             self._selection_item.hide()
+        self.cursor_placed.emit()
 
     def jump_to(self, index: int, row: int, col: int) -> None:
         """The cursor on a cell found elsewhere (Find, cross reference, error list), that cell
