@@ -31,6 +31,7 @@ from ladderworks.gui.editor.label_text import CommentedAddresses, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
+from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.settings import Settings
@@ -395,8 +396,8 @@ class DiagnosticDock(Retranslating, QDockWidget):
         try:
             address = parse_address(text)
         except AddressError:
-            self.message.setText(translate("PlcDiagnostic", "'{0}' is not an address")
-                                 .format(text))
+            set_live_text(self.message, lambda: translate(
+                "PlcDiagnostic", "'{0}' is not an address").format(text))
             return None
         self.message.setText("")
         return address
@@ -458,6 +459,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.hit_index = (self.hit_index + 1) % len(self.hits)
         network, cell = self.hits[self.hit_index]
         self.view.centerOn(self.view.cell_rect(network, cell).center())
-        self.message.setText(translate("PlcDiagnostic", "{0} of {1}: network {2}").format(
-            self.hit_index + 1, len(self.hits), network + 1))
+        number, count = self.hit_index + 1, len(self.hits)
+        set_live_text(self.message, lambda: translate(
+            "PlcDiagnostic", "{0} of {1}: network {2}").format(number, count, network + 1))
         self._repaint()

@@ -211,8 +211,9 @@ class PlcControlDock(Retranslating, QDockWidget):
         try:
             text, _encoding = decode(path.read_bytes())
         except OSError as error:
-            self.message.setText(translate("PlcControl", "Cannot read {0}: {1}")
-                                 .format(path, os_error_text(error)))
+            reason = error  # the except clause's name is gone after it
+            set_live_text(self.message, lambda: translate("PlcControl", "Cannot read {0}: {1}")
+                          .format(path, os_error_text(reason)))
             return False
         self.set_text(text, path)
         set_live_text(self.message,
@@ -231,7 +232,7 @@ class PlcControlDock(Retranslating, QDockWidget):
         """Show the program drawn in the console as mnemonic code."""
         program = self.console_program() if self.console_program is not None else None
         if program is None:
-            self.message.setText(translate(
+            set_live_text(self.message, lambda: translate(
                 "PlcControl", "The console's program cannot be coded: see the error list"))
             return False
         self.set_text(print_program(program))
@@ -270,9 +271,9 @@ class PlcControlDock(Retranslating, QDockWidget):
             first = min((d.line for d in errors if d.line), default=0)
             self.editor.set_converted(max(first - 1, 0))
             self.progress.setValue(0)
-            self.message.setText(translate("PlcControl", "Compile failed: {0} error(s). {1}")
-                                 .format(len(errors), diagnostic_text(errors[0]) if errors
-                                         else ""))
+            set_live_text(self.message, lambda: translate(
+                "PlcControl", "Compile failed: {0} error(s). {1}").format(
+                    len(errors), diagnostic_text(errors[0]) if errors else ""))
             if first:
                 self.editor.go_to_line(first)
             self.compile_finished.emit(result)
@@ -282,7 +283,7 @@ class PlcControlDock(Retranslating, QDockWidget):
         self._done = 0
         self.progress.setRange(0, len(self._ends))
         self.progress.setValue(0)
-        self.message.setText(translate("PlcControl", "Converting…"))
+        set_live_text(self.message, lambda: translate("PlcControl", "Converting…"))
         self._update_actions()
         if self.stripe_ms <= 0:
             while self._done < len(self._ends):
@@ -331,7 +332,7 @@ class PlcControlDock(Retranslating, QDockWidget):
     def start(self) -> bool:
         """START: run the loaded program (asks first when forces are active)."""
         if self.session.engine is None:
-            self.message.setText(translate("PlcControl", "Compile a program first"))
+            set_live_text(self.message, lambda: translate("PlcControl", "Compile a program first"))
             return False
         forces = self.session.forces()
         if forces and not self.confirm_forces(len(forces)):

@@ -170,7 +170,7 @@ class TimeTravel(QObject):
         contacts that changed it."""
         history, engine = self.history, self.session.engine
         if history is None or engine is None or address.bit is None:
-            self.diagnostic.message.setText(translate(
+            set_live_text(self.diagnostic.message, lambda: translate(
                 "TimeTravel", "Turn on PLC › Keep scan history and give a bit address"))
             return None
         past = self.diagnostic.past
@@ -178,14 +178,14 @@ class TimeTravel(QObject):
             upto = past.scan_count if past is not None else history.last_scan
             found = history.why(engine, address, upto) if upto is not None else None
         if found is None:
-            self.diagnostic.message.setText(translate(
+            set_live_text(self.diagnostic.message, lambda: translate(
                 "TimeTravel", "{0} did not change in the scans kept").format(address))
             return None
         if self.chart is not None and self.chart.record.times:
             self.chart.set_cursor(found.time_ms)
         self.show_time(found.time_ms)
         self.diagnostic.mark_ops(found.contacts or found.writers)
-        self.diagnostic.message.setText(translate(
+        set_live_text(self.diagnostic.message, lambda: translate(
             "TimeTravel", "{0} went to {1} in scan {2} at {3} ms").format(
                 address, found.value, found.scan, found.time_ms))
         return found
