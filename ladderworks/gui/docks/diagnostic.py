@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor, QPainter, QPaintEvent, QTransform, QWheelEvent
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -26,7 +26,13 @@ from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, Ladd
 from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
 from ladderworks.gui.docks.live_ladder import LivePower
-from ladderworks.gui.editor.geometry import Layout, cell_h, cell_origin, network_width
+from ladderworks.gui.editor.geometry import (
+    Layout,
+    cell_h,
+    cell_origin,
+    network_width,
+    typical_width,
+)
 from ladderworks.gui.editor.label_text import CommentedAddresses, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.lazy_items import LazyItems
@@ -78,6 +84,13 @@ class DiagnosticView(QGraphicsView):
         if abs(factor - self.zoom()) > 1e-6:
             self.setTransform(QTransform.fromScale(factor, factor))
         self.zoom_changed.emit(factor)
+
+    def fit_width(self) -> None:
+        """Zoom out (never in) until the typical network's coils are in the view's width."""
+        room = self.viewport().width() - 4
+        typical = typical_width(self.networks)
+        if self.networks and room > 0 and typical * self.zoom() > room:
+            self.set_zoom(room / typical)
 
     def zoom_by(self, steps: int) -> None:
         """Zoom in (`steps` > 0) or out by whole steps."""
@@ -296,7 +309,10 @@ class DiagnosticDock(Retranslating, QDockWidget):
             program = program_of(binary)
         networks = self._lay_out(program)
         self.view.symbols = self.session.symbols
+        first = not self.view.networks  # the first program shown in an open dock: fitted
         self.view.show_networks(networks, binary, binary_networks(binary))
+        if first and self.isVisible():
+            QTimer.singleShot(0, self.view.fit_width)
         self.hits = []
         self.hit_index = -1
         self._repaint()
@@ -323,6 +339,8 @@ class DiagnosticDock(Retranslating, QDockWidget):
             self._monitoring = visible
             self.session.monitor(visible)
         if visible:
+            # the network's coils in the dock's width, once the dock has its width
+            QTimer.singleShot(0, self.view.fit_width)
             self._repaint()
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:

@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import bisect
-from collections.abc import Callable
+import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from enum import Enum
 
@@ -102,6 +103,13 @@ def network_height(network: LadderNetwork, rows: RowMetrics) -> float:
 def network_width(network: LadderNetwork) -> float:
     """Width of a network's drawing, rails included."""
     return LEFT + (network.columns + 1) * CELL_W + 8
+
+
+def typical_width(networks: Sequence[LadderNetwork], share: float = 0.95) -> float:
+    """The widest of the narrowest `share` of the networks' drawings (all of a small program):
+    what a fitted zoom shows whole, leaving a few unusually wide networks to scroll."""
+    widths = sorted(network_width(network) for network in networks)
+    return widths[max(math.ceil(len(widths) * share) - 1, 0)] if widths else 0.0
 
 
 def grid_top(network: LadderNetwork) -> float:

@@ -3,12 +3,10 @@
 
 from __future__ import annotations
 
-import math
-
 from PySide6.QtCore import QCoreApplication, QEvent, QObject, QRectF, Signal
 from PySide6.QtWidgets import QStyle
 
-from ladderworks.gui.editor.geometry import network_width
+from ladderworks.gui.editor.geometry import network_width, typical_width
 from ladderworks.gui.editor.view import LadderEditor
 
 translate = QCoreApplication.translate
@@ -47,14 +45,10 @@ class FitWidth(QObject):
         scroll = editor.style().pixelMetric(QStyle.PixelMetric.PM_ScrollBarExtent, None, editor)
         return max(editor.width() - 2 * editor.frameWidth() - scroll - 2, 1)
 
-    def _widths(self) -> list[float]:
-        return sorted(network_width(network) + MARGIN for network in self._editor.networks)
-
-    def factor(self, widths: list[float] | None = None) -> float:
+    def factor(self) -> float:
         """The zoom at which the typical network's width fills the view: the widest of 95 % of
         the networks (all of a small program), no smaller than READABLE."""
-        widths = self._widths() if widths is None else widths
-        typical = widths[max(math.ceil(len(widths) * SHARE_FITTED) - 1, 0)] if widths else 0.0
+        typical = typical_width(self._editor.networks, SHARE_FITTED) + MARGIN
         return max(self._room() / max(typical, NARROWEST), READABLE)
 
     def describe(self) -> str:
@@ -70,12 +64,13 @@ class FitWidth(QObject):
 
     def fit(self) -> None:
         """Zoom to fit the width now, and count the networks it fitted."""
-        widths = self._widths()
-        factor = self.factor(widths)
+        factor = self.factor()
         if abs(factor - self._editor.zoom()) > 1e-3:
             self._editor.set_zoom(factor)
         room = self._room() / self._editor.zoom() + 0.5
-        self.fitted = (sum(1 for width in widths if width <= room), len(widths))
+        networks = self._editor.networks
+        fits = sum(1 for network in networks if network_width(network) + MARGIN <= room)
+        self.fitted = (fits, len(networks))
         self.fitted_changed.emit()
 
     def _scene_changed(self, _rect: QRectF) -> None:
