@@ -31,6 +31,7 @@ def keep_on_screen(window: QWidget) -> None:
 
 FIRST_SIZE = QSize(1200, 800)  # the main window's size on a first start, where it fits
 SMALL = QSize(1280, 720)  # a free area this narrow or this low: the main window maximised
+LARGE_SHARE = 0.8  # of a large screen's free area: 1536×832 on a 1920×1040 desktop
 
 
 def saved_normal_geometry(saved: QByteArray) -> QRect | None:
@@ -50,13 +51,14 @@ def saved_normal_geometry(saved: QByteArray) -> QRect | None:
 
 def place_main_window(window: QWidget, saved: QByteArray | None, room: QRect) -> bool:
     """Size the main window for the free area `room` of its screen before it is first shown:
-    the saved geometry when it still fits there (True), else 1200×800 or less, centred, and
-    maximised when the screen is small (a 1024×600 panel)."""
+    the saved geometry when it still fits there (True), else 80 % of the free area (at least
+    1200×800, at most 90 %), centred, and maximised when the screen is small (a 1024×600
+    panel)."""
     normal = saved_normal_geometry(saved) if saved is not None else None
     if saved is not None and normal is not None and room.contains(normal):
         return window.restoreGeometry(saved)
     window.setWindowState(Qt.WindowState.WindowNoState)
-    size = FIRST_SIZE.boundedTo(room.size() * SHARE)
+    size = FIRST_SIZE.expandedTo(room.size() * LARGE_SHARE).boundedTo(room.size() * SHARE)
     window.resize(size)
     centre = room.center()
     window.move(centre.x() - size.width() // 2, centre.y() - size.height() // 2)

@@ -49,7 +49,7 @@ def test_a_small_screen_maximises_and_a_large_one_centres(qtbot: QtBot,
     assert window.width() <= PANEL.width() and window.height() <= PANEL.height()
     assert not place_main_window(window, None, DESKTOP_ROOM)
     assert not window.isMaximized()
-    assert window.size() == QSize(1200, 800)
+    assert window.size() == QSize(1536, 832)  # 80 % of the desktop
     assert (window.frameGeometry().center() - DESKTOP_ROOM.center()).manhattanLength() <= 4
 
 
@@ -73,7 +73,7 @@ def test_bytes_that_are_no_saved_geometry_give_the_first_size(qtbot: QtBot,
     qtbot.addWidget(window)
     assert saved_normal_geometry(QByteArray(b"not a geometry")) is None
     assert not place_main_window(window, QByteArray(b"not a geometry"), DESKTOP_ROOM)
-    assert window.size().width() == 1200
+    assert window.size().width() == 1536
 
 
 @pytest.mark.parametrize("language", ["en", "tr"])
