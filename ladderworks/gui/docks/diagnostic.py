@@ -241,8 +241,8 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.message.setObjectName("diagnosticMessage")
         self.message.setWordWrap(True)
         state_row = QHBoxLayout()  # with the search's message: no row more than before
-        state_row.addWidget(self.state, 1)
-        state_row.addWidget(self.message, 2)
+        state_row.addWidget(self.state, 2)  # "RUNNING — scan 1234" on one line
+        state_row.addWidget(self.message, 1)
         state_row.addWidget(self.why_button)
         state_row.addWidget(self.live_button)
         for part in (self.zoom_out_button, self.zoom_label, self.zoom_in_button):
