@@ -1,6 +1,6 @@
 """Find and replace in the 37,883-step FANUC_STUDER_S41_F036: ms for the core's find, a
-symbol, words, Find next in the window, Replace all and its undo; run from the repository
-root."""
+symbol, words, Find next in the window (also in comments and signal descriptions), Replace all
+and its undo, and View › Fit width over every network; run from the repository root."""
 
 from __future__ import annotations
 
@@ -68,6 +68,26 @@ def main() -> int:
         dialog.find_next()
         app.processEvents()
         print(f"Find next again (hits kept):      {_ms(began):7.1f} ms  {dialog.message.text()}")
+        dialog.in_texts.setChecked(True)
+        dialog.find_text.setText("spindle")
+        began = time.perf_counter()
+        dialog.find_next()
+        app.processEvents()
+        print(f"Find next in texts ('spindle'):   {_ms(began):7.1f} ms  {dialog.message.text()}")
+        began = time.perf_counter()
+        dialog.find_next()
+        app.processEvents()
+        print(f"again (texts' hits kept):         {_ms(began):7.1f} ms  {dialog.message.text()}")
+        dialog.in_texts.setChecked(False)
+        dialog.find_text.setText("R100")
+        window.resize(1024, 600)
+        app.processEvents()
+        began = time.perf_counter()
+        window.fit_width.set_enabled(True)
+        app.processEvents()
+        print(f"Fit width at 1024 px:             {_ms(began):7.1f} ms  zoom "
+              f"{window.editor.zoom():.2f}, {window.fit_width.describe()}")
+        window.fit_width.set_enabled(False)
         began = time.perf_counter()
         count = dialog.replace_all()
         app.processEvents()

@@ -4,107 +4,107 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="120"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="155"/>
         <source>Alarm message file</source>
         <translation>Alarm message file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="157"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm files (*.dat);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="163"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>The program&apos;s messages (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="166"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="167"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm file... uses an AlarmMsg.dat instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
         <source>No alarm file</source>
         <translation>No alarm file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="172"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="173"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} messages</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="176"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="177"/>
         <source>{0} lines with problems</source>
         <translation>{0} lines with problems</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="184"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="202"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(no message {0} in the alarm file)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="236"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
         <source>Seen at {0}</source>
         <translation>Seen at {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="281"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="282"/>
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="282"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="283"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="284"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="285"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="287"/>
         <source>Alarm file...</source>
         <translation>Alarm file...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
         <source>PLC time</source>
         <translation>PLC time</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="293"/>
         <source>Clock</source>
         <translation>Clock</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="294"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -190,137 +190,137 @@
 <context>
     <name>CrossReference</name>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="61"/>
         <source>Contact</source>
         <translation>Contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
         <source>NOT contact</source>
         <translation>NOT contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
         <source>Coil</source>
         <translation>Coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
         <source>NOT coil</source>
         <translation>NOT coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
         <source>SET coil</source>
         <translation>SET coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
         <source>RST coil</source>
         <translation>RST coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="75"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="76"/>
         <source>Read</source>
         <translation>Read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="77"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
         <source>Write</source>
         <translation>Write</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="79"/>
         <source>Read and write</source>
         <translation>Read and write</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="84"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="85"/>
         <source>Level {0}</source>
         <translation>Level {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
         <source>Symbol</source>
         <translation>Symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
         <source>Network</source>
         <translation>Network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
         <source>Label</source>
         <translation>Label</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
         <source>Program part</source>
         <translation>Program part</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
         <source>Element</source>
         <translation>Element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
         <source>Access</source>
         <translation>Access</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="242"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="243"/>
         <source>All addresses — uses: {0}</source>
         <translation>All addresses — uses: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="253"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="264"/>
         <source>{0} is not used in the program</source>
         <translation>{0} is not used in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="267"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — uses: {1} (read: {2}, written: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="287"/>
         <source>Cross reference</source>
         <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="293"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Address or symbol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="294"/>
         <source>e.g. X21.7, R100, ESKIP</source>
         <translation>e.g. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="290"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Cross &amp;reference of this address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="291"/>
         <source>List every place the program reads and writes the address</source>
         <translation>List every place the program reads and writes the address</translation>
     </message>
@@ -976,57 +976,57 @@
 <context>
     <name>ErrorList</name>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="26"/>
+        <location filename="../ladderworks/gui/error_list.py" line="27"/>
         <source>network {0}, row {1}, column {2}</source>
         <translation>network {0}, row {1}, column {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="30"/>
+        <location filename="../ladderworks/gui/error_list.py" line="31"/>
         <source>network {0}</source>
         <translation>network {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="33"/>
+        <location filename="../ladderworks/gui/error_list.py" line="34"/>
         <source>line {0}, column {1}</source>
         <translation>line {0}, column {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="90"/>
+        <location filename="../ladderworks/gui/error_list.py" line="91"/>
         <source>Errors: {0}   Warnings: {1}</source>
         <translation>Errors: {0}   Warnings: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="96"/>
+        <location filename="../ladderworks/gui/error_list.py" line="97"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="97"/>
+        <location filename="../ladderworks/gui/error_list.py" line="98"/>
         <source>Warning</source>
         <translation>Warning</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="111"/>
+        <location filename="../ladderworks/gui/error_list.py" line="112"/>
         <source>Errors</source>
         <translation>Errors</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="112"/>
+        <location filename="../ladderworks/gui/error_list.py" line="113"/>
         <source>Show warnings</source>
         <translation>Show warnings</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="114"/>
+        <location filename="../ladderworks/gui/error_list.py" line="115"/>
         <source>Kind</source>
         <translation>Kind</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="115"/>
+        <location filename="../ladderworks/gui/error_list.py" line="116"/>
         <source>Where</source>
         <translation>Where</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="116"/>
+        <location filename="../ladderworks/gui/error_list.py" line="117"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -1034,142 +1034,176 @@
 <context>
     <name>FindReplace</name>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="161"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="172"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="202"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="276"/>
         <source>Not found</source>
         <translation>Not found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="190"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="221"/>
         <source>network {0}</source>
         <translation>network {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="227"/>
         <source>{0} of {1}: {2}, {3}</source>
         <translation>{0} of {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
         <source>Replace {0} with {1}</source>
         <translation>Replace {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="229"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
         <source>Replaced; no more found</source>
         <translation>Replaced; no more found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="245"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="281"/>
         <source>Replace all {0} with {1}</source>
         <translation>Replace all {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="247"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="283"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{0} replaced in {1} networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="255"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="291"/>
         <source>Find and replace</source>
         <translation>Find and replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="256"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="173"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="292"/>
         <source>Find:</source>
         <translation>Find:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="257"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
+        <source>{0} ({1})</source>
+        <translation>{0} ({1})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="226"/>
+        <source>network comment</source>
+        <translation>network comment</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="293"/>
         <source>Replace with:</source>
         <translation>Replace with:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="295"/>
         <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
         <translation>Address, symbol or words, e.g. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="261"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="297"/>
         <source>Address or symbol, e.g. R200</source>
         <translation>Address or symbol, e.g. R200</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="262"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="263"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="299"/>
         <source>Find &amp;previous</source>
         <translation>Find &amp;previous</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="264"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="300"/>
         <source>&amp;Replace</source>
         <translation>&amp;Replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="301"/>
         <source>Replace &amp;all</source>
         <translation>Replace &amp;all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="266"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="302"/>
         <source>Close</source>
         <translation>Close</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
+        <source>Also in comments and signal descriptions</source>
+        <translation>Also in comments and signal descriptions</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
+        <source>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</source>
+        <translation>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</translation>
+    </message>
+</context>
+<context>
+    <name>FitWidth</name>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="60"/>
+        <source>Fit width: every network fits the window&apos;s width</source>
+        <translation>Fit width: every network fits the window&apos;s width</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="61"/>
+        <source>Fit width: {0} of {1} networks fit the window&apos;s width; the {2} wider ones scroll sideways</source>
+        <translation>Fit width: {0} of {1} networks fit the window&apos;s width; the {2} wider ones scroll sideways</translation>
     </message>
 </context>
 <context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="70"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="71"/>
         <source>Forced and passive</source>
         <translation>Forced and passive</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="72"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
         <source>Kind</source>
         <translation>Kind</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="72"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
         <source>Signal / element</source>
         <translation>Signal / element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="74"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="74"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="76"/>
         <source>Release all</source>
         <translation>Release all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="84"/>
         <source>FORCED</source>
         <translation>FORCED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>network {0}, line {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="93"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="102"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="104"/>
         <source>Release</source>
         <translation>Release</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="106"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="108"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} forced, {1} passive</translation>
     </message>
@@ -1283,8 +1317,8 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="234"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="106"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="235"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="251"/>
         <source>NOT</source>
         <translation>NOT</translation>
@@ -1295,37 +1329,37 @@
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="222"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="228"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="223"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="229"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="355"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="245"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="251"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="246"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="252"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="389"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="109"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="102"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="110"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="103"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="111"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="124"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="125"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="128"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="129"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -1340,44 +1374,44 @@
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="174"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="175"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="187"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="188"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="153"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="67"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="174"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="86"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="87"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="156"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="56"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="58"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="263"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="264"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="275"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="276"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="284"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="285"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
@@ -1622,29 +1656,29 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="191"/>
+        <location filename="../ladderworks/gui/main_window.py" line="199"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="403"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="401"/>
+        <location filename="../ladderworks/gui/main_window.py" line="409"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="408"/>
+        <location filename="../ladderworks/gui/main_window.py" line="416"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="424"/>
-        <location filename="../ladderworks/gui/main_window.py" line="256"/>
-        <location filename="../ladderworks/gui/main_window.py" line="403"/>
+        <location filename="../ladderworks/gui/main_window.py" line="264"/>
+        <location filename="../ladderworks/gui/main_window.py" line="411"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -1783,32 +1817,32 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="365"/>
+        <location filename="../ladderworks/gui/main_window.py" line="373"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="381"/>
+        <location filename="../ladderworks/gui/main_window.py" line="389"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="445"/>
+        <location filename="../ladderworks/gui/main_window.py" line="453"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="448"/>
+        <location filename="../ladderworks/gui/main_window.py" line="456"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="480"/>
+        <location filename="../ladderworks/gui/main_window.py" line="488"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="481"/>
+        <location filename="../ladderworks/gui/main_window.py" line="489"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2198,43 +2232,43 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="149"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC CONTROL SCREEN</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
         <source>Open .MOD…</source>
         <translation>Open .MOD…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
         <source>Take the console&apos;s program</source>
         <translation>Take the console&apos;s program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
         <source>Compile</source>
         <translation>Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="185"/>
         <source>Program loaded from the console</source>
         <translation>Program loaded from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="205"/>
         <source>In the PLC: {0}</source>
         <translation>In the PLC: {0}</translation>
     </message>
@@ -2327,103 +2361,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="279"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="280"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="281"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="282"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="283"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="284"/>
         <source>Why?</source>
         <translation>Why?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="285"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="288"/>
         <source>Back to live</source>
         <translation>Back to live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="275"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="289"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Zoom out (Ctrl+wheel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="276"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="290"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Zoom in (Ctrl+wheel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="292"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="288"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="302"/>
         <source>{0} %</source>
         <translation>{0} %</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="373"/>
         <location filename="../ladderworks/gui/docks/online.py" line="144"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="360"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="379"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="381"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="383"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="405"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="424"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="449"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="468"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="459"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="478"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="468"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="488"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
@@ -2610,8 +2644,8 @@
         <translation>Address (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="59"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="284"/>
         <source>INSERT</source>
         <translation>INSERT</translation>
     </message>
@@ -2621,42 +2655,42 @@
         <translation>TMRB: the preset is fixed in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="287"/>
         <source>DELETE</source>
         <translation>DELETE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="317"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="318"/>
         <source>PLC tables</source>
         <translation>PLC tables</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="319"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
         <source>Timers (TMR)</source>
         <translation>Timers (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="321"/>
         <source>Counters (CTR)</source>
         <translation>Counters (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="322"/>
         <source>Data table (D)</source>
         <translation>Data table (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="322"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="323"/>
         <source>Keep relays (K)</source>
         <translation>Keep relays (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="329"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="331"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="334"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</translation>
     </message>
@@ -3127,118 +3161,118 @@
 <context>
     <name>Scenario</name>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="95"/>
         <source>Run scenario</source>
         <translation>Run scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="93"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="210"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="96"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="219"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Scenario files (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="103"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="107"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="123"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="182"/>
         <source>passed</source>
         <translation>passed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="165"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="183"/>
         <source>FAILED</source>
         <translation>FAILED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="167"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: all {1} checks passed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="170"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {1} of {2} checks failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="209"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="218"/>
         <source>Save the recorded scenario</source>
         <translation>Save the recorded scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
         <source>recorded in LadderWorks</source>
         <translation>recorded in LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="222"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
         <source>Recording inputs and forces...</source>
         <translation>Recording inputs and forces...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="241"/>
         <source>Recorded {0} changes</source>
         <translation>Recorded {0} changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="250"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="242"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="253"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="265"/>
         <source>PLC scenario</source>
         <translation>PLC scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="254"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="266"/>
         <source>Run scenario...</source>
         <translation>Run scenario...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
         <source>Record scenario</source>
         <translation>Record scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
         <source>Check</source>
         <translation>Check</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
         <source>Expected</source>
         <translation>Expected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
         <source>Got</source>
         <translation>Got</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="259"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Time (ms)</source>
         <translation>Time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="259"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
@@ -3246,57 +3280,57 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="109"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="110"/>
         <source>Program symbol</source>
         <translation>Program symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="166"/>
         <source>{0} signals</source>
         <translation>{0} signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="173"/>
         <source>Signals</source>
         <translation>Signals</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="177"/>
         <source>In English</source>
         <translation>In English</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="177"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="178"/>
         <source>In Turkish</source>
         <translation>In Turkish</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="179"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="180"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="180"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="181"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="181"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="182"/>
         <source>Description</source>
         <translation>Description</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program symbols, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="175"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Address, symbol, name or words, e.g. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="184"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="186"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Double-click: use the address for the contact or coil at the cursor</translation>
     </message>
@@ -3304,147 +3338,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="161"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="164"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="181"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="184"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="196"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="205"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="208"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="221"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="355"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="370"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="369"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="373"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="389"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="379"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
         <source>Cannot write {0}</source>
         <translation>Cannot write {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="404"/>
         <source>Export time chart as CSV</source>
         <translation>Export time chart as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="406"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="399"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="415"/>
         <source>Export time chart as PNG</source>
         <translation>Export time chart as PNG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="401"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="417"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="454"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="455"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="456"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="457"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="443"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="459"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="444"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="445"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="461"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="446"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="462"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="463"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="448"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="449"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="455"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="458"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="474"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>
@@ -3457,27 +3491,37 @@
 <context>
     <name>TimeTravel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="62"/>
         <source>Keep scan history (time travel)</source>
         <translation>Keep scan history (time travel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="63"/>
         <source>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</source>
         <translation>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="128"/>
+        <source>before the scan history, which begins at {0} ms</source>
+        <translation>before the scan history, which begins at {0} ms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="138"/>
+        <source>The cursor is before the scan history, which begins at {0} ms: no scan to show</source>
+        <translation>The cursor is before the scan history, which begins at {0} ms: no scan to show</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="173"/>
         <source>Turn on PLC › Keep scan history and give a bit address</source>
         <translation>Turn on PLC › Keep scan history and give a bit address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="181"/>
         <source>{0} did not change in the scans kept</source>
         <translation>{0} did not change in the scans kept</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="188"/>
         <source>{0} went to {1} in scan {2} at {3} ms</source>
         <translation>{0} went to {1} in scan {2} at {3} ms</translation>
     </message>

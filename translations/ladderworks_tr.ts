@@ -4,107 +4,107 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="120"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="155"/>
         <source>Alarm message file</source>
         <translation>Alarm mesaj dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="157"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm dosyaları (*.dat);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="163"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>Programın mesajları (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="166"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="167"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm dosyası... bunun yerine bir AlarmMsg.dat kullanır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
         <source>No alarm file</source>
         <translation>Alarm dosyası yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="172"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="173"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} mesaj</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="176"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="177"/>
         <source>{0} lines with problems</source>
         <translation>{0} satırda sorun var</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="184"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="202"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(alarm dosyasında {0} numaralı mesaj yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="236"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>Bit yeniden 0: RESET bu alarmı siler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="238"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
         <source>Seen at {0}</source>
         <translation>Görüldüğü saat: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="281"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="282"/>
         <source>Alarms</source>
         <translation>ALARMLAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="282"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="283"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="284"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="285"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="287"/>
         <source>Alarm file...</source>
         <translation>Alarm dosyası...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
         <source>PLC time</source>
         <translation>PLC zamanı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="293"/>
         <source>Clock</source>
         <translation>Saat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="294"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
@@ -190,137 +190,137 @@
 <context>
     <name>CrossReference</name>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="61"/>
         <source>Contact</source>
         <translation>Kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
         <source>NOT contact</source>
         <translation>DEĞİL kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
         <source>Coil</source>
         <translation>Çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
         <source>NOT coil</source>
         <translation>DEĞİL çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
         <source>SET coil</source>
         <translation>SET çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
         <source>RST coil</source>
         <translation>RST çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="75"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="76"/>
         <source>Read</source>
         <translation>Okuma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="77"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
         <source>Write</source>
         <translation>Yazma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="79"/>
         <source>Read and write</source>
         <translation>Okuma ve yazma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="84"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="85"/>
         <source>Level {0}</source>
         <translation>{0}. seviye</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
         <source>Symbol</source>
         <translation>Sembol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
         <source>Network</source>
         <translation>Devre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
         <source>Label</source>
         <translation>Etiket</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
         <source>Program part</source>
         <translation>Program bölümü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
         <source>Element</source>
         <translation>Eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
         <source>Access</source>
         <translation>Erişim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="242"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="243"/>
         <source>All addresses — uses: {0}</source>
         <translation>Tüm adresler — kullanım: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="253"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="264"/>
         <source>{0} is not used in the program</source>
         <translation>{0} programda kullanılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="267"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — kullanım: {1} (okuma: {2}, yazma: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="287"/>
         <source>Cross reference</source>
         <translation>Çapraz referans</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="293"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Adres veya sembol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="294"/>
         <source>e.g. X21.7, R100, ESKIP</source>
         <translation>örn. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="290"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Bu adresin çapraz &amp;referansı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="291"/>
         <source>List every place the program reads and writes the address</source>
         <translation>Programın adresi okuduğu ve yazdığı her yeri listeler</translation>
     </message>
@@ -976,57 +976,57 @@
 <context>
     <name>ErrorList</name>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="26"/>
+        <location filename="../ladderworks/gui/error_list.py" line="27"/>
         <source>network {0}, row {1}, column {2}</source>
         <translation>devre {0}, satır {1}, sütun {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="30"/>
+        <location filename="../ladderworks/gui/error_list.py" line="31"/>
         <source>network {0}</source>
         <translation>devre {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="33"/>
+        <location filename="../ladderworks/gui/error_list.py" line="34"/>
         <source>line {0}, column {1}</source>
         <translation>satır {0}, sütun {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="90"/>
+        <location filename="../ladderworks/gui/error_list.py" line="91"/>
         <source>Errors: {0}   Warnings: {1}</source>
         <translation>Hata: {0}   Uyarı: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="96"/>
+        <location filename="../ladderworks/gui/error_list.py" line="97"/>
         <source>Error</source>
         <translation>Hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="97"/>
+        <location filename="../ladderworks/gui/error_list.py" line="98"/>
         <source>Warning</source>
         <translation>Uyarı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="111"/>
+        <location filename="../ladderworks/gui/error_list.py" line="112"/>
         <source>Errors</source>
         <translation>Hatalar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="112"/>
+        <location filename="../ladderworks/gui/error_list.py" line="113"/>
         <source>Show warnings</source>
         <translation>Uyarıları göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="114"/>
+        <location filename="../ladderworks/gui/error_list.py" line="115"/>
         <source>Kind</source>
         <translation>Tür</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="115"/>
+        <location filename="../ladderworks/gui/error_list.py" line="116"/>
         <source>Where</source>
         <translation>Yer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/error_list.py" line="116"/>
+        <location filename="../ladderworks/gui/error_list.py" line="117"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
@@ -1034,142 +1034,176 @@
 <context>
     <name>FindReplace</name>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="161"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="172"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="240"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="202"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="276"/>
         <source>Not found</source>
         <translation>Bulunamadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="190"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="221"/>
         <source>network {0}</source>
         <translation>devre {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="227"/>
         <source>{0} of {1}: {2}, {3}</source>
         <translation>{0} / {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
         <source>Replace {0} with {1}</source>
         <translation>{0} yerine {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="229"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
         <source>Replaced; no more found</source>
         <translation>Değiştirildi; başka bulunamadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="245"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="281"/>
         <source>Replace all {0} with {1}</source>
         <translation>Tüm {0} yerine {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="247"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="283"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{1} devrede {0} yer değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="255"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="291"/>
         <source>Find and replace</source>
         <translation>Bul ve değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="256"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="173"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="292"/>
         <source>Find:</source>
         <translation>Bul:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="257"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
+        <source>{0} ({1})</source>
+        <translation>{0} ({1})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="226"/>
+        <source>network comment</source>
+        <translation>devre yorumu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="293"/>
         <source>Replace with:</source>
         <translation>Yerine:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="295"/>
         <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
         <translation>Adres, sembol veya sözcükler, örn. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="261"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="297"/>
         <source>Address or symbol, e.g. R200</source>
         <translation>Adres veya sembol, örn. R200</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="262"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
         <source>Find &amp;next</source>
         <translation>&amp;Sonrakini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="263"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="299"/>
         <source>Find &amp;previous</source>
         <translation>Ö&amp;ncekini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="264"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="300"/>
         <source>&amp;Replace</source>
         <translation>&amp;Değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="301"/>
         <source>Replace &amp;all</source>
         <translation>&amp;Tümünü değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="266"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="302"/>
         <source>Close</source>
         <translation>Kapat</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
+        <source>Also in comments and signal descriptions</source>
+        <translation>Yorumlarda ve sinyal açıklamalarında da ara</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
+        <source>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</source>
+        <translation>Kelimeleri elemanların yorumlarında, programın adres yorumlarında, kılavuzun sinyal açıklamalarında ve devre yorumlarında ara</translation>
+    </message>
+</context>
+<context>
+    <name>FitWidth</name>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="60"/>
+        <source>Fit width: every network fits the window&apos;s width</source>
+        <translation>Genişliğe sığdır: her devre pencerenin genişliğine sığıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="61"/>
+        <source>Fit width: {0} of {1} networks fit the window&apos;s width; the {2} wider ones scroll sideways</source>
+        <translation>Genişliğe sığdır: {1} devreden {0} tanesi pencerenin genişliğine sığıyor; daha geniş {2} devre yana kaydırılır</translation>
     </message>
 </context>
 <context>
     <name>ForceList</name>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="70"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="71"/>
         <source>Forced and passive</source>
         <translation>Zorlananlar ve pasifler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="72"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
         <source>Kind</source>
         <translation>Tür</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="72"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
         <source>Signal / element</source>
         <translation>Sinyal / eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="74"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="74"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="76"/>
         <source>Release all</source>
         <translation>Hepsini bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="84"/>
         <source>FORCED</source>
         <translation>ZORLANMIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>devre {0}, satır {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="93"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="102"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="104"/>
         <source>Release</source>
         <translation>Bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="106"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="108"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} zorlanmış, {1} pasif</translation>
     </message>
@@ -1283,8 +1317,8 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="234"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="106"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="235"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="251"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
@@ -1295,37 +1329,37 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="222"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="228"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="223"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="229"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="355"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="245"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="251"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="246"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="252"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="389"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="109"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="102"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="110"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="103"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="111"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="124"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="125"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="128"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="129"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -1340,44 +1374,44 @@
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="174"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="175"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="187"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="188"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="153"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="67"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="174"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="86"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="87"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="156"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="56"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="58"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="263"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="264"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="275"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="276"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="284"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="285"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -1622,29 +1656,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="191"/>
+        <location filename="../ladderworks/gui/main_window.py" line="199"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="403"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="401"/>
+        <location filename="../ladderworks/gui/main_window.py" line="409"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="408"/>
+        <location filename="../ladderworks/gui/main_window.py" line="416"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="424"/>
-        <location filename="../ladderworks/gui/main_window.py" line="256"/>
-        <location filename="../ladderworks/gui/main_window.py" line="403"/>
+        <location filename="../ladderworks/gui/main_window.py" line="264"/>
+        <location filename="../ladderworks/gui/main_window.py" line="411"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1783,32 +1817,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="365"/>
+        <location filename="../ladderworks/gui/main_window.py" line="373"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="381"/>
+        <location filename="../ladderworks/gui/main_window.py" line="389"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="445"/>
+        <location filename="../ladderworks/gui/main_window.py" line="453"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="448"/>
+        <location filename="../ladderworks/gui/main_window.py" line="456"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="480"/>
+        <location filename="../ladderworks/gui/main_window.py" line="488"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="481"/>
+        <location filename="../ladderworks/gui/main_window.py" line="489"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2198,43 +2232,43 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="149"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC KONTROL EKRANI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
         <source>Open .MOD…</source>
         <translation>.MOD aç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
         <source>Take the console&apos;s program</source>
         <translation>Konsoldaki programı al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
         <source>Compile</source>
         <translation>Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="185"/>
         <source>Program loaded from the console</source>
         <translation>Program konsoldan yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="205"/>
         <source>In the PLC: {0}</source>
         <translation>PLC&apos;deki program: {0}</translation>
     </message>
@@ -2327,103 +2361,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="279"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="280"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="281"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="282"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="283"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="284"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="285"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="288"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="275"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="289"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Uzaklaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="276"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="290"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Yakınlaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="292"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="288"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="302"/>
         <source>{0} %</source>
         <translation>%{0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="373"/>
         <location filename="../ladderworks/gui/docks/online.py" line="144"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="360"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="379"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="381"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="383"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="405"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="424"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="449"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="468"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="459"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="478"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="468"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="488"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
@@ -2610,8 +2644,8 @@
         <translation>Adres (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="59"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="284"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
     </message>
@@ -2621,42 +2655,42 @@
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="287"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="317"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="318"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="319"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="321"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="322"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="322"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="323"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="329"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="331"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="334"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
@@ -3127,118 +3161,118 @@
 <context>
     <name>Scenario</name>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="95"/>
         <source>Run scenario</source>
         <translation>Senaryo çalıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="93"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="210"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="96"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="219"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Senaryo dosyaları (*.csv);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="103"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="107"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="123"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="182"/>
         <source>passed</source>
         <translation>geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="165"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="183"/>
         <source>FAILED</source>
         <translation>BAŞARISIZ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="167"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: {1} denetimin tümü geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="170"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {2} denetimden {1} tanesi başarısız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="209"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="218"/>
         <source>Save the recorded scenario</source>
         <translation>Kaydedilen senaryoyu sakla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
         <source>recorded in LadderWorks</source>
         <translation>LadderWorks ile kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="222"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
         <source>Recording inputs and forces...</source>
         <translation>Girişler ve zorlamalar kaydediliyor...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="241"/>
         <source>Recorded {0} changes</source>
         <translation>{0} değişiklik kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="250"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="242"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="253"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="265"/>
         <source>PLC scenario</source>
         <translation>PLC senaryosu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="254"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="266"/>
         <source>Run scenario...</source>
         <translation>Senaryo çalıştır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
         <source>Record scenario</source>
         <translation>Senaryo kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
         <source>Line</source>
         <translation>Satır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
         <source>Check</source>
         <translation>Denetim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
         <source>Expected</source>
         <translation>Beklenen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
         <source>Got</source>
         <translation>Okunan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="259"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Time (ms)</source>
         <translation>Zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="259"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
@@ -3246,57 +3280,57 @@
 <context>
     <name>SignalList</name>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="109"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="110"/>
         <source>Program symbol</source>
         <translation>Program sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="165"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="166"/>
         <source>{0} signals</source>
         <translation>{0} sinyal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="172"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="173"/>
         <source>Signals</source>
         <translation>Sinyaller</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="176"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="177"/>
         <source>In English</source>
         <translation>İngilizce</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="177"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="178"/>
         <source>In Turkish</source>
         <translation>Türkçe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="179"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="180"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="180"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="181"/>
         <source>Name</source>
         <translation>Ad</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="181"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="182"/>
         <source>Description</source>
         <translation>Açıklama</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="167"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="168"/>
         <source>{0} program symbols, {1}</source>
         <translation>{0} program sembolü, {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="174"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="175"/>
         <source>Address, symbol, name or words, e.g. G8.4, SPL, acil</source>
         <translation>Adres, sembol, ad veya sözcükler, örn. G8.4, SPL, acil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/signal_list.py" line="184"/>
+        <location filename="../ladderworks/gui/signal_list.py" line="186"/>
         <source>Double-click: use the address for the contact or coil at the cursor</source>
         <translation>Çift tıklama: adresi imleçteki kontak veya bobine ver</translation>
     </message>
@@ -3304,147 +3338,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="161"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="164"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="181"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="184"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="196"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="205"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="208"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="221"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="355"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="370"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="369"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="373"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="389"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="379"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="404"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="406"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="399"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="415"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="401"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="417"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="454"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="455"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="456"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="457"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="443"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="459"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="444"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="445"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="461"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="446"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="462"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="463"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="448"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="449"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="455"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="458"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="474"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>
@@ -3457,27 +3491,37 @@
 <context>
     <name>TimeTravel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="62"/>
         <source>Keep scan history (time travel)</source>
         <translation>Tarama geçmişini tut (zamanda yolculuk)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="63"/>
         <source>Keep every scan&apos;s power flow and values: the time chart&apos;s cursor shows an earlier scan in the PLC diagnostic</source>
         <translation>Her taramanın enerji akışını ve değerlerini tut: zaman kartının imleci PLC teşhiste önceki bir taramayı gösterir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="128"/>
+        <source>before the scan history, which begins at {0} ms</source>
+        <translation>tarama geçmişinden önce; geçmiş {0} ms&apos;de başlıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="138"/>
+        <source>The cursor is before the scan history, which begins at {0} ms: no scan to show</source>
+        <translation>İmleç tarama geçmişinden önce (geçmiş {0} ms&apos;de başlıyor): gösterilecek tarama yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="173"/>
         <source>Turn on PLC › Keep scan history and give a bit address</source>
         <translation>PLC › Tarama geçmişini tut seçeneğini açın ve bir bit adresi verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="181"/>
         <source>{0} did not change in the scans kept</source>
         <translation>{0}, tutulan taramalarda değişmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_travel.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/time_travel.py" line="188"/>
         <source>{0} went to {1} in scan {2} at {3} ms</source>
         <translation>{0}, {2}. taramada ({3} ms) {1} oldu</translation>
     </message>

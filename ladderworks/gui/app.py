@@ -8,22 +8,27 @@ import sys
 from collections.abc import Sequence
 
 from PySide6.QtCore import QCoreApplication, QTimer
+from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import QApplication
 
 from ladderworks import version
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.qt_libraries import missing_libraries, missing_libraries_text, uses_xcb
 from ladderworks.gui.refcount_guard import guard_singletons
+from ladderworks.gui.screen_fit import place_main_window
 from ladderworks.gui.settings import Settings
 from ladderworks.gui.translation import UiLanguage, system_language
 
 
 def create_window(settings: Settings | None = None) -> MainWindow:
-    """The main window (with its PLC docks) in the remembered or the system's UI language."""
+    """The main window (with its PLC docks) in the remembered or the system's UI language,
+    placed on its screen (the saved geometry if it fits, maximised on a small screen)."""
     settings = settings if settings is not None else Settings()
     language = UiLanguage()
     language.apply(settings.language() or system_language())
     window = MainWindow(settings, language)
+    screen = window.screen() or QGuiApplication.primaryScreen()
+    place_main_window(window, settings.window_state()[0], screen.availableGeometry())
     return window
 
 

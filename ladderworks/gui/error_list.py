@@ -16,6 +16,7 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.retranslate import Retranslating
 
 
@@ -115,4 +116,5 @@ class ErrorListDock(Retranslating, QDockWidget):
             QCoreApplication.translate("ErrorList", "Where"),
             QCoreApplication.translate("ErrorList", "Message"),
         ])
+        fit_headers(self.tree)
         self._fill()

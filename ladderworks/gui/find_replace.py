@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import (
+    QCheckBox,
     QDialog,
     QDialogButtonBox,
     QFormLayout,
@@ -26,8 +27,10 @@ from ladderworks.core.ladder.find_replace import (
     replacements,
 )
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.editor.network_item import network_tag
 from ladderworks.gui.editor.step_name import NamedCommand, StepName
 from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.find_texts import TextHit, find_in_texts
 from ladderworks.gui.retranslate import Retranslating
 
 translate = QCoreApplication.translate
@@ -54,7 +57,10 @@ class ReplaceAllCommand(NamedCommand):
         self._apply()
 
 
-def _position(hit: Found) -> tuple[int, int, int]:
+def _position(hit: Found | TextHit) -> tuple[int, int, int]:
+    """Where a hit is in program order (a network comment line before the network's cells)."""
+    if isinstance(hit, TextHit) and hit.comment_line is not None:
+        return hit.network, -1, hit.comment_line
     row, col = hit.cell if hit.cell is not None else (0, 0)
     return hit.network, row, col
 
@@ -81,6 +87,10 @@ class FindReplaceDialog(Retranslating, QDialog):
         form = QFormLayout()
         form.addRow(self._find_label, self.find_text)
         form.addRow(self._replace_label, self.replace_text)
+        self.in_texts = QCheckBox(self)  # comments and the manual's signal descriptions too
+        self.in_texts.setObjectName("find_in_texts")
+        self.in_texts.toggled.connect(lambda _on: self.message.clear())
+        form.addRow(self.in_texts)
         self.buttons = QDialogButtonBox(self)
         self.find_next_button = self._button("find_next", self.find_next)
         self.find_previous_button = self._button("find_previous", self.find_previous)
@@ -98,6 +108,7 @@ class FindReplaceDialog(Retranslating, QDialog):
         self._generation = 0
         editor.undo_stack.indexChanged.connect(self._drawing_changed)
         self._cache: tuple[object, int, str, list[Found]] | None = None
+        self._text_cache: tuple[object, int, str, str, list[TextHit]] | None = None
         self.retranslate()
 
     def _button(self, name: str, slot: object) -> QPushButton:
@@ -151,12 +162,31 @@ class FindReplaceDialog(Retranslating, QDialog):
         self._cache = (networks, self._generation, self.find_text.text(), hits)
         return hits
 
+    def found(self) -> list[Found | TextHit]:
+        """What Find next / previous go through: the address hits, and with "Also in comments
+        and signal descriptions" the places whose texts hold the words, in program order."""
+        hits: list[Found | TextHit] = list(self.hits())
+        if not self.in_texts.isChecked() or not self.find_text.text().strip():
+            return hits
+        self.editor.finish_loading()
+        networks, text = self.editor.networks, self.find_text.text()
+        language = QCoreApplication.translate("FindReplace", "Find:")  # descriptions follow it
+        cache = self._text_cache
+        if (cache is not None and cache[0] is networks and cache[1] == self._generation
+                and cache[2] == text and cache[3] == language):
+            more = cache[4]
+        else:
+            more = find_in_texts(networks, text, self.editor.model.symbols)
+            self._text_cache = (networks, self._generation, text, language, more)
+        seen = {_position(hit) for hit in hits}
+        return sorted(hits + [hit for hit in more if _position(hit) not in seen], key=_position)
+
     def _drawing_changed(self, _index: int) -> None:
         self._generation += 1
 
-    def find_next(self) -> Found | None:
+    def find_next(self) -> Found | TextHit | None:
         """Move the editor's cursor to the next hit after it (wrapping round); None if none."""
-        hits = self.hits()
+        hits = self.found()
         if not hits:
             self._say(translate("FindReplace", "Not found"))
             return None
@@ -165,9 +195,9 @@ class FindReplaceDialog(Retranslating, QDialog):
         self._go_to(hits, number)
         return hits[number]
 
-    def find_previous(self) -> Found | None:
+    def find_previous(self) -> Found | TextHit | None:
         """Move the editor's cursor to the hit before it (wrapping round); None if none."""
-        hits = self.hits()
+        hits = self.found()
         if not hits:
             self._say(translate("FindReplace", "Not found"))
             return None
@@ -177,19 +207,25 @@ class FindReplaceDialog(Retranslating, QDialog):
         self._go_to(hits, number)
         return hits[number]
 
-    def find_again(self, forward: bool) -> Found | None:
+    def find_again(self, forward: bool) -> Found | TextHit | None:
         """Find next (F3) or previous (Shift+F3) with the text already typed; the message
         says "Not found" for none."""
         return self.find_next() if forward else self.find_previous()
 
-    def _go_to(self, hits: list[Found], number: int) -> None:
+    def _go_to(self, hits: list[Found | TextHit], number: int) -> None:
         hit = hits[number]
         self.editor.selection = None
-        self.editor.move_cursor(*_position(hit))
-        network = self.editor.networks[hit.network]
-        where = network.label or translate("FindReplace", "network {0}").format(hit.network + 1)
+        network, row, col = _position(hit)
+        self.editor.jump_to(network, max(row, 0), col if row >= 0 else 0)  # in mid-view
+        label = self.editor.networks[hit.network].label
+        where = translate("FindReplace", "network {0}").format(hit.network + 1)
+        if label:  # the LADDER-III label beside the number the console shows (N15)
+            where = translate("FindReplace", "{0} ({1})").format(network_tag(hit.network + 1),
+                                                                 label)
+        what = (str(hit.address) if hit.address is not None
+                else translate("FindReplace", "network comment"))
         self._say(translate("FindReplace", "{0} of {1}: {2}, {3}").format(
-            number + 1, len(hits), where, hit.address))
+            number + 1, len(hits), where, what))
 
     def _current(self, hits: list[Found]) -> list[Found]:
         """The hits at the editor's cursor."""
@@ -264,3 +300,7 @@ class FindReplaceDialog(Retranslating, QDialog):
         self.replace_button.setText(translate("FindReplace", "&Replace"))
         self.replace_all_button.setText(translate("FindReplace", "Replace &all"))
         self.close_button.setText(translate("FindReplace", "Close"))
+        self.in_texts.setText(translate("FindReplace", "Also in comments and signal descriptions"))
+        self.in_texts.setToolTip(translate(
+            "FindReplace", "Find the words in the elements' comments, the program's comments "
+            "of its addresses, the manual's signal descriptions and the network comments"))

@@ -25,6 +25,7 @@ from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.core.ladder.logic import coil_spec, contact_spec
 from ladderworks.gui import compile_step, questions
 from ladderworks.gui.actions_table import CAN_REDO, CAN_UNDO, CONTEXT_MENU, LADDER_SHOWN
+from ladderworks.gui.cell_status import CellStatus
 from ladderworks.gui.console_menus import Condition, ConsoleMenus
 from ladderworks.gui.dock_tabs import WholeDockTitles
 from ladderworks.gui.docks import cross_reference
@@ -96,6 +97,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         fit = self.actions_by_name["action_zoom_fit_width"]
         for name in ("action_zoom_in", "action_zoom_out", "action_zoom_reset"):
             self.actions_by_name[name].triggered.connect(lambda _c=False: fit.setChecked(False))
+        fit.toggled.connect(self._fit_toggled)  # after fit_width.set_enabled: says what fits
         self.names_menu = NameDisplayMenu(self.settings, self)  # View › Element names
         self.menus.add_menu("menu_view", self.names_menu)
         self.recent_menu = self.menus.menus["menu_recent"]
@@ -138,9 +140,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self._first_show = True
         self.help_window: InstructionHelp | None = None
         self.find_dialog: FindReplaceDialog | None = None
-        geometry, state = settings.window_state()
-        if geometry is not None:
-            self.restoreGeometry(geometry)
+        state = settings.window_state()[1]  # the geometry: screen_fit.place_main_window
         if state is not None:
             self.restoreState(state)
         self.new_file()
@@ -181,14 +181,22 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.cell_label.setObjectName("status_cell")
         self.cell_label.setMinimumWidth(140)
         self.statusBar().addPermanentWidget(self.cell_label)
+        self.cell_status = CellStatus(self.editor, self.cell_label)  # the cursor's cell, now
         self.zoom_label = QLabel(self)
         self.zoom_label.setObjectName("status_zoom")
         self.statusBar().addPermanentWidget(self.zoom_label)
         self.editor.zoom_changed.connect(self._show_zoom)
+        self.fit_width.fitted_changed.connect(self._show_zoom)
+
+    def _fit_toggled(self, on: bool) -> None:
+        self._show_zoom()
+        if on:
+            self._show_message(self.fit_width.describe)
 
     def _show_zoom(self, *_args: object) -> None:
         self.zoom_label.setText(percent(self.editor.zoom() * 100))
-        self.zoom_label.setToolTip(translate("MainWindow", "Zoom"))
+        # fit width says what it fitted: "9,812 of 10,000 networks fit…" (issue 31)
+        self.zoom_label.setToolTip(self.fit_width.describe() or translate("MainWindow", "Zoom"))
 
     # -- language ------------------------------------------------------------------------
 

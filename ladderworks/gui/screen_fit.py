@@ -1,8 +1,9 @@
-"""Windows sized for the screen they open on (a 1024×600 panel has no room for 900×600)."""
+"""Windows sized for the screen they open on (a 1024×600 panel has no room for 900×600,
+nor for the main window's 1200×800)."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QPoint, QSize
+from PySide6.QtCore import QByteArray, QDataStream, QPoint, QRect, QSize, Qt
 from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import QWidget
 
@@ -26,3 +27,41 @@ def keep_on_screen(window: QWidget) -> None:
     y = max(room.top(), min(frame.top(), room.bottom() + 1 - frame.height()))
     if (x, y) != (frame.left(), frame.top()):
         window.move(window.pos() + QPoint(x - frame.left(), y - frame.top()))
+
+
+FIRST_SIZE = QSize(1200, 800)  # the main window's size on a first start, where it fits
+SMALL = QSize(1280, 720)  # a free area this narrow or this low: the main window maximised
+LARGE_SHARE = 0.8  # of a large screen's free area: 1536×832 on a 1920×1040 desktop
+
+
+def saved_normal_geometry(saved: QByteArray) -> QRect | None:
+    """The normal (not maximised) geometry in QWidget.saveGeometry()'s bytes, or None."""
+    stream = QDataStream(saved)
+    stream.setVersion(QDataStream.Version.Qt_4_0)  # as saveGeometry writes it
+    magic, major = stream.readUInt32(), stream.readUInt16()
+    stream.readUInt16()  # minor version
+    if magic != 0x1D9D0CB or major < 1:
+        return None
+    frame, normal = QRect(), QRect()
+    stream >> frame
+    stream >> normal
+    ok = stream.status() == QDataStream.Status.Ok
+    return normal if ok and normal.isValid() else None
+
+
+def place_main_window(window: QWidget, saved: QByteArray | None, room: QRect) -> bool:
+    """Size the main window for the free area `room` of its screen before it is first shown:
+    the saved geometry when it still fits there (True), else 80 % of the free area (at least
+    1200×800, at most 90 %), centred, and maximised when the screen is small (a 1024×600
+    panel)."""
+    normal = saved_normal_geometry(saved) if saved is not None else None
+    if saved is not None and normal is not None and room.contains(normal):
+        return window.restoreGeometry(saved)
+    window.setWindowState(Qt.WindowState.WindowNoState)
+    size = FIRST_SIZE.expandedTo(room.size() * LARGE_SHARE).boundedTo(room.size() * SHARE)
+    window.resize(size)
+    centre = room.center()
+    window.move(centre.x() - size.width() // 2, centre.y() - size.height() // 2)
+    if room.width() <= SMALL.width() or room.height() <= SMALL.height():
+        window.setWindowState(Qt.WindowState.WindowMaximized)
+    return False

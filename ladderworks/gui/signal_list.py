@@ -21,6 +21,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.signals import Signal as PlcSignal
 from ladderworks.core.signals import fold, load_signals, search
 from ladderworks.core.symbols import Symbol, SymbolTable
+from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import ui_is_turkish
 
@@ -181,6 +182,7 @@ class SignalListDock(Retranslating, QDockWidget):
             translate("SignalList", "Description"),
             other,
         ])
+        fit_headers(self.table)
         self.table.setToolTip(translate(
             "SignalList", "Double-click: use the address for the contact or coil at the cursor"))
         # The description columns follow the language: refill now if shown, else when shown.

@@ -142,7 +142,7 @@ def test_every_plc_dock_opened_at_once_still_fits(window: MainWindow, qtbot: QtB
     qtbot.waitUntil(lambda: docks.control.figures.text() != "")
     assert minimum(window).boundedTo(PANEL) == minimum(window), minimum(window)
     assert window.size() == PANEL
-    for widget in (window.statusBar(), docks.control.toolbar, docks.control.run_bar,
+    for widget in (window.statusBar(), docks.control.toolbar,
                    docks.time_chart.plot, window.editor):
         assert inside(window, widget), widget.objectName()
     window.set_language("en")

@@ -24,6 +24,7 @@ from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il.program import Program
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.retranslate import Retranslating
@@ -293,5 +294,6 @@ class AlarmDock(Retranslating, QDockWidget):
                 translate("AlarmPanel", "Message"),
             ]
         )
+        fit_headers(self.tree)
         self._show_file()
         self._fill()

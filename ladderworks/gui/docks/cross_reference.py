@@ -37,6 +37,7 @@ from ladderworks.gui.console_menus import ConsoleMenus
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.symbol_text import name_and_text
 
@@ -296,6 +297,8 @@ class CrossReferenceDock(Retranslating, QDockWidget):
         if self.model.uses:
             self.model.dataChanged.emit(self.model.index(0, 0), self.model.index(
                 len(self.model.uses) - 1, CrossReferenceModel.COLUMNS - 1))
+            self._fit_columns()  # "Okuma" is wider than "Read", shown or not
+        fit_headers(self.table)
         if self.isVisible():
             self.refresh()
 
@@ -333,7 +336,7 @@ def install(window: QMainWindow, menus: ConsoleMenus, editor: LadderEditor,
         if not 0 <= network < len(editor.networks):
             return
         row, col = cell if cell is not None else (0, 0)
-        editor.move_cursor(network, row, col)
+        editor.jump_to(network, row, col)  # in the middle of the view
         editor.setFocus()
 
     dock.jump_requested.connect(jump)

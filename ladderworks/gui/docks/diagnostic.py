@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor, QPainter, QPaintEvent, QTransform, QWheelEvent
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -27,11 +27,18 @@ from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.docks.cell_map import binary_networks, program_matches, program_of
 from ladderworks.gui.docks.live_ladder import LivePower
 from ladderworks.gui.docks.snapshot_gate import SnapshotGate
-from ladderworks.gui.editor.geometry import Layout, cell_h, cell_origin, network_width
+from ladderworks.gui.editor.geometry import (
+    Layout,
+    cell_h,
+    cell_origin,
+    network_width,
+    typical_width,
+)
 from ladderworks.gui.editor.label_text import CommentedAddresses, shows_comment
 from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
 from ladderworks.gui.editor.lazy_items import LazyItems
 from ladderworks.gui.editor.network_item import NetworkItem
+from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.settings import Settings
@@ -78,6 +85,13 @@ class DiagnosticView(QGraphicsView):
         if abs(factor - self.zoom()) > 1e-6:
             self.setTransform(QTransform.fromScale(factor, factor))
         self.zoom_changed.emit(factor)
+
+    def fit_width(self) -> None:
+        """Zoom out (never in) until the typical network's coils are in the view's width."""
+        room = self.viewport().width() - 4
+        typical = typical_width(self.networks)
+        if self.networks and room > 0 and typical * self.zoom() > room:
+            self.set_zoom(room / typical)
 
     def zoom_by(self, steps: int) -> None:
         """Zoom in (`steps` > 0) or out by whole steps."""
@@ -186,7 +200,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
         bar = QHBoxLayout()
         self.search = QLineEdit(body)
         self.search.setObjectName("diagnosticSearch")
-        self.search.setMinimumWidth(150)
+        self.search.setMinimumWidth(110)
         self.search.returnPressed.connect(self.find_next)
         self.find_button = QPushButton(body)
         self.find_button.setObjectName("diagnosticFind")
@@ -228,8 +242,8 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.message.setObjectName("diagnosticMessage")
         self.message.setWordWrap(True)
         state_row = QHBoxLayout()  # with the search's message: no row more than before
-        state_row.addWidget(self.state, 1)
-        state_row.addWidget(self.message, 2)
+        state_row.addWidget(self.state, 2)  # "RUNNING — scan 1234" on one line
+        state_row.addWidget(self.message, 1)
         state_row.addWidget(self.why_button)
         state_row.addWidget(self.live_button)
         for part in (self.zoom_out_button, self.zoom_label, self.zoom_in_button):
@@ -242,7 +256,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.zoom_in_button.clicked.connect(lambda: self.view.zoom_by(1))
         self._show_zoom(self.view.zoom())
         self.setWidget(body)
-        self.setMinimumWidth(520)
+        self.setMinimumWidth(440)  # as the control screen: its tab group leaves the ladder room
         self.hits: list[tuple[int, Cell]] = []
         self.hit_index = -1
         self._monitoring = False
@@ -297,7 +311,10 @@ class DiagnosticDock(Retranslating, QDockWidget):
             program = program_of(binary)
         networks = self._lay_out(program)
         self.view.symbols = self.session.symbols
+        first = not self.view.networks  # the first program shown in an open dock: fitted
         self.view.show_networks(networks, binary, binary_networks(binary))
+        if first and self.isVisible():
+            QTimer.singleShot(0, self.view.fit_width)
         self.hits = []
         self.hit_index = -1
         self._repaint()
@@ -324,6 +341,8 @@ class DiagnosticDock(Retranslating, QDockWidget):
             self._monitoring = visible
             self.session.monitor(visible)
         if visible:
+            # the network's coils in the dock's width, once the dock has its width
+            QTimer.singleShot(0, self.view.fit_width)
             self._repaint()
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
@@ -402,8 +421,8 @@ class DiagnosticDock(Retranslating, QDockWidget):
         try:
             address = parse_address(text)
         except AddressError:
-            self.message.setText(translate("PlcDiagnostic", "'{0}' is not an address")
-                                 .format(text))
+            set_live_text(self.message, lambda: translate(
+                "PlcDiagnostic", "'{0}' is not an address").format(text))
             return None
         self.message.setText("")
         return address
@@ -465,6 +484,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.hit_index = (self.hit_index + 1) % len(self.hits)
         network, cell = self.hits[self.hit_index]
         self.view.centerOn(self.view.cell_rect(network, cell).center())
-        self.message.setText(translate("PlcDiagnostic", "{0} of {1}: network {2}").format(
-            self.hit_index + 1, len(self.hits), network + 1))
+        number, count = self.hit_index + 1, len(self.hits)
+        set_live_text(self.message, lambda: translate(
+            "PlcDiagnostic", "{0} of {1}: network {2}").format(number, count, network + 1))
         self._repaint()

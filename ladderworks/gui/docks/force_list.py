@@ -18,6 +18,7 @@ from PySide6.QtWidgets import (
 from ladderworks.core.il import print_instruction
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.plc.forcing import ForceEntry
+from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.symbol_text import labelled
@@ -71,6 +72,7 @@ class ForceListDock(Retranslating, QDockWidget):
         self.table.setHorizontalHeaderLabels([
             translate("ForceList", "Kind"), translate("ForceList", "Signal / element"),
             translate("ForceList", "Value"), ""])
+        fit_headers(self.table)
         self.release_all_button.setText(translate("ForceList", "Release all"))
         self.show_entries(self.entries)
 

@@ -15,7 +15,6 @@ from PySide6.QtWidgets import (
     QMessageBox,
     QProgressBar,
     QScrollArea,
-    QToolBar,
     QVBoxLayout,
     QWidget,
 )
@@ -24,6 +23,7 @@ from ladderworks.core.compiler import CompileResult, compile_program
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, decode, parse, print_program
 from ladderworks.gui import file_dialogs
+from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
 from ladderworks.gui.live_text import set_live_text
@@ -82,28 +82,27 @@ class PlcControlDock(Retranslating, QDockWidget):
         body = QWidget(self)
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
-        self.toolbar = QToolBar(body)
+        # buttons that wrap onto a second line in a narrow dock: START and STOP never hide
+        # behind a toolbar's "»" overflow (a 1024×600 panel, the Turkish texts)
+        self.toolbar = ButtonFlow(body)
         self.toolbar.setObjectName("plcControlToolbar")
-        self.run_bar = QToolBar(body)
-        self.run_bar.setObjectName("plcRunToolbar")
         self.control_actions: dict[str, QAction] = {}
-        for name, slot, bar in (
-                ("action_plc_open_mod", self.open_dialog, self.toolbar),
-                ("action_plc_take_console", self.take_console_program, self.toolbar),
-                ("action_plc_control_compile", self.compile, self.run_bar),
-                ("action_plc_start", self.start, self.run_bar),
-                ("action_plc_stop", self.stop, self.run_bar)):
+        for name, slot in (
+                ("action_plc_open_mod", self.open_dialog),
+                ("action_plc_take_console", self.take_console_program),
+                (None, None),
+                ("action_plc_control_compile", self.compile),
+                ("action_plc_start", self.start),
+                ("action_plc_stop", self.stop)):
+            if name is None or slot is None:
+                self.toolbar.add_separator()
+                continue
             action = QAction(self)
             action.setObjectName(name)
             action.triggered.connect(lambda _checked=False, s=slot: s())
-            bar.addAction(action)
+            self.toolbar.add_action(action)
             self.control_actions[name] = action
-        bars = QHBoxLayout()  # one row: a 1024×600 screen keeps the time chart below
-        bars.setSpacing(0)
-        bars.addWidget(self.toolbar)
-        bars.addWidget(self.run_bar)
-        bars.addStretch(1)
-        layout.addLayout(bars)
+        layout.addWidget(self.toolbar)
         self.setMinimumWidth(440)
         state = QHBoxLayout()
         self.indicator = QLabel(body)
@@ -212,8 +211,9 @@ class PlcControlDock(Retranslating, QDockWidget):
         try:
             text, _encoding = decode(path.read_bytes())
         except OSError as error:
-            self.message.setText(translate("PlcControl", "Cannot read {0}: {1}")
-                                 .format(path, os_error_text(error)))
+            reason = error  # the except clause's name is gone after it
+            set_live_text(self.message, lambda: translate("PlcControl", "Cannot read {0}: {1}")
+                          .format(path, os_error_text(reason)))
             return False
         self.set_text(text, path)
         set_live_text(self.message,
@@ -232,7 +232,7 @@ class PlcControlDock(Retranslating, QDockWidget):
         """Show the program drawn in the console as mnemonic code."""
         program = self.console_program() if self.console_program is not None else None
         if program is None:
-            self.message.setText(translate(
+            set_live_text(self.message, lambda: translate(
                 "PlcControl", "The console's program cannot be coded: see the error list"))
             return False
         self.set_text(print_program(program))
@@ -271,9 +271,9 @@ class PlcControlDock(Retranslating, QDockWidget):
             first = min((d.line for d in errors if d.line), default=0)
             self.editor.set_converted(max(first - 1, 0))
             self.progress.setValue(0)
-            self.message.setText(translate("PlcControl", "Compile failed: {0} error(s). {1}")
-                                 .format(len(errors), diagnostic_text(errors[0]) if errors
-                                         else ""))
+            set_live_text(self.message, lambda: translate(
+                "PlcControl", "Compile failed: {0} error(s). {1}").format(
+                    len(errors), diagnostic_text(errors[0]) if errors else ""))
             if first:
                 self.editor.go_to_line(first)
             self.compile_finished.emit(result)
@@ -283,7 +283,7 @@ class PlcControlDock(Retranslating, QDockWidget):
         self._done = 0
         self.progress.setRange(0, len(self._ends))
         self.progress.setValue(0)
-        self.message.setText(translate("PlcControl", "Converting…"))
+        set_live_text(self.message, lambda: translate("PlcControl", "Converting…"))
         self._update_actions()
         if self.stripe_ms <= 0:
             while self._done < len(self._ends):
@@ -332,7 +332,7 @@ class PlcControlDock(Retranslating, QDockWidget):
     def start(self) -> bool:
         """START: run the loaded program (asks first when forces are active)."""
         if self.session.engine is None:
-            self.message.setText(translate("PlcControl", "Compile a program first"))
+            set_live_text(self.message, lambda: translate("PlcControl", "Compile a program first"))
             return False
         forces = self.session.forces()
         if forces and not self.confirm_forces(len(forces)):

@@ -79,6 +79,8 @@ def _raise_when_shown(window: QMainWindow, dock: QDockWidget) -> None:
             window.resizeDocks([dock], [third], Qt.Orientation.Vertical)
         elif area == RIGHT and dock.width() > widest:
             window.resizeDocks([dock], [widest], Qt.Orientation.Horizontal)
+        elif area == RIGHT and dock.width() < window.width() // 3:  # a large screen's room
+            window.resizeDocks([dock], [window.width() // 3], Qt.Orientation.Horizontal)
 
     dock.toggleViewAction().triggered.connect(shown)
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 from PySide6.QtCore import QCoreApplication, Qt, Signal
@@ -34,6 +35,8 @@ from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord
 from ladderworks.gui.error_list import location_text
 from ladderworks.gui.files import atomic_write
+from ladderworks.gui.header_fit import fit_headers
+from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.retranslate import Retranslating
@@ -100,8 +103,9 @@ class ScenarioDock(Retranslating, QDockWidget):
         try:
             scenario = read_scenario(path, program.symbols if program is not None else None)
         except OSError as error:
-            self._say(translate("Scenario", "Cannot read {0}: {1}").format(
-                      path, os_error_text(error)), error=True)
+            reason = error  # the except clause's name is gone after it
+            self._say(lambda: translate("Scenario", "Cannot read {0}: {1}").format(
+                      path, os_error_text(reason)), error=True)
             return None
         return self.run(scenario)
 
@@ -116,7 +120,8 @@ class ScenarioDock(Retranslating, QDockWidget):
         not touched. Every address of the scenario is traced into the time chart."""
         binary = self.session.binary
         if binary is None:
-            self._say(translate("Scenario", "Load (compile) a PLC program first"), error=True)
+            self._say(lambda: translate("Scenario", "Load (compile) a PLC program first"),
+                      error=True)
             return None
         plc = PlcRun(period_ms=self.session.period_ms)
         plc.set_parameters(self.session.parameters)
@@ -155,6 +160,19 @@ class ScenarioDock(Retranslating, QDockWidget):
                 2, Severity.WARNING))
 
     def _fill(self, result: ScenarioResult) -> None:
+        self._fill_checks(result)
+        failed = sum(not c.passed for c in result.checks)
+        errors = sum(d.is_error for d in result.scenario.diagnostics)
+        if result.passed:
+            self._say(lambda: translate("Scenario", "{0}: all {1} checks passed").format(
+                Path(result.scenario.name).name, len(result.checks)))
+        else:
+            self._say(lambda: translate("Scenario", "{0}: {1} of {2} checks failed").format(
+                Path(result.scenario.name).name, failed + errors,
+                len(result.checks) + errors), error=True)
+
+    def _fill_checks(self, result: ScenarioResult) -> None:
+        """The checks' rows (made again in the new language after a live switch)."""
         self.checks.clear()
         for diagnostic in result.scenario.diagnostics:  # in the UI language, no codes
             text = f"{location_text(diagnostic)}: {diagnostic_text(diagnostic)}"
@@ -168,15 +186,6 @@ class ScenarioDock(Retranslating, QDockWidget):
                        _PASS if check.passed else _FAIL, check)
         for column in range(self.checks.columnCount() - 1):  # passed / FAILED in view
             self.checks.resizeColumnToContents(column)
-        failed = sum(not c.passed for c in result.checks)
-        errors = sum(d.is_error for d in result.scenario.diagnostics)
-        if result.passed:
-            self._say(translate("Scenario", "{0}: all {1} checks passed").format(
-                Path(result.scenario.name).name, len(result.checks)))
-        else:
-            self._say(translate("Scenario", "{0}: {1} of {2} checks failed").format(
-                Path(result.scenario.name).name, failed + errors,
-                len(result.checks) + errors), error=True)
 
     def _item(self, texts: list[str], colour: QColor,
               check: CheckResult | None) -> QTreeWidgetItem:
@@ -219,7 +228,7 @@ class ScenarioDock(Retranslating, QDockWidget):
                                          self.program_path)
         self.recorder.start()
         self.actions_by_name[RECORD].setChecked(True)
-        self._say(translate("Scenario", "Recording inputs and forces..."))
+        self._say(lambda: translate("Scenario", "Recording inputs and forces..."))
 
     def stop_recording(self) -> str:
         """Stop recording; the scenario text (empty when not recording)."""
@@ -228,7 +237,8 @@ class ScenarioDock(Retranslating, QDockWidget):
         if recorder is None:
             return ""
         recorder.stop()
-        self._say(translate("Scenario", "Recorded {0} changes").format(len(recorder.events)))
+        count = len(recorder.events)
+        self._say(lambda: translate("Scenario", "Recorded {0} changes").format(count))
         return recorder.text()
 
     def save(self, path: str | Path, text: str) -> bool:
@@ -236,17 +246,19 @@ class ScenarioDock(Retranslating, QDockWidget):
         try:
             atomic_write(path, relative_program(text, path))
         except OSError as error:
-            self._say(translate("Scenario", "Cannot write {0}: {1}").format(
-                      path, os_error_text(error)), error=True)
+            reason = error  # the except clause's name is gone after it
+            self._say(lambda: translate("Scenario", "Cannot write {0}: {1}").format(
+                      path, os_error_text(reason)), error=True)
             return False
-        self._say(translate("Scenario", "Saved {0}").format(path))
+        self._say(lambda: translate("Scenario", "Saved {0}").format(path))
         return True
 
     # -- texts -------------------------------------------------------------------------------
 
-    def _say(self, text: str, *, error: bool = False) -> None:
+    def _say(self, text: Callable[[], str], *, error: bool = False) -> None:
+        """Show a message, made again in the new language after a live switch."""
         self.message.setStyleSheet("color:#c00000;" if error else "")
-        self.message.setText(text)
+        set_live_text(self.message, text)
 
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
@@ -257,6 +269,9 @@ class ScenarioDock(Retranslating, QDockWidget):
             translate("Scenario", "Line"), translate("Scenario", "Check"),
             translate("Scenario", "Expected"), translate("Scenario", "Got"),
             translate("Scenario", "Time (ms)"), translate("Scenario", "Result")])
+        if self.result is not None:  # "passed" / "geçti" in the rows too
+            self._fill_checks(self.result)
+        fit_headers(self.checks)
 
 
 

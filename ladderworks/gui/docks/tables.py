@@ -36,6 +36,7 @@ from ladderworks.gui.docks.snapshot_gate import SnapshotGate
 from ladderworks.gui.docks.table_entries import DATA_WIDTHS, ProgramUse, TableError, TableKind
 from ladderworks.gui.docks.table_model import PlcTableModel
 from ladderworks.gui.docks.table_specs import Row, TableSpec, table_specs
+from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 from ladderworks.gui.retranslate import Retranslating
 
@@ -324,6 +325,7 @@ class PlcTablesDock(Retranslating, QDockWidget):
         for index, kind in enumerate(self.specs):
             self.tabs.setTabText(index, titles[kind])
             self.models[kind].retranslate()
+            fit_headers(self.tables[kind])  # the titles in the new language, whole
         layout = self.session.timers
         self.tables[TableKind.TIMER].setToolTip(
             translate(

@@ -136,6 +136,9 @@ class TimeChartDock(Retranslating, QDockWidget):
         self.time_cursor.setZValue(10)
         self.time_cursor.sigPositionChanged.connect(self._show_cursor)
         item.addItem(self.time_cursor, ignoreBounds=True)
+        self.plot.scene().sigMouseClicked.connect(self._clicked)  # a click puts the cursor
+        # what the readout adds about the cursor's time (time travel: before its history)
+        self.cursor_note: Callable[[float], str] | None = None
         layout.addWidget(self.plot, 1)
         self.cursor_label = QLabel(body)
         self.cursor_label.setObjectName("timeChartCursor")
@@ -334,6 +337,17 @@ class TimeChartDock(Retranslating, QDockWidget):
         """Put the cursor at `time_ms`."""
         self.time_cursor.setValue(time_ms)
 
+    def _clicked(self, event: object) -> None:
+        """A left click in the chart moves the cursor to the time clicked."""
+        button = getattr(event, "button", None)
+        position = getattr(event, "scenePos", None)
+        if button is None or position is None or button() != Qt.MouseButton.LeftButton:
+            return
+        view = self.plot.getPlotItem().getViewBox()
+        where = position()
+        if view.sceneBoundingRect().contains(where):
+            self.set_cursor(view.mapSceneToView(where).x())
+
     def cursor_values(self) -> dict[str, int | None]:
         """Each lane's value at the cursor, by lane label (None outside the record)."""
         at = self.time_cursor.value()
@@ -351,10 +365,12 @@ class TimeChartDock(Retranslating, QDockWidget):
             f"{label} = {'–' if value is None else value}"
             for label, value in self.cursor_values().items()
         )
+        note = self.cursor_note(self.time_cursor.value()) if self.cursor_note else ""
         self.cursor_label.setText(
             translate("TimeChart", "Cursor {0} ms:").format(round(self.time_cursor.value()))
             + "   "
             + values
+            + (f"   ({note})" if note else "")
         )
         self._fit_labels()
 

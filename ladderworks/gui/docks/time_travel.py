@@ -15,6 +15,7 @@ from ladderworks.core.plc.session import PlcSnapshot
 from ladderworks.gui.docks.diagnostic import DiagnosticDock
 from ladderworks.gui.docks.online import OnlineMode
 from ladderworks.gui.docks.time_chart import TimeChartDock
+from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.plc_session import PlcSession
 
 translate = QCoreApplication.translate
@@ -32,6 +33,7 @@ class TimeTravel(QObject):
         self.diagnostic = diagnostic
         self.chart = chart
         self.history: ScanHistory | None = None
+        self._said_before = False  # the diagnostic says the cursor is before the history
         self.online = online  # the console's on-line drawing, if any
         self.action = QAction(self)
         self.action.setObjectName(ACTION)
@@ -52,6 +54,7 @@ class TimeTravel(QObject):
         if chart is not None:  # the chart's `time_cursor` is its pg.InfiniteLine
             line: pg.InfiniteLine = chart.time_cursor
             line.sigPositionChanged.connect(lambda _line: self.show_time(line.value()))
+            chart.cursor_note = self.before_history
         self.retranslate()
 
     def retranslate(self) -> None:
@@ -109,10 +112,37 @@ class TimeTravel(QObject):
             self.slider.setValue(history.last_scan)
         self.slider.blockSignals(False)
 
+    def history_start(self) -> float | None:
+        """The PLC time (ms) of the first scan kept, None while none is."""
+        if self.history is None:
+            return None
+        with self.session.run.lock():
+            segments = self.history.segments
+            return segments[0].time_ms if segments else None
+
+    def before_history(self, time_ms: float) -> str:
+        """What the chart's readout says of a cursor before the first scan kept ("" if not)."""
+        start = self.history_start()
+        if start is None or time_ms >= start:
+            return ""
+        return translate("TimeTravel", "before the scan history, which begins at {0} ms").format(
+            round(start))
+
     def show_time(self, time_ms: float) -> bool:
-        """Show the scan run at `time_ms` (or the last one before it) as the past."""
+        """Show the scan run at `time_ms` (or the last one before it) as the past; a time
+        before the history shows no scan (the diagnostic says so, and stays as it was)."""
         if self.history is None:
             return False
+        start = self.history_start()
+        if start is not None and time_ms < start:
+            set_live_text(self.diagnostic.message, lambda: translate(
+                "TimeTravel", "The cursor is before the scan history, which begins at {0} ms: "
+                "no scan to show").format(round(start)))
+            self._said_before = True
+            return False
+        if self._said_before:  # the cursor is back in the history: the note goes
+            self._said_before = False
+            self.diagnostic.message.clear()
         with self.session.run.lock():
             scan = self.history.scan_at(time_ms)
         return scan is not None and self.show_scan(scan)
@@ -140,7 +170,7 @@ class TimeTravel(QObject):
         contacts that changed it."""
         history, engine = self.history, self.session.engine
         if history is None or engine is None or address.bit is None:
-            self.diagnostic.message.setText(translate(
+            set_live_text(self.diagnostic.message, lambda: translate(
                 "TimeTravel", "Turn on PLC › Keep scan history and give a bit address"))
             return None
         past = self.diagnostic.past
@@ -148,14 +178,14 @@ class TimeTravel(QObject):
             upto = past.scan_count if past is not None else history.last_scan
             found = history.why(engine, address, upto) if upto is not None else None
         if found is None:
-            self.diagnostic.message.setText(translate(
+            set_live_text(self.diagnostic.message, lambda: translate(
                 "TimeTravel", "{0} did not change in the scans kept").format(address))
             return None
         if self.chart is not None and self.chart.record.times:
             self.chart.set_cursor(found.time_ms)
         self.show_time(found.time_ms)
         self.diagnostic.mark_ops(found.contacts or found.writers)
-        self.diagnostic.message.setText(translate(
+        set_live_text(self.diagnostic.message, lambda: translate(
             "TimeTravel", "{0} went to {1} in scan {2} at {3} ms").format(
                 address, found.value, found.scan, found.time_ms))
         return found

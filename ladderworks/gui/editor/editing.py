@@ -57,7 +57,8 @@ class CursorEdits:
         @property
         def tool(self) -> Tool: ...
         def _place_overlays(self) -> None: ...
-        def open_address_editor(self, index: int, row: int, col: int) -> None: ...
+        def open_address_editor(self, index: int, row: int, col: int,
+                                placed: bool = False) -> None: ...
         def open_comment_editor(self, index: int, line: int) -> None: ...
 
     def run_edit(self, index: int, operation: Callable[[LadderNetwork], object],
@@ -109,7 +110,7 @@ class CursorEdits:
                 if isinstance(element, Contact)
                 else editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place coil")))
         if self.run_edit(index, lambda n: core.place_wired(n, row, col, element), text):
-            self.open_address_editor(index, row, col)
+            self.open_address_editor(index, row, col, placed=True)
 
     def cursor_to(self, index: int, row: int, col: int) -> None:
         """Put the cursor on the cell where an edit put an element (no scrolling)."""
@@ -126,7 +127,7 @@ class CursorEdits:
         (row, col), _old = found
         if self.run_edit(index, lambda n: core.add_parallel(n, row, col),
                          editor_step(QT_TRANSLATE_NOOP("LadderEditor", "OR"))):
-            self.open_address_editor(index, row + 1, col)
+            self.open_address_editor(index, row + 1, col, placed=True)
 
     def select_element(self, index: int, row: int, col: int) -> None:
         """Select the element covering a cell (nothing on a wire or an empty cell)."""

@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import bisect
-from collections.abc import Callable
+import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from enum import Enum
 
@@ -12,7 +13,7 @@ from ladderworks.core.ladder.model import LadderNetwork
 CELL_W = 84.0
 COMMENT_H = 20.0
 LISTING_LINE_H = 18.0
-LEFT = 44.0  # room for the network number left of the left rail
+LEFT = 72.0  # room for the network number left of the left rail: five digits (N10821, D10821)
 GAP = 10.0  # space between networks
 SPARE_ROWS = 1  # an empty row drawn under each network: clicking there adds a row
 
@@ -102,6 +103,13 @@ def network_height(network: LadderNetwork, rows: RowMetrics) -> float:
 def network_width(network: LadderNetwork) -> float:
     """Width of a network's drawing, rails included."""
     return LEFT + (network.columns + 1) * CELL_W + 8
+
+
+def typical_width(networks: Sequence[LadderNetwork], share: float = 0.95) -> float:
+    """The widest of the narrowest `share` of the networks' drawings (all of a small program):
+    what a fitted zoom shows whole, leaving a few unusually wide networks to scroll."""
+    widths = sorted(network_width(network) for network in networks)
+    return widths[max(math.ceil(len(widths) * share) - 1, 0)] if widths else 0.0
 
 
 def grid_top(network: LadderNetwork) -> float:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QEvent, QObject, QRectF, Qt
-from PySide6.QtGui import QKeyEvent
+from PySide6.QtGui import QKeyEvent, QUndoCommand
 from PySide6.QtWidgets import QLabel, QLineEdit
 
 from ladderworks.core import ladder as core
@@ -39,9 +39,11 @@ class InlineEdit(QObject):
         )
         self.message.hide()
         self.target: tuple[str, int, int, int] | None = None  # kind, network, row, col
+        self.placed_step: int | None = None  # the undo index right after placing the element
 
-    def open_address(self, index: int, row: int, col: int) -> None:
-        """Edit the address (and `// comment`) of the contact or coil at a cell."""
+    def open_address(self, index: int, row: int, col: int, placed: bool = False) -> None:
+        """Edit the address (and `// comment`) of the contact or coil at a cell; `placed`: the
+        element was placed by the step just pushed, which ESC takes back."""
         net = self.editor.networks[index]
         found = net.element_at(row, col)
         if found is None or not isinstance(found[1], Contact | Coil):
@@ -54,6 +56,7 @@ class InlineEdit(QObject):
         rect = QRectF(x - 10, self.editor.layout_.tops[index] + y, CELL_W + 60, 24)
         self._open(("address", index, row, col), text, rect,
                    translate("LadderEditor", "Address or symbol, e.g. X2.1 (// comment)"))
+        self.placed_step = self.editor.undo_stack.index() if placed else None
 
     def open_comment(self, index: int, line: int) -> None:
         """Edit (or add) network comment line `line`."""
@@ -81,11 +84,29 @@ class InlineEdit(QObject):
     def close(self) -> None:
         """Hide the edit without a change."""
         self.target = None
+        self.placed_step = None
         had_focus = self.line_edit.hasFocus()  # hiding it moves the focus on: ask first
         self.line_edit.hide()
         self.message.hide()
         if had_focus:
             self.editor.setFocus()
+
+    def cancel(self) -> None:
+        """ESC: close the edit; an element placed for it and still without an address goes
+        again, and so does its undo step (no step is left to redo either)."""
+        target, step = self.target, self.placed_step
+        self.close()
+        stack = self.editor.undo_stack
+        if target is None or step is None or stack.index() != step:
+            return
+        found = self.editor.networks[target[1]].element_at(target[2], target[3])
+        element = found[1] if found is not None else None
+        if not isinstance(element, Contact | Coil) or element.address is not None:
+            return
+        stack.undo()
+        dropped = QUndoCommand()  # pushing an obsolete command drops the redo step, adds none
+        dropped.setObsolete(True)
+        stack.push(dropped)
 
     def _refuse(self, diagnostic: Diagnostic) -> None:
         text = diagnostic_text(diagnostic)
@@ -157,7 +178,7 @@ class InlineEdit(QObject):
         if watched is self.line_edit and event.type() == QEvent.Type.KeyPress:
             assert isinstance(event, QKeyEvent)
             if event.key() == Qt.Key.Key_Escape:
-                self.close()
+                self.cancel()
                 return True
             if event.key() in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
                 # consumed here: an ignored ENTER would reach the grid and open the editor again

@@ -7,7 +7,7 @@ from PySide6.QtGui import QFont, QPainter
 from PySide6.QtWidgets import QStyleOptionGraphicsItem, QWidget
 
 from ladderworks.gui.editor.geometry import LEFT, grid_top
-from ladderworks.gui.editor.network_item import RAIL, NetworkItem
+from ladderworks.gui.editor.network_item import RAIL, NetworkItem, fitted_font
 
 
 class LabelledNetworkItem(NetworkItem):
@@ -22,7 +22,7 @@ class LabelledNetworkItem(NetworkItem):
             return
         font = QFont()
         font.setPointSizeF(7)
-        painter.setFont(font)
+        painter.setFont(fitted_font(font, label, LEFT - 5))
         painter.setPen(RAIL)
         top = grid_top(self.network) + self.rows.wire
         painter.drawText(QRectF(0, top - 2, LEFT - 3, 14),

@@ -66,6 +66,16 @@ def network_tag(number: int) -> str:
     return QCoreApplication.translate("LadderEditor", "N{0}").format(number)
 
 
+def fitted_font(font: QFont, text: str, width: float) -> QFont:
+    """`font`, or a smaller copy of it in which `text` fits `width` (a large system font)."""
+    wide = QFontMetricsF(font).horizontalAdvance(text)
+    if wide <= width:
+        return font
+    smaller = QFont(font)
+    smaller.setPointSizeF(max(5.0, font.pointSizeF() * width / wide))
+    return smaller
+
+
 class NetworkItem(QGraphicsItem):
     """Paints one LadderNetwork; its number and hints come from the view."""
 
@@ -115,11 +125,11 @@ class NetworkItem(QGraphicsItem):
             painter.drawText(QRectF(LEFT, index * COMMENT_H, self._size[0] - LEFT, COMMENT_H),
                              Qt.AlignmentFlag.AlignVCenter, "// " + line)
         top = grid_top(net)
-        painter.setFont(label_font)
+        tag = "+" if self.is_new else network_tag(self.number)
+        painter.setFont(fitted_font(label_font, tag, LEFT - 10))
         painter.setPen(EMPTY_HINT if self.is_new else RAIL)
         painter.drawText(QRectF(0, top, LEFT - 8, rows.wire),
-                         Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter,
-                         "+" if self.is_new else network_tag(self.number))
+                         Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter, tag)
         if net.listing is not None:
             self._paint_listing(painter, top)
             return

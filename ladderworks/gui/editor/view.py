@@ -24,6 +24,7 @@ from ladderworks.core.il import Program
 from ladderworks.core.instructions import FUNCTIONS
 from ladderworks.core.ladder import LadderNetwork, Selection
 from ladderworks.core.symbols import resolve
+from ladderworks.gui.editor.centre import centre_on
 from ladderworks.gui.editor.editing import CursorEdits
 from ladderworks.gui.editor.geometry import (
     CELL_W,
@@ -66,6 +67,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
 
     tool_requested = Signal(object)  # Tool picked with a letter key
     hover_changed = Signal(str)
+    cursor_placed = Signal()  # the cursor's frame was put on its cell (moved, or a relayout)
     message = Signal(str)
     zoom_changed = Signal(float)  # the new zoom factor (the status bar shows it)
     drawing_changed = Signal()
@@ -290,9 +292,10 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         """The functional instruction the function tool places."""
         self.function_name = name
 
-    def open_address_editor(self, index: int, row: int, col: int) -> None:
-        """Edit the address (and `// comment`) of the contact or coil at a cell."""
-        self.inline.open_address(index, row, col)
+    def open_address_editor(self, index: int, row: int, col: int, placed: bool = False) -> None:
+        """Edit the address (and `// comment`) of the contact or coil at a cell; `placed`: the
+        element was just placed (ESC takes it away again)."""
+        self.inline.open_address(index, row, col, placed)
 
     def open_comment_editor(self, index: int, line: int) -> None:
         """Edit (or add) network comment line `line` (the comment tool)."""
@@ -351,6 +354,13 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
             self._selection_item.show()
         else:
             self._selection_item.hide()
+        self.cursor_placed.emit()
+
+    def jump_to(self, index: int, row: int, col: int) -> None:
+        """The cursor on a cell found elsewhere (Find, cross reference, error list), that cell
+        brought to the middle of the view (not to its bottom edge)."""
+        self.move_cursor(index, row, col)
+        centre_on(self, self.cell_rect(*self.cursor_cell))
 
     def go_to(self, diagnostic: Diagnostic) -> None:
         """Jump to a diagnostic's network and cell."""
@@ -359,7 +369,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         if diagnostic.network is None or not 0 <= diagnostic.network < len(self.networks):
             return
         row, col = diagnostic.cell if diagnostic.cell is not None else (0, 0)
-        self.move_cursor(diagnostic.network, row, col)
+        self.jump_to(diagnostic.network, row, col)
         self.setFocus()
 
     def tooltip_at(self, index: int, row: int, col: int) -> str:
