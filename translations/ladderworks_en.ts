@@ -774,86 +774,181 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <source>ASCII format: the text opened by {quote} is never closed</source>
+        <translation>ASCII format: the text opened by {quote} is never closed</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
+        <translation>ASCII format: a repeat count must be 1 to 999, found {count}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
+        <translation>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
+        <translation>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <source>ASCII format: text after END: &apos;{text}&apos;</source>
+        <translation>ASCII format: text after END: &apos;{text}&apos;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <source>ASCII format: END is missing</source>
+        <translation>ASCII format: END is missing</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <source>&apos;{name}&apos; is not a Fatek instruction</source>
+        <translation>&apos;{name}&apos; is not a Fatek instruction</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
+        <translation>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <source>{name} needs a device</source>
+        <translation>{name} needs a device</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <source>&apos;{text}&apos; is not a Fatek device</source>
+        <translation>&apos;{text}&apos; is not a Fatek device</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
+        <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
+        <translation>{name} cannot take &apos;{text}&apos; (use {kinds})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
+        <source>&apos;{text}&apos; is out of range ({range})</source>
+        <translation>&apos;{text}&apos; is out of range ({range})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <source>{name} with nothing before it: a network starts with ORG</source>
+        <translation>{name} with nothing before it: a network starts with ORG</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <source>{name} needs two blocks: start the second one with LD</source>
+        <translation>{name} needs two blocks: start the second one with LD</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <source>TR{number} is set twice in this network</source>
+        <translation>TR{number} is set twice in this network</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="210"/>
+        <source>a network has at most {limit} TR points</source>
+        <translation>a network has at most {limit} TR points</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
+        <source>LD TR{number} before OUT TR{number} in this network</source>
+        <translation>LD TR{number} before OUT TR{number} in this network</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
+        <source>{name} on the left rail: put ORG SHORT before it</source>
+        <translation>{name} on the left rail: put ORG SHORT before it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
+        <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
+        <translation>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="221"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="225"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="227"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="196"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="207"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
@@ -1522,148 +1617,148 @@
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="405"/>
+        <location filename="../ladderworks/gui/main_window.py" line="406"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
         <location filename="../ladderworks/gui/main_window.py" line="255"/>
         <location filename="../ladderworks/gui/main_window.py" line="401"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="119"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="109"/>
         <source>{0} was changed by another program</source>
         <translation>{0} was changed by another program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="149"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="167"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="208"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="212"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</source>
         <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="278"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="327"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="278"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="327"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="384"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="456"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="315"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="310"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="320"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="315"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="340"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="341"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="349"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="350"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="367"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="384"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
@@ -1678,22 +1773,22 @@
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="442"/>
+        <location filename="../ladderworks/gui/main_window.py" line="443"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="445"/>
+        <location filename="../ladderworks/gui/main_window.py" line="446"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="477"/>
+        <location filename="../ladderworks/gui/main_window.py" line="478"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="478"/>
+        <location filename="../ladderworks/gui/main_window.py" line="479"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2025,128 +2120,128 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC CONTROL SCREEN</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
         <source>Open .MOD…</source>
         <translation>Open .MOD…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="149"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
         <source>Take the console&apos;s program</source>
         <translation>Take the console&apos;s program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
         <source>Compile</source>
         <translation>Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="175"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
         <source>Program loaded from the console</source>
         <translation>Program loaded from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
         <source>In the PLC: {0}</source>
         <translation>In the PLC: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="188"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="220"/>
         <source>Opened {0}</source>
         <translation>Opened {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="199"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="226"/>
         <source>Open mnemonic program</source>
         <translation>Open mnemonic program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="200"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="208"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="235"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>The console&apos;s program cannot be coded: see the error list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="212"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="239"/>
         <source>Program taken from the console</source>
         <translation>Program taken from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="274"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Compile failed: {0} error(s). {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="259"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
         <source>Converting…</source>
         <translation>Converting…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
         <source>the program on this screen</source>
         <translation>the program on this screen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="314"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Compile finished — {0} networks, {1} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="317"/>
         <source>({0} warning(s))</source>
         <translation>({0} warning(s))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="308"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
         <source>Compile a program first</source>
         <translation>Compile a program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="329"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="356"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="359"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="362"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="338"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="365"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>
@@ -2154,103 +2249,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="263"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC DIAGNOSTIC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="264"/>
         <source>Address, e.g. R102.0</source>
         <translation>Address, e.g. R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="265"/>
         <source>Find</source>
         <translation>Find</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="266"/>
         <source>Where written</source>
         <translation>Where written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
         <source>Follow</source>
         <translation>Follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="268"/>
         <source>Why?</source>
         <translation>Why?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="250"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Go to the scan where the address last changed and mark the contacts that changed it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="272"/>
         <source>Back to live</source>
         <translation>Back to live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="254"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="273"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Zoom out (Ctrl+wheel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="274"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Zoom in (Ctrl+wheel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="276"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>Keep the searched address in view while the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="286"/>
         <source>{0} %</source>
         <translation>{0} %</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="311"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="347"/>
         <location filename="../ladderworks/gui/docks/online.py" line="142"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="317"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="353"/>
         <source>No program loaded</source>
         <translation>No program loaded</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="319"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="355"/>
         <source>RUNNING — scan {0}</source>
         <translation>RUNNING — scan {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="357"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="398"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; is not an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="406"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="442"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="416"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="452"/>
         <source>No coil writes {0}</source>
         <translation>No coil writes {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="425"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="461"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} of {1}: network {2}</translation>
     </message>
@@ -2438,7 +2533,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="57"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="252"/>
         <source>INSERT</source>
         <translation>INSERT</translation>
     </message>
@@ -2448,42 +2543,42 @@
         <translation>TMRB: the preset is fixed in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="255"/>
         <source>DELETE</source>
         <translation>DELETE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="286"/>
         <source>PLC tables</source>
         <translation>PLC tables</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="288"/>
         <source>Timers (TMR)</source>
         <translation>Timers (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="289"/>
         <source>Counters (CTR)</source>
         <translation>Counters (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="290"/>
         <source>Data table (D)</source>
         <translation>Data table (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="291"/>
         <source>Keep relays (K)</source>
         <translation>Keep relays (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="275"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="301"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</translation>
     </message>

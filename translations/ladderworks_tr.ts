@@ -774,86 +774,181 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <source>ASCII format: the text opened by {quote} is never closed</source>
+        <translation>ASCII biçimi: {quote} ile açılan metin hiç kapatılmamış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
+        <translation>ASCII biçimi: tekrar sayısı 1 ile 999 arasında olmalı, bulunan {count}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
+        <translation>ASCII biçimi: &apos;{text}&apos; bir öğe değil (&apos;metin&apos;, MX, onaltılık kodlar, &quot;w.dRn&quot;, / ya da \ bekleniyor)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
+        <translation>ASCII biçimi: &quot;{text}&quot; bir değişken değil (örneğin &quot;8.2R0&quot; ya da &quot;4R10H&quot; bekleniyor)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <source>ASCII format: text after END: &apos;{text}&apos;</source>
+        <translation>ASCII biçimi: END&apos;den sonra metin: &apos;{text}&apos;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <source>ASCII format: END is missing</source>
+        <translation>ASCII biçimi: END eksik</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <source>&apos;{name}&apos; is not a Fatek instruction</source>
+        <translation>&apos;{name}&apos; bir Fatek komutu değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
+        <translation>önünde FUN, TMR ya da CTR olmayan bir operand satırı: &apos;{text}&apos;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <source>{name} needs a device</source>
+        <translation>{name} bir eleman (cihaz) adresi ister</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <source>&apos;{text}&apos; is not a Fatek device</source>
+        <translation>&apos;{text}&apos; bir Fatek elemanı değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
+        <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
+        <translation>{name} &apos;{text}&apos; alamaz ({kinds} kullanın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
+        <source>&apos;{text}&apos; is out of range ({range})</source>
+        <translation>&apos;{text}&apos; aralık dışında ({range})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <source>{name} with nothing before it: a network starts with ORG</source>
+        <translation>{name} önünde bir şey yok: ağ ORG ile başlar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <source>{name} needs two blocks: start the second one with LD</source>
+        <translation>{name} iki blok ister: ikincisini LD ile başlatın</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <source>TR{number} is set twice in this network</source>
+        <translation>TR{number} bu ağda iki kez kullanılmış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="210"/>
+        <source>a network has at most {limit} TR points</source>
+        <translation>bir ağda en fazla {limit} TR noktası olabilir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
+        <source>LD TR{number} before OUT TR{number} in this network</source>
+        <translation>bu ağda OUT TR{number} komutundan önce LD TR{number}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
+        <source>{name} on the left rail: put ORG SHORT before it</source>
+        <translation>{name} başlangıç hattında: önüne ORG SHORT koyun</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
+        <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
+        <translation>{name}: LD ile başlayan {count} blok birleştirilmemiş (ANDLD/ORLD)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="221"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="225"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="227"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="196"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="207"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
@@ -1522,148 +1617,148 @@
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="405"/>
+        <location filename="../ladderworks/gui/main_window.py" line="406"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
         <location filename="../ladderworks/gui/main_window.py" line="255"/>
         <location filename="../ladderworks/gui/main_window.py" line="401"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="119"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="109"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="149"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="167"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="208"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="212"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</source>
         <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="278"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="327"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="278"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="327"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="384"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="456"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="315"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="310"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="320"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="315"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="340"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="341"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="349"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="350"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="367"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="384"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
@@ -1678,22 +1773,22 @@
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="442"/>
+        <location filename="../ladderworks/gui/main_window.py" line="443"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="445"/>
+        <location filename="../ladderworks/gui/main_window.py" line="446"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="477"/>
+        <location filename="../ladderworks/gui/main_window.py" line="478"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="478"/>
+        <location filename="../ladderworks/gui/main_window.py" line="479"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2025,128 +2120,128 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC KONTROL EKRANI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="148"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
         <source>Open .MOD…</source>
         <translation>.MOD aç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="149"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
         <source>Take the console&apos;s program</source>
         <translation>Konsoldaki programı al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
         <source>Compile</source>
         <translation>Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="175"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
         <source>Program loaded from the console</source>
         <translation>Program konsoldan yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="179"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
         <source>In the PLC: {0}</source>
         <translation>PLC&apos;deki program: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="188"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="220"/>
         <source>Opened {0}</source>
         <translation>{0} açıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="199"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="226"/>
         <source>Open mnemonic program</source>
         <translation>Mnemonik program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="200"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod *.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="208"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="235"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>Konsoldaki program kodlanamıyor: hata listesine bakın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="212"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="239"/>
         <source>Program taken from the console</source>
         <translation>Program konsoldan alındı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="274"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Derleme başarısız: {0} hata. {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="259"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
         <source>Converting…</source>
         <translation>Çevriliyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
         <source>the program on this screen</source>
         <translation>bu ekrandaki program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="314"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Derleme bitti — {0} devre, {1} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="317"/>
         <source>({0} warning(s))</source>
         <translation>({0} uyarı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} sinyal zorlanmış veya eleman pasif. PLC bunlarla başlatılsın mı?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="308"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
         <source>Compile a program first</source>
         <translation>Önce bir program derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="329"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="356"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="359"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="362"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="338"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="365"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>
@@ -2154,103 +2249,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="263"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="264"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="265"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="247"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="266"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="268"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="250"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="272"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="254"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="273"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Uzaklaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="274"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Yakınlaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="257"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="276"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="286"/>
         <source>{0} %</source>
         <translation>%{0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="311"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="347"/>
         <location filename="../ladderworks/gui/docks/online.py" line="142"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="317"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="353"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="319"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="355"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="357"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="398"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="406"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="442"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="416"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="452"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="425"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="461"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
@@ -2438,7 +2533,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="57"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="252"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
     </message>
@@ -2448,42 +2543,42 @@
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="255"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="286"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="288"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="289"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="290"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="291"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="275"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="301"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>

@@ -177,6 +177,44 @@ MESSAGES: dict[str, str] = {
     "alarm-empty": QT_TRANSLATE_NOOP("Diagnostic", "message {number} has no text"),
     "not-implemented": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} is not implemented in the simulator yet"),
+    # Fatek FBs programs (docs/dialects.md, Fatek)
+    "fatek-ascii-quote": QT_TRANSLATE_NOOP(
+        "Diagnostic", "ASCII format: the text opened by {quote} is never closed"),
+    "fatek-ascii-repeat": QT_TRANSLATE_NOOP(
+        "Diagnostic", "ASCII format: a repeat count must be 1 to 999, found {count}"),
+    "fatek-ascii-item": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "ASCII format: '{text}' is not an item (expected 'text', MX, hex codes,"
+        " \"w.dRn\", / or \\)"),
+    "fatek-ascii-variable": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "ASCII format: \"{text}\" is not a variable (expected e.g. \"8.2R0\" or \"4R10H\")"),
+    "fatek-ascii-after-end": QT_TRANSLATE_NOOP(
+        "Diagnostic", "ASCII format: text after END: '{text}'"),
+    "fatek-ascii-no-end": QT_TRANSLATE_NOOP("Diagnostic", "ASCII format: END is missing"),
+    "fatek-unknown-instruction": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{name}' is not a Fatek instruction"),
+    "fatek-stray-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "an operand line '{text}' without a FUN, TMR or CTR before it"),
+    "fatek-missing-device": QT_TRANSLATE_NOOP("Diagnostic", "{name} needs a device"),
+    "fatek-device": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a Fatek device"),
+    "fatek-device-kind": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} cannot take '{text}' (use {kinds})"),
+    "fatek-device-range": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is out of range ({range})"),
+    "fatek-no-input": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} with nothing before it: a network starts with ORG"),
+    "fatek-stack-empty": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} needs two blocks: start the second one with LD"),
+    "fatek-tr-reused": QT_TRANSLATE_NOOP(
+        "Diagnostic", "TR{number} is set twice in this network"),
+    "fatek-tr-count": QT_TRANSLATE_NOOP(
+        "Diagnostic", "a network has at most {limit} TR points"),
+    "fatek-tr-unset": QT_TRANSLATE_NOOP(
+        "Diagnostic", "LD TR{number} before OUT TR{number} in this network"),
+    "fatek-output-on-rail": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} on the left rail: put ORG SHORT before it"),
+    "fatek-open-block": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),

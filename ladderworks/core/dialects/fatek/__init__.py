@@ -1,0 +1,1 @@
+"""Fatek FBs (WinProladder) programs: listing, devices, branch logic, FUN 94 ASCII output."""
