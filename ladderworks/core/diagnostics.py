@@ -215,6 +215,20 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "{name} on the left rail: put ORG SHORT before it"),
     "fatek-open-block": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)"),
+    "fatek-unknown-fun": QT_TRANSLATE_NOOP(
+        "Diagnostic", "FUN {number} is not a Fatek function LadderWorks knows"),
+    "fatek-missing-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name}: the operand line {param} is missing"),
+    "fatek-extra-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} takes no more operands, found '{text}'"),
+    "fatek-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' cannot be the operand {param} (a register, or a constant)"),
+    "fatek-not-simulated": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} is kept and drawn but not simulated: its outputs stay 0"),
+    "fatek-timer-base": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not the time base of {name} ({base})"),
+    "fatek-fo": QT_TRANSLATE_NOOP(
+        "Diagnostic", "FO {text}: no function output here (FO0-FO7 after a box)"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),

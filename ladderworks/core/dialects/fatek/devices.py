@@ -133,9 +133,11 @@ _BIT_BASE: dict[str, tuple[Area, int]] = {
 _WORD_BASE: dict[str, tuple[Area, int, int]] = {  # area, first byte, bytes per number
     "R": (Area.D, 0, 2),  # R0-R4999: D0-D9999
     "D": (Area.E, 0, 2),  # D0-D4095: E0-E8191
-    "T": (Area.R, 1000, 2),  # T0-T255 present values: R1000-R1511
-    "C": (Area.R, 1600, 4),  # C0-C255 present values, 4 bytes each: R1600-R2623
+    "T": (Area.R, 1000, 2),  # T0-T255 present values: R1000-R1511 (cleared at a load)
+    "C": (Area.T, 0, 2),  # C0-C199 present values: T0-T399 (kept, as C0-C139 must be)
 }
+COUNTER_32_AREA = (Area.T, 9000, 4)  # C200-C255 present values: T9000-T9223
+FO_AREA = (Area.R, 2700)  # function outputs: one byte (FO0-FO7) a box, R2700 on
 _WORD_OF_BITS = {"WX": "X", "WY": "Y", "WM": "M", "WS": "S"}
 
 
@@ -153,9 +155,17 @@ def word_address(device: Device) -> tuple[Address, int]:
     if base in _WORD_OF_BITS:
         area, first = _BIT_BASE[_WORD_OF_BITS[base]]
         return Address(area, first + device.number // 8), 4 if double else 2
+    if base == "C" and counter_is_32bit(device.number):
+        area, first, size = COUNTER_32_AREA
+        return Address(area, first + size * (device.number - COUNTER_32_FIRST)), 4
     area, first, size = _WORD_BASE[base]
-    width = 4 if double or (base == "C" and counter_is_32bit(device.number)) else 2
-    return Address(area, first + size * device.number), width
+    return Address(area, first + size * device.number), 4 if double else 2
+
+
+def fo_address(index: int) -> Address:
+    """The byte of the `index`-th function box's outputs (bit n = FOn)."""
+    area, first = FO_AREA
+    return Address(area, first + index)
 
 
 def device_at(address: Address) -> Device | None:
@@ -167,4 +177,23 @@ def device_at(address: Address) -> Device | None:
         number = (address.byte - first) * 8 + address.bit
         if area is address.area and low <= number <= high:
             return Device(kind, number)
+    return None
+
+
+def word_device_at(address: Address) -> Device | None:
+    """The Fatek register an engine byte address starts (R, D, T and C values)."""
+    if address.bit is not None:
+        return None
+    area, first, size = COUNTER_32_AREA
+    if address.area is area and address.byte >= first and not (address.byte - first) % size:
+        number = COUNTER_32_FIRST + (address.byte - first) // size
+        if number <= WORD_RANGES["C"][1]:
+            return Device("C", number)
+    for kind, (area, first, size) in _WORD_BASE.items():
+        offset = address.byte - first
+        if address.area is area and offset >= 0 and not offset % size:
+            low, high = WORD_RANGES[kind]
+            number = offset // size
+            if low <= number <= high and not (kind == "C" and counter_is_32bit(number)):
+                return Device(kind, number)
     return None
