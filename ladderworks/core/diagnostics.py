@@ -229,6 +229,8 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "'{text}' is not the time base of {name} ({base})"),
     "fatek-fo": QT_TRANSLATE_NOOP(
         "Diagnostic", "FO {text}: no function output here (FO0-FO7 after a box)"),
+    "fatek-ascii-section": QT_TRANSLATE_NOOP(
+        "Diagnostic", "ASCII files: '{text}' is not a section header such as [R1000]"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),

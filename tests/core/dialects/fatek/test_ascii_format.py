@@ -50,7 +50,7 @@ REPORT = (
 def report_text() -> str:
     """The example's ASCII file (seed 004:228-234, the missing quote restored), without its
     `[R1000]` header line."""
-    lines = (EXAMPLE / "production_report.ascii").read_text(encoding="utf-8").splitlines(True)
+    lines = (EXAMPLE / "production_report.lst.ascii").read_text(encoding="utf-8").splitlines(True)
     assert lines[0].strip() == "[R1000]"
     return "".join(lines[1:])
 
