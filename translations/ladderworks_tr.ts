@@ -110,6 +110,34 @@
     </message>
 </context>
 <context>
+    <name>AsciiOutput</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="59"/>
+        <source>ASCII output</source>
+        <translation>ASCII çıkışı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="60"/>
+        <source>Clear</source>
+        <translation>Temizle</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="61"/>
+        <source>Forget what the terminal received</source>
+        <translation>Terminalin aldıklarını unut</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="63"/>
+        <source>What FUN 94 ASCWR sends to Port 1 (a Fatek program) shows here.</source>
+        <translation>FUN 94 ASCWR komutunun Port 1&apos;e gönderdikleri (bir Fatek programında) burada görünür.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="78"/>
+        <source>{0} output(s) received</source>
+        <translation>{0} çıkış alındı</translation>
+    </message>
+</context>
+<context>
     <name>BitDisplay</name>
     <message>
         <location filename="../ladderworks/gui/docks/bit_display.py" line="258"/>

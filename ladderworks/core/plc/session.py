@@ -26,6 +26,7 @@ from ladderworks.core.alarms import ActiveAlarm, ActiveAlarms, AlarmTable
 from ladderworks.core.compiler import CompileResult, compile_program
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
+from ladderworks.core.dialects.fatek.terminal import AsciiTerminal
 from ladderworks.core.il.program import Program
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
 from ladderworks.core.plc.forcing import ForceEntry
@@ -124,6 +125,8 @@ class PlcRun:
         self.program: Program | None = None  # the source of the binary, when known
         self.parameters = PmcParameters()
         self.alarm_table = AlarmTable()
+        self.ascii_terminal = AsciiTerminal()  # what a Fatek FUN 94 ASCWR sends to Port 1
+        self.ascii_files: dict[Address, object] = {}  # a Fatek program's ASCII files by S
         self.trace: TraceSampler | None = None
         self._alarms = ActiveAlarms(self.alarm_table)
         self._runner: RealTimeRunner | None = None

@@ -10,6 +10,7 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow
 from ladderworks.core.il import Program
 from ladderworks.gui.console_menus import ConsoleMenus
 from ladderworks.gui.docks.alarms import AlarmDock
+from ladderworks.gui.docks.ascii_output import AsciiOutputDock
 from ladderworks.gui.docks.bit_display import BitDisplayDock
 from ladderworks.gui.docks.diagnostic import DiagnosticDock
 from ladderworks.gui.docks.force_list import ForceListDock
@@ -41,6 +42,7 @@ class PlcDocks:
     tables: PlcTablesDock
     scenario: ScenarioDock
     time_travel: TimeTravel  # PLC › Keep scan history
+    ascii_output: AsciiOutputDock  # PLC › ASCII output (a Fatek program's FUN 94)
 
     @property
     def others(self) -> dict[str, QDockWidget]:
@@ -103,6 +105,7 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     force_list = ForceListDock(session, window)
     online = OnlineMode(editor, session, window)
     travel = TimeTravel(session, diagnostic, chart, online, window)
+    ascii_output = AsciiOutputDock(session, window)
 
     plc = "menu_plc"
     menus.add_dock(control, "action_dock_plc_control", RIGHT, plc, separator=True)
@@ -113,13 +116,15 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     menus.add_dock(alarms, "action_dock_alarms", BOTTOM)
     menus.add_dock(tables, "action_dock_plc_tables", RIGHT)
     menus.add_dock(scenario, "action_dock_scenario", BOTTOM)
+    menus.add_dock(ascii_output, "action_dock_ascii_output", BOTTOM, plc)
     # tabbed while hidden: a tab group of shown docks sizes the window's first layout by
     # all of them, and leaves a tab bar behind with their titles
-    for dock in (control, diagnostic, bits, tables, alarms, chart, scenario, force_list):
+    for dock in (control, diagnostic, bits, tables, alarms, chart, scenario, force_list,
+                 ascii_output):
         dock.hide()
         _raise_when_shown(window, dock)
     _tab(window, [control, diagnostic, bits, tables])
-    _tab(window, [alarms, chart, scenario, force_list])
+    _tab(window, [alarms, chart, scenario, force_list, ascii_output])
     alarms.show()
 
     # one path (issue 18): Compile, START and STOP on the main toolbar and in the PLC menu
@@ -140,4 +145,4 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     if app is not None:
         app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
     return PlcDocks(session, control, diagnostic, force_list, online, bits, chart, alarms,
-                    tables, scenario, travel)
+                    tables, scenario, travel, ascii_output)
