@@ -937,86 +937,126 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="235"/>
+        <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
+        <translation>&apos;{text}&apos; is not a device (use {letters} with a number)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
+        <translation>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
+        <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
+        <translation>&apos;{text}&apos; is out of range ({first} to {last})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <source>&apos;{text}&apos; is not a bit device</source>
+        <translation>&apos;{text}&apos; is not a bit device</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="241"/>
+        <source>&apos;{text}&apos; is not a word device</source>
+        <translation>&apos;{text}&apos; is not a word device</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
+        <translation>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <source>&apos;{text}&apos; is not a K or H constant</source>
+        <translation>&apos;{text}&apos; is not a K or H constant</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <source>{name} is a {dialect} instruction the simulator does not run</source>
+        <translation>{name} is a {dialect} instruction the simulator does not run</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="241"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="255"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>

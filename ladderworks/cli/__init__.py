@@ -58,6 +58,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     words = sys.argv[1:] if argv is None else list(argv)
     parser = build_parser(words[0] if words else None)
     args = parser.parse_args(words)
+    from ladderworks.cli._programs import use_dialect
+
+    use_dialect(args)
     try:
         return int(args.handler(args) or 0)
     except BrokenPipeError:

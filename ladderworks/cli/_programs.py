@@ -1,15 +1,54 @@
-"""Reading a program file for a command: its diagnostics on stderr when it does not parse."""
+"""Reading a program file for a command: its diagnostics on stderr when it does not parse.
+
+`--dialect NAME` (each command that reads a program has it) names the reader and skips the
+content sniffing (core/il/reading.py); the command's handler sets it with `use_dialect`.
+"""
 
 from __future__ import annotations
 
+import argparse
 import sys
+from typing import TYPE_CHECKING
 
 from ladderworks.core.il import Program, parse_file
+
+if TYPE_CHECKING:
+    from ladderworks.core.il.parser import ParseResult
+
+_forced: list[str | None] = [None]  # the command's --dialect
+_parsed: dict[tuple[str, str | None], ParseResult] = {}
+
+
+def add_dialect_option(parser: argparse.ArgumentParser) -> None:
+    """Add `--dialect NAME` to a command that reads programs."""
+    parser.add_argument("--dialect", metavar="NAME",
+                        help="read programs as this dialect (delta, pmc); "
+                             "default: recognised from the content")
+
+
+def use_dialect(args: argparse.Namespace) -> None:
+    """Take the command's --dialect for the programs it reads (cli.main, before the command)."""
+    _forced[0] = getattr(args, "dialect", None)
+    _parsed.clear()
+
+
+def forced_dialect() -> str | None:
+    """The dialect named by --dialect, or None."""
+    return _forced[0]
+
+
+def parsed(name: str) -> ParseResult:
+    """The parse of file `name` (read once per command), in the forced dialect if any."""
+    key = (name, _forced[0])
+    found = _parsed.get(key)
+    if found is None:
+        found = _parsed[key] = parse_file(name, _forced[0])
+    return found
 
 
 def load_program(name: str) -> Program | None:
     """The program in file `name`, or None after printing why it does not parse."""
-    result = parse_file(name)
+    result = parsed(name)
     if not result.ok:
         for diagnostic in result.diagnostics:
             print(diagnostic.located(name), file=sys.stderr)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from ladderworks.cli._programs import load_program
+from ladderworks.cli._programs import add_dialect_option, load_program
 from ladderworks.core.il import print_program
 from ladderworks.core.ladder.art import draw_document
 from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
@@ -15,10 +15,12 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     """Add `ladder` and `mnemonic`."""
     ladder = subparsers.add_parser("ladder", help="print a program as ladder text art")
     ladder.add_argument("file", metavar="FILE")
+    add_dialect_option(ladder)
     ladder.set_defaults(handler=_ladder)
     mnemonic = subparsers.add_parser(
         "mnemonic", help="convert a program to the ladder grid and back; print the .MOD text")
     mnemonic.add_argument("file", metavar="FILE")
+    add_dialect_option(mnemonic)
     mnemonic.set_defaults(handler=_mnemonic)
 
 

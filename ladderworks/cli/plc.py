@@ -8,11 +8,12 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
+from ladderworks.cli._programs import add_dialect_option, parsed
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.compiler import compile_program, disassemble
-from ladderworks.core.compiler.binary import MAGIC
+from ladderworks.core.compiler.binary import MAGIC, decode
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
-from ladderworks.core.il import parse_file, print_program
+from ladderworks.core.il import print_program
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
 from ladderworks.core.plc.parameters import ParameterFile, parameters_beside, read_parameter_file
 from ladderworks.core.plc.session import PlcRun
@@ -27,12 +28,14 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     comp = subparsers.add_parser("compile", help="compile a program to a PLC binary")
     comp.add_argument("file", metavar="FILE")
     comp.add_argument("-o", "--output", metavar="OUT", required=True)
+    add_dialect_option(comp)
     comp.set_defaults(handler=_compile)
     dis = subparsers.add_parser("disasm", help="print the program held in a PLC binary")
     dis.add_argument("file", metavar="OUT")
     dis.set_defaults(handler=_disasm)
     run = subparsers.add_parser("run", help="run a program or binary on the simulated PLC")
     run.add_argument("file", metavar="FILE|BIN")
+    add_dialect_option(run)
     length = run.add_mutually_exclusive_group()
     length.add_argument("--ms", type=int, metavar="T", help="run T ms of virtual time")
     length.add_argument("--scans", type=int, metavar="N", help="run N scans (default 1)")
@@ -71,7 +74,7 @@ def _load_program_binary(name: str) -> bytes | None:
     data = Path(name).read_bytes()
     if data.startswith(MAGIC):
         return data
-    result = parse_file(name)
+    result = parsed(name)
     if not result.ok:
         _report(name, result.diagnostics)
         return None
@@ -81,7 +84,7 @@ def _load_program_binary(name: str) -> bytes | None:
 
 
 def _compile(args: argparse.Namespace) -> int:
-    result = parse_file(args.file)
+    result = parsed(args.file)
     if not result.ok:
         _report(args.file, result.diagnostics)
         return 1
@@ -125,12 +128,20 @@ class _Target:
 
 def _symbols(name: str) -> SymbolTable | None:
     """The symbol table of program FILE (None for a binary or an unreadable file)."""
-    if _SYMBOLS.get(name) is None and not Path(name).read_bytes().startswith(MAGIC):
-        _SYMBOLS[name] = parse_file(name).program.symbols
-    return _SYMBOLS.get(name)
+    if Path(name).read_bytes().startswith(MAGIC):
+        return None
+    return parsed(name).program.symbols
 
 
-_SYMBOLS: dict[str, SymbolTable | None] = {}
+def dialect_of(name: str) -> str | None:
+    """The dialect of program or binary FILE ("seed", "fanuc", "delta"), None if unreadable."""
+    data = Path(name).read_bytes()
+    if data.startswith(MAGIC):
+        try:
+            return decode(data).dialect
+        except DiagnosticError:
+            return None
+    return parsed(name).program.dialect
 
 
 def _target(text: str, file: str | None = None) -> _Target:
@@ -141,7 +152,7 @@ def _target(text: str, file: str | None = None) -> _Target:
         return symbols.address_of(name) if symbols is not None else None
 
     try:
-        target = parse_target(text, address_of)
+        target = parse_target(text, address_of, dialect_of(file) if file is not None else None)
     except AddressError as error:
         raise ValueError(error.diagnostic.message()) from None
     return _Target(target.text, target.address, target.width)

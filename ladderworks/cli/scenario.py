@@ -7,7 +7,8 @@ import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-from ladderworks.cli.plc import _load_program_binary, _parameters, _symbols
+from ladderworks.cli._programs import add_dialect_option
+from ladderworks.cli.plc import _load_program_binary, _parameters, _symbols, dialect_of
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS
 from ladderworks.core.plc.parameters import PmcParameters
@@ -21,6 +22,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "test", help="run scenario files (FANUC signal operations + EXPECT/WAITFOR) on a program")
     test.add_argument("file", metavar="PROGRAM")
     test.add_argument("scenarios", metavar="SCENARIO", nargs="+")
+    add_dialect_option(test)
     test.add_argument("--junit", metavar="FILE", help="write a JUnit XML report to FILE")
     test.add_argument("--scan-period", type=int, default=DEFAULT_PERIOD_MS, metavar="MS",
                       help=f"scan period in ms (default {DEFAULT_PERIOD_MS})")
@@ -52,9 +54,10 @@ def _test(args: argparse.Namespace) -> int:
     if parameters is None:
         return 2
     symbols = _symbols(args.file)
+    dialect = dialect_of(args.file)
     results: list[ScenarioResult] = []
     for name in args.scenarios:
-        scenario = read_scenario(name, symbols)
+        scenario = read_scenario(name, symbols, dialect)
         try:
             plc = cold_run(binary, parameters.parameters, args.scan_period)
         except ValueError as error:

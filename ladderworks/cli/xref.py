@@ -6,7 +6,7 @@ import argparse
 import sys
 from collections.abc import Sequence
 
-from ladderworks.cli._programs import load_program
+from ladderworks.cli._programs import add_dialect_option, load_program
 from ladderworks.core.address import Address, AddressError, looks_like_address
 from ladderworks.core.symbols import SymbolTable, describe, resolve
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
@@ -27,6 +27,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser = subparsers.add_parser(
         "xref", help="cross reference: where each address is read and written")
     parser.add_argument("file", metavar="FILE")
+    add_dialect_option(parser)
     parser.add_argument(
         "addresses", nargs="*", metavar="ADDR",
         help="an address (X21.7, R100) or a program symbol (ESKIP); all addresses without one")

@@ -231,6 +231,19 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "FO {text}: no function output here (FO0-FO7 after a box)"),
     "fatek-ascii-section": QT_TRANSLATE_NOOP(
         "Diagnostic", "ASCII files: '{text}' is not a section header such as [R1000]"),
+    # dialects (docs/dialects.md): devices and operands of a Delta or Fatek program
+    "device-unknown": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not a device (use {letters} with a number)"),
+    "device-octal": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}': {letter} is numbered in octal (digits 0 to 7)"),
+    "device-range": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is out of range ({first} to {last})"),
+    "device-bit-needed": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a bit device"),
+    "device-word-needed": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a word device"),
+    "dialect-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name}: operand {index} must be one of {expected}, found '{text}'"),
+    "dialect-constant": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a K or H constant"),
+    "dialect-not-simulated": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} is a {dialect} instruction the simulator does not run"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),

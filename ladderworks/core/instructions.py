@@ -50,6 +50,7 @@ class Flow(StrEnum):
     LABEL = "label"  # LBL Ln: jump target
     LABEL_JUMP = "label-jump"  # JMPB: jump to LBL Ln of the same unit when ACT = 1
     LABEL_JUMP_MAIN = "label-jump-main"  # JMPC: from a subprogram to LBL Ln of its level
+    MAIN_END = "main-end"  # Delta FEND: end of the main program, subroutines follow
 
 
 class ParamKind(StrEnum):
@@ -63,6 +64,17 @@ class ParamKind(StrEnum):
     PROGRAM = "program"  # a subprogram number, written `P5`
     LABEL = "label"  # a jump label number, written `L12`
     RAW = "raw"  # a constant or an address, kept as written (a `SUB n` we do not know)
+    BIT = "bit"  # a bit address (a dialect's bit device: Delta CMP's first result bit)
+
+
+class StackOp(StrEnum):
+    """What a basic instruction without an operand does to the result stack (a dialect's)."""
+
+    NONE = ""  # AND.STK / OR.STK combine and pop (by `combine`), or no stack effect
+    DUP = "dup"  # Delta MPS: push a copy of ST0
+    OVER = "over"  # Delta MRD: ST0 := the value below it
+    DROP = "drop"  # Delta MPP: pop ST0 (the value below it is the result again)
+    INVERT = "invert"  # Delta INV: ST0 := NOT ST0
 
 
 @dataclass(frozen=True, slots=True)
@@ -84,7 +96,7 @@ class Param:
 
     def allows_address(self) -> bool:
         """True if an address may be written here."""
-        return self.kind in (ParamKind.ADDRESS, ParamKind.VALUE, ParamKind.RAW)
+        return self.kind in (ParamKind.ADDRESS, ParamKind.VALUE, ParamKind.RAW, ParamKind.BIT)
 
 
 @dataclass(frozen=True, slots=True)
@@ -113,6 +125,8 @@ class InstructionSpec:
     mnemonic: str = ""  # the name written in the text when it differs from `name`
     known: bool = True  # False for a `SUB n` that is not in the table
     source: str = "seed"  # "seed": the seed manual's instruction; "pmc": FANUC 30i PMC
+    stack: StackOp = StackOp.NONE  # basic without operand: a dialect's stack operation
+    dialect: str = ""  # the dialect whose row it is (core/dialects), "" for the PMC's
     @property
     def help_key(self) -> str:
         """Key of the instruction's entry in docs/instructions.md and the help browser."""
@@ -483,6 +497,21 @@ PMC_ORDER: tuple[str, ...] = (
     "TMRBF", "CTRB", "RNGB", "RNGW", "RNGD", "CALL", "CALLU", "SP", "SPE", "JMPB", "JMPC",
     "LBL", "AXCTL", "WINDR", "WINDW", "EXIN", "DISPB",
 )
+
+
+def add_rows(rows: tuple[InstructionSpec, ...]) -> None:
+    """Join a dialect's rows to the table (core/dialects does, when it registers a dialect).
+
+    Their names carry the dialect's prefix (`DVP.TMR`), so no row of the PMC is replaced."""
+    for spec in rows:
+        known = BY_NAME.get(spec.name)
+        if known is not None and known is not spec:
+            raise ValueError(f"two rows named {spec.name}")
+        BY_NAME[spec.name] = spec
+        if spec.kind is Kind.BASIC:
+            BY_OPCODE[spec.opcode] = spec
+        elif spec.sub is not None:
+            BY_SUB[spec.sub] = spec
 
 
 def lookup(name: str) -> InstructionSpec | None:

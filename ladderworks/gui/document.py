@@ -12,8 +12,9 @@ from PySide6.QtGui import QTextDocument
 
 from ladderworks.core.collector import release_frozen
 from ladderworks.core.il import Program
-from ladderworks.core.il.parser import ParseResult, parse_bytes
+from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.printer import encode_program, print_faithful
+from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text
 from ladderworks.core.ladder.convert import adopt_origin, damaged_drafts
 from ladderworks.gui.editor.ladder_model import LadderModel

@@ -12,7 +12,7 @@ from PySide6.QtWidgets import QMessageBox
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, print_program
-from ladderworks.core.il.parser import parse_bytes
+from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import EncodeError
 from ladderworks.core.plc.parameters import format_parameters, parameters_beside
 from ladderworks.core.plc.timer_table import dialect_of

@@ -6,7 +6,8 @@ import struct
 import zlib
 from dataclasses import dataclass
 
-from ladderworks.core.address import AREA_SIZES, Address, Area
+from ladderworks.core import dialects
+from ladderworks.core.address import Address, Area
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.il.program import ParamValue
 from ladderworks.core.instructions import (
@@ -44,6 +45,7 @@ PARAM_SIZE = _PARAM.size
 SOURCE_SIZE = _SOURCE.size
 
 FLAG_FANUC = 0x0001  # header flag: the program is in the FANUC (LADDER-III) dialect
+DIALECT_SHIFT = 8  # header flags bits 8-15: a registered dialect's code (core/dialects)
 U32 = 2**32 - 1
 
 # Opcodes of the basic instructions (from the table); a functional one or END is FUNCTION_OPCODE.
@@ -53,6 +55,7 @@ BASIC_NAMES: dict[int, str] = {code: name for name, code in BASIC_OPCODES.items(
 _FIRST_AREAS = "XYFGRADTCK"  # the codes of format version 2; new areas are appended
 AREA_CODES: str = _FIRST_AREAS + "".join(a.value for a in Area if a.value not in _FIRST_AREAS)
 
+_SIZES = dialects.memory_sizes()  # the bytes of each area of the memory image
 _TAG_INT = 0
 _TAG_ADDRESS = 1
 _TAG_PROGRAM = 2
@@ -146,7 +149,9 @@ def encode(ops: list[Op] | tuple[Op, ...], dialect: str = "seed") -> bytes:
         sources += _SOURCE.pack(*(min(max(v, 0), U32) for v in (
             src.network, src.instruction, src.line, src.column)))
     body = bytes(records) + bytes(params) + bytes(sources)
-    flags = FLAG_FANUC if dialect == "fanuc" else 0
+    other = dialects.get(dialect)
+    flags = FLAG_FANUC if dialect == "fanuc" else (
+        other.code << DIALECT_SHIFT if other is not None else 0)
     fields = (MAGIC, FORMAT_VERSION, HEADER_SIZE, len(ops), len(params), flags, 0)
     head = _HEADER.pack(*fields, 0)[:-4]
     return head + zlib.crc32(body, zlib.crc32(head)).to_bytes(4, "little") + body
@@ -166,7 +171,7 @@ def _decode_param(data: bytes, offset: int, where: str) -> ParamValue:
         raise BinaryFormatError(f"unknown parameter tag {tag} in {where}")
     code, byte, bit = _PARAM_ADDRESS.unpack_from(data, offset + 1)
     area = _decode_area(code, where)
-    if byte >= AREA_SIZES[area] or (bit != _NO_BIT and bit > 7):
+    if byte >= _SIZES[area] or (bit != _NO_BIT and bit > 7):
         raise BinaryFormatError(f"address out of range in {where}")
     return Address(area, byte, None if bit == _NO_BIT else bit)
 
@@ -211,7 +216,7 @@ def decode(data: bytes) -> BinaryProgram:
             operand: Address | None = None
             if basic.operand:
                 area = _decode_area(a, where)
-                if c >= AREA_SIZES[area] or b > 7:
+                if c >= _SIZES[area] or b > 7:
                     raise BinaryFormatError(f"address out of range in {where}")
                 operand = Address(area, c, b)
             ops.append(Op(basic.name, operand, (), source))
@@ -224,4 +229,9 @@ def decode(data: bytes) -> BinaryProgram:
         values = tuple(_decode_param(data, params_at + d + k * PARAM_SIZE, where)
                        for k in range(c))
         ops.append(Op(fspec.name, None, values, source))
-    return BinaryProgram(tuple(ops), version, "fanuc" if flags & FLAG_FANUC else "seed")
+    code = flags >> DIALECT_SHIFT & 0xFF
+    other = dialects.by_code(code) if code else None
+    if code and other is None:
+        raise BinaryFormatError(f"unknown dialect code {code}")
+    name = "fanuc" if flags & FLAG_FANUC else (other.name if other is not None else "seed")
+    return BinaryProgram(tuple(ops), version, name)

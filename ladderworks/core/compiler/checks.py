@@ -35,6 +35,7 @@ from ladderworks.core.instructions import (
     Kind,
     Param,
     ParamKind,
+    StackOp,
     Write,
     spec_for,
     value_is_address,
@@ -43,6 +44,7 @@ from ladderworks.core.instructions import (
 from ladderworks.core.plc.families import IMPLEMENTED
 
 if TYPE_CHECKING:
+    from ladderworks.core.dialects.base import Dialect
     from ladderworks.core.plc.functions import FunctionImpl
 
 MAX_PUSHES = 8  # ST0..ST8: eight levels above ST0
@@ -162,6 +164,10 @@ class _Checker:
         # and of its parameter tuple (the parser shares one tuple among equal lines)
         self.own: dict[tuple[int, int], list[_Own]] = {}
         self.layouts: dict[int, _Layout] = {}  # by the identity of the row
+        found = dialect_rules(self.dialect)  # a dialect's devices (core/dialects), or None
+        self.fits: Callable[[Address, int], bool] = _byte_data_fits if found is None \
+            else found.devices.holds
+        self.spell: Callable[[Address], str] = str if found is None else found.format_address
 
     def add(self, code: str, ins: Instruction, network: int, *,
             warning: bool = False, **args: object) -> None:
@@ -323,6 +329,8 @@ class _Checker:
                 self.add("stack-underflow", ins, n, name=spec.name)
             else:
                 depth -= 1
+        elif spec.stack is StackOp.OVER and depth == 0:  # Delta MRD with no MPS before it
+            self.add("stack-underflow", ins, n, name=spec.name)
         elif spec.write is not _NO_WRITE:
             assert ins.operand is not None
             self.write(ins, n, spec.name, ins.operand, spec.write)
@@ -347,6 +355,12 @@ class _Checker:
             elif depth < count - 1:
                 self.add("box-inputs", ins, n, name=spec.name, count=count)
             depth = max(0, depth - (count - 1))
+        elif spec.pushes > 0:  # a contact-like box pushing a new value (Delta LD= in a rung)
+            if not logic:
+                self.add("no-logic", ins, n, name=spec.name)
+            depth += spec.pushes
+            if depth > MAX_PUSHES:
+                self.add("stack-depth", ins, n)
         logic = spec.w1 or logic
         if spec.flow is not _NO_FLOW:
             self.flow(ins, spec, n)
@@ -371,21 +385,24 @@ class _Checker:
         key = (address.area, address.byte, address.bit)
         before = self.coils.get(key)
         if before is None:  # an address in self.coils was found writable before
-            problem = _write_problem(name, address)
+            problem = _write_problem(name, address, self.spell)
             if problem is not None:
                 self.report(problem[0], ins, network, problem[1])
             else:
                 self.coils[key] = (kind, ins, network)
             return
         if kind is _OUT and before[0] is _OUT:
-            self.report("coil-twice", ins, network, {"address": str(address)}, warning=True)
+            self.report("coil-twice", ins, network, {"address": self.spell(address)},
+                        warning=True)
         elif (kind is _OUT) != (before[0] is _OUT):
             if before[1].line > 0 and not self.by_network:
                 self.report("coil-mixed", ins, network,
-                            {"address": str(address), "line": before[1].line}, warning=True)
+                            {"address": self.spell(address), "line": before[1].line},
+                            warning=True)
             else:  # no source line (drawn), or the console's: the network it is in
                 self.report("coil-mixed-network", ins, network,
-                            {"address": str(address), "other": before[2] + 1}, warning=True)
+                            {"address": self.spell(address), "other": before[2] + 1},
+                            warning=True)
         if kind is _OUT:
             self.coils[key] = (kind, ins, network)
 
@@ -506,14 +523,18 @@ class _Checker:
                     continue
                 if width is None:
                     width = width_of(spec, param, values)
-                if not _byte_data_fits(value, width):
+                if not self.fits(value, width):
+                    if self.fits is not _byte_data_fits:  # a dialect's: no device there
+                        found.append(("device-range", {"text": self.spell(value),
+                                                       "first": "", "last": ""}, False))
+                        continue
                     try:  # the parse of its spelling says why, as for a typed address
                         parse_address(str(value), want_bit=False, width=width)
                     except AddressError as exc:
                         found.append((exc.code, exc.args_map, False))
                         continue
                 if output:
-                    problem = _write_problem(name, value)
+                    problem = _write_problem(name, value, self.spell)
                     if problem is not None:
                         found.append((*problem, False))
                 continue
@@ -551,13 +572,23 @@ def _byte_data_fits(address: Address, width: int) -> bool:
     return False
 
 
-def _write_problem(name: str, address: Address) -> tuple[str, dict[str, object]] | None:
+def _write_problem(name: str, address: Address, spell: Callable[[Address], str] = str
+                   ) -> tuple[str, dict[str, object]] | None:
     """Why instruction `name` may not write `address` (code and arguments), None if it may."""
     if address.area in INPUT_AREAS:
-        return "write-input", {"name": name, "address": str(address)}
+        return "write-input", {"name": name, "address": spell(address)}
     if address.is_result_register():
-        return "write-result-register", {"name": name, "address": str(address)}
+        return "write-result-register", {"name": name, "address": spell(address)}
     return None
+
+
+def dialect_rules(name: str) -> Dialect | None:
+    """The registered dialect called `name` (its devices rule the ranges), None for the PMC's."""
+    if name in ("seed", "fanuc"):
+        return None
+    from ladderworks.core import dialects  # only a dialect's program loads the registry
+
+    return dialects.get(name)
 
 
 def check(program: Program, dialect: str | None = None, *,

@@ -75,6 +75,7 @@ _LABEL = Flow.LABEL
 _LABEL_JUMP = Flow.LABEL_JUMP
 _LABEL_JUMP_MAIN = Flow.LABEL_JUMP_MAIN
 _LEVEL_END = Flow.LEVEL_END
+_MAIN_END = Flow.MAIN_END
 _NONE = Flow.NONE
 _PROGRAM_END = Flow.PROGRAM_END
 _SUBPROGRAM = Flow.SUBPROGRAM
@@ -172,6 +173,14 @@ class _Builder:
                     current = None
                 else:
                     self.problems.append(Problem("spe-without-sp", index))
+                continue
+            if flow is _MAIN_END:  # Delta FEND: the main program ends, subroutines follow
+                if current.level == 0 or sub_area:
+                    self.problems.append(Problem("outside-subprogram", index))
+                    continue
+                self.close(current, index + 1)
+                current = None
+                sub_area = True
                 continue
             if flow is _LEVEL_END:
                 if current.level == 0 or sub_area:

@@ -6,16 +6,10 @@ import importlib
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from ladderworks.core.il.parser import (
-        ParseResult,
-        decode,
-        parse,
-        parse_bytes,
-        parse_file,
-        parse_for_check,
-    )
+    from ladderworks.core.il.parser import ParseResult, decode, parse
     from ladderworks.core.il.printer import print_instruction, print_program
     from ladderworks.core.il.program import Instruction, Network, Program, Section
+    from ladderworks.core.il.reading import parse_bytes, parse_file, parse_for_check
 
 __all__ = [
     "Instruction",
@@ -36,7 +30,7 @@ __all__ = [
 # no printer, and importing il.program loads no parser.
 _MODULE_OF = {
     "ParseResult": "parser", "decode": "parser", "parse": "parser",
-    "parse_bytes": "parser", "parse_file": "parser", "parse_for_check": "parser",
+    "parse_bytes": "reading", "parse_file": "reading", "parse_for_check": "reading",
     "print_instruction": "printer", "print_program": "printer",
     "Instruction": "program", "Network": "program", "Program": "program", "Section": "program",
 }

@@ -3,10 +3,15 @@
 from __future__ import annotations
 
 from difflib import SequenceMatcher
+from typing import TYPE_CHECKING
 
+from ladderworks.core import dialects
 from ladderworks.core.il.program import FANUC, Instruction, Network, ParamValue, Program, Section
 from ladderworks.core.il.textform import encode_text
 from ladderworks.core.instructions import InstructionSpec, Kind, ParamKind
+
+if TYPE_CHECKING:
+    from ladderworks.core.dialects.base import Dialect
 
 MNEMONIC_WIDTH = 10  # LADDER-III pads a basic instruction's mnemonic to 10 characters + 1
 
@@ -75,6 +80,12 @@ def _section_lines(section: Section) -> list[str]:
 
 def print_program(program: Program) -> str:
     """The whole program as canonical text (LF line ends, final newline)."""
+    other = dialects.of(program)
+    if other is not None:  # a dialect's program: its own text, network after network
+        lines = [line for n, network in enumerate(program.networks)
+                 for line in other.network_lines(network, n == 0)]
+        lines += _comment_lines(program.trailer, ";")
+        return "\n".join(lines) + "\n"
     out: list[str] = _comment_lines(program.header)
     if program.framed:
         out.append("%@A")
@@ -103,8 +114,12 @@ def print_program(program: Program) -> str:
     return "\n".join(out) + "\n"
 
 
-def _fresh_network(network: Network, fanuc: bool, first: bool) -> list[str]:
-    """A new or changed network in the program's own style (LADDER-III or one-line)."""
+def _fresh_network(network: Network, fanuc: bool, first: bool,
+                   dialect: Dialect | None = None) -> list[str]:
+    """A new or changed network in the program's own style (LADDER-III, one-line, or its
+    dialect's: Delta)."""
+    if dialect is not None:
+        return dialect.network_lines(network, first)
     if fanuc:
         out = _comment_lines(network.comments, ";")
         if network.label:
@@ -154,6 +169,7 @@ def print_faithful(program: Program) -> str:
         return text.replace("\n", newline) if newline != "\n" else text
     lines, ends, newline = source.lines, source.ends, source.form.newline
     fanuc = program.dialect == FANUC
+    other = dialects.of(program)
     out: list[str] = []
 
     def verbatim(start: int, stop: int) -> None:
@@ -179,15 +195,15 @@ def print_faithful(program: Program) -> str:
                 unused.remove(i)
                 verbatim(source.spans[i][0], source.heads[i])
                 body = Network(network.instructions)
-                fresh(_fresh_network(body, fanuc, True))
+                fresh(_fresh_network(body, fanuc, True, other))
             else:
-                fresh(_fresh_network(network, fanuc, j == 0))
+                fresh(_fresh_network(network, fanuc, j == 0, other))
             last_fresh = True
     if tuple(program.trailer) == source.trailer:
         verbatim(*source.trailer_span)
         last_fresh = last_fresh and source.trailer_span[0] == source.trailer_span[1]
     else:
-        fresh(_comment_lines(program.trailer, ";" if fanuc else "//"))
+        fresh(_comment_lines(program.trailer, ";" if fanuc or other else "//"))
         last_fresh = True
     verbatim(source.ladder_stop, len(lines))
     text = "".join(out)

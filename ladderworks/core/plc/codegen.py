@@ -24,7 +24,7 @@ from ladderworks.core.compiler.binary import BinaryFormatError, Op
 from ladderworks.core.compiler.checks import MAX_PUSHES, implementation_of
 from ladderworks.core.compiler.structure import LOOP_LIMIT, Unit, analyse, number_of
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
-from ladderworks.core.instructions import Combine, Flow, Kind, Write
+from ladderworks.core.instructions import Combine, Flow, Kind, StackOp, Write
 from ladderworks.core.plc.functions import FunctionImpl
 
 ScanFunction = Callable[..., None]  # scan(ctx, M, full=True)
@@ -368,11 +368,31 @@ class _Generator:
                 operator = "&" if spec.combine is Combine.AND else "|"
                 self.values[-1] = self.combine(self.values[-1], operator, _Value(term))
             return
+        if spec.stack is not StackOp.NONE:
+            self.stack_op(index, spec.stack)
+            return
         if len(self.values) < 2:
             raise self.fail(index, f"{spec.name} with nothing pushed")
         top = self.values.pop()
         operator = "&" if spec.combine is Combine.AND else "|"
         self.values[-1] = self.combine(self.values[-1], operator, top)
+
+    def stack_op(self, index: int, op: StackOp) -> None:
+        """A dialect's stack operation (Delta MPS, MRD, MPP, INV) on the stack values."""
+        top = len(self.values) - 1
+        if op is StackOp.INVERT:
+            self.values[top] = _Value(f"(1 ^ {self.store(top)})")
+        elif op is StackOp.DUP:
+            if len(self.values) > MAX_PUSHES:
+                raise self.fail(index, "stack deeper than ST8")
+            self.values.append(_Value(self.store(top)))
+            self.var(top + 1)
+        elif top < 1:
+            raise self.fail(index, "stack operation with nothing pushed")
+        elif op is StackOp.OVER:
+            self.values[top] = _Value(self.store(top - 1))
+        else:  # DROP
+            self.values.pop()
 
     def combine(self, left: _Value, operator: str, right: _Value) -> _Value:
         left_expr, right_expr = left.expr, right.expr
@@ -439,6 +459,11 @@ class _Generator:
         count = len(spec.inputs)
         if count and len(self.values) < count:
             raise self.fail(index, f"{spec.name} needs {count} control inputs")
+        if spec.pushes > 0:  # a contact-like box starting a new value (Delta LD= in a rung)
+            if len(self.values) > MAX_PUSHES:
+                raise self.fail(index, "stack deeper than ST8")
+            self.values.append(_Value("0"))
+            self.var(len(self.values) - 1)
         self.store_all()
         first = len(self.values) - count if count else len(self.values) - 1
         inputs = [self.var(d) for d in range(first, len(self.values))]

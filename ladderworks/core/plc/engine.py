@@ -8,6 +8,7 @@ from collections.abc import Iterable
 from dataclasses import fields
 from typing import Any
 
+from ladderworks.core import dialects
 from ladderworks.core.address import Address, Area
 from ladderworks.core.compiler import check, disassemble
 from ladderworks.core.compiler.binary import BinaryProgram, SourcePosition, decode
@@ -86,6 +87,9 @@ class ScanEngine:
         self._states: list[dict[str, Any]] = [{} for _ in self.program.ops]
         self._variants: dict[tuple[bool, frozenset[int]], GeneratedScan] = {}
         self._ctx = _context(self.memory, period_ms, self.program.dialect)
+        found = dialects.get(self.program.dialect)
+        self._dialect_relays = found.relays if found is not None else None
+        self._first_scan = True  # the first scan since the engine was made or cold-started
         self._current = self._variant()
 
     # -- the scan ------------------------------------------------------------------------
@@ -114,6 +118,9 @@ class ScanEngine:
             ctx.now_ms = now
             ctx.scan_ms = self.period_ms
             self._system_relays(now)
+            if self._dialect_relays is not None:  # a dialect's special relays (Delta M1000..)
+                self._dialect_relays(self.memory.areas, now, self._first_scan)
+            self._first_scan = False
             self.force_table.apply(self.memory)
             try:
                 self._current.scan(ctx, self._flow, self.scan_count % self.divisions == 0)
@@ -169,6 +176,7 @@ class ScanEngine:
             for state in self._states:
                 state.clear()
             self._ctx.power_on()  # DIFU/DIFD edge memories are shared by number, not per call
+            self._first_scan = True
             self.power_flow[:] = bytes(len(self.power_flow))
             self._flow[:] = [0] * len(self._flow)
 

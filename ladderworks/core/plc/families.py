@@ -5,6 +5,8 @@ module does not declare here, and `load_all` refuses a declared name that nothin
 
 from __future__ import annotations
 
+from ladderworks.core.dialects.delta.instructions import FAMILIES as DELTA_FAMILIES
+
 FAMILIES: dict[str, tuple[str, ...]] = {
     "arithmetic": ("ADD", "ADDB", "SUB", "SUBB", "MUL", "MULB", "DIV", "DIVB", "NUME", "NUMEB"),
     "cnc": ("AXCTL", "WINDR", "WINDW", "EXIN", "DISPB"),
@@ -25,6 +27,9 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "timers": ("TMR", "TMRB", "TMRBF", "TMRC"),
     "transfer": ("MOVE", "MOVOR", "MOVB", "MOVW", "MOVN", "MOVD", "XMOV", "XMOVB"),
 }
+
+# A dialect's families (core/dialects/<name>/instructions.py says which module runs which row).
+FAMILIES.update(DELTA_FAMILIES)
 
 # Every functional instruction that has an implementation.
 IMPLEMENTED: frozenset[str] = frozenset(name for names in FAMILIES.values() for name in names)

@@ -2,16 +2,20 @@
 
 from __future__ import annotations
 
-from ladderworks.core.address import AREA_SIZES, Address, Area
+from ladderworks.core.address import Address, Area
+from ladderworks.core.dialects import memory_sizes
 from ladderworks.core.plc.bcd import bcd_to_int, int_to_bcd
 
 
 class Memory:
-    """Every area's bytes; values of 2 and 4 bytes are little-endian (low byte first)."""
+    """Every area's bytes; values of 2 and 4 bytes are little-endian (low byte first).
+
+    Each area holds the PMC's map and whatever a dialect's devices need beyond it (the 20000
+    bytes of Delta's D0-D9999 words): core/dialects.memory_sizes."""
 
     def __init__(self) -> None:
         self.areas: dict[Area, bytearray] = {
-            area: bytearray(size) for area, size in AREA_SIZES.items()
+            area: bytearray(size) for area, size in memory_sizes().items()
         }
 
     def bit(self, address: Address) -> int:

@@ -15,6 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ladderworks.core import dialects
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.plc.session import PlcRun
@@ -139,8 +140,9 @@ def _number(text: str) -> int:
 class _Reader:
     """Turns lines into steps, collecting diagnostics with their line and column."""
 
-    def __init__(self, symbols: SymbolTable | None) -> None:
+    def __init__(self, symbols: SymbolTable | None, dialect: str | None = None) -> None:
         self.symbols = symbols
+        self.dialect = dialect  # a Delta program's: addresses in its devices' spelling
         self.diagnostics: list[Diagnostic] = []
 
     def error(self, code: str, line: int, column: int, **args: object) -> None:
@@ -163,7 +165,12 @@ class _Reader:
             self.error("scenario-type", line, column + 2, text=type_text)
             return None
         try:
-            address = resolve(text.strip(), self.symbols, width=width or 1)
+            if dialects.get(self.dialect) is not None:
+                want = None if width is None else "bit" if width == 0 else "word"
+                address, size = dialects.parse_target(text.strip(), self.dialect, want)
+                width = width or size
+            else:
+                address = resolve(text.strip(), self.symbols, width=width or 1)
         except AddressError:
             self.error("scenario-address", line, column, text=text)
             return None
@@ -216,10 +223,11 @@ _NEEDS = {"SET": "a wait and at least one ADDR,VALUE", "FORCE": "a wait, a bit a
 
 
 def parse_scenario(text: str, name: str = "scenario",
-                   symbols: SymbolTable | None = None) -> Scenario:
-    """Read a scenario file's text; addresses may be symbols of `symbols`."""
+                   symbols: SymbolTable | None = None, dialect: str | None = None) -> Scenario:
+    """Read a scenario file's text; addresses may be symbols of `symbols`, or in the spelling
+    of the program's `dialect` (Delta's `X10`, `D0`; a T/C without a type is its value)."""
     scenario = Scenario(name)
-    reader = _Reader(symbols)
+    reader = _Reader(symbols, dialect)
     lines = text.splitlines()
     first = next((i for i, line in enumerate(lines) if line.strip()), None)
     if first is None or lines[first].strip().strip(",").upper() != HEADER:
@@ -262,14 +270,15 @@ def parse_scenario(text: str, name: str = "scenario",
     return scenario
 
 
-def read_scenario(path: str | Path, symbols: SymbolTable | None = None) -> Scenario:
+def read_scenario(path: str | Path, symbols: SymbolTable | None = None,
+                  dialect: str | None = None) -> Scenario:
     """Read a scenario file (UTF-8, else Turkish Windows text)."""
     data = Path(path).read_bytes()
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError:
         text = data.decode("cp1254", errors="replace")
-    return parse_scenario(text, str(path), symbols)
+    return parse_scenario(text, str(path), symbols, dialect)
 
 
 def rounded(wait_ms: int, period_ms: int) -> int:

@@ -1,0 +1,73 @@
+"""What a dialect is: rows of the instruction table, an address map and a reader per file form."""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from ladderworks.core.address import Address, Area
+from ladderworks.core.dialects.devices import DeviceMap
+from ladderworks.core.instructions import InstructionSpec
+
+if TYPE_CHECKING:
+    from ladderworks.core.diagnostics import Diagnostic
+    from ladderworks.core.il.program import Network, Program
+    from ladderworks.core.il.textform import TextForm
+
+# (text, form, lines, line ends) -> (program, diagnostics): a reader of one file form
+Reader = Callable[[str, "TextForm", list[str], list[str]], "tuple[Program, list[Diagnostic]]"]
+# (network, first) -> the lines of a new or changed network in the dialect's own text
+NetworkPrinter = Callable[["Network", bool], list[str]]
+# (memory areas, now in ms, first scan after RUN) -> None: the special relays before a scan
+Relays = Callable[[dict[Area, bytearray], int, bool], None]
+
+
+@dataclass(frozen=True, slots=True)
+class Dialect:
+    """One PLC family's programs: how they are recognised, read, spelled, printed and run.
+
+    There is one engine: a dialect's program is the same `Program` (networks of
+    `Instruction`s) as a PMC one, run by the same checks, compiler, code generator and scan.
+    `reader` and `printer` name functions (`module:function`) imported when first used, so
+    registering a dialect loads no parser."""
+
+    name: str  # "delta": Program.dialect, `--dialect NAME`
+    title: str  # English: "Delta DVP"
+    title_tr: str  # Turkish
+    code: int  # its number in a binary's header flags (bits 8-15); unique, never reused
+    devices: DeviceMap
+    rows: tuple[InstructionSpec, ...]  # its rows of the instruction table (core/instructions)
+    sniff: Callable[[str], int]  # a score 0..100: how much a text looks like this dialect
+    reader: str  # "module:function", a Reader
+    printer: str  # "module:function", a NetworkPrinter
+    relays: Relays | None = None  # its special relays, set by the engine before each scan
+    period_ms: int = 10  # its usual scan period (the CLI's and the session's default)
+    extensions: tuple[str, ...] = ()  # file name endings its files use (".dvp")
+
+    def read(self, text: str, form: TextForm, lines: list[str],
+             ends: list[str]) -> tuple[Program, list[Diagnostic]]:
+        """Read a text of this dialect: the program and its diagnostics."""
+        reader: Reader = _function(self.reader)  # type: ignore[assignment]
+        return reader(text, form, lines, ends)
+
+    def network_lines(self, network: Network, first: bool) -> list[str]:
+        """A new or changed network as this dialect's text (Save, format)."""
+        printer: NetworkPrinter = _function(self.printer)  # type: ignore[assignment]
+        return printer(network, first)
+
+    def format_address(self, address: Address) -> str:
+        """An address in this dialect's spelling (the PMC's when no device lives there)."""
+        return self.devices.format(address) or str(address)
+
+    def memory_sizes(self) -> dict[Area, int]:
+        """The bytes each memory area needs for this dialect's devices."""
+        return self.devices.bytes_needed()
+
+
+def _function(path: str) -> Callable[..., object]:
+    """The function `module:name` (a Reader or a NetworkPrinter)."""
+    module, _, name = path.partition(":")
+    found: Callable[..., object] = getattr(importlib.import_module(module), name)
+    return found

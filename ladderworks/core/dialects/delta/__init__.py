@@ -1,0 +1,66 @@
+"""The Delta DVP dialect: WPLSoft/ISPSoft instruction lists, Delta's devices and instructions.
+
+docs/dialects.md says what it covers and where each choice comes from.
+"""
+
+from __future__ import annotations
+
+from ladderworks.core.address import Address, Area
+from ladderworks.core.dialects.base import Dialect
+from ladderworks.core.dialects.delta.instructions import ROWS
+from ladderworks.core.dialects.delta.sniff import score
+from ladderworks.core.dialects.devices import Device, DeviceMap
+
+NAME = "delta"
+
+# Where Delta's devices live in the memory image (docs/dialects.md, "Delta: memory layout").
+S_BITS = 1000  # R area: M0..M4095 at bytes 0..511, S0..S1023 at bytes 1000..1127
+T_BITS = 1000  # T area: T0..T255 contacts from byte 1000; their current values from byte 0
+C_BITS = 2000  # C area: C0..C255 contacts from byte 2000; their current values from byte 0
+C_STRIDE = 4  # every counter has 4 bytes (C200..C255 are 32-bit)
+WIDE_COUNTERS = 200  # C200..C255: 32-bit up/down counters (DCNT)
+
+X = Device("X", 0, 0o377, "input", base=8, bits=(Area.X, 0), read_only=True)
+Y = Device("Y", 0, 0o377, "output", base=8, bits=(Area.Y, 0))
+M = Device("M", 0, 4095, "auxiliary relay", bits=(Area.R, 0))
+S = Device("S", 0, 1023, "step relay", bits=(Area.R, S_BITS))
+T = Device("T", 0, 255, "timer", bits=(Area.T, T_BITS), words=(Area.T, 0))
+C = Device("C", 0, 255, "counter", bits=(Area.C, C_BITS), words=(Area.C, 0), stride=C_STRIDE,
+           wide_from=WIDE_COUNTERS)
+D = Device("D", 0, 4999, "data register", words=(Area.D, 0))
+D_HIGH = Device("D", 5000, 9999, "data register", words=(Area.E, 0))  # area D holds 5000 words
+DEVICES = DeviceMap((X, Y, M, S, T, C, D, D_HIGH))
+
+
+def relay(number: int) -> Address:
+    """Where special relay M`number` lives."""
+    return M.bit_address(number)
+
+
+M1000 = relay(1000)  # on while the PLC runs
+M1002 = relay(1002)  # on for the first scan after RUN
+M1013 = relay(1013)  # 1 s clock: 0.5 s on, 0.5 s off
+M1014 = relay(1014)  # 1 min clock: 30 s on, 30 s off
+M1028 = relay(1028)  # on: T64..T126 count in 10 ms
+M1200 = relay(1200)  # M1200..M1255: C200..C255 count down when on
+
+
+def _set(areas: dict[Area, bytearray], address: Address, on: bool) -> None:
+    data = areas[address.area]
+    mask = 1 << (address.bit or 0)
+    data[address.byte] = data[address.byte] | mask if on else data[address.byte] & ~mask & 0xFF
+
+
+def relays(areas: dict[Area, bytearray], now_ms: int, first: bool) -> None:
+    """Delta's special relays, set before each scan (the engine calls this)."""
+    _set(areas, M1000, True)
+    _set(areas, M1002, first)
+    _set(areas, M1013, now_ms % 1000 < 500)
+    _set(areas, M1014, now_ms % 60_000 < 30_000)
+
+
+DIALECT = Dialect(
+    name=NAME, title="Delta DVP", title_tr="Delta DVP", code=2, devices=DEVICES, rows=ROWS,
+    sniff=score, reader="ladderworks.core.dialects.delta.reader:read",
+    printer="ladderworks.core.dialects.delta.printer:network_lines", relays=relays,
+    period_ms=10, extensions=(".dvp", ".il", ".txt"))

@@ -1,0 +1,64 @@
+"""Delta text of a new or changed network: one instruction a line, Delta's spelling."""
+
+from __future__ import annotations
+
+from ladderworks.core.address import Address
+from ladderworks.core.dialects.delta import DEVICES
+from ladderworks.core.il.program import Instruction, LabelRef, Network, ProgramRef
+from ladderworks.core.instructions import Combine, Flow, InstructionSpec, Kind, ParamKind, Write
+
+
+def _basic_name(spec: InstructionSpec) -> str:
+    """Delta's mnemonic of a basic row of the table, read from its fields."""
+    if spec.write is Write.SET:
+        return "SET"
+    if spec.write is Write.RESET:
+        return "RST"
+    if spec.write is Write.OUT:
+        return "OUT"
+    if spec.combine is Combine.READ:
+        return "LDI" if spec.negated else "LD"
+    if spec.combine is Combine.AND:
+        return ("ANI" if spec.negated else "AND") if spec.operand else "ANB"
+    if spec.combine is Combine.OR:
+        return ("ORI" if spec.negated else "OR") if spec.operand else "ORB"
+    return spec.text_name
+
+
+def operand_text(value: object) -> str:
+    """An operand in Delta's spelling: a device, `K10`, `P1`."""
+    if isinstance(value, Address):
+        return DEVICES.format(value) or str(value)
+    if isinstance(value, LabelRef | ProgramRef):
+        return f"P{value.number}"
+    return f"K{value}"
+
+
+def instruction_lines(instruction: Instruction) -> list[str]:
+    """The lines of one instruction (an inverted coil is INV, OUT, INV)."""
+    spec = instruction.spec
+    comment = f"  ; {instruction.comment}" if instruction.comment else ""
+    if spec.kind is Kind.BASIC and not spec.dialect:
+        name = _basic_name(spec)
+        operand = "" if instruction.operand is None else "\t" + operand_text(instruction.operand)
+        if spec.write is Write.OUT and spec.negated:
+            return ["INV", f"OUT{operand}{comment}", "INV"]
+        return [f"{name}{operand}{comment}"]
+    if spec.flow in (Flow.LABEL, Flow.SUBPROGRAM):
+        return [" ".join(operand_text(p) for p in instruction.params) + comment]
+    params = list(instruction.params)
+    if spec.flow is Flow.COMMON:  # MC: its `coils` 0 is not written
+        params = params[1:]
+    texts = []
+    for param, value in zip(spec.params[-len(params):] if params else (), params, strict=False):
+        texts.append(f"N{value}" if param.kind is ParamKind.NUMBER and param.name == "nest"
+                     else operand_text(value))
+    return ["\t".join([spec.text_name, *texts]) + comment]
+
+
+def network_lines(network: Network, first: bool) -> list[str]:
+    """A network's lines: its comment lines (`; text`), then its instructions."""
+    out = [f"; {text}" for text in network.comments]
+    for instruction in network.instructions:
+        out.extend(instruction_lines(instruction))
+    return out

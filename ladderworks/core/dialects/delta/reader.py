@@ -1,0 +1,269 @@
+"""Read a Delta instruction list (WPLSoft instruction mode, ISPSoft IL for DVP) into a Program.
+
+One instruction a line, operands after it separated by spaces or tabs, an optional leading
+step number, pointer lines `P n`, comments after `;` or `//`. A rung (network) starts at each
+LD-like instruction that follows an output with no MPS pending, as WPLSoft draws it; pointer
+lines, FEND, SRET, MCR and END are networks of their own. Every line keeps its place, so an
+unchanged network is saved from its own lines (il/printer.py's faithful save).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from ladderworks.core.address import Address, AddressError
+from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects.delta import DEVICES, NAME, WIDE_COUNTERS
+from ladderworks.core.dialects.delta import instructions as rows
+from ladderworks.core.il.program import (
+    FileSource,
+    Instruction,
+    LabelRef,
+    Network,
+    ParamValue,
+    Program,
+    ProgramRef,
+)
+from ladderworks.core.il.textform import TextForm
+from ladderworks.core.instructions import Flow, InstructionSpec, lookup
+
+_STEP = re.compile(r"^\d+$")
+_POINTER = re.compile(r"^[Pp](\d+):?$")
+_CONSTANT = re.compile(r"^([KkHh])(-?[0-9A-Fa-f]+)$")
+_NEST = re.compile(r"^[Nn](\d)$")
+
+_BIT_LETTERS = {rows.BIT_IN: "XYMSTC", rows.BIT_OUT: "YMS"}
+_WORD_LETTERS = {rows.WORD_IN: "TCD", rows.WORD_OUT: "TCD", rows.TIMER: "T",
+                 rows.COUNTER: "C", rows.WIDE_COUNTER: "C", rows.RESET: "TCD"}
+_EXPECTED = {  # the spellings an operand of each kind may have, for the message
+    rows.BIT_IN: "X, Y, M, S, T, C", rows.BIT_OUT: "Y, M, S", rows.WORD_IN: "K, H, T, C, D",
+    rows.WORD_OUT: "T, C, D", rows.TIMER: "T0-T255", rows.COUNTER: "C0-C199",
+    rows.WIDE_COUNTER: "C200-C255", rows.RESET: "T, C, D", rows.LABEL: "P0-P255",
+    rows.PROGRAM: "P0-P255", rows.NEST: "N0-N7",
+}
+
+
+def _split_comment(raw: str) -> tuple[str, str, int]:
+    """The code part of a line, its comment text, and the comment's column (0: none)."""
+    cut = len(raw)
+    for marker in (";", "//"):
+        at = raw.find(marker)
+        if 0 <= at < cut:
+            cut = at
+    if cut == len(raw):
+        return raw, "", 0
+    width = 1 if raw[cut] == ";" else 2
+    return raw[:cut], raw[cut + width:].strip(), cut + 1
+
+
+@dataclass(slots=True)
+class _Rung:
+    """The network being read: its instructions and what the stack holds."""
+
+    start: int  # index of its first line (comments and blanks before it included)
+    head: int = -1  # index of its first instruction line
+    instructions: list[Instruction] = field(default_factory=list)
+    comments: list[str] = field(default_factory=list)
+    depth: int = 0  # values on the stack (an LD makes one, ANB/ORB join two)
+    pushed: int = 0  # MPS not yet taken back by MPP
+    output: bool = False  # the last instruction was an output
+
+
+class _Reader:
+    def __init__(self, lines: list[str]) -> None:
+        self.lines = lines
+        self.networks: list[Network] = []
+        self.spans: list[tuple[int, int]] = []
+        self.heads: list[int] = []
+        self.diagnostics: list[Diagnostic] = []
+        self.rung = _Rung(0)
+        self.after_fend = False
+        self.pending: list[str] = []  # comment lines not yet given to a network
+
+    def error(self, code: str, line: int, column: int, **args: object) -> None:
+        self.diagnostics.append(Diagnostic(code, dict(args), line, column))
+
+    def close(self, stop: int) -> None:
+        """End the network being read at line index `stop` (exclusive)."""
+        rung = self.rung
+        if rung.instructions:
+            self.networks.append(Network(rung.instructions, rung.comments))
+            self.spans.append((rung.start, stop))
+            self.heads.append(rung.head)
+            self.rung = _Rung(stop)
+
+    def add(self, index: int, instruction: Instruction) -> None:
+        rung = self.rung
+        if not rung.instructions:
+            rung.head = index
+            rung.comments = self.pending
+            self.pending = []
+        rung.instructions.append(instruction)
+
+    def run(self) -> tuple[list[Network], int]:
+        """Read every line; the networks and the index of the line after the last one."""
+        last = 0
+        for index, raw in enumerate(self.lines):
+            code, comment, comment_column = _split_comment(raw)
+            words = code.split()
+            number = index + 1
+            if not words:
+                if (comment_column and not self.rung.instructions) or comment_column:
+                    self.pending.append(comment)
+                continue
+            column = len(code) - len(code.lstrip()) + 1
+            if len(words) > 1 and _STEP.match(words[0]):
+                column = code.index(words[1], column - 1 + len(words[0])) + 1
+                words = words[1:]
+            self.line(index, number, column, words, comment)
+            last = index + 1
+        self.close(last)
+        return self.networks, last
+
+    def line(self, index: int, number: int, column: int, words: list[str], comment: str) -> None:
+        pointer = _POINTER.match(words[0])
+        if pointer is not None and len(words) == 1:
+            self.close(index)
+            row = rows.SUBROUTINE_ROW if self.after_fend else rows.LABEL_ROW
+            ref: ParamValue = (ProgramRef if self.after_fend else LabelRef)(int(pointer.group(1)))
+            self.add(index, Instruction(row.name, None, (ref,), comment, (), number, column))
+            self.close(index + 1)
+            return
+        mnemonic = words[0].upper()
+        spelling = rows.SPELLINGS.get(mnemonic)
+        if spelling is None:  # reported; the line stays in the file (faithful save)
+            if mnemonic in rows.NOT_SIMULATED:
+                self.error("dialect-not-simulated", number, column, name=mnemonic,
+                           dialect="Delta")
+            else:
+                self.error("unknown-instruction", number, column, name=mnemonic)
+            return
+        rung = self.rung
+        role = spelling.role
+        if role == "alone" or (role == "load" and rung.output and rung.pushed == 0):
+            self.close(index)
+            rung = self.rung
+        row_name = spelling.row
+        if role == "load" and rung.depth > 0:
+            row_name = spelling.stk_row
+        operands = words[1:]
+        kinds: tuple[str, ...]
+        if mnemonic == "RST" and operands and operands[0][:1].upper() in "TCD":
+            row_name, kinds = rows.RESET_ROW.name, (rows.RESET,)
+        else:
+            kinds = spelling.operands
+        if mnemonic == "FEND":
+            self.after_fend = True
+        spec = lookup(row_name)
+        assert spec is not None, row_name
+        instruction = self.build(spec, mnemonic, kinds, operands, number, column, comment)
+        self.add(index, instruction)
+        if role == "load":
+            rung.depth += 1
+        elif role == "block":
+            rung.depth = max(rung.depth - 1, 0)
+        rung.pushed = max(rung.pushed + (spec.pushes if spec.stack else 0), 0)
+        rung.output = role == "output"
+        if role == "alone":
+            self.close(index + 1)
+
+    def build(self, spec: InstructionSpec, mnemonic: str, kinds: tuple[str, ...],
+              operands: list[str], number: int, column: int, comment: str) -> Instruction:
+        """The instruction of row `spec` with its operands read (a diagnostic for each bad one:
+        the instruction is kept with the operands that read, and the checks see it)."""
+        if spec.flow is Flow.COMMON:  # MC N: its `coils` 0, then the nesting level
+            kinds = ("zero", *kinds)
+            operands = ["K0", *operands]
+        wanted = len(kinds) - (1 if spec.flow is Flow.COMMON else 0)
+        given = len(operands) - (1 if spec.flow is Flow.COMMON else 0)
+        if given != wanted:
+            self.error("param-count", number, column, name=mnemonic, expected=wanted,
+                       found=given)
+            return Instruction(spec.name, None, (), comment, (), number, column)
+        values: list[ParamValue] = []
+        line = self.lines[number - 1]
+        for index, (kind, text) in enumerate(zip(kinds, operands, strict=True), start=1):
+            at = line.find(text, column - 1) + 1 if kind != "zero" else column
+            value = self.operand(mnemonic, index, kind, text, number, at or column)
+            if value is None:
+                return Instruction(spec.name, None, (), comment, (), number, column)
+            values.append(value)
+        if spec.operand:
+            operand = values[0]
+            assert isinstance(operand, Address)
+            return Instruction(spec.name, operand, (), comment, (), number, column)
+        return Instruction(spec.name, None, tuple(values), comment, (), number, column)
+
+    def operand(self, name: str, index: int, kind: str, text: str, line: int,
+                column: int) -> ParamValue | None:
+        """One operand as read by its kind; None (and a diagnostic) when it is not one."""
+        if kind == "zero":
+            return 0
+        upper = text.upper()
+        try:
+            if kind in _BIT_LETTERS:
+                if upper[:1] not in _BIT_LETTERS[kind] or (_CONSTANT.match(text) and \
+                        upper[:1] in "KH"):
+                    return self.kind_error(name, index, kind, text, line, column)
+                return DEVICES.bit(text)
+            if kind in (rows.LABEL, rows.PROGRAM):
+                found = _POINTER.match(text)
+                if found is None:
+                    return self.kind_error(name, index, kind, text, line, column)
+                return (LabelRef if kind == rows.LABEL else ProgramRef)(int(found.group(1)))
+            if kind == rows.NEST:
+                found = _NEST.match(text)
+                if found is None or int(found.group(1)) > 7:
+                    return self.kind_error(name, index, kind, text, line, column)
+                return int(found.group(1))
+            constant = _CONSTANT.match(text)
+            if constant is not None:
+                if kind != rows.WORD_IN:
+                    return self.kind_error(name, index, kind, text, line, column)
+                return self.constant(constant, text, line, column)
+            if upper[:1] not in _WORD_LETTERS.get(kind, ""):
+                return self.kind_error(name, index, kind, text, line, column)
+            address, _width = DEVICES.word(text)
+            if kind in (rows.COUNTER, rows.WIDE_COUNTER):
+                _device, number = DEVICES.split(text)
+                if (number >= WIDE_COUNTERS) != (kind == rows.WIDE_COUNTER):
+                    return self.kind_error(name, index, kind, text, line, column)
+            return address
+        except AddressError as exc:
+            self.error(exc.code, line, column, **exc.args_map)
+            return None
+
+    def constant(self, found: re.Match[str], text: str, line: int, column: int) -> int | None:
+        """A K (decimal) or H (hex) constant."""
+        letter, digits = found.group(1).upper(), found.group(2)
+        try:
+            value = int(digits, 16 if letter == "H" else 10)
+        except ValueError:
+            self.error("dialect-constant", line, column, text=text)
+            return None
+        if letter == "H" and value > 0xFFFF:
+            return value - (1 << 32) if value >= 1 << 31 else value
+        if letter == "H" and value >= 0x8000:
+            return value - 0x10000
+        return value
+
+    def kind_error(self, name: str, index: int, kind: str, text: str, line: int,
+                   column: int) -> ParamValue | None:
+        """Report an operand of the wrong kind; None."""
+        self.error("dialect-operand", line, column, name=name, index=index,
+                   expected=_EXPECTED[kind], text=text)
+        return None
+
+
+def read(text: str, form: TextForm, lines: list[str],
+         ends: list[str]) -> tuple[Program, list[Diagnostic]]:
+    """A Delta instruction list as a Program (dialect "delta") and the reader's diagnostics."""
+    reader = _Reader(lines)
+    networks, last = reader.run()
+    program = Program(networks=networks, dialect=NAME)
+    program.trailer = list(reader.pending)
+    program.source = FileSource(
+        form, lines, ends, 0, len(lines), [network.key() for network in networks],
+        reader.spans, reader.heads, tuple(program.trailer), (last, len(lines)))
+    return program, reader.diagnostics

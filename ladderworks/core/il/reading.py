@@ -1,0 +1,69 @@
+"""Which reader reads a file: a dialect's (recognised from the content, or named) or the PMC's.
+
+`parse_bytes`, `parse_file` and `parse_for_check` here sniff the text (core/dialects) and hand
+it to the dialect's reader, else to the PMC parser (il/parser.py). `dialect` names a reader and
+skips the sniffing (`--dialect NAME` on the command line); "pmc" forces the PMC parser.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ladderworks.core import dialects
+from ladderworks.core.collector import collector_paused
+from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.il import parser
+from ladderworks.core.il.parser import ParseResult
+from ladderworks.core.il.textform import decode_lines
+
+if TYPE_CHECKING:
+    from pathlib import Path
+
+PMC = "pmc"  # `--dialect pmc`: the PMC parser, whatever the text looks like
+
+
+class UnknownDialect(ValueError):
+    """A dialect name nobody registered."""
+
+
+def choose(data: bytes, dialect: str | None = None) -> dialects.Dialect | None:
+    """The dialect whose reader reads `data`: `dialect` if named, else the one the text looks
+    like; None for the PMC parser. Raises UnknownDialect for a name not registered."""
+    if dialect == PMC:
+        return None
+    if dialect:
+        found = dialects.get(dialect)
+        if found is None:
+            raise UnknownDialect(dialect)
+        return found
+    text, _form, _diagnostics, _split = decode_lines(data[:65536])
+    return dialects.sniff(text)
+
+
+def read_dialect(data: bytes, dialect: dialects.Dialect) -> ParseResult:
+    """`data` read by `dialect`'s reader."""
+    text, form, diagnostics, (lines, ends) = decode_lines(data)
+    with collector_paused(promote=True):
+        program, found = dialect.read(text, form, lines, ends)
+    every: list[Diagnostic] = sorted(diagnostics + found, key=lambda d: (d.line, d.column))
+    return ParseResult(program, every, form.encoding)
+
+
+def parse_bytes(data: bytes, dialect: str | None = None) -> ParseResult:
+    """Parse file contents in whichever dialect they are written (or `dialect`)."""
+    found = choose(data, dialect)
+    return parser.parse_bytes(data) if found is None else read_dialect(data, found)
+
+
+def parse_file(path: str | Path, dialect: str | None = None) -> ParseResult:
+    """Parse a program file in whichever dialect it is written (or `dialect`)."""
+    with open(path, "rb") as file:
+        return parse_bytes(file.read(), dialect)
+
+
+def parse_for_check(path: str | Path, dialect: str | None = None) -> ParseResult:
+    """parser.parse_for_check, or a dialect's reader for a file of another dialect."""
+    with open(path, "rb") as file:
+        data = file.read()
+    found = choose(data, dialect)
+    return parser.parse_for_check(path) if found is None else read_dialect(data, found)

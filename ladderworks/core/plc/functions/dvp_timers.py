@@ -1,0 +1,65 @@
+"""Delta DVP TMR: a 16-bit on-delay timer, its value and contact in the T device.
+
+Input on: the value counts up in the timer's base (T0-T63 and T128-T255 100 ms; T64-T126
+100 ms, or 10 ms while M1028 is on; T127 1 ms: seed 001 for the DVP-14SS) and stops at the
+set value; the contact is on while value >= set value. Input off: value 0, contact off. Time is
+the engine's virtual clock, counted only while the TMR executes (each scan it runs adds that
+scan's time once; the scan that starts it adds 0): a timer skipped by CJ, or in a subroutine
+not called, holds its value and goes on later (seed 003). docs/dialects.md.
+"""
+
+from __future__ import annotations
+
+from ladderworks.core.address import Address
+from ladderworks.core.dialects.delta import M1028, T
+from ladderworks.core.plc.functions import FunctionContext, executed_once_this_scan, function
+from ladderworks.core.plc.functions.dvp_data import value
+from ladderworks.core.plc.memory import Memory
+
+FAST_FIRST, FAST_LAST = 64, 126  # 10 ms with M1028 on
+MS_TIMER = 127  # 1 ms
+MAX_VALUE = 32767
+
+
+def base_ms(memory: Memory, number: int) -> int:
+    """Timer `number`'s base in ms (M1028 read now)."""
+    if number == MS_TIMER:
+        return 1
+    if FAST_FIRST <= number <= FAST_LAST and memory.bit(M1028):
+        return 10
+    return 100
+
+
+def timer_number(address: Address) -> int:
+    """The number of the timer whose value is at `address`."""
+    number = T.word_number(address)
+    assert number is not None
+    return number
+
+
+@function("DVP.TMR")
+def tmr(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
+    """TMR Tn SV: see the module's docstring; passes its input on."""
+    act = bool(inputs[-1])
+    timer, preset = params
+    memory = ctx.memory
+    number = timer_number(timer)
+    contact = T.bit_address(number)
+    if not act:
+        memory.write(timer, 0, 2)
+        memory.set_bit(contact, False)
+        state["running"] = False
+        state["ms"] = 0
+        return act
+    if executed_once_this_scan(ctx, state):
+        elapsed = state.get("ms", 0) + (ctx.scan_ms if state.get("running") else 0)
+        state["running"] = True
+        target = value(memory, preset)
+        current = memory.read(timer, 2, signed=True)
+        base = base_ms(memory, number)
+        ticks, state["ms"] = divmod(elapsed, base)
+        if current < target:
+            current = min(current + ticks, target, MAX_VALUE)
+            memory.write(timer, current, 2)
+        memory.set_bit(contact, current >= target)
+    return act

@@ -1,0 +1,65 @@
+"""The command line on Delta programs: check, run --set/--print, test, --dialect."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ladderworks.cli import main
+from tests.core.dialects.conftest import EXAMPLES
+
+
+def _write(tmp_path: Path, text: str, name: str = "prog.txt") -> Path:
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_run_sets_and_prints_in_delta_spelling(tmp_path: Path, capsys) -> None:
+    path = _write(tmp_path, "LD X0\nMOV K7 D0\nLD X0\nTMR T0 K10\nLD T0\nOUT Y0\nEND\n")
+    assert main(["run", str(path), "--set", "X0=1", "--ms", "1200",
+                 "--print", "Y0,D0,T0,X0"]) == 0
+    assert capsys.readouterr().out.split("\n")[:4] == ["Y0 = 1", "D0 = 7", "T0 = 10", "X0 = 1"]
+
+
+def test_run_refuses_a_device_that_does_not_exist(tmp_path: Path, capsys) -> None:
+    path = _write(tmp_path, "LD X0\nOUT Y0\nEND\n")
+    assert main(["run", str(path), "--print", "X8"]) == 2
+    assert "octal" in capsys.readouterr().err
+
+
+def test_check_reports_file_line_col(tmp_path: Path, capsys) -> None:
+    path = _write(tmp_path, "LD X0\nOUT X1\nLD X8\nOUT Y0\nFOO Y1\nEND\n")
+    assert main(["check", str(path)]) == 1
+    lines = capsys.readouterr().out.splitlines()
+    assert lines == [
+        f"{path}:2:5: dialect-operand OUT: operand 1 must be one of Y, M, S, found 'X1'",
+        f"{path}:3:4: device-octal 'X8': X is numbered in octal (digits 0 to 7)",
+        f"{path}:5:1: unknown-instruction unknown instruction 'FOO'"]
+
+
+def test_check_runs_the_compiler_checks_in_delta_spelling(tmp_path: Path, capsys) -> None:
+    path = _write(tmp_path, "LD X0\nOUT Y0\nLD X1\nOUT Y0\nLD X2\nCALL P5\nFEND\nEND\n")
+    assert main(["check", str(path)]) == 1
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].startswith(f"{path}:4:1: coil-twice ") and "Y0" in lines[0]
+    assert "Y0.0" not in lines[0]
+    assert lines[1].startswith(f"{path}:6:1: call-missing ")
+    assert len(lines) == 2
+
+
+def test_dialect_option_forces_the_reader(tmp_path: Path, capsys) -> None:
+    path = _write(tmp_path, "LD X0\nOUT Y0\nEND\n")
+    assert main(["check", str(path)]) == 0
+    assert main(["check", "--dialect", "delta", str(path)]) == 0
+    capsys.readouterr()
+    assert main(["check", "--dialect", "pmc", str(path)]) == 1
+    assert "missing-start" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("program", sorted(EXAMPLES.glob("*.txt")), ids=lambda p: p.name)
+def test_every_example_passes_its_scenario(program: Path, capsys) -> None:
+    scenario = program.with_suffix(".scenario.csv")
+    assert main(["test", str(program), str(scenario)]) == 0, capsys.readouterr()
+    assert "1 passed, 0 failed" in capsys.readouterr().out
