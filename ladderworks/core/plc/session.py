@@ -26,6 +26,7 @@ from ladderworks.core.alarms import ActiveAlarm, ActiveAlarms, AlarmTable
 from ladderworks.core.compiler import CompileResult, compile_program
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
+from ladderworks.core.dialects.fatek.ascii_format import AsciiFormat
 from ladderworks.core.dialects.fatek.terminal import AsciiTerminal
 from ladderworks.core.il.program import Program
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
@@ -34,6 +35,7 @@ from ladderworks.core.plc.functions.counters import (
     counter_preset_address,
     counter_value_address,
 )
+from ladderworks.core.plc.functions.fatek_io import ASCII_FILES, ASCII_TERMINAL
 from ladderworks.core.plc.memory import Memory
 from ladderworks.core.plc.parameters import PARAMETER_AREAS, PmcParameters
 from ladderworks.core.plc.runner import RealTimeRunner, ScanStats
@@ -126,7 +128,8 @@ class PlcRun:
         self.parameters = PmcParameters()
         self.alarm_table = AlarmTable()
         self.ascii_terminal = AsciiTerminal()  # what a Fatek FUN 94 ASCWR sends to Port 1
-        self.ascii_files: dict[Address, object] = {}  # a Fatek program's ASCII files by S
+        # a Fatek program's ASCII files by S (core/dialects/fatek/ascii_files.py)
+        self.ascii_files: dict[Address, AsciiFormat | None] = {}
         self.trace: TraceSampler | None = None
         self._alarms = ActiveAlarms(self.alarm_table)
         self._runner: RealTimeRunner | None = None
@@ -140,6 +143,11 @@ class PlcRun:
         self.input_listeners: list[Callable[[str, Address, int, int], None]] = []
 
     # -- the program ---------------------------------------------------------------------
+
+    def use_ascii_files(self, files: dict[Address, AsciiFormat | None]) -> None:
+        """The ASCII files FUN 94 sends (a Fatek program's, read beside it); kept across loads."""
+        self.ascii_files.clear()
+        self.ascii_files.update(files)
 
     def load(self, binary: bytes | BinaryProgram,
              program: Program | None = None) -> list[Diagnostic]:
@@ -155,6 +163,8 @@ class PlcRun:
         self.engine = engine
         self.binary = engine.program
         self.program = program
+        engine.extra[ASCII_TERMINAL] = self.ascii_terminal  # a Fatek program's FUN 94 output
+        engine.extra[ASCII_FILES] = self.ascii_files
         engine.cold_start()
         self.parameters.apply(self.memory)
         engine.monitored = self._monitors > 0

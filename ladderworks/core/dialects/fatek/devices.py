@@ -6,6 +6,8 @@ import re
 from dataclasses import dataclass
 
 from ladderworks.core.address import Address, Area
+from ladderworks.core.dialects.devices import Device as MapDevice
+from ladderworks.core.dialects.devices import DeviceMap
 
 # Device kinds and their numbers (docs/dialects.md, Fatek: FBs-PLC manual's memory map; the
 # seeds give only T0-T255 and C0-C255 (001:392-416, 572-588) and "see section 3.2" (002:99)).
@@ -134,10 +136,10 @@ _WORD_BASE: dict[str, tuple[Area, int, int]] = {  # area, first byte, bytes per 
     "R": (Area.D, 0, 2),  # R0-R4999: D0-D9999
     "D": (Area.E, 0, 2),  # D0-D4095: E0-E8191
     "T": (Area.R, 1000, 2),  # T0-T255 present values: R1000-R1511 (cleared at a load)
-    "C": (Area.T, 0, 2),  # C0-C199 present values: T0-T399 (kept, as C0-C139 must be)
+    "C": (Area.T, 0, 4),  # C0-C255 present values, 4 bytes each: T0-T1023 (kept: C0-C139)
 }
-COUNTER_32_AREA = (Area.T, 9000, 4)  # C200-C255 present values: T9000-T9223
 FO_AREA = (Area.R, 2700)  # function outputs: one byte (FO0-FO7) a box, R2700 on
+FO_BOXES = 6000  # boxes with outputs a program may have (R2700-R8699)
 _WORD_OF_BITS = {"WX": "X", "WY": "Y", "WM": "M", "WS": "S"}
 
 
@@ -155,11 +157,9 @@ def word_address(device: Device) -> tuple[Address, int]:
     if base in _WORD_OF_BITS:
         area, first = _BIT_BASE[_WORD_OF_BITS[base]]
         return Address(area, first + device.number // 8), 4 if double else 2
-    if base == "C" and counter_is_32bit(device.number):
-        area, first, size = COUNTER_32_AREA
-        return Address(area, first + size * (device.number - COUNTER_32_FIRST)), 4
     area, first, size = _WORD_BASE[base]
-    return Address(area, first + size * device.number), 4 if double else 2
+    wide = double or (base == "C" and counter_is_32bit(device.number))
+    return Address(area, first + size * device.number), 4 if wide else 2
 
 
 def fo_address(index: int) -> Address:
@@ -184,16 +184,34 @@ def word_device_at(address: Address) -> Device | None:
     """The Fatek register an engine byte address starts (R, D, T and C values)."""
     if address.bit is not None:
         return None
-    area, first, size = COUNTER_32_AREA
-    if address.area is area and address.byte >= first and not (address.byte - first) % size:
-        number = COUNTER_32_FIRST + (address.byte - first) // size
-        if number <= WORD_RANGES["C"][1]:
-            return Device("C", number)
     for kind, (area, first, size) in _WORD_BASE.items():
         offset = address.byte - first
         if address.area is area and offset >= 0 and not offset % size:
             low, high = WORD_RANGES[kind]
             number = offset // size
-            if low <= number <= high and not (kind == "C" and counter_is_32bit(number)):
+            if low <= number <= high:
                 return Device(kind, number)
     return None
+
+
+def _map_device(kind: str, meaning: str, **where: object) -> MapDevice:
+    low, high = BIT_RANGES.get(kind) or WORD_RANGES[kind]
+    return MapDevice(kind, low, high, meaning, **where)  # type: ignore[arg-type]
+
+
+# The address map of the dialect framework (spelling in the CLI, scenarios and the IDE)
+DEVICES = DeviceMap((
+    _map_device("X", "input", bits=_BIT_BASE["X"], read_only=True),
+    _map_device("Y", "output", bits=_BIT_BASE["Y"]),
+    _map_device("M", "internal relay", bits=_BIT_BASE["M"]),
+    _map_device("S", "step relay", bits=_BIT_BASE["S"]),
+    _map_device("TR", "temporary relay", bits=_BIT_BASE["TR"]),
+    _map_device("T", "timer", bits=_BIT_BASE["T"], words=_WORD_BASE["T"][:2], stride=2),
+    _map_device("C", "counter", bits=_BIT_BASE["C"], words=_WORD_BASE["C"][:2], stride=4,
+                wide_from=COUNTER_32_FIRST),
+    _map_device("R", "register", words=_WORD_BASE["R"][:2], stride=2),
+    _map_device("D", "data register", words=_WORD_BASE["D"][:2], stride=2),
+    # not Fatek devices: the boxes' outputs (FO n of box k is FO(8k + n), its byte FOB k)
+    MapDevice("FO", 0, 8 * FO_BOXES - 1, "function output", bits=FO_AREA),
+    MapDevice("FOB", 0, FO_BOXES - 1, "function outputs of a box", words=FO_AREA, stride=1),
+))

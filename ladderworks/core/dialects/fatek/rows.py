@@ -40,7 +40,7 @@ def _row(name: str, sub: int, mnemonic: str, title: str, title_tr: str, *,
          w1: bool = True, cnc: bool = False) -> InstructionSpec:
     return InstructionSpec(name, Kind.FUNCTION, sub, inputs=inputs, params=params, w1=w1,
                            title=title, title_tr=title_tr, opcode=FUNCTION_OPCODE,
-                           mnemonic=mnemonic, cnc=cnc, source="fatek")
+                           mnemonic=mnemonic, cnc=cnc, source="fatek", dialect="fatek")
 
 
 # FUN n of the listing -> the row it becomes
@@ -54,9 +54,9 @@ ROWS: tuple[InstructionSpec, ...] = (
     _row("F.RST", 1902, "RST", "Reset a timer or counter", "ZAMANLAYICI/SAYICI SIFIRLA",
          params=(_number("kind", 0, 1), _number("number", 0, 255)), w1=False),
     _row("F.TU", 1903, "TU", "Rising edge contact", "YÜKSELEN KENAR KONTAĞI", inputs=("IN",),
-         params=(_raw("device"),)),
+         params=(Param("device", ParamKind.BIT),)),
     _row("F.TD", 1904, "TD", "Falling edge contact", "DÜŞEN KENAR KONTAĞI", inputs=("IN",),
-         params=(_raw("device"),)),
+         params=(Param("device", ParamKind.BIT),)),
     _row("F.MOV", SUB_BASE + 8, "MOV", "Move", "TAŞI",
          params=(MODE, _value("S"), _register("D")), w1=False),
     _row("F.ADD", SUB_BASE + 11, "(+)", "Addition", "TOPLAMA",

@@ -56,8 +56,8 @@ def test_memory_map() -> None:
     assert bit_address(Device("M", 1924)) == Address(Area.R, 240, 4)
     assert word_address(Device("R", 3)) == (Address(Area.D, 6), 2)
     assert word_address(Device("DR", 3)) == (Address(Area.D, 6), 4)
-    assert word_address(Device("C", 199)) == (Address(Area.T, 398), 2)
-    assert word_address(Device("C", 200)) == (Address(Area.T, 9000), 4)
+    assert word_address(Device("C", 199)) == (Address(Area.T, 796), 2)
+    assert word_address(Device("C", 200)) == (Address(Area.T, 800), 4)
     assert word_address(Device("WX", 8)) == (Address(Area.X, 1), 2)
     for kind, number in (("X", 255), ("M", 2001), ("S", 999), ("TR", 0), ("T", 17),
                          ("C", 255)):
