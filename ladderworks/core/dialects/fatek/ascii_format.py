@@ -80,6 +80,7 @@ class _Reader:
         self.pos = 0
         self.first_line = first_line
         self.diagnostics: list[Diagnostic] = []
+        self.unclosed = False  # a quote runs to the end: nothing after it can be read
 
     def line_at(self, pos: int) -> int:
         return self.first_line + self.text.count("\n", 0, pos)
@@ -113,6 +114,7 @@ def _quoted(reader: _Reader, quote: str) -> str | None:
         pos += 1
     reader.error(start, "fatek-ascii-quote", quote=quote)
     reader.pos = len(text)
+    reader.unclosed = True
     return None
 
 
@@ -215,6 +217,8 @@ def parse_format(text: str, first_line: int = 1) -> tuple[AsciiFormat, list[Diag
                              text=rest.splitlines()[0][:30])
             break
         raw, start, quoted = _raw_item(reader)
+        if reader.unclosed:
+            return AsciiFormat(items, False), reader.diagnostics
         item = _item(reader, raw, start, quoted)
         if item is not None:
             items.append(item)
