@@ -112,29 +112,34 @@
 <context>
     <name>AsciiOutput</name>
     <message>
-        <location filename="../ladderworks/gui/docks/ascii_output.py" line="59"/>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="66"/>
         <source>ASCII output</source>
         <translation>ASCII çıkışı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/ascii_output.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="67"/>
         <source>Clear</source>
         <translation>Temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/ascii_output.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="68"/>
         <source>Forget what the terminal received</source>
         <translation>Terminalin aldıklarını unut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/ascii_output.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="70"/>
         <source>What FUN 94 ASCWR sends to Port 1 (a Fatek program) shows here.</source>
         <translation>FUN 94 ASCWR komutunun Port 1&apos;e gönderdikleri (bir Fatek programında) burada görünür.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/ascii_output.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="85"/>
         <source>{0} output(s) received</source>
         <translation>{0} çıkış alındı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="88"/>
+        <source>{0}, line {1}: {2}</source>
+        <translation>{0}, satır {1}: {2}</translation>
     </message>
 </context>
 <context>
@@ -1715,24 +1720,24 @@
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="394"/>
+        <location filename="../ladderworks/gui/main_window.py" line="395"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="400"/>
+        <location filename="../ladderworks/gui/main_window.py" line="401"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="406"/>
+        <location filename="../ladderworks/gui/main_window.py" line="407"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="424"/>
         <location filename="../ladderworks/gui/main_window.py" line="255"/>
-        <location filename="../ladderworks/gui/main_window.py" line="401"/>
+        <location filename="../ladderworks/gui/main_window.py" line="402"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1871,32 +1876,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="364"/>
+        <location filename="../ladderworks/gui/main_window.py" line="365"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="380"/>
+        <location filename="../ladderworks/gui/main_window.py" line="381"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="443"/>
+        <location filename="../ladderworks/gui/main_window.py" line="444"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="446"/>
+        <location filename="../ladderworks/gui/main_window.py" line="447"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="478"/>
+        <location filename="../ladderworks/gui/main_window.py" line="479"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="479"/>
+        <location filename="../ladderworks/gui/main_window.py" line="480"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>

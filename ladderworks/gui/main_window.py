@@ -275,6 +275,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
                                 else "")
         self.signals_dock.set_symbols(program.symbols)
         self.plc_docks.session.set_symbols(program.symbols)
+        self.plc_docks.ascii_output.use_program(self.path)  # a Fatek program's ASCII files
         self.program_opened.emit(program)
 
     def show_program_properties(self) -> QDialog:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QFontDatabase
 from PySide6.QtWidgets import (
@@ -14,6 +16,9 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects.fatek.ascii_files import ascii_path, load_ascii_files
+from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.retranslate import Retranslating
 
@@ -49,6 +54,8 @@ class AsciiOutputDock(Retranslating, QDockWidget):
         self.setWidget(body)
         self._shown = ""
         self._writes = -1
+        self._file: Path | None = None  # the ASCII files read for the open program
+        self._problems: list[Diagnostic] = []
         session.snapshot_ready.connect(lambda _snapshot: self.refresh())
         session.status_changed.connect(lambda _status: self.refresh())
         session.program_loaded.connect(lambda _binary: self.refresh())
@@ -75,10 +82,24 @@ class AsciiOutputDock(Retranslating, QDockWidget):
         self.view.setPlainText(self._shown.replace("\f", PAGE_RULE))
         bar = self.view.verticalScrollBar()
         bar.setValue(bar.maximum())
-        self.summary.setText(translate("AsciiOutput", "{0} output(s) received").format(
-            terminal.writes))
+        text = translate("AsciiOutput", "{0} output(s) received").format(terminal.writes)
+        if self._problems and self._file is not None:
+            first = self._problems[0]
+            text += "  " + translate("AsciiOutput", "{0}, line {1}: {2}").format(
+                self._file.name, first.line, diagnostic_text(first))
+        self.summary.setText(text)
 
     def clear(self) -> None:
         """Empty the terminal (and the view)."""
         self.session.run.ascii_terminal.clear()
+        self.refresh()
+
+    def use_program(self, path: Path | None) -> None:
+        """A program was opened: the ASCII files beside it (`PROGRAM.ascii`) are what its
+        FUN 94 sends; their first problem is shown under the text."""
+        files = load_ascii_files(path) if path is not None else None
+        self._file = ascii_path(path) if path is not None else None
+        self._problems = list(files.diagnostics) if files is not None else []
+        self.session.run.use_ascii_files(files.files if files is not None else {})
+        self._writes = -1
         self.refresh()
