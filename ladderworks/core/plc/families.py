@@ -6,6 +6,7 @@ module does not declare here, and `load_all` refuses a declared name that nothin
 from __future__ import annotations
 
 from ladderworks.core.dialects.delta.instructions import FAMILIES as DELTA_FAMILIES
+from ladderworks.core.dialects.fatek.rows import FAMILIES as FATEK_FAMILIES
 
 FAMILIES: dict[str, tuple[str, ...]] = {
     "arithmetic": ("ADD", "ADDB", "SUB", "SUBB", "MUL", "MULB", "DIV", "DIVB", "NUME", "NUMEB"),
@@ -15,10 +16,6 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "counters": ("CTR", "CTRC", "CTRB"),
     "decode": ("DEC", "DECB"),
     "edges": ("DIFU", "DIFD"),
-    "fatek_data": ("F.MOV", "F.ADD", "F.SUB", "F.MUL", "F.DIV", "F.INC", "F.DEC", "F.CMP",
-                   "F.EQ", "F.GT", "F.LT", "F.NE", "F.GE", "F.LE"),
-    "fatek_io": ("F.ASCWR", "F.HSPSO", "F.MPARA", "F.PSOFF", "F.PSCNV", "F.176"),
-    "fatek_timing": ("F.TMR", "F.CTR", "F.UDCTR", "F.RST", "F.TU", "F.TD"),
     "logic": ("LOGAND", "LOGOR", "EOR", "NOT"),
     "parity": ("PARI",),
     "rotation": ("ROT", "ROTB"),
@@ -30,6 +27,7 @@ FAMILIES: dict[str, tuple[str, ...]] = {
 
 # A dialect's families (core/dialects/<name>/instructions.py says which module runs which row).
 FAMILIES.update(DELTA_FAMILIES)
+FAMILIES.update(FATEK_FAMILIES)
 
 # Every functional instruction that has an implementation.
 IMPLEMENTED: frozenset[str] = frozenset(name for names in FAMILIES.values() for name in names)

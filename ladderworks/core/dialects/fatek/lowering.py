@@ -80,7 +80,7 @@ class ProgramLowering(StackLowering):
     def edge(self, record: Record) -> None:
         """ORG / LD / AND / OR with TU or TD: an edge box in series with what comes before."""
         device = bit_address(_bit_device(record, EDGE_DEVICES))
-        spec = ROW_OF_NAME["F.TU" if record.modifier == "TU" else "F.TD"]
+        spec = ROW_OF_NAME["FBS.TU" if record.modifier == "TU" else "FBS.TD"]
         self.contact_box(record, spec, (device,))
 
     def contact_box(self, record: Record, spec: InstructionSpec,
@@ -115,7 +115,7 @@ class ProgramLowering(StackLowering):
         spec = BY_FUN.get(record.fun or -1)
         if spec is not None and spec.name in NOT_SIMULATED:
             self.not_simulated(record)
-            self.contact_box(record, ROW_OF_NAME["F.EQ"], (0, 0, 1))  # 0 = 1: never passes
+            self.contact_box(record, ROW_OF_NAME["FBS.EQ"], (0, 0, 1))  # 0 = 1: never passes
             return
         if spec is None or spec.inputs != ("IN",):
             raise _fail(record, "fatek-unknown-fun", number=record.fun)
@@ -204,7 +204,7 @@ class ProgramLowering(StackLowering):
                                                                  "name": record.mnemonic},
                                          texts[1][1]))
         preset = operand(texts[0][0], texts[0][1], "PV", True)
-        spec = ROW_OF_NAME["F.TMR" if kind == "T" else "F.CTR"]
+        spec = ROW_OF_NAME["FBS.TMR" if kind == "T" else "FBS.CTR"]
         self.inputs(record, len(spec.inputs))
         fo = self.next_fo()
         self.emit_box(record, spec, (device.number, preset, fo))
@@ -215,7 +215,7 @@ class ProgramLowering(StackLowering):
         if record.operand[:1].upper() in ("T", "C") and not record.operand.upper().startswith(
                 "TR"):
             device = _bit_device(record, ("T", "C"))
-            spec = ROW_OF_NAME["F.RST"]
+            spec = ROW_OF_NAME["FBS.RST"]
             self.inputs(record, 1)
             self.emit_box(record, spec, (0 if device.kind == "T" else 1, device.number))
             self.after_box(spec, None)

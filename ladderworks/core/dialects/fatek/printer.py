@@ -11,8 +11,8 @@ from ladderworks.core.il.program import Instruction, Network
 from ladderworks.core.instructions import Combine, Kind, Write
 
 WIDTH = 9  # the mnemonic column, as WinProladder prints it
-_CONTACT_BOXES = {"F.TU": "TU", "F.TD": "TD"}
-_COMPARE_BOXES = frozenset(("F.EQ", "F.GT", "F.LT", "F.NE", "F.GE", "F.LE"))
+_CONTACT_BOXES = {"FBS.TU": "TU", "FBS.TD": "TD"}
+_COMPARE_BOXES = frozenset(("FBS.EQ", "FBS.GT", "FBS.LT", "FBS.NE", "FBS.GE", "FBS.LE"))
 
 
 def device_text(address: object) -> str:
@@ -41,11 +41,11 @@ def _box_lines(ins: Instruction) -> list[str]:
     """A box's step line and its operand lines."""
     spec = ins.spec
     values = ins.param_map()
-    if spec.name == "F.TMR":
+    if spec.name == "FBS.TMR":
         return [_line("TMR", f"T{values['timer']}  {device_text(values['preset'])}")]
-    if spec.name == "F.CTR":
+    if spec.name == "FBS.CTR":
         return [_line("CTR", f"C{values['counter']}  {device_text(values['preset'])}")]
-    if spec.name == "F.RST":
+    if spec.name == "FBS.RST":
         return [_line("RST", f"{'T' if values['kind'] == 0 else 'C'}{values['number']}")]
     fun = (spec.sub or SUB_BASE) - SUB_BASE
     mode = values.get("mode", 0)

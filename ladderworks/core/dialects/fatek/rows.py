@@ -11,7 +11,8 @@ from ladderworks.core.instructions import (
     ParamKind,
 )
 
-SUB_BASE = 1000  # a Fatek row's SUB number in the binary: 1000 + FUN n (1900-1999: the rest)
+SUB_BASE = 20_000  # a Fatek row's SUB number: 20000 + FUN n (21000.. for the others)
+OTHER = 21_000
 INT32_LOW, INT32_HIGH = -(2**31), 2**31 - 1
 
 
@@ -45,55 +46,63 @@ def _row(name: str, sub: int, mnemonic: str, title: str, title_tr: str, *,
 
 # FUN n of the listing -> the row it becomes
 ROWS: tuple[InstructionSpec, ...] = (
-    _row("F.TMR", 1900, "TMR", "Timer", "ZAMANLAYICI",
+    _row("FBS.TMR", OTHER, "TMR", "Timer", "ZAMANLAYICI",
          params=(_number("timer", 0, 255), _value("preset"), FO)),
-    _row("F.CTR", 1901, "CTR", "Counter", "SAYICI", inputs=("CK", "CLR"),
+    _row("FBS.CTR", OTHER + 1, "CTR", "Counter", "SAYICI", inputs=("CK", "CLR"),
          params=(_number("counter", 0, 255), _value("preset"), FO)),
-    _row("F.UDCTR", SUB_BASE + 7, "UDCTR", "Up/down counter", "YUKARI-AŞAĞI SAYICI",
+    _row("FBS.UDCTR", SUB_BASE + 7, "UDCTR", "Up/down counter", "YUKARI-AŞAĞI SAYICI",
          inputs=("CK", "U/D", "CLR"), params=(_number("counter", 0, 255), _value("preset"), FO)),
-    _row("F.RST", 1902, "RST", "Reset a timer or counter", "ZAMANLAYICI/SAYICI SIFIRLA",
+    _row("FBS.RST", OTHER + 2, "RST", "Reset a timer or counter", "ZAMANLAYICI/SAYICI SIFIRLA",
          params=(_number("kind", 0, 1), _number("number", 0, 255)), w1=False),
-    _row("F.TU", 1903, "TU", "Rising edge contact", "YÜKSELEN KENAR KONTAĞI", inputs=("IN",),
+    _row("FBS.TU", OTHER + 3, "TU", "Rising edge contact", "YÜKSELEN KENAR KONTAĞI", inputs=("IN",),
          params=(Param("device", ParamKind.BIT),)),
-    _row("F.TD", 1904, "TD", "Falling edge contact", "DÜŞEN KENAR KONTAĞI", inputs=("IN",),
+    _row("FBS.TD", OTHER + 4, "TD", "Falling edge contact", "DÜŞEN KENAR KONTAĞI", inputs=("IN",),
          params=(Param("device", ParamKind.BIT),)),
-    _row("F.MOV", SUB_BASE + 8, "MOV", "Move", "TAŞI",
+    _row("FBS.MOV", SUB_BASE + 8, "MOV", "Move", "TAŞI",
          params=(MODE, _value("S"), _register("D")), w1=False),
-    _row("F.ADD", SUB_BASE + 11, "(+)", "Addition", "TOPLAMA",
+    _row("FBS.ADD", SUB_BASE + 11, "(+)", "Addition", "TOPLAMA",
          params=(MODE, _value("Sa"), _value("Sb"), _register("D"), FO)),
-    _row("F.SUB", SUB_BASE + 12, "(-)", "Subtraction", "ÇIKARMA",
+    _row("FBS.SUB", SUB_BASE + 12, "(-)", "Subtraction", "ÇIKARMA",
          params=(MODE, _value("Sa"), _value("Sb"), _register("D"), FO)),
-    _row("F.MUL", SUB_BASE + 13, "(*)", "Multiplication", "ÇARPMA",
+    _row("FBS.MUL", SUB_BASE + 13, "(*)", "Multiplication", "ÇARPMA",
          params=(MODE, _value("Sa"), _value("Sb"), _register("D"), FO)),
-    _row("F.DIV", SUB_BASE + 14, "(/)", "Division", "BÖLME",
+    _row("FBS.DIV", SUB_BASE + 14, "(/)", "Division", "BÖLME",
          params=(MODE, _value("Sa"), _value("Sb"), _register("D"), FO)),
-    _row("F.INC", SUB_BASE + 15, "(+1)", "Increment", "BİR ARTIR",
+    _row("FBS.INC", SUB_BASE + 15, "(+1)", "Increment", "BİR ARTIR",
          params=(MODE, _register("D"), FO)),
-    _row("F.DEC", SUB_BASE + 16, "(-1)", "Decrement", "BİR AZALT",
+    _row("FBS.DEC", SUB_BASE + 16, "(-1)", "Decrement", "BİR AZALT",
          params=(MODE, _register("D"), FO)),
-    _row("F.CMP", SUB_BASE + 17, "CMP", "Compare", "KARŞILAŞTIR",
+    _row("FBS.CMP", SUB_BASE + 17, "CMP", "Compare", "KARŞILAŞTIR",
          params=(MODE, _value("Sa"), _value("Sb"), FO)),
-    _row("F.ASCWR", SUB_BASE + 94, "ASCWR", "ASCII write", "ASCII YAZ",
+    _row("FBS.ASCWR", SUB_BASE + 94, "ASCWR", "ASCII write", "ASCII YAZ",
          inputs=("EN", "PAU", "ABT"),
          params=(_number("MD", 0, 255), _register("S"), _register("Pt"), FO)),
     *(_row(name, SUB_BASE + fun, symbol, f"Compare contact {symbol}",
            f"KARŞILAŞTIRMA KONTAĞI {symbol}", inputs=("IN",),
            params=(MODE, _value("Sa"), _value("Sb")))
-      for fun, name, symbol in ((170, "F.EQ", "(=)"), (171, "F.GT", "(>)"),
-                                (172, "F.LT", "(<)"), (173, "F.NE", "(<>)"),
-                                (174, "F.GE", "(>=)"), (175, "F.LE", "(<=)"))),
+      for fun, name, symbol in ((170, "FBS.EQ", "(=)"), (171, "FBS.GT", "(>)"),
+                                (172, "FBS.LT", "(<)"), (173, "FBS.NE", "(<>)"),
+                                (174, "FBS.GE", "(>=)"), (175, "FBS.LE", "(<=)"))),
     # drawn and kept, not simulated (a warning at their line; FO stay 0)
     *(_row(name, SUB_BASE + fun, mnemonic, title, title_tr, params=(_number("fun", 0, 999), FO),
            cnc=True)
       for fun, name, mnemonic, title, title_tr in (
-          (140, "F.HSPSO", "HSPSO", "High-speed pulse output", "YÜKSEK HIZLI DARBE ÇIKIŞI"),
-          (141, "F.MPARA", "MPARA", "Positioning parameters", "KONUMLAMA PARAMETRELERİ"),
-          (142, "F.PSOFF", "PSOFF", "Stop the pulse output", "DARBE ÇIKIŞINI DURDUR"),
-          (143, "F.PSCNV", "PSCNV", "Pulse position to a value", "DARBE KONUMUNU DEĞERE ÇEVİR"),
-          (176, "F.176", "FUN 176", "FUN 176", "FUN 176"))),
+          (140, "FBS.HSPSO", "HSPSO", "High-speed pulse output", "YÜKSEK HIZLI DARBE ÇIKIŞI"),
+          (141, "FBS.MPARA", "MPARA", "Positioning parameters", "KONUMLAMA PARAMETRELERİ"),
+          (142, "FBS.PSOFF", "PSOFF", "Stop the pulse output", "DARBE ÇIKIŞINI DURDUR"),
+          (143, "FBS.PSCNV", "PSCNV", "Pulse position to a value", "DARBE KONUMUNU DEĞERE ÇEVİR"),
+          (176, "FBS.176", "FUN 176", "FUN 176", "FUN 176"))),
 )
 
 BY_FUN: dict[int, InstructionSpec] = {
-    spec.sub - SUB_BASE: spec for spec in ROWS if spec.sub is not None and spec.sub < 1900}
+    spec.sub - SUB_BASE: spec for spec in ROWS if spec.sub is not None and spec.sub < OTHER}
 NOT_SIMULATED: frozenset[str] = frozenset(spec.name for spec in ROWS if spec.cnc)
 COMPARISON_FUNS = range(170, 176)
+
+# The modules of core/plc/functions that run these rows (merged into core/plc/families.py)
+FAMILIES: dict[str, tuple[str, ...]] = {
+    "fatek_data": ("FBS.MOV", "FBS.ADD", "FBS.SUB", "FBS.MUL", "FBS.DIV", "FBS.INC", "FBS.DEC",
+                   "FBS.CMP", "FBS.EQ", "FBS.GT", "FBS.LT", "FBS.NE", "FBS.GE", "FBS.LE"),
+    "fatek_io": ("FBS.ASCWR", "FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176"),
+    "fatek_timing": ("FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.TU", "FBS.TD"),
+}

@@ -44,7 +44,7 @@ def _result(ctx: FunctionContext, state: dict, fo: object, *bits: bool) -> bool:
     return bits[0]
 
 
-@function("F.MOV")
+@function("FBS.MOV")
 def fatek_move(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                params: tuple) -> bool:
     """FUN 8 MOV: D := S."""
@@ -108,15 +108,15 @@ def _step(fun: int) -> FunctionImpl:
     return impl
 
 
-function("F.ADD")(_arithmetic(11))
-function("F.SUB")(_arithmetic(12))
-function("F.MUL")(_arithmetic(13))
-function("F.DIV")(_arithmetic(14))
-function("F.INC")(_step(15))
-function("F.DEC")(_step(16))
+function("FBS.ADD")(_arithmetic(11))
+function("FBS.SUB")(_arithmetic(12))
+function("FBS.MUL")(_arithmetic(13))
+function("FBS.DIV")(_arithmetic(14))
+function("FBS.INC")(_step(15))
+function("FBS.DEC")(_step(16))
 
 
-@function("F.CMP")
+@function("FBS.CMP")
 def fatek_compare(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                   params: tuple) -> bool:
     """FUN 17 CMP: FO0 Sa = Sb, FO1 Sa > Sb, FO2 Sa < Sb (001:1081-1095)."""
@@ -153,6 +153,6 @@ def _contact(fun: int) -> FunctionImpl:
     return impl
 
 
-for _fun, _name in ((170, "F.EQ"), (171, "F.GT"), (172, "F.LT"), (173, "F.NE"), (174, "F.GE"),
-                    (175, "F.LE")):
+for _fun, _name in ((170, "FBS.EQ"), (171, "FBS.GT"), (172, "FBS.LT"), (173, "FBS.NE"),
+                    (174, "FBS.GE"), (175, "FBS.LE")):
     function(_name)(_contact(_fun))

@@ -35,7 +35,7 @@ def variable_reader(memory: Memory) -> Callable[[Variable], int]:
     return read
 
 
-@function("F.ASCWR")
+@function("FBS.ASCWR")
 def fatek_ascii_write(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                       params: tuple) -> bool:
     """FUN 94 ASCWR: the ASCII file at S to the simulated terminal."""
@@ -66,5 +66,5 @@ def fatek_not_simulated(ctx: FunctionContext, state: dict, inputs: tuple[bool, .
     return False
 
 
-for _name in ("F.HSPSO", "F.MPARA", "F.PSOFF", "F.PSCNV", "F.176"):
+for _name in ("FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176"):
     function(_name)(fatek_not_simulated)

@@ -42,7 +42,7 @@ def _set(memory: Memory, device: Device, value: bool) -> None:
     memory.set_bit(bit_address(device), value)
 
 
-@function("F.TMR")
+@function("FBS.TMR")
 def fatek_timer(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                 params: tuple) -> bool:
     """Timer Tn with PV a constant or a register (001:449-461)."""
@@ -77,7 +77,7 @@ def _counter_start(memory: Memory, state: dict, device: Device, cv_at: Address,
             memory.write(cv_at, 0, width)
 
 
-@function("F.CTR")
+@function("FBS.CTR")
 def fatek_counter(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                   params: tuple) -> bool:
     """Up counter Cn: inputs CK (top) and CLR."""
@@ -105,7 +105,7 @@ def fatek_counter(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
     return up
 
 
-@function("F.UDCTR")
+@function("FBS.UDCTR")
 def fatek_up_down_counter(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                           params: tuple) -> bool:
     """FUN 7 UDCTR: inputs CK, U/D, CLR; FO0 only while CV = PV; the value wraps."""
@@ -132,7 +132,7 @@ def fatek_up_down_counter(ctx: FunctionContext, state: dict, inputs: tuple[bool,
     return equal
 
 
-@function("F.RST")
+@function("FBS.RST")
 def fatek_reset(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                 params: tuple) -> bool:
     """RST of a timer or counter: EN = 1 clears its present value and its contact."""
@@ -153,14 +153,14 @@ def _edge(ctx: FunctionContext, state: dict, device: Address, rising: bool) -> b
     return (now and not before) if rising else (before and not now)
 
 
-@function("F.TU")
+@function("FBS.TU")
 def fatek_rising_contact(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                          params: tuple) -> bool:
     """TU contact: on for one scan after its device turns on (002:80), in series with IN."""
     return _edge(ctx, state, params[0], True) and bool(inputs[0])
 
 
-@function("F.TD")
+@function("FBS.TD")
 def fatek_falling_contact(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                           params: tuple) -> bool:
     """TD contact: on for one scan after its device turns off (002:80), in series with IN."""
