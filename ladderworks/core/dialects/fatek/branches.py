@@ -46,7 +46,7 @@ class BranchError(Exception):
 
 
 def _fail(record: Record, code: str, **args: object) -> BranchError:
-    return BranchError(Diagnostic(code, dict(args), record.line))
+    return BranchError(Diagnostic(code, dict(args), record.line, record.column))
 
 
 def contact_address(record: Record) -> Address:
@@ -100,7 +100,8 @@ class StackLowering:
         return self.parts[-1]
 
     def emit(self, record: Record, name: str, operand: Address | None = None) -> None:
-        self.current.instructions.append(Instruction(name, operand, line=record.line))
+        self.current.instructions.append(Instruction(name, operand, line=record.line,
+                                                     column=record.column))
         self.current.records.append(record)
 
     def new_part(self) -> None:

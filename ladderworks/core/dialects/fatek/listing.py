@@ -22,6 +22,7 @@ class OperandLine:
     line: int
     label: str
     text: str
+    column: int = field(default=1, compare=False)  # of the operand text
 
 
 @dataclass(slots=True)
@@ -40,6 +41,7 @@ class Record:
     double: bool = False  # the D form: 32-bit operands
     args: tuple[str, ...] = ()  # further operands on the step line (TMR base and PV, …)
     operands: list[OperandLine] = field(default_factory=list)
+    column: int = 1  # of the mnemonic
 
     @property
     def last_line(self) -> int:
@@ -80,9 +82,20 @@ def _device(words: list[str]) -> str:
     return split.group(1) + split.group(2) if split else text.replace(" ", "")
 
 
-def _step_record(text: str, line: int, step: int | None, unit: str
+def _step_record(text: str, line: int, step: int | None, unit: str, column: int = 1
                  ) -> tuple[Record | None, Diagnostic | None]:
     """The record a step line's instruction part makes, or the diagnostic of a bad one."""
+    record, problem = _step_kind(text, line, step, unit)
+    if record is not None:
+        record.column = column
+    if problem is not None:
+        problem = Diagnostic(problem.code, problem.args, problem.line, column)
+    return record, problem
+
+
+def _step_kind(text: str, line: int, step: int | None, unit: str
+               ) -> tuple[Record | None, Diagnostic | None]:
+    """_step_record without the column."""
     fun = _FUN_RE.match(text)
     if fun is not None:
         return Record(line, "FUN", step=step, unit=unit, fun=int(fun.group(1)),
@@ -146,10 +159,12 @@ def read_listing(lines: list[str], first_line: int = 1) -> tuple[Listing, list[D
         if operand is not None and not _STEP_RE.match(text):
             last = records[-1] if records else None
             if last is None or (last.fun is None and last.mnemonic not in BOXES):
-                diagnostics.append(Diagnostic("fatek-stray-operand", {"text": text}, line))
+                diagnostics.append(Diagnostic("fatek-stray-operand", {"text": text}, line,
+                                              _column(raw, text)))
                 continue
             last.operands.append(OperandLine(line, (operand.group(1) or "").strip(),
-                                             operand.group(2)))
+                                             operand.group(2),
+                                             _column(raw, operand.group(2))))
             continue
         step_match = _STEP_RE.match(raw)
         step: int | None = None
@@ -161,7 +176,7 @@ def read_listing(lines: list[str], first_line: int = 1) -> tuple[Listing, list[D
         if records and _continues(records[-1], text):
             records[-1].operand = _device(text.split())
             continue
-        record, problem = _step_record(text, line, step, unit)
+        record, problem = _step_record(text, line, step, unit, _column(raw, text))
         if problem is not None:
             diagnostics.append(problem)
         if record is not None:
@@ -173,3 +188,12 @@ def _continues(last: Record, text: str) -> bool:
     """True when `text` is the device of a coil printed alone before it (002:319-326)."""
     return (last.mnemonic in COILS and not last.operand and last.modifier != "TR"
             and _DEVICE_SPLIT_RE.match(text) is not None)
+
+
+def _column(raw: str, text: str) -> int:
+    """1-based column of `text` in the line (1 when it is not found as written)."""
+    at = raw.find(text.split()[0]) if text.split() else -1
+    if step := _STEP_RE.match(raw):
+        found = raw.find(text.split()[0], step.start(3)) if text.split() else -1
+        at = found if found >= 0 else at
+    return at + 1 if at >= 0 else 1

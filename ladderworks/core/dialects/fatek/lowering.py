@@ -51,7 +51,7 @@ class ProgramLowering(StackLowering):
     def emit_box(self, record: Record, spec: InstructionSpec, params: tuple[ParamValue, ...],
                  comment: str = "") -> None:
         self.current.instructions.append(
-            Instruction(spec.name, None, params, comment, line=record.line))
+            Instruction(spec.name, None, params, comment, line=record.line, column=record.column))
         self.current.records.append(record)
 
     def inputs(self, record: Record, count: int) -> None:
@@ -143,7 +143,7 @@ class ProgramLowering(StackLowering):
                 if value is None or not 0 <= value <= 255:
                     raise BranchError(Diagnostic("fatek-operand", {"text": line.text,
                                                                    "param": param.name},
-                                                 line.line))
+                                                 line.line, line.column))
                 params.append(value)
             else:
                 line = next(operands, None)
@@ -151,17 +151,17 @@ class ProgramLowering(StackLowering):
                     raise _fail(record, "fatek-missing-operand", name=_name(record),
                                 param=param.name)
                 params.append(operand(line.text, line.line, param.name,
-                                      param.kind is ParamKind.VALUE))
+                                      param.kind is ParamKind.VALUE, line.column))
         extra = next(operands, None)
         if extra is not None:
             raise BranchError(Diagnostic("fatek-extra-operand", {"text": extra.text,
                                                                  "name": _name(record)},
-                                         extra.line))
+                                         extra.line, extra.column))
         return tuple(params)
 
     def not_simulated(self, record: Record) -> None:
         self.warnings.append(Diagnostic("fatek-not-simulated", {"name": _name(record)},
-                                        record.line, severity=Severity.WARNING))
+                                        record.line, record.column, Severity.WARNING))
 
     def function(self, record: Record) -> None:
         """FUN n with its operand lines."""
@@ -268,18 +268,19 @@ def _name(record: Record) -> str:
     return record.mnemonic
 
 
-def operand(text: str, line: int, param: str, constant: bool) -> ParamValue:
+def operand(text: str, line: int, param: str, constant: bool, column: int = 1) -> ParamValue:
     """A box operand: a constant (where one may be) or a register's byte address."""
     value = parse_constant(text)
     if value is not None:
         if not constant:
-            raise BranchError(Diagnostic("fatek-operand", {"text": text, "param": param}, line))
+            raise BranchError(Diagnostic("fatek-operand", {"text": text, "param": param}, line,
+                                         column))
         return value
     try:
         device = parse_device(text, bit=False)
     except DeviceError:
         raise BranchError(Diagnostic("fatek-operand", {"text": text, "param": param},
-                                     line)) from None
+                                     line, column)) from None
     return word_address(device)[0]
 
 

@@ -39,7 +39,7 @@ def test_check_reports_file_line_col(tmp_path: Path, capsys: pytest.CaptureFixtu
     assert main(["check", str(path)]) == 1
     out = capsys.readouterr().out.splitlines()
     assert [line.split(": ")[0] for line in out] == [
-        f"{path}:2:0", f"{path}:4:0", f"{path}:6:0"]
+        f"{path}:2:9", f"{path}:4:9", f"{path}:6:9"]
     assert "fatek-output-on-rail" in out[0] and "fatek-unknown-fun" in out[1]
     assert "fatek-missing-operand" in out[2]
 
