@@ -981,87 +981,122 @@
         <translation>{name} is a {dialect} instruction the simulator does not run</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
+        <source>subroutine without its SRET (before the next pointer or END)</source>
+        <translation>subroutine without its SRET (before the next pointer or END)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <source>SRET without a subroutine pointer (P n after FEND) before it</source>
+        <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
+        <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
+        <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <source>no pointer P{label} where this jump can reach it</source>
+        <translation>no pointer P{label} where this jump can reach it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="255"/>
+        <source>no subroutine P{program} after FEND for this CALL</source>
+        <translation>no subroutine P{program} after FEND for this CALL</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <source>{name} without a logic result before it (start with LD)</source>
+        <translation>{name} without a logic result before it (start with LD)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <source>this pointer P number is used twice</source>
+        <translation>this pointer P number is used twice</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="255"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="286"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>

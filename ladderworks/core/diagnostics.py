@@ -244,6 +244,19 @@ MESSAGES: dict[str, str] = {
     "dialect-constant": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a K or H constant"),
     "dialect-not-simulated": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} is a {dialect} instruction the simulator does not run"),
+    "dvp-missing-sret": QT_TRANSLATE_NOOP(
+        "Diagnostic", "subroutine without its SRET (before the next pointer or END)"),
+    "dvp-sret-alone": QT_TRANSLATE_NOOP(
+        "Diagnostic", "SRET without a subroutine pointer (P n after FEND) before it"),
+    "dvp-outside-subroutine": QT_TRANSLATE_NOOP(
+        "Diagnostic", "after FEND only subroutines (P n ... SRET) and END may follow"),
+    "dvp-pointer-missing": QT_TRANSLATE_NOOP(
+        "Diagnostic", "no pointer P{label} where this jump can reach it"),
+    "dvp-call-missing": QT_TRANSLATE_NOOP(
+        "Diagnostic", "no subroutine P{program} after FEND for this CALL"),
+    "dvp-no-logic": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} without a logic result before it (start with LD)"),
+    "dvp-pointer-twice": QT_TRANSLATE_NOOP("Diagnostic", "this pointer P number is used twice"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),

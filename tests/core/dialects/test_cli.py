@@ -45,7 +45,7 @@ def test_check_runs_the_compiler_checks_in_delta_spelling(tmp_path: Path, capsys
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].startswith(f"{path}:4:1: coil-twice ") and "Y0" in lines[0]
     assert "Y0.0" not in lines[0]
-    assert lines[1].startswith(f"{path}:6:1: call-missing ")
+    assert lines[1] == f"{path}:6:1: dvp-call-missing no subroutine P5 after FEND for this CALL"
     assert len(lines) == 2
 
 

@@ -63,4 +63,9 @@ DIALECT = Dialect(
     name=NAME, title="Delta DVP", title_tr="Delta DVP", code=2, devices=DEVICES, rows=ROWS,
     sniff=score, reader="ladderworks.core.dialects.delta.reader:read",
     printer="ladderworks.core.dialects.delta.printer:network_lines", relays=relays,
-    period_ms=10, extensions=(".dvp", ".il", ".txt"))
+    period_ms=10, extensions=(".dvp", ".il", ".txt"),
+    namer="ladderworks.core.dialects.delta.printer:mnemonic_of",
+    codes={"sp-without-spe": "dvp-missing-sret", "spe-without-sp": "dvp-sret-alone",
+           "outside-subprogram": "dvp-outside-subroutine", "label-missing": "dvp-pointer-missing",
+           "call-missing": "dvp-call-missing", "no-logic": "dvp-no-logic",
+           "sp-twice": "dvp-pointer-twice", "label-twice": "dvp-pointer-twice"})

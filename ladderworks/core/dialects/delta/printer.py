@@ -8,6 +8,11 @@ from ladderworks.core.il.program import Instruction, LabelRef, Network, ProgramR
 from ladderworks.core.instructions import Combine, Flow, InstructionSpec, Kind, ParamKind, Write
 
 
+def mnemonic_of(spec: InstructionSpec) -> str:
+    """Delta's mnemonic of a row of the table (`LD` for RD, `TMR` for DVP.TMR)."""
+    return _basic_name(spec) if spec.kind is Kind.BASIC and not spec.dialect else spec.text_name
+
+
 def _basic_name(spec: InstructionSpec) -> str:
     """Delta's mnemonic of a basic row of the table, read from its fields."""
     if spec.write is Write.SET:
