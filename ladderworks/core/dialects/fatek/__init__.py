@@ -33,4 +33,5 @@ DIALECT = Dialect(
     name=NAME, title="Fatek FBs", title_tr="Fatek FBs", code=3, devices=DEVICES, rows=ROWS,
     sniff=score, reader="ladderworks.core.dialects.fatek.reader:read",
     printer="ladderworks.core.dialects.fatek.printer:network_lines", relays=relays,
-    period_ms=10, extensions=(".lst", ".fbs"))
+    period_ms=10, extensions=(".lst", ".fbs"),
+    namer="ladderworks.core.dialects.fatek.printer:mnemonic_of")

@@ -8,7 +8,7 @@ from ladderworks.core.dialects.fatek.branches import ALWAYS_OFF, ALWAYS_ON
 from ladderworks.core.dialects.fatek.devices import FO_AREA, device_at, word_device_at
 from ladderworks.core.dialects.fatek.rows import SUB_BASE
 from ladderworks.core.il.program import Instruction, Network
-from ladderworks.core.instructions import Combine, Kind, Write
+from ladderworks.core.instructions import Combine, InstructionSpec, Kind, Write
 
 WIDTH = 9  # the mnemonic column, as WinProladder prints it
 _CONTACT_BOXES = {"FBS.TU": "TU", "FBS.TD": "TD"}
@@ -25,6 +25,24 @@ def device_text(address: object) -> str:
         device = device_at(address) if address.bit is not None else word_device_at(address)
         return str(device) if device is not None else str(address)
     return str(address)
+
+
+def mnemonic_of(spec: InstructionSpec) -> str:
+    """A row's name as a Fatek listing writes it: ORG / LD for RD / RD.STK, ANDLD, ORLD, OUT,
+    OUTS, OUTR, FUN n NAME for a box (the compiler's messages name instructions so)."""
+    if spec.kind is Kind.BASIC and not spec.dialect:
+        if spec.write is not Write.NONE:
+            name = {Write.SET: "OUTS", Write.RESET: "OUTR"}.get(spec.write, "OUT")
+            return name + (" NOT" if spec.negated and spec.write is Write.OUT else "")
+        if not spec.operand:
+            return "ANDLD" if spec.combine is Combine.AND else "ORLD"
+        name = {Combine.READ: "LD" if spec.pushes else "ORG", Combine.AND: "AND",
+                Combine.OR: "OR"}[spec.combine]
+        return name + (" NOT" if spec.negated else "")
+    sub = spec.sub or 0
+    if spec.dialect and SUB_BASE <= sub < SUB_BASE + 1000:
+        return f"FUN {sub - SUB_BASE} {spec.text_name}"
+    return spec.text_name
 
 
 def _line(mnemonic: str, operand: str = "") -> str:
