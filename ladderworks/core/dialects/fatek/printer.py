@@ -77,6 +77,9 @@ def _box_lines(ins: Instruction) -> list[str]:
     for param in spec.params:
         if param.name in ("mode", "fo", "fun"):
             continue
+        if param.name == "counter":
+            lines.append(f"    CV: C{values['counter']}")
+            continue
         lines.append(f"    {param.name:<2}: {device_text(values[param.name])}")
     return lines
 
