@@ -173,6 +173,8 @@ def read_listing(lines: list[str], first_line: int = 1) -> tuple[Listing, list[D
             step = int(step_match.group(1))
             unit = step_match.group(2).upper()
             text = _strip_note(step_match.group(3))
+            if not text:  # a step number alone (or with a margin note)
+                continue
         if records and _continues(records[-1], text):
             records[-1].operand = _device(text.split())
             continue
