@@ -7,6 +7,9 @@ form, 32-bit operands. A box that does not run leaves its destination and its FO
 
 from __future__ import annotations
 
+import operator
+from collections.abc import Callable
+
 from ladderworks.core.address import Address
 from ladderworks.core.plc.functions import FunctionContext, FunctionImpl, function
 from ladderworks.core.plc.functions.fatek_timing import operand_value, write_outputs
@@ -132,15 +135,19 @@ def fatek_compare(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
 COMPARISONS = {170: "=", 171: ">", 172: "<", 173: "<>", 174: ">=", 175: "<="}
 
 
-def compare(operator: str, a: int, b: int) -> bool:
-    """`a operator b` for the six comparison contacts."""
-    return {"=": a == b, ">": a > b, "<": a < b, "<>": a != b, ">=": a >= b,
-            "<=": a <= b}[operator]
+_OPERATORS: dict[str, Callable[[int, int], bool]] = {
+    "=": operator.eq, ">": operator.gt, "<": operator.lt, "<>": operator.ne, ">=": operator.ge,
+    "<=": operator.le}
+
+
+def compare(symbol: str, a: int, b: int) -> bool:
+    """`a symbol b` for the six comparison contacts."""
+    return _OPERATORS[symbol](a, b)
 
 
 def _contact(fun: int) -> FunctionImpl:
     """FUN 170-175 as a contact: passes while Sa op Sb, in series with IN."""
-    operator = COMPARISONS[fun]
+    test = _OPERATORS[COMPARISONS[fun]]
 
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
@@ -148,7 +155,7 @@ def _contact(fun: int) -> FunctionImpl:
         size = width(mode)
         a = operand_value(ctx.memory, sa, size)
         b = operand_value(ctx.memory, sb, size)
-        return bool(inputs[0]) and compare(operator, a, b)
+        return bool(inputs[0]) and test(a, b)
 
     return impl
 

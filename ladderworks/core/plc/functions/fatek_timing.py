@@ -35,11 +35,24 @@ def operand_value(memory: Memory, value: object, width: int = 2) -> int:
 def write_outputs(memory: Memory, fo: object, *bits: bool) -> None:
     """Store a box's FO0, FO1 … in its output byte."""
     if isinstance(fo, Address):
-        memory.write(fo, sum(1 << n for n, bit in enumerate(bits) if bit), 1)
+        value = 0
+        for n, bit in enumerate(bits):
+            if bit:
+                value |= 1 << n
+        memory.areas[fo.area][fo.byte] = value
 
 
 def _set(memory: Memory, device: Device, value: bool) -> None:
     memory.set_bit(bit_address(device), value)
+
+
+def _places(state: dict, kind: str, number: int) -> tuple[Device, Address, int, Address]:
+    """The device, its value's address and width, its contact: found once per call site."""
+    places = state.get("places")
+    if places is None:
+        device = Device(kind, number)
+        places = state["places"] = (device, *word_address(device), bit_address(device))
+    return places
 
 
 @function("FBS.TMR")
@@ -47,13 +60,12 @@ def fatek_timer(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                 params: tuple) -> bool:
     """Timer Tn with PV a constant or a register (001:449-461)."""
     number, preset, fo = params
-    device = Device("T", number)
-    cv_at, _ = word_address(device)
+    _device, cv_at, _width, contact = _places(state, "T", number)
     memory = ctx.memory
     if not inputs[0]:
         state["ms"] = None
         memory.write(cv_at, 0, 2)
-        _set(memory, device, False)
+        memory.set_bit(contact, False)
         write_outputs(memory, fo, False)
         return False
     counting = executed_once_this_scan(ctx, state)
@@ -63,7 +75,7 @@ def fatek_timer(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
     value = min(elapsed // timer_base_ms(number), MAX16)
     memory.write(cv_at, value, 2)
     up = value >= operand_value(memory, preset)
-    _set(memory, device, up)
+    memory.set_bit(contact, up)
     write_outputs(memory, fo, up)
     return up
 
@@ -83,8 +95,7 @@ def fatek_counter(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
     """Up counter Cn: inputs CK (top) and CLR."""
     number, preset, fo = params
     ck, clr = inputs
-    device = Device("C", number)
-    cv_at, width = word_address(device)
+    device, cv_at, width, _contact = _places(state, "C", number)
     memory = ctx.memory
     _counter_start(memory, state, device, cv_at, width)
     rising = ck and not state.get("ck", False)
@@ -111,8 +122,7 @@ def fatek_up_down_counter(ctx: FunctionContext, state: dict, inputs: tuple[bool,
     """FUN 7 UDCTR: inputs CK, U/D, CLR; FO0 only while CV = PV; the value wraps."""
     number, preset, fo = params
     ck, up_down, clr = inputs
-    device = Device("C", number)
-    cv_at, width = word_address(device)
+    device, cv_at, width, _contact = _places(state, "C", number)
     memory = ctx.memory
     _counter_start(memory, state, device, cv_at, width)
     rising = ck and not state.get("ck", False)
