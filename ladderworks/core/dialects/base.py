@@ -46,6 +46,7 @@ class Dialect:
     period_ms: int = 10  # its usual scan period (the CLI's and the session's default)
     extensions: tuple[str, ...] = ()  # file name endings its files use (".dvp")
     namer: str = ""  # "module:function": a row's name in the dialect's text (LD for RD)
+    spelling: str = ""  # "module:function" making its dialects.spelling.Spelling (display)
     # the compiler checks' codes said in the dialect's words (sp-without-spe: its SRET)
     codes: Mapping[str, str] = field(default_factory=dict)
 
@@ -79,6 +80,11 @@ class Dialect:
         if code == diagnostic.code and args is diagnostic.args:
             return diagnostic
         return replace(diagnostic, code=code, args=args)
+
+    @staticmethod
+    def function(path: str) -> Callable[..., object]:
+        """The function `module:name` one of the dialect's paths names."""
+        return _function(path)
 
     def format_address(self, address: Address) -> str:
         """An address in this dialect's spelling (the PMC's when no device lives there)."""

@@ -187,6 +187,14 @@ class PlcRun:
         """The loaded program's dialect ("seed" before a load)."""
         return dialect_of(self.program if self.program is not None else self.binary)
 
+    @property
+    def program_dialect(self) -> str:
+        """The loaded program's own dialect, as Program.dialect says it ("delta" for a Delta
+        program; `dialect` is its timer-table layout): how its addresses are spelled."""
+        name = getattr(self.program if self.program is not None else self.binary, "dialect",
+                       "seed")
+        return name if isinstance(name, str) else "seed"
+
     # -- running -------------------------------------------------------------------------
 
     @property

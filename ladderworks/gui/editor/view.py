@@ -20,6 +20,7 @@ from PySide6.QtWidgets import QGraphicsRectItem, QGraphicsScene, QGraphicsView, 
 
 from ladderworks.core.address import AddressError
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Program
 from ladderworks.core.ladder import LadderNetwork, Selection
 from ladderworks.core.symbols import resolve
@@ -198,6 +199,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
 
     def _make_item(self, index: int) -> NetworkItem:
         item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
+        item.spelling = spelling(self.model.dialect)  # a Delta program: Delta's spelling
         item.is_new = index == len(self.networks) - 1 and self.networks[index].is_empty()
         item.setPos(0, self.layout_.tops[index])
         self._scene.addItem(item)
@@ -218,7 +220,10 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         super().paintEvent(event)
 
     def describe_address(self, address: object) -> tuple[str, str] | None:
-        """(symbol, comment) of the program, else (signal name, description) of the manual."""
+        """(symbol, comment) of the program, else (signal name, description) of the manual
+        (a Delta program's addresses are no FANUC signals: none)."""
+        if spelling(self.model.dialect).dialect:
+            return None
         return name_and_text(address, self.model.symbols)
 
     def commented(self, network: LadderNetwork) -> bool:

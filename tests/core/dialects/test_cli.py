@@ -63,3 +63,18 @@ def test_every_example_passes_its_scenario(program: Path, capsys) -> None:
     scenario = program.with_suffix(".scenario.csv")
     assert main(["test", str(program), str(scenario)]) == 0, capsys.readouterr()
     assert "1 passed, 0 failed" in capsys.readouterr().out
+
+
+def test_ladder_art_in_delta_spelling(capsys) -> None:
+    assert main(["ladder", str(EXAMPLES / "compare_contacts.txt")]) == 0
+    out = capsys.readouterr().out
+    assert "|    X0 " in out and "T0 K100" in out and "+------ LD= ------+" in out
+    assert "LD< C1 C2" in out  # a rung with no ladder picture: its Delta listing
+    assert "X0.0" not in out and "RD" not in out
+
+
+def test_xref_in_delta_spelling(capsys) -> None:
+    assert main(["xref", str(EXAMPLES / "motor_flip_flop.txt"), "D500", "Y0"]) == 0
+    rows = capsys.readouterr().out.splitlines()[1:]
+    assert [row.split()[0] for row in rows] == ["D500", "D500", "D500", "Y0"]
+    assert [row.split()[6] for row in rows] == ["MOV", "MOV", "TMR", "OUT"]

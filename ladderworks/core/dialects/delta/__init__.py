@@ -65,6 +65,7 @@ DIALECT = Dialect(
     printer="ladderworks.core.dialects.delta.printer:network_lines", relays=relays,
     period_ms=10, extensions=(".dvp", ".il", ".txt"),
     namer="ladderworks.core.dialects.delta.printer:mnemonic_of",
+    spelling="ladderworks.core.dialects.delta.printer:spelling",
     codes={"sp-without-spe": "dvp-missing-sret", "spe-without-sp": "dvp-sret-alone",
            "outside-subprogram": "dvp-outside-subroutine", "label-missing": "dvp-pointer-missing",
            "call-missing": "dvp-call-missing", "no-logic": "dvp-no-logic",
