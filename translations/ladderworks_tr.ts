@@ -145,77 +145,77 @@
 <context>
     <name>BitDisplay</name>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="258"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="272"/>
         <source>Forced to {0}</source>
         <translation>{0} değerine zorlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="261"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="275"/>
         <source>Click: force to the other value; right-click: force menu</source>
         <translation>Tıklama: diğer değere zorla; sağ tuş: zorlama menüsü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="279"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="293"/>
         <source>Load a program to force inputs</source>
         <translation>Girişleri zorlamak için bir program yükleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="296"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="310"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="315"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="306"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="320"/>
         <source>Release the force</source>
         <translation>Zorlamayı kaldır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="320"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="334"/>
         <source>Live</source>
         <translation>Canlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="320"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="334"/>
         <source>Stopped</source>
         <translation>Durduruldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="327"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="341"/>
         <source>PLC bit display</source>
         <translation>PLC BIT GÖSTERİMİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="329"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="343"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="330"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="344"/>
         <source>Byte</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="331"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="345"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="346"/>
         <source>Dec</source>
         <translation>Ondalık</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="334"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="348"/>
         <source>e.g. X12</source>
         <translation>örn. X12</translation>
     </message>
@@ -1770,7 +1770,7 @@
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
         <location filename="../ladderworks/gui/main_window.py" line="255"/>
         <location filename="../ladderworks/gui/main_window.py" line="402"/>
         <source>Untitled</source>
@@ -1800,7 +1800,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="150"/>
         <location filename="../ladderworks/gui/file_actions.py" line="168"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
@@ -1825,88 +1825,88 @@
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="281"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="330"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
+        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="335"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="281"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="330"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="387"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="335"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="459"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="460"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="313"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="314"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;All files (*)</source>
-        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Tüm dosyalar (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="318"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="319"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="343"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="352"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="370"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="387"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
@@ -2397,103 +2397,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="270"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="271"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="272"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="273"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="274"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="275"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="273"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="276"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="276"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="279"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="277"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="280"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Uzaklaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="278"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="281"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Yakınlaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="280"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="283"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="293"/>
         <source>{0} %</source>
         <translation>%{0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="354"/>
         <location filename="../ladderworks/gui/docks/online.py" line="142"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="357"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="360"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="359"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="362"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="364"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="402"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="405"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="446"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="449"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="456"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="459"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="465"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="468"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
@@ -2832,224 +2832,224 @@
 <context>
     <name>ProgramProperties</name>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="29"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
         <source>Machine-tool builder</source>
         <translation>Takım tezgâhı üreticisi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="30"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
         <source>Machine-tool name</source>
         <translation>Takım tezgâhı adı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
         <source>PMC &amp; NC type</source>
         <translation>PMC ve NC tipi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
         <source>Program number</source>
         <translation>Program numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
         <source>Edition</source>
         <translation>Sürüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
         <source>Drawing number</source>
         <translation>Çizim numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
         <source>Date</source>
         <translation>Tarih</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="38"/>
         <source>Designed by</source>
         <translation>Tasarlayan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="39"/>
         <source>ROM written by</source>
         <translation>ROM&apos;a yazan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="38"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="40"/>
         <source>Remarks</source>
         <translation>Notlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
         <source>FANUC LADDER-III export</source>
         <translation>FANUC LADDER-III dışa aktarımı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="61"/>
         <source>LadderWorks (seed manual)</source>
         <translation>LadderWorks (temel kılavuz)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
         <source>yes</source>
         <translation>evet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
         <source>no</source>
         <translation>hayır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="63"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
         <source>File</source>
         <translation>Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="64"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
         <source>(not saved)</source>
         <translation>(kaydedilmedi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
         <source>Dialect</source>
         <translation>Lehçe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="66"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="71"/>
         <source>Encoding</source>
         <translation>Kodlama</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="67"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="72"/>
         <source>Byte order mark</source>
         <translation>Bayt sırası işareti (BOM)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="73"/>
         <source>Line ends</source>
         <translation>Satır sonları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="74"/>
         <source>Framed in %@A … %@E</source>
         <translation>%@A … %@E çerçeveli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="75"/>
         <source>Networks</source>
         <translation>Devreler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="71"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="76"/>
         <source>Steps</source>
         <translation>Adımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="73"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="78"/>
         <source>Symbols (%@2)</source>
         <translation>Semboller (%@2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="75"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
         <source>Messages (%@4)</source>
         <translation>Mesajlar (%@4)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="136"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="141"/>
         <source>Program properties</source>
         <translation>Program özellikleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="144"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
         <source>General</source>
         <translation>Genel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="145"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
         <source>Property</source>
         <translation>Özellik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="146"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="151"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="148"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
         <source>Title (%@1)</source>
         <translation>Başlık (%@1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="154"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
         <source>Item</source>
         <translation>Öğe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="154"/>
         <source>Meaning</source>
         <translation>Anlamı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="155"/>
         <source>Text</source>
         <translation>Metin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="152"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
         <source>System parameters (%@0)</source>
         <translation>Sistem parametreleri (%@0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="155"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="160"/>
         <source>I/O modules (%@5)</source>
         <translation>G/Ç modülleri (%@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="156"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="161"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="156"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="161"/>
         <source>Group</source>
         <translation>Grup</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
         <source>Base</source>
         <translation>Taban</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
         <source>Slot</source>
         <translation>Yuva</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
         <source>Module</source>
         <translation>Modül</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="161"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="166"/>
         <source>Sections</source>
         <translation>Bölümler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="167"/>
         <source>Header</source>
         <translation>Başlık satırı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="167"/>
         <source>Lines</source>
         <translation>Satırlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="168"/>
         <source>First line</source>
         <translation>İlk satır</translation>
     </message>
@@ -3203,112 +3203,112 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/scenario.py" line="91"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="193"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Senaryo dosyaları (*.csv);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="101"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="102"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="119"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="148"/>
         <source>passed</source>
         <translation>geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="149"/>
         <source>FAILED</source>
         <translation>BAŞARISIZ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="157"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: {1} denetimin tümü geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="160"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {2} denetimden {1} tanesi başarısız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="192"/>
         <source>Save the recorded scenario</source>
         <translation>Kaydedilen senaryoyu sakla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="198"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="200"/>
         <source>recorded in LadderWorks</source>
         <translation>LadderWorks ile kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="203"/>
         <source>Recording inputs and forces...</source>
         <translation>Girişler ve zorlamalar kaydediliyor...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="210"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="212"/>
         <source>Recorded {0} changes</source>
         <translation>{0} değişiklik kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="223"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="234"/>
         <source>PLC scenario</source>
         <translation>PLC senaryosu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="233"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="235"/>
         <source>Run scenario...</source>
         <translation>Senaryo çalıştır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="234"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="236"/>
         <source>Record scenario</source>
         <translation>Senaryo kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="238"/>
         <source>Line</source>
         <translation>Satır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="238"/>
         <source>Check</source>
         <translation>Denetim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="239"/>
         <source>Expected</source>
         <translation>Beklenen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="239"/>
         <source>Got</source>
         <translation>Okunan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="238"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="240"/>
         <source>Time (ms)</source>
         <translation>Zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="238"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="240"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
@@ -3379,142 +3379,142 @@
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="178"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="190"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="202"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="215"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="347"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="348"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="362"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="365"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="373"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="366"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="374"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="372"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="381"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="382"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="383"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="392"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="393"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="394"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="431"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="432"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="433"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="434"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="435"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="436"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="438"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="442"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="442"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="443"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="447"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="448"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="451"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="453"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>

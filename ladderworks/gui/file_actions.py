@@ -210,10 +210,11 @@ class FileActions(_Window):
             translate(
                 "MainWindow",
                 "Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT"
-                " *.dvp *.DVP *.il *.IL)"
+                " *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS)"
                 ";;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC)"
                 ";;LADDER-III exports (*.txt *.TXT *.mnc *.MNC)"
                 ";;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL)"
+                ";;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT)"
                 ";;All files (*)"))
         if name:
             self.load(name)

@@ -11,6 +11,7 @@ from PySide6.QtWidgets import QMenu
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.dialects.fatek import DEVICES
+from ladderworks.core.ladder.model import Coil, Contact
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.translation import UiLanguage
 from tests.core.dialects.fatek.test_ascii_format import REPORT
@@ -65,3 +66,18 @@ def test_ascii_file_problems_are_shown_under_the_text(window: MainWindow,
     assert window.load(path)
     summary = window.plc_docks.ascii_output.summary.text()
     assert "p.lst.ascii, line 2:" in summary and "never closed" in summary
+
+
+def test_the_console_draws_a_fatek_program_in_fatek_spelling(window: MainWindow) -> None:
+    assert window.load(EXAMPLES / "conveyor.lst")
+    assert window.model.dialect == "fatek"
+    networks = window.model.networks
+    contact = networks[0].cells[(0, 0)]
+    assert isinstance(contact, Contact)
+    assert contact.address == DEVICES.bit("X0")
+    window.editor.make_visible_items()
+    items = [item for _index, item in window.editor.network_items.made()]
+    first = min(items, key=lambda item: item.number)
+    assert first.label_lines(contact)[0] == "X0"  # Fatek's spelling, not X0.0
+    coil = next(cell for cell in networks[0].cells.values() if isinstance(cell, Coil))
+    assert first.label_lines(coil)[0] == "Y0"

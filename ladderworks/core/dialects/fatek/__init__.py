@@ -34,4 +34,5 @@ DIALECT = Dialect(
     sniff=score, reader="ladderworks.core.dialects.fatek.reader:read",
     printer="ladderworks.core.dialects.fatek.printer:network_lines", relays=relays,
     period_ms=10, extensions=(".lst", ".fbs"),
-    namer="ladderworks.core.dialects.fatek.printer:mnemonic_of")
+    namer="ladderworks.core.dialects.fatek.printer:mnemonic_of",
+    spelling="ladderworks.core.dialects.fatek.printer:spelling")

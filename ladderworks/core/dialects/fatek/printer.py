@@ -7,6 +7,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.dialects.fatek.branches import ALWAYS_OFF, ALWAYS_ON
 from ladderworks.core.dialects.fatek.devices import FO_AREA, device_at, word_device_at
 from ladderworks.core.dialects.fatek.rows import SUB_BASE
+from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, Network
 from ladderworks.core.instructions import Combine, InstructionSpec, Kind, Write
 
@@ -159,3 +160,56 @@ def network_lines(network: Network, first: bool) -> list[str]:
         lines, index = instruction_lines(instructions, index, index == 0)
         out.extend(lines)
     return out
+
+
+_HIDDEN = ("mode", "fo", "fun")
+
+
+def params_text(spec: InstructionSpec, values: tuple) -> list[str]:
+    """A box's parameters as its drawing shows them: `T50`, `30`, `R0` (its forms and FO byte
+    are not operands)."""
+    texts: list[str] = []
+    named = dict(zip((p.name for p in spec.params), values, strict=False))
+    for param in spec.params:
+        if param.name in _HIDDEN or param.name not in named:
+            continue
+        value = named[param.name]
+        if param.name in ("timer", "counter"):
+            texts.append(f"{'T' if param.name == 'timer' else 'C'}{value}")
+        elif param.name == "kind":
+            texts.append("T" if value == 0 else "C")
+        elif param.name == "number" and texts and texts[-1] in ("T", "C"):
+            texts[-1] += str(value)
+        else:
+            texts.append(device_text(value))
+    return texts
+
+
+def instruction_text(instruction: Instruction) -> str:
+    """One instruction on one line, as a listing in the console shows it: `ORG X0`,
+    `FUN 11 (+) Sa: R0 Sb: 7 D: R1`."""
+    spec = instruction.spec
+    name = mnemonic_of(spec)
+    if spec.kind is Kind.BASIC:
+        operand = "" if instruction.operand is None else " " + device_text(instruction.operand)
+        return (name + operand).strip()
+    if spec.cnc:
+        return f"{name} {instruction.comment}".strip()
+    texts = params_text(spec, instruction.params)
+    labels = [p.name for p in spec.params if p.name not in _HIDDEN]
+    if name.startswith("FUN"):
+        return " ".join([name, *(f"{label}: {text}" for label, text in
+                                 zip(labels, texts, strict=False))])
+    return " ".join([name, *texts])
+
+
+def spelling() -> Spelling:
+    """Fatek's display texts (core/dialects/spelling.py)."""
+    from ladderworks.core.dialects.fatek import DIALECT
+
+    def address_text(address: Address) -> str:
+        if address in (ALWAYS_ON, ALWAYS_OFF):
+            return "SHORT" if address == ALWAYS_ON else "OPEN"
+        return DIALECT.format_address(address)
+
+    return Spelling(DIALECT.name, address_text, params_text, instruction_text, mnemonic_of)
