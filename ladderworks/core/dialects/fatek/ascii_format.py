@@ -83,12 +83,15 @@ class _Reader:
         self.unclosed = False  # a quote runs to the end: nothing after it can be read
 
     def line_at(self, pos: int) -> int:
+        """The line of position `pos`."""
         return self.first_line + self.text.count("\n", 0, pos)
 
     def column_at(self, pos: int) -> int:
+        """The 1-based column of position `pos`."""
         return pos - (self.text.rfind("\n", 0, pos) + 1) + 1
 
     def error(self, pos: int, code: str, **args: object) -> None:
+        """Report `code` at position `pos`."""
         self.diagnostics.append(Diagnostic(code, dict(args), self.line_at(pos),
                                            self.column_at(pos)))
 

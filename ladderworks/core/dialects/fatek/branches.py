@@ -45,7 +45,8 @@ class BranchError(Exception):
         self.diagnostic = diagnostic
 
 
-def _fail(record: Record, code: str, **args: object) -> BranchError:
+def refused(record: Record, code: str, **args: object) -> BranchError:
+    """The error of a record the rules refuse: `code` at its line and column."""
     return BranchError(Diagnostic(code, dict(args), record.line, record.column))
 
 
@@ -55,28 +56,30 @@ def contact_address(record: Record) -> Address:
         return ALWAYS_OFF
     if record.operand == "SHORT":
         return ALWAYS_ON
-    device = _bit_device(record, CONTACT_DEVICES)
+    device = bit_device(record, CONTACT_DEVICES)
     return bit_address(device)
 
 
-def _bit_device(record: Record, kinds: tuple[str, ...]) -> Device:
+def bit_device(record: Record, kinds: tuple[str, ...]) -> Device:
+    """The record's bit device, which must be one of `kinds`."""
     if not record.operand:
-        raise _fail(record, "fatek-missing-device", name=_spelling(record))
+        raise refused(record, "fatek-missing-device", name=spelling_of(record))
     try:
         device = parse_device(record.operand, bit=True)
     except DeviceError as error:
         if error.code == "fatek-device-range":
-            raise _fail(record, "fatek-device-range", text=error.text,
+            raise refused(record, "fatek-device-range", text=error.text,
                         range=error.detail) from None
-        raise _fail(record, "fatek-device-kind", text=record.operand, name=_spelling(record),
+        raise refused(record, "fatek-device-kind", text=record.operand, name=spelling_of(record),
                     kinds=", ".join(kinds)) from None
     if device.kind not in kinds:
-        raise _fail(record, "fatek-device-kind", text=record.operand, name=_spelling(record),
+        raise refused(record, "fatek-device-kind", text=record.operand, name=spelling_of(record),
                     kinds=", ".join(kinds))
     return device
 
 
-def _spelling(record: Record) -> str:
+def spelling_of(record: Record) -> str:
+    """The record's mnemonic with its modifier, for a message (`OUT NOT`)."""
     return f"{record.mnemonic} {record.modifier}".strip()
 
 
@@ -95,16 +98,19 @@ class StackLowering:
 
     @property
     def current(self) -> Lowered:
+        """The engine network being made."""
         if not self.parts:
             self.parts.append(Lowered())
         return self.parts[-1]
 
     def emit(self, record: Record, name: str, operand: Address | None = None) -> None:
+        """Append a basic instruction made from `record`."""
         self.current.instructions.append(Instruction(name, operand, line=record.line,
                                                      column=record.column))
         self.current.records.append(record)
 
     def new_part(self) -> None:
+        """Start the next engine network (it goes on from the one before)."""
         self.parts.append(Lowered(continues=True))
 
     def contact(self, record: Record, address: Address) -> None:
@@ -127,14 +133,14 @@ class StackLowering:
                 self.depth += 1
         else:
             if not self.depth:
-                raise _fail(record, "fatek-no-input", name=kind)
+                raise refused(record, "fatek-no-input", name=kind)
             self.emit(record, kind + negated, address)
         self.after_output = False
 
     def stack(self, record: Record) -> None:
         """ANDLD / ORLD: the two top values joined."""
         if self.depth < 2:
-            raise _fail(record, "fatek-stack-empty", name=record.mnemonic)
+            raise refused(record, "fatek-stack-empty", name=record.mnemonic)
         self.emit(record, "AND.STK" if record.mnemonic == "ANDLD" else "OR.STK")
         self.depth -= 1
         self.after_output = False
@@ -143,9 +149,9 @@ class StackLowering:
         """OUT TRn: the point's value kept in TRn."""
         number = self.tr_number(record)
         if number in self.tr_points:
-            raise _fail(record, "fatek-tr-reused", number=number)
+            raise refused(record, "fatek-tr-reused", number=number)
         if len(self.tr_points) >= MAX_TR:
-            raise _fail(record, "fatek-tr-count", limit=MAX_TR)
+            raise refused(record, "fatek-tr-count", limit=MAX_TR)
         if not self.depth:
             self.emit(record, "RD", ALWAYS_ON)  # 002:465-485 starts at a rail TR point
             self.depth = 1
@@ -156,7 +162,7 @@ class StackLowering:
         """LD TRn: the point's value pushed (a new engine network after an output)."""
         number = self.tr_number(record)
         if number not in self.tr_points:
-            raise _fail(record, "fatek-tr-unset", number=number)
+            raise refused(record, "fatek-tr-unset", number=number)
         record_address = bit_address(Device("TR", number))
         if self.after_output or not self.depth:
             if self.depth:
@@ -169,21 +175,23 @@ class StackLowering:
         self.after_output = False
 
     def tr_number(self, record: Record) -> int:
+        """The number of the record's TR point (0-39)."""
         text = record.operand[2:]
         low, high = BIT_RANGES["TR"]
         if not text.isdigit() or not low <= int(text) <= high:
-            raise _fail(record, "fatek-device-range", text=record.operand or "TR",
+            raise refused(record, "fatek-device-range", text=record.operand or "TR",
                         range=f"TR{low}-TR{high}")
         return int(text)
 
     def coil(self, record: Record) -> None:
         """OUT / OUT NOT / OUT L / OUTS / OUTR: writes the result, which stays."""
         if not self.depth:
-            raise _fail(record, "fatek-output-on-rail", name=_spelling(record))
+            raise refused(record, "fatek-output-on-rail", name=spelling_of(record))
         if self.depth > 1:
-            raise _fail(record, "fatek-open-block", name=_spelling(record), count=self.depth - 1)
+            raise refused(record, "fatek-open-block", name=spelling_of(record),
+                          count=self.depth - 1)
         kinds = LATCH_DEVICES if record.modifier == "L" else COIL_DEVICES
-        device = _bit_device(record, kinds)
+        device = bit_device(record, kinds)
         name = {"OUTS": "SET", "OUTR": "RST"}.get(record.mnemonic, "WRT")
         if record.modifier == "NOT":
             name = "WRT.NOT"
@@ -237,7 +245,7 @@ def lower_branches(records: list[Record]) -> tuple[list[Lowered], list[Diagnosti
         try:
             for record in network:
                 if not lowering.take(record):
-                    raise _fail(record, "fatek-unknown-instruction", name=record.mnemonic)
+                    raise refused(record, "fatek-unknown-instruction", name=record.mnemonic)
         except BranchError as error:
             diagnostics.append(error.diagnostic)
             continue

@@ -14,8 +14,8 @@ from ladderworks.core.dialects.fatek.branches import (
     BranchError,
     Lowered,
     StackLowering,
-    _bit_device,
-    _fail,
+    bit_device,
+    refused,
     split_networks,
 )
 from ladderworks.core.dialects.fatek.devices import (
@@ -50,6 +50,7 @@ class ProgramLowering(StackLowering):
 
     def emit_box(self, record: Record, spec: InstructionSpec, params: tuple[ParamValue, ...],
                  comment: str = "") -> None:
+        """Append a box of row `spec` with its parameters (and comment)."""
         self.current.instructions.append(
             Instruction(spec.name, None, params, comment, line=record.line, column=record.column))
         self.current.records.append(record)
@@ -58,7 +59,7 @@ class ProgramLowering(StackLowering):
         """Bring the stack to the box's `count` control inputs: none before it is a box on the
         rail (EN always 1); an input not coded is 0 (docs/dialects.md)."""
         if self.depth > count:
-            raise _fail(record, "fatek-open-block", name=_name(record), count=self.depth - count)
+            raise refused(record, "fatek-open-block", name=_name(record), count=self.depth - count)
         if count and not self.depth:
             self.emit(record, "RD", ALWAYS_ON)
             self.depth = 1
@@ -67,19 +68,21 @@ class ProgramLowering(StackLowering):
             self.depth += 1
 
     def after_box(self, spec: InstructionSpec, fo: Address | None) -> None:
+        """After a box: its W1 (FO0) is the result, an output was made."""
         self.depth = 1 if spec.w1 else 0
         self.after_output = True
         self.fo = fo
         self.fresh_box = spec.w1
 
     def next_fo(self) -> Address:
+        """The FO byte of the next box of the program."""
         address = fo_address(self.boxes)
         self.boxes += 1
         return address
 
     def edge(self, record: Record) -> None:
         """ORG / LD / AND / OR with TU or TD: an edge box in series with what comes before."""
-        device = bit_address(_bit_device(record, EDGE_DEVICES))
+        device = bit_address(bit_device(record, EDGE_DEVICES))
         spec = ROW_OF_NAME["FBS.TU" if record.modifier == "TU" else "FBS.TD"]
         self.contact_box(record, spec, (device,))
 
@@ -99,11 +102,11 @@ class ProgramLowering(StackLowering):
             self.emit_box(record, spec, params)
         elif kind == "AND":
             if not self.depth:
-                raise _fail(record, "fatek-no-input", name=record.mnemonic)
+                raise refused(record, "fatek-no-input", name=record.mnemonic)
             self.emit_box(record, spec, params)
         else:
             if not self.depth:
-                raise _fail(record, "fatek-no-input", name=record.mnemonic)
+                raise refused(record, "fatek-no-input", name=record.mnemonic)
             self.emit(record, "RD.STK", ALWAYS_ON)
             self.emit_box(record, spec, params)
             self.emit(record, "OR.STK")
@@ -118,7 +121,7 @@ class ProgramLowering(StackLowering):
             self.contact_box(record, ROW_OF_NAME["FBS.EQ"], (0, 0, 1))  # 0 = 1: never passes
             return
         if spec is None or spec.inputs != ("IN",):
-            raise _fail(record, "fatek-unknown-fun", number=record.fun)
+            raise refused(record, "fatek-unknown-fun", number=record.fun)
         self.contact_box(record, spec, self.box_params(record, spec, None))
 
     def box_params(self, record: Record, spec: InstructionSpec, fo: Address | None
@@ -137,13 +140,13 @@ class ProgramLowering(StackLowering):
             elif param.name in ("counter", "timer"):  # FUN 7 UDCTR's `CV: C0`
                 line = next(operands, None)
                 if line is None:
-                    raise _fail(record, "fatek-missing-operand", name=_name(record),
+                    raise refused(record, "fatek-missing-operand", name=_name(record),
                                 param="CV")
                 params.append(_numbered(line, "C" if param.name == "counter" else "T"))
             elif param.name == "MD":
                 line = next(operands, None)
                 if line is None:
-                    raise _fail(record, "fatek-missing-operand", name=_name(record),
+                    raise refused(record, "fatek-missing-operand", name=_name(record),
                                 param=param.name)
                 value = parse_constant(line.text)
                 if value is None or not 0 <= value <= 255:
@@ -154,7 +157,7 @@ class ProgramLowering(StackLowering):
             else:
                 line = next(operands, None)
                 if line is None:
-                    raise _fail(record, "fatek-missing-operand", name=_name(record),
+                    raise refused(record, "fatek-missing-operand", name=_name(record),
                                 param=param.name)
                 params.append(operand(line.text, line.line, param.name,
                                       param.kind is ParamKind.VALUE, line.column))
@@ -166,6 +169,7 @@ class ProgramLowering(StackLowering):
         return tuple(params)
 
     def not_simulated(self, record: Record) -> None:
+        """The warning that the record's function is kept but not simulated."""
         self.warnings.append(Diagnostic("fatek-not-simulated", {"name": _name(record)},
                                         record.line, record.column, Severity.WARNING))
 
@@ -173,7 +177,7 @@ class ProgramLowering(StackLowering):
         """FUN n with its operand lines."""
         spec = BY_FUN.get(record.fun or -1)
         if spec is None or spec.inputs == ("IN",):
-            raise _fail(record, "fatek-unknown-fun", number=record.fun)
+            raise refused(record, "fatek-unknown-fun", number=record.fun)
         self.inputs(record, len(spec.inputs))
         fo = self.next_fo() if any(p.name == "fo" for p in spec.params) else None
         if spec.name in NOT_SIMULATED:
@@ -192,20 +196,20 @@ class ProgramLowering(StackLowering):
         except DeviceError:
             device = Device("", -1)
         if device.kind != kind:
-            raise _fail(record, "fatek-device-kind", text=record.operand or "?",
+            raise refused(record, "fatek-device-kind", text=record.operand or "?",
                         name=record.mnemonic, kinds=kind)
         args = list(record.args)
         if args and _BASE_RE.match(args[0]):
             base = round(float(_BASE_RE.match(args[0]).group(1)) * 1000)  # type: ignore[union-attr]
             if kind != "T" or base != timer_base_ms(device.number):
-                raise _fail(record, "fatek-timer-base", text=args[0], name=str(device),
+                raise refused(record, "fatek-timer-base", text=args[0], name=str(device),
                             base=f"{timer_base_ms(device.number) / 1000:g}S")
             args.pop(0)
         texts = [(text, record.line) for text in args] + [
             (o.text, o.line) for o in record.operands]
         if len(texts) != 1:
             if not texts:
-                raise _fail(record, "fatek-missing-operand", name=record.mnemonic, param="PV")
+                raise refused(record, "fatek-missing-operand", name=record.mnemonic, param="PV")
             raise BranchError(Diagnostic("fatek-extra-operand", {"text": texts[1][0],
                                                                  "name": record.mnemonic},
                                          texts[1][1]))
@@ -220,7 +224,7 @@ class ProgramLowering(StackLowering):
         """RST Tn / Cn (a box), RST of a relay (the reset coil, as OUTR)."""
         if record.operand[:1].upper() in ("T", "C") and not record.operand.upper().startswith(
                 "TR"):
-            device = _bit_device(record, ("T", "C"))
+            device = bit_device(record, ("T", "C"))
             spec = ROW_OF_NAME["FBS.RST"]
             self.inputs(record, 1)
             self.emit_box(record, spec, (0 if device.kind == "T" else 1, device.number))
@@ -236,7 +240,7 @@ class ProgramLowering(StackLowering):
         """FO n: the last box's output n as the new result."""
         number = int(record.operand) if record.operand.isdigit() else -1
         if self.fo is None or not 0 <= number <= 7:
-            raise _fail(record, "fatek-fo", text=record.operand)
+            raise refused(record, "fatek-fo", text=record.operand)
         if number == 0 and self.fresh_box:
             self.fresh_box = False
             return  # FO0 is the box's W1, already the result
@@ -247,6 +251,7 @@ class ProgramLowering(StackLowering):
         self.fresh_box = False
 
     def take_record(self, record: Record) -> None:
+        """Lower one record of the network (a diagnostic by BranchError)."""
         kind = record.mnemonic
         if kind in ("OUT", "OUTS", "OUTR") and record.modifier != "TR":
             self.fresh_box = False
@@ -265,7 +270,7 @@ class ProgramLowering(StackLowering):
         elif kind == "FO":
             self.function_output(record)
         elif kind != "END":
-            raise _fail(record, "fatek-unknown-instruction", name=kind)
+            raise refused(record, "fatek-unknown-instruction", name=kind)
 
 
 def _name(record: Record) -> str:
@@ -318,7 +323,7 @@ def lower_program(records: list[Record]) -> tuple[list[Lowered], list[Diagnostic
                 lowering.take_record(record)
             if lowering.depth > 1:
                 last = network[-1]
-                raise _fail(last, "fatek-open-block", name=_name(last), count=lowering.depth - 1)
+                raise refused(last, "fatek-open-block", name=_name(last), count=lowering.depth - 1)
         except BranchError as error:
             diagnostics.append(error.diagnostic)
         diagnostics.extend(warnings)

@@ -208,6 +208,7 @@ def spelling() -> Spelling:
     from ladderworks.core.dialects.fatek import DIALECT
 
     def address_text(address: Address) -> str:
+        """An address as Fatek writes it; OPEN and SHORT for the always-0/1 relays."""
         if address in (ALWAYS_ON, ALWAYS_OFF):
             return "SHORT" if address == ALWAYS_ON else "OPEN"
         return DIALECT.format_address(address)

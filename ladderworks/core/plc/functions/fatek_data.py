@@ -66,6 +66,7 @@ def _arithmetic(fun: int) -> FunctionImpl:
 
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
+        """D := Sa op Sb when the box runs."""
         mode, sa, sb, destination, fo = params
         if not runs(state, mode, inputs[0]):
             return _held(state)
@@ -99,6 +100,7 @@ def _step(fun: int) -> FunctionImpl:
 
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
+        """D := D +/- 1 when the box runs."""
         mode, destination, fo = params
         if not runs(state, mode, inputs[0]):
             return _held(state)
@@ -151,6 +153,7 @@ def _contact(fun: int) -> FunctionImpl:
 
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
+        """IN and the comparison of Sa with Sb."""
         mode, sa, sb = params
         size = width(mode)
         a = operand_value(ctx.memory, sa, size)

@@ -27,6 +27,7 @@ def variable_reader(memory: Memory) -> Callable[[Variable], int]:
     """The value of a variable's register (`R0`, `DR10`) in `memory`."""
 
     def read(variable: Variable) -> int:
+        """The signed value of the variable's register (0 outside memory)."""
         address, width = word_address(Device(variable.register, variable.number))
         if not 0 <= address.byte <= len(memory.areas[address.area]) - width:
             return 0
