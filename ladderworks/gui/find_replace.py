@@ -127,14 +127,15 @@ class FindReplaceDialog(Retranslating, QDialog):
             return ""
         found = self.editor.networks[index].element_at(row, col)
         if found is not None and isinstance(found[1], Contact | Coil) and found[1].address:
-            return str(found[1].address)
+            return self.editor.spell_address(found[1].address)
         return ""
 
     # -- finding -------------------------------------------------------------------------
 
     def query(self) -> Query | None:
         """The query typed in the find field (None when blank)."""
-        return parse_query(self.find_text.text(), self.editor.model.symbols)
+        return parse_query(self.find_text.text(), self.editor.model.symbols,
+                           self.editor.model.dialect)
 
     def hits(self) -> list[Found]:
         """Every place the query finds, in program order (the whole program is laid out)."""
@@ -189,7 +190,7 @@ class FindReplaceDialog(Retranslating, QDialog):
         network = self.editor.networks[hit.network]
         where = network.label or translate("FindReplace", "network {0}").format(hit.network + 1)
         self._say(translate("FindReplace", "{0} of {1}: {2}, {3}").format(
-            number + 1, len(hits), where, hit.address))
+            number + 1, len(hits), where, self.editor.spell_address(hit.address)))
 
     def _current(self, hits: list[Found]) -> list[Found]:
         """The hits at the editor's cursor."""
@@ -203,7 +204,8 @@ class FindReplaceDialog(Retranslating, QDialog):
 
     def _new_address(self, query: Query | None) -> Address | None:
         try:
-            return replacement_address(self.replace_text.text(), query, self.editor.model.symbols)
+            return replacement_address(self.replace_text.text(), query, self.editor.model.symbols,
+                                       self.editor.model.dialect)
         except Refused as refused:
             self._say(diagnostic_text(refused.diagnostic))
             return None

@@ -81,3 +81,26 @@ def test_docks_take_delta_spelling(qtbot: QtBot, window: MainWindow) -> None:
     assert bits.rows[1].edit.text() == "D100"
     bits.set_address(2, "X8")
     assert bits.rows[2].address is None  # octal: an error in the row, no address
+
+
+def test_an_address_typed_in_a_delta_program_is_a_delta_device(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path) -> None:
+    copy = tmp_path / "t.txt"
+    copy.write_bytes((paths.EXAMPLES / "delta" / "timer_t0.txt").read_bytes())
+    assert window.load(copy)
+    editor = window.editor
+    editor.inline.open_address(0, 0, 0)
+    assert editor.inline_editor.text() == "X0"
+    editor.inline_editor.setText("X8")
+    qtbot.keyClick(editor.inline_editor, Qt.Key.Key_Return)
+    assert "octal" in editor.inline_message.text()
+    editor.inline_editor.setText("X17")
+    qtbot.keyClick(editor.inline_editor, Qt.Key.Key_Return)
+    contact = window.model.networks[0].cells[(0, 0)]
+    assert isinstance(contact, Contact)
+    assert contact.address == parse_target("X17", "delta")[0]
+    other = tmp_path / "saved.txt"
+    assert window.save_to(other)
+    lines = other.read_text(encoding="utf-8").splitlines()
+    # the changed rung written in Delta, the others as they were
+    assert lines[1:] == ["LD\tX17", "TMR\tT0\tK10", "LD     T0", "OUT    Y0", "END"]

@@ -18,8 +18,9 @@ from PySide6.QtGui import (
 )
 from PySide6.QtWidgets import QGraphicsRectItem, QGraphicsScene, QGraphicsView, QMenu, QWidget
 
-from ladderworks.core.address import AddressError
+from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects import parse_bit
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Program
 from ladderworks.core.ladder import LadderNetwork, Selection
@@ -231,11 +232,29 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         return shows_comment(network, self.comments)
 
     def resolve_address(self, text: str) -> str:
-        """The address a typed text names: itself, or the address of a program symbol."""
+        """The address a typed text names: itself, or the address of a program symbol (a Delta
+        program's device, `X17`: its address, `X1.7`)."""
         try:
+            if spelling(self.model.dialect).dialect:
+                return str(parse_bit(text, self.model.dialect))
             return str(resolve(text, self.model.symbols))
         except AddressError:
             return text
+
+    def typed_address_problem(self, text: str) -> Diagnostic | None:
+        """Why a bit typed in a Delta program is none of its devices (`X8`); None if it is one
+        (or the program is the PMC's: its own checks say why)."""
+        if not spelling(self.model.dialect).dialect:
+            return None
+        try:
+            parse_bit(text, self.model.dialect)
+        except AddressError as error:
+            return error.diagnostic
+        return None
+
+    def spell_address(self, address: Address) -> str:
+        """An address as the program writes it (`X17` in a Delta program)."""
+        return spelling(self.model.dialect).address(address)
 
     def _renumber(self, start: int) -> None:
         last = len(self.network_items) - 1

@@ -78,3 +78,19 @@ def test_xref_in_delta_spelling(capsys) -> None:
     rows = capsys.readouterr().out.splitlines()[1:]
     assert [row.split()[0] for row in rows] == ["D500", "D500", "D500", "Y0"]
     assert [row.split()[6] for row in rows] == ["MOV", "MOV", "TMR", "OUT"]
+
+
+def test_find_and_replace_take_delta_devices() -> None:
+    from ladderworks.core.il import parse_file
+    from ladderworks.core.ladder.convert import program_to_ladder
+    from ladderworks.core.ladder.find_replace import find, parse_query, replacement_address
+
+    program = parse_file(EXAMPLES / "motor_flip_flop.txt").program
+    networks = program_to_ladder(program).networks
+    query = parse_query("X0", program.symbols, "delta")
+    assert query is not None
+    assert len(find(networks, query, program.symbols)) == 3
+    d500 = parse_query("D500", program.symbols, "delta")
+    assert d500 is not None and len(find(networks, d500, program.symbols)) == 3
+    new = replacement_address("M7", query, program.symbols, "delta")
+    assert program.dialect == "delta" and new.bit == 7

@@ -45,18 +45,18 @@ M1028 = relay(1028)  # on: T64..T126 count in 10 ms
 M1200 = relay(1200)  # M1200..M1255: C200..C255 count down when on
 
 
-def _set(areas: dict[Area, bytearray], address: Address, on: bool) -> None:
-    data = areas[address.area]
-    mask = 1 << (address.bit or 0)
-    data[address.byte] = data[address.byte] | mask if on else data[address.byte] & ~mask & 0xFF
+# the relays set before each scan, all in area R: (byte, mask) of M1000, M1002, M1013, M1014
+_SCAN_RELAYS = tuple((address.byte, 1 << (address.bit or 0))
+                     for address in (M1000, M1002, M1013, M1014))
+_R = Area.R
 
 
 def relays(areas: dict[Area, bytearray], now_ms: int, first: bool) -> None:
     """Delta's special relays, set before each scan (the engine calls this)."""
-    _set(areas, M1000, True)
-    _set(areas, M1002, first)
-    _set(areas, M1013, now_ms % 1000 < 500)
-    _set(areas, M1014, now_ms % 60_000 < 30_000)
+    data = areas[_R]
+    states = (True, first, now_ms % 1000 < 500, now_ms % 60_000 < 30_000)
+    for (byte, mask), on in zip(_SCAN_RELAYS, states, strict=True):
+        data[byte] = data[byte] | mask if on else data[byte] & ~mask & 0xFF
 
 
 DIALECT = Dialect(
