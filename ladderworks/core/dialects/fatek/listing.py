@@ -64,6 +64,7 @@ _FUN_RE = re.compile(r"^FUN\s*(\d+)\s*(D?)\s*(P?)\s*\.?\s*(.*)$", re.I)
 _CMP_RE = re.compile(r"^(ORG|LD|AND|OR)F\s+(?:FUN\s*)?(\d+)\s*(D?)\s*(P?)\s*\.?\s*(.*)$", re.I)
 _FO_RE = re.compile(r"^FO\s*(\d+)$", re.I)
 _DEVICE_SPLIT_RE = re.compile(r"^([A-Za-z]{1,3})\s+(\d+)$")
+_RST_RE = re.compile(r"^RST\s*\(\s*([A-Za-z]*\s*\d*)\s*\)", re.I)
 _ANNOTATION = "←"  # the seed's margin notes (002:376-402)
 
 
@@ -109,6 +110,7 @@ def _step_kind(text: str, line: int, step: int | None, unit: str
     fo = _FO_RE.match(text)
     if fo is not None:
         return Record(line, "FO", operand=fo.group(1), step=step, unit=unit), None
+    text = _RST_RE.sub(lambda m: f"RST {m.group(1)}", text)  # `RST( ) C0`, `RST(C0)`
     words = text.split()
     name = words[0].upper()
     rest = words[1:]

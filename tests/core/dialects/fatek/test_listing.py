@@ -91,3 +91,11 @@ def test_seed_plain_form() -> None:
 def test_bad_lines_are_diagnosed_at_their_line(text: str, code: str, line: int) -> None:
     _listing, problems = read_listing(text.splitlines())
     assert [(d.code, d.line) for d in problems] == [(code, line)]
+
+
+def test_rst_spellings() -> None:
+    """`RST C0`, `RST( ) C0` and `RST(C0)` are the same reset (issue 26 writes `RST( )`)."""
+    listing, problems = read_listing(["RST C0", "RST( ) C1", "RST(T2)", "rst ( ) t3"])
+    assert problems == []
+    assert [(r.mnemonic, r.operand) for r in listing.records] == [
+        ("RST", "C0"), ("RST", "C1"), ("RST", "T2"), ("RST", "t3")]
