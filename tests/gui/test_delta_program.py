@@ -104,3 +104,21 @@ def test_an_address_typed_in_a_delta_program_is_a_delta_device(
     lines = other.read_text(encoding="utf-8").splitlines()
     # the changed rung written in Delta, the others as they were
     assert lines[1:] == ["LD\tX17", "TMR\tT0\tK10", "LD     T0", "OUT    Y0", "END"]
+
+
+def test_cross_reference_and_force_list_in_delta_spelling(qtbot: QtBot,
+                                                          window: MainWindow) -> None:
+    assert window.load(paths.EXAMPLES / "delta" / "motor_flip_flop.txt")
+    dock = window.cross_reference
+    dock.show_address("D500")
+    model = dock.model
+    assert model.rowCount() == 3
+    assert {model.data(model.index(row, 0)) for row in range(3)} == {"D500"}
+    assert model.data(model.index(0, 1)) == ""  # no FANUC signal name
+    session = window.plc_docks.session
+    session.realtime = False
+    qtbot.keyClick(window, Qt.Key.Key_F9)
+    session.force(parse_target("X3", "delta")[0], 1)
+    forces = window.plc_docks.force_list
+    forces.show_entries(session.forces())
+    assert forces.describe(forces.entries[0])[1] == "X3"
