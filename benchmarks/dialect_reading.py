@@ -44,9 +44,9 @@ def main() -> None:
     print(f"{lines} lines of Delta (the example 500 times): "
           f"read {_ms(lambda: parse_bytes(big), 3):.0f} ms")
     binary = compile(parse_bytes(data).program)
+    scans = 20_000
     for monitored in (False, True):
         engine = ScanEngine(binary, monitored=monitored)
-        scans = 20_000
         spent = _ms(lambda engine=engine: engine.run_scans(scans), 3)
         mode = "monitored" if monitored else "fast"
         print(f"{DELTA.name} {mode}: {spent / scans * 1000:.1f} µs a scan")

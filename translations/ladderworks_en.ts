@@ -223,137 +223,137 @@
 <context>
     <name>CrossReference</name>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
         <source>Contact</source>
         <translation>Contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
         <source>NOT contact</source>
         <translation>NOT contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
         <source>Coil</source>
         <translation>Coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
         <source>NOT coil</source>
         <translation>NOT coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
         <source>SET coil</source>
         <translation>SET coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
         <source>RST coil</source>
         <translation>RST coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="75"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="77"/>
         <source>Read</source>
         <translation>Read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="77"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="79"/>
         <source>Write</source>
         <translation>Write</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="80"/>
         <source>Read and write</source>
         <translation>Read and write</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="84"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="86"/>
         <source>Level {0}</source>
         <translation>Level {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
         <source>Symbol</source>
         <translation>Symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
         <source>Network</source>
         <translation>Network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
         <source>Label</source>
         <translation>Label</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
         <source>Program part</source>
         <translation>Program part</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
         <source>Element</source>
         <translation>Element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
         <source>Access</source>
         <translation>Access</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="242"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="250"/>
         <source>All addresses — uses: {0}</source>
         <translation>All addresses — uses: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="262"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="273"/>
         <source>{0} is not used in the program</source>
         <translation>{0} is not used in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="276"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — uses: {1} (read: {2}, written: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="296"/>
         <source>Cross reference</source>
         <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="302"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Address or symbol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="303"/>
         <source>e.g. X21.7, R100, ESKIP</source>
         <translation>e.g. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="299"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Cross &amp;reference of this address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="300"/>
         <source>List every place the program reads and writes the address</source>
         <translation>List every place the program reads and writes the address</translation>
     </message>
@@ -1277,27 +1277,27 @@
         <translation>Release all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="83"/>
         <source>FORCED</source>
         <translation>FORCED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="90"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>network {0}, line {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="92"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="102"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="103"/>
         <source>Release</source>
         <translation>Release</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="106"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="107"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} forced, {1} passive</translation>
     </message>
@@ -2268,128 +2268,128 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC CONTROL SCREEN</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
         <source>Open .MOD…</source>
         <translation>Open .MOD…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
         <source>Take the console&apos;s program</source>
         <translation>Take the console&apos;s program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
         <source>Compile</source>
         <translation>Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="187"/>
         <source>Program loaded from the console</source>
         <translation>Program loaded from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="207"/>
         <source>In the PLC: {0}</source>
         <translation>In the PLC: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="216"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="221"/>
         <source>Opened {0}</source>
         <translation>Opened {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
         <source>Open mnemonic program</source>
         <translation>Open mnemonic program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="228"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>The console&apos;s program cannot be coded: see the error list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="240"/>
         <source>Program taken from the console</source>
         <translation>Program taken from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="275"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Compile failed: {0} error(s). {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="287"/>
         <source>Converting…</source>
         <translation>Converting…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="311"/>
         <source>the program on this screen</source>
         <translation>the program on this screen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="315"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Compile finished — {0} networks, {1} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="317"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="318"/>
         <source>({0} warning(s))</source>
         <translation>({0} warning(s))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="329"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="336"/>
         <source>Compile a program first</source>
         <translation>Compile a program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="356"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="357"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="359"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="360"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="363"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="366"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>

@@ -223,137 +223,137 @@
 <context>
     <name>CrossReference</name>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="60"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
         <source>Contact</source>
         <translation>Kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
         <source>NOT contact</source>
         <translation>DEĞİL kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
         <source>Coil</source>
         <translation>Çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
         <source>NOT coil</source>
         <translation>DEĞİL çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
         <source>SET coil</source>
         <translation>SET çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
         <source>RST coil</source>
         <translation>RST çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="75"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="77"/>
         <source>Read</source>
         <translation>Okuma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="77"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="79"/>
         <source>Write</source>
         <translation>Yazma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="80"/>
         <source>Read and write</source>
         <translation>Okuma ve yazma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="84"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="86"/>
         <source>Level {0}</source>
         <translation>{0}. seviye</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
         <source>Symbol</source>
         <translation>Sembol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
         <source>Network</source>
         <translation>Devre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
         <source>Label</source>
         <translation>Etiket</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
         <source>Program part</source>
         <translation>Program bölümü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
         <source>Element</source>
         <translation>Eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
         <source>Access</source>
         <translation>Erişim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="242"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="250"/>
         <source>All addresses — uses: {0}</source>
         <translation>Tüm adresler — kullanım: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="262"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="273"/>
         <source>{0} is not used in the program</source>
         <translation>{0} programda kullanılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="276"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — kullanım: {1} (okuma: {2}, yazma: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="296"/>
         <source>Cross reference</source>
         <translation>Çapraz referans</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="302"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Adres veya sembol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="303"/>
         <source>e.g. X21.7, R100, ESKIP</source>
         <translation>örn. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="299"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Bu adresin çapraz &amp;referansı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="300"/>
         <source>List every place the program reads and writes the address</source>
         <translation>Programın adresi okuduğu ve yazdığı her yeri listeler</translation>
     </message>
@@ -1277,27 +1277,27 @@
         <translation>Hepsini bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="82"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="83"/>
         <source>FORCED</source>
         <translation>ZORLANMIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="90"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>devre {0}, satır {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="92"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="102"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="103"/>
         <source>Release</source>
         <translation>Bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="106"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="107"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} zorlanmış, {1} pasif</translation>
     </message>
@@ -2268,128 +2268,128 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC KONTROL EKRANI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
         <source>Open .MOD…</source>
         <translation>.MOD aç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
         <source>Take the console&apos;s program</source>
         <translation>Konsoldaki programı al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
         <source>Compile</source>
         <translation>Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="187"/>
         <source>Program loaded from the console</source>
         <translation>Program konsoldan yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="207"/>
         <source>In the PLC: {0}</source>
         <translation>PLC&apos;deki program: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="216"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="221"/>
         <source>Opened {0}</source>
         <translation>{0} açıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
         <source>Open mnemonic program</source>
         <translation>Mnemonik program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="228"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod *.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>Konsoldaki program kodlanamıyor: hata listesine bakın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="240"/>
         <source>Program taken from the console</source>
         <translation>Program konsoldan alındı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="275"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Derleme başarısız: {0} hata. {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="287"/>
         <source>Converting…</source>
         <translation>Çevriliyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="311"/>
         <source>the program on this screen</source>
         <translation>bu ekrandaki program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="315"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Derleme bitti — {0} devre, {1} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="317"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="318"/>
         <source>({0} warning(s))</source>
         <translation>({0} uyarı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="329"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} sinyal zorlanmış veya eleman pasif. PLC bunlarla başlatılsın mı?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="336"/>
         <source>Compile a program first</source>
         <translation>Önce bir program derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="356"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="357"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="359"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="360"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="363"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="366"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>

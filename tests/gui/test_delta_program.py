@@ -104,3 +104,44 @@ def test_an_address_typed_in_a_delta_program_is_a_delta_device(
     lines = other.read_text(encoding="utf-8").splitlines()
     # the changed rung written in Delta, the others as they were
     assert lines[1:] == ["LD\tX17", "TMR\tT0\tK10", "LD     T0", "OUT    Y0", "END"]
+
+
+def test_cross_reference_and_force_list_in_delta_spelling(qtbot: QtBot,
+                                                          window: MainWindow) -> None:
+    assert window.load(paths.EXAMPLES / "delta" / "motor_flip_flop.txt")
+    dock = window.cross_reference
+    dock.show_address("D500")
+    model = dock.model
+    assert model.rowCount() == 3
+    assert {model.data(model.index(row, 0)) for row in range(3)} == {"D500"}
+    assert model.data(model.index(0, 1)) == ""  # no FANUC signal name
+    session = window.plc_docks.session
+    session.realtime = False
+    qtbot.keyClick(window, Qt.Key.Key_F9)
+    session.force(parse_target("X3", "delta")[0], 1)
+    forces = window.plc_docks.force_list
+    forces.show_entries(session.forces())
+    assert forces.describe(forces.entries[0])[1] == "X3"
+
+
+def test_a_delta_file_with_an_error_is_fixed_in_the_text_view(window: MainWindow,
+                                                               tmp_path: Path) -> None:
+    broken = tmp_path / "broken.txt"
+    broken.write_text("LD X0\nANI X8\nOUT Y0\nEND\n", encoding="utf-8")
+    window.load(broken)
+    assert window.model.showing_text  # it has an error: shown as text, the error listed
+    assert window.errors.tree.topLevelItemCount() == 1
+    assert "octal" in window.errors.tree.topLevelItem(0).text(window.errors.tree.columnCount() - 1)
+    window.text_view.setPlainText("LD X0\nANI X7\nOUT Y0\nEND\n")
+    assert window.show_as_ladder()
+    assert window.model.dialect == "delta"
+    assert [type(cell).__name__ for cell in window.model.networks[0].cells.values()].count(
+        "Contact") == 2
+
+
+def test_the_plc_control_screen_compiles_delta_text(window: MainWindow) -> None:
+    control = window.plc_docks.control
+    assert control.open_file(EXAMPLE)
+    control.stripe_ms = 0
+    result = control.compile()
+    assert result.ok and result.binary is not None

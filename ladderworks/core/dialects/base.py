@@ -47,6 +47,8 @@ class Dialect:
     extensions: tuple[str, ...] = ()  # file name endings its files use (".dvp")
     namer: str = ""  # "module:function": a row's name in the dialect's text (LD for RD)
     spelling: str = ""  # "module:function" making its dialects.spelling.Spelling (display)
+    # the rows each module of core/plc/functions implements for it (plc/families.py merges them)
+    families: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     # the compiler checks' codes said in the dialect's words (sp-without-spe: its SRET)
     codes: Mapping[str, str] = field(default_factory=dict)
 

@@ -5,8 +5,7 @@ module does not declare here, and `load_all` refuses a declared name that nothin
 
 from __future__ import annotations
 
-from ladderworks.core.dialects.delta.instructions import FAMILIES as DELTA_FAMILIES
-from ladderworks.core.dialects.fatek.rows import FAMILIES as FATEK_FAMILIES
+from ladderworks.core import dialects
 
 FAMILIES: dict[str, tuple[str, ...]] = {
     "arithmetic": ("ADD", "ADDB", "SUB", "SUBB", "MUL", "MULB", "DIV", "DIVB", "NUME", "NUMEB"),
@@ -25,9 +24,9 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "transfer": ("MOVE", "MOVOR", "MOVB", "MOVW", "MOVN", "MOVD", "XMOV", "XMOVB"),
 }
 
-# A dialect's families (core/dialects/<name>/instructions.py says which module runs which row).
-FAMILIES.update(DELTA_FAMILIES)
-FAMILIES.update(FATEK_FAMILIES)
+# Each dialect's families (its `Dialect.families`: which module runs which of its rows).
+for _dialect in dialects.every():
+    FAMILIES.update(_dialect.families)
 
 # Every functional instruction that has an implementation.
 IMPLEMENTED: frozenset[str] = frozenset(name for names in FAMILIES.values() for name in names)

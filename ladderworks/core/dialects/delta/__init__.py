@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.dialects.base import Dialect
-from ladderworks.core.dialects.delta.instructions import ROWS
+from ladderworks.core.dialects.delta.instructions import FAMILIES, ROWS
 from ladderworks.core.dialects.delta.sniff import score
 from ladderworks.core.dialects.devices import Device, DeviceMap
 
@@ -65,7 +65,7 @@ DIALECT = Dialect(
     printer="ladderworks.core.dialects.delta.printer:network_lines", relays=relays,
     period_ms=10, extensions=(".dvp", ".il", ".txt"),
     namer="ladderworks.core.dialects.delta.printer:mnemonic_of",
-    spelling="ladderworks.core.dialects.delta.printer:spelling",
+    spelling="ladderworks.core.dialects.delta.printer:spelling", families=FAMILIES,
     codes={"sp-without-spe": "dvp-missing-sret", "spe-without-sp": "dvp-sret-alone",
            "outside-subprogram": "dvp-outside-subroutine", "label-missing": "dvp-pointer-missing",
            "call-missing": "dvp-call-missing", "no-logic": "dvp-no-logic",

@@ -7,7 +7,7 @@ from __future__ import annotations
 from ladderworks.core.address import Address, Area
 from ladderworks.core.dialects.base import Dialect
 from ladderworks.core.dialects.fatek.devices import CLOCKS, DEVICES, FIRST_SCAN, Device, bit_address
-from ladderworks.core.dialects.fatek.rows import ROWS
+from ladderworks.core.dialects.fatek.rows import FAMILIES, ROWS
 from ladderworks.core.dialects.fatek.sniff import score
 
 NAME = "fatek"
@@ -35,4 +35,4 @@ DIALECT = Dialect(
     printer="ladderworks.core.dialects.fatek.printer:network_lines", relays=relays,
     period_ms=10, extensions=(".lst", ".fbs"),
     namer="ladderworks.core.dialects.fatek.printer:mnemonic_of",
-    spelling="ladderworks.core.dialects.fatek.printer:spelling")
+    spelling="ladderworks.core.dialects.fatek.printer:spelling", families=FAMILIES)
