@@ -78,6 +78,12 @@ def test_xref_in_delta_spelling(capsys) -> None:
     rows = capsys.readouterr().out.splitlines()[1:]
     assert [row.split()[0] for row in rows] == ["D500", "D500", "D500", "Y0"]
     assert [row.split()[6] for row in rows] == ["MOV", "MOV", "TMR", "OUT"]
+    assert [row.split()[-1] for row in rows] == ["write", "write", "read", "write"]
+    capsys.readouterr()
+    assert main(["xref", str(EXAMPLES / "counter_reset.txt"), "C0"]) == 0
+    rows = capsys.readouterr().out.splitlines()[1:]
+    assert [(row.split()[6], row.split()[-1]) for row in rows] == [
+        ("CNT", "read+write"), ("RST", "write")]
 
 
 def test_find_and_replace_take_delta_devices() -> None:
