@@ -83,6 +83,14 @@ class Use(NamedTuple):
 
 # Parameters that an instruction both reads and writes, beyond `output_params` (written).
 _READ_WRITE: dict[str, frozenset[str]] = {
+    # Delta (core/dialects/delta): a timer's or counter's value is read and written, INC/DEC
+    # read and write their register
+    "DVP.TMR": frozenset({"timer"}), "DVP.CNT": frozenset({"counter"}),
+    "DVP.DCNT": frozenset({"counter"}), "DVP.INC": frozenset({"output"}),
+    "DVP.DEC": frozenset({"output"}), "DVP.INCP": frozenset({"output"}),
+    "DVP.DECP": frozenset({"output"}),
+    # Fatek (core/dialects/fatek): FUN 15 (+1) and FUN 16 (-1) read and write their D
+    "FBS.INC": frozenset({"output"}), "FBS.DEC": frozenset({"output"}),
     "SFT": frozenset({"data"}),
     "TMRC": frozenset({"register"}),
     "CTRC": frozenset({"register"}),

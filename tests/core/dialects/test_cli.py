@@ -78,6 +78,12 @@ def test_xref_in_delta_spelling(capsys) -> None:
     rows = capsys.readouterr().out.splitlines()[1:]
     assert [row.split()[0] for row in rows] == ["D500", "D500", "D500", "Y0"]
     assert [row.split()[6] for row in rows] == ["MOV", "MOV", "TMR", "OUT"]
+    assert [row.split()[-1] for row in rows] == ["write", "write", "read", "write"]
+    capsys.readouterr()
+    assert main(["xref", str(EXAMPLES / "counter_reset.txt"), "C0"]) == 0
+    rows = capsys.readouterr().out.splitlines()[1:]
+    assert [(row.split()[6], row.split()[-1]) for row in rows] == [
+        ("CNT", "read+write"), ("RST", "write")]
 
 
 def test_find_and_replace_take_delta_devices() -> None:
@@ -94,3 +100,32 @@ def test_find_and_replace_take_delta_devices() -> None:
     assert d500 is not None and len(find(networks, d500, program.symbols)) == 3
     new = replacement_address("M7", query, program.symbols, "delta")
     assert program.dialect == "delta" and new.bit == 7
+
+
+def test_a_recorded_scenario_of_a_delta_program_replays() -> None:
+    from ladderworks.core.plc.recorder import ScenarioRecorder
+    from ladderworks.core.plc.scenario import parse_scenario, run_scenario
+    from ladderworks.core.plc.session import PlcRun
+    from tests.core.dialects.conftest import bit_of, delta
+
+    program = delta("LD X0\nOR Y0\nANI X1\nOUT Y0\nLD X2\nOUT Y10\nEND\n")
+    plc = PlcRun()
+    assert not plc.load_program(program).diagnostics
+    plc.start()
+    recorder = ScenarioRecorder(plc, "recorded")
+    recorder.start()
+    plc.run_scans(2)
+    plc.set_bit(bit_of("X0"), 1)
+    plc.run_scans(2)
+    plc.set_bit(bit_of("X0"), 0)
+    plc.force(bit_of("X2"), 1)
+    plc.run_scans(3)
+    recorder.stop()
+    written = recorder.text()
+    assert written.splitlines()[2:] == ["SET,16,X0,1", "SET,16,X0,0", "FORCE,0,X2,1",
+                                        "EXPECT,16,Y0,1,BIT", "EXPECT,0,Y10,1,BIT"]
+    again = PlcRun()
+    again.load_program(program)
+    scenario = parse_scenario(written, "again", None, "delta")
+    assert scenario.ok, scenario.diagnostics
+    assert run_scenario(again, scenario).passed

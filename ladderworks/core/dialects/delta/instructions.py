@@ -176,7 +176,7 @@ _add("DCNT", "output", (WIDE_COUNTER, WORD_IN),
      _row("DCNT", _sub(), "32-bit up/down counter", "32 BİT YUKARI/AŞAĞI SAYICI",
           params=(_word("counter", 4), _value("preset", INT32[0], INT32[1], 4))))
 RESET_ROW = _row("RST", _sub(), "Reset a timer, counter or register", "SIFIRLA",
-                 suffix=".WORD", params=(_word("device"),))
+                 suffix=".WORD", params=(_word("output"),))
 ROWS_LIST.append(RESET_ROW)
 
 # -- data: move, arithmetic, compare (API 10-25), each with its pulse form (xxxP) -------------

@@ -155,11 +155,12 @@ class ProgramLowering(StackLowering):
                                                  line.line, line.column))
                 params.append(value)
             else:
+                label = "D" if param.name == "output" else param.name  # Fatek's destination
                 line = next(operands, None)
                 if line is None:
                     raise refused(record, "fatek-missing-operand", name=_name(record),
-                                param=param.name)
-                params.append(operand(line.text, line.line, param.name,
+                                  param=label)
+                params.append(operand(line.text, line.line, label,
                                       param.kind is ParamKind.VALUE, line.column))
         extra = next(operands, None)
         if extra is not None:

@@ -81,7 +81,8 @@ def _box_lines(ins: Instruction) -> list[str]:
         if param.name == "counter":
             lines.append(f"    CV: C{values['counter']}")
             continue
-        lines.append(f"    {param.name:<2}: {device_text(values[param.name])}")
+        label = "D" if param.name == "output" else param.name  # the destination, Fatek's D
+        lines.append(f"    {label:<2}: {device_text(values[param.name])}")
     return lines
 
 
@@ -196,7 +197,8 @@ def instruction_text(instruction: Instruction) -> str:
     if spec.cnc:
         return f"{name} {instruction.comment}".strip()
     texts = params_text(spec, instruction.params)
-    labels = [p.name for p in spec.params if p.name not in _HIDDEN]
+    labels = ["D" if p.name == "output" else p.name for p in spec.params
+              if p.name not in _HIDDEN]
     if name.startswith("FUN"):
         return " ".join([name, *(f"{label}: {text}" for label, text in
                                  zip(labels, texts, strict=False))])
