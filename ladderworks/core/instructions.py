@@ -127,6 +127,7 @@ class InstructionSpec:
     source: str = "seed"  # "seed": the seed manual's instruction; "pmc": FANUC 30i PMC
     stack: StackOp = StackOp.NONE  # basic without operand: a dialect's stack operation
     dialect: str = ""  # the dialect whose row it is (core/dialects), "" for the PMC's
+    gates_boxes: bool = False  # COMMON: while off, boxes in its range see their input off too
     @property
     def help_key(self) -> str:
         """Key of the instruction's entry in docs/instructions.md and the help browser."""

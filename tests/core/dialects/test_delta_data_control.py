@@ -144,3 +144,16 @@ def test_mc_mcr_turn_off_the_coils_between_them(monitored: bool) -> None:
     put(plc, "X0", 0)
     plc.scan()
     assert [get(plc, f"Y{k}") for k in range(3)] == [0, 1, 1]  # SET keeps
+
+
+@MODES
+def test_mc_off_resets_its_timers_and_holds_its_counters(monitored: bool) -> None:
+    plc = engine("LD X0\nMC N0\nLD X1\nTMR T0 K100\nLD X1\nCNT C0 K5\nMCR N0\nEND\n",
+                 monitored=monitored)
+    put(plc, "X0", 1)
+    put(plc, "X1", 1)
+    plc.run_scans(51)
+    assert (get(plc, "T0"), get(plc, "C0")) == (5, 1)
+    put(plc, "X0", 0)
+    plc.scan()
+    assert (get(plc, "T0"), get(plc, "C0")) == (0, 1)  # timer reset, counter kept

@@ -229,7 +229,7 @@ ROWS_LIST += [LABEL_ROW, SUBROUTINE_ROW]
 _add("MC", "output", (NEST,), _row("MC", _sub(), "Master control", "ANA KONTROL",
                                     params=(_param("coils", ParamKind.NUMBER, 0, 0),
                                             _param("nest", ParamKind.NUMBER, 0, 7)),
-                                    flow=Flow.COMMON))
+                                    flow=Flow.COMMON, gates_boxes=True))
 _add("MCR", "alone", (NEST,), _row("MCR", _sub(), "Master control reset", "ANA KONTROL SONU",
                                     inputs=(), params=(_param("nest", ParamKind.NUMBER, 0, 7),),
                                     flow=Flow.COMMON_END))
