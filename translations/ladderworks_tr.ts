@@ -110,79 +110,112 @@
     </message>
 </context>
 <context>
+    <name>AsciiOutput</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="66"/>
+        <source>ASCII output</source>
+        <translation>ASCII çıkışı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="67"/>
+        <source>Clear</source>
+        <translation>Temizle</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="68"/>
+        <source>Forget what the terminal received</source>
+        <translation>Terminalin aldıklarını unut</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="70"/>
+        <source>What FUN 94 ASCWR sends to Port 1 (a Fatek program) shows here.</source>
+        <translation>FUN 94 ASCWR komutunun Port 1&apos;e gönderdikleri (bir Fatek programında) burada görünür.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="85"/>
+        <source>{0} output(s) received</source>
+        <translation>{0} çıkış alındı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/ascii_output.py" line="88"/>
+        <source>{0}, line {1}: {2}</source>
+        <translation>{0}, satır {1}: {2}</translation>
+    </message>
+</context>
+<context>
     <name>BitDisplay</name>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="280"/>
         <source>Forced to {0}</source>
         <translation>{0} değerine zorlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="283"/>
         <source>Click: force to the other value; right-click: force menu</source>
         <translation>Tıklama: diğer değere zorla; sağ tuş: zorlama menüsü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="301"/>
         <source>Load a program to force inputs</source>
         <translation>Girişleri zorlamak için bir program yükleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="304"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="318"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="309"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="323"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
         <source>Release the force</source>
         <translation>Zorlamayı kaldır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
         <source>Live</source>
         <translation>Canlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
         <source>Stopped</source>
         <translation>Durduruldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="335"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="349"/>
         <source>PLC bit display</source>
         <translation>PLC BIT GÖSTERİMİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="336"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="350"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="337"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="351"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="338"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="352"/>
         <source>Byte</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="339"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="353"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="340"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="354"/>
         <source>Dec</source>
         <translation>Ondalık</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="356"/>
         <source>e.g. X12</source>
         <translation>örn. X12</translation>
     </message>
@@ -190,137 +223,137 @@
 <context>
     <name>CrossReference</name>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="61"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
         <source>Contact</source>
         <translation>Kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
         <source>NOT contact</source>
         <translation>DEĞİL kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
         <source>Coil</source>
         <translation>Çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
         <source>NOT coil</source>
         <translation>DEĞİL çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
         <source>SET coil</source>
         <translation>SET çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
         <source>RST coil</source>
         <translation>RST çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="76"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
         <source>Read</source>
         <translation>Okuma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="80"/>
         <source>Write</source>
         <translation>Yazma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="79"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="81"/>
         <source>Read and write</source>
         <translation>Okuma ve yazma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="85"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="87"/>
         <source>Level {0}</source>
         <translation>{0}. seviye</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
         <source>Symbol</source>
         <translation>Sembol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
         <source>Network</source>
         <translation>Devre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
         <source>Label</source>
         <translation>Etiket</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
         <source>Program part</source>
         <translation>Program bölümü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
         <source>Element</source>
         <translation>Eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
         <source>Access</source>
         <translation>Erişim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="129"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="251"/>
         <source>All addresses — uses: {0}</source>
         <translation>Tüm adresler — kullanım: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="264"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="274"/>
         <source>{0} is not used in the program</source>
         <translation>{0} programda kullanılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="277"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — kullanım: {1} (okuma: {2}, yazma: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="297"/>
         <source>Cross reference</source>
         <translation>Çapraz referans</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="303"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Adres veya sembol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="294"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="304"/>
         <source>e.g. X21.7, R100, ESKIP</source>
         <translation>örn. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="300"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Bu adresin çapraz &amp;referansı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="291"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="301"/>
         <source>List every place the program reads and writes the address</source>
         <translation>Programın adresi okuduğu ve yazdığı her yeri listeler</translation>
     </message>
@@ -774,201 +807,371 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <source>ASCII format: the text opened by {quote} is never closed</source>
+        <translation>ASCII biçimi: {quote} ile açılan metin hiç kapatılmamış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
+        <translation>ASCII biçimi: tekrar sayısı 1 ile 999 arasında olmalı, bulunan {count}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
+        <translation>ASCII biçimi: &apos;{text}&apos; bir öğe değil (&apos;metin&apos;, MX, onaltılık kodlar, &quot;w.dRn&quot;, / ya da \ bekleniyor)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
+        <translation>ASCII biçimi: &quot;{text}&quot; bir değişken değil (örneğin &quot;8.2R0&quot; ya da &quot;4R10H&quot; bekleniyor)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <source>ASCII format: text after END: &apos;{text}&apos;</source>
+        <translation>ASCII biçimi: END&apos;den sonra metin: &apos;{text}&apos;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <source>ASCII format: END is missing</source>
+        <translation>ASCII biçimi: END eksik</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <source>&apos;{name}&apos; is not a Fatek instruction</source>
+        <translation>&apos;{name}&apos; bir Fatek komutu değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
+        <translation>önünde FUN, TMR ya da CTR olmayan bir operand satırı: &apos;{text}&apos;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <source>{name} needs a device</source>
+        <translation>{name} bir eleman (cihaz) adresi ister</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <source>&apos;{text}&apos; is not a Fatek device</source>
+        <translation>&apos;{text}&apos; bir Fatek elemanı değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
+        <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
+        <translation>{name} &apos;{text}&apos; alamaz ({kinds} kullanın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
+        <source>&apos;{text}&apos; is out of range ({range})</source>
+        <translation>&apos;{text}&apos; aralık dışında ({range})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <source>{name} with nothing before it: a network starts with ORG</source>
+        <translation>{name} önünde bir şey yok: ağ ORG ile başlar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <source>{name} needs two blocks: start the second one with LD</source>
+        <translation>{name} iki blok ister: ikincisini LD ile başlatın</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <source>TR{number} is set twice in this network</source>
+        <translation>TR{number} bu ağda iki kez kullanılmış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="210"/>
+        <source>a network has at most {limit} TR points</source>
+        <translation>bir ağda en fazla {limit} TR noktası olabilir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
+        <source>LD TR{number} before OUT TR{number} in this network</source>
+        <translation>bu ağda OUT TR{number} komutundan önce LD TR{number}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
+        <source>{name} on the left rail: put ORG SHORT before it</source>
+        <translation>{name} başlangıç hattında: önüne ORG SHORT koyun</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
+        <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
+        <translation>{name}: LD ile başlayan {count} blok birleştirilmemiş (ANDLD/ORLD)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
+        <source>FUN {number} is not a Fatek function LadderWorks knows</source>
+        <translation>FUN {number}, LadderWorks&apos;ün bildiği bir Fatek fonksiyonu değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
+        <source>{name}: the operand line {param} is missing</source>
+        <translation>{name}: {param} operand satırı eksik</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
+        <source>{name} takes no more operands, found &apos;{text}&apos;</source>
+        <translation>{name} başka operand almaz, bulunan &apos;{text}&apos;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
+        <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
+        <translation>&apos;{text}&apos;, {param} operandı olamaz (bir kaydedici ya da sabit olmalı)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
+        <translation>{name} korunur ve çizilir ama simüle edilmez: çıkışları 0 kalır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
+        <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
+        <translation>&apos;{text}&apos;, {name} zaman tabanı değil ({base})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
+        <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
+        <translation>FO {text}: burada fonksiyon çıkışı yok (bir kutudan sonra FO0-FO7)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
+        <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
+        <translation>ASCII dosyaları: &apos;{text}&apos;, [R1000] gibi bir bölüm başlığı değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; bir aygıt değil ({letters} harflerinden biri ve bir numara kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} sekizli (oktal) numaralanır (0 ile 7 arası rakamlar)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; aralık dışında ({first} ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; bir bit aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="241"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; bir kelime (word) aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
+        <source>subroutine without its SRET (before the next pointer or END)</source>
+        <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <source>SRET without a subroutine pointer (P n after FEND) before it</source>
+        <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
+        <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
+        <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <source>no pointer P{label} where this jump can reach it</source>
+        <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="255"/>
+        <source>no subroutine P{program} after FEND for this CALL</source>
+        <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <source>{name} without a logic result before it (start with LD)</source>
+        <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <source>this pointer P number is used twice</source>
+        <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="196"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1034,110 +1237,110 @@
 <context>
     <name>FindReplace</name>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="191"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="202"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="276"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="192"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="203"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="278"/>
         <source>Not found</source>
         <translation>Bulunamadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="221"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="222"/>
         <source>network {0}</source>
         <translation>devre {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="227"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="228"/>
         <source>{0} of {1}: {2}, {3}</source>
         <translation>{0} / {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="259"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="261"/>
         <source>Replace {0} with {1}</source>
         <translation>{0} yerine {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="265"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="267"/>
         <source>Replaced; no more found</source>
         <translation>Değiştirildi; başka bulunamadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="281"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="283"/>
         <source>Replace all {0} with {1}</source>
         <translation>Tüm {0} yerine {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="283"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="285"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{1} devrede {0} yer değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="291"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="293"/>
         <source>Find and replace</source>
         <translation>Bul ve değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="173"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="292"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="174"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="294"/>
         <source>Find:</source>
         <translation>Bul:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="223"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="224"/>
         <source>{0} ({1})</source>
         <translation>{0} ({1})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="226"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="227"/>
         <source>network comment</source>
         <translation>devre yorumu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="293"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="295"/>
         <source>Replace with:</source>
         <translation>Yerine:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="295"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="297"/>
         <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
         <translation>Adres, sembol veya sözcükler, örn. X21.7, R100, ESKIP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="297"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="299"/>
         <source>Address or symbol, e.g. R200</source>
         <translation>Adres veya sembol, örn. R200</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="300"/>
         <source>Find &amp;next</source>
         <translation>&amp;Sonrakini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="299"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="301"/>
         <source>Find &amp;previous</source>
         <translation>Ö&amp;ncekini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="300"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="302"/>
         <source>&amp;Replace</source>
         <translation>&amp;Değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="301"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
         <source>Replace &amp;all</source>
         <translation>&amp;Tümünü değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="302"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
         <source>Close</source>
         <translation>Kapat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="305"/>
         <source>Also in comments and signal descriptions</source>
         <translation>Yorumlarda ve sinyal açıklamalarında da ara</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="306"/>
         <source>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</source>
         <translation>Kelimeleri elemanların yorumlarında, programın adres yorumlarında, kılavuzun sinyal açıklamalarında ve devre yorumlarında ara</translation>
     </message>
@@ -1183,27 +1386,27 @@
         <translation>Hepsini bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="84"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="85"/>
         <source>FORCED</source>
         <translation>ZORLANMIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="92"/>
         <source>network {0}, line {1}: {2}</source>
         <translation>devre {0}, satır {1}: {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="93"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="94"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="105"/>
         <source>Release</source>
         <translation>Bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/force_list.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/force_list.py" line="109"/>
         <source>{0} forced, {1} passive</source>
         <translation>{0} zorlanmış, {1} pasif</translation>
     </message>
@@ -1385,13 +1588,13 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="67"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="174"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="178"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/editing.py" line="87"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="156"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="160"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -1661,24 +1864,24 @@
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="403"/>
+        <location filename="../ladderworks/gui/main_window.py" line="404"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="409"/>
+        <location filename="../ladderworks/gui/main_window.py" line="410"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="416"/>
+        <location filename="../ladderworks/gui/main_window.py" line="417"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
         <location filename="../ladderworks/gui/main_window.py" line="264"/>
-        <location filename="../ladderworks/gui/main_window.py" line="411"/>
+        <location filename="../ladderworks/gui/main_window.py" line="412"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1706,7 +1909,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="150"/>
         <location filename="../ladderworks/gui/file_actions.py" line="168"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
@@ -1731,118 +1934,118 @@
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)</source>
-        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Tüm dosyalar (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="278"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="327"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
         <location filename="../ladderworks/gui/file_actions.py" line="331"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="335"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="278"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="327"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="384"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="332"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="456"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="460"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="310"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="314"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="315"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
+        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="319"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="340"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="341"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="349"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="350"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="367"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="384"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
         <location filename="../ladderworks/gui/file_actions.py" line="388"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="373"/>
+        <location filename="../ladderworks/gui/main_window.py" line="374"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="389"/>
+        <location filename="../ladderworks/gui/main_window.py" line="390"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="453"/>
+        <location filename="../ladderworks/gui/main_window.py" line="454"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="456"/>
+        <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="488"/>
+        <location filename="../ladderworks/gui/main_window.py" line="489"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="489"/>
+        <location filename="../ladderworks/gui/main_window.py" line="490"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2232,128 +2435,128 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="149"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC KONTROL EKRANI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
         <source>Open .MOD…</source>
         <translation>.MOD aç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
         <source>Take the console&apos;s program</source>
         <translation>Konsoldaki programı al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
         <source>Compile</source>
         <translation>Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="185"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
         <source>Program loaded from the console</source>
         <translation>Program konsoldan yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="205"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
         <source>In the PLC: {0}</source>
         <translation>PLC&apos;deki program: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="216"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="221"/>
         <source>Opened {0}</source>
         <translation>{0} açıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
         <source>Open mnemonic program</source>
         <translation>Mnemonik program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="228"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod *.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>Konsoldaki program kodlanamıyor: hata listesine bakın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="240"/>
         <source>Program taken from the console</source>
         <translation>Program konsoldan alındı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="275"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Derleme başarısız: {0} hata. {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="287"/>
         <source>Converting…</source>
         <translation>Çevriliyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="311"/>
         <source>the program on this screen</source>
         <translation>bu ekrandaki program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="315"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Derleme bitti — {0} devre, {1} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="317"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="318"/>
         <source>({0} warning(s))</source>
         <translation>({0} uyarı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="329"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} sinyal zorlanmış veya eleman pasif. PLC bunlarla başlatılsın mı?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="336"/>
         <source>Compile a program first</source>
         <translation>Önce bir program derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="356"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="357"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="359"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="360"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="363"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="366"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>
@@ -2361,103 +2564,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="279"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="286"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="280"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="287"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="281"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="288"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="282"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="289"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="290"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="284"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="291"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="285"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="292"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="288"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="295"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="296"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Uzaklaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="297"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Yakınlaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="299"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="302"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="309"/>
         <source>{0} %</source>
         <translation>%{0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="373"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="380"/>
         <location filename="../ladderworks/gui/docks/online.py" line="144"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="379"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="386"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="381"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="388"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="383"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="390"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="424"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="431"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="468"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="475"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="478"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="485"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="488"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="495"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
@@ -2758,37 +2961,37 @@
         <translation>{0} sayfa yazıcıya gönderildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="278"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="279"/>
         <source>Printed {0}</source>
         <translation>Yazdırıldı: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="280"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="281"/>
         <source>Page {0} / {1}</source>
         <translation>Sayfa {0} / {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="306"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="308"/>
         <source>Cross reference</source>
         <translation>Çapraz referans</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="309"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="311"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="310"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="312"/>
         <source>Symbol</source>
         <translation>Sembol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="311"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="313"/>
         <source>Written in networks</source>
         <translation>Yazıldığı devreler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="312"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="314"/>
         <source>Read in networks</source>
         <translation>Okunduğu devreler</translation>
     </message>
@@ -2796,224 +2999,224 @@
 <context>
     <name>ProgramProperties</name>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="29"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
         <source>Machine-tool builder</source>
         <translation>Takım tezgâhı üreticisi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="30"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
         <source>Machine-tool name</source>
         <translation>Takım tezgâhı adı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
         <source>PMC &amp; NC type</source>
         <translation>PMC ve NC tipi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
         <source>Program number</source>
         <translation>Program numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
         <source>Edition</source>
         <translation>Sürüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
         <source>Drawing number</source>
         <translation>Çizim numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
         <source>Date</source>
         <translation>Tarih</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="38"/>
         <source>Designed by</source>
         <translation>Tasarlayan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="39"/>
         <source>ROM written by</source>
         <translation>ROM&apos;a yazan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="38"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="40"/>
         <source>Remarks</source>
         <translation>Notlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
         <source>FANUC LADDER-III export</source>
         <translation>FANUC LADDER-III dışa aktarımı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="61"/>
         <source>LadderWorks (seed manual)</source>
         <translation>LadderWorks (temel kılavuz)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
         <source>yes</source>
         <translation>evet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
         <source>no</source>
         <translation>hayır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="63"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
         <source>File</source>
         <translation>Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="64"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
         <source>(not saved)</source>
         <translation>(kaydedilmedi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
         <source>Dialect</source>
         <translation>Lehçe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="66"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="71"/>
         <source>Encoding</source>
         <translation>Kodlama</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="67"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="72"/>
         <source>Byte order mark</source>
         <translation>Bayt sırası işareti (BOM)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="73"/>
         <source>Line ends</source>
         <translation>Satır sonları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="74"/>
         <source>Framed in %@A … %@E</source>
         <translation>%@A … %@E çerçeveli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="75"/>
         <source>Networks</source>
         <translation>Devreler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="71"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="76"/>
         <source>Steps</source>
         <translation>Adımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="73"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="78"/>
         <source>Symbols (%@2)</source>
         <translation>Semboller (%@2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="75"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
         <source>Messages (%@4)</source>
         <translation>Mesajlar (%@4)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="136"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="141"/>
         <source>Program properties</source>
         <translation>Program özellikleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="144"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
         <source>General</source>
         <translation>Genel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="145"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
         <source>Property</source>
         <translation>Özellik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="146"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="151"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="148"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
         <source>Title (%@1)</source>
         <translation>Başlık (%@1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="154"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
         <source>Item</source>
         <translation>Öğe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="154"/>
         <source>Meaning</source>
         <translation>Anlamı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="155"/>
         <source>Text</source>
         <translation>Metin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="152"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
         <source>System parameters (%@0)</source>
         <translation>Sistem parametreleri (%@0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="155"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="160"/>
         <source>I/O modules (%@5)</source>
         <translation>G/Ç modülleri (%@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="156"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="161"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="156"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="161"/>
         <source>Group</source>
         <translation>Grup</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
         <source>Base</source>
         <translation>Taban</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
         <source>Slot</source>
         <translation>Yuva</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
         <source>Module</source>
         <translation>Modül</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="161"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="166"/>
         <source>Sections</source>
         <translation>Bölümler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="167"/>
         <source>Header</source>
         <translation>Başlık satırı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="167"/>
         <source>Lines</source>
         <translation>Satırlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="168"/>
         <source>First line</source>
         <translation>İlk satır</translation>
     </message>
@@ -3167,112 +3370,112 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/scenario.py" line="96"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="219"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="221"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Senaryo dosyaları (*.csv);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="107"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="108"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="125"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="182"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
         <source>passed</source>
         <translation>geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="183"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="185"/>
         <source>FAILED</source>
         <translation>BAŞARISIZ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="167"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="169"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: {1} denetimin tümü geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="170"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="172"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {2} denetimden {1} tanesi başarısız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="218"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
         <source>Save the recorded scenario</source>
         <translation>Kaydedilen senaryoyu sakla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
         <source>recorded in LadderWorks</source>
         <translation>LadderWorks ile kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="233"/>
         <source>Recording inputs and forces...</source>
         <translation>Girişler ve zorlamalar kaydediliyor...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="241"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="243"/>
         <source>Recorded {0} changes</source>
         <translation>{0} değişiklik kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="250"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="252"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="255"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="265"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
         <source>PLC scenario</source>
         <translation>PLC senaryosu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="266"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
         <source>Run scenario...</source>
         <translation>Senaryo çalıştır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
         <source>Record scenario</source>
         <translation>Senaryo kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Line</source>
         <translation>Satır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Check</source>
         <translation>Denetim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Expected</source>
         <translation>Beklenen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Got</source>
         <translation>Okunan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
         <source>Time (ms)</source>
         <translation>Zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
@@ -3343,142 +3546,142 @@
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="185"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="196"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="197"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="208"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="209"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="222"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="370"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="389"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="397"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="398"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="404"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="406"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="415"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="416"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="417"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="418"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="454"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="455"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="455"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="456"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="456"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="457"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="457"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="458"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="459"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="461"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="461"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="462"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="462"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="463"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="463"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="467"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="474"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="475"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="477"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>

@@ -22,7 +22,7 @@ _parsed: dict[tuple[str, str | None], ParseResult] = {}
 def add_dialect_option(parser: argparse.ArgumentParser) -> None:
     """Add `--dialect NAME` to a command that reads programs."""
     parser.add_argument("--dialect", metavar="NAME",
-                        help="read programs as this dialect (delta, pmc); "
+                        help="read programs as this dialect (delta, fatek, pmc); "
                              "default: recognised from the content")
 
 

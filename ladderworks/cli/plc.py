@@ -54,6 +54,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     run.add_argument("--print", action="append", default=[], metavar="ADDR,...",
                      dest="print_", help="print ADDR = VALUE lines at the end (repeatable)")
     run.add_argument("--trace", metavar="ADDR,...", help="print a CSV trace of these")
+    run.add_argument("--ascii-out", metavar="FILE",
+                     help="write what a Fatek FUN 94 ASCWR sent to the terminal (UTF-8)")
     run.add_argument("--period", type=int, default=DEFAULT_PERIOD_MS, metavar="MS",
                      help="trace sampling period in ms")
     run.set_defaults(handler=_run)
@@ -186,6 +188,7 @@ def _run(args: argparse.Namespace) -> int:
         return 2
     plc = PlcRun(period_ms=args.scan_period, divisions=args.divisions)
     plc.set_parameters(parameters.parameters)
+    _use_ascii_files(plc, args.file)
     problems = plc.load(binary)
     if problems or plc.engine is None:
         _report(args.file, problems)
@@ -223,7 +226,20 @@ def _run(args: argparse.Namespace) -> int:
             print(f"{sample.time_ms}," + ",".join(str(v) for v in sample.values))
     for target in prints:
         print(f"{target.text} = {target.read(engine)}")
+    if args.ascii_out:
+        Path(args.ascii_out).write_text(plc.ascii_terminal.text(), encoding="utf-8",
+                                        newline="")
     return 1 if stopped else 0
+
+
+def _use_ascii_files(plc: PlcRun, program: str) -> None:
+    """The ASCII files of a Fatek program (`PROGRAM.ascii` beside it) for FUN 94; their
+    problems are reported, a file with errors makes its ASCWR end with ERR."""
+    from ladderworks.core.dialects.fatek.ascii_files import ascii_path, load_ascii_files
+
+    files = load_ascii_files(Path(program))
+    _report(str(ascii_path(Path(program))), files.diagnostics)
+    plc.use_ascii_files(files.files)
 
 
 def _parameters(program: str, named: str | None) -> ParameterFile | None:

@@ -7,7 +7,10 @@ import sys
 from collections.abc import Sequence
 
 from ladderworks.cli._programs import add_dialect_option, load_program
+from ladderworks.core import dialects
 from ladderworks.core.address import Address, AddressError, looks_like_address
+from ladderworks.core.dialects.spelling import spelling
+from ladderworks.core.instructions import spec_for
 from ladderworks.core.symbols import SymbolTable, describe, resolve
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
 
@@ -40,12 +43,21 @@ def element_text(use: Use) -> str:
     return f"{text} {use.parameter}" if use.parameter else text
 
 
-def use_row(use: Use, symbols: SymbolTable | None) -> tuple[str, ...]:
-    """One table row: the columns of HEADERS."""
-    written = str(use.address) + (f":{use.width}" if use.width > 1 else "")
-    return (written, describe(use.address, symbols) or "-", str(use.network + 1),
-            use.label or "-", use.unit or "-", str(use.line or "-"), use.instruction,
-            element_text(use), _ACCESS_TEXT[use.access])
+def use_row(use: Use, symbols: SymbolTable | None, dialect: str | None = None
+            ) -> tuple[str, ...]:
+    """One table row: the columns of HEADERS (a Delta program's in Delta's spelling)."""
+    spelled = spelling(dialect)
+    if spelled.dialect:
+        spec = spec_for(use.instruction)
+        written = spelled.address(use.address)
+        name = spelled.name(spec) if spec is not None else use.instruction
+        described = "-"
+    else:
+        written = str(use.address) + (f":{use.width}" if use.width > 1 else "")
+        name = use.instruction
+        described = describe(use.address, symbols) or "-"
+    return (written, described, str(use.network + 1), use.label or "-", use.unit or "-",
+            str(use.line or "-"), name, element_text(use), _ACCESS_TEXT[use.access])
 
 
 def table(rows: Sequence[tuple[str, ...]]) -> str:
@@ -67,7 +79,8 @@ def _xref(args: argparse.Namespace) -> int:
     queries: list[tuple[str, Address]] = []
     for text in args.addresses:
         try:
-            queries.append((text, resolve(text, symbols)))
+            queries.append((text, dialects.parse_target(text, program.dialect)[0]
+                            if dialects.get(program.dialect) else resolve(text, symbols)))
         except AddressError as error:
             reason = (error.diagnostic.message() if looks_like_address(text)
                       else f"'{text}' is neither an address nor a symbol of {args.file}")
@@ -75,7 +88,8 @@ def _xref(args: argparse.Namespace) -> int:
             return 2
     xref = CrossReference.from_program(program)
     if not queries:
-        sys.stdout.write(table([use_row(use, symbols) for use in xref.sorted_uses()]))
+        sys.stdout.write(table([use_row(use, symbols, program.dialect)
+                                for use in xref.sorted_uses()]))
         return 0
     rows: list[tuple[str, ...]] = []
     unused = False
@@ -85,7 +99,7 @@ def _xref(args: argparse.Namespace) -> int:
             named = text if text == str(address) else f"{text} ({address})"
             print(f"ladderworks-cli xref: {named} is not used in {args.file}", file=sys.stderr)
             unused = True
-        rows += [use_row(use, symbols) for use in uses]
+        rows += [use_row(use, symbols, program.dialect) for use in uses]
     if rows:
         sys.stdout.write(table(rows))
     return 1 if unused else 0

@@ -177,6 +177,60 @@ MESSAGES: dict[str, str] = {
     "alarm-empty": QT_TRANSLATE_NOOP("Diagnostic", "message {number} has no text"),
     "not-implemented": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} is not implemented in the simulator yet"),
+    # Fatek FBs programs (docs/dialects.md, Fatek)
+    "fatek-ascii-quote": QT_TRANSLATE_NOOP(
+        "Diagnostic", "ASCII format: the text opened by {quote} is never closed"),
+    "fatek-ascii-repeat": QT_TRANSLATE_NOOP(
+        "Diagnostic", "ASCII format: a repeat count must be 1 to 999, found {count}"),
+    "fatek-ascii-item": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "ASCII format: '{text}' is not an item (expected 'text', MX, hex codes,"
+        " \"w.dRn\", / or \\)"),
+    "fatek-ascii-variable": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "ASCII format: \"{text}\" is not a variable (expected e.g. \"8.2R0\" or \"4R10H\")"),
+    "fatek-ascii-after-end": QT_TRANSLATE_NOOP(
+        "Diagnostic", "ASCII format: text after END: '{text}'"),
+    "fatek-ascii-no-end": QT_TRANSLATE_NOOP("Diagnostic", "ASCII format: END is missing"),
+    "fatek-unknown-instruction": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{name}' is not a Fatek instruction"),
+    "fatek-stray-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "an operand line '{text}' without a FUN, TMR or CTR before it"),
+    "fatek-missing-device": QT_TRANSLATE_NOOP("Diagnostic", "{name} needs a device"),
+    "fatek-device": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a Fatek device"),
+    "fatek-device-kind": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} cannot take '{text}' (use {kinds})"),
+    "fatek-device-range": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is out of range ({range})"),
+    "fatek-no-input": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} with nothing before it: a network starts with ORG"),
+    "fatek-stack-empty": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} needs two blocks: start the second one with LD"),
+    "fatek-tr-reused": QT_TRANSLATE_NOOP(
+        "Diagnostic", "TR{number} is set twice in this network"),
+    "fatek-tr-count": QT_TRANSLATE_NOOP(
+        "Diagnostic", "a network has at most {limit} TR points"),
+    "fatek-tr-unset": QT_TRANSLATE_NOOP(
+        "Diagnostic", "LD TR{number} before OUT TR{number} in this network"),
+    "fatek-output-on-rail": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} on the left rail: put ORG SHORT before it"),
+    "fatek-open-block": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)"),
+    "fatek-unknown-fun": QT_TRANSLATE_NOOP(
+        "Diagnostic", "FUN {number} is not a Fatek function LadderWorks knows"),
+    "fatek-missing-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name}: the operand line {param} is missing"),
+    "fatek-extra-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} takes no more operands, found '{text}'"),
+    "fatek-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' cannot be the operand {param} (a register, or a constant)"),
+    "fatek-not-simulated": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} is kept and drawn but not simulated: its outputs stay 0"),
+    "fatek-timer-base": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not the time base of {name} ({base})"),
+    "fatek-fo": QT_TRANSLATE_NOOP(
+        "Diagnostic", "FO {text}: no function output here (FO0-FO7 after a box)"),
+    "fatek-ascii-section": QT_TRANSLATE_NOOP(
+        "Diagnostic", "ASCII files: '{text}' is not a section header such as [R1000]"),
     # dialects (docs/dialects.md): devices and operands of a Delta or Fatek program
     "device-unknown": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' is not a device (use {letters} with a number)"),
@@ -190,6 +244,19 @@ MESSAGES: dict[str, str] = {
     "dialect-constant": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a K or H constant"),
     "dialect-not-simulated": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} is a {dialect} instruction the simulator does not run"),
+    "dvp-missing-sret": QT_TRANSLATE_NOOP(
+        "Diagnostic", "subroutine without its SRET (before the next pointer or END)"),
+    "dvp-sret-alone": QT_TRANSLATE_NOOP(
+        "Diagnostic", "SRET without a subroutine pointer (P n after FEND) before it"),
+    "dvp-outside-subroutine": QT_TRANSLATE_NOOP(
+        "Diagnostic", "after FEND only subroutines (P n ... SRET) and END may follow"),
+    "dvp-pointer-missing": QT_TRANSLATE_NOOP(
+        "Diagnostic", "no pointer P{label} where this jump can reach it"),
+    "dvp-call-missing": QT_TRANSLATE_NOOP(
+        "Diagnostic", "no subroutine P{program} after FEND for this CALL"),
+    "dvp-no-logic": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} without a logic result before it (start with LD)"),
+    "dvp-pointer-twice": QT_TRANSLATE_NOOP("Diagnostic", "this pointer P number is used twice"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),

@@ -163,6 +163,7 @@ class InstructionSpec:
     binary: bool = False  # arithmetic: signed binary data (ADDB, ...), else BCD
     stack: StackOp = StackOp.NONE  # basic without operand: a dialect's stack operation
     dialect: str = ""  # the dialect whose row it is (core/dialects), "" for the PMC's
+    gates_boxes: bool = False  # COMMON: while off, boxes in its range see their input off too
 
     @property
     def help_key(self) -> str:

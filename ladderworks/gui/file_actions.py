@@ -209,9 +209,13 @@ class FileActions(_Window):
             str(self.path.parent if self.path else ""),
             translate(
                 "MainWindow",
-                "Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT)"
+                "Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT"
+                " *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS)"
                 ";;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC)"
-                ";;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;All files (*)"))
+                ";;LADDER-III exports (*.txt *.TXT *.mnc *.MNC)"
+                ";;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL)"
+                ";;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT)"
+                ";;All files (*)"))
         if name:
             self.load(name)
 

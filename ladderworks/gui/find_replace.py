@@ -138,14 +138,15 @@ class FindReplaceDialog(Retranslating, QDialog):
             return ""
         found = self.editor.networks[index].element_at(row, col)
         if found is not None and isinstance(found[1], Contact | Coil) and found[1].address:
-            return str(found[1].address)
+            return self.editor.spell_address(found[1].address)
         return ""
 
     # -- finding -------------------------------------------------------------------------
 
     def query(self) -> Query | None:
         """The query typed in the find field (None when blank)."""
-        return parse_query(self.find_text.text(), self.editor.model.symbols)
+        return parse_query(self.find_text.text(), self.editor.model.symbols,
+                           self.editor.model.dialect)
 
     def hits(self) -> list[Found]:
         """Every place the query finds, in program order (the whole program is laid out)."""
@@ -222,7 +223,7 @@ class FindReplaceDialog(Retranslating, QDialog):
         if label:  # the LADDER-III label beside the number the console shows (N15)
             where = translate("FindReplace", "{0} ({1})").format(network_tag(hit.network + 1),
                                                                  label)
-        what = (str(hit.address) if hit.address is not None
+        what = (self.editor.spell_address(hit.address) if hit.address is not None
                 else translate("FindReplace", "network comment"))
         self._say(translate("FindReplace", "{0} of {1}: {2}, {3}").format(
             number + 1, len(hits), where, what))
@@ -239,7 +240,8 @@ class FindReplaceDialog(Retranslating, QDialog):
 
     def _new_address(self, query: Query | None) -> Address | None:
         try:
-            return replacement_address(self.replace_text.text(), query, self.editor.model.symbols)
+            return replacement_address(self.replace_text.text(), query, self.editor.model.symbols,
+                                       self.editor.model.dialect)
         except Refused as refused:
             self._say(diagnostic_text(refused.diagnostic))
             return None

@@ -284,6 +284,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
                                 else "")
         self.signals_dock.set_symbols(program.symbols)
         self.plc_docks.session.set_symbols(program.symbols)
+        self.plc_docks.ascii_output.use_program(self.path)  # a Fatek program's ASCII files
         self.program_opened.emit(program)
 
     def show_program_properties(self) -> QDialog:
@@ -341,10 +342,10 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Parse the text view and show it as ladder; errors stay in the text view."""
         if not self.model.showing_text:
             return True
-        from ladderworks.core.il import parse
+        from ladderworks.core.il.reading import parse_text  # a Delta text: Delta's reader
 
         modified = self.text_view.document().isModified()
-        result = parse(bad_bytes_back(self.text_view.toPlainText()))
+        result = parse_text(bad_bytes_back(self.text_view.toPlainText()))
         self.errors.set_diagnostics(result.diagnostics)
         if not result.ok:
             self.errors.show()

@@ -16,6 +16,7 @@ from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPagedPaintDevice, QPain
 from PySide6.QtWidgets import QStyleOptionGraphicsItem
 
 from ladderworks.core.address import Address
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il.program import Program
 from ladderworks.core.ladder.model import DEFAULT_COLUMNS, LadderNetwork
 from ladderworks.core.symbols import SymbolTable, describe
@@ -282,6 +283,7 @@ class LadderPages:
     def _paint_network(self, painter: QPainter, placement: Placement) -> None:
         network = self.job.networks[placement.network]
         item = LabelledNetworkItem(network, placement.network + 1, self.job.describe)
+        item.spelling = spelling(self.job.dialect)  # a Delta program: Delta's spelling
         scale = placement.scale
         top, height = placement.top / scale, placement.height / scale  # in the item's units
         option = QStyleOptionGraphicsItem()

@@ -19,8 +19,10 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core import dialects
 from ladderworks.core.il.program import FANUC, Program
 from ladderworks.gui.retranslate import Retranslating
+from ladderworks.gui.translation import ui_is_turkish
 
 translate = QCoreApplication.translate
 
@@ -57,6 +59,9 @@ def general_rows(program: Program, path: Path | None) -> list[tuple[str, str]]:
     ends = {"\r\n": "CR LF", "\r": "CR", "\n": "LF"}.get(form.newline, repr(form.newline))
     dialect = (translate("ProgramProperties", "FANUC LADDER-III export") if program.dialect == FANUC
                else translate("ProgramProperties", "LadderWorks (seed manual)"))
+    other = dialects.of(program)
+    if other is not None:  # a Delta program: the dialect's own title, in the UI language
+        dialect = other.title_tr if ui_is_turkish() else other.title
     yes, no = translate("ProgramProperties", "yes"), translate("ProgramProperties", "no")
     symbols = program.symbols
     return [

@@ -160,7 +160,7 @@ class _Checker:
         # and of its parameter tuple (the parser shares one tuple among equal lines)
         self.own: dict[tuple[int, int], list[_Own]] = {}
         self.layouts: dict[int, _Layout] = {}  # by the identity of the row
-        found = dialect_rules(self.dialect)  # a dialect's devices (core/dialects), or None
+        found = self.rules = dialect_rules(self.dialect)  # a dialect's (core/dialects), or None
         self.fits: Callable[[Address, int], bool] = _byte_data_fits if found is None \
             else found.devices.holds
         self.spell: Callable[[Address], str] = str if found is None else found.format_address
@@ -305,6 +305,8 @@ class _Checker:
                 self.report(problem.code, every[index], network_at[index],
                             dict(problem.args), warning=problem.warning)
         self.out.sort(key=lambda d: (d.line, d.column))
+        if self.rules is not None:  # a dialect's program: its own words
+            return [self.rules.localize(d) for d in self.out]
         return self.out
 
     def basic(self, ins: Instruction, n: int, spec: InstructionSpec, depth: int,

@@ -19,6 +19,7 @@ __all__ = ["Dialect", "by_code", "every", "format_address", "get", "memory_sizes
 # The modules of the built-in dialects, each with a `DIALECT`; a new dialect adds its line.
 BUILTIN: tuple[str, ...] = (
     "ladderworks.core.dialects.delta",
+    "ladderworks.core.dialects.fatek",
 )
 
 SNIFF_THRESHOLD = 50  # a text scoring this much for a dialect is read as that dialect

@@ -3,16 +3,16 @@
 from __future__ import annotations
 
 import importlib
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from ladderworks.core.address import Address, Area
+from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.dialects.devices import DeviceMap
-from ladderworks.core.instructions import InstructionSpec
+from ladderworks.core.instructions import InstructionSpec, lookup
 
 if TYPE_CHECKING:
-    from ladderworks.core.diagnostics import Diagnostic
     from ladderworks.core.il.program import Network, Program
     from ladderworks.core.il.textform import TextForm
 
@@ -45,6 +45,12 @@ class Dialect:
     relays: Relays | None = None  # its special relays, set by the engine before each scan
     period_ms: int = 10  # its usual scan period (the CLI's and the session's default)
     extensions: tuple[str, ...] = ()  # file name endings its files use (".dvp")
+    namer: str = ""  # "module:function": a row's name in the dialect's text (LD for RD)
+    spelling: str = ""  # "module:function" making its dialects.spelling.Spelling (display)
+    # the rows each module of core/plc/functions implements for it (plc/families.py merges them)
+    families: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
+    # the compiler checks' codes said in the dialect's words (sp-without-spe: its SRET)
+    codes: Mapping[str, str] = field(default_factory=dict)
 
     def read(self, text: str, form: TextForm, lines: list[str],
              ends: list[str]) -> tuple[Program, list[Diagnostic]]:
@@ -56,6 +62,31 @@ class Dialect:
         """A new or changed network as this dialect's text (Save, format)."""
         printer: NetworkPrinter = _function(self.printer)  # type: ignore[assignment]
         return printer(network, first)
+
+    def instruction_name(self, spec: InstructionSpec) -> str:
+        """A row's name as this dialect writes it (`LD` for RD, `TMR` for DVP.TMR)."""
+        if not self.namer:
+            return spec.text_name
+        namer: Callable[[InstructionSpec], str] = _function(self.namer)  # type: ignore[assignment]
+        return namer(spec)
+
+    def localize(self, diagnostic: Diagnostic) -> Diagnostic:
+        """A compiler check's diagnostic in this dialect's words: its code (`codes`) and the
+        instruction it names."""
+        code = self.codes.get(diagnostic.code, diagnostic.code)
+        args = diagnostic.args
+        name = args.get("name")
+        spec = lookup(name) if isinstance(name, str) else None
+        if spec is not None:
+            args = {**args, "name": self.instruction_name(spec)}
+        if code == diagnostic.code and args is diagnostic.args:
+            return diagnostic
+        return replace(diagnostic, code=code, args=args)
+
+    @staticmethod
+    def function(path: str) -> Callable[..., object]:
+        """The function `module:name` one of the dialect's paths names."""
+        return _function(path)
 
     def format_address(self, address: Address) -> str:
         """An address in this dialect's spelling (the PMC's when no device lives there)."""

@@ -14,7 +14,7 @@ from ladderworks.core.collector import collector_paused
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il import parser
 from ladderworks.core.il.parser import ParseResult
-from ladderworks.core.il.textform import decode_lines
+from ladderworks.core.il.textform import TextForm, decode_lines, dominant_newline, split_with_ends
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -67,3 +67,17 @@ def parse_for_check(path: str | Path, dialect: str | None = None) -> ParseResult
         data = file.read()
     found = choose(data, dialect)
     return parser.parse_for_check(path) if found is None else read_dialect(data, found)
+
+
+def parse_text(text: str, dialect: str | None = None) -> ParseResult:
+    """Program text (a text view, the PLC control screen) in whichever dialect it is written:
+    `dialect` names one ("fanuc": the PMC parser with the 30i ranges), else the text is
+    sniffed."""
+    found = dialects.get(dialect) if dialect else dialects.sniff(text)
+    if found is None:
+        return parser.parse(text, dialect if dialect == "fanuc" else None)
+    lines, ends = split_with_ends(text)
+    form = TextForm(newline=dominant_newline(ends), final_newline=not ends or ends[-1] != "")
+    with collector_paused(promote=True):
+        program, diagnostics = found.read(text, form, lines, ends)
+    return ParseResult(program, sorted(diagnostics, key=lambda d: (d.line, d.column)))

@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from ladderworks.core.il.printer import print_instruction
-from ladderworks.core.il.program import Instruction
+from ladderworks.core.dialects.spelling import Spelling, spelling
 from ladderworks.core.instructions import Write
 from ladderworks.core.ladder.model import (
     Coil,
@@ -32,22 +31,22 @@ def _symbol(element: Contact | Coil | Wire) -> str:
            f"{'|' if isinstance(element, Contact) else ')'}---"
 
 
-def _label(element: Contact | Coil) -> str:
-    text = str(element.address) if element.address is not None else "?"
+def _label(element: Contact | Coil, spell: Spelling) -> str:
+    text = spell.address(element.address) if element.address is not None else "?"
     return text[:CELL].center(CELL)
 
 
-def _box_rows(box: FunctionBox) -> list[tuple[str, str]]:
+def _box_rows(box: FunctionBox, spell: Spelling) -> list[tuple[str, str]]:
     """(label line, symbol line) texts for each row of a box, each 2*CELL+1 wide."""
     width = 2 * CELL + 1
     inner = width - 2
-    words = print_instruction(Instruction(box.name, params=box.params)).split()[1:]
+    words = " ".join(spell.params(box.spec, box.params)).split()
     rows: list[tuple[str, str]] = []
     pin_names = {p: name for p, name in zip(box.pins, box.inputs, strict=False)}
     for i in range(box.height):
         pin = pin_names.get(i, "")
         if i == 0:
-            title = box.spec.text_name if box.spec.known else f"SUB {box.spec.sub}"
+            title = spell.name(box.spec) if box.spec.known else f"SUB {box.spec.sub}"
             label = "+" + f" {title} ".center(inner, "-") + "+"
         else:
             label = "|" + " " * inner + "|"
@@ -74,15 +73,18 @@ def _symbol_notes(network: LadderNetwork, symbols: SymbolTable | None) -> list[s
     return seen
 
 
-def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None) -> list[str]:
+def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None,
+                 spell: Spelling | None = None) -> list[str]:
     """The network as text lines: two lines per grid row (addresses, then symbols), then each
-    element's program symbol with its address (`X21.7 ESKIP`) when `symbols` has them."""
+    element's program symbol with its address (`X21.7 ESKIP`) when `symbols` has them.
+    `spell`: the program's dialect's spelling (Delta's `X17`), the PMC's by default."""
+    spell = spell or spelling(None)
     lines = ["// " + text for text in network.comments]
     if network.label:
         lines.append(network.label + ":")
     if network.listing is not None:
         lines.append("  (kept as instruction list: it has no ladder picture)")
-        lines.extend("    " + print_instruction(ins) for ins in network.listing)
+        lines.extend("    " + spell.instruction(ins) for ins in network.listing)
         return lines
     width = _x(network.columns + 1) + 1
     covered: dict[tuple[int, int], bool] = {}
@@ -107,10 +109,10 @@ def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None) -> 
             if isinstance(item, Contact | Coil | Wire):
                 symbol[_x(c) + 1:_x(c) + 1 + CELL] = _symbol(item)
                 if isinstance(item, Contact | Coil):
-                    label[_x(c) + 1:_x(c) + 1 + CELL] = _label(item)
+                    label[_x(c) + 1:_x(c) + 1 + CELL] = _label(item, spell)
         for (br, bc), element in network.elements():
             if isinstance(element, FunctionBox) and br <= r < br + element.height:
-                top, body = _box_rows(element)[r - br]
+                top, body = _box_rows(element, spell)[r - br]
                 label[_x(bc) + 1:_x(bc) + 1 + len(top)] = top
                 symbol[_x(bc) + 1:_x(bc) + 1 + len(body)] = body
         lines.append("".join(label).rstrip())
@@ -118,7 +120,8 @@ def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None) -> 
     for (r, c), element in network.elements():
         if isinstance(element, Wire):
             continue
-        name = (str(element.address) if isinstance(element, Contact | Coil) and element.address
+        name = (spell.address(element.address) if isinstance(element, Contact | Coil)
+                and element.address
                 else element.name if isinstance(element, FunctionBox) else "?")
         notes.extend(f"   ({r},{c}) {name}: // {text}" for text in element.lead)
         if element.comment:
@@ -129,9 +132,10 @@ def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None) -> 
 def draw_document(doc: LadderDocument) -> str:
     """Every network, one after another, numbered from 1 (symbols from the program's %@2)."""
     symbols = doc.origin.symbols if doc.origin is not None else None
+    spell = spelling(doc.origin.dialect if doc.origin is not None else None)
     out: list[str] = ["// " + text for text in doc.header]
     for index, network in enumerate(doc.networks, start=1):
         out.append(f"== network {index} " + "=" * 40)
-        out.extend(draw_network(network, symbols))
+        out.extend(draw_network(network, symbols, spell))
     out.extend("// " + text for text in doc.trailer)
     return "\n".join(out) + "\n"

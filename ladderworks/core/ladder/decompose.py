@@ -297,7 +297,10 @@ def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
 
 
 def _box_param_problems(box: FunctionBox, dialect: str = "seed") -> list[Diagnostic]:
-    """The parser's complaints about a box's parameters (count, kinds, ranges)."""
+    """The parser's complaints about a box's parameters (count, kinds, ranges); a dialect's
+    box (Delta TMR) holds the values its reader made, which the compiler checks see."""
+    if box.spec.dialect:
+        return []
     from ladderworks.core.il.printer import print_instruction
     from ladderworks.core.ladder.edits import function_params
 

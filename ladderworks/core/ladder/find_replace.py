@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
+from ladderworks.core import dialects
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Refused
 from ladderworks.core.il.program import Instruction, ParamValue
@@ -49,14 +50,25 @@ class Found:
     instruction: int | None = None
 
 
-def parse_query(text: str, symbols: SymbolTable | None = None) -> Query | None:
+def _typed(text: str, symbols: SymbolTable | None, dialect: str | None,
+           want: str | None = None) -> Address:
+    """A typed address: a program symbol or the PMC's spelling, or a device of the program's
+    dialect (Delta's `X17`, `D0`: `want` "bit" or "word" for a T/C). AddressError."""
+    if dialects.get(dialect) is not None:
+        return dialects.parse_target(text, dialect, want)[0]
+    return resolve(text, symbols)
+
+
+def parse_query(text: str, symbols: SymbolTable | None = None,
+                dialect: str | None = None) -> Query | None:
     """The query a typed text means (None for a blank text): an address or a program symbol
-    finds that address; other words are looked for in addresses and symbols."""
+    finds that address (in a Delta program a device, `M10`); other words are looked for in
+    addresses and symbols."""
     text = text.strip()
     if not text:
         return None
     try:
-        return Query(text, resolve(text, symbols))
+        return Query(text, _typed(text, symbols, dialect))
     except AddressError:
         return Query(text)
 
@@ -110,12 +122,14 @@ def _in_instruction(index: int, number: int, instruction: Instruction,
 
 
 def replacement_address(text: str, query: Query | None,
-                        symbols: SymbolTable | None = None) -> Address:
+                        symbols: SymbolTable | None = None, dialect: str | None = None
+                        ) -> Address:
     """The address a typed replacement names; Refused when the query is not one address, the
     replacement is not an address or symbol, or a bit would replace a byte (or the reverse)."""
     if query is None or query.address is None:
         raise Refused("replace-needs-address", text=query.text if query is not None else "")
-    new = resolve(text.strip(), symbols)  # AddressError is a Refused with the address's reason
+    # AddressError is a Refused with the address's reason
+    new = _typed(text.strip(), symbols, dialect, "word" if query.address.bit is None else "bit")
     if (new.bit is None) != (query.address.bit is None):
         raise Refused("replace-kind", found=str(query.address), replacement=str(new))
     if new == query.address:

@@ -73,6 +73,7 @@ class _Range:
 
     ident: int
     left: int | None
+    gates_boxes: bool = False  # COM only: its gate also turns the boxes' inputs off (Delta MC)
 
 
 def _count_coil(ranges: list[_Range]) -> _Range | None:
@@ -467,6 +468,9 @@ class _Generator:
         self.store_all()
         first = len(self.values) - count if count else len(self.values) - 1
         inputs = [self.var(d) for d in range(first, len(self.values))]
+        gating = next((r for r in reversed(self.commons) if r.gates_boxes), None)
+        if gating is not None and count and spec.flow is Flow.NONE:  # Delta MC off: input off
+            inputs[-1] = f"(cm{gating.ident} & {inputs[-1]})"
         act = inputs[-1] if inputs else "1"
         flow = spec.flow
         ended: list[_Range] = []
@@ -498,7 +502,8 @@ class _Generator:
             if self.commons:
                 gate = f"{gate} & cm{self.commons[-1].ident}"
             self.emit(f"cm{ident} = CM[{ident}] = {gate}")
-            self.commons.append(_Range(ident, _counted(op.params[0] if op.params else 0)))
+            self.commons.append(_Range(ident, _counted(op.params[0] if op.params else 0),
+                                       spec.gates_boxes))
         elif flow is Flow.COMMON_END:
             for k in range(len(self.commons) - 1, -1, -1):
                 if self.commons[k].left is None:

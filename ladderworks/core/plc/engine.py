@@ -92,6 +92,12 @@ class ScanEngine:
         self._first_scan = True  # the first scan since the engine was made or cold-started
         self._current = self._variant()
 
+    @property
+    def extra(self) -> dict[str, Any]:
+        """The tables the functional instructions share with their owner (a Fatek program's
+        ASCII files and terminal: `plc/functions/fatek_io.py`)."""
+        return self._ctx.extra
+
     # -- the scan ------------------------------------------------------------------------
 
     def _variant(self) -> GeneratedScan:

@@ -6,7 +6,7 @@ refuses a row's name that nothing registered."""
 
 from __future__ import annotations
 
-from ladderworks.core.dialects.delta.instructions import FAMILIES as DELTA_FAMILIES
+from ladderworks.core import dialects
 from ladderworks.core.instructions import FUNCTIONS, implemented
 
 FAMILIES: dict[str, tuple[str, ...]] = {}
@@ -15,9 +15,10 @@ for _spec in FUNCTIONS:
         FAMILIES.setdefault(_spec.family, ())
         FAMILIES[_spec.family] += (_spec.name,)
 
-# A dialect's families (core/dialects/<name>/instructions.py says which module runs which row).
-FAMILIES.update(DELTA_FAMILIES)
+# Each dialect's families (its `Dialect.families`: which module runs which of its rows).
+for _dialect in dialects.every():
+    FAMILIES.update(_dialect.families)
 
 # Every functional instruction that has an implementation.
-IMPLEMENTED: frozenset[str] = implemented() | {name for names in DELTA_FAMILIES.values()
-                                               for name in names}
+IMPLEMENTED: frozenset[str] = implemented() | {
+    name for dialect in dialects.every() for names in dialect.families.values() for name in names}

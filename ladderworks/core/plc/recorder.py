@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import contextlib
 import os
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
 from ladderworks.core.address import Address, Area
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.plc.scenario import HEADER
 from ladderworks.core.plc.session import PlcRun
 
@@ -24,15 +26,17 @@ class Recorded:
     value: int
     width: int = 1
 
-    def fields(self) -> list[str]:
-        """The command's fields after the wait."""
+    def fields(self, spell: Callable[[Address], str] = str) -> list[str]:
+        """The command's fields after the wait (addresses as `spell` writes them: a Delta
+        program's devices)."""
+        where = spell(self.address)
         if self.kind == "force":
-            return [str(self.address), str(self.value)]
+            return [where, str(self.value)]
         if self.kind == "release":
-            return [str(self.address)]
+            return [where]
         if self.address.bit is not None:
-            return [str(self.address), str(self.value)]
-        return [str(self.address), f"0x{self.value:X}", _TYPES.get(self.width, "BYTE")]
+            return [where, str(self.value)]
+        return [where, f"0x{self.value:X}", _TYPES.get(self.width, "BYTE")]
 
 
 _COMMANDS = {"set": "SET", "write": "SET", "force": "FORCE", "release": "RELEASE"}
@@ -75,6 +79,7 @@ class ScenarioRecorder:
     def text(self, expect: list[tuple[Address, int]] | None = None) -> str:
         """The scenario: one line per change, then an EXPECT of each (address, width) given
         (default: every Y byte that is not 0 at the end) at the last scan recorded."""
+        spelled = spelling(self.plc.program_dialect)  # a Delta program: X10, D0
         lines = [HEADER]
         if self.program is not None:
             lines.append(f"PROGRAM,{Path(os.path.abspath(self.program)).as_posix()}")
@@ -83,24 +88,32 @@ class ScenarioRecorder:
         last = self.start_ms
         for event in self.events:
             wait = max(event.time_ms - last, 0)
-            lines.append(",".join([_COMMANDS[event.kind], str(wait), *event.fields()]))
+            lines.append(",".join([_COMMANDS[event.kind], str(wait),
+                                   *event.fields(spelled.address)]))
             last = event.time_ms
         end = self.end_ms if self.end_ms is not None else self._now()
         period = self.plc.period_ms if self.plc.engine is None else self.plc.engine.period_ms
         checked_at = max(end - period, last)
         if end > self.start_ms:
-            targets = expect if expect is not None else self._outputs()
+            targets = expect if expect is not None else self._outputs(bool(spelled.dialect))
             wait = checked_at - last
             for address, width in targets:
                 value = (self.plc.bit(address) if address.bit is not None
                          else self.plc.read(address, width))
-                kind = "" if address.bit is not None else "," + _TYPES.get(width, "BYTE")
-                lines.append(f"EXPECT,{wait},{address},{value}{kind}")
+                kind = ",BIT" if address.bit is not None and spelled.dialect else \
+                    "" if address.bit is not None else "," + _TYPES.get(width, "BYTE")
+                lines.append(f"EXPECT,{wait},{spelled.address(address)},{value}{kind}")
                 wait = 0
         return "\n".join(lines) + "\n"
 
-    def _outputs(self) -> list[tuple[Address, int]]:
+    def _outputs(self, bits: bool = False) -> list[tuple[Address, int]]:
+        """Every Y byte that is not 0 (Y0 if none); `bits` (a Delta program, whose Y are
+        bit devices): every Y bit that is on (Y0 if none)."""
         data = self.plc.memory.areas[Area.Y]
+        if bits:
+            on = [(Address(Area.Y, byte, bit), 1) for byte, value in enumerate(data) if value
+                  for bit in range(8) if value >> bit & 1]
+            return on or [(Address(Area.Y, 0, 0), 1)]
         found = [(Address(Area.Y, byte), 1) for byte, value in enumerate(data) if value]
         return found or [(Address(Area.Y, 0), 1)]
 

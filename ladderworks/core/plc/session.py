@@ -26,6 +26,8 @@ from ladderworks.core.alarms import ActiveAlarm, ActiveAlarms, AlarmTable
 from ladderworks.core.compiler import CompileResult, compile_program
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
+from ladderworks.core.dialects.fatek.ascii_format import AsciiFormat
+from ladderworks.core.dialects.fatek.terminal import AsciiTerminal
 from ladderworks.core.il.program import Program
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
 from ladderworks.core.plc.forcing import ForceEntry
@@ -33,6 +35,7 @@ from ladderworks.core.plc.functions.counters import (
     counter_preset_address,
     counter_value_address,
 )
+from ladderworks.core.plc.functions.fatek_io import ASCII_FILES, ASCII_TERMINAL
 from ladderworks.core.plc.memory import Memory
 from ladderworks.core.plc.parameters import PARAMETER_AREAS, PmcParameters
 from ladderworks.core.plc.runner import RealTimeRunner, ScanStats
@@ -124,6 +127,9 @@ class PlcRun:
         self.program: Program | None = None  # the source of the binary, when known
         self.parameters = PmcParameters()
         self.alarm_table = AlarmTable()
+        self.ascii_terminal = AsciiTerminal()  # what a Fatek FUN 94 ASCWR sends to Port 1
+        # a Fatek program's ASCII files by S (core/dialects/fatek/ascii_files.py)
+        self.ascii_files: dict[Address, AsciiFormat | None] = {}
         self.trace: TraceSampler | None = None
         self._alarms = ActiveAlarms(self.alarm_table)
         self._runner: RealTimeRunner | None = None
@@ -137,6 +143,11 @@ class PlcRun:
         self.input_listeners: list[Callable[[str, Address, int, int], None]] = []
 
     # -- the program ---------------------------------------------------------------------
+
+    def use_ascii_files(self, files: dict[Address, AsciiFormat | None]) -> None:
+        """The ASCII files FUN 94 sends (a Fatek program's, read beside it); kept across loads."""
+        self.ascii_files.clear()
+        self.ascii_files.update(files)
 
     def load(self, binary: bytes | BinaryProgram,
              program: Program | None = None) -> list[Diagnostic]:
@@ -152,6 +163,8 @@ class PlcRun:
         self.engine = engine
         self.binary = engine.program
         self.program = program
+        engine.extra[ASCII_TERMINAL] = self.ascii_terminal  # a Fatek program's FUN 94 output
+        engine.extra[ASCII_FILES] = self.ascii_files
         engine.cold_start()
         self.parameters.apply(self.memory)
         engine.monitored = self._monitors > 0
@@ -173,6 +186,14 @@ class PlcRun:
     def dialect(self) -> str:
         """The loaded program's dialect ("seed" before a load)."""
         return dialect_of(self.program if self.program is not None else self.binary)
+
+    @property
+    def program_dialect(self) -> str:
+        """The loaded program's own dialect, as Program.dialect says it ("delta" for a Delta
+        program; `dialect` is its timer-table layout): how its addresses are spelled."""
+        name = getattr(self.program if self.program is not None else self.binary, "dialect",
+                       "seed")
+        return name if isinstance(name, str) else "seed"
 
     # -- running -------------------------------------------------------------------------
 

@@ -18,6 +18,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core import dialects
 from ladderworks.core.address import INPUT_AREAS, Address, AddressError, parse_address
 from ladderworks.core.plc.forcing import ForceEntry
 from ladderworks.gui.diagnostic_texts import diagnostic_text
@@ -194,6 +195,15 @@ class BitDisplayDock(Retranslating, QDockWidget):
         if self.live:
             self._show_row(row, self.session.snapshot())
 
+    def _spelled(self, address: Address) -> str:
+        """A row's byte as the loaded program writes it: `R0`, or Delta's `D0`, `M0` (a byte
+        of bit devices by its first bit)."""
+        dialect = self.session.run.program_dialect
+        found = dialects.get(dialect)
+        if found is None:
+            return str(address)
+        return found.devices.format(address) or found.format_address(address.with_bit(0))
+
     def _parse(self, row: BitRow) -> None:
         text = row.edit.text().strip()
         row.address = None
@@ -203,7 +213,11 @@ class BitDisplayDock(Retranslating, QDockWidget):
             self._show_row(row, None)
             return
         try:
-            address = parse_address(text, want_bit=False)
+            if dialects.get(self.session.run.program_dialect) is not None:  # Delta: M0 shows M0..M7
+                found = dialects.parse_target(text, self.session.run.program_dialect, None)[0]
+                address = Address(found.area, found.byte)
+            else:
+                address = parse_address(text, want_bit=False)
         except AddressError as error:
             named = (self.session.symbols.address_of(text)
                      if self.session.symbols is not None else None)
@@ -213,7 +227,7 @@ class BitDisplayDock(Retranslating, QDockWidget):
                 return
             address = Address(named.area, named.byte)  # a symbol: its byte is shown
         row.address = address
-        row.edit.setText(str(address))
+        row.edit.setText(self._spelled(address))
         row.set_error("")
         self._set_tooltips(row)
 

@@ -29,7 +29,9 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core import dialects
 from ladderworks.core.address import Address, AddressError, looks_like_address
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork
 from ladderworks.core.symbols import SymbolTable, resolve
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
@@ -98,6 +100,7 @@ class CrossReferenceModel(QAbstractTableModel):
         super().__init__(parent)
         self.uses: list[Use] = []
         self.symbols: SymbolTable | None = None
+        self.spelled = spelling(None)  # the program's dialect's spelling (set by the dock)
 
     def show(self, uses: list[Use], symbols: SymbolTable | None) -> None:
         """Replace the rows."""
@@ -133,7 +136,11 @@ class CrossReferenceModel(QAbstractTableModel):
         use = self.uses[index.row()]
         column = index.column()
         if column == 0:
+            if self.spelled.dialect:  # a Delta program: its device (`D500`, `T0`)
+                return self.spelled.address(use.address)
             return str(use.address) + (f":{use.width}" if use.width > 1 else "")
+        if self.spelled.dialect and column in (1, 7):  # no FANUC signal names for Delta
+            return use.comment if column == 7 else ""
         if column == 1 or column == 7:
             named = name_and_text(use.address, self.symbols)
             if column == 1:
@@ -237,6 +244,7 @@ class CrossReferenceDock(Retranslating, QDockWidget):
         self._stale_view = False
         text = self.query.text().strip()
         symbols = self.source.symbols()
+        self.model.spelled = spelling(self.source.dialect())
         if not text:
             xref = self.cross_reference()
             self.model.show(xref.sorted_uses(), symbols)
@@ -245,7 +253,9 @@ class CrossReferenceDock(Retranslating, QDockWidget):
             self._fit_columns()
             return
         try:
-            address = resolve(text, symbols)
+            dialect = self.source.dialect()
+            address = (dialects.parse_target(text, dialect)[0] if dialects.get(dialect)
+                       else resolve(text, symbols))
         except AddressError as error:
             self.model.show([], symbols)
             self.summary.setText(
@@ -346,7 +356,7 @@ def install(window: QMainWindow, menus: ConsoleMenus, editor: LadderEditor,
         networks = editor.networks
         address = address_at(networks[index], row, col) if 0 <= index < len(networks) else None
         if address is not None:
-            dock.show_address(str(address))
+            dock.show_address(spelling(model.dialect).address(address))
         else:
             dock.show()
             dock.raise_()

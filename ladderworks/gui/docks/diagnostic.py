@@ -20,6 +20,7 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.address import Address, AddressError, parse_address
 from ladderworks.core.compiler.binary import BinaryProgram
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il.program import Program
 from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork
@@ -70,6 +71,7 @@ class DiagnosticView(QGraphicsView):
         self.network_items = LazyItems(self._make_item)  # made when shown
         self.symbols: SymbolTable | None = None  # the program's symbols, named under addresses
         self.networks: list[LadderNetwork] = []
+        self.spelling = spelling(None)  # how the shown program writes addresses
         self.comments = CommentedAddresses(self.describe_address)  # asked once per address
         self.layout_ = Layout(self.commented)
         self.paints = 0  # viewport paint events (the benchmark's repaint rate)
@@ -118,6 +120,7 @@ class DiagnosticView(QGraphicsView):
         for _index, item in self.network_items.made():
             self.scene_.removeItem(item)
         self.networks = networks
+        self.spelling = spelling(binary.dialect)  # a Delta program's: Delta's spelling
         self.comments.forget()  # the symbols may have changed with the program
         self.layout_ = Layout(self.commented)
         self.layout_.rebuild(networks)
@@ -128,6 +131,7 @@ class DiagnosticView(QGraphicsView):
 
     def _make_item(self, index: int) -> NetworkItem:
         item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
+        item.spelling = self.spelling
         item.setPos(0, self.layout_.tops[index])
         self.scene_.addItem(item)
         return item
@@ -160,7 +164,10 @@ class DiagnosticView(QGraphicsView):
         self.viewport().update()
 
     def describe_address(self, address: object) -> tuple[str, str] | None:
-        """(symbol, comment) of the program, else (signal name, description) of the manual."""
+        """(symbol, comment) of the program, else (signal name, description) of the manual
+        (a Delta program's addresses are no FANUC signals: none)."""
+        if self.spelling.dialect:
+            return None
         return name_and_text(address, self.symbols)
 
     def commented(self, network: LadderNetwork) -> bool:

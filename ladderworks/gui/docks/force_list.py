@@ -15,7 +15,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from ladderworks.core.il import print_instruction
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.plc.forcing import ForceEntry
 from ladderworks.gui.header_fit import fit_headers
@@ -78,16 +78,17 @@ class ForceListDock(Retranslating, QDockWidget):
 
     def describe(self, entry: ForceEntry) -> tuple[str, str, str]:
         """(kind, what, value) shown for one entry."""
+        spelled = spelling(self.session.run.program_dialect)
         if entry.kind == "force":
-            where = (labelled(entry.address, self.session.symbols)
-                     if entry.address is not None else "")
+            where = ("" if entry.address is None else spelled.address(entry.address)
+                     if spelled.dialect else labelled(entry.address, self.session.symbols))
             return (translate("ForceList", "FORCED"), where,
                     str(int(bool(entry.value))))
         binary = self.session.binary
         text = f"op {entry.op}"
         if binary is not None and entry.op is not None and entry.op < len(binary.ops):
             op = binary.ops[entry.op]
-            code = print_instruction(Instruction(op.name, op.operand, op.params))
+            code = spelled.instruction(Instruction(op.name, op.operand, op.params))
             text = translate("ForceList", "network {0}, line {1}: {2}").format(
                 op.source.network + 1, op.source.line, code)
         return translate("ForceList", "PASSIVE"), text, ""

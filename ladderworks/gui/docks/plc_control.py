@@ -21,7 +21,8 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core.compiler import CompileResult, compile_program
 from ladderworks.core.diagnostics import Diagnostic, has_errors
-from ladderworks.core.il import Program, decode, parse, print_program
+from ladderworks.core.il import Program, decode, print_program
+from ladderworks.core.il.reading import parse_text
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
@@ -257,7 +258,7 @@ class PlcControlDock(Retranslating, QDockWidget):
         """Check and convert the text to the binary PLC program; the stripes then show the
         networks converted, and at the end the program is loaded into the PLC."""
         self._timer.stop()
-        parsed = parse(self.program_text())
+        parsed = parse_text(self.program_text())  # in whichever dialect it is written
         diagnostics: list[Diagnostic] = list(parsed.diagnostics)
         result = CompileResult(None, diagnostics)
         if not has_errors(diagnostics):

@@ -10,6 +10,7 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow
 from ladderworks.core.il import Program
 from ladderworks.gui.console_menus import ConsoleMenus
 from ladderworks.gui.docks.alarms import AlarmDock
+from ladderworks.gui.docks.ascii_output import AsciiOutputDock
 from ladderworks.gui.docks.bit_display import BitDisplayDock
 from ladderworks.gui.docks.diagnostic import DiagnosticDock
 from ladderworks.gui.docks.force_list import ForceListDock
@@ -43,6 +44,7 @@ class PlcDocks:
     scenario: ScenarioDock
     time_travel: TimeTravel  # PLC › Keep scan history
     modbus: ModbusDock  # PLC › Modbus server
+    ascii_output: AsciiOutputDock  # PLC › ASCII output (a Fatek program's FUN 94)
 
     @property
     def others(self) -> dict[str, QDockWidget]:
@@ -108,6 +110,7 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     online = OnlineMode(editor, session, window)
     travel = TimeTravel(session, diagnostic, chart, online, window)
     modbus = ModbusDock(session, window)
+    ascii_output = AsciiOutputDock(session, window)
 
     plc = "menu_plc"
     menus.add_dock(control, "action_dock_plc_control", RIGHT, plc, separator=True)
@@ -118,13 +121,15 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     menus.add_dock(alarms, "action_dock_alarms", BOTTOM)
     menus.add_dock(tables, "action_dock_plc_tables", RIGHT)
     menus.add_dock(scenario, "action_dock_scenario", BOTTOM)
+    menus.add_dock(ascii_output, "action_dock_ascii_output", BOTTOM, plc)
     # tabbed while hidden: a tab group of shown docks sizes the window's first layout by
     # all of them, and leaves a tab bar behind with their titles
-    for dock in (control, diagnostic, bits, tables, alarms, chart, scenario, force_list):
+    for dock in (control, diagnostic, bits, tables, alarms, chart, scenario, force_list,
+                 ascii_output):
         dock.hide()
         _raise_when_shown(window, dock)
     _tab(window, [control, diagnostic, bits, tables])
-    _tab(window, [alarms, chart, scenario, force_list])
+    _tab(window, [alarms, chart, scenario, force_list, ascii_output])
     alarms.show()
 
     # one path (issue 18): Compile, START and STOP on the main toolbar and in the PLC menu
@@ -150,4 +155,4 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
         app.aboutToQuit.connect(modbus.stop_server)  # the server thread ends with the program
         app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
     return PlcDocks(session, control, diagnostic, force_list, online, bits, chart, alarms,
-                    tables, scenario, travel, modbus)
+                    tables, scenario, travel, modbus, ascii_output)

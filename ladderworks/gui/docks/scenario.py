@@ -101,7 +101,8 @@ class ScenarioDock(Retranslating, QDockWidget):
         """Read and run a scenario file."""
         program = self.session.program
         try:
-            scenario = read_scenario(path, program.symbols if program is not None else None)
+            scenario = read_scenario(path, program.symbols if program is not None else None,
+                                     self.session.run.program_dialect)
         except OSError as error:
             reason = error  # the except clause's name is gone after it
             self._say(lambda: translate("Scenario", "Cannot read {0}: {1}").format(
@@ -113,7 +114,8 @@ class ScenarioDock(Retranslating, QDockWidget):
         """Run scenario text (tests, the recorder's output)."""
         program = self.session.program
         return self.run(parse_scenario(text, name,
-                                       program.symbols if program is not None else None))
+                                       program.symbols if program is not None else None,
+                                       self.session.run.program_dialect))
 
     def run(self, scenario: Scenario) -> ScenarioResult | None:
         """Run on a cold start of the loaded program with its PMC parameters; the live PLC is

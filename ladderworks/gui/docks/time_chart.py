@@ -168,7 +168,8 @@ class TimeChartDock(Retranslating, QDockWidget):
         signals: list[TracedSignal] = []
         for text in texts:
             try:
-                signals.append(parse_traced(text, self.session.symbols))
+                signals.append(parse_traced(text, self.session.symbols,
+                                            self.session.run.program_dialect))
             except AddressError as error:
                 self._say(diagnostic_text(error.diagnostic), error=True)
                 return None

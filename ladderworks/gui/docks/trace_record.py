@@ -36,10 +36,11 @@ class TracedSignal:
         return 1 if self.is_bit else (1 << (8 * self.width)) - 1
 
 
-def parse_traced(text: str, symbols: SymbolTable | None = None) -> TracedSignal:
-    """`R1.4`, `R100`, `D10:2` (a 2-byte value), `D20:4`, or a program symbol (`ESKIP`); raises
-    AddressError (see `parse_target`)."""
-    target = parse_target(text, symbols.address_of if symbols is not None else None)
+def parse_traced(text: str, symbols: SymbolTable | None = None,
+                 dialect: str | None = None) -> TracedSignal:
+    """`R1.4`, `R100`, `D10:2` (a 2-byte value), `D20:4`, or a program symbol (`ESKIP`); in a
+    Delta program Delta's devices (`X10`, `D0`); raises AddressError (see `parse_target`)."""
+    target = parse_target(text, symbols.address_of if symbols is not None else None, dialect)
     return TracedSignal(target.address, target.width)
 
 

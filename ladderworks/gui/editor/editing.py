@@ -82,7 +82,7 @@ class CursorEdits:
         if found is None or not isinstance(found[1], Contact | Coil):
             return False
         (r, c), _element = found
-        text = str(address)
+        text = str(address)  # the address itself: set_address reads the PMC's spelling
         return self.run_edit(index, lambda n: core.set_address(n, r, c, text),
                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), text))
 

@@ -49,7 +49,7 @@ class InlineEdit(QObject):
         if found is None or not isinstance(found[1], Contact | Coil):
             return
         element = found[1]
-        text = str(element.address) if element.address is not None else ""
+        text = self.editor.spell_address(element.address) if element.address is not None else ""
         if element.comment:
             text += "  // " + element.comment
         x, y = cell_origin(net, row, col, self.editor.layout_.rows[index])
@@ -135,6 +135,10 @@ class InlineEdit(QObject):
             self.close()
             return
         editor = self.editor
+        problem = editor.typed_address_problem(address_text)
+        if problem is not None:  # a Delta program: its devices' own message (X8: octal)
+            self._refuse(problem)
+            return
         address_text = editor.resolve_address(address_text)
         try:
             core.edits.to_address(address_text, (row, col))

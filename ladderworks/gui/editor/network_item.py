@@ -6,8 +6,8 @@ from PySide6.QtCore import QCoreApplication, QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPainter, QPen
 from PySide6.QtWidgets import QGraphicsItem, QStyleOptionGraphicsItem, QWidget
 
-from ladderworks.core.il import print_instruction
-from ladderworks.core.il.printer import format_params
+from ladderworks.core.dialects.spelling import Spelling
+from ladderworks.core.dialects.spelling import spelling as spelling_of
 from ladderworks.core.instructions import Write
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
 from ladderworks.core.ladder.open_circuit import OpenEnd, open_ends
@@ -78,6 +78,10 @@ def fitted_font(font: QFont, text: str, width: float) -> QFont:
 
 class NetworkItem(QGraphicsItem):
     """Paints one LadderNetwork; its number and hints come from the view."""
+
+    # how addresses, boxes and listings are written: the program's dialect's (Delta: X17),
+    # set by whoever makes the item for a program of another dialect than the PMC's
+    spelling: Spelling = spelling_of(None)
 
     def __init__(self, network: LadderNetwork, number: int, describe: SignalLookup) -> None:
         super().__init__()
@@ -202,7 +206,7 @@ class NetworkItem(QGraphicsItem):
         return cached
 
     def _label_lines(self, element: Contact | Coil) -> tuple[str, str, list[str]]:
-        address = str(element.address) if element.address is not None else "?"
+        address = self.spelling.address(element.address) if element.address is not None else "?"
         rows = self.rows
         if not rows.symbol:
             return address, "", []
@@ -288,8 +292,10 @@ class NetworkItem(QGraphicsItem):
                              Qt.AlignmentFlag.AlignRight, "W1")
         painter.setFont(label_font)
         painter.drawText(QRectF(rect.left(), rect.top() + 2, rect.width(), 16),
-                         Qt.AlignmentFlag.AlignHCenter, instruction_label(box.spec))
-        params = " ".join(format_params(box.spec, box.params))
+                         Qt.AlignmentFlag.AlignHCenter,
+                         self.spelling.name(box.spec) if self.spelling.dialect
+                         else instruction_label(box.spec))
+        params = " ".join(self.spelling.params(box.spec, box.params))
         painter.setFont(small_font)
         metrics = QFontMetricsF(small_font)
         if params:
@@ -319,4 +325,4 @@ class NetworkItem(QGraphicsItem):
         for index, instruction in enumerate(self.network.listing or ()):
             painter.drawText(QRectF(LEFT + 6, top + 2 + index * LISTING_LINE_H, 800,
                                     LISTING_LINE_H), Qt.AlignmentFlag.AlignVCenter,
-                             print_instruction(instruction))
+                             self.spelling.instruction(instruction))

@@ -18,8 +18,10 @@ from PySide6.QtGui import (
 )
 from PySide6.QtWidgets import QGraphicsRectItem, QGraphicsScene, QGraphicsView, QMenu, QWidget
 
-from ladderworks.core.address import AddressError
+from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects import parse_bit
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Program
 from ladderworks.core.instructions import FUNCTIONS
 from ladderworks.core.ladder import LadderNetwork, Selection
@@ -201,6 +203,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
 
     def _make_item(self, index: int) -> NetworkItem:
         item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
+        item.spelling = spelling(self.model.dialect)  # a Delta program: Delta's spelling
         item.is_new = index == len(self.networks) - 1 and self.networks[index].is_empty()
         item.setPos(0, self.layout_.tops[index])
         self._scene.addItem(item)
@@ -221,7 +224,10 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         super().paintEvent(event)
 
     def describe_address(self, address: object) -> tuple[str, str] | None:
-        """(symbol, comment) of the program, else (signal name, description) of the manual."""
+        """(symbol, comment) of the program, else (signal name, description) of the manual
+        (a Delta program's addresses are no FANUC signals: none)."""
+        if spelling(self.model.dialect).dialect:
+            return None
         return name_and_text(address, self.model.symbols)
 
     def commented(self, network: LadderNetwork) -> bool:
@@ -229,11 +235,29 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         return shows_comment(network, self.comments)
 
     def resolve_address(self, text: str) -> str:
-        """The address a typed text names: itself, or the address of a program symbol."""
+        """The address a typed text names: itself, or the address of a program symbol (a Delta
+        program's device, `X17`: its address, `X1.7`)."""
         try:
+            if spelling(self.model.dialect).dialect:
+                return str(parse_bit(text, self.model.dialect))
             return str(resolve(text, self.model.symbols))
         except AddressError:
             return text
+
+    def typed_address_problem(self, text: str) -> Diagnostic | None:
+        """Why a bit typed in a Delta program is none of its devices (`X8`); None if it is one
+        (or the program is the PMC's: its own checks say why)."""
+        if not spelling(self.model.dialect).dialect:
+            return None
+        try:
+            parse_bit(text, self.model.dialect)
+        except AddressError as error:
+            return error.diagnostic
+        return None
+
+    def spell_address(self, address: Address) -> str:
+        """An address as the program writes it (`X17` in a Delta program)."""
+        return spelling(self.model.dialect).address(address)
 
     def _renumber(self, start: int) -> None:
         last = len(self.network_items) - 1

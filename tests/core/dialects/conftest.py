@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ladderworks.core import dialects
 from ladderworks.core.address import Address
 from ladderworks.core.compiler import compile
 from ladderworks.core.dialects.delta import DEVICES
@@ -39,8 +40,8 @@ def word_of(text: str) -> Address:
 
 
 def get(plc: ScanEngine, text: str) -> int:
-    """A device's value: a bit (X, Y, M, S) or a word (T, C, D: signed)."""
-    address, width = DEVICES.target(text)
+    """A device's value: a bit (X, Y, M, S) or a word (T, C, D: signed; `D4:4` 32-bit)."""
+    address, width = dialects.parse_target(text, "delta")
     if address.bit is not None:
         return plc.memory.bit(address)
     return plc.memory.read(address, width, signed=True)

@@ -45,7 +45,7 @@ def test_check_runs_the_compiler_checks_in_delta_spelling(tmp_path: Path, capsys
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].startswith(f"{path}:4:1: coil-twice ") and "Y0" in lines[0]
     assert "Y0.0" not in lines[0]
-    assert lines[1].startswith(f"{path}:6:1: call-missing ")
+    assert lines[1] == f"{path}:6:1: dvp-call-missing no subroutine P5 after FEND for this CALL"
     assert len(lines) == 2
 
 
@@ -63,3 +63,69 @@ def test_every_example_passes_its_scenario(program: Path, capsys) -> None:
     scenario = program.with_suffix(".scenario.csv")
     assert main(["test", str(program), str(scenario)]) == 0, capsys.readouterr()
     assert "1 passed, 0 failed" in capsys.readouterr().out
+
+
+def test_ladder_art_in_delta_spelling(capsys) -> None:
+    assert main(["ladder", str(EXAMPLES / "compare_contacts.txt")]) == 0
+    out = capsys.readouterr().out
+    assert "|    X0 " in out and "T0 K100" in out and "+------ LD= ------+" in out
+    assert "LD< C1 C2" in out  # a rung with no ladder picture: its Delta listing
+    assert "X0.0" not in out and "RD" not in out
+
+
+def test_xref_in_delta_spelling(capsys) -> None:
+    assert main(["xref", str(EXAMPLES / "motor_flip_flop.txt"), "D500", "Y0"]) == 0
+    rows = capsys.readouterr().out.splitlines()[1:]
+    assert [row.split()[0] for row in rows] == ["D500", "D500", "D500", "Y0"]
+    assert [row.split()[6] for row in rows] == ["MOV", "MOV", "TMR", "OUT"]
+    assert [row.split()[-1] for row in rows] == ["write", "write", "read", "write"]
+    capsys.readouterr()
+    assert main(["xref", str(EXAMPLES / "counter_reset.txt"), "C0"]) == 0
+    rows = capsys.readouterr().out.splitlines()[1:]
+    assert [(row.split()[6], row.split()[-1]) for row in rows] == [
+        ("CNT", "read+write"), ("RST", "write")]
+
+
+def test_find_and_replace_take_delta_devices() -> None:
+    from ladderworks.core.il import parse_file
+    from ladderworks.core.ladder.convert import program_to_ladder
+    from ladderworks.core.ladder.find_replace import find, parse_query, replacement_address
+
+    program = parse_file(EXAMPLES / "motor_flip_flop.txt").program
+    networks = program_to_ladder(program).networks
+    query = parse_query("X0", program.symbols, "delta")
+    assert query is not None
+    assert len(find(networks, query, program.symbols)) == 3
+    d500 = parse_query("D500", program.symbols, "delta")
+    assert d500 is not None and len(find(networks, d500, program.symbols)) == 3
+    new = replacement_address("M7", query, program.symbols, "delta")
+    assert program.dialect == "delta" and new.bit == 7
+
+
+def test_a_recorded_scenario_of_a_delta_program_replays() -> None:
+    from ladderworks.core.plc.recorder import ScenarioRecorder
+    from ladderworks.core.plc.scenario import parse_scenario, run_scenario
+    from ladderworks.core.plc.session import PlcRun
+    from tests.core.dialects.conftest import bit_of, delta
+
+    program = delta("LD X0\nOR Y0\nANI X1\nOUT Y0\nLD X2\nOUT Y10\nEND\n")
+    plc = PlcRun()
+    assert not plc.load_program(program).diagnostics
+    plc.start()
+    recorder = ScenarioRecorder(plc, "recorded")
+    recorder.start()
+    plc.run_scans(2)
+    plc.set_bit(bit_of("X0"), 1)
+    plc.run_scans(2)
+    plc.set_bit(bit_of("X0"), 0)
+    plc.force(bit_of("X2"), 1)
+    plc.run_scans(3)
+    recorder.stop()
+    written = recorder.text()
+    assert written.splitlines()[2:] == ["SET,16,X0,1", "SET,16,X0,0", "FORCE,0,X2,1",
+                                        "EXPECT,16,Y0,1,BIT", "EXPECT,0,Y10,1,BIT"]
+    again = PlcRun()
+    again.load_program(program)
+    scenario = parse_scenario(written, "again", None, "delta")
+    assert scenario.ok, scenario.diagnostics
+    assert run_scenario(again, scenario).passed

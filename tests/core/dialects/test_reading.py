@@ -86,3 +86,21 @@ def test_the_binary_remembers_the_dialect() -> None:
     binary = compile(delta(DELTA_TEXT))
     assert decode(binary).dialect == "delta"
     assert disassemble(binary).dialect == "delta"
+
+
+def test_no_real_fanuc_program_or_fragment_is_taken_for_delta() -> None:
+    from tests.real_programs import real_programs_dir
+
+    for path in sorted(real_programs_dir().glob("FANUC_*.txt")):
+        data = path.read_bytes()
+        assert choose(data) is None, path.name  # fragments too, without their %@3 framing
+
+
+def test_the_seed_listings_are_recognised_as_written() -> None:
+    # seed 003:999-1027 as DIALECTS.md prints it (no END), and seed 001:1000-1012
+    seed_cj = ("LD  X0\nCJ  P1\nLDI X1\nLD  X3\nOR  Y0\nANB\nOUT  Y0\nP001\nLDI  X1\n"
+               "ANI  X2\nLD  X3\nOR  X4\nOR Y0\nANB\nOUT Y0\n")
+    seed_compare = "LD= T0  K5\nOUT  Y0\nLD X1\nLD< C1 C2\nOR> C2 K10\nANB\nOUT Y1\n"
+    for text in (seed_cj, seed_compare):
+        result = parse_bytes(text.encode())
+        assert result.ok and result.program.dialect == "delta"

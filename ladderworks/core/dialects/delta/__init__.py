@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.dialects.base import Dialect
-from ladderworks.core.dialects.delta.instructions import ROWS
+from ladderworks.core.dialects.delta.instructions import FAMILIES, ROWS
 from ladderworks.core.dialects.delta.sniff import score
 from ladderworks.core.dialects.devices import Device, DeviceMap
 
@@ -45,22 +45,28 @@ M1028 = relay(1028)  # on: T64..T126 count in 10 ms
 M1200 = relay(1200)  # M1200..M1255: C200..C255 count down when on
 
 
-def _set(areas: dict[Area, bytearray], address: Address, on: bool) -> None:
-    data = areas[address.area]
-    mask = 1 << (address.bit or 0)
-    data[address.byte] = data[address.byte] | mask if on else data[address.byte] & ~mask & 0xFF
+# the relays set before each scan, all in area R: (byte, mask) of M1000, M1002, M1013, M1014
+_SCAN_RELAYS = tuple((address.byte, 1 << (address.bit or 0))
+                     for address in (M1000, M1002, M1013, M1014))
+_R = Area.R
 
 
 def relays(areas: dict[Area, bytearray], now_ms: int, first: bool) -> None:
     """Delta's special relays, set before each scan (the engine calls this)."""
-    _set(areas, M1000, True)
-    _set(areas, M1002, first)
-    _set(areas, M1013, now_ms % 1000 < 500)
-    _set(areas, M1014, now_ms % 60_000 < 30_000)
+    data = areas[_R]
+    states = (True, first, now_ms % 1000 < 500, now_ms % 60_000 < 30_000)
+    for (byte, mask), on in zip(_SCAN_RELAYS, states, strict=True):
+        data[byte] = data[byte] | mask if on else data[byte] & ~mask & 0xFF
 
 
 DIALECT = Dialect(
     name=NAME, title="Delta DVP", title_tr="Delta DVP", code=2, devices=DEVICES, rows=ROWS,
     sniff=score, reader="ladderworks.core.dialects.delta.reader:read",
     printer="ladderworks.core.dialects.delta.printer:network_lines", relays=relays,
-    period_ms=10, extensions=(".dvp", ".il", ".txt"))
+    period_ms=10, extensions=(".dvp", ".il", ".txt"),
+    namer="ladderworks.core.dialects.delta.printer:mnemonic_of",
+    spelling="ladderworks.core.dialects.delta.printer:spelling", families=FAMILIES,
+    codes={"sp-without-spe": "dvp-missing-sret", "spe-without-sp": "dvp-sret-alone",
+           "outside-subprogram": "dvp-outside-subroutine", "label-missing": "dvp-pointer-missing",
+           "call-missing": "dvp-call-missing", "no-logic": "dvp-no-logic",
+           "sp-twice": "dvp-pointer-twice", "label-twice": "dvp-pointer-twice"})

@@ -20,6 +20,7 @@ from ladderworks.core.instructions import (
     InstructionSpec,
     Kind,
     Param,
+    ParamAccess,
     ParamKind,
     StackOp,
 )
@@ -55,20 +56,21 @@ class Spelling:
     operands: tuple[str, ...] = ()  # how each operand is read
 
 
-def _param(name: str, kind: ParamKind, lo: int = 0, hi: int = 0, width: int = 2) -> Param:
-    return Param(name, kind, lo, hi, width=width)
+def _param(name: str, kind: ParamKind, lo: int = 0, hi: int = 0, width: int = 2,
+           access: ParamAccess = ParamAccess.READ) -> Param:
+    return Param(name, kind, lo, hi, width=width, access=access)
 
 
 def _value(name: str, lo: int = INT16[0], hi: int = INT16[1], width: int = 2) -> Param:
     return _param(name, ParamKind.VALUE, lo, hi, width)
 
 
-def _word(name: str, width: int = 2) -> Param:
-    return _param(name, ParamKind.ADDRESS, width=width)
+def _word(name: str, width: int = 2, access: ParamAccess = ParamAccess.WRITE) -> Param:
+    return _param(name, ParamKind.ADDRESS, width=width, access=access)
 
 
-def _bit(name: str) -> Param:
-    return _param(name, ParamKind.BIT)
+def _bit(name: str, access: ParamAccess = ParamAccess.WRITE) -> Param:
+    return _param(name, ParamKind.BIT, access=access)
 
 
 def _row(mnemonic: str, sub: int, title: str, title_tr: str, *, suffix: str = "",
@@ -81,6 +83,8 @@ def _row(mnemonic: str, sub: int, title: str, title_tr: str, *, suffix: str = ""
                            opcode=opcode, mnemonic=mnemonic, source=DIALECT, dialect=DIALECT,
                            **fields)  # type: ignore[arg-type]
 
+
+_RW = ParamAccess.READ_WRITE  # a timer's or counter's value, INC/DEC's register
 
 ROWS_LIST: list[InstructionSpec] = []
 SPELLINGS: dict[str, Spelling] = {}
@@ -128,7 +132,7 @@ def _sub() -> int:
 
 
 for _edge, (_title, _title_tr) in _EDGES.items():
-    _operand = (_bit("device"),)
+    _operand = (_bit("device", ParamAccess.READ),)
     _add(f"LD{_edge}", "load", (BIT_IN,),
          _row(f"LD{_edge}", _sub(), f"{_title} contact", f"{_title_tr} KONTAĞI", inputs=(),
               params=_operand, combine=Combine.READ, w1=True),
@@ -168,15 +172,15 @@ for _offset, _op in enumerate(COMPARISONS):
 # -- timers and counters ----------------------------------------------------------------------
 _add("TMR", "output", (TIMER, WORD_IN),
      _row("TMR", _sub(), "16-bit timer", "ZAMANLAYICI",
-          params=(_word("timer"), _value("preset", 0, INT16[1]))))
+          params=(_word("timer", access=_RW), _value("preset", 0, INT16[1]))))
 _add("CNT", "output", (COUNTER, WORD_IN),
      _row("CNT", _sub(), "16-bit counter", "SAYICI",
-          params=(_word("counter"), _value("preset", 0, INT16[1]))))
+          params=(_word("counter", access=_RW), _value("preset", 0, INT16[1]))))
 _add("DCNT", "output", (WIDE_COUNTER, WORD_IN),
      _row("DCNT", _sub(), "32-bit up/down counter", "32 BİT YUKARI/AŞAĞI SAYICI",
-          params=(_word("counter", 4), _value("preset", INT32[0], INT32[1], 4))))
+          params=(_word("counter", 4, _RW), _value("preset", INT32[0], INT32[1], 4))))
 RESET_ROW = _row("RST", _sub(), "Reset a timer, counter or register", "SIFIRLA",
-                 suffix=".WORD", params=(_word("device"),))
+                 suffix=".WORD", params=(_word("output"),))
 ROWS_LIST.append(RESET_ROW)
 
 # -- data: move, arithmetic, compare (API 10-25), each with its pulse form (xxxP) -------------
@@ -195,8 +199,8 @@ _DATA: dict[str, tuple[int, tuple[str, ...], tuple[Param, ...], str, str]] = {
             "Multiplication (32-bit result)", "ÇARPMA"),
     "DIV": (23, (WORD_IN, WORD_IN, WORD_OUT), (_value("s1"), _value("s2"), _word("output", 4)),
             "Division (quotient, remainder)", "BÖLME"),
-    "INC": (24, (WORD_OUT,), (_word("output"),), "Increment", "ARTTIR"),
-    "DEC": (25, (WORD_OUT,), (_word("output"),), "Decrement", "AZALT"),
+    "INC": (24, (WORD_OUT,), (_word("output", access=_RW),), "Increment", "ARTTIR"),
+    "DEC": (25, (WORD_OUT,), (_word("output", access=_RW),), "Decrement", "AZALT"),
 }
 for _name, (_api, _kinds, _params, _title, _title_tr) in _DATA.items():
     _add(_name, "output", _kinds, _row(_name, SUB_BASE + _api, _title, _title_tr,
@@ -229,7 +233,7 @@ ROWS_LIST += [LABEL_ROW, SUBROUTINE_ROW]
 _add("MC", "output", (NEST,), _row("MC", _sub(), "Master control", "ANA KONTROL",
                                     params=(_param("coils", ParamKind.NUMBER, 0, 0),
                                             _param("nest", ParamKind.NUMBER, 0, 7)),
-                                    flow=Flow.COMMON))
+                                    flow=Flow.COMMON, gates_boxes=True))
 _add("MCR", "alone", (NEST,), _row("MCR", _sub(), "Master control reset", "ANA KONTROL SONU",
                                     inputs=(), params=(_param("nest", ParamKind.NUMBER, 0, 7),),
                                     flow=Flow.COMMON_END))

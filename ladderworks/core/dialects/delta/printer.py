@@ -4,8 +4,14 @@ from __future__ import annotations
 
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import DEVICES
+from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, LabelRef, Network, ProgramRef
 from ladderworks.core.instructions import Combine, Flow, InstructionSpec, Kind, ParamKind, Write
+
+
+def mnemonic_of(spec: InstructionSpec) -> str:
+    """Delta's mnemonic of a row of the table (`LD` for RD, `TMR` for DVP.TMR)."""
+    return _basic_name(spec) if spec.kind is Kind.BASIC and not spec.dialect else spec.text_name
 
 
 def _basic_name(spec: InstructionSpec) -> str:
@@ -46,14 +52,24 @@ def instruction_lines(instruction: Instruction) -> list[str]:
         return [f"{name}{operand}{comment}"]
     if spec.flow in (Flow.LABEL, Flow.SUBPROGRAM):
         return [" ".join(operand_text(p) for p in instruction.params) + comment]
-    params = list(instruction.params)
-    if spec.flow is Flow.COMMON:  # MC: its `coils` 0 is not written
+    return ["\t".join([spec.text_name, *params_text(spec, instruction.params)]) + comment]
+
+
+def params_text(spec: InstructionSpec, values: tuple[object, ...]) -> list[str]:
+    """A functional instruction's operands as Delta writes them (MC's `coils` 0 left out)."""
+    params = list(values)
+    if spec.flow is Flow.COMMON:
         params = params[1:]
     texts = []
     for param, value in zip(spec.params[-len(params):] if params else (), params, strict=False):
         texts.append(f"N{value}" if param.kind is ParamKind.NUMBER and param.name == "nest"
                      else operand_text(value))
-    return ["\t".join([spec.text_name, *texts]) + comment]
+    return texts
+
+
+def instruction_text(instruction: Instruction) -> str:
+    """One instruction on one line (a listing in the console): `LD= T0 K5`."""
+    return " / ".join(line.replace("\t", " ") for line in instruction_lines(instruction))
 
 
 def network_lines(network: Network, first: bool) -> list[str]:
@@ -62,3 +78,11 @@ def network_lines(network: Network, first: bool) -> list[str]:
     for instruction in network.instructions:
         out.extend(instruction_lines(instruction))
     return out
+
+
+def spelling() -> Spelling:
+    """Delta's display texts (core/dialects/spelling.py)."""
+    from ladderworks.core.dialects.delta import DIALECT
+
+    return Spelling(DIALECT.name, DIALECT.format_address, params_text, instruction_text,
+                    mnemonic_of)

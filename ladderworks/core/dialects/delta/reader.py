@@ -202,6 +202,12 @@ class _Reader:
             return 0
         upper = text.upper()
         try:
+            if kind not in (rows.LABEL, rows.PROGRAM, rows.NEST) and \
+                    _CONSTANT.match(text) is None:
+                if upper[:1] in "KH" and kind == rows.WORD_IN:
+                    self.error("dialect-constant", line, column, text=text)
+                    return None
+                DEVICES.split(text)  # an unknown device, an 8 in octal, out of range: say so
             if kind in _BIT_LETTERS:
                 if upper[:1] not in _BIT_LETTERS[kind] or (_CONSTANT.match(text) and \
                         upper[:1] in "KH"):

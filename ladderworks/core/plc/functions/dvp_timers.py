@@ -10,6 +10,8 @@ not called, holds its value and goes on later (seed 003). docs/dialects.md.
 
 from __future__ import annotations
 
+from functools import cache
+
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import M1028, T
 from ladderworks.core.plc.functions import FunctionContext, executed_once_this_scan, function
@@ -30,6 +32,7 @@ def base_ms(memory: Memory, number: int) -> int:
     return 100
 
 
+@cache
 def timer_number(address: Address) -> int:
     """The number of the timer whose value is at `address`."""
     number = T.word_number(address)

@@ -1,0 +1,110 @@
+"""The Fatek rows of the instruction table: the boxes a Fatek program becomes in the engine
+(timers, counters, RST, TU/TD and comparison contacts, FUN boxes), with their FUN numbers."""
+
+from __future__ import annotations
+
+from ladderworks.core.instructions import (
+    FUNCTION_OPCODE,
+    InstructionSpec,
+    Kind,
+    Param,
+    ParamAccess,
+    ParamKind,
+)
+
+SUB_BASE = 20_000  # a Fatek row's SUB number: 20000 + FUN n (21000.. for the others)
+OTHER = 21_000
+INT32_LOW, INT32_HIGH = -(2**31), 2**31 - 1
+
+
+def _number(name: str, low: int, high: int) -> Param:
+    return Param(name, ParamKind.NUMBER, low, high)
+
+
+def _value(name: str) -> Param:
+    return Param(name, ParamKind.VALUE, INT32_LOW, INT32_HIGH, width=2)
+
+
+def _register(name: str, access: ParamAccess = ParamAccess.WRITE) -> Param:
+    return Param(name, ParamKind.ADDRESS, width=2, access=access)
+
+
+def _raw(name: str) -> Param:
+    return Param(name, ParamKind.RAW, INT32_LOW, INT32_HIGH)
+
+
+MODE = _number("mode", 0, 3)  # bit 0: the P (pulse) form, bit 1: the D (32-bit) form
+FO = _raw("fo")  # the box's output byte (FO0 bit 0 …)
+
+
+def _row(name: str, sub: int, mnemonic: str, title: str, title_tr: str, *,
+         inputs: tuple[str, ...] = ("EN",), params: tuple[Param, ...] = (),
+         w1: bool = True, cnc: bool = False) -> InstructionSpec:
+    return InstructionSpec(name, Kind.FUNCTION, sub, inputs=inputs, params=params, w1=w1,
+                           title=title, title_tr=title_tr, opcode=FUNCTION_OPCODE,
+                           mnemonic=mnemonic, cnc=cnc, source="fatek", dialect="fatek")
+
+
+# FUN n of the listing -> the row it becomes
+ROWS: tuple[InstructionSpec, ...] = (
+    _row("FBS.TMR", OTHER, "TMR", "Timer", "ZAMANLAYICI",
+         params=(_number("timer", 0, 255), _value("preset"), FO)),
+    _row("FBS.CTR", OTHER + 1, "CTR", "Counter", "SAYICI", inputs=("CK", "CLR"),
+         params=(_number("counter", 0, 255), _value("preset"), FO)),
+    _row("FBS.UDCTR", SUB_BASE + 7, "UDCTR", "Up/down counter", "YUKARI-AŞAĞI SAYICI",
+         inputs=("CK", "U/D", "CLR"), params=(_number("counter", 0, 255), _value("preset"), FO)),
+    _row("FBS.RST", OTHER + 2, "RST", "Reset a timer or counter", "ZAMANLAYICI/SAYICI SIFIRLA",
+         params=(_number("kind", 0, 1), _number("number", 0, 255)), w1=False),
+    _row("FBS.TU", OTHER + 3, "TU", "Rising edge contact", "YÜKSELEN KENAR KONTAĞI", inputs=("IN",),
+         params=(Param("device", ParamKind.BIT),)),
+    _row("FBS.TD", OTHER + 4, "TD", "Falling edge contact", "DÜŞEN KENAR KONTAĞI", inputs=("IN",),
+         params=(Param("device", ParamKind.BIT),)),
+    _row("FBS.MOV", SUB_BASE + 8, "MOV", "Move", "TAŞI",
+         params=(MODE, _value("S"), _register("output")), w1=False),
+    _row("FBS.ADD", SUB_BASE + 11, "(+)", "Addition", "TOPLAMA",
+         params=(MODE, _value("Sa"), _value("Sb"), _register("output"), FO)),
+    _row("FBS.SUB", SUB_BASE + 12, "(-)", "Subtraction", "ÇIKARMA",
+         params=(MODE, _value("Sa"), _value("Sb"), _register("output"), FO)),
+    _row("FBS.MUL", SUB_BASE + 13, "(*)", "Multiplication", "ÇARPMA",
+         params=(MODE, _value("Sa"), _value("Sb"), _register("output"), FO)),
+    _row("FBS.DIV", SUB_BASE + 14, "(/)", "Division", "BÖLME",
+         params=(MODE, _value("Sa"), _value("Sb"), _register("output"), FO)),
+    _row("FBS.INC", SUB_BASE + 15, "(+1)", "Increment", "BİR ARTIR",
+         params=(MODE, _register("output", ParamAccess.READ_WRITE), FO)),
+    _row("FBS.DEC", SUB_BASE + 16, "(-1)", "Decrement", "BİR AZALT",
+         params=(MODE, _register("output", ParamAccess.READ_WRITE), FO)),
+    _row("FBS.CMP", SUB_BASE + 17, "CMP", "Compare", "KARŞILAŞTIR",
+         params=(MODE, _value("Sa"), _value("Sb"), FO)),
+    _row("FBS.ASCWR", SUB_BASE + 94, "ASCWR", "ASCII write", "ASCII YAZ",
+         inputs=("EN", "PAU", "ABT"),
+         params=(_number("MD", 0, 255), _register("S", ParamAccess.READ),
+                 _register("Pt", ParamAccess.READ_WRITE), FO)),
+    *(_row(name, SUB_BASE + fun, symbol, f"Compare contact {symbol}",
+           f"KARŞILAŞTIRMA KONTAĞI {symbol}", inputs=("IN",),
+           params=(MODE, _value("Sa"), _value("Sb")))
+      for fun, name, symbol in ((170, "FBS.EQ", "(=)"), (171, "FBS.GT", "(>)"),
+                                (172, "FBS.LT", "(<)"), (173, "FBS.NE", "(<>)"),
+                                (174, "FBS.GE", "(>=)"), (175, "FBS.LE", "(<=)"))),
+    # drawn and kept, not simulated (a warning at their line; FO stay 0)
+    *(_row(name, SUB_BASE + fun, mnemonic, title, title_tr, params=(_number("fun", 0, 999), FO),
+           cnc=True)
+      for fun, name, mnemonic, title, title_tr in (
+          (140, "FBS.HSPSO", "HSPSO", "High-speed pulse output", "YÜKSEK HIZLI DARBE ÇIKIŞI"),
+          (141, "FBS.MPARA", "MPARA", "Positioning parameters", "KONUMLAMA PARAMETRELERİ"),
+          (142, "FBS.PSOFF", "PSOFF", "Stop the pulse output", "DARBE ÇIKIŞINI DURDUR"),
+          (143, "FBS.PSCNV", "PSCNV", "Pulse position to a value", "DARBE KONUMUNU DEĞERE ÇEVİR"),
+          (176, "FBS.176", "FUN 176", "FUN 176", "FUN 176"))),
+)
+
+BY_FUN: dict[int, InstructionSpec] = {
+    spec.sub - SUB_BASE: spec for spec in ROWS if spec.sub is not None and spec.sub < OTHER}
+NOT_SIMULATED: frozenset[str] = frozenset(spec.name for spec in ROWS if spec.cnc)
+COMPARISON_FUNS = range(170, 176)
+
+# The modules of core/plc/functions that run these rows (merged into core/plc/families.py)
+FAMILIES: dict[str, tuple[str, ...]] = {
+    "fatek_data": ("FBS.MOV", "FBS.ADD", "FBS.SUB", "FBS.MUL", "FBS.DIV", "FBS.INC", "FBS.DEC",
+                   "FBS.CMP", "FBS.EQ", "FBS.GT", "FBS.LT", "FBS.NE", "FBS.GE", "FBS.LE"),
+    "fatek_io": ("FBS.ASCWR", "FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176"),
+    "fatek_timing": ("FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.TU", "FBS.TD"),
+}
