@@ -165,7 +165,7 @@ def test_check_and_compile_take_unchanged_networks_as_read(
     before = window.check()
     assert coded == []
     window.editor.move_cursor(1, 0, 0)
-    window.editor.invert_at_cursor()
+    window.editor.edits.invert_at_cursor()
     after = window.check()
     assert coded == [1]
     assert [d.code for d in after] == [d.code for d in before]

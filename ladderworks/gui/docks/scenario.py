@@ -28,7 +28,6 @@ from ladderworks.core.plc.scenario import (
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.diagnostic_texts import diagnostic_text
-from ladderworks.gui.docks import trace_files
 from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord
 from ladderworks.gui.error_list import location_text
@@ -130,7 +129,7 @@ class ScenarioDock(Retranslating, QDockWidget):
             record = TraceRecord(signals)
             record.period_ms = plc.engine.period_ms
             record.extend(trace.take())
-            trace_files.show_record(self.chart, record)
+            self.chart.show_record(record)
             failing = self.failing_times()
             if failing:  # the first failure at once
                 self.chart.set_cursor(failing[0])
