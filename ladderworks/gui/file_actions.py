@@ -409,7 +409,7 @@ class FileActions(_Window):
                     if self.model.showing_text
                     else print_program(self._program_to_save()[0]))
             data = text.encode("utf-8", errors="surrogateescape")
-        parameters = self.parameters.session.parameters
+        parameters = self.parameters.session.run.parameters
         return Snapshot(data, document.path,
                         format_parameters(parameters, self.dialect) if parameters else None,
                         asdict(document.disk) if document.disk is not None else None)

@@ -392,7 +392,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         use; a running PLC reloads between two scans after asking, and runs on. The status
         bar message."""
         session = self.plc_docks.session
-        running = session.running
+        running = session.run.running
         if running and questions.reload_running(self) != "reload":
             return translate("MainWindow", "Compile finished: {0} bytes (not loaded: the PLC "
                              "runs the previous program)").format(len(binary))

@@ -93,7 +93,7 @@ class ScenarioDock(Retranslating, QDockWidget):
 
     def run_file(self, path: str | Path) -> ScenarioResult | None:
         """Read and run a scenario file."""
-        program = self.session.program
+        program = self.session.run.program
         try:
             scenario = read_scenario(path, program.symbols if program is not None else None)
         except OSError as error:
@@ -104,20 +104,20 @@ class ScenarioDock(Retranslating, QDockWidget):
 
     def run_text(self, text: str, name: str = "scenario") -> ScenarioResult | None:
         """Run scenario text (tests, the recorder's output)."""
-        program = self.session.program
+        program = self.session.run.program
         return self.run(parse_scenario(text, name,
                                        program.symbols if program is not None else None))
 
     def run(self, scenario: Scenario) -> ScenarioResult | None:
         """Run on a cold start of the loaded program with its PMC parameters; the live PLC is
         not touched. Every address of the scenario is traced into the time chart."""
-        binary = self.session.binary
+        binary = self.session.run.binary
         if binary is None:
             self._say(translate("Scenario", "Load (compile) a PLC program first"), error=True)
             return None
-        plc = PlcRun(period_ms=self.session.period_ms)
-        plc.set_parameters(self.session.parameters)
-        if plc.load(binary, self.session.program) or plc.engine is None:
+        plc = PlcRun(period_ms=self.session.run.period_ms)
+        plc.set_parameters(self.session.run.parameters)
+        if plc.load(binary, self.session.run.program) or plc.engine is None:
             return None
         signals = _signals(scenario)
         trace = (plc.engine.start_trace([s.address for s in signals], plc.engine.period_ms,

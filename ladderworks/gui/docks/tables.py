@@ -293,7 +293,7 @@ class PlcTablesDock(Retranslating, QDockWidget):
         for index, kind in enumerate(self.specs):
             self.tabs.setTabText(index, titles[kind])
             self.models[kind].retranslate()
-        layout = self.session.timers
+        layout = self.session.run.timers
         self.tables[TableKind.TIMER].setToolTip(
             translate(
                 "PlcTables",

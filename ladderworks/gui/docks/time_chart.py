@@ -173,15 +173,15 @@ class TimeChartDock(Retranslating, QDockWidget):
         signals = self.parse_signals()
         if signals is None:
             return False
-        if self.session.engine is None:
+        if self.session.run.engine is None:
             self.say(lambda: translate("TimeChart", "Load (compile) a PLC program first"),
                       error=True)
             return False
         period = self.period_spin.value()
         self.record = TraceRecord(signals)
-        self.record.period_ms = max(period, self.session.engine.period_ms)
+        self.record.period_ms = max(period, self.session.run.engine.period_ms)
         self._make_lanes()
-        self.session.start_trace(
+        self.session.run.start_trace(
             [s.address for s in signals], period, widths=[s.width for s in signals]
         )
         self.sampling = True
@@ -194,7 +194,7 @@ class TimeChartDock(Retranslating, QDockWidget):
         """Stop sampling; what was sampled stays on the chart."""
         if not self.sampling:
             return
-        self.session.stop_trace()
+        self.session.run.stop_trace()
         self._take_samples()
         self.sampling = False
         count = len(self.record)
@@ -204,7 +204,7 @@ class TimeChartDock(Retranslating, QDockWidget):
     def clear(self) -> None:
         """Wipe the chart (sampling goes on if started)."""
         if self.sampling:
-            self.session.trace_samples()  # samples taken before CLEAR are not shown
+            self.session.run.trace_samples()  # samples taken before CLEAR are not shown
         self.record.clear()
         self._redraw()
         self._show_cursor()
@@ -216,7 +216,7 @@ class TimeChartDock(Retranslating, QDockWidget):
     def _take_samples(self, _snapshot: object = None) -> None:
         if not self.sampling:
             return
-        samples = self.session.trace_samples()
+        samples = self.session.run.trace_samples()
         if samples and len(samples[0].values) == len(self.record.signals):
             self.record.extend(samples)
             self._redraw()
