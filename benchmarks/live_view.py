@@ -55,7 +55,7 @@ def main(seconds: float = 5.0) -> None:
     assert result.ok, result.diagnostics[:3]
     app.processEvents()
     starts: list[float] = []
-    engine = session.engine
+    engine = session.run.engine
     scan = engine.scan
 
     def timed_scan() -> None:
@@ -90,9 +90,9 @@ def main(seconds: float = 5.0) -> None:
     cpu = time.process_time() - cpu0
     periods = [(b - a) * 1e3 for a, b in itertools.pairwise(starts)]
     periods.sort()
-    status = session.status()
-    print(f"program: {NETWORKS} networks, {len(session.binary.ops)} ops; "
-          f"period {session.period_ms} ms")
+    status = session.run.status()
+    print(f"program: {NETWORKS} networks, {len(session.run.binary.ops)} ops; "
+          f"period {session.run.period_ms} ms")
     print(f"scans: {status.scan_count} in {wall:.1f} s; scan time min/avg/max "
           f"{status.min_ms:.3f}/{status.avg_ms:.3f}/{status.max_ms:.3f} ms; "
           f"overruns {status.overruns}")

@@ -1520,101 +1520,95 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="106"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="235"/>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="251"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="81"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="338"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="352"/>
         <source>The comment tool works on an empty row only</source>
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="223"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="229"/>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="355"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="86"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="202"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="246"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="252"/>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="389"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="91"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="109"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="103"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="111"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="120"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="125"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="129"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="129"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="133"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="298"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="313"/>
         <source>Line: click the second point</source>
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="305"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="96"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="175"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="156"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="188"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="169"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="67"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="178"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="76"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="87"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="160"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="71"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="58"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="264"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="237"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="276"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="249"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="285"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="259"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
@@ -1709,107 +1703,107 @@
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="101"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="103"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="104"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="105"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="106"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="109"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="110"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="111"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="114"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="117"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="118"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
         <source>&amp;Find...</source>
         <translation>&amp;Find...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="120"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
         <source>R&amp;eplace...</source>
         <translation>R&amp;eplace...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="122"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="123"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="124"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
         <source>Find pre&amp;vious</source>
         <translation>Find pre&amp;vious</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="126"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="127"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="129"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="133"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="134"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
         <source>Fit &amp;width</source>
         <translation>Fit &amp;width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="138"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="139"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="141"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="143"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="144"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="151"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="152"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="153"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="154"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
@@ -1864,24 +1858,24 @@
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="404"/>
+        <location filename="../ladderworks/gui/main_window.py" line="406"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="410"/>
+        <location filename="../ladderworks/gui/main_window.py" line="412"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="417"/>
+        <location filename="../ladderworks/gui/main_window.py" line="419"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="264"/>
-        <location filename="../ladderworks/gui/main_window.py" line="412"/>
+        <location filename="../ladderworks/gui/main_window.py" line="265"/>
+        <location filename="../ladderworks/gui/main_window.py" line="414"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -2020,32 +2014,32 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="374"/>
+        <location filename="../ladderworks/gui/main_window.py" line="376"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="390"/>
+        <location filename="../ladderworks/gui/main_window.py" line="392"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="454"/>
+        <location filename="../ladderworks/gui/main_window.py" line="456"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="457"/>
+        <location filename="../ladderworks/gui/main_window.py" line="459"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="489"/>
+        <location filename="../ladderworks/gui/main_window.py" line="491"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="490"/>
+        <location filename="../ladderworks/gui/main_window.py" line="492"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2901,62 +2895,62 @@
 <context>
     <name>Print</name>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="41"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="54"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="67"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="80"/>
         <source>Printing the ladder…</source>
         <translation>Printing the ladder…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="68"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="81"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="165"/>
         <source>Print preview</source>
         <translation>Print preview</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
         <source>Export PDF</source>
         <translation>Export PDF</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="169"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF files (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="177"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="192"/>
         <source>&amp;Print...</source>
         <translation>&amp;Print...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="193"/>
         <source>Print pre&amp;view...</source>
         <translation>Print pre&amp;view...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="179"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="194"/>
         <source>Export P&amp;DF...</source>
         <translation>Export P&amp;DF...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="185"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="200"/>
         <source>Printing was cancelled or failed</source>
         <translation>Printing was cancelled or failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="187"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="202"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} pages written to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="204"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} pages sent to the printer</translation>
     </message>
@@ -3364,118 +3358,118 @@
 <context>
     <name>Scenario</name>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="95"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="94"/>
         <source>Run scenario</source>
         <translation>Run scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="96"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="95"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Scenario files (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="107"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="124"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="183"/>
         <source>passed</source>
         <translation>passed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="185"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
         <source>FAILED</source>
         <translation>FAILED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="168"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: all {1} checks passed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="172"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="171"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {1} of {2} checks failed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="219"/>
         <source>Save the recorded scenario</source>
         <translation>Save the recorded scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
         <source>recorded in LadderWorks</source>
         <translation>recorded in LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="233"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
         <source>Recording inputs and forces...</source>
         <translation>Recording inputs and forces...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="242"/>
         <source>Recorded {0} changes</source>
         <translation>Recorded {0} changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="251"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="254"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="266"/>
         <source>PLC scenario</source>
         <translation>PLC scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
         <source>Run scenario...</source>
         <translation>Run scenario...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
         <source>Record scenario</source>
         <translation>Record scenario</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
         <source>Check</source>
         <translation>Check</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Expected</source>
         <translation>Expected</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Got</source>
         <translation>Got</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Time (ms)</source>
         <translation>Time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
@@ -3572,14 +3566,14 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="81"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="398"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
@@ -3595,8 +3589,8 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="127"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
@@ -3611,82 +3605,82 @@
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="455"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="456"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="457"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="458"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="467"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="469"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="461"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="470"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="462"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="463"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="473"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="474"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="475"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="467"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="481"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="475"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="484"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="477"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="486"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="97"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
@@ -3732,152 +3726,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="97"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="113"/>
         <source>Select</source>
         <translation>Select</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="157"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="174"/>
         <source>Input</source>
         <translation>Input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="172"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="189"/>
         <source>NOT input</source>
         <translation>NOT input</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="186"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="203"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="200"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="217"/>
         <source>NOT output</source>
         <translation>NOT output</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="214"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="231"/>
         <source>SET coil</source>
         <translation>SET coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="229"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="246"/>
         <source>RST coil</source>
         <translation>RST coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="244"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="261"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="260"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="275"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="274"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="289"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="324"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="338"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="348"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="371"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="364"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="385"/>
         <source>Function</source>
         <translation>Function</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="382"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="402"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="399"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="417"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="114"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Click an element or drag over cells to select; right-click: cut, copy, paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="158"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="175"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Click a cell to place a contact (RD / AND), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="173"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="190"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="187"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="204"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Click a cell to place a coil (WRT), type its address, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="201"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="218"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>Click a cell to place a NOT coil (WRT.NOT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="215"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="232"/>
         <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
         <translation>Click a cell to place a SET coil (bit := 1 while the logic is 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="230"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="247"/>
         <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
         <translation>Click a cell to place an RST coil (bit := 0 while the logic is 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="245"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="262"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Click a contact or coil to turn it into its inverse</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="261"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="276"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Click a contact or coil to add a parallel one below it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="275"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="290"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Click a first point, then a second point: a horizontal or vertical wire</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="325"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="339"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Click the start of an empty row, type the comment, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="349"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="372"/>
         <source>Click an element to delete it</source>
         <translation>Click an element to delete it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="365"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="386"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Choose a function in the list, click the diagram, fill its table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="383"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="403"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Click a cell to insert an empty row before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="400"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="418"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Click a cell to insert an empty row after it</translation>
     </message>
@@ -3908,42 +3902,42 @@
 <context>
     <name>TraceFiles</name>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="49"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="68"/>
         <source>LADDER-III...</source>
         <translation>LADDER-III...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="70"/>
         <source>Export the samples as a LADDER-III signal-trace result</source>
         <translation>Export the samples as a LADDER-III signal-trace result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="52"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="71"/>
         <source>Import...</source>
         <translation>Import...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="54"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="73"/>
         <source>Show a LADDER-III trace result or a CSV trace</source>
         <translation>Show a LADDER-III trace result or a CSV trace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="83"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="102"/>
         <source>{0}, line {1}: not a trace file</source>
         <translation>{0}, line {1}: not a trace file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="110"/>
         <source>Imported {0}: {1} samples</source>
         <translation>Imported {0}: {1} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
         <source>Export as LADDER-III trace result</source>
         <translation>Export as LADDER-III trace result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="126"/>
         <source>Import a trace</source>
         <translation>Import a trace</translation>
     </message>

@@ -1520,101 +1520,95 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="106"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="235"/>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="251"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="81"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="338"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="352"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="223"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="229"/>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="355"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="86"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="202"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="246"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="252"/>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="389"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="91"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="109"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="103"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="111"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="120"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="125"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="129"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="129"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="133"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="298"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="313"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="305"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="96"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="175"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="156"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="188"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="169"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="67"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="178"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="76"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="87"/>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="160"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="71"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="58"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="264"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="237"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="276"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="249"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="285"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="259"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -1709,107 +1703,107 @@
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="101"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="103"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="104"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="105"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="106"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="109"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="110"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="111"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="114"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="117"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="118"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
         <source>&amp;Find...</source>
         <translation>&amp;Bul...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="120"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
         <source>R&amp;eplace...</source>
         <translation>&amp;Değiştir...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="122"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="123"/>
         <source>Find &amp;next</source>
         <translation>&amp;Sonrakini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="124"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
         <source>Find pre&amp;vious</source>
         <translation>&amp;Öncekini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="126"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="127"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="129"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="133"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="134"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
         <source>Fit &amp;width</source>
         <translation>&amp;Genişliğe sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="138"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="139"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="141"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="143"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="144"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="151"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="152"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="153"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="154"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
@@ -1864,24 +1858,24 @@
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="404"/>
+        <location filename="../ladderworks/gui/main_window.py" line="406"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="410"/>
+        <location filename="../ladderworks/gui/main_window.py" line="412"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="417"/>
+        <location filename="../ladderworks/gui/main_window.py" line="419"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="264"/>
-        <location filename="../ladderworks/gui/main_window.py" line="412"/>
+        <location filename="../ladderworks/gui/main_window.py" line="265"/>
+        <location filename="../ladderworks/gui/main_window.py" line="414"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -2020,32 +2014,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="374"/>
+        <location filename="../ladderworks/gui/main_window.py" line="376"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="390"/>
+        <location filename="../ladderworks/gui/main_window.py" line="392"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="454"/>
+        <location filename="../ladderworks/gui/main_window.py" line="456"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="457"/>
+        <location filename="../ladderworks/gui/main_window.py" line="459"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="489"/>
+        <location filename="../ladderworks/gui/main_window.py" line="491"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="490"/>
+        <location filename="../ladderworks/gui/main_window.py" line="492"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2901,62 +2895,62 @@
 <context>
     <name>Print</name>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="41"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="54"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="67"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="80"/>
         <source>Printing the ladder…</source>
         <translation>Ladder yazdırılıyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="68"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="81"/>
         <source>Cancel</source>
         <translation>İptal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="165"/>
         <source>Print preview</source>
         <translation>Baskı önizleme</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="183"/>
         <source>Export PDF</source>
         <translation>PDF olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="169"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="184"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF dosyaları (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="177"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="192"/>
         <source>&amp;Print...</source>
         <translation>&amp;Yazdır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="178"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="193"/>
         <source>Print pre&amp;view...</source>
         <translation>Baskı ön&amp;izleme...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="179"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="194"/>
         <source>Export P&amp;DF...</source>
         <translation>P&amp;DF olarak dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="185"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="200"/>
         <source>Printing was cancelled or failed</source>
         <translation>Yazdırma iptal edildi veya başarısız oldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="187"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="202"/>
         <source>{0} pages written to {1}</source>
         <translation>{0} sayfa {1} dosyasına yazıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_actions.py" line="189"/>
+        <location filename="../ladderworks/gui/print_actions.py" line="204"/>
         <source>{0} pages sent to the printer</source>
         <translation>{0} sayfa yazıcıya gönderildi</translation>
     </message>
@@ -3364,118 +3358,118 @@
 <context>
     <name>Scenario</name>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="95"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="94"/>
         <source>Run scenario</source>
         <translation>Senaryo çalıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="96"/>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="95"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
         <source>Scenario files (*.csv);;All files (*)</source>
         <translation>Senaryo dosyaları (*.csv);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="107"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="124"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="183"/>
         <source>passed</source>
         <translation>geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="185"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="184"/>
         <source>FAILED</source>
         <translation>BAŞARISIZ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="169"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="168"/>
         <source>{0}: all {1} checks passed</source>
         <translation>{0}: {1} denetimin tümü geçti</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="172"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="171"/>
         <source>{0}: {1} of {2} checks failed</source>
         <translation>{0}: {2} denetimden {1} tanesi başarısız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="219"/>
         <source>Save the recorded scenario</source>
         <translation>Kaydedilen senaryoyu sakla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="228"/>
         <source>recorded in LadderWorks</source>
         <translation>LadderWorks ile kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="233"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="232"/>
         <source>Recording inputs and forces...</source>
         <translation>Girişler ve zorlamalar kaydediliyor...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="242"/>
         <source>Recorded {0} changes</source>
         <translation>{0} değişiklik kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="251"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="255"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="254"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="266"/>
         <source>PLC scenario</source>
         <translation>PLC senaryosu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="267"/>
         <source>Run scenario...</source>
         <translation>Senaryo çalıştır...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="269"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="268"/>
         <source>Record scenario</source>
         <translation>Senaryo kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
         <source>Line</source>
         <translation>Satır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="270"/>
         <source>Check</source>
         <translation>Denetim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Expected</source>
         <translation>Beklenen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="271"/>
         <source>Got</source>
         <translation>Okunan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Time (ms)</source>
         <translation>Zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/scenario.py" line="273"/>
+        <location filename="../ladderworks/gui/docks/scenario.py" line="272"/>
         <source>Result</source>
         <translation>Sonuç</translation>
     </message>
@@ -3572,14 +3566,14 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="81"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="398"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
@@ -3595,8 +3589,8 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="109"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="127"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
@@ -3611,82 +3605,82 @@
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="455"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="456"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="457"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="458"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="467"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="469"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="461"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="470"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="462"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="463"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="473"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="474"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="475"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="467"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="481"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="475"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="484"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="477"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="486"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="97"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
@@ -3732,152 +3726,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="97"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="113"/>
         <source>Select</source>
         <translation>SEÇİM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="157"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="174"/>
         <source>Input</source>
         <translation>GİRİŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="172"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="189"/>
         <source>NOT input</source>
         <translation>GİRİŞ DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="186"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="203"/>
         <source>Output</source>
         <translation>ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="200"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="217"/>
         <source>NOT output</source>
         <translation>ÇIKIŞ DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="214"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="231"/>
         <source>SET coil</source>
         <translation>SET ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="229"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="246"/>
         <source>RST coil</source>
         <translation>RST ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="244"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="261"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="260"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="275"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="274"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="289"/>
         <source>Line</source>
         <translation>ÇİZGİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="324"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="338"/>
         <source>Comment</source>
         <translation>YORUM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="348"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="371"/>
         <source>Delete</source>
         <translation>SİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="364"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="385"/>
         <source>Function</source>
         <translation>FONKSİYON</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="382"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="402"/>
         <source>Insert row before</source>
         <translation>ÖNCEYE SATIR GİR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="399"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="417"/>
         <source>Insert row after</source>
         <translation>SONRAYA SATIR GİR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="114"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Bir eleman seçmek için tıklayın veya hücreler üzerinde sürükleyin; sağ tık: kes, kopyala, yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="158"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="175"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Kontak (RD / AND) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="173"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="190"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>DEĞİL kontak (RD.NOT / AND.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="187"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="204"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Çıkış (WRT) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="201"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="218"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>DEĞİL çıkış (WRT.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="215"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="232"/>
         <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
         <translation>SET çıkış koymak için hücreye tıklayın (mantık 1 iken bit := 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="230"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="247"/>
         <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
         <translation>RST çıkış koymak için hücreye tıklayın (mantık 1 iken bit := 0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="245"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="262"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Tersine çevirmek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="261"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="276"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Altına paralel eklemek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="275"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="290"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Birinci noktaya, sonra ikinci noktaya tıklayın: yatay veya dikey çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="325"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="339"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Boş bir satırın başına tıklayın, yorumu yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="349"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="372"/>
         <source>Click an element to delete it</source>
         <translation>Silmek için elemanın üzerine tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="365"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="386"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Listeden fonksiyonu seçin, diyagrama tıklayın, özellik tablosunu doldurun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="383"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="403"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Önüne boş satır girmek için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="400"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="418"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Arkasına boş satır girmek için hücreye tıklayın</translation>
     </message>
@@ -3908,42 +3902,42 @@
 <context>
     <name>TraceFiles</name>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="49"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="68"/>
         <source>LADDER-III...</source>
         <translation>LADDER-III...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="51"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="70"/>
         <source>Export the samples as a LADDER-III signal-trace result</source>
         <translation>Örnekleri LADDER-III sinyal izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="52"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="71"/>
         <source>Import...</source>
         <translation>İçe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="54"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="73"/>
         <source>Show a LADDER-III trace result or a CSV trace</source>
         <translation>Bir LADDER-III izleme sonucunu ya da CSV izlemesini göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="83"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="102"/>
         <source>{0}, line {1}: not a trace file</source>
         <translation>{0}, satır {1}: izleme dosyası değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="110"/>
         <source>Imported {0}: {1} samples</source>
         <translation>{0} içe aktarıldı: {1} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
         <source>Export as LADDER-III trace result</source>
         <translation>LADDER-III izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="126"/>
         <source>Import a trace</source>
         <translation>Bir izleme içe aktar</translation>
     </message>

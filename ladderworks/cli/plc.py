@@ -13,11 +13,12 @@ from ladderworks.core.address import Address, AddressError
 from ladderworks.core.compiler import compile_program, disassemble
 from ladderworks.core.compiler.binary import MAGIC, decode
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
+from ladderworks.core.dialects import typed_target
 from ladderworks.core.il import print_program
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
 from ladderworks.core.plc.parameters import ParameterFile, parameters_beside, read_parameter_file
 from ladderworks.core.plc.session import PlcRun
-from ladderworks.core.symbols import SymbolTable, parse_target
+from ladderworks.core.symbols import SymbolTable
 
 _SET_RE = re.compile(r"^([^=@]+)=(-?\w+)(?:@(\d+))?$")
 _NUMBER_PAIR_RE = re.compile(r"^(\d+)=(\d+)$")
@@ -154,7 +155,7 @@ def _target(text: str, file: str | None = None) -> _Target:
         return symbols.address_of(name) if symbols is not None else None
 
     try:
-        target = parse_target(text, address_of, dialect_of(file) if file is not None else None)
+        target = typed_target(text, address_of, dialect_of(file) if file is not None else None)
     except AddressError as error:
         raise ValueError(error.diagnostic.message()) from None
     return _Target(target.text, target.address, target.width)

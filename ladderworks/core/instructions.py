@@ -6,6 +6,10 @@ from dataclasses import dataclass, replace
 from enum import StrEnum
 from functools import cache
 
+from ladderworks.core.instruction_fields import Numbered as Numbered
+from ladderworks.core.instruction_fields import Operation as Operation
+from ladderworks.core.instruction_fields import ParamAccess as ParamAccess
+
 
 class Kind(StrEnum):
     """What sort of instruction a row is."""
@@ -77,35 +81,6 @@ class StackOp(StrEnum):
     INVERT = "invert"  # Delta INV: ST0 := NOT ST0
 
 
-class ParamAccess(StrEnum):
-    """What an instruction does with the data at a parameter's address."""
-
-    READ = "read"
-    WRITE = "write"  # written: the checks refuse an input (X, F) here
-    READ_WRITE = "read-write"  # read and written (a register it keeps, SFT's data): an output too
-    EITHER = "either"  # read or written as the run decides (XMOV's RW, a CNC window): not refused
-
-
-class Numbered(StrEnum):
-    """The T/C memory a numbered timer or counter uses; its number is its first parameter."""
-
-    NONE = ""
-    TIMER = "timer"  # TMR: its preset in T (FANUC: and a precision); the timer table lists it
-    FIXED_TIMER = "fixed-timer"  # TMRB: its preset a constant; the timer table lists it
-    COUNTER = "counter"  # CTR: its preset and value in C; the counter table lists it
-    FIXED_COUNTER = "fixed-counter"  # CTRB: its value in C, after the CTRs'
-
-
-class Operation(StrEnum):
-    """The arithmetic an instruction does with its two operands."""
-
-    NONE = ""
-    ADD = "add"
-    SUBTRACT = "subtract"
-    MULTIPLY = "multiply"
-    DIVIDE = "divide"  # the binary form also leaves the remainder in R9002
-
-
 @dataclass(frozen=True, slots=True)
 class Param:
     """One parameter of a functional instruction."""
@@ -161,6 +136,7 @@ class InstructionSpec:
     numbered: Numbered = Numbered.NONE  # the T/C memory its number selects
     operation: Operation = Operation.NONE  # arithmetic: what it computes
     binary: bool = False  # arithmetic: signed binary data (ADDB, ...), else BCD
+    pulse: bool = False  # runs only in the scan its input went on (a dialect's P form)
     stack: StackOp = StackOp.NONE  # basic without operand: a dialect's stack operation
     dialect: str = ""  # the dialect whose row it is (core/dialects), "" for the PMC's
     gates_boxes: bool = False  # COMMON: while off, boxes in its range see their input off too

@@ -142,19 +142,13 @@ class Target:
 
 
 def parse_target(text: str,
-                 address_of: Callable[[str], Address | None] | None = None,
-                 dialect: str | None = None) -> Target:
-    """`ADDR[:W]`: an address or a symbol (looked up by `address_of`), width 1, 2 or 4 bytes.
+                 address_of: Callable[[str], Address | None] | None = None) -> Target:
+    """`ADDR[:W]`: an address or a symbol (looked up by `address_of`), width 1, 2 or 4 bytes
+    (a dialect's program: `dialects.typed_target`).
 
-    `dialect` (a Delta program's): ADDR in its devices' spelling (dialects.parse_target).
     Raises AddressError: the address's own codes, `target-width` for another width after the
     colon, `bit-width` for a bit address with a width."""
     typed = text.strip()
-    if dialect is not None and dialect not in ("seed", "fanuc"):
-        from ladderworks.core import dialects
-
-        address, size = dialects.parse_target(typed, dialect)
-        return Target(typed, address, size)
     spelled, colon, width_text = typed.partition(":")
     width = 1
     if colon:

@@ -27,7 +27,7 @@ class ActionSpec:
 
     name: str  # objectName, the key of `actions_by_name`
     text: str  # English, marked for translation in context "MainWindow"
-    slot: str  # a method of the window, or of one of its parts: "editor.cut"
+    slot: str  # a method of the window, or of one of its parts: "editor.edits.cut"
     shortcut: Shortcut = None  # several: the first is shown in the menu
     icon: str | None = None  # resources/icons/<icon>.svg, or a Qt standard pixmap "SP_…"
     menu: str | None = None  # objectName of the menu it is in
@@ -92,29 +92,30 @@ ACTIONS: tuple[ActionSpec, ...] = (
       "model.undo_stack.redo", shortcut=("Ctrl+Y", "Ctrl+Shift+Z", Key.Redo),
       icon="SP_ArrowForward", menu="menu_edit", toolbar=1, enabled_when=CAN_REDO),
     A("action_cut", QT_TRANSLATE_NOOP("MainWindow", "Cu&t"),
-      "editor.cut", shortcut=Key.Cut, menu="menu_edit", group=1, enabled_when=LADDER_SHOWN),
+      "editor.edits.cut", shortcut=Key.Cut, menu="menu_edit", group=1, enabled_when=LADDER_SHOWN),
     A("action_copy", QT_TRANSLATE_NOOP("MainWindow", "&Copy"),
-      "editor.copy", shortcut=Key.Copy, menu="menu_edit", group=1, enabled_when=LADDER_SHOWN),
+      "editor.edits.copy", shortcut=Key.Copy, menu="menu_edit", group=1, enabled_when=LADDER_SHOWN),
     A("action_paste", QT_TRANSLATE_NOOP("MainWindow", "&Paste"),
-      "editor.paste", shortcut=Key.Paste, menu="menu_edit", group=1, enabled_when=LADDER_SHOWN),
+      "editor.edits.paste", shortcut=Key.Paste, menu="menu_edit", group=1,
+      enabled_when=LADDER_SHOWN),
     A("action_delete", QT_TRANSLATE_NOOP("MainWindow", "&Delete"),
-      "editor.delete_at_cursor", shortcut="Del", menu="menu_edit", group=1,
+      "editor.edits.delete_at_cursor", shortcut="Del", menu="menu_edit", group=1,
       enabled_when=LADDER_SHOWN),
     A("action_edit_element", QT_TRANSLATE_NOOP("MainWindow", "&Edit element"),
       "editor.edit_at_cursor", menu="menu_edit", group=2, enabled_when=LADDER_SHOWN),
     A("action_invert", QT_TRANSLATE_NOOP("MainWindow", "NOT (invert)"),
-      "editor.invert_at_cursor", icon="invert", menu="menu_edit", group=2,
+      "editor.edits.invert_at_cursor", icon="invert", menu="menu_edit", group=2,
       enabled_when=LADDER_SHOWN),
     A("action_or", QT_TRANSLATE_NOOP("MainWindow", "OR (add parallel)"),
-      "editor.or_at_cursor", icon="or", menu="menu_edit", group=2, enabled_when=LADDER_SHOWN),
+      "editor.edits.or_at_cursor", icon="or", menu="menu_edit", group=2, enabled_when=LADDER_SHOWN),
     A("action_insert_row_before", QT_TRANSLATE_NOOP("MainWindow", "Insert row before"),
-      "editor.insert_row_before", icon="row_before", menu="menu_edit", group=2,
+      "editor.edits.insert_row_before", icon="row_before", menu="menu_edit", group=2,
       enabled_when=LADDER_SHOWN),
     A("action_insert_row_after", QT_TRANSLATE_NOOP("MainWindow", "Insert row after"),
-      "editor.insert_row_after", icon="row_after", menu="menu_edit", group=2,
+      "editor.edits.insert_row_after", icon="row_after", menu="menu_edit", group=2,
       enabled_when=LADDER_SHOWN),
     A("action_delete_network", QT_TRANSLATE_NOOP("MainWindow", "Delete network"),
-      "editor.delete_network", menu="menu_edit", group=2, enabled_when=LADDER_SHOWN),
+      "editor.edits.delete_network", menu="menu_edit", group=2, enabled_when=LADDER_SHOWN),
     A("action_find", QT_TRANSLATE_NOOP("MainWindow", "&Find..."),
       "show_find", shortcut=Key.Find, menu="menu_edit", group=3, argument=False),
     A("action_replace", QT_TRANSLATE_NOOP("MainWindow", "R&eplace..."),

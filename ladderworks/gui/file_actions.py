@@ -71,21 +71,21 @@ class FileActions(_Window):
         file_saved: SignalInstance
 
         def warn(self, title: str, text: str) -> None: ...
-        def _show_message(self, text: str) -> None: ...
-        def _update_title(self, *_args: object) -> None: ...
-        def _remember(self, path: Path) -> None: ...
-        def _program_shown(self, program: Program) -> None: ...
+        def show_message(self, text: str) -> None: ...
+        def update_title(self, *_args: object) -> None: ...
+        def remember_file(self, path: Path) -> None: ...
+        def program_shown(self, program: Program) -> None: ...
 
     def _install_file_state(self) -> None:
         """Create the document, its watcher and the autosaver (called once by __init__)."""
         self.document = ProgramDocument(self.model, self.text_view.document(), self.parameters,
                                         self)
-        self.document.modified_changed.connect(self._update_title)
+        self.document.modified_changed.connect(self.update_title)
         self.document.changed_outside.connect(self._on_changed_outside)
         self._last_save_result = False
         self.recovery = RecoveryStore()
         self.autosaver = Autosaver(self.recovery, self.recovery_snapshot, self)
-        self.autosaver.failed.connect(self._show_message)
+        self.autosaver.failed.connect(self.show_message)
         self.model.undo_stack.indexChanged.connect(self.autosaver.edited)
         self.parameters.session.parameters_changed.connect(self.autosaver.edited)
 
@@ -106,7 +106,7 @@ class FileActions(_Window):
         return self.document.is_modified()
 
     def _on_changed_outside(self, name: str) -> None:
-        self._show_message(translate(
+        self.show_message(translate(
             "MainWindow", "{0} was changed by another program").format(Path(name).name))
 
     def maybe_save(self) -> bool:
@@ -130,7 +130,7 @@ class FileActions(_Window):
         self.document.reset()
         self.failed_path = None
         self.model.set_program(Program())
-        self._program_shown(Program())
+        self.program_shown(Program())
         self.text_view.setPlainText("")
         self.text_view.document().setModified(False)
         self.errors.set_diagnostics([])
@@ -138,7 +138,7 @@ class FileActions(_Window):
         self.dialect = "seed"
         self.parameters.reset()
         self.recovery.remove()
-        self._update_title()
+        self.update_title()
 
     def _open_parameters(self, path: Path) -> None:
         """Read the PMC parameter file beside the program (the defaults when there is none)."""
@@ -170,7 +170,7 @@ class FileActions(_Window):
             return False
         self._open_parameters(path)
         self._show_result(path, result.program, result.ok, result.diagnostics)
-        self._remember(path)
+        self.remember_file(path)
         self.recovery.remove()
         return True
 
@@ -185,20 +185,20 @@ class FileActions(_Window):
             self.failed_path = None
             self.model.set_program(program, kept=[])  # an unchanged network saves as read
             self.model.set_mode(Mode.LADDER)
-            self._program_shown(program)
+            self.program_shown(program)
         else:
             self.failed_path = path
             source = program.source
             text = "\n".join(source.lines) + "\n" if source is not None else ""
             text = bad_bytes_shown(text)
             self.model.set_program(Program())
-            self._program_shown(Program())
+            self.program_shown(Program())
             self.text_view.setPlainText(text)
             self.text_view.document().setModified(False)
             self.model.set_mode(Mode.TEXT)
             self.errors.show()
-            self._show_message(translate("MainWindow", "The file has errors: it is shown as text"))
-        self._update_title()
+            self.show_message(translate("MainWindow", "The file has errors: it is shown as text"))
+        self.update_title()
 
     def open_dialog(self) -> None:
         """File > Open."""
@@ -307,16 +307,16 @@ class FileActions(_Window):
             return False
         self.model.mark_saved()
         self.text_view.document().setModified(False)
-        self._remember(path)
-        self._update_title()
+        self.remember_file(path)
+        self.update_title()
         self.recovery.remove()
         if drafts:
-            self._show_message(translate(
+            self.show_message(translate(
                 "MainWindow",
                 "Saved {0}; networks with errors are kept as drawings (see the error list)",
             ).format(path.name))
         else:
-            self._show_message(translate("MainWindow", "Saved {0}").format(path.name))
+            self.show_message(translate("MainWindow", "Saved {0}").format(path.name))
         self.file_saved.emit(str(path))
         return True
 
@@ -361,7 +361,7 @@ class FileActions(_Window):
             return False
         self.document.detach()
         self.failed_path = None
-        self._update_title()
+        self.update_title()
         return True
 
     def export_mod_dialog(self) -> None:
@@ -393,7 +393,7 @@ class FileActions(_Window):
                       translate("MainWindow", "Cannot write {0}: {1}").format(
                           path, os_error_text(error)))
             return False
-        self._show_message(translate("MainWindow", "Exported {0}").format(path.name))
+        self.show_message(translate("MainWindow", "Exported {0}").format(path.name))
         return True
 
     # -- recovery ------------------------------------------------------------------------
@@ -413,7 +413,7 @@ class FileActions(_Window):
                     if self.model.showing_text
                     else print_program(self._program_to_save()[0]))
             data = text.encode("utf-8", errors="surrogateescape")
-        parameters = self.parameters.session.parameters
+        parameters = self.parameters.session.run.parameters
         return Snapshot(data, document.path,
                         format_parameters(parameters, self.dialect) if parameters else None,
                         asdict(document.disk) if document.disk is not None else None)
@@ -455,8 +455,8 @@ class FileActions(_Window):
         self.failed_path = None  # the original on disk is not the text that failed
         self.model.mark_modified()
         self.text_view.document().setModified(True)
-        self._update_title()
+        self.update_title()
         self.autosaver.save_now()
-        self._show_message(translate("MainWindow", "Recovered unsaved work from {0}").format(
+        self.show_message(translate("MainWindow", "Recovered unsaved work from {0}").format(
             _when(copy)))
         return True

@@ -260,7 +260,7 @@ class FindReplaceDialog(Retranslating, QDialog):
         [(index, edit)] = replacements(self.editor.networks, current, query, new)
         name = StepName("FindReplace", QT_TRANSLATE_NOOP("FindReplace", "Replace {0} with {1}"),
                         (query.text, str(new)))
-        self.editor.run_edit(index, edit.apply, name)
+        self.editor.edits.run_edit(index, edit.apply, name)
         if self.hits():
             self.find_next()
         else:

@@ -81,7 +81,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.editor = LadderEditor(self.model, self)
         self.fit_width = FitWidth(self.editor)  # View › Fit width
         self.text_view = ProgramTextView(self)
-        self.text_view.document().modificationChanged.connect(self._update_title)
+        self.text_view.document().modificationChanged.connect(self.update_title)
         self.pages = QStackedWidget(self)
         self.pages.setObjectName("pages")
         self.pages.addWidget(self.editor)
@@ -121,18 +121,18 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.plc_docks.diagnostic.remember_zoom(self.settings)  # its zoom, saved
         self.cross_reference = cross_reference.install(self, self.menus, self.editor,
                                                        self.errors)
-        self.printing = PrintActions(self, self.menus)  # File › Print, Export PDF
+        self.printing = PrintActions(self, self, self.menus)  # File › Print, Export PDF
         self.undo_texts = UndoTexts(self.model.undo_stack, self.actions_by_name["action_undo"],
                                     self.actions_by_name["action_redo"])  # "Undo Delete"
         # PMC parameters (T/C/K/D set in the PLC tables) are saved with the program
         self.parameters = ParameterDocument(self.plc_docks.session)
-        self.plc_docks.session.parameters_changed.connect(self._update_title)
+        self.plc_docks.session.parameters_changed.connect(self.update_title)
         self._install_file_state()
 
-        self.model.modified_changed.connect(self._update_title)
+        self.model.modified_changed.connect(self.update_title)
         self.editor.tool_requested.connect(self.set_tool)
         self.editor.hover_changed.connect(self._show_hover)
-        self.editor.message.connect(self._show_message)
+        self.editor.message.connect(self.show_message)
         self.set_tool(Tool.SELECT)
         self.editor.set_function(self.tool_palette.current_function())
         self.retranslate()
@@ -191,7 +191,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
     def _fit_toggled(self, on: bool) -> None:
         self._show_zoom()
         if on:
-            self._show_message(self.fit_width.describe)
+            self.show_message(self.fit_width.describe)
 
     def _show_zoom(self, *_args: object) -> None:
         self.zoom_label.setText(percent(self.editor.zoom() * 100))
@@ -210,7 +210,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
             self.actions_by_name[f"action_language_{code}"].setChecked(
                 self.language.current == code
             )
-        self._update_title()
+        self.update_title()
         self._retranslate_status()
         self._show_zoom()
         self.editor.viewport().update()  # the networks' numbers (N1 / D1) are drawn words
@@ -229,7 +229,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Make `tool` the current tool of the grid editor."""
         self.tool_actions[tool].setChecked(True)
         self.editor.set_tool(tool)
-        self._show_message(lambda: BY_TOOL[tool].help(), 4000)
+        self.show_message(lambda: BY_TOOL[tool].help(), 4000)
 
     def current_tool(self) -> Tool:
         """The checked tool."""
@@ -242,7 +242,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
     def _show_hover(self, text: str) -> None:
         self.cell_label.setText(text)
 
-    def _show_message(self, text: str | Callable[[], str], timeout: int = 6000) -> None:
+    def show_message(self, text: str | Callable[[], str], timeout: int = 6000) -> None:
         """A status-bar message; one given as a function is said again after a language
         switch, a plain text is taken away then (it would stay in the old language)."""
         self._status_text = text if callable(text) else None
@@ -260,7 +260,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
 
     # -- documents -----------------------------------------------------------------------
 
-    def _update_title(self, *_args: object) -> None:
+    def update_title(self, *_args: object) -> None:
+        """The window's title: the file's name, `*` when modified."""
         name = self.path.name if self.path else translate("MainWindow", "Untitled")
         star = "*" if self.is_modified() else ""
         self.setWindowTitle(f"{name}{star} — LadderWorks")
@@ -275,7 +276,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         box.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose, True)
         box.open()
 
-    def _program_shown(self, program: Program) -> None:
+    def program_shown(self, program: Program) -> None:
         """A program is now shown: its symbols and messages go to the docks."""
         self.program_info = program
         # the cell under the cursor of the program now shown, not the last one's
@@ -297,7 +298,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         dialog.open()
         return dialog
 
-    def _remember(self, path: Path) -> None:
+    def remember_file(self, path: Path) -> None:
+        """Put `path` first in File › Recent files."""
         self.settings.add_recent_file(str(path))
         self._update_recent_menu()
 
@@ -353,10 +355,10 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.failed_path = None
         self.model.set_program(result.program)
         self.model.set_mode(Mode.LADDER)
-        self._program_shown(result.program)
+        self.program_shown(result.program)
         if modified:
             self.model.mark_modified()
-        self._update_title()
+        self.update_title()
         return True
 
     # -- PLC -----------------------------------------------------------------------------
@@ -371,7 +373,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.errors.set_diagnostics(diagnostics)
         self.errors.show()
         errors = sum(1 for d in diagnostics if d.is_error)
-        self._show_message(lambda: translate("MainWindow", "Check: {0} error(s)").format(errors))
+        self.show_message(lambda: translate("MainWindow", "Check: {0} error(s)").format(errors))
         return diagnostics
 
     def compile(self) -> bytes | None:
@@ -387,11 +389,11 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         if binary is None:
             self.errors.show()
             errors = sum(1 for d in diagnostics if d.is_error)
-            self._show_message(lambda: translate(
+            self.show_message(lambda: translate(
                 "MainWindow", "Compile failed: {0} error(s)").format(errors))
         else:
             assert program is not None
-            self._show_message(self._load_into_plc(binary, program))
+            self.show_message(self._load_into_plc(binary, program))
         return binary
 
     def _load_into_plc(self, binary: bytes, program: Program) -> str:
@@ -399,7 +401,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         use; a running PLC reloads between two scans after asking, and runs on. The status
         bar message."""
         session = self.plc_docks.session
-        running = session.running
+        running = session.run.running
         if running and questions.reload_running(self) != "reload":
             return translate("MainWindow", "Compile finished: {0} bytes (not loaded: the PLC "
                              "runs the previous program)").format(len(binary))
@@ -444,17 +446,17 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
             return
         if self.show_as_ladder():
             dialog.find_again(forward)
-            self._show_message(dialog.message.text())
+            self.show_message(dialog.message.text())
 
     # -- help and closing ----------------------------------------------------------------
 
     def use_signal(self, address: Address) -> None:
         """A signal double-clicked in the list: onto the element at the cursor, else copied."""
-        if self.editor.assign_address_at_cursor(address):
-            self._show_message(translate("MainWindow", "Address {0} set").format(address))
+        if self.editor.edits.assign_address_at_cursor(address):
+            self.show_message(translate("MainWindow", "Address {0} set").format(address))
             return
         QApplication.clipboard().setText(str(address))
-        self._show_message(translate(
+        self.show_message(translate(
             "MainWindow", "{0} copied (select a contact or coil to set its address)",
         ).format(address))
 

@@ -26,7 +26,7 @@ class ParameterDocument:
     @property
     def modified(self) -> bool:
         """True when the parameters differ from the file's (or from the defaults)."""
-        return self.session.parameters != self.saved
+        return self.session.run.parameters != self.saved
 
     def reset(self) -> None:
         """A new program: the defaults."""
@@ -44,7 +44,7 @@ class ParameterDocument:
     def save(self, program_path: Path, dialect: str) -> None:
         """Write the parameters beside the program atomically (none set: no file). OSError."""
         path = parameter_path(program_path)
-        parameters = self.session.parameters.copy()
+        parameters = self.session.run.parameters.copy()
         if parameters:
             atomic_write(path, format_parameters(parameters, dialect), "utf-8")
         elif path.exists():

@@ -1,71 +1,32 @@
-"""PlcSession: the Qt side of the PLC — one ScanEngine, run, watched and forced from the GUI.
+"""PlcSession: the Qt adapter of the core's `PlcRun` — one PLC run from the GUI, with signals.
 
-Public API (stable; docks of issues 7 and 8 build on it)::
-
-    session = PlcSession(parent=None, realtime=True, period_ms=8, publish_ms=40)
-
-    # program
-    session.load(binary: bytes, program=None) -> list[Diagnostic]  # [] when loaded
-    session.program -> Program | None                       # its source, when known
-    session.load_program(program: Program) -> CompileResult  # compile + load
-    session.binary -> BinaryProgram | None                  # ops with their source map
-    session.engine -> ScanEngine | None
-    # running
-    session.start(); session.stop(); session.running -> bool
-    session.step(ms) -> int; session.run_scans(n) -> int    # virtual clock, only while running
-    session.publish()                                       # emit status + snapshot now
-    session.status() -> PlcStatus; session.snapshot() -> PlcSnapshot
-    session.monitor(on: bool)     # counted: power flow per op is recorded while > 0 users
-    # machine side (X/F as a machine or CNC would, any other area too)
-    session.set_bit(address, value); session.write(address, value, width=1)
-    session.bit(address) -> int; session.read(address, width=1) -> int
-    # forcing and disabling (applied by the engine at scan boundaries)
-    session.force(address, value); session.release(address) -> bool
-    session.disable(op) -> int; session.enable(op) -> int   # op: index | (network, instruction)
-    session.release_all(); session.forces() -> list[ForceEntry]
-    # tracing (samples taken inside the scan loop)
-    session.start_trace(addresses, period_ms, widths=None); session.stop_trace()
-    session.trace_samples() -> list[TraceSample]           # samples not taken yet
-    # tables and alarms
-    session.timer_preset(n) / set_timer_preset(n, ms)
-    session.counter(n) -> (preset, value) / set_counter_preset(n, preset)
-    session.set_parameter(address, value, width=1)          # a T/C/K/D value the user sets
-    session.parameters -> PmcParameters; session.set_parameters(parameters)
-    session.alarm_table = AlarmTable(...); session.alarms() -> list[ActiveAlarm]
-    session.reset_alarms()
-    # the open program's symbols (`%@2`), for every dock that names an address
-    session.symbols -> SymbolTable | None; session.set_symbols(symbols)
-
-Signals: `program_loaded(BinaryProgram)`, `running_changed(bool)`, `status_changed(PlcStatus)`,
+What the run holds is read from the run itself: `session.run` is the `PlcRun` (its `engine`,
+`binary`, `program`, `memory`, `running`, `status()`, `snapshot()`, `bit()`, `read()`,
+`forces()`, `parameters`, `timers`, `timer_preset()`, `counter()`, `alarms()`, the trace, the
+monitoring count; the policy — cold start, machine inputs, held bits, forces and trace over a
+reload, PMC parameters, scan figures — is all there). This adapter keeps only what a dock must
+hear about: each operation here changes the run and emits the signal that says so —
+`program_loaded(BinaryProgram)`, `running_changed(bool)`, `status_changed(PlcStatus)`,
 `snapshot_ready(PlcSnapshot)`, `forces_changed(list[ForceEntry])`,
 `alarms_changed(list[ActiveAlarm])`, `parameters_changed(PmcParameters)`,
-`symbols_changed(SymbolTable | None)`.
+`symbols_changed(SymbolTable | None)` — and the publish timer.
 
-The policy (cold start, machine inputs, held bits, forces and trace over a reload, PMC
-parameters, scan figures) is the core's `PlcRun` (`session.run`); this adapter only runs the
-publish timer and emits signals. With `realtime=True` `start()` runs the core's RealTimeRunner
-(a thread scanning at the period on the wall clock) and a QTimer publishes every `publish_ms`,
-reading a snapshot under the engine's lock. With `realtime=False` nothing runs by itself:
-`step(ms)` / `run_scans(n)` scan on the virtual clock and publish at once, so tests get the
-same signals without a thread.
+With `realtime=True` `start()` runs the core's RealTimeRunner (a thread scanning at the period
+on the wall clock) and a QTimer publishes every `publish_ms`, reading a snapshot under the
+engine's lock. With `realtime=False` nothing runs by itself: `step(ms)` / `run_scans(n)` scan
+on the virtual clock and publish at once, so tests get the same signals without a thread.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
-
 from PySide6.QtCore import QObject, QTimer, Signal
 
 from ladderworks.core.address import Address
-from ladderworks.core.alarms import ActiveAlarm, AlarmTable
 from ladderworks.core.compiler import CompileResult
-from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il.program import Program
-from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
-from ladderworks.core.plc.forcing import ForceEntry
+from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS
 from ladderworks.core.plc.functions.counters import counter_preset_address
-from ladderworks.core.plc.memory import Memory
 from ladderworks.core.plc.parameters import PmcParameters
 from ladderworks.core.plc.session import (
     MACHINE_AREAS,
@@ -75,8 +36,6 @@ from ladderworks.core.plc.session import (
     PlcStatus,
     compile_and_load,
 )
-from ladderworks.core.plc.timer_table import TimerLayout
-from ladderworks.core.plc.trace import TraceSample, TraceSampler
 from ladderworks.core.symbols import SymbolTable
 
 __all__ = ["MACHINE_AREAS", "PUBLISH_MS", "PlcSession", "PlcSnapshot", "PlcStatus"]
@@ -104,62 +63,6 @@ class PlcSession(QObject):
         self._timer.setInterval(publish_ms)
         self._timer.timeout.connect(self.publish)
         self.symbols: SymbolTable | None = None
-
-    # -- what the run holds ----------------------------------------------------------------
-
-    @property
-    def realtime(self) -> bool:
-        """True when start() scans on a wall-clock thread."""
-        return self.run.realtime
-
-    @realtime.setter
-    def realtime(self, on: bool) -> None:
-        self.run.realtime = on
-
-    @property
-    def period_ms(self) -> int:
-        """The scan period of the next load."""
-        return self.run.period_ms
-
-    @property
-    def memory(self) -> Memory:
-        """The memory image (it outlives programs)."""
-        return self.run.memory
-
-    @property
-    def engine(self) -> ScanEngine | None:
-        """The loaded program's engine."""
-        return self.run.engine
-
-    @property
-    def binary(self) -> BinaryProgram | None:
-        """The loaded binary (ops with their source map)."""
-        return self.run.binary
-
-    @property
-    def program(self) -> Program | None:
-        """The source of the loaded binary, when known."""
-        return self.run.program
-
-    @property
-    def alarm_table(self) -> AlarmTable:
-        """The alarm message texts."""
-        return self.run.alarm_table
-
-    @property
-    def parameters(self) -> PmcParameters:
-        """The PMC parameters set so far (saved with the program)."""
-        return self.run.parameters
-
-    @property
-    def timers(self) -> TimerLayout:
-        """Where the loaded program's TMR presets live."""
-        return self.run.timers
-
-    @property
-    def running(self) -> bool:
-        """True while the PLC program is started."""
-        return self.run.running
 
     # -- the program ---------------------------------------------------------------------
 
@@ -221,14 +124,6 @@ class PlcSession(QObject):
             return 0
         return self.run_scans(-(-ms // engine.period_ms)) if ms > 0 else 0
 
-    def status(self) -> PlcStatus:
-        """The figures now."""
-        return self.run.status()
-
-    def snapshot(self) -> PlcSnapshot:
-        """A copy of memory and power flow taken between two scans."""
-        return self.run.snapshot()
-
     def publish(self) -> None:
         """Emit the status and a snapshot now (the timer calls this while running)."""
         snap = self.run.snapshot()
@@ -240,10 +135,6 @@ class PlcSession(QObject):
     def _publish_if_stopped(self) -> None:
         if not self.run.running:
             self.publish()
-
-    def monitor(self, on: bool) -> None:
-        """A view starts (True) or stops (False) needing the power flow of every op."""
-        self.run.monitor(on)
 
     # -- memory as the machine sees it -----------------------------------------------------
 
@@ -257,14 +148,6 @@ class PlcSession(QObject):
         """Store a value of `width` bytes at a byte address between two scans."""
         self.run.write(address, value, width)
         self._publish_if_stopped()
-
-    def bit(self, address: Address) -> int:
-        """The bit at a bit address now."""
-        return self.run.bit(address)
-
-    def read(self, address: Address, width: int = 1) -> int:
-        """The `width`-byte value at a byte address now."""
-        return self.run.read(address, width)
 
     # -- forcing and disabling -----------------------------------------------------------
 
@@ -300,24 +183,7 @@ class PlcSession(QObject):
         self.run.release_all()
         self._forces_changed()
 
-    def forces(self) -> list[ForceEntry]:
-        """Everything forced or disabled."""
-        return self.run.forces()
-
     # -- tracing -------------------------------------------------------------------------
-
-    def start_trace(self, addresses: Iterable[Address], period_ms: int,
-                    widths: list[int] | None = None) -> TraceSampler | None:
-        """Sample addresses every `period_ms` inside the scan loop (ring buffer)."""
-        return self.run.start_trace(addresses, period_ms, widths)
-
-    def stop_trace(self) -> None:
-        """Stop sampling (samples not taken yet stay available until taken)."""
-        self.run.stop_trace()
-
-    def trace_samples(self) -> list[TraceSample]:
-        """Samples not taken yet, oldest first."""
-        return self.run.trace_samples()
 
     # -- PMC parameters (tables) ---------------------------------------------------------
 
@@ -333,18 +199,10 @@ class PlcSession(QObject):
         self.parameters_changed.emit(self.run.parameters)
         self.publish()
 
-    def timer_preset(self, number: int) -> int:
-        """TMR `number`'s preset from the T table (ms; ticks in FANUC programs)."""
-        return self.run.timer_preset(number)
-
     def set_timer_preset(self, number: int, value: int) -> None:
         """Change TMR `number`'s preset in the T table (a PMC parameter)."""
         layout = self.run.timers
         self.set_parameter(layout.preset_address(number), value, layout.width)
-
-    def counter(self, number: int) -> tuple[int, int]:
-        """CTR `number`'s (preset, current value) from the C table."""
-        return self.run.counter(number)
 
     def set_counter_preset(self, number: int, preset: int) -> None:
         """Change CTR `number`'s preset in the C table (a PMC parameter)."""
@@ -358,14 +216,6 @@ class PlcSession(QObject):
         self.symbols_changed.emit(symbols)
 
     # -- alarms --------------------------------------------------------------------------
-
-    def set_alarm_table(self, table: AlarmTable) -> None:
-        """Use these alarm message texts (AlarmMsg.dat)."""
-        self.run.set_alarm_table(table)
-
-    def alarms(self) -> list[ActiveAlarm]:
-        """The active alarm list, newest first."""
-        return self.run.alarms()
 
     def reset_alarms(self) -> None:
         """The reset key: alarms whose bit dropped leave the list."""

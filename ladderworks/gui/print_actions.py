@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from PySide6.QtCore import QCoreApplication, QDateTime, QLocale, QMarginsF, QObject, Qt
 from PySide6.QtGui import (
@@ -16,14 +16,13 @@ from PySide6.QtGui import (
     QPdfWriter,
 )
 from PySide6.QtPrintSupport import QPrintDialog, QPrinter, QPrintPreviewDialog
-from PySide6.QtWidgets import QDialog, QMainWindow, QProgressDialog
+from PySide6.QtWidgets import QDialog, QMainWindow, QProgressDialog, QWidget
 
+from ladderworks.core.il import Program
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.console_menus import ConsoleMenus
+from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.print_pages import PRINT_DPI, LadderPages, PrintJob, program_title
-
-if TYPE_CHECKING:
-    from ladderworks.gui.main_window import MainWindow
 
 translate = QCoreApplication.translate
 
@@ -31,7 +30,21 @@ MARGIN_MM = 10.0
 PROGRESS_FROM_PAGES = 20  # a longer job shows a progress dialog that can cancel it
 
 
-def print_job(window: MainWindow) -> PrintJob:
+class Console(Protocol):
+    """What printing reads of the ladder console (`main_window.MainWindow`)."""
+
+    editor: LadderEditor
+    program_info: Program  # the program as opened: its title
+
+    @property
+    def path(self) -> Path | None:
+        """The program's file (None: untitled)."""
+
+    def window(self) -> QWidget:
+        """The window its dialogs sit on."""
+
+
+def print_job(window: Console) -> PrintJob:
     """The console's program as a print job (a large program still laying out is finished)."""
     editor = window.editor
     path = window.path
@@ -49,7 +62,7 @@ def _page_layout() -> QPageLayout:
                        QPageLayout.Unit.Millimeter)
 
 
-def render(job: PrintJob, device: QPagedPaintDevice, parent: QMainWindow | None = None) -> int:
+def render(job: PrintJob, device: QPagedPaintDevice, parent: QWidget | None = None) -> int:
     """Paint the job on a paged device; the number of pages (0 when cancelled or failed)."""
     painter = QPainter()
     if not painter.begin(device):
@@ -83,24 +96,24 @@ def render(job: PrintJob, device: QPagedPaintDevice, parent: QMainWindow | None 
     return len(numbers) if done else 0
 
 
-def export_pdf(window: MainWindow, path: str | Path) -> int:
+def export_pdf(console: Console, path: str | Path) -> int:
     """Write the console's ladder to a PDF file; the number of pages (0 when it failed)."""
     writer = QPdfWriter(str(path))
     writer.setResolution(PRINT_DPI)
     writer.setPageLayout(_page_layout())
-    job = print_job(window)
+    job = print_job(console)
     writer.setTitle(job.title or Path(job.file_name).name)
     writer.setCreator("LadderWorks")
-    count = render(job, writer, window)
+    count = render(job, writer, console.window())
     del writer  # the file is complete once the writer is gone
     if count == 0:
         Path(path).unlink(missing_ok=True)
     return count
 
 
-def print_ladder(window: MainWindow, printer: QPrinter) -> int:
+def print_ladder(console: Console, printer: QPrinter) -> int:
     """Print the console's ladder on a printer set up by the print dialog."""
-    return render(print_job(window), printer, window)
+    return render(print_job(console), printer, console.window())
 
 
 def new_printer() -> QPrinter:
@@ -111,12 +124,14 @@ def new_printer() -> QPrinter:
 
 
 class PrintActions(QObject):
-    """File › Print… (Ctrl+P), Print preview… and Export PDF…, before Program properties. Not
-    a widget: the window's `retranslate()` calls this one's."""
+    """File › Print… (Ctrl+P), Print preview… and Export PDF…, before Program properties, for
+    the ladder of `console` with dialogs on `window`. Not a widget: the window's
+    `retranslate()` calls this one's."""
 
-    def __init__(self, window: MainWindow, menus: ConsoleMenus) -> None:
+    def __init__(self, window: QMainWindow, console: Console, menus: ConsoleMenus) -> None:
         super().__init__(window)
-        self.console = window
+        self.window = window
+        self.console = console
         self.preview_printer: QPrinter | None = None  # the printer of the open print preview
         self.print_action = QAction(window)
         self.print_action.setObjectName("action_print")
@@ -136,21 +151,21 @@ class PrintActions(QObject):
     def print_dialog(self) -> None:
         """File › Print…: the system's print dialog, then the pages."""
         printer = new_printer()
-        dialog = QPrintDialog(printer, self.console)
+        dialog = QPrintDialog(printer, self.window)
         dialog.setObjectName("print_dialog")
         dialog.setMinMax(1, 99_999)  # the dialog offers a page range; pages are counted after
         if dialog.exec() == QDialog.DialogCode.Accepted:
-            _report(self.console, print_ladder(self.console, printer), None)
+            _report(self.window, print_ladder(self.console, printer), None)
 
     def make_preview(self) -> QPrintPreviewDialog:
         """The print preview of the console's program (A4 landscape; it can print)."""
         self.preview_printer = new_printer()  # the dialog does not own it: kept alive here
-        dialog = QPrintPreviewDialog(self.preview_printer, self.console)
+        dialog = QPrintPreviewDialog(self.preview_printer, self.window)
         dialog.setObjectName("print_preview")
         dialog.setWindowTitle(translate("Print", "Print preview"))
         dialog.paintRequested.connect(  # a long program: a progress dialog that can cancel
-            lambda printer: render(print_job(self.console), printer, self.console))
-        screen = self.console.screen().availableGeometry()
+            lambda printer: render(print_job(self.console), printer, self.window))
+        screen = self.window.screen().availableGeometry()
         dialog.resize(min(1000, screen.width()), min(760, screen.height()))
         return dialog
 
@@ -165,12 +180,12 @@ class PrintActions(QObject):
         path = self.console.path
         suggested = str(Path(path).with_suffix(".pdf")) if path is not None else ""
         name = file_dialogs.save_file_name(
-            self.console, translate("Print", "Export PDF"), suggested,
+            self.window, translate("Print", "Export PDF"), suggested,
             translate("Print", "PDF files (*.pdf)"))
         if name:
             if not name.lower().endswith(".pdf"):
                 name += ".pdf"
-            _report(self.console, export_pdf(self.console, name), name)
+            _report(self.window, export_pdf(self.console, name), name)
 
     def retranslate(self) -> None:
         """The actions' texts in the UI language."""

@@ -54,7 +54,7 @@ def _forget_changes(win: MainWindow) -> None:
     """Closing at the end of a test: nothing to save."""
     win.editor.undo_stack.setClean()
     win.text_view.document().setModified(False)
-    win.parameters.saved = win.parameters.session.parameters.copy()
+    win.parameters.saved = win.parameters.session.run.parameters.copy()
 
 
 @pytest.fixture

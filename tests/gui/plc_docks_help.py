@@ -13,7 +13,7 @@ SWITCH = ("X2.1", "X2.3", "X2.5")
 def plc_docks(window: MainWindow) -> PlcDocks:
     """The window's PLC docks, their session switched to the virtual clock."""
     docks = window.plc_docks
-    docks.session.realtime = False
+    docks.session.run.realtime = False
     return docks
 
 

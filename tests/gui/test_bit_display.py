@@ -54,7 +54,7 @@ def test_x12_and_g30_follow_inputs(qtbot: QtBot,
     seen = set()
     for position in range(8):
         switch(session, position)
-        qtbot.waitUntil(lambda: g30.value == session.read(Address(Area.G, 30)))
+        qtbot.waitUntil(lambda: g30.value == session.run.read(Address(Area.G, 30)))
         assert g30.dec_label.text() == str(g30.value)
         assert g30.hex_label.text() == f"{g30.value:02X}h"
         seen.add(g30.value)
@@ -68,19 +68,19 @@ def test_click_forces_an_input_and_release(
     switch(session, 0)
     assert x2.bit_texts() == "00000000"
     qtbot.mouseClick(x2.bits[1], Qt.MouseButton.LeftButton)  # X2.1 forced to 1
-    assert {(e.address, e.value) for e in session.forces()} == {(X2[1], True)}
+    assert {(e.address, e.value) for e in session.run.forces()} == {(X2[1], True)}
     session.run_scans(1)
     qtbot.waitUntil(lambda: x2.bit_texts() == "00000010")
-    assert dock.rows[1].value == session.read(Address(Area.G, 30))
+    assert dock.rows[1].value == session.run.read(Address(Area.G, 30))
     assert "Forced to 1" in x2.bits[1].toolTip()
     assert "border:2px" in x2.bits[1].styleSheet()
     session.set_bit(X2[1], 0)  # the machine cannot beat a force
     session.run_scans(1)
     assert x2.bit_texts() == "00000010"
     qtbot.mouseClick(x2.bits[1], Qt.MouseButton.LeftButton)  # forced to the other value: 0
-    assert {(e.address, e.value) for e in session.forces()} == {(X2[1], False)}
+    assert {(e.address, e.value) for e in session.run.forces()} == {(X2[1], False)}
     session.release(X2[1])
-    assert session.forces() == []
+    assert session.run.forces() == []
     assert "border:2px" not in x2.bits[1].styleSheet()
 
 
@@ -88,7 +88,7 @@ def test_outputs_are_not_forced_by_a_click(
         qtbot: QtBot, spindle: tuple[PlcSession, BitDisplayDock]) -> None:
     session, dock = spindle
     qtbot.mouseClick(dock.rows[1].bits[0], Qt.MouseButton.LeftButton)  # G30.0
-    assert session.forces() == []
+    assert session.run.forces() == []
 
 
 def test_stop_freezes(qtbot: QtBot, spindle: tuple[PlcSession, BitDisplayDock]) -> None:

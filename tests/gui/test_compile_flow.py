@@ -27,7 +27,7 @@ def _action(window: MainWindow, name: str) -> QAction:
 
 def _open(window: MainWindow) -> None:
     assert window.load(EXAMPLE)
-    window.plc_docks.session.realtime = False  # scans on the virtual clock
+    window.plc_docks.session.run.realtime = False  # scans on the virtual clock
 
 
 def test_f9_loads_the_program_and_toolbar_start_runs_it(qtbot: QtBot,
@@ -37,7 +37,7 @@ def test_f9_loads_the_program_and_toolbar_start_runs_it(qtbot: QtBot,
     start = _action(window, "action_plc_start")
     assert not start.isEnabled()
     qtbot.keyClick(window, Qt.Key.Key_F9)
-    assert session.engine is not None
+    assert session.run.engine is not None
     assert "loaded into the PLC" in window.statusBar().currentMessage()
     toolbar = window.findChild(QToolBar, "toolbar_main")
     assert toolbar is not None
@@ -48,15 +48,15 @@ def test_f9_loads_the_program_and_toolbar_start_runs_it(qtbot: QtBot,
     assert len(window.findChildren(QAction, "action_plc_start")) == 1
     assert start.isEnabled()
     start.trigger()
-    assert session.running
+    assert session.run.running
     output = parse_address("R102.1")
     session.run_scans(2)
-    assert session.bit(output) == 0
+    assert session.run.bit(output) == 0
     session.set_bit(parse_address("X2.1"), 1)
     session.run_scans(2)
-    assert session.bit(output) == 1
+    assert session.run.bit(output) == 1
     _action(window, "action_plc_stop").trigger()
-    assert not session.running
+    assert not session.run.running
 
 
 def _compiled(window: MainWindow, shown: bool) -> tuple[PlcControlDock, Program]:
@@ -104,19 +104,19 @@ def test_compile_while_running_asks_and_reloads(window: MainWindow, answers: Ans
     compile_action = _action(window, "action_compile")
     compile_action.trigger()
     assert session.start()
-    first = session.binary
+    first = session.run.binary
     answers.queue.append("cancel")
     compile_action.trigger()
     assert answers.asked[-1][2] == ["reload", "cancel"]
-    assert session.binary is first and session.running
+    assert session.run.binary is first and session.run.running
     answers.queue.append("reload")
     compile_action.trigger()
     assert len(answers.asked) == 2
-    assert session.binary is not first
-    assert session.running  # runs on with the new program
+    assert session.run.binary is not first
+    assert session.run.running  # runs on with the new program
     session.set_bit(parse_address("X2.1"), 1)
     session.run_scans(2)
-    assert session.bit(parse_address("R102.1")) == 1
+    assert session.run.bit(parse_address("R102.1")) == 1
 
 
 def test_turkish_texts_of_the_one_path(window: MainWindow) -> None:
@@ -165,7 +165,7 @@ def test_check_and_compile_take_unchanged_networks_as_read(
     before = window.check()
     assert coded == []
     window.editor.move_cursor(1, 0, 0)
-    window.editor.invert_at_cursor()
+    window.editor.edits.invert_at_cursor()
     after = window.check()
     assert coded == [1]
     assert [d.code for d in after] == [d.code for d in before]

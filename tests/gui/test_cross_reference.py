@@ -145,7 +145,7 @@ def test_the_index_is_built_once_per_program_revision(qtbot: QtBot, window: Main
     assert dock.model.rowCount() == len(dock.cross_reference())
     editor = window.editor
     editor.move_cursor(0, 0, 0)  # the first contact, X0.1: an edit to X0.4
-    editor.delete_at_cursor()
+    editor.edits.delete_at_cursor()
     assert dock._xref is None  # the edit made the index stale
     _ask(qtbot, dock, "X0.1")
     assert dock.builds == 2 and dock.model.rowCount() == 0

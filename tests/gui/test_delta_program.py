@@ -39,19 +39,19 @@ def test_a_delta_program_opens_draws_and_runs(qtbot: QtBot, window: MainWindow) 
     second = next(item for item in items if item.number == 2)
     assert second.label_lines(coil)[0] == "Y0"
     session = window.plc_docks.session
-    session.realtime = False
+    session.run.realtime = False
     qtbot.keyClick(window, Qt.Key.Key_F9)
-    assert session.engine is not None
+    assert session.run.engine is not None
     _action(window, "action_plc_start").trigger()
     x0, y0 = parse_target("X0", "delta")[0], parse_target("Y0", "delta")[0]
     session.run_scans(2)
-    assert session.bit(y0) == 0
+    assert session.run.bit(y0) == 0
     session.set_bit(x0, 1)
-    session.run_scans(1100 // session.engine.period_ms + 2)
-    assert session.bit(y0) == 1
+    session.run_scans(1100 // session.run.engine.period_ms + 2)
+    assert session.run.bit(y0) == 1
     session.set_bit(x0, 0)
     session.run_scans(2)
-    assert session.bit(y0) == 0
+    assert session.run.bit(y0) == 0
 
 
 def test_an_unchanged_delta_program_saves_as_it_was(window: MainWindow, tmp_path: Path) -> None:
@@ -67,9 +67,9 @@ def test_an_unchanged_delta_program_saves_as_it_was(window: MainWindow, tmp_path
 def test_docks_take_delta_spelling(qtbot: QtBot, window: MainWindow) -> None:
     assert window.load(paths.EXAMPLES / "delta" / "counter_reset.txt")
     session = window.plc_docks.session
-    session.realtime = False
+    session.run.realtime = False
     qtbot.keyClick(window, Qt.Key.Key_F9)
-    assert session.engine is not None and session.run.program_dialect == "delta"
+    assert session.run.engine is not None and session.run.program_dialect == "delta"
     result = window.plc_docks.scenario.run_file(
         paths.EXAMPLES / "delta" / "counter_reset.scenario.csv")
     assert result is not None and result.passed
@@ -116,11 +116,11 @@ def test_cross_reference_and_force_list_in_delta_spelling(qtbot: QtBot,
     assert {model.data(model.index(row, 0)) for row in range(3)} == {"D500"}
     assert model.data(model.index(0, 1)) == ""  # no FANUC signal name
     session = window.plc_docks.session
-    session.realtime = False
+    session.run.realtime = False
     qtbot.keyClick(window, Qt.Key.Key_F9)
     session.force(parse_target("X3", "delta")[0], 1)
     forces = window.plc_docks.force_list
-    forces.show_entries(session.forces())
+    forces.show_entries(session.run.forces())
     assert forces.describe(forces.entries[0])[1] == "X3"
 
 

@@ -89,12 +89,12 @@ def test_passive_element_is_tagged(qtbot: QtBot, window: MainWindow) -> None:
     session.set_bit(parse_address("X0.0"), 1)
     op = session.disable((2, 0))  # RD X0.0 of the last network
     session.step(8)
-    assert session.bit(parse_address("Y0.0")) == 0
+    assert session.run.bit(parse_address("Y0.0")) == 0
     assert (0, 0) in view.live.overlays[2].power.disabled
     assert (0, 0) not in view.live.overlays[2].power.closed
     session.enable(op)
     session.step(8)
-    assert session.bit(parse_address("Y0.0")) == 1
+    assert session.run.bit(parse_address("Y0.0")) == 1
     assert view.live.overlays[2].power.coils
 
 
@@ -126,7 +126,7 @@ def test_a_long_state_does_not_widen_the_dock(qtbot: QtBot, window: MainWindow) 
     qtbot.waitUntil(lambda: dock.state.text() != "")
     narrow = dock.minimumSizeHint().width()
     assert narrow <= 520, narrow
-    dock.show_past(replace(docks.session.snapshot(), scan_count=12345678, now_ms=98765432))
+    dock.show_past(replace(docks.session.run.snapshot(), scan_count=12345678, now_ms=98765432))
     assert "12345678" in dock.state.text()
     assert dock.minimumSizeHint().width() <= 520
     assert dock.state.isVisible()

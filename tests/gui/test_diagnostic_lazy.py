@@ -72,9 +72,9 @@ def test_scrolling_to_the_last_network_makes_it_with_its_power(window: MainWindo
     assert item.pos().y() == view.layout_.tops[last]
     overlay = view.live.overlays[last]
     assert overlay.pos().y() == view.layout_.tops[last]
-    snapshot = session.snapshot()
+    snapshot = session.run.snapshot()
     network = view.networks[last]
-    binary = session.binary
+    binary = session.run.binary
     assert binary is not None
     expected = network_power(network, snapshot.bit,
                              cell_ops(network, view.live.ops[last], binary),
@@ -89,7 +89,7 @@ def test_op_cells_are_the_standard_coding_and_cell_of_finds_every_op(
         window: MainWindow) -> None:
     dock = shown_dock(window, program_text())
     live = dock.view.live
-    binary = dock.session.binary
+    binary = dock.session.run.binary
     assert binary is not None
     for index, network in enumerate(dock.view.networks):
         cells = live.cells(index)

@@ -82,7 +82,7 @@ def draw_timer_relay(d: Drawer) -> None:
     d.element(0, 0, 0, "I", "R1.4 // M30 ROLESİ")
     d.key("F")  # the function tool; TMR is first in the drop-down
     d.click(0, 0, 1)
-    dialog = d.view.function_dialog
+    dialog = d.view.edits.function_dialog
     assert dialog is not None
     d.qtbot.waitUntil(dialog.isVisible)
     d.qtbot.keyClick(dialog.table, "1")

@@ -50,7 +50,7 @@ def test_function_table_refuses_a_wrong_parameter(drawer: Drawer, window: MainWi
     window.tool_palette.set_function("TMRB")
     assert window.current_tool() is Tool.FUNCTION
     drawer.click(0, 0, 2)
-    dialog = window.editor.function_dialog
+    dialog = window.editor.edits.function_dialog
     assert dialog is not None
     qtbot.waitUntil(dialog.isVisible)
     assert [dialog.table.item(r, 0).text() for r in range(2)] == ["Timer number", "Preset"]

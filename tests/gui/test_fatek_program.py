@@ -28,9 +28,9 @@ def test_report_program_prints_to_the_ascii_output_dock(qtbot: QtBot, window: Ma
     assert window.load(path)
     assert window.editor.networks  # shown as ladder, not as text
     session = window.plc_docks.session
-    session.realtime = False
+    session.run.realtime = False
     qtbot.keyClick(window, Qt.Key.Key_F9)
-    assert session.engine is not None
+    assert session.run.engine is not None
     start = window.findChild(QAction, "action_plc_start")
     assert start is not None
     start.trigger()

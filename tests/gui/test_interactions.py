@@ -75,7 +75,7 @@ class Recording(Interaction):
     key = "S"
 
     def __init__(self, editor: LadderEditor, seen: list[tuple[str, int, int]]) -> None:
-        super().__init__(editor)
+        super().__init__(editor, editor.edits, editor.inline)
         self.seen = seen
 
     def apply(self, hit: Hit) -> None:

@@ -195,9 +195,9 @@ def test_compile_lists_errors_and_double_click_jumps_to_the_cell(
     assert "Compile finished" in window.statusBar().currentMessage()
     editor = window.editor
     editor.move_cursor(0, 0, editor.networks[0].columns)
-    editor.delete_at_cursor()  # the coil goes: the timer's W1 leads nowhere
+    editor.edits.delete_at_cursor()  # the coil goes: the timer's W1 leads nowhere
     editor.move_cursor(0, 0, 0)
-    editor.delete_at_cursor()  # and the contact: nothing drives ACT
+    editor.edits.delete_at_cursor()  # and the contact: nothing drives ACT
     assert window.compile() is None
     diagnostics = window.errors.diagnostics()
     located = [d for d in diagnostics if d.network is not None and d.cell is not None]
@@ -224,7 +224,7 @@ def test_close_with_unsaved_changes_asks(window: MainWindow,
 
     window.load(EXAMPLES / "or_double.LAD")
     window.editor.move_cursor(0, 0, 0)
-    window.editor.invert_at_cursor()
+    window.editor.edits.invert_at_cursor()
     assert window.windowTitle().startswith("or_double.LAD*")
     asked: list[str] = []
 

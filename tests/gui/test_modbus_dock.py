@@ -44,7 +44,7 @@ def test_a_client_drives_the_running_plc_and_the_docks_see_it(
         session.snapshot_ready.connect(snapshots.append)
         assert not client.write_register(20010, 42).isError()  # D10, PLC on the virtual clock
         qtbot.waitUntil(lambda: bool(snapshots), timeout=3000)  # published to the docks
-        assert session.snapshot().read(parse_address("D10")) == 42
+        assert session.run.snapshot().read(parse_address("D10")) == 42
         dock.show_figures()
         assert dock.clients.text() == "1"
     finally:

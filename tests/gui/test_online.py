@@ -44,12 +44,12 @@ def test_disable_and_force_change_the_engine_and_the_force_list(qtbot: QtBot,
     session, online, force_list = docks.session, docks.online, docks.force_list
     set_switch(session, 0)
     session.step(8)
-    assert session.bit(parse_address("R102.0")) == 1
+    assert session.run.bit(parse_address("R102.0")) == 1
     window.editor.cursor_cell = (0, 0, 0)  # select RD.NOT X2.1
     op = online.disable_selected()
     assert op == 0
     session.step(8)
-    assert session.bit(parse_address("R102.0")) == 0  # the passive contact is open
+    assert session.run.bit(parse_address("R102.0")) == 0  # the passive contact is open
     assert force_list.table.rowCount() == 1
     assert force_list.table.item(0, 0).text() == "PASSIVE"
     assert "RD.NOT X2.1" in force_list.table.item(0, 1).text()
@@ -64,12 +64,13 @@ def test_disable_and_force_change_the_engine_and_the_force_list(qtbot: QtBot,
     assert isinstance(button, QPushButton)
     qtbot.mouseClick(button, Qt.MouseButton.LeftButton)  # one click: active again
     session.step(8)
-    assert session.bit(parse_address("R102.1")) == 1 and session.bit(parse_address("R102.0")) == 0
+    bit = session.run.bit
+    assert bit(parse_address("R102.1")) == 1 and bit(parse_address("R102.0")) == 0
     assert force_list.table.rowCount() == 1
     qtbot.mouseClick(force_list.table.cellWidget(0, 3), Qt.MouseButton.LeftButton)
     session.step(8)
     assert force_list.table.rowCount() == 0
-    assert session.bit(parse_address("R102.0")) == 1  # X2.1 back to the switch's 0
+    assert session.run.bit(parse_address("R102.0")) == 1  # X2.1 back to the switch's 0
 
 
 def test_editing_takes_the_view_off_line(qtbot: QtBot, window: MainWindow) -> None:

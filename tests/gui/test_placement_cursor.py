@@ -43,7 +43,7 @@ def test_a_box_lands_right_aligned_before_the_coil_column_with_the_cursor(
     d = drawer
     d.key("F")  # the function tool; TMR is first in the drop-down
     d.click(0, 0, 0)
-    dialog = d.view.function_dialog
+    dialog = d.view.edits.function_dialog
     assert dialog is not None
     qtbot.waitUntil(dialog.isVisible)
     qtbot.keyClick(dialog.table, "1")

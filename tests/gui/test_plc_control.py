@@ -46,22 +46,22 @@ def test_spindle_override_compile_start_watch_stop(qtbot: QtBot, window: MainWin
     assert progress == sorted(progress) and len(set(progress)) >= 4  # the stripes advance
     assert control.editor.converted_lines == lines
     assert "Compile finished" in control.message.text()
-    assert session.binary is not None and not session.running
+    assert session.run.binary is not None and not session.run.running
     assert control.indicator.text() == "STOPPED"
     shot(window, "plc_control_finished.png")
 
     control.control_actions["action_plc_start"].trigger()
-    assert session.running and control.indicator.text() == "RUNNING"
+    assert session.run.running and control.indicator.text() == "RUNNING"
     set_switch(session, 5)
     session.step(16)
-    assert session.read(parse_address("G30")) == override_code(5)
+    assert session.run.read(parse_address("G30")) == override_code(5)
     assert "scans 2" in control.figures.text()
 
     diagnostic.show()
     diagnostic.raise_()
     window.resizeDocks([diagnostic], [820], Qt.Orientation.Horizontal)
     qtbot.waitUntil(diagnostic.isVisible)
-    assert session.engine.monitored
+    assert session.run.engine.monitored
     session.step(8)
     live = diagnostic.view.live
     r102_5 = parse_address("R102.5")
@@ -83,9 +83,9 @@ def test_spindle_override_compile_start_watch_stop(qtbot: QtBot, window: MainWin
     shot(window, "plc_diagnostic_live.png")
 
     control.control_actions["action_plc_stop"].trigger()
-    count = session.status().scan_count
-    assert not session.running and control.indicator.text() == "STOPPED"
-    assert session.step(100) == 0 and session.status().scan_count == count
+    count = session.run.status().scan_count
+    assert not session.run.running and control.indicator.text() == "STOPPED"
+    assert session.step(100) == 0 and session.run.status().scan_count == count
 
 
 def test_compile_errors_are_shown_inline(qtbot: QtBot, window: MainWindow) -> None:
@@ -98,9 +98,9 @@ def test_compile_errors_are_shown_inline(qtbot: QtBot, window: MainWindow) -> No
     assert control.editor.diagnostics and control.editor.diagnostics[0].line == 3
     assert control.editor.converted_lines == 2  # converted up to the first error
     assert "Compile failed" in control.message.text()
-    assert docks.session.binary is None
+    assert docks.session.run.binary is None
     control.control_actions["action_plc_start"].trigger()
-    assert not docks.session.running
+    assert not docks.session.run.running
 
 
 def test_take_console_program_and_start_asks_with_forces(qtbot: QtBot,
@@ -111,12 +111,12 @@ def test_take_console_program_and_start_asks_with_forces(qtbot: QtBot,
     assert control.take_console_program()
     assert "RD.NOT" in control.editor.toPlainText()
     control.stripe_ms = 0
-    assert control.compile().ok and session.binary is not None
+    assert control.compile().ok and session.run.binary is not None
     session.force(parse_address("X2.1"), 1)
     asked: list[int] = []
     control.confirm_forces = lambda count: asked.append(count) or False
-    assert not control.start() and not session.running and asked == [1]
+    assert not control.start() and not session.run.running and asked == [1]
     control.confirm_forces = lambda count: True
-    assert control.start() and session.running
+    assert control.start() and session.run.running
     session.step(8)
-    assert session.bit(parse_address("R102.1")) == 1  # the force acts: position 1
+    assert session.run.bit(parse_address("R102.1")) == 1  # the force acts: position 1

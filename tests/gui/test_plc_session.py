@@ -42,7 +42,7 @@ def test_load_refuses_bad_bytes_as_data(qtbot: QtBot) -> None:
     s = PlcSession(realtime=False)
     problems = s.load(b"not a program")
     assert problems and problems[0].code == "bad-binary"
-    assert s.engine is None and not s.start()
+    assert s.run.engine is None and not s.start()
 
 
 def test_virtual_scans_publish_status_and_snapshot(qtbot: QtBot, session: PlcSession) -> None:
@@ -64,7 +64,7 @@ def test_switch_position_gives_r102_and_g30(session: PlcSession, position: int) 
     session.start()
     set_switch(session, position)
     session.run_scans(1)
-    snap = session.snapshot()
+    snap = session.run.snapshot()
     assert snap.read(a("R102")) == 1 << position
     assert snap.read(a("G30")) == override_code(position)
 
@@ -75,58 +75,58 @@ def test_stop_stops_the_scans_and_clears_outputs(session: PlcSession) -> None:
     session.run_scans(3)
     session.write(a("Y0"), 0xFF)  # as if the program had set outputs
     session.stop()
-    assert not session.running
-    assert session.read(a("Y0")) == 0  # the safe state
+    assert not session.run.running
+    assert session.run.read(a("Y0")) == 0  # the safe state
     assert session.step(100) == 0
-    assert session.status().scan_count == 3
+    assert session.run.status().scan_count == 3
 
 
 def test_force_and_disable_change_the_result(qtbot: QtBot, session: PlcSession) -> None:
     session.start()
     set_switch(session, 0)
     session.run_scans(1)
-    assert session.bit(a("R102.0")) == 1
+    assert session.run.bit(a("R102.0")) == 1
     with qtbot.waitSignal(session.forces_changed) as blocker:
         session.force(a("X2.1"), 1)  # the switch says position 1 whatever the wire says
     assert [str(e) for e in blocker.args[0]] == ["force X2.1 = 1"]
     session.run_scans(1)
-    assert session.bit(a("R102.0")) == 0 and session.bit(a("R102.1")) == 1
+    assert session.run.bit(a("R102.0")) == 0 and session.run.bit(a("R102.1")) == 1
     session.release(a("X2.1"))
     session.run_scans(1)
-    assert session.bit(a("R102.0")) == 1
+    assert session.run.bit(a("R102.0")) == 1
     index = session.disable((0, 0))  # RD.NOT X2.1 of network 0: an open contact
     session.run_scans(1)
-    assert session.bit(a("R102.0")) == 0
-    assert [e.op for e in session.forces()] == [index]
+    assert session.run.bit(a("R102.0")) == 0
+    assert [e.op for e in session.run.forces()] == [index]
     session.enable(index)
     session.run_scans(1)
-    assert session.bit(a("R102.0")) == 1 and session.forces() == []
+    assert session.run.bit(a("R102.0")) == 1 and session.run.forces() == []
 
 
 def test_monitoring_records_power_flow(session: PlcSession) -> None:
-    session.monitor(True)
+    session.run.monitor(True)
     session.start()
     set_switch(session, 0)
     session.run_scans(1)
-    snap = session.snapshot()
-    assert snap.monitored and len(snap.power_flow) == len(session.binary.ops)
+    snap = session.run.snapshot()
+    assert snap.monitored and len(snap.power_flow) == len(session.run.binary.ops)
     assert snap.power_flow[3] == 1  # WRT R102.0 got ST0 = 1
-    session.monitor(False)
-    assert not session.engine.monitored
+    session.run.monitor(False)
+    assert not session.run.engine.monitored
 
 
 def test_trace_samples_inside_the_scan(session: PlcSession) -> None:
     session.start()
-    session.start_trace([a("X2.1"), a("R102.1")], 16)
+    session.run.start_trace([a("X2.1"), a("R102.1")], 16)
     session.run_scans(2)
     set_switch(session, 1)
     session.run_scans(2)
-    samples = session.trace_samples()
+    samples = session.run.trace_samples()
     assert [s.values for s in samples] == [(0, 0), (1, 1)]
     assert [s.time_ms for s in samples] == [0, 16]
-    session.stop_trace()
+    session.run.stop_trace()
     session.run_scans(4)
-    assert session.trace_samples() == []
+    assert session.run.trace_samples() == []
 
 
 def test_tables_and_inputs_survive_a_reload(session: PlcSession) -> None:
@@ -135,11 +135,11 @@ def test_tables_and_inputs_survive_a_reload(session: PlcSession) -> None:
     session.set_bit(a("X2.1"), 1)
     session.start()
     session.run_scans(1)
-    assert session.bit(a("R102.1")) == 1
+    assert session.run.bit(a("R102.1")) == 1
     assert session.load(program_binary("timer_relay.LAD")) == []
-    assert not session.running
-    assert session.timer_preset(1) == 960 and session.counter(3) == (12, 0)
-    assert session.bit(a("X2.1")) == 1 and session.bit(a("R102.1")) == 0  # cold start
+    assert not session.run.running
+    assert session.run.timer_preset(1) == 960 and session.run.counter(3) == (12, 0)
+    assert session.run.bit(a("X2.1")) == 1 and session.run.bit(a("R102.1")) == 0  # cold start
 
 
 def test_alarms_are_listed_and_reset(qtbot: QtBot, session: PlcSession) -> None:
@@ -152,9 +152,9 @@ def test_alarms_are_listed_and_reset(qtbot: QtBot, session: PlcSession) -> None:
     assert blocker.args[0] and all(alarm.active for alarm in blocker.args[0])
     session.set_bit(a(contact), 0)
     session.run_scans(1)
-    assert session.alarms() and not session.alarms()[0].active
+    assert session.run.alarms() and not session.run.alarms()[0].active
     session.reset_alarms()
-    assert session.alarms() == []
+    assert session.run.alarms() == []
 
 
 def test_real_time_thread_scans_and_stops(qtbot: QtBot) -> None:
@@ -165,11 +165,11 @@ def test_real_time_thread_scans_and_stops(qtbot: QtBot) -> None:
     s.start()
     qtbot.waitUntil(lambda: bool(seen) and seen[-1].scan_count >= 5, timeout=5000)
     set_switch(s, 7)
-    qtbot.waitUntil(lambda: s.snapshot().read(a("R102")) == 0x80, timeout=5000)
+    qtbot.waitUntil(lambda: s.run.snapshot().read(a("R102")) == 0x80, timeout=5000)
     with qtbot.waitSignal(s.running_changed):
         s.stop()
-    count = s.status().scan_count
-    assert not s.status().running and s.engine.scan_count == count
-    assert s.status().avg_ms > 0
+    count = s.run.status().scan_count
+    assert not s.run.status().running and s.run.engine.scan_count == count
+    assert s.run.status().avg_ms > 0
     qtbot.waitUntil(lambda: not s._timer.isActive())
-    assert s.engine.scan_count == count
+    assert s.run.engine.scan_count == count

@@ -56,13 +56,13 @@ def delay_of_r1_7(session: PlcSession) -> int:
     """Turn R1.4 on and measure (in ms of the virtual clock) until R1.7 follows."""
     session.set_bit(R1_4, 0)
     session.run_scans(2)
-    assert session.engine is not None
-    start = session.engine.now_ms
+    assert session.run.engine is not None
+    start = session.run.engine.now_ms
     session.set_bit(R1_4, 1)
-    while not session.bit(R1_7):
+    while not session.run.bit(R1_7):
         session.run_scans(1)
-        assert session.engine.now_ms - start < 100_000
-    return session.engine.now_ms - session.engine.period_ms - start
+        assert session.run.engine.now_ms - start < 100_000
+    return session.run.engine.now_ms - session.run.engine.period_ms - start
 
 
 def type_into_cell(qtbot: QtBot, dock: PlcTablesDock, kind: TableKind, row: int, column: int,
@@ -99,7 +99,7 @@ def test_changing_a_timer_preset_changes_the_delay(
     session, dock = tables
     assert delay_of_r1_7(session) == 960
     type_into_cell(qtbot, dock, TableKind.TIMER, 0, 2, "500")  # while running
-    qtbot.waitUntil(lambda: session.timer_preset(1) == 500)
+    qtbot.waitUntil(lambda: session.run.timer_preset(1) == 500)
     assert dock.cell_texts(TableKind.TIMER)[0] == ["1", "TMR", "500", "48", "480"]
     assert delay_of_r1_7(session) == 480
 
@@ -111,7 +111,7 @@ def test_refused_values_keep_the_old_one(
     assert dock.message.text() == "'abc' is not a number"
     assert dock.edit_cell(TableKind.TIMER, 0, 2, "100000000") == \
         "100000000 is out of range (0 to 99999999)"
-    assert session.timer_preset(1) == 1000
+    assert session.run.timer_preset(1) == 1000
     assert dock.cell_texts(TableKind.TIMER)[0][2] == "1000"
     problem = dock.edit_cell(TableKind.TIMER, 1, 2, "50")
     assert problem is not None and "TMRB 2" in problem and "fixed in the program" in problem
@@ -124,20 +124,20 @@ def test_counter_and_keep_relays(qtbot: QtBot,
                                  tables: tuple[PlcSession, PlcTablesDock]) -> None:
     session, dock = tables
     type_into_cell(qtbot, dock, TableKind.COUNTER, 0, 1, "3")
-    assert session.counter(3) == (3, 0)
+    assert session.run.counter(3) == (3, 0)
     for _ in range(3):  # three pulses on ACT X3.1: counts 1, 2, 3 = preset
         session.set_bit(parse_address("X3.1"), 1)
         session.run_scans(1)
         session.set_bit(parse_address("X3.1"), 0)
         session.run_scans(1)
     qtbot.waitUntil(lambda: dock.cell_texts(TableKind.COUNTER) == [["3", "3", "3"]])
-    assert session.bit(parse_address("R3.0")) == 1
+    assert session.run.bit(parse_address("R3.0")) == 1
     dock.edit_cell(TableKind.COUNTER, 0, 2, "1")  # the current value can be set too
     session.run_scans(1)
-    assert session.counter(3) == (3, 1) and session.bit(parse_address("R3.0")) == 0
+    assert session.run.counter(3) == (3, 1) and session.run.bit(parse_address("R3.0")) == 0
     type_into_cell(qtbot, dock, TableKind.KEEP, 0, 1, "00000001")
     session.run_scans(1)
-    assert session.bit(parse_address("R4.0")) == 1
+    assert session.run.bit(parse_address("R4.0")) == 1
     assert dock.cell_texts(TableKind.KEEP) == [["K5", "00000001", "01h"]]
 
 
@@ -157,22 +157,22 @@ def test_insert_and_delete(qtbot: QtBot, tables: tuple[PlcSession, PlcTablesDock
     dialog.try_accept()
     qtbot.waitUntil(lambda: not dialog.isVisible())
     assert dock.cell_texts(TableKind.DATA) == [["D20", "2", "-2", "FFFEh"]]
-    assert session.read(Address(Area.D, 20), 2) == 0xFFFE
+    assert session.run.read(Address(Area.D, 20), 2) == 0xFFFE
     type_into_cell(qtbot, dock, TableKind.DATA, 0, 2, "1234")
-    assert session.read(Address(Area.D, 20), 2) == 1234
+    assert session.run.read(Address(Area.D, 20), 2) == 1234
     assert dock.insert_texts(TableKind.TIMER, ["12", "38"]) is None
     assert dock.cell_texts(TableKind.TIMER)[2] == ["12", "TMR", "38", "8", "32"]  # manual: 32
     assert dock.insert_texts(TableKind.TIMER, ["101", "5"]) == "101 is out of range (1 to 100)"
     assert dock.insert_texts(TableKind.COUNTER, ["7", "12", "4"]) is None
-    assert session.counter(7) == (12, 4)
+    assert session.run.counter(7) == (12, 4)
     assert dock.insert_texts(TableKind.KEEP, ["K9", "1010"]) is None
-    assert session.read(Address(Area.K, 9)) == 0b1010
+    assert session.run.read(Address(Area.K, 9)) == 0b1010
     # DELETE clears the row under the mouse; a row the program uses stays, at 0
     dock.context_menu(TableKind.DATA, 0)
     assert dock.delete_action.isEnabled()
     dock.delete_action.trigger()
     assert dock.cell_texts(TableKind.DATA) == []
-    assert session.read(Address(Area.D, 20), 2) == 0
+    assert session.run.read(Address(Area.D, 20), 2) == 0
     assert dock.delete_row(TableKind.TIMER, 2) is None  # timer 12, listed by the user
     assert [row[0] for row in dock.cell_texts(TableKind.TIMER)] == ["1", "2"]
     assert dock.delete_row(TableKind.TIMER, 0) is None  # timer 1: the program's, kept at 0

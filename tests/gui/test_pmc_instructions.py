@@ -25,7 +25,7 @@ def open_box(d: Drawer, name: str, row: int, col: int) -> FunctionDialog:
     d.key("F")  # the function tool (already chosen when the list changed)
     assert d.window.current_tool() is Tool.FUNCTION
     d.click(0, row, col)
-    dialog = d.view.function_dialog
+    dialog = d.view.edits.function_dialog
     assert dialog is not None and dialog.spec.name == name
     d.qtbot.waitUntil(dialog.isVisible)
     return dialog

@@ -82,7 +82,7 @@ def test_timer_preset_is_saved_reopened_and_used_by_the_cli(
     assert asked == ["The program has unsaved changes. Save them?"]
     assert not window.is_modified()
     qtbot.waitUntil(lambda: dock.cell_texts(TableKind.TIMER)[0][2] == "500")
-    assert window.plc_docks.session.timer_preset(1) == 500
+    assert window.plc_docks.session.run.timer_preset(1) == 500
     # the command line reads TIMER.LAD.prm beside the program: 500 ms -> 480 ms (48 ms ticks)
     out = run_cli("run", str(program), "--ms", "600", "--set", "R1.4=1",
                   "--trace", "R1.7", "--period", "48")
@@ -98,11 +98,11 @@ def test_new_program_has_default_parameters(
     (tmp_path / "K.LAD.prm").write_text("K5 = 0b00000011\nnonsense\n", encoding="utf-8")
     open_with_dialog(window, monkeypatch, program)
     session = window.plc_docks.session
-    assert session.parameters.get(session.parameters.values()[0].address) == 3
+    assert session.run.parameters.get(session.run.parameters.values()[0].address) == 3
     assert "1 lines not understood" in window.last_warning and "line 2" in window.last_warning
     assert not window.is_modified()
     dock = tables_of(window)
     assert ["K5", "00000011", "03h"] in dock.cell_texts(TableKind.KEEP)
     window.actions_by_name["action_new"].trigger()
-    assert not session.parameters and not window.is_modified()
+    assert not session.run.parameters and not window.is_modified()
     assert dock.cell_texts(TableKind.KEEP) == []

@@ -176,7 +176,7 @@ def test_alarm_panel_shows_the_programs_message(
     session = window.plc_docks.session
     dock = window.plc_docks.others["alarms"]
     assert "(%@4): 2" in dock.file_label.text()
-    session.realtime = False
+    session.run.realtime = False
     # X22 itself does not compile yet: a small program runs while X22's messages are the texts
     compiled = session.load_program(parse("%@3\nRD X0.0\nWRT R0.0\n%\n").program)
     assert compiled.binary is not None

@@ -148,5 +148,5 @@ def test_a_changed_pmc_parameter_is_copied_and_restored(qtbot: QtBot, window: Ma
     answers.queue = ["restore"]
     restored = _second_window(qtbot, settings)
     assert restored.offer_recovery()
-    assert restored.parameters.session.parameters.get(parse_address("D10")) == 42
+    assert restored.parameters.session.run.parameters.get(parse_address("D10")) == 42
     assert restored.is_modified() and restored.path == path

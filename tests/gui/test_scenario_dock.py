@@ -50,7 +50,7 @@ def test_run_shows_each_check_and_jumps_to_the_failing_time(qtbot: QtBot,
     dock.checks.itemActivated.emit(rows[1], 0)
     assert chart.time_cursor.value() == 960
     assert chart.cursor_values()["R1.7"] == 1  # the chart shows the scenario's own run
-    assert session.engine is not None and session.engine.now_ms == 0  # live PLC untouched
+    assert session.run.engine is not None and session.run.engine.now_ms == 0  # live PLC untouched
     session.stop()
 
 
@@ -72,16 +72,16 @@ def test_record_while_forcing_then_replay_gives_the_same_outputs(qtbot: QtBot) -
     session.run_scans(2)
     text = dock.stop_recording()
     assert "FORCE,0,X2.3,1" in text and "RELEASE," in text
-    assert session.engine is not None
-    live_y = bytes(session.memory.areas[parse_address("Y0").area])
+    assert session.run.engine is not None
+    live_y = bytes(session.run.memory.areas[parse_address("Y0").area])
     with qtbot.waitSignal(dock.finished) as blocker:
         dock.run_text(text, "recorded.csv")
     assert blocker.args[0].passed, blocker.args[0].failures()
-    replay = PlcRun(period_ms=session.period_ms)
-    assert session.binary is not None and replay.load(session.binary) == []
+    replay = PlcRun(period_ms=session.run.period_ms)
+    assert session.run.binary is not None and replay.load(session.run.binary) == []
     run_scenario(replay, parse_scenario(text))
     assert bytes(replay.memory.areas[parse_address("Y0").area]) == live_y
-    assert replay.engine is not None and replay.engine.now_ms == session.engine.now_ms
+    assert replay.engine is not None and replay.engine.now_ms == session.run.engine.now_ms
     session.stop()
 
 

@@ -145,7 +145,7 @@ def test_docks_update_without_the_engine_lock(qtbot: QtBot, session: PlcSession)
     dock.show()
     dock.set_address(0, "X40")
     dock.start()
-    engine = session.engine
+    engine = session.run.engine
     assert engine is not None
     free: list[bool] = []
     update = dock.gate.update
@@ -184,6 +184,6 @@ def test_the_chart_lets_a_due_scan_in_between_its_lanes_only_while_the_thread_sc
     session.run_scans(1)
     assert sleeps == []  # the virtual clock: nothing to let in
     monkeypatch.setattr(PlcRun, "threaded", property(lambda _self: True))
-    chart.gate.update(session.snapshot())
+    chart.gate.update(session.run.snapshot())
     assert len(sleeps) == 3 and all(0 < s < 0.001 for s in sleeps)  # one per bit lane
     chart.stop()

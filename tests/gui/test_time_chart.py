@@ -36,8 +36,8 @@ def relay(qtbot: QtBot) -> Iterator[tuple[PlcSession, TimeChartDock]]:
 def switch_on_after(session: PlcSession, scans: int) -> int:
     """Run `scans` scans, then turn R1.4 on; returns the time of the first scan that sees it."""
     session.run_scans(scans)
-    assert session.engine is not None
-    at = session.engine.now_ms
+    assert session.run.engine is not None
+    at = session.run.engine.now_ms
     session.set_bit(R1_4, 1)
     return at
 

@@ -64,12 +64,12 @@ def test_cursor_back_shows_the_earlier_state_then_live_and_why(qtbot: QtBot,
     assert dock.past is not None and dock.past.scan_count == 0
     travel.action.trigger()
     assert not slider.isVisible()
-    assert travel.history is None and dock.past is None and session.engine is not None
-    assert session.engine.history is None
+    assert travel.history is None and dock.past is None and session.run.engine is not None
+    assert session.run.engine.history is None
 
 
 def engine_ops(session: object) -> list[str]:
-    engine = session.engine  # type: ignore[attr-defined]
+    engine = session.run.engine  # type: ignore[attr-defined]
     return [f"{op.name} {op.operand}" for op in engine.program.ops]
 
 
@@ -87,7 +87,7 @@ def test_online_drawing_shows_the_past_too(qtbot: QtBot, window: MainWindow) -> 
     assert online.past is not None and online.past.now_ms == 8
     assert window.editor.networks[0].coil_column is not None
     assert online.live.overlays[0].power.coils == {(0, window.editor.networks[0].coil_column)}
-    docks.diagnostic.show_past(docks.diagnostic.session.snapshot())
+    docks.diagnostic.show_past(docks.diagnostic.session.run.snapshot())
     docks.diagnostic.back_to_live()
     assert online.past is None and online.live.overlays[0].power.coils == set()
 

@@ -275,7 +275,7 @@ def test_turkish_numbers_have_a_decimal_comma(window: MainWindow) -> None:
     session = window.plc_docks.session
     control = window.plc_docks.control
     session.run_scans(3)
-    session.status_changed.emit(session.status())
+    session.status_changed.emit(session.run.status())
     figures = control.figures.text()  # type: ignore[attr-defined]
     assert re.search(r"tarama süresi \d+,\d{3} / \d+,\d{3} / \d+,\d{3} ms", figures), figures
 

@@ -62,7 +62,7 @@ def test_a_boxs_parameters_and_comment_are_one_step(drawer: Drawer) -> None:
     stack = d.window.model.undo_stack
 
     def fill(number: str, comment: str) -> None:
-        dialog = d.view.function_dialog
+        dialog = d.view.edits.function_dialog
         assert dialog is not None
         qtbot.waitUntil(dialog.isVisible)
         qtbot.keyClick(dialog.table, number)

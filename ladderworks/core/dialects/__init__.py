@@ -8,10 +8,13 @@ A dialect (`base.Dialect`) is data: rows of the instruction table, an address ma
 from __future__ import annotations
 
 import importlib
+from collections.abc import Callable
 
 from ladderworks.core.address import AREA_SIZES, Address, AddressError, Area, parse_address
 from ladderworks.core.dialects.base import Dialect
 from ladderworks.core.instructions import add_rows
+from ladderworks.core.symbols import Target
+from ladderworks.core.symbols import parse_target as parse_pmc_target
 
 __all__ = ["Dialect", "by_code", "every", "format_address", "get", "memory_sizes", "names",
            "parse_bit", "parse_target", "parse_word", "register", "sniff"]
@@ -129,3 +132,14 @@ def memory_sizes() -> dict[Area, int]:
 
 
 _load_builtin()
+
+
+def typed_target(text: str, address_of: Callable[[str], Address | None] | None = None,
+                 dialect: str | None = None) -> Target:
+    """`ADDR[:W]` as a user types it for a program of `dialect`: its devices' spelling (`X10`,
+    `D0`), else the PMC's address or symbol (`symbols.parse_target`). AddressError."""
+    if get(dialect) is None:
+        return parse_pmc_target(text, address_of)
+    typed = text.strip()
+    address, size = parse_target(typed, dialect)
+    return Target(typed, address, size)

@@ -12,13 +12,23 @@ from __future__ import annotations
 from bisect import bisect_right
 from collections import deque
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from ladderworks.core.address import Address, Area
+from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.instructions import Combine, Write
+from ladderworks.core.plc.memory import Memory
 
-if TYPE_CHECKING:
-    from ladderworks.core.plc.engine import ScanEngine
+
+class ScanSource(Protocol):
+    """What the history reads of the engine whose scans it keeps (`engine.ScanEngine`)."""
+
+    program: BinaryProgram
+    memory: Memory
+    now_ms: int
+    scan_count: int
+    power_flow: bytearray
+
 
 BLOCK = 64
 KEYFRAME_EVERY = 256
@@ -92,7 +102,7 @@ class ScanHistory:
 
     # -- recording -------------------------------------------------------------------------
 
-    def record(self, engine: ScanEngine) -> None:
+    def record(self, engine: ScanSource) -> None:
         """Keep the state after the scan just run (called by the engine, under its lock)."""
         scan, now = engine.scan_count, engine.now_ms
         sources: dict[Area | str, bytearray] = {k: v for k, v in engine.memory.areas.items()}
@@ -201,7 +211,7 @@ class ScanHistory:
                             value = now
         return found
 
-    def why(self, engine: ScanEngine, address: Address, scan: int) -> Why | None:
+    def why(self, engine: ScanSource, address: Address, scan: int) -> Why | None:
         """The last change of a bit at or before `scan`, with the coils that write it and the
         contacts of their networks whose bit changed in that scan (None if it never changed)."""
         changes = [c for c in self.bit_changes(address) if c[0] <= scan]

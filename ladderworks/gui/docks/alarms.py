@@ -104,10 +104,10 @@ class AlarmDock(Retranslating, QDockWidget):
         self.setWidget(body)
         self._alarms: list[ActiveAlarm] = []
         session.alarms_changed.connect(self._on_alarms)
-        if not session.alarm_table.messages and DEFAULT_ALARM_FILE.exists():
+        if not session.run.alarm_table.messages and DEFAULT_ALARM_FILE.exists():
             self.load_file(DEFAULT_ALARM_FILE)
         self.retranslate()
-        self._on_alarms(session.alarms())
+        self._on_alarms(session.run.alarms())
 
     # -- the alarm file ----------------------------------------------------------------------
 
@@ -123,7 +123,7 @@ class AlarmDock(Retranslating, QDockWidget):
             )
             self.file_label.setStyleSheet("color:#c00000;")
             return False
-        self.session.set_alarm_table(table)
+        self.session.run.set_alarm_table(table)
         self.program_messages = 0
         self.alarm_file = Path(path)
         self.file_problems = problems
@@ -135,12 +135,12 @@ class AlarmDock(Retranslating, QDockWidget):
         """A program was opened: its `%@4` messages are the texts; without them, the file's."""
         if program.messages:
             if not self.program_messages:
-                self._file_table = self.session.alarm_table
+                self._file_table = self.session.run.alarm_table
             table = AlarmTable.from_messages(program.messages)
-            self.session.set_alarm_table(table)
+            self.session.run.set_alarm_table(table)
             self.program_messages = len(table)
         elif self.program_messages:
-            self.session.set_alarm_table(self._file_table or AlarmTable())
+            self.session.run.set_alarm_table(self._file_table or AlarmTable())
             self.program_messages = 0
         else:
             return
@@ -171,7 +171,7 @@ class AlarmDock(Retranslating, QDockWidget):
             self.file_label.setText(translate("AlarmPanel", "No alarm file"))
             return
         text = translate("AlarmPanel", "{0}: {1} messages").format(
-            self.alarm_file.name, len(self.session.alarm_table)
+            self.alarm_file.name, len(self.session.run.alarm_table)
         )
         if self.file_problems:
             text += " · " + translate("AlarmPanel", "{0} lines with problems").format(
@@ -198,7 +198,7 @@ class AlarmDock(Retranslating, QDockWidget):
 
     def message_of(self, alarm: ActiveAlarm) -> str:
         """The alarm's text from the file now loaded (or a note that the file has none)."""
-        text = self.session.alarm_table.text_for(alarm.number) or alarm.text
+        text = self.session.run.alarm_table.text_for(alarm.number) or alarm.text
         return text or translate("AlarmPanel", "(no message {0} in the alarm file)").format(
             format_number(alarm.number)
         )

@@ -165,7 +165,7 @@ class BitDisplayDock(Retranslating, QDockWidget):
         self.visibilityChanged.connect(lambda _shown: self.gate.flush())
         session.forces_changed.connect(self._on_forces)
         session.symbols_changed.connect(lambda _symbols: self._refresh_tooltips())
-        self._on_forces(session.forces())
+        self._on_forces(session.run.forces())
         self.retranslate()
 
     # -- START / STOP ----------------------------------------------------------------------
@@ -176,7 +176,7 @@ class BitDisplayDock(Retranslating, QDockWidget):
             self._parse(row)
         self.live = True
         self._update_state()
-        self._on_snapshot(self.session.snapshot())
+        self._on_snapshot(self.session.run.snapshot())
 
     def stop(self) -> None:
         """Freeze what is shown."""
@@ -193,7 +193,7 @@ class BitDisplayDock(Retranslating, QDockWidget):
         """A box was edited: take its address (shown at once when live)."""
         self._parse(row)
         if self.live:
-            self._show_row(row, self.session.snapshot())
+            self._show_row(row, self.session.run.snapshot())
 
     def _spelled(self, address: Address) -> str:
         """A row's byte as the loaded program writes it: `R0`, or Delta's `D0`, `M0` (a byte
@@ -297,18 +297,18 @@ class BitDisplayDock(Retranslating, QDockWidget):
         address = self._bit_address(button)
         if address is None:
             return
-        if self.session.engine is None:
+        if self.session.run.engine is None:
             self.state_label.setText(translate("BitDisplay", "Load a program to force inputs"))
             return
         current = self._forced.get(address)
         if current is None:
-            current = bool(self.session.bit(address))
+            current = bool(self.session.run.bit(address))
         self.session.force(address, not current)
 
     def bit_menu(self, button: BitButton, pos: QPoint) -> None:
         """Right-click on an input bit: force 1, force 0, release."""
         address = self._bit_address(button)
-        if address is None or self.session.engine is None:
+        if address is None or self.session.run.engine is None:
             return
         menu = QMenu(self)
         menu.setObjectName("bitDisplayForceMenu")
@@ -357,7 +357,7 @@ class BitDisplayDock(Retranslating, QDockWidget):
             if row.edit.text().strip():
                 self._parse(row)
                 if self.live:
-                    self._show_row(row, self.session.snapshot())
+                    self._show_row(row, self.session.run.snapshot())
         self._update_state()
         self._fit_width()
 

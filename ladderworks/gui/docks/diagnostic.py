@@ -278,8 +278,8 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.view.verticalScrollBar().valueChanged.connect(lambda _v: self._repaint())
         self.view.horizontalScrollBar().valueChanged.connect(lambda _v: self._repaint())
         self.retranslate()
-        if session.binary is not None:
-            self._on_program(session.binary)
+        if session.run.binary is not None:
+            self._on_program(session.run.binary)
 
     def retranslate(self) -> None:
         """Texts in the UI language."""
@@ -313,7 +313,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
     # -- the program -------------------------------------------------------------------
 
     def _on_program(self, binary: BinaryProgram) -> None:
-        program = self.session.program
+        program = self.session.run.program
         if program is None or not program_matches(program, binary):
             program = program_of(binary)
         networks = self._lay_out(program)
@@ -346,7 +346,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
     def _on_visible(self, visible: bool) -> None:
         if visible != self._monitoring:
             self._monitoring = visible
-            self.session.monitor(visible)
+            self.session.run.monitor(visible)
         if visible:
             # the network's coils in the dock's width, once the dock has its width
             QTimer.singleShot(0, self.view.fit_width)
@@ -367,14 +367,14 @@ class DiagnosticDock(Retranslating, QDockWidget):
             self.view.ensureVisible(self.view.cell_rect(network, cell), 40, 40)
 
     def _repaint(self) -> None:
-        snapshot = self.past or self._snapshot or self.session.snapshot()
-        forced = (self.session.engine.force_table.forced()
-                  if self.session.engine is not None else {})
+        snapshot = self.past or self._snapshot or self.session.run.snapshot()
+        forced = (self.session.run.engine.force_table.forced()
+                  if self.session.run.engine is not None else {})
         self.view.live.update(snapshot, forced, self.view.visible_rect())
         self._show_state()
 
     def _show_state(self) -> None:
-        status = self.session.status()
+        status = self.session.run.status()
         self.state.setStyleSheet("")
         if self.past is not None:
             self.state.setText(translate(

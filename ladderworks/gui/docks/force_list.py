@@ -63,7 +63,7 @@ class ForceListDock(Retranslating, QDockWidget):
         self.setWidget(body)
         self.entries: list[ForceEntry] = []
         session.forces_changed.connect(self.show_entries)
-        session.program_loaded.connect(lambda _binary: self.show_entries(session.forces()))
+        session.program_loaded.connect(lambda _binary: self.show_entries(session.run.forces()))
         self.retranslate()
 
     def retranslate(self) -> None:
@@ -84,7 +84,7 @@ class ForceListDock(Retranslating, QDockWidget):
                      if spelled.dialect else labelled(entry.address, self.session.symbols))
             return (translate("ForceList", "FORCED"), where,
                     str(int(bool(entry.value))))
-        binary = self.session.binary
+        binary = self.session.run.binary
         text = f"op {entry.op}"
         if binary is not None and entry.op is not None and entry.op < len(binary.ops):
             op = binary.ops[entry.op]

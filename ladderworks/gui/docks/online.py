@@ -82,11 +82,11 @@ class OnlineMode(QObject):
         if not on:
             if self.live.attached:
                 self.live.detach()
-                self.session.monitor(False)
+                self.session.run.monitor(False)
                 self._say(translate("PlcOnline", "Off-line"))
             self._sync_check(False)
             return False
-        binary = self.session.binary
+        binary = self.session.run.binary
         if binary is None:
             self._say(translate("PlcOnline", "On-line needs a compiled program in the PLC"))
             self._sync_check(False)
@@ -98,7 +98,7 @@ class OnlineMode(QObject):
             self._sync_check(False)
             return False
         if not self.live.attached:
-            self.session.monitor(True)
+            self.session.run.monitor(True)
         self.live.attach(self.editor.model.networks, self.editor.layout_, binary, ops)
         self._sync_check(True)
         self.refresh()
@@ -134,7 +134,7 @@ class OnlineMode(QObject):
     def refresh(self) -> None:
         """Repaint the power flow now."""
         if self.online:
-            self._update(self.past or self.session.snapshot())
+            self._update(self.past or self.session.run.snapshot())
 
     def show_past(self, snapshot: PlcSnapshot) -> None:
         """Time travel: show an earlier scan's power flow, marked as the past."""
@@ -153,8 +153,8 @@ class OnlineMode(QObject):
                 self._say(translate("PlcOnline", "On-line: the drawing shows the running PLC"))
 
     def _update(self, snapshot: PlcSnapshot) -> None:
-        forced = (self.session.engine.force_table.forced()
-                  if self.session.engine is not None else {})
+        forced = (self.session.run.engine.force_table.forced()
+                  if self.session.run.engine is not None else {})
         visible = self.editor.mapToScene(self.editor.viewport().rect()).boundingRect()
         self.live.update(snapshot, forced, visible)
 

@@ -143,7 +143,7 @@ class PlcControlDock(Retranslating, QDockWidget):
         session.status_changed.connect(self._show_status)
         session.running_changed.connect(lambda _running: self._update_actions())
         self.retranslate()
-        self._show_status(session.status())
+        self._show_status(session.run.status())
 
     def retranslate(self) -> None:
         """Texts in the UI language."""
@@ -158,7 +158,7 @@ class PlcControlDock(Retranslating, QDockWidget):
         for name, text in texts.items():
             self.control_actions[name].setText(text)
         self._show_loaded()
-        self._show_status(self.session.status())
+        self._show_status(self.session.run.status())
 
     # -- the program text ------------------------------------------------------------------
 
@@ -332,10 +332,10 @@ class PlcControlDock(Retranslating, QDockWidget):
 
     def start(self) -> bool:
         """START: run the loaded program (asks first when forces are active)."""
-        if self.session.engine is None:
+        if self.session.run.engine is None:
             set_live_text(self.message, lambda: translate("PlcControl", "Compile a program first"))
             return False
-        forces = self.session.forces()
+        forces = self.session.run.forces()
         if forces and not self.confirm_forces(len(forces)):
             return False
         return self.session.start()
@@ -345,8 +345,8 @@ class PlcControlDock(Retranslating, QDockWidget):
         self.session.stop()
 
     def _update_actions(self) -> None:
-        running = self.session.running
-        self.control_actions["action_plc_start"].setEnabled(self.session.engine is not None
+        running = self.session.run.running
+        self.control_actions["action_plc_start"].setEnabled(self.session.run.engine is not None
                                                     and not running)
         self.control_actions["action_plc_stop"].setEnabled(running)
         self.control_actions["action_plc_control_compile"].setEnabled(

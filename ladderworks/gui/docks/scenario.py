@@ -30,7 +30,6 @@ from ladderworks.core.plc.scenario import (
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.diagnostic_texts import diagnostic_text
-from ladderworks.gui.docks import trace_files
 from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord
 from ladderworks.gui.error_list import location_text
@@ -99,7 +98,7 @@ class ScenarioDock(Retranslating, QDockWidget):
 
     def run_file(self, path: str | Path) -> ScenarioResult | None:
         """Read and run a scenario file."""
-        program = self.session.program
+        program = self.session.run.program
         try:
             scenario = read_scenario(path, program.symbols if program is not None else None,
                                      self.session.run.program_dialect)
@@ -112,7 +111,7 @@ class ScenarioDock(Retranslating, QDockWidget):
 
     def run_text(self, text: str, name: str = "scenario") -> ScenarioResult | None:
         """Run scenario text (tests, the recorder's output)."""
-        program = self.session.program
+        program = self.session.run.program
         return self.run(parse_scenario(text, name,
                                        program.symbols if program is not None else None,
                                        self.session.run.program_dialect))
@@ -120,14 +119,14 @@ class ScenarioDock(Retranslating, QDockWidget):
     def run(self, scenario: Scenario) -> ScenarioResult | None:
         """Run on a cold start of the loaded program with its PMC parameters; the live PLC is
         not touched. Every address of the scenario is traced into the time chart."""
-        binary = self.session.binary
+        binary = self.session.run.binary
         if binary is None:
             self._say(lambda: translate("Scenario", "Load (compile) a PLC program first"),
                       error=True)
             return None
-        plc = PlcRun(period_ms=self.session.period_ms)
-        plc.set_parameters(self.session.parameters)
-        if plc.load(binary, self.session.program) or plc.engine is None:
+        plc = PlcRun(period_ms=self.session.run.period_ms)
+        plc.set_parameters(self.session.run.parameters)
+        if plc.load(binary, self.session.run.program) or plc.engine is None:
             return None
         self._check_program(scenario)
         signals = _signals(scenario)
@@ -140,7 +139,7 @@ class ScenarioDock(Retranslating, QDockWidget):
             record = TraceRecord(signals)
             record.period_ms = plc.engine.period_ms
             record.extend(trace.take())
-            trace_files.show_record(self.chart, record)
+            self.chart.show_record(record)
             failing = self.failing_times()
             if failing:  # the first failure at once
                 self.chart.set_cursor(failing[0])

@@ -83,7 +83,7 @@ class SnapshotGate(QObject):
     def flush(self) -> None:
         """Make up for a snapshot held back, with the latest (when the widget is shown)."""
         if self.pending and self.widget.isVisible():
-            self._run(self.session.snapshot())
+            self._run(self.session.run.snapshot())
 
     def let_scan(self) -> None:
         """Between two pieces of a long update: while the real-time thread scans, give it the

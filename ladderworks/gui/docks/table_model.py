@@ -34,10 +34,10 @@ class PlcTableModel(QAbstractTableModel):
         super().__init__()
         self.spec = spec
         self.session = session
-        self.use = ProgramUse.of(session.binary)
+        self.use = ProgramUse.of(session.run.binary)
         self.last_error: TableError | None = None
         self._headers = spec.headers(session)
-        self._rows: list[Row] = spec.rows(session.snapshot().areas, self.use, session)
+        self._rows: list[Row] = spec.rows(session.run.snapshot().areas, self.use, session)
 
     # -- reading -------------------------------------------------------------------------
 
@@ -142,7 +142,7 @@ class PlcTableModel(QAbstractTableModel):
         self.beginResetModel()
         self.use = use if use is not None else ProgramUse.of(program)
         self._headers = self.spec.headers(self.session)
-        self._rows = self.spec.rows(self.session.snapshot().areas, self.use, self.session)
+        self._rows = self.spec.rows(self.session.run.snapshot().areas, self.use, self.session)
         self.endResetModel()
 
     def retranslate(self) -> None:
@@ -154,7 +154,7 @@ class PlcTableModel(QAbstractTableModel):
     def update(self, areas: Areas | None = None) -> None:
         """Show these memory areas (now's when None): rows in and out, changed rows redrawn."""
         if areas is None:
-            areas = self.session.snapshot().areas
+            areas = self.session.run.snapshot().areas
         rows = self.spec.rows(areas, self.use, self.session)
         key = self.spec.key
         wanted = {key(row) for row in rows}

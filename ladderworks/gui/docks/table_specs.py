@@ -104,7 +104,7 @@ class TimerSpec(TableSpec):
 
     def headers(self, session: PlcSession) -> list[str]:
         """No., Type, Preset, [Precision,] Tick, Delay."""
-        layout = session.timers
+        layout = session.run.timers
         preset = (translate("PlcTables", "Preset (ticks)") if layout.has_precision
                   else translate("PlcTables", "Preset (ms)"))
         precision = [translate("PlcTables", "Precision")] if layout.has_precision else []
@@ -114,14 +114,14 @@ class TimerSpec(TableSpec):
 
     def form_fields(self, session: PlcSession) -> list[str]:
         """Timer number and preset."""
-        layout = session.timers
+        layout = session.run.timers
         preset = (translate("PlcTables", "Preset (ticks)") if layout.has_precision
                   else translate("PlcTables", "Preset (ms)"))
         return [translate("PlcTables", "Timer number (1-{0})").format(layout.count), preset]
 
     def rows(self, areas: Areas, use: ProgramUse, session: PlcSession) -> list[Row]:
         """Every TMR used, listed or set, then every TMRB."""
-        return list(timer_rows(areas, use, self.listed, session.timers))
+        return list(timer_rows(areas, use, self.listed, session.run.timers))
 
     def key(self, row: Row) -> tuple[object, ...]:
         """Number and TMR/TMRB."""
@@ -131,14 +131,14 @@ class TimerSpec(TableSpec):
     def texts(self, row: Row, session: PlcSession) -> list[str]:
         """No., type, preset, [precision,] tick, delay."""
         assert isinstance(row, TimerRow)
-        precision = [str(row.precision)] if session.timers.has_precision else []
+        precision = [str(row.precision)] if session.run.timers.has_precision else []
         return [str(row.number), _TIMER_NAMES[row.fixed], str(row.preset), *precision,
                 str(row.tick_ms), str(row.delay_ms)]
 
     def editable(self, row: Row, column: int, session: PlcSession) -> bool:
         """The preset (and the FANUC precision) of a TMR."""
         assert isinstance(row, TimerRow)
-        columns = (2, 3) if session.timers.precision_address(row.number) else (2,)
+        columns = (2, 3) if session.run.timers.precision_address(row.number) else (2,)
         return not row.fixed and column in columns
 
     def store(self, session: PlcSession, row: Row, column: int, text: str) -> None:
@@ -146,7 +146,7 @@ class TimerSpec(TableSpec):
         assert isinstance(row, TimerRow)
         if row.fixed:
             raise TableError("preset-fixed", number=row.number)
-        layout = session.timers
+        layout = session.run.timers
         where = layout.precision_address(row.number)
         if column == 3 and where is not None:
             session.set_parameter(where, timer_precision(text), 2)
@@ -155,7 +155,7 @@ class TimerSpec(TableSpec):
 
     def insert(self, session: PlcSession, texts: list[str]) -> None:
         """Timer number + preset."""
-        layout = session.timers
+        layout = session.run.timers
         number = timer_number(texts[0], layout)
         session.set_timer_preset(number, timer_preset(texts[1] or "0", layout))
         self.listed.add(number)

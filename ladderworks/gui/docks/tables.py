@@ -326,7 +326,7 @@ class PlcTablesDock(Retranslating, QDockWidget):
             self.tabs.setTabText(index, titles[kind])
             self.models[kind].retranslate()
             fit_headers(self.tables[kind])  # the titles in the new language, whole
-        layout = self.session.timers
+        layout = self.session.run.timers
         self.tables[TableKind.TIMER].setToolTip(
             translate(
                 "PlcTables",

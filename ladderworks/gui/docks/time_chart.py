@@ -161,7 +161,7 @@ class TimeChartDock(Retranslating, QDockWidget):
         """The lanes typed in the box (None and a message when one is wrong or none is given)."""
         texts = [text for text in _SPLIT.split(self.signals_edit.text().strip()) if text]
         if not texts:
-            self._say(lambda: translate(
+            self.say(lambda: translate(
                 "TimeChart", "Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)"),
                 error=True)
             return None
@@ -171,7 +171,7 @@ class TimeChartDock(Retranslating, QDockWidget):
                 signals.append(parse_traced(text, self.session.symbols,
                                             self.session.run.program_dialect))
             except AddressError as error:
-                self._say(diagnostic_text(error.diagnostic), error=True)
+                self.say(diagnostic_text(error.diagnostic), error=True)
                 return None
         return signals
 
@@ -181,20 +181,20 @@ class TimeChartDock(Retranslating, QDockWidget):
         signals = self.parse_signals()
         if signals is None:
             return False
-        if self.session.engine is None:
-            self._say(lambda: translate("TimeChart", "Load (compile) a PLC program first"),
+        if self.session.run.engine is None:
+            self.say(lambda: translate("TimeChart", "Load (compile) a PLC program first"),
                       error=True)
             return False
         period = self.period_spin.value()
         self.record = TraceRecord(signals)
-        self.record.period_ms = max(period, self.session.engine.period_ms)
+        self.record.period_ms = max(period, self.session.run.engine.period_ms)
         self._make_lanes()
-        self.session.start_trace(
+        self.session.run.start_trace(
             [s.address for s in signals], period, widths=[s.width for s in signals]
         )
         self.sampling = True
         self.fit()
-        self._say(lambda: translate("TimeChart", "Sampling every {0} ms").format(period))
+        self.say(lambda: translate("TimeChart", "Sampling every {0} ms").format(period))
         self._update_actions()
         return True
 
@@ -202,29 +202,29 @@ class TimeChartDock(Retranslating, QDockWidget):
         """Stop sampling; what was sampled stays on the chart."""
         if not self.sampling:
             return
-        self.session.stop_trace()
+        self.session.run.stop_trace()
         self._take_samples()
         self.sampling = False
         count = len(self.record)
-        self._say(lambda: translate("TimeChart", "Stopped: {0} samples").format(count))
+        self.say(lambda: translate("TimeChart", "Stopped: {0} samples").format(count))
         self._update_actions()
 
     def clear(self) -> None:
         """Wipe the chart (sampling goes on if started)."""
         if self.sampling:
-            self.session.trace_samples()  # samples taken before CLEAR are not shown
+            self.session.run.trace_samples()  # samples taken before CLEAR are not shown
         self.record.clear()
         self._redraw()
         self._show_cursor()
 
     def _on_program_loaded(self, _program: object) -> None:
         if self.sampling:  # the session keeps the sampler across a reload
-            self._say(lambda: translate("TimeChart", "New program loaded; sampling goes on"))
+            self.say(lambda: translate("TimeChart", "New program loaded; sampling goes on"))
 
     def _take_samples(self, snapshot: object = None) -> None:
         if not self.sampling:
             return
-        samples = self.session.trace_samples()
+        samples = self.session.run.trace_samples()
         if samples and len(samples[0].values) == len(self.record.signals):
             self.record.extend(samples)
             if isinstance(snapshot, PlcSnapshot):
@@ -382,20 +382,20 @@ class TimeChartDock(Retranslating, QDockWidget):
         try:
             atomic_write(path, self.record.csv_text())
         except OSError as error:
-            self._say(
+            self.say(
                 translate("TimeChart", "Cannot write {0}: {1}").format(path, os_error_text(error)),
                 error=True,
             )
             return False
-        self._say(lambda: translate("TimeChart", "Saved {0}").format(path))
+        self.say(lambda: translate("TimeChart", "Saved {0}").format(path))
         return True
 
     def export_png(self, path: str | Path) -> bool:
         """Save the chart as a PNG picture."""
         if not self.plot.grab().save(str(path), "PNG"):
-            self._say(translate("TimeChart", "Cannot write {0}").format(path), error=True)
+            self.say(translate("TimeChart", "Cannot write {0}").format(path), error=True)
             return False
-        self._say(lambda: translate("TimeChart", "Saved {0}").format(path))
+        self.say(lambda: translate("TimeChart", "Saved {0}").format(path))
         return True
 
     def export_csv_dialog(self) -> None:
@@ -420,9 +420,18 @@ class TimeChartDock(Retranslating, QDockWidget):
         if path:
             self.export_png(path)
 
+    def show_record(self, record: TraceRecord) -> None:
+        """Show a finished record (an imported file, a scenario's run) instead of live samples."""
+        if self.sampling:
+            self.stop()
+        self.record = record
+        self.signals_edit.setText(" ".join(s.label for s in record.signals))
+        self._make_lanes()
+        self.fit()
+
     # -- texts -------------------------------------------------------------------------------
 
-    def _say(self, text: str | Callable[[], str], *, error: bool = False) -> None:
+    def say(self, text: str | Callable[[], str], *, error: bool = False) -> None:
         """A message above the chart; one given as a function follows a language switch."""
         self.message.setStyleSheet("color:#c00000;" if error else "")
         if callable(text):

@@ -71,14 +71,14 @@ class TimeTravel(QObject):
         if on:
             self.history = ScanHistory()
             self._attach()
-            self.session.monitor(True)
+            self.session.run.monitor(True)
         else:
-            engine = self.session.engine
+            engine = self.session.run.engine
             if engine is not None:
                 with self.session.run.lock():
                     engine.history = None
             self.history = None
-            self.session.monitor(False)
+            self.session.run.monitor(False)
             self.diagnostic.back_to_live()
         self.diagnostic.why_button.setVisible(on)
         self.slider.setVisible(on)
@@ -90,7 +90,7 @@ class TimeTravel(QObject):
             self.online.back_to_live()
 
     def _attach(self) -> None:
-        engine = self.session.engine
+        engine = self.session.run.engine
         if engine is not None and self.history is not None:
             with self.session.run.lock():
                 engine.history = self.history
@@ -168,7 +168,7 @@ class TimeTravel(QObject):
     def why(self, address: Address) -> Why | None:
         """Go to the scan where a bit last changed (up to the scan shown) and mark the
         contacts that changed it."""
-        history, engine = self.history, self.session.engine
+        history, engine = self.history, self.session.run.engine
         if history is None or engine is None or address.bit is None:
             set_live_text(self.diagnostic.message, lambda: translate(
                 "TimeTravel", "Turn on PLC › Keep scan history and give a bit address"))

@@ -2,26 +2,45 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QAction
+from PySide6.QtWidgets import QSpinBox
 
 from ladderworks.core.address import AddressError
 from ladderworks.core.plc.trace import TraceSample
 from ladderworks.core.plc.trace_file import TraceFileError, TraceTable, ladder3_text, read_trace
 from ladderworks.gui import file_dialogs
+from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.docks.trace_record import TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.os_errors import os_error_text
 
-if TYPE_CHECKING:
-    from ladderworks.gui.docks.time_chart import TimeChartDock
-
 translate = QCoreApplication.translate
 EXPORT = "action_time_chart_ladder3"
 IMPORT = "action_time_chart_import"
+
+
+class TimeChartDock(Protocol):
+    """What the trace files use of the time chart (`time_chart.TimeChartDock`)."""
+
+    record: TraceRecord
+    sampling: bool
+    period_spin: QSpinBox
+    toolbar: ButtonFlow  # the actions' place, and the dialogs' parent
+    chart_actions: dict[str, QAction]
+
+    def stop(self) -> None:
+        """Stop sampling."""
+
+    def say(self, text: str | Callable[[], str], *, error: bool = False) -> None:
+        """A message above the chart."""
+
+    def show_record(self, record: TraceRecord) -> None:
+        """Show a finished record instead of live samples."""
 
 
 def table_of(record: TraceRecord) -> TraceTable:
@@ -34,7 +53,7 @@ def add_actions(dock: TimeChartDock) -> None:
     """Add LADDER-III export and trace import to the chart's toolbar."""
     for name, slot in ((EXPORT, lambda: export_dialog(dock)),
                        (IMPORT, lambda: import_dialog(dock))):
-        action = QAction(dock)
+        action = QAction(dock.toolbar)
         action.setObjectName(name)
         action.triggered.connect(lambda _c=False, s=slot: s())
         dock.toolbar.add_action(action)
@@ -59,10 +78,10 @@ def export_ladder3(dock: TimeChartDock, path: str | Path) -> bool:
     try:
         atomic_write(path, ladder3_text(table_of(dock.record)))
     except OSError as error:
-        dock._say(translate("TimeChart", "Cannot write {0}: {1}").format(
+        dock.say(translate("TimeChart", "Cannot write {0}: {1}").format(
                   path, os_error_text(error)), error=True)
         return False
-    dock._say(translate("TimeChart", "Saved {0}").format(path))
+    dock.say(translate("TimeChart", "Saved {0}").format(path))
     return True
 
 
@@ -75,37 +94,27 @@ def import_trace(dock: TimeChartDock, path: str | Path) -> bool:
         table = read_trace(Path(path).read_text(encoding="utf-8", errors="replace"), period)
         signals = [parse_traced(label) for label in table.labels]
     except OSError as error:
-        dock._say(translate("TimeChart", "Cannot read {0}: {1}").format(
+        dock.say(translate("TimeChart", "Cannot read {0}: {1}").format(
                   path, os_error_text(error)), error=True)
         return False
     except (TraceFileError, AddressError) as error:
         line = getattr(error, "line", 1)
-        dock._say(translate("TraceFiles", "{0}, line {1}: not a trace file").format(path, line),
+        dock.say(translate("TraceFiles", "{0}, line {1}: not a trace file").format(path, line),
                   error=True)
         return False
     record = TraceRecord(signals)
     record.period_ms = period
     record.extend(TraceSample(index, time_ms, tuple(column[index] for column in table.columns))
                   for index, time_ms in enumerate(table.times))
-    show_record(dock, record)
-    dock._say(translate("TraceFiles", "Imported {0}: {1} samples").format(path, len(record)))
+    dock.show_record(record)
+    dock.say(translate("TraceFiles", "Imported {0}: {1} samples").format(path, len(record)))
     return True
-
-
-def show_record(dock: TimeChartDock, record: TraceRecord) -> None:
-    """Show a finished record (an imported file, a scenario's run) instead of live samples."""
-    if dock.sampling:
-        dock.stop()
-    dock.record = record
-    dock.signals_edit.setText(" ".join(s.label for s in record.signals))
-    dock._make_lanes()
-    dock.fit()
 
 
 def export_dialog(dock: TimeChartDock) -> None:
     """Ask for a file and export the LADDER-III trace result."""
     path = file_dialogs.save_file_name(
-        dock, translate("TraceFiles", "Export as LADDER-III trace result"), "trace.csv",
+        dock.toolbar, translate("TraceFiles", "Export as LADDER-III trace result"), "trace.csv",
         translate("TimeChart", "CSV files (*.csv)"))
     if path:
         export_ladder3(dock, path)
@@ -114,7 +123,7 @@ def export_dialog(dock: TimeChartDock) -> None:
 def import_dialog(dock: TimeChartDock) -> None:
     """Ask for a trace file and show it."""
     path = file_dialogs.open_file_name(
-        dock, translate("TraceFiles", "Import a trace"), "",
+        dock.toolbar, translate("TraceFiles", "Import a trace"), "",
         translate("TimeChart", "CSV files (*.csv)"))
     if path:
         import_trace(dock, path)

@@ -8,8 +8,9 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from ladderworks.core.address import Address
+from ladderworks.core.dialects import typed_target
 from ladderworks.core.plc.trace import TraceSample
-from ladderworks.core.symbols import SymbolTable, parse_target
+from ladderworks.core.symbols import SymbolTable
 
 
 @dataclass(frozen=True, slots=True)
@@ -40,7 +41,7 @@ def parse_traced(text: str, symbols: SymbolTable | None = None,
                  dialect: str | None = None) -> TracedSignal:
     """`R1.4`, `R100`, `D10:2` (a 2-byte value), `D20:4`, or a program symbol (`ESKIP`); in a
     Delta program Delta's devices (`X10`, `D0`); raises AddressError (see `parse_target`)."""
-    target = parse_target(text, symbols.address_of if symbols is not None else None, dialect)
+    target = typed_target(text, symbols.address_of if symbols is not None else None, dialect)
     return TracedSignal(target.address, target.width)
 
 

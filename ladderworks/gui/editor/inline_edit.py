@@ -2,32 +2,29 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from PySide6.QtCore import QCoreApplication, QEvent, QObject, QRectF, Qt
 from PySide6.QtGui import QKeyEvent, QUndoCommand
 from PySide6.QtWidgets import QLabel, QLineEdit
 
 from ladderworks.core import ladder as core
-from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP, Diagnostic
-from ladderworks.core.ladder import Coil, Contact, EditRefused, LadderNetwork
+from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.ladder import Coil, Contact, EditRefused
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.geometry import CELL_W, COMMENT_H, LEFT, cell_origin
-from ladderworks.gui.editor.step_name import editor_step
-
-if TYPE_CHECKING:
-    from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.editor.grid_view import GridView
+from ladderworks.gui.editor.ladder_edits import LadderEdits
 
 translate = QCoreApplication.translate
 
 
 class InlineEdit(QObject):
-    """A line edit over the grid; ENTER commits through the editor's undo commands, ESC
-    cancels, a refused address is shown under it and the edit stays open."""
+    """A line edit over the grid; ENTER commits through the editing operations (an undo
+    step), ESC cancels, a refused address is shown under it and the edit stays open."""
 
-    def __init__(self, editor: LadderEditor) -> None:
+    def __init__(self, editor: GridView, edits: LadderEdits) -> None:
         super().__init__(editor)
         self.editor = editor
+        self.edits = edits
         self.line_edit = QLineEdit(editor.viewport())
         self.line_edit.setObjectName("inline_editor")
         self.line_edit.hide()
@@ -149,16 +146,8 @@ class InlineEdit(QObject):
         assert found is not None
         element = found[1]
         assert isinstance(element, Contact | Coil)
-        new_comment = comment != element.comment
-
-        def address_and_comment(network: LadderNetwork) -> None:
-            core.set_address(network, row, col, address_text)
-            if new_comment:
-                core.set_comment(network, row, col, comment)
-
-        editor.run_edit(index, address_and_comment,  # one step: the address and its comment
-                        editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"),
-                                    address_text))
+        self.edits.set_address(index, row, col, address_text,
+                               comment if comment != element.comment else None)
         self.close()
 
     def _commit_comment(self, index: int, line: int, text: str) -> None:
@@ -174,8 +163,7 @@ class InlineEdit(QObject):
             self.close()
             return
         self.close()
-        self.editor.run_edit(index, lambda n: core.set_network_comments(n, lines),
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Comment")))
+        self.edits.set_comments(index, lines)
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """ENTER in the line edit commits it, ESC cancels it."""

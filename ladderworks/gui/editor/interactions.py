@@ -5,36 +5,39 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, ClassVar
+from typing import ClassVar
 
 from PySide6.QtCore import QCoreApplication, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QIcon, QMouseEvent, QPen
 from PySide6.QtWidgets import QGraphicsRectItem
 
-from ladderworks.core import ladder as core
 from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
 from ladderworks.core.instructions import Write
-from ladderworks.core.ladder import Coil, Contact
+from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.gui.editor.geometry import Hit, node_point
-from ladderworks.gui.editor.step_name import editor_step
+from ladderworks.gui.editor.grid_view import GridView
+from ladderworks.gui.editor.inline_edit import InlineEdit
+from ladderworks.gui.editor.ladder_edits import LadderEdits
 from ladderworks.gui.tools import Tool, icon
-
-if TYPE_CHECKING:
-    from ladderworks.gui.editor.view import LadderEditor
 
 translate = QCoreApplication.translate
 
 
 class Interaction:
-    """A tool of the palette; by default a left click (or SPACE at the cursor) applies it."""
+    """A tool of the palette; by default a left click (or SPACE at the cursor) applies it.
+
+    It works on the grid (`editor`) through the editing operations (`edits`) and the in-place
+    editor (`inline`)."""
 
     tool: ClassVar[Tool]
     icon_name: ClassVar[str]
     key: ClassVar[str]  # the letter that picks the tool in the grid
     cursor: ClassVar[Qt.CursorShape] = Qt.CursorShape.CrossCursor
 
-    def __init__(self, editor: LadderEditor) -> None:
+    def __init__(self, editor: GridView, edits: LadderEdits, inline: InlineEdit) -> None:
         self.editor = editor
+        self.edits = edits
+        self.inline = inline
 
     title: ClassVar[str]  # marked for translation in the "Tool" context
     hint: ClassVar[str]
@@ -65,6 +68,19 @@ class Interaction:
         """Another tool takes over: take away what this one put on the scene."""
         self.cancel()
 
+    def edit_at_cursor(self) -> None:
+        """ENTER (Edit › Edit element): edit the element at the cursor, its address or its
+        function table."""
+        index, row, col = self.editor.cursor_cell
+        found = self.editor.networks[index].element_at(row, col)
+        if found is None:
+            return
+        (r, c), element = found
+        if isinstance(element, Contact | Coil):
+            self.inline.open_address(index, r, c)
+        elif isinstance(element, FunctionBox):
+            self.edits.open_function_dialog(index, r, c, element.name, element)
+
     def mouse_press(self, event: QMouseEvent, hit: Hit) -> bool:
         """A left click on the grid (the cursor is already there); True when handled."""
         self.apply(hit)
@@ -91,8 +107,8 @@ class SelectInteraction(Interaction):
     key = "S"
     cursor = Qt.CursorShape.ArrowCursor
 
-    def __init__(self, editor: LadderEditor) -> None:
-        super().__init__(editor)
+    def __init__(self, editor: GridView, edits: LadderEdits, inline: InlineEdit) -> None:
+        super().__init__(editor, edits, inline)
         self._drag_origin: tuple[int, int, int] | None = None  # where a drag began
     title = QT_TRANSLATE_NOOP("Tool", "Select")
     hint = QT_TRANSLATE_NOOP(
@@ -101,7 +117,7 @@ class SelectInteraction(Interaction):
     def apply(self, hit: Hit) -> None:
         """Select the element at the cell (or edit the comment line clicked)."""
         if hit.comment_line is not None:
-            self.editor.open_comment_editor(hit.network, hit.comment_line)
+            self.inline.open_comment(hit.network, hit.comment_line)
         else:
             self.editor.select_element(hit.network, hit.row, hit.col)
 
@@ -128,8 +144,9 @@ class SelectInteraction(Interaction):
     def mouse_double_click(self, event: QMouseEvent, hit: Hit) -> bool:
         """Edit the element (address, function table or comment)."""
         self.editor.cursor_cell = (hit.network, hit.row, hit.col)
-        self.editor.edit_at_cursor()
+        self.edit_at_cursor()
         return True
+
 
     def cancel(self) -> None:
         """No drag goes on."""
@@ -145,7 +162,7 @@ class _PlaceBit(Interaction):
 
     def apply(self, hit: Hit) -> None:
         """Place (or change) the element and type its address."""
-        self.editor.place_bit(hit.network, hit.row, hit.col, self.element())
+        self.edits.place_bit(hit.network, hit.row, hit.col, self.element())
 
 
 class InputInteraction(_PlaceBit):
@@ -246,9 +263,7 @@ class InvertInteraction(Interaction):
 
     def apply(self, hit: Hit) -> None:
         """Invert the element at the cell."""
-        row, col = hit.row, hit.col
-        self.editor.run_edit(hit.network, lambda n: core.invert(n, row, col),
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "NOT")))
+        self.edits.invert(hit.network, hit.row, hit.col)
 
 
 class OrInteraction(Interaction):
@@ -262,7 +277,7 @@ class OrInteraction(Interaction):
 
     def apply(self, hit: Hit) -> None:
         """Add a parallel element below the one at the cell."""
-        self.editor.add_parallel(hit.network, hit.row, hit.col)
+        self.edits.add_parallel(hit.network, hit.row, hit.col)
 
 
 class LineInteraction(Interaction):
@@ -275,8 +290,8 @@ class LineInteraction(Interaction):
     hint = QT_TRANSLATE_NOOP(
         "Tool", "Click a first point, then a second point: a horizontal or vertical wire")
 
-    def __init__(self, editor: LadderEditor) -> None:
-        super().__init__(editor)
+    def __init__(self, editor: GridView, edits: LadderEdits, inline: InlineEdit) -> None:
+        super().__init__(editor, edits, inline)
         self.start: tuple[int, int, int] | None = None  # network, row, node
         self.marker = QGraphicsRectItem()
         self.marker.setPen(QPen(QColor("#2e7d32"), 2))
@@ -301,8 +316,7 @@ class LineInteraction(Interaction):
         self.cancel()
         if (row1, node1) == (row, node):
             return
-        self.editor.run_edit(index, lambda n: core.draw_line(n, (row1, node1), (row, node)),
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Line")))
+        self.edits.draw_line(index, (row1, node1), (row, node))
 
     def cancel(self) -> None:
         """Forget the first point."""
@@ -328,14 +342,23 @@ class CommentInteraction(Interaction):
         """Edit the comment line clicked, or add one (from an empty row)."""
         editor = self.editor
         if hit.comment_line is not None:
-            editor.open_comment_editor(hit.network, hit.comment_line)
+            self.inline.open_comment(hit.network, hit.comment_line)
             return
         net = editor.networks[hit.network]
         if net.row_is_empty(hit.row) or hit.row >= net.rows:
-            editor.open_comment_editor(hit.network, len(net.comments))
+            self.inline.open_comment(hit.network, len(net.comments))
         else:
             editor.message.emit(
                 translate("LadderEditor", "The comment tool works on an empty row only"))
+
+    def edit_at_cursor(self) -> None:
+        """ENTER on an empty cell adds a comment line; on an element, edits it."""
+        index, row, col = self.editor.cursor_cell
+        net = self.editor.networks[index]
+        if net.element_at(row, col) is None:
+            self.inline.open_comment(index, len(net.comments))
+        else:
+            super().edit_at_cursor()
 
 
 class DeleteInteraction(Interaction):
@@ -350,9 +373,7 @@ class DeleteInteraction(Interaction):
 
     def apply(self, hit: Hit) -> None:
         """Delete the element at the cell."""
-        row, col = hit.row, hit.col
-        self.editor.run_edit(hit.network, lambda n: core.delete(n, row, col),
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete")))
+        self.edits.delete(hit.network, hit.row, hit.col)
 
 
 class FunctionInteraction(Interaction):
@@ -367,8 +388,7 @@ class FunctionInteraction(Interaction):
 
     def apply(self, hit: Hit) -> None:
         """Open the function table; OK places the box."""
-        self.editor.open_function_dialog(hit.network, hit.row, hit.col,
-                                         self.editor.function_name)
+        self.edits.open_function_dialog(hit.network, hit.row, hit.col, self.edits.function_name)
 
 
 class RowBeforeInteraction(Interaction):
@@ -384,9 +404,7 @@ class RowBeforeInteraction(Interaction):
 
     def apply(self, hit: Hit) -> None:
         """Insert the row."""
-        row, after = hit.row, self.after
-        self.editor.run_edit(hit.network, lambda n: core.insert_row(n, row, after=after),
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Insert row")))
+        self.edits.insert_row(hit.network, hit.row, after=self.after)
 
 
 class RowAfterInteraction(RowBeforeInteraction):

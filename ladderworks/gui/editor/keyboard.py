@@ -3,15 +3,11 @@ menu key."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from PySide6.QtCore import QPoint, Qt
 from PySide6.QtGui import QContextMenuEvent, QKeyEvent
 
 from ladderworks.gui.editor.geometry import SPARE_ROWS, cell_h, grid_top
-
-if TYPE_CHECKING:
-    from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.editor.grid_view import GridView
 
 Cursor = tuple[int, int, int]  # network, row, column
 ARROWS: dict[int, tuple[int, int]] = {
@@ -23,7 +19,7 @@ MODIFIER_KEYS = (Qt.Key.Key_Shift, Qt.Key.Key_Control, Qt.Key.Key_Alt, Qt.Key.Ke
 class GridKeys:
     """Maps a key press in the ladder grid to a cursor move or a command; True if handled."""
 
-    def __init__(self, editor: LadderEditor) -> None:
+    def __init__(self, editor: GridView) -> None:
         self._editor = editor
         self.anchor: Cursor | None = None  # where a Shift+arrows selection started
 

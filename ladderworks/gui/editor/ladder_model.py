@@ -49,6 +49,7 @@ class LadderModel(QObject):
         self.symbols: SymbolTable | None = None  # the program's `%@2` symbols
         self.networks: list[LadderNetwork] = [LadderNetwork()]
         self.loader = ProgressiveLoader(self)
+        self.loader.laid_out.connect(self._laid_out)
         # each network as laid out with the one it was read as: an unchanged network is
         # saved, checked and compiled as read, not decomposed from its grid again
         self.kept: Kept | None = None
@@ -108,6 +109,11 @@ class LadderModel(QObject):
         at = len(self.networks) - 1
         self.networks[at:at] = networks
         self.networks_inserted.emit(at, len(networks))
+
+    def _laid_out(self, networks: list[LadderNetwork], trailer: list[str] | None) -> None:
+        self.append_networks(networks)
+        if trailer is not None:  # the last networks of the program
+            self.document.trailer = trailer
 
     def ladder_document(self) -> LadderDocument:
         """The document with the drawn networks (the blank network at the end left out)."""

@@ -3,27 +3,24 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
-from PySide6.QtCore import QObject, QTimer
+from PySide6.QtCore import QObject, QTimer, Signal
 
 from ladderworks.core.collector import freeze_alive
 from ladderworks.core.il import Network, Program
 from ladderworks.core.ladder import LadderDocument, convert
-
-if TYPE_CHECKING:
-    from ladderworks.gui.editor.ladder_model import LadderModel
 
 AT_ONCE = 300  # a program with more networks than this lays the rest out in the background
 CHUNK = 400  # networks laid out per step in the background
 
 
 class ProgressiveLoader(QObject):
-    """Lays out a program's networks into the model: the head now, the rest step by step."""
+    """Lays out a program's networks: the head now, the rest step by step, each step's
+    networks announced by `laid_out` (the model appends them)."""
 
-    def __init__(self, model: LadderModel) -> None:
-        super().__init__(model)
-        self.model = model
+    laid_out = Signal(list, object)  # the networks laid out; the trailer with the last, else None
+
+    def __init__(self, parent: QObject | None = None) -> None:
+        super().__init__(parent)
         self.pending: list[Network] = []
         self.trailer: list[str] = []
         self.kept: convert.Kept | None = None  # receives each network as first laid out
@@ -73,9 +70,8 @@ class ProgressiveLoader(QObject):
         last = not self.pending
         part = convert.program_to_ladder(
             Program(networks=chunk, trailer=self.trailer if last else []), self.kept)
-        self.model.append_networks(part.networks)
+        self.laid_out.emit(part.networks, part.trailer if last else None)
         if last:
-            self.model.document.trailer = part.trailer
             self.trailer = []
             freeze_alive()  # a large program laid out: collections no longer walk it
         else:

@@ -1,443 +1,72 @@
-"""The grid editor view: draws the model's networks on a QGraphicsScene and forwards the
-mouse to the current tool's interaction."""
+"""The console's ladder editor: the grid (`GridView`) with the tools, the keys and in-place
+editing; the mouse goes to the current tool's interaction, edits to `LadderEdits`."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QPoint, QPointF, QRectF, Qt, Signal
-from PySide6.QtGui import (
-    QAction,
-    QBrush,
-    QColor,
-    QContextMenuEvent,
-    QKeyEvent,
-    QMouseEvent,
-    QPainter,
-    QPaintEvent,
-    QPen,
-    QUndoStack,
-)
-from PySide6.QtWidgets import QGraphicsRectItem, QGraphicsScene, QGraphicsView, QMenu, QWidget
+from PySide6.QtCore import QPoint, Qt, Signal
+from PySide6.QtGui import QAction, QContextMenuEvent, QKeyEvent, QMouseEvent
+from PySide6.QtWidgets import QMenu, QWidget
 
-from ladderworks.core.address import Address, AddressError
-from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects import parse_bit
-from ladderworks.core.dialects.spelling import spelling
-from ladderworks.core.il import Program
-from ladderworks.core.instructions import FUNCTIONS
-from ladderworks.core.ladder import LadderNetwork, Selection
-from ladderworks.core.symbols import resolve
-from ladderworks.gui.editor.centre import centre_on
-from ladderworks.gui.editor.editing import CursorEdits
-from ladderworks.gui.editor.geometry import (
-    CELL_W,
-    COMMENT_H,
-    LEFT,
-    SPARE_ROWS,
-    Hit,
-    Layout,
-    NameDisplay,
-    cell_centre,
-    cell_h,
-    cell_origin,
-    name_display,
-    node_point,
-)
+from ladderworks.gui.editor.geometry import SPARE_ROWS, Hit, NameDisplay, name_display
+from ladderworks.gui.editor.grid_view import GridView
 from ladderworks.gui.editor.inline_edit import InlineEdit
 from ladderworks.gui.editor.interactions import BY_KEY, BY_TOOL, Interaction, SelectInteraction
 from ladderworks.gui.editor.keyboard import GridKeys
-from ladderworks.gui.editor.label_text import CommentedAddresses, shows_comment
-from ladderworks.gui.editor.labelled_item import LabelledNetworkItem
+from ladderworks.gui.editor.ladder_edits import LadderEdits
 from ladderworks.gui.editor.ladder_model import LadderModel
-from ladderworks.gui.editor.lazy_items import LazyItems
-from ladderworks.gui.editor.network_item import NetworkItem
-from ladderworks.gui.function_dialog import FunctionDialog
 from ladderworks.gui.retranslate import Retranslating
-from ladderworks.gui.symbol_text import cell_status, element_tooltip, name_and_text
 from ladderworks.gui.tools import Tool
 
-ZOOM_STEP = 1.2
-ZOOM_MIN = 0.3
-ZOOM_MAX = 3.0
 
-
-translate = QCoreApplication.translate
-
-
-class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
-    """The ladder console's drawing area over a `LadderModel`; every edit is an undo command
-    on the model, and the view redraws what the model announces."""
+class LadderEditor(Retranslating, GridView):
+    """The ladder console's drawing area over a `LadderModel`: every edit is an undo command
+    made by its `edits` (`LadderEdits`), and the grid redraws what the model announces."""
 
     tool_requested = Signal(object)  # Tool picked with a letter key
-    hover_changed = Signal(str)
-    cursor_placed = Signal()  # the cursor's frame was put on its cell (moved, or a relayout)
-    message = Signal(str)
-    zoom_changed = Signal(float)  # the new zoom factor (the status bar shows it)
-    drawing_changed = Signal()
-    relaid_out = Signal()  # every network's rows were worked out again (View › Element names)
 
     def __init__(self, model: LadderModel, parent: QWidget | None = None) -> None:
-        super().__init__(parent)
-        self.setObjectName("ladder_view")
-        self.model = model
-        self._scene = QGraphicsScene(self)
-        self._scene.setBackgroundBrush(QBrush(QColor("#ffffff")))
-        self.setScene(self._scene)
-        self.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)
-        self.setRenderHint(QPainter.RenderHint.Antialiasing, True)
-        self.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.MinimalViewportUpdate)
-        self.setMouseTracking(True)
-        self.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
-        self.network_items = LazyItems(self._make_item)  # made when shown (a real program: 10,000+)
-        self.comments = CommentedAddresses(self.describe_address)  # asked once per address
-        self.layout_ = Layout(self.commented)
-        self.function_name = FUNCTIONS[0].name  # the palette's first
-        self.cursor_cell: tuple[int, int, int] = (0, 0, 0)  # network, row, col
-        self.selection: tuple[int, Selection] | None = None
-        self.function_dialog: FunctionDialog | None = None
+        super().__init__(model, parent)
         self.context_actions: list[QAction | None] = []
-        self._zoom = 1.0
-        self._cursor_item = QGraphicsRectItem()
-        self._cursor_item.setPen(QPen(QColor("#1565c0"), 2))
-        self._cursor_item.setZValue(10)
-        self._selection_item = QGraphicsRectItem()
-        self._selection_item.setPen(QPen(QColor("#f57c00"), 2, Qt.PenStyle.DashLine))
-        self._selection_item.setBrush(QBrush(QColor(255, 152, 0, 40)))
-        self._selection_item.setZValue(9)
-        for item in (self._cursor_item, self._selection_item):
-            self._scene.addItem(item)
-        self._selection_item.hide()
-        self.interaction: Interaction = SelectInteraction(self)
-        self.inline = InlineEdit(self)
+        self.edits = LadderEdits(self, self.open_address_editor)
+        self.inline = InlineEdit(self, self.edits)
         self.inline_editor = self.inline.line_edit
         self.inline_message = self.inline.message
-        model.document_reset.connect(self._on_reset)
-        model.networks_inserted.connect(self._on_inserted)
-        model.network_removed.connect(self._on_removed)
-        model.network_changed.connect(self._on_changed)
-        model.networks_changed.connect(self._on_many_changed)
-        model.diagnostics_found.connect(self.mark_diagnostics)
-        self._on_reset()
+        self.interaction: Interaction = SelectInteraction(self, self.edits, self.inline)
         self.keys = GridKeys(self)  # Home/End, PageUp/PageDown, the menu key
+        model.document_reset.connect(self._end_in_place)
+        self.zoom_changed.connect(self.inline.close)
 
-    # -- the model, as the window and the tests ask for it ------------------------------------
-
-    @property
-    def networks(self) -> list[LadderNetwork]:
-        """The model's networks (the last is the blank one to draw in)."""
-        return self.model.networks
-
-    @property
-    def undo_stack(self) -> QUndoStack:
-        """The model's undo stack."""
-        return self.model.undo_stack
-
-    @property
-    def loading(self) -> bool:
-        """True while a large program's networks are still being laid out."""
-        return self.model.loading
-
-    def finish_loading(self) -> None:
-        """Lay out every network still pending now."""
-        self.model.finish_loading()
-
-    def program(self) -> tuple[Program | None, list[Diagnostic]]:
-        """The program drawn (None when a network cannot be coded) and the diagnostics."""
-        return self.model.program()
-
-    def is_empty(self) -> bool:
-        """True when nothing is drawn."""
-        return self.model.is_empty()
+    def _end_in_place(self) -> None:
+        """Another program: no address typed, no half-done tool use."""
+        self.inline.close()
+        self.interaction.cancel()
 
     @property
     def tool(self) -> Tool:
         """The current tool."""
         return self.interaction.tool
 
-    # -- following the model ------------------------------------------------------------------
-
-    def _on_reset(self) -> None:
-        self.inline.close()
-        for _index, item in self.network_items.made():
-            self._scene.removeItem(item)
-        self.network_items.reset(len(self.networks))
-        self.comments.forget()  # another program: other symbols
-        self.layout_ = Layout(self.commented)
-        self.layout_.rebuild(self.networks)
-        self.selection = None
-        self.interaction.cancel()
-        self.cursor_cell = (0, 0, 0)
-        self._update_scene_rect()
-        self._place_overlays()
-
-    def _on_inserted(self, first: int, count: int) -> None:
-        for _network in range(count):
-            self.network_items.insert(first)
-        self._relayout(first)
-        self._renumber(max(first - 1, 0))
-
-    def _on_removed(self, index: int) -> None:
-        item = self.network_items.pop(index)
-        if item is not None:
-            self._scene.removeItem(item)
-        if self.cursor_cell[0] >= len(self.networks):
-            self.cursor_cell = (len(self.networks) - 1, 0, 0)
-        self._relayout(min(index, len(self.networks) - 1))
-        self._renumber(max(index - 1, 0))
-
-    def _on_changed(self, index: int) -> None:
-        self._on_many_changed([index])
-
-    def _on_many_changed(self, indices: list[int]) -> None:
-        if not indices:
-            return
-        changed = set(indices)
-        for index in changed:
-            self.layout_.forget(self.networks[index])  # its rows may change (a comment typed)
-        for index, item in self.network_items.made(min(changed)):
-            if index in changed:
-                item.error_cells = set()
-                item.refresh()
-        self._relayout(min(changed))
-        self._renumber(min(changed))
-        self.drawing_changed.emit()
-
-    def _make_item(self, index: int) -> NetworkItem:
-        item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
-        item.spelling = spelling(self.model.dialect)  # a Delta program: Delta's spelling
-        item.is_new = index == len(self.networks) - 1 and self.networks[index].is_empty()
-        item.setPos(0, self.layout_.tops[index])
-        self._scene.addItem(item)
-        return item
-
-    def make_visible_items(self) -> None:
-        """Make the items of the networks in (and just around) the viewport."""
-        if not self.networks or not self.layout_.tops:
-            return
-        shown = self.mapToScene(self.viewport().rect()).boundingRect()
-        for index in self.layout_.shown(shown.top() - cell_h(), shown.bottom() + cell_h()):
-            if index < len(self.networks):
-                self.network_items[index]
-
-    def paintEvent(self, event: QPaintEvent) -> None:
-        """Make the visible networks' items, then paint."""
-        self.make_visible_items()
-        super().paintEvent(event)
-
-    def describe_address(self, address: object) -> tuple[str, str] | None:
-        """(symbol, comment) of the program, else (signal name, description) of the manual
-        (a Delta program's addresses are no FANUC signals: none)."""
-        if spelling(self.model.dialect).dialect:
-            return None
-        return name_and_text(address, self.model.symbols)
-
-    def commented(self, network: LadderNetwork) -> bool:
-        """True when an element of `network` has a comment to show (its rows are taller)."""
-        return shows_comment(network, self.comments)
-
-    def resolve_address(self, text: str) -> str:
-        """The address a typed text names: itself, or the address of a program symbol (a Delta
-        program's device, `X17`: its address, `X1.7`)."""
-        try:
-            if spelling(self.model.dialect).dialect:
-                return str(parse_bit(text, self.model.dialect))
-            return str(resolve(text, self.model.symbols))
-        except AddressError:
-            return text
-
-    def typed_address_problem(self, text: str) -> Diagnostic | None:
-        """Why a bit typed in a Delta program is none of its devices (`X8`); None if it is one
-        (or the program is the PMC's: its own checks say why)."""
-        if not spelling(self.model.dialect).dialect:
-            return None
-        try:
-            parse_bit(text, self.model.dialect)
-        except AddressError as error:
-            return error.diagnostic
-        return None
-
-    def spell_address(self, address: Address) -> str:
-        """An address as the program writes it (`X17` in a Delta program)."""
-        return spelling(self.model.dialect).address(address)
-
-    def _renumber(self, start: int) -> None:
-        last = len(self.network_items) - 1
-        for index, item in self.network_items.made(start):
-            item.number = index + 1
-            item.is_new = index == last and self.networks[index].is_empty()
-            item.update()
-
-    def _relayout(self, start: int) -> None:
-        self.layout_.rebuild(self.networks, start)
-        for index, item in self.network_items.made(start):
-            item.setPos(0, self.layout_.tops[index])
-        self._update_scene_rect()
-        self._place_overlays()
-
-    def _update_scene_rect(self) -> None:
-        widest = max(800, *(LEFT + (n.columns + 1) * CELL_W + 8 for n in self.networks))
-        self._scene.setSceneRect(QRectF(-4, -4, widest + 8, self.layout_.total_height() + 40))
-
-    def relayout(self) -> None:
-        """The rows changed height (View › Element names, the language): lay every network
-        out again."""
-        self.comments.forget()
-        self.layout_.forget()
-        for _index, item in self.network_items.made():
-            item.refresh()
-        self._relayout(0)
-        self.viewport().update()
-        self.relaid_out.emit()
-
-    def mark_diagnostics(self, diagnostics: list[Diagnostic]) -> None:
-        """Outline the cells the diagnostics point at."""
-        for _index, item in self.network_items.made():
-            if item.error_cells:
-                item.error_cells = set()
-                item.update()
-        for diagnostic in diagnostics:
-            if (
-                diagnostic.network is not None
-                and diagnostic.cell is not None
-                and 0 <= diagnostic.network < len(self.network_items)
-            ):
-                item = self.network_items[diagnostic.network]
-                item.error_cells.add(diagnostic.cell)
-                item.update()
-
-    # -- tools and in-place editing -----------------------------------------------------------
-
     def set_tool(self, tool: Tool) -> None:
         """Make `tool` current: its interaction gets the mouse from now on."""
         self.interaction.end()
-        self.interaction = BY_TOOL[tool](self)
+        self.interaction = BY_TOOL[tool](self, self.edits, self.inline)
         self.viewport().setCursor(self.interaction.cursor)
 
     def set_function(self, name: str) -> None:
         """The functional instruction the function tool places."""
-        self.function_name = name
+        self.edits.function_name = name
 
     def open_address_editor(self, index: int, row: int, col: int, placed: bool = False) -> None:
         """Edit the address (and `// comment`) of the contact or coil at a cell; `placed`: the
         element was just placed (ESC takes it away again)."""
         self.inline.open_address(index, row, col, placed)
 
-    def open_comment_editor(self, index: int, line: int) -> None:
-        """Edit (or add) network comment line `line` (the comment tool)."""
-        self.inline.open_comment(index, line)
-
-    # -- cursor, overlays, positions ----------------------------------------------------------
-
-    def cell_rect(self, index: int, row: int, col: int) -> QRectF:
-        """A cell's rectangle in scene coordinates."""
-        rows = self.layout_.rows[index]
-        x, y = cell_origin(self.networks[index], row, col, rows)
-        return QRectF(x, self.layout_.tops[index] + y, CELL_W, rows.height)
-
-    def cell_point(self, index: int, row: int, col: int) -> QPoint:
-        """Viewport point at a cell's centre (scrolled into view first)."""
-        x, y = cell_centre(self.networks[index], row, col, self.layout_.rows[index])
-        scene = QPointF(x, self.layout_.tops[index] + y)
-        self.ensureVisible(QRectF(scene.x() - 60, scene.y() - 60, 120, 120), 10, 10)
-        return self.mapFromScene(scene)
-
-    def node_point(self, index: int, row: int, node: int) -> QPoint:
-        """Viewport point at a grid node (left edge of column `node`, middle of `row`)."""
-        x, y = node_point(self.networks[index], row, node, self.layout_.rows[index])
-        scene = QPointF(x, self.layout_.tops[index] + y)
-        self.ensureVisible(QRectF(scene.x() - 60, scene.y() - 60, 120, 120), 10, 10)
-        return self.mapFromScene(scene)
-
-    def comment_point(self, index: int, line: int) -> QPoint:
-        """Viewport point on network comment line `line`."""
-        scene = QPointF(LEFT + 40, self.layout_.tops[index] + line * COMMENT_H + COMMENT_H / 2)
-        self.ensureVisible(QRectF(scene.x() - 40, scene.y() - 40, 80, 80), 10, 10)
-        return self.mapFromScene(scene)
-
-    def move_cursor(self, index: int, row: int, col: int) -> None:
-        """Put the cursor on a cell."""
-        net = self.networks[index]
-        row = min(max(row, 0), net.rows - 1 + SPARE_ROWS)
-        col = min(max(col, 0), net.columns)
-        self.cursor_cell = (index, row, col)
-        self._place_overlays()
-        self.ensureVisible(self.cell_rect(index, row, col), 20, 20)
-        self.hover_changed.emit(self.describe_cell(index, row, col))
-
-    def _place_overlays(self) -> None:
-        if not self.networks:
-            return
-        index, row, col = self.cursor_cell
-        index = min(index, len(self.networks) - 1)
-        self._cursor_item.setRect(self.cell_rect(index, row, col).adjusted(1, 1, -1, -1))
-        if self.selection is not None and self.selection[0] < len(self.networks):
-            sel_index, sel = self.selection
-            rect = self.cell_rect(sel_index, sel.top, sel.left).united(
-                self.cell_rect(sel_index, sel.bottom, sel.right)
-            )
-            self._selection_item.setRect(rect)
-            self._selection_item.show()
-        else:
-            self._selection_item.hide()
-        self.cursor_placed.emit()
-
-    def jump_to(self, index: int, row: int, col: int) -> None:
-        """The cursor on a cell found elsewhere (Find, cross reference, error list), that cell
-        brought to the middle of the view (not to its bottom edge)."""
-        self.move_cursor(index, row, col)
-        centre_on(self, self.cell_rect(*self.cursor_cell))
-
-    def go_to(self, diagnostic: Diagnostic) -> None:
-        """Jump to a diagnostic's network and cell."""
-        if diagnostic.network is not None and diagnostic.network >= len(self.networks) - 1:
-            self.finish_loading()
-        if diagnostic.network is None or not 0 <= diagnostic.network < len(self.networks):
-            return
-        row, col = diagnostic.cell if diagnostic.cell is not None else (0, 0)
-        self.jump_to(diagnostic.network, row, col)
-        self.setFocus()
-
-    def tooltip_at(self, index: int, row: int, col: int) -> str:
-        """Tooltip of a cell's contact or coil: address, symbol, its comments; else ""."""
-        return element_tooltip(self.networks[index], row, col, self.model.symbols)
-
-    def describe_cell(self, index: int, row: int, col: int) -> str:
-        """Status-bar text: the cell, and the address with its signal name and comment."""
-        return cell_status(self.networks[index], index, row, col, self.model.symbols)
-
-    # -- zoom ---------------------------------------------------------------------------------
-
-    def zoom_in(self) -> None:
-        """Zoom in one step."""
-        self._set_zoom(self._zoom * ZOOM_STEP)
-
-    def zoom_out(self) -> None:
-        """Zoom out one step."""
-        self._set_zoom(self._zoom / ZOOM_STEP)
-
-    def zoom_reset(self) -> None:
-        """Back to 100 %."""
-        self._set_zoom(1.0)
-
-    def zoom(self) -> float:
-        """The current zoom factor."""
-        return self._zoom
-
-    def set_zoom(self, factor: float) -> None:
-        """Zoom to `factor` (clamped to the zoom range)."""
-        self._set_zoom(factor)
-
-    def _set_zoom(self, factor: float) -> None:
-        self._zoom = min(max(factor, ZOOM_MIN), ZOOM_MAX)
-        self.resetTransform()
-        self.scale(self._zoom, self._zoom)
-        self.inline.close()
-        self.zoom_changed.emit(self._zoom)
+    def edit_at_cursor(self) -> None:
+        """ENTER: edit the element at the cursor (address, function table; a comment line with
+        the comment tool)."""
+        self.interaction.edit_at_cursor()
 
     # -- events -------------------------------------------------------------------------------
-
-    def _hit(self, pos: QPoint) -> Hit:
-        scene = self.mapToScene(pos)
-        return self.layout_.hit(self.networks, scene.x(), scene.y())
 
     def mousePressEvent(self, event: QMouseEvent) -> None:
         """Click: move the cursor there and hand the click to the current tool."""
@@ -456,7 +85,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
                 min(self.cursor_cell[1], net.rows - 1 + SPARE_ROWS),
                 min(self.cursor_cell[2], net.columns),
             )
-            self._place_overlays()
+            self.place_overlays()
             event.accept()
             return
         if event.button() == Qt.MouseButton.RightButton:
@@ -522,12 +151,12 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
             self.interaction.apply(Hit(index, row, col, node))
             return
         if key in (Qt.Key.Key_Delete, Qt.Key.Key_Backspace):
-            self.delete_at_cursor()
+            self.edits.delete_at_cursor()
             return
         if key == Qt.Key.Key_Escape:
             self.interaction.cancel()
             self.selection = None
-            self._place_overlays()
+            self.place_overlays()
             self.tool_requested.emit(Tool.SELECT)
             return
         text = event.text().upper()
@@ -544,6 +173,7 @@ class LadderEditor(Retranslating, CursorEdits, QGraphicsView):
         if name_display() is NameDisplay.COMMENT:
             self.relayout()
         self.viewport().update()
+
 
 
 __all__ = ["LadderEditor"]

@@ -9,7 +9,11 @@ import pytest
 from ladderworks.core.address import AddressError, parse_address_cached, parse_plain_addresses
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il import parse
-from ladderworks.core.il.parser import _Line, _Made, _percent_lines, _scan_common, _scan_fast
+from ladderworks.core.il.line_scan import Line as _Line
+from ladderworks.core.il.line_scan import Made as _Made
+from ladderworks.core.il.line_scan import scan_common as _scan_common
+from ladderworks.core.il.line_scan import scan_fast as _scan_fast
+from ladderworks.core.il.parser import _percent_lines
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.il.sections import read_symbols
 from ladderworks.core.il.textform import split_with_ends

@@ -19,6 +19,7 @@ from ladderworks.core.instructions import (
     Flow,
     InstructionSpec,
     Kind,
+    Operation,
     Param,
     ParamAccess,
     ParamKind,
@@ -121,7 +122,8 @@ _add("INV", "stack", (), _row("INV", 0x43, "Inverse", "TERSLE", kind=_B, inputs=
                               stack=StackOp.INVERT))
 
 # -- edge contacts and pulse outputs ----------------------------------------------------------
-_EDGES = {"P": ("Rising edge", "YÜKSELEN KENAR"), "F": ("Falling edge", "DÜŞEN KENAR")}
+_EDGES = {"P": ("Rising edge", "YÜKSELEN KENAR", Operation.RISING),
+          "F": ("Falling edge", "DÜŞEN KENAR", Operation.FALLING)}
 _next_sub = SUB_BASE + 1000
 
 
@@ -131,19 +133,22 @@ def _sub() -> int:
     return _next_sub
 
 
-for _edge, (_title, _title_tr) in _EDGES.items():
+for _edge, (_title, _title_tr, _happens) in _EDGES.items():
     _operand = (_bit("device", ParamAccess.READ),)
     _add(f"LD{_edge}", "load", (BIT_IN,),
          _row(f"LD{_edge}", _sub(), f"{_title} contact", f"{_title_tr} KONTAĞI", inputs=(),
-              params=_operand, combine=Combine.READ, w1=True),
+              params=_operand, combine=Combine.READ, w1=True, operation=_happens),
          _row(f"LD{_edge}", _sub(), f"{_title} contact", f"{_title_tr} KONTAĞI", suffix=STK,
-              inputs=(), params=_operand, combine=Combine.READ, pushes=1, w1=True))
+              inputs=(), params=_operand, combine=Combine.READ, pushes=1, w1=True,
+              operation=_happens))
     _add(f"AND{_edge}", "contact", (BIT_IN,),
          _row(f"AND{_edge}", _sub(), f"{_title} contact in series",
-              f"{_title_tr} SERİ KONTAK", params=_operand, combine=Combine.AND, w1=True))
+              f"{_title_tr} SERİ KONTAK", params=_operand, combine=Combine.AND, w1=True,
+              operation=_happens))
     _add(f"OR{_edge}", "contact", (BIT_IN,),
          _row(f"OR{_edge}", _sub(), f"{_title} contact in parallel",
-              f"{_title_tr} PARALEL KONTAK", params=_operand, combine=Combine.OR, w1=True))
+              f"{_title_tr} PARALEL KONTAK", params=_operand, combine=Combine.OR, w1=True,
+              operation=_happens))
 _add("PLS", "output", (BIT_OUT,), _row("PLS", _sub(), "Rising-edge pulse output",
                                          "YÜKSELEN KENAR ÇIKIŞI", params=(_bit("output"),)))
 _add("PLF", "output", (BIT_OUT,), _row("PLF", _sub(), "Falling-edge pulse output",
@@ -154,6 +159,7 @@ COMPARISONS = ("=", ">", "<", "<>", "<=", ">=")
 _API = {"LD": 215, "AND": 232, "OR": 240}
 _OPERANDS2 = (_value("s1"), _value("s2"))
 for _offset, _op in enumerate(COMPARISONS):
+    _test = Operation(_op)  # the comparison the contact makes (Operation.EQUAL for "=")
     for _start, _api in _API.items():
         _name = _start + _op
         _title = f"Compare {_op} ({_start})"
@@ -161,13 +167,15 @@ for _offset, _op in enumerate(COMPARISONS):
         if _start == "LD":
             _add(_name, "load", (WORD_IN, WORD_IN),
                  _row(_name, SUB_BASE + _api + _offset, _title, _title_tr, inputs=(),
-                      params=_OPERANDS2, combine=Combine.READ, w1=True),
+                      params=_OPERANDS2, combine=Combine.READ, w1=True, operation=_test),
                  _row(_name, SUB_BASE + 500 + _api + _offset, _title, _title_tr, suffix=STK,
-                      inputs=(), params=_OPERANDS2, combine=Combine.READ, pushes=1, w1=True))
+                      inputs=(), params=_OPERANDS2, combine=Combine.READ, pushes=1, w1=True,
+                      operation=_test))
         else:
             _add(_name, "contact", (WORD_IN, WORD_IN),
                  _row(_name, SUB_BASE + _api + _offset, _title, _title_tr, params=_OPERANDS2,
-                      combine=Combine.AND if _start == "AND" else Combine.OR, w1=True))
+                      combine=Combine.AND if _start == "AND" else Combine.OR, w1=True,
+                      operation=_test))
 
 # -- timers and counters ----------------------------------------------------------------------
 _add("TMR", "output", (TIMER, WORD_IN),
@@ -184,30 +192,35 @@ RESET_ROW = _row("RST", _sub(), "Reset a timer, counter or register", "SIFIRLA",
 ROWS_LIST.append(RESET_ROW)
 
 # -- data: move, arithmetic, compare (API 10-25), each with its pulse form (xxxP) -------------
-_DATA: dict[str, tuple[int, tuple[str, ...], tuple[Param, ...], str, str]] = {
-    "CMP": (10, (WORD_IN, WORD_IN, BIT_OUT), (_value("s1"), _value("s2"), _bit("output")),
-            "Compare", "KARŞILAŞTIRMA"),
-    "ZCP": (11, (WORD_IN, WORD_IN, WORD_IN, BIT_OUT),
+_DATA: dict[str, tuple[int, Operation, tuple[str, ...], tuple[Param, ...], str, str]] = {
+    "CMP": (10, Operation.COMPARE, (WORD_IN, WORD_IN, BIT_OUT),
+            (_value("s1"), _value("s2"), _bit("output")), "Compare", "KARŞILAŞTIRMA"),
+    "ZCP": (11, Operation.ZONE_COMPARE, (WORD_IN, WORD_IN, WORD_IN, BIT_OUT),
             (_value("low"), _value("high"), _value("input"), _bit("output")),
             "Zone compare", "BÖLGE KARŞILAŞTIRMA"),
-    "MOV": (12, (WORD_IN, WORD_OUT), (_value("source"), _word("output")), "Move", "TAŞI"),
-    "ADD": (20, (WORD_IN, WORD_IN, WORD_OUT), (_value("s1"), _value("s2"), _word("output")),
-            "Addition", "TOPLAMA"),
-    "SUB": (21, (WORD_IN, WORD_IN, WORD_OUT), (_value("s1"), _value("s2"), _word("output")),
-            "Subtraction", "ÇIKARTMA"),
-    "MUL": (22, (WORD_IN, WORD_IN, WORD_OUT), (_value("s1"), _value("s2"), _word("output", 4)),
+    "MOV": (12, Operation.MOVE, (WORD_IN, WORD_OUT), (_value("source"), _word("output")),
+            "Move", "TAŞI"),
+    "ADD": (20, Operation.ADD, (WORD_IN, WORD_IN, WORD_OUT),
+            (_value("s1"), _value("s2"), _word("output")), "Addition", "TOPLAMA"),
+    "SUB": (21, Operation.SUBTRACT, (WORD_IN, WORD_IN, WORD_OUT),
+            (_value("s1"), _value("s2"), _word("output")), "Subtraction", "ÇIKARTMA"),
+    "MUL": (22, Operation.MULTIPLY, (WORD_IN, WORD_IN, WORD_OUT),
+            (_value("s1"), _value("s2"), _word("output", 4)),
             "Multiplication (32-bit result)", "ÇARPMA"),
-    "DIV": (23, (WORD_IN, WORD_IN, WORD_OUT), (_value("s1"), _value("s2"), _word("output", 4)),
+    "DIV": (23, Operation.DIVIDE, (WORD_IN, WORD_IN, WORD_OUT),
+            (_value("s1"), _value("s2"), _word("output", 4)),
             "Division (quotient, remainder)", "BÖLME"),
-    "INC": (24, (WORD_OUT,), (_word("output", access=_RW),), "Increment", "ARTTIR"),
-    "DEC": (25, (WORD_OUT,), (_word("output", access=_RW),), "Decrement", "AZALT"),
+    "INC": (24, Operation.INCREMENT, (WORD_OUT,), (_word("output", access=_RW),),
+            "Increment", "ARTTIR"),
+    "DEC": (25, Operation.DECREMENT, (WORD_OUT,), (_word("output", access=_RW),),
+            "Decrement", "AZALT"),
 }
-for _name, (_api, _kinds, _params, _title, _title_tr) in _DATA.items():
+for _name, (_api, _does, _kinds, _params, _title, _title_tr) in _DATA.items():
     _add(_name, "output", _kinds, _row(_name, SUB_BASE + _api, _title, _title_tr,
-                                       params=_params))
+                                       params=_params, operation=_does))
     _add(_name + "P", "output", _kinds,
          _row(_name + "P", SUB_BASE + 300 + _api, _title + ", on the rising edge",
-              _title_tr + " (DARBE)", params=_params))
+              _title_tr + " (DARBE)", params=_params, operation=_does, pulse=True))
 
 # -- program control --------------------------------------------------------------------------
 _add("CJ", "output", (LABEL,), _row("CJ", SUB_BASE, "Conditional jump", "KOŞULLU ATLAMA",

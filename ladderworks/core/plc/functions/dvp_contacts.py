@@ -13,48 +13,49 @@ from __future__ import annotations
 import operator
 from collections.abc import Callable
 
-from ladderworks.core.dialects.delta.instructions import COMPARISONS
+from ladderworks.core.dialects.delta.instructions import FAMILIES, ROWS
+from ladderworks.core.instructions import Combine, Operation
 from ladderworks.core.plc.functions import FunctionContext, function
 from ladderworks.core.plc.functions.dvp_data import Impl, value
 
-_TESTS: dict[str, Callable[[int, int], bool]] = {
-    "=": operator.eq, ">": operator.gt, "<": operator.lt, "<>": operator.ne,
-    "<=": operator.le, ">=": operator.ge,
+# A comparison contact's test, by its row's `operation`.
+_TESTS: dict[Operation, Callable[[int, int], bool]] = {
+    Operation.EQUAL: operator.eq, Operation.GREATER: operator.gt, Operation.LESS: operator.lt,
+    Operation.NOT_EQUAL: operator.ne, Operation.LESS_EQUAL: operator.le,
+    Operation.GREATER_EQUAL: operator.ge,
 }
-assert tuple(_TESTS) == COMPARISONS
 
 
-def _joined(start: str, contact: bool, inputs: tuple[bool, ...]) -> bool:
-    if start == "LD":
+def _joined(combine: Combine, contact: bool, inputs: tuple[bool, ...]) -> bool:
+    """The contact as its row's `combine` says: a new value (READ), or with its input."""
+    if combine is Combine.READ:
         return contact
-    if start == "AND":
+    if combine is Combine.AND:
         return bool(inputs[-1]) and contact
     return bool(inputs[-1]) or contact
 
 
-def _compare(start: str, test: Callable[[int, int], bool]) -> Impl:
+def _compare(combine: Combine, test: Callable[[int, int], bool]) -> Impl:
     def run(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
         s1, s2 = params
-        return _joined(start, test(value(ctx.memory, s1), value(ctx.memory, s2)), inputs)
+        return _joined(combine, test(value(ctx.memory, s1), value(ctx.memory, s2)), inputs)
 
     return run
 
 
-def _edge(start: str, falling: bool) -> Impl:
+def _edge(combine: Combine, falling: bool) -> Impl:
     def run(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
         now = bool(ctx.memory.bit(params[0]))
         before = state.get("prev", False)
         state["prev"] = now
-        return _joined(start, (before and not now) if falling else (now and not before), inputs)
+        return _joined(combine, (before and not now) if falling else (now and not before),
+                       inputs)
 
     return run
 
 
-for _op, _test in _TESTS.items():
-    for _start in ("LD", "AND", "OR"):
-        function(f"DVP.{_start}{_op}")(_compare(_start, _test))
-    function(f"DVP.LD{_op}.STK")(_compare("LD", _test))
-for _kind in ("P", "F"):
-    for _start in ("LD", "AND", "OR"):
-        function(f"DVP.{_start}{_kind}")(_edge(_start, _kind == "F"))
-    function(f"DVP.LD{_kind}.STK")(_edge("LD", _kind == "F"))
+for _row in ROWS:  # each contact row by its fields: how it joins, what it tests
+    if _row.name in FAMILIES["dvp_contacts"]:
+        test = _TESTS.get(_row.operation)
+        function(_row.name)(_compare(_row.combine, test) if test is not None
+                            else _edge(_row.combine, _row.operation is Operation.FALLING))

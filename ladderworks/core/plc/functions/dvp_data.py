@@ -14,6 +14,8 @@ from collections.abc import Callable
 
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import DEVICES, relay
+from ladderworks.core.dialects.delta.instructions import ROWS
+from ladderworks.core.instructions import Operation
 from ladderworks.core.plc.functions import FunctionContext, function
 from ladderworks.core.plc.memory import Memory
 
@@ -120,9 +122,11 @@ def _zcp(memory: Memory, params: tuple) -> None:
     _results(memory, output, 0 if s < lo else 2 if s > hi else 1)
 
 
-_OPERATIONS: dict[str, Callable[[Memory, tuple], None]] = {
-    "MOV": _mov, "ADD": _add, "SUB": _sub, "MUL": _mul, "DIV": _div, "INC": _inc,
-    "DEC": _dec, "CMP": _cmp, "ZCP": _zcp,
+# What a data row does, by its row's `operation` (its P form: `pulse`).
+_OPERATIONS: dict[Operation, Callable[[Memory, tuple], None]] = {
+    Operation.MOVE: _mov, Operation.ADD: _add, Operation.SUBTRACT: _sub,
+    Operation.MULTIPLY: _mul, Operation.DIVIDE: _div, Operation.INCREMENT: _inc,
+    Operation.DECREMENT: _dec, Operation.COMPARE: _cmp, Operation.ZONE_COMPARE: _zcp,
 }
 
 
@@ -137,9 +141,9 @@ def _make(operation: Callable[[Memory, tuple], None], pulse: bool) -> Impl:
     return run
 
 
-for _name, _operation in _OPERATIONS.items():
-    function(f"DVP.{_name}")(_make(_operation, False))
-    function(f"DVP.{_name}P")(_make(_operation, True))
+for _row in ROWS:
+    if _row.operation in _OPERATIONS:
+        function(_row.name)(_make(_OPERATIONS[_row.operation], _row.pulse))
 
 
 @function("DVP.PLS")

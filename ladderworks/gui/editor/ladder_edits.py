@@ -1,0 +1,270 @@
+"""The ladder editor's editing operations, each one undo step with one name: the tools, the
+menus, the keys and the in-place editor all call them."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import replace
+
+from PySide6.QtCore import QCoreApplication
+from PySide6.QtWidgets import QApplication
+
+from ladderworks.core import ladder as core
+from ladderworks.core.address import Address
+from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
+from ladderworks.core.il import Instruction
+from ladderworks.core.instructions import FUNCTIONS, lookup
+from ladderworks.core.ladder import (
+    Coil,
+    Contact,
+    EditRefused,
+    FunctionBox,
+    LadderNetwork,
+    Selection,
+)
+from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
+from ladderworks.gui.editor.grid_view import GridView
+from ladderworks.gui.editor.step_name import StepName, editor_step
+from ladderworks.gui.function_dialog import FunctionDialog
+
+translate = QCoreApplication.translate
+
+OpenAddress = Callable[[int, int, int, bool], None]  # network, row, column, just placed
+
+
+class LadderEdits:
+    """Turns a tool use, a menu action or a key into an undo command on the grid's model; a
+    refused edit becomes the grid's status message. `open_address` opens the in-place
+    address editor of a cell (a placed contact or coil gets its address typed next)."""
+
+    def __init__(self, grid: GridView, open_address: OpenAddress) -> None:
+        self.grid = grid
+        self.open_address = open_address
+        self.function_name = FUNCTIONS[0].name  # what the function tool places (the palette's)
+        self.function_dialog: FunctionDialog | None = None
+
+    def run_edit(self, index: int, operation: Callable[[LadderNetwork], object],
+                 name: StepName) -> bool:
+        """Make a core edit on network `index` as an undo command named `name`; False (and a
+        message) when the core refuses it."""
+        model = self.grid.model
+        try:
+            edit = model.prepare(index, operation)
+        except EditRefused as refused:
+            self.grid.message.emit(diagnostic_text(refused.diagnostic))
+            return False
+        model.undo_stack.push(NetworkEditCommand(model, index, edit, name))
+        return True
+
+    # -- one operation each, at a cell -----------------------------------------------------
+
+    def set_address(self, index: int, row: int, col: int, text: str,
+                    comment: str | None = None) -> bool:
+        """The address of a contact or coil, and its new `comment` (None: kept): one step."""
+        def address_and_comment(network: LadderNetwork) -> None:
+            core.set_address(network, row, col, text)
+            if comment is not None:
+                core.set_comment(network, row, col, comment)
+
+        return self.run_edit(index, address_and_comment,
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), text))
+
+    def set_comments(self, index: int, lines: list[str]) -> bool:
+        """A network's comment lines."""
+        return self.run_edit(index, lambda n: core.set_network_comments(n, lines),
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Comment")))
+
+    def invert(self, index: int, row: int, col: int) -> bool:
+        """NOT: the contact or coil at a cell becomes its inverse."""
+        return self.run_edit(index, lambda n: core.invert(n, row, col),
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "NOT")))
+
+    def delete(self, index: int, row: int, col: int) -> bool:
+        """Delete the element at a cell."""
+        return self.run_edit(index, lambda n: core.delete(n, row, col),
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete")))
+
+    def insert_row(self, index: int, row: int, after: bool = False) -> bool:
+        """An empty row before (or after) `row`."""
+        return self.run_edit(index, lambda n: core.insert_row(n, row, after=after),
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Insert row")))
+
+    def draw_line(self, index: int, start: tuple[int, int], end: tuple[int, int]) -> bool:
+        """A wire between two grid nodes (row, node)."""
+        return self.run_edit(index, lambda n: core.draw_line(n, start, end),
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Line")))
+
+    def place_bit(self, index: int, row: int, col: int, element: Contact | Coil) -> None:
+        """Place a contact or coil and open its address; on one of the same kind, turn it
+        into `element`'s kind (NOT, SET, RST) and open its address. A coil goes to the coil
+        column; a placed element is wired to its neighbours (core `place_wired`). The cursor
+        goes where the element is."""
+        grid = self.grid
+        row, col = core.target_cell(grid.networks[index], row, col, element)
+        found = grid.networks[index].element_at(row, col)
+        grid.cursor_to(index, *(found[0] if found is not None else (row, col)))
+        if found is not None and type(found[1]) is type(element):
+            old = found[1]
+            assert isinstance(old, Contact | Coil)
+            if isinstance(old, Coil) and isinstance(element, Coil) and old.write != element.write:
+                kind = replace(old, negated=element.negated, write=element.write)
+                self.run_edit(index, lambda n: core.replace_element(n, row, col, kind),
+                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place coil")))
+            elif old.negated != element.negated:
+                self.invert(index, row, col)
+            self.open_address(index, found[0][0], found[0][1], False)
+            return
+        text = (editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place contact"))
+                if isinstance(element, Contact)
+                else editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place coil")))
+        if self.run_edit(index, lambda n: core.place_wired(n, row, col, element), text):
+            self.open_address(index, row, col, True)  # ESC takes it away again
+
+    def add_parallel(self, index: int, row: int, col: int) -> None:
+        """OR: a parallel contact or coil below the one at a cell, its address opened."""
+        found = self.grid.networks[index].element_at(row, col)
+        if found is None or not isinstance(found[1], Contact | Coil):
+            self.grid.message.emit(
+                translate("LadderEditor", "Select a contact or a coil for the OR tool"))
+            return
+        (row, col), _old = found
+        if self.run_edit(index, lambda n: core.add_parallel(n, row, col),
+                         editor_step(QT_TRANSLATE_NOOP("LadderEditor", "OR"))):
+            self.open_address(index, row + 1, col, True)
+
+    def open_function_dialog(
+        self, index: int, row: int, col: int, name: str, box: FunctionBox | None = None
+    ) -> None:
+        """The function property table; on OK the box is placed (or its parameters set)."""
+        spec = box.spec if box is not None else lookup(name)
+        if spec is None:
+            return
+        grid = self.grid
+        current = Instruction(box.name, params=box.params) if box is not None else None
+        dialog = FunctionDialog(spec, current, grid, box.comment if box is not None else "",
+                                grid.model.dialect)
+        self.function_dialog = dialog
+
+        def done() -> None:
+            instruction = dialog.instruction
+            if instruction is None:
+                return
+            if box is None:
+                element = FunctionBox.new(spec.name, instruction.params, dialog.comment_text)
+                if self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
+                                 editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
+                                             spec.name)):
+                    grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
+                                                            element))
+            else:
+                new_comment = dialog.comment_text != box.comment
+
+                def params_and_comment(network: LadderNetwork) -> None:
+                    core.set_params(network, row, col, instruction.params)
+                    if new_comment:
+                        core.set_comment(network, row, col, dialog.comment_text)
+
+                self.run_edit(index, params_and_comment,  # one step: parameters and comment
+                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"),
+                                          spec.name))
+            grid.setFocus()
+
+        dialog.accepted.connect(done)
+        dialog.open()
+
+    # -- at the cursor (menus, keys) -------------------------------------------------------
+
+    def _cursor_target(self) -> tuple[int, int, int]:
+        if self.grid.selection is not None:
+            index, sel = self.grid.selection
+            return index, sel.top, sel.left
+        return self.grid.cursor_cell
+
+    def assign_address_at_cursor(self, address: Address) -> bool:
+        """Put `address` on the contact or coil at the cursor (one undo step); False if none."""
+        index, row, col = self.grid.cursor_cell
+        networks = self.grid.networks
+        if index >= len(networks) or address.bit is None:
+            return False
+        found = networks[index].element_at(row, col)
+        if found is None or not isinstance(found[1], Contact | Coil):
+            return False
+        (r, c), _element = found
+        return self.set_address(index, r, c, str(address))
+
+    def delete_at_cursor(self) -> None:
+        """DEL: delete the selection or the element at the cursor."""
+        grid = self.grid
+        if grid.selection is not None:
+            index, sel = grid.selection
+            if self.run_edit(index, lambda n: core.cut(n, sel),
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete"))):
+                grid.selection = None
+                grid.place_overlays()
+            return
+        self.delete(*grid.cursor_cell)
+
+    def invert_at_cursor(self) -> None:
+        """NOT on the element at the cursor."""
+        self.invert(*self._cursor_target())
+
+    def or_at_cursor(self) -> None:
+        """OR on the element at the cursor (a parallel contact or coil)."""
+        self.add_parallel(*self._cursor_target())
+
+    def insert_row_before(self) -> None:
+        """Insert an empty row before the cursor's row."""
+        index, row, _ = self.grid.cursor_cell
+        self.insert_row(index, row)
+
+    def insert_row_after(self) -> None:
+        """Insert an empty row after the cursor's row."""
+        index, row, _ = self.grid.cursor_cell
+        self.insert_row(index, row, after=True)
+
+    def copy(self) -> None:
+        """Copy the selection (or the element at the cursor) to the clipboard as grid text."""
+        index, sel = self._selection_or_cursor()
+        QApplication.clipboard().setText(core.copy_text(self.grid.networks[index], sel))
+
+    def cut(self) -> None:
+        """Cut the selection (or the element at the cursor)."""
+        grid = self.grid
+        index, sel = self._selection_or_cursor()
+        text = core.copy_text(grid.networks[index], sel)
+        if self.run_edit(index, lambda n: core.cut(n, sel),
+                         editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Cut"))):
+            QApplication.clipboard().setText(text)
+            grid.selection = None
+            grid.place_overlays()
+
+    def paste(self) -> None:
+        """Paste grid text with its top-left at the cursor."""
+        text = QApplication.clipboard().text()
+        if not text:
+            return
+        index, row, col = self.grid.cursor_cell
+        self.run_edit(index, lambda n: core.paste(n, row, col, text),
+                      editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Paste")))
+
+    def delete_network(self) -> None:
+        """Delete the network at the cursor."""
+        grid = self.grid
+        index = grid.cursor_cell[0]
+        if index >= len(grid.networks) - 1:
+            return
+        grid.undo_stack.push(NetworkListCommand(
+            grid.model, index, None,
+            editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete network"))))
+
+    def _selection_or_cursor(self) -> tuple[int, Selection]:
+        grid = self.grid
+        if grid.selection is not None:
+            return grid.selection
+        index, row, col = grid.cursor_cell
+        found = grid.networks[index].element_at(row, col)
+        if found is not None:
+            cells = grid.networks[index].footprint(*found)
+            return index, Selection.spanning(cells[0], cells[-1])
+        return index, Selection(row, col, row, col)
