@@ -31,6 +31,9 @@ from ladderworks.gui.function_dialog import FunctionDialog
 translate = QCoreApplication.translate
 
 OpenAddress = Callable[[int, int, int, bool], None]  # network, row, column, just placed
+# the two names more than one operation gives its step
+DELETE = editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete"))  # an element, a selection
+PLACE_COIL = editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place coil"))  # new, or its kind
 
 
 class LadderEdits:
@@ -82,8 +85,7 @@ class LadderEdits:
 
     def delete(self, index: int, row: int, col: int) -> bool:
         """Delete the element at a cell."""
-        return self.run_edit(index, lambda n: core.delete(n, row, col),
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete")))
+        return self.run_edit(index, lambda n: core.delete(n, row, col), DELETE)
 
     def insert_row(self, index: int, row: int, after: bool = False) -> bool:
         """An empty row before (or after) `row`."""
@@ -110,14 +112,14 @@ class LadderEdits:
             if isinstance(old, Coil) and isinstance(element, Coil) and old.write != element.write:
                 kind = replace(old, negated=element.negated, write=element.write)
                 self.run_edit(index, lambda n: core.replace_element(n, row, col, kind),
-                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place coil")))
+                              PLACE_COIL)
             elif old.negated != element.negated:
                 self.invert(index, row, col)
             self.open_address(index, found[0][0], found[0][1], False)
             return
         text = (editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place contact"))
                 if isinstance(element, Contact)
-                else editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place coil")))
+                else PLACE_COIL)
         if self.run_edit(index, lambda n: core.place_wired(n, row, col, element), text):
             self.open_address(index, row, col, True)  # ESC takes it away again
 
@@ -198,8 +200,7 @@ class LadderEdits:
         grid = self.grid
         if grid.selection is not None:
             index, sel = grid.selection
-            if self.run_edit(index, lambda n: core.cut(n, sel),
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete"))):
+            if self.run_edit(index, lambda n: core.cut(n, sel), DELETE):
                 grid.selection = None
                 grid.place_overlays()
             return
