@@ -28,7 +28,7 @@ from ladderworks.gui.console_menus import Condition, ConsoleMenus
 from ladderworks.gui.dock_tabs import WholeDockTitles
 from ladderworks.gui.docks import cross_reference
 from ladderworks.gui.docks.plc_docks import build_plc_docks
-from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
+from ladderworks.gui.document import bad_bytes_shown
 from ladderworks.gui.editor.interactions import BY_TOOL
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.editor.name_menu import NameDisplayMenu
@@ -321,7 +321,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Show the program as instruction-list text."""
         if self.model.showing_text:
             return
-        text = self.program_text()
+        text = self.program_text(faithful=True)
         if text is None:
             return
         self.text_view.setPlainText(bad_bytes_shown(text))
@@ -332,10 +332,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Parse the text view and show it as ladder; errors stay in the text view."""
         if not self.model.showing_text:
             return True
-        from ladderworks.core.il import parse
-
         modified = self.text_view.document().isModified()
-        result = parse(bad_bytes_back(self.text_view.toPlainText()))
+        result = self.document.read_text(self.text_view.toPlainText())  # in the file's form
         self.errors.set_diagnostics(result.diagnostics)
         if not result.ok:
             self.errors.show()

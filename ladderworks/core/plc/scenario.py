@@ -17,6 +17,7 @@ from pathlib import Path
 
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
+from ladderworks.core.il.textform import split_lines
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.core.symbols import SymbolTable, resolve
 
@@ -220,7 +221,7 @@ def parse_scenario(text: str, name: str = "scenario",
     """Read a scenario file's text; addresses may be symbols of `symbols`."""
     scenario = Scenario(name)
     reader = _Reader(symbols)
-    lines = text.splitlines()
+    lines = split_lines(text)
     first = next((i for i, line in enumerate(lines) if line.strip()), None)
     if first is None or lines[first].strip().strip(",").upper() != HEADER:
         reader.error("scenario-header", (first or 0) + 1, 1)
