@@ -112,7 +112,6 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         named = self.actions_by_name
         self.editor.context_actions = [named[name] if name else None for name in CONTEXT_MENU]
         self.plc_docks = build_plc_docks(self, self.menus, PlcSession(self), self.editor)
-        self.program_opened.connect(self.plc_docks.alarms.use_program)
         self.names_menu.changed.connect(self.editor.relayout)
         self.names_menu.changed.connect(self.plc_docks.diagnostic.view.relayout)
         self.plc_docks.diagnostic.remember_zoom(self.settings)  # its zoom, saved
