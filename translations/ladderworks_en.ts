@@ -2036,117 +2036,122 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
-        <source>Take the console&apos;s program</source>
-        <translation>Take the console&apos;s program</translation>
+        <source>Show the console&apos;s program as text</source>
+        <translation>Show the console&apos;s program as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
         <source>Compile</source>
         <translation>Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="334"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="163"/>
+        <source>Shows the console&apos;s program here as mnemonic text, to read or change before Compile on this screen. F9 (PLC › Compile) loads the console&apos;s program into the PLC directly.</source>
+        <translation>Shows the console&apos;s program here as mnemonic text, to read or change before Compile on this screen. F9 (PLC › Compile) loads the console&apos;s program into the PLC directly.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="193"/>
         <source>Program loaded from the console</source>
         <translation>Program loaded from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="213"/>
         <source>In the PLC: {0}</source>
         <translation>In the PLC: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="222"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
         <source>Opened {0}</source>
         <translation>Opened {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="233"/>
         <source>Open mnemonic program</source>
         <translation>Open mnemonic program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="234"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="242"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>The console&apos;s program cannot be coded: see the error list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="246"/>
         <source>Program taken from the console</source>
         <translation>Program taken from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="281"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Compile failed: {0} error(s). {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="293"/>
         <source>Converting…</source>
         <translation>Converting…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="317"/>
         <source>the program on this screen</source>
         <translation>the program on this screen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="321"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Compile finished — {0} networks, {1} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="317"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="324"/>
         <source>({0} warning(s))</source>
         <translation>({0} warning(s))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="342"/>
         <source>Compile a program first</source>
         <translation>Compile a program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="356"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="363"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="359"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="366"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="369"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="372"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>
@@ -2332,6 +2337,39 @@
         <location filename="../ladderworks/gui/docks/online.py" line="201"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Select a contact or coil to force its signal</translation>
+    </message>
+</context>
+<context>
+    <name>PlcState</name>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="24"/>
+        <source>RUN</source>
+        <translation>RUN</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="24"/>
+        <source>STOP</source>
+        <translation>STOP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="25"/>
+        <source>no program loaded</source>
+        <translation>no program loaded</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="27"/>
+        <source>{0} forced</source>
+        <translation>{0} forced</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="56"/>
+        <source>The simulated PLC: running (RUN) or stopped (STOP), and the program loaded into it (F9).</source>
+        <translation>The simulated PLC: running (RUN) or stopped (STOP), and the program loaded into it (F9).</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="59"/>
+        <source>Signals are forced: the PLC does not see the machine&apos;s values for them (PLC › Release the force).</source>
+        <translation>Signals are forced: the PLC does not see the machine&apos;s values for them (PLC › Release the force).</translation>
     </message>
 </context>
 <context>

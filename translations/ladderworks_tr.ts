@@ -2036,117 +2036,122 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
-        <source>Take the console&apos;s program</source>
-        <translation>Konsoldaki programı al</translation>
+        <source>Show the console&apos;s program as text</source>
+        <translation>Konsolun programını metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
         <source>Compile</source>
         <translation>Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="334"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="163"/>
+        <source>Shows the console&apos;s program here as mnemonic text, to read or change before Compile on this screen. F9 (PLC › Compile) loads the console&apos;s program into the PLC directly.</source>
+        <translation>Konsolun programını burada mnemonic metin olarak gösterir; bu ekranda Derle&apos;den önce okumak veya değiştirmek için. F9 (PLC › Derle) konsolun programını doğrudan PLC&apos;ye yükler.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="193"/>
         <source>Program loaded from the console</source>
         <translation>Program konsoldan yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="213"/>
         <source>In the PLC: {0}</source>
         <translation>PLC&apos;deki program: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="222"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="220"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
         <source>Opened {0}</source>
         <translation>{0} açıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="233"/>
         <source>Open mnemonic program</source>
         <translation>Mnemonik program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="234"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod *.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="242"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>Konsoldaki program kodlanamıyor: hata listesine bakın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="246"/>
         <source>Program taken from the console</source>
         <translation>Program konsoldan alındı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="281"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Derleme başarısız: {0} hata. {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="293"/>
         <source>Converting…</source>
         <translation>Çevriliyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="310"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="317"/>
         <source>the program on this screen</source>
         <translation>bu ekrandaki program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="314"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="321"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Derleme bitti — {0} devre, {1} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="317"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="324"/>
         <source>({0} warning(s))</source>
         <translation>({0} uyarı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} sinyal zorlanmış veya eleman pasif. PLC bunlarla başlatılsın mı?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="335"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="342"/>
         <source>Compile a program first</source>
         <translation>Önce bir program derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="356"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="363"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="359"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="366"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="369"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="372"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>
@@ -2332,6 +2337,39 @@
         <location filename="../ladderworks/gui/docks/online.py" line="201"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Sinyalini zorlamak için bir kontak veya çıkış seçin</translation>
+    </message>
+</context>
+<context>
+    <name>PlcState</name>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="24"/>
+        <source>RUN</source>
+        <translation>ÇALIŞIYOR</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="24"/>
+        <source>STOP</source>
+        <translation>DURDU</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="25"/>
+        <source>no program loaded</source>
+        <translation>yüklü program yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="27"/>
+        <source>{0} forced</source>
+        <translation>{0} zorlanmış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="56"/>
+        <source>The simulated PLC: running (RUN) or stopped (STOP), and the program loaded into it (F9).</source>
+        <translation>Benzetilen PLC: çalışıyor (ÇALIŞIYOR) veya durdu (DURDU), ve içine yüklenen program (F9).</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="59"/>
+        <source>Signals are forced: the PLC does not see the machine&apos;s values for them (PLC › Release the force).</source>
+        <translation>Sinyaller zorlanmış: PLC bunlar için makinenin değerlerini görmüyor (PLC › Zorlamayı bırak).</translation>
     </message>
 </context>
 <context>

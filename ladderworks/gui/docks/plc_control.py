@@ -150,13 +150,20 @@ class PlcControlDock(Retranslating, QDockWidget):
         self.setWindowTitle(translate("PlcControl", "PLC CONTROL SCREEN"))
         texts = {
             "action_plc_open_mod": translate("PlcControl", "Open .MOD…"),
-            "action_plc_take_console": translate("PlcControl", "Take the console's program"),
+            "action_plc_take_console": translate("PlcControl",
+                                                 "Show the console's program as text"),
             "action_plc_control_compile": translate("PlcControl", "Compile"),
             "action_plc_start": translate("PlcControl", "START"),
             "action_plc_stop": translate("PlcControl", "STOP"),
         }
         for name, text in texts.items():
             self.control_actions[name].setText(text)
+        # F9 loads the console's program into the PLC; this only shows it here, to read or
+        # change as mnemonic text before this screen's Compile
+        self.control_actions["action_plc_take_console"].setToolTip(translate(
+            "PlcControl", "Shows the console's program here as mnemonic text, to read or "
+            "change before Compile on this screen. F9 (PLC › Compile) loads the console's "
+            "program into the PLC directly."))
         self._show_loaded()
         self._show_status(self.session.status())
 
