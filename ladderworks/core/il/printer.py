@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from difflib import SequenceMatcher
 
+from ladderworks.core.il.model_marker import head_lines, header_texts
 from ladderworks.core.il.program import FANUC, Instruction, Network, ParamValue, Program, Section
 from ladderworks.core.il.textform import encode_text
 from ladderworks.core.instructions import InstructionSpec, Kind, ParamKind
@@ -75,7 +76,7 @@ def _section_lines(section: Section) -> list[str]:
 
 def print_program(program: Program) -> str:
     """The whole program as canonical text (LF line ends, final newline)."""
-    out: list[str] = _comment_lines(program.header)
+    out: list[str] = _comment_lines(header_texts(program))
     if program.framed:
         out.append("%@A")
     for section in program.before:
@@ -162,7 +163,9 @@ def print_faithful(program: Program) -> str:
     def fresh(texts: list[str]) -> None:
         out.extend(text + newline for text in texts)
 
-    verbatim(0, source.ladder_start)
+    # the lines before the ladder as read; the PMC model's marker as the program says
+    out.extend(head_lines(program, lines[:source.ladder_start], ends[:source.ladder_start],
+                          newline))
     new_keys = [network.key() for network in program.networks]
     last_fresh = False
     for tag, i1, i2, j1, j2 in _align(source.keys, new_keys):
