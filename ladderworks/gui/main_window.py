@@ -280,11 +280,23 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """File › Program properties: title, system parameters, I/O modules, sections, form."""
         from ladderworks.gui.program_properties import ProgramPropertiesDialog
 
-        dialog = ProgramPropertiesDialog(self.program_info, self.path, self)
+        dialog = ProgramPropertiesDialog(self.program_info, self.path, self, self.set_pmc_model)
         dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose, True)
         self.properties_dialog = dialog
         dialog.open()
         return dialog
+
+    def set_pmc_model(self, key: str) -> None:
+        """Make `key` the program's PMC model (Program properties): its ranges from now on,
+        kept in the file at the next Save."""
+        program = self.program_info
+        origin = self.model.document.origin  # the program the ladder was laid out from
+        if origin is None:  # a new program: its model is this one's
+            self.model.document.origin = origin = program
+        program.dialect = origin.dialect = key
+        self.dialect = key
+        self.model.mark_modified()
+        self._update_title()
 
     def _remember(self, path: Path) -> None:
         self.settings.add_recent_file(str(path))

@@ -123,7 +123,7 @@ def test_program_properties_show_title_sections_and_text_form(
     assert ["7", "Date", written["7"].strip()] in title
     assert [row[0] for row in title] == [str(n) for n in range(1, 11)]
     general = dict((row[0], row[1]) for row in dialog.texts("properties_general"))
-    assert general["Dialect"] == "FANUC LADDER-III export"
+    assert general["PMC model"] == "FANUC Series 30i-A PMC (memory-B)"
     assert general["Line ends"] == "LF" and general["Byte order mark"] == "no"
     assert general["Symbols (%@2)"] == "12820"
     assert ["2", "BINARY"] in dialog.texts("properties_system")
