@@ -92,3 +92,23 @@ def test_an_unchanged_marked_file_saves_byte_for_byte(window: MainWindow, qtbot:
     window.model.mark_modified()
     _save(window, qtbot)
     assert path.read_bytes() == data
+
+
+def test_the_plc_tables_take_the_map_of_the_model_in_the_plc(
+        window: MainWindow, qtbot: QtBot, tmp_path: Path) -> None:
+    from ladderworks.gui.docks.table_entries import TableKind
+    from tests.gui.test_pmc_parameters import tables_of
+
+    tables = tables_of(window)
+    for text, keep in ((SEED_TEXT, "'K900': byte number out of range for area K (0-99)"),
+                       (MARK + SEED_TEXT, None)):
+        path = tmp_path / "lamp.LAD"
+        path.write_text(text, encoding="utf-8")
+        assert window.load(path)
+        with qtbot.waitSignal(window.plc_docks.session.program_loaded, timeout=20_000):
+            window.actions_by_name["action_compile"].trigger()
+        assert tables.insert_texts(TableKind.KEEP, ["K900", "1"]) == keep
+        assert tables.insert_texts(TableKind.KEEP, ["K500", "1"]) is not None  # in no map
+        assert tables.insert_texts(TableKind.KEEP, ["K9", "1"]) is None
+        window.model.mark_saved()
+        window.parameters.saved = window.parameters.session.parameters.copy()
