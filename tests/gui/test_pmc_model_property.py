@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QComboBox
 from pytestqt.qtbot import QtBot
 
@@ -12,6 +13,7 @@ from ladderworks.core.il.program import FANUC, SEED
 from ladderworks.core.models import MODELS
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.program_properties import ProgramPropertiesDialog
+from tests.gui.conftest import Drawer, type_text
 from tests.gui.test_file_form import _save
 
 SEED_TEXT = "%@3\nRD X0.0\nWRT Y0.0\n%\n"
@@ -112,3 +114,27 @@ def test_the_plc_tables_take_the_map_of_the_model_in_the_plc(
         assert tables.insert_texts(TableKind.KEEP, ["K9", "1"]) is None
         window.model.mark_saved()
         window.parameters.saved = window.parameters.session.parameters.copy()
+
+
+def test_typing_an_address_follows_the_model(window: MainWindow, qtbot: QtBot,
+                                             drawer: Drawer) -> None:
+    drawer.key("O")
+    drawer.click(0, 0, 10)  # a coil: its address typed in place
+    editor = window.editor.inline_editor
+    type_text(qtbot, editor, "A100.0")
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    assert "'A100.0': byte number out of range for area A (0-99)" in \
+        window.editor.inline_message.text()  # a new program is a seed one: A0-A99
+    editor.clear()
+    type_text(qtbot, editor, "A99.0")
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    assert not editor.isVisible()
+    window.set_pmc_model(FANUC)
+    drawer.click(0, 0, 10)
+    qtbot.waitUntil(editor.isVisible)
+    editor.clear()
+    type_text(qtbot, editor, "A100.0")
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    assert not editor.isVisible()  # the 30i's A area
+    found = window.editor.networks[0].element_at(0, 10)
+    assert found is not None and str(found[1].address) == "A100.0"  # type: ignore[union-attr]

@@ -82,7 +82,8 @@ class CursorEdits:
             return False
         (r, c), _element = found
         text = str(address)
-        return self.run_edit(index, lambda n: core.set_address(n, r, c, text),
+        dialect = self.model.dialect
+        return self.run_edit(index, lambda n: core.set_address(n, r, c, text, dialect),
                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), text))
 
     def place_bit(self, index: int, row: int, col: int, element: Contact | Coil) -> None:

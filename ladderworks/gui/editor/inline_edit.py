@@ -116,7 +116,7 @@ class InlineEdit(QObject):
         editor = self.editor
         address_text = editor.resolve_address(address_text)
         try:
-            core.edits.to_address(address_text, (row, col))
+            core.edits.to_address(address_text, (row, col), dialect=editor.model.dialect)
         except EditRefused as refused:
             self._refuse(refused.diagnostic)
             return
@@ -127,7 +127,7 @@ class InlineEdit(QObject):
         new_comment = comment != element.comment
 
         def address_and_comment(network: LadderNetwork) -> None:
-            core.set_address(network, row, col, address_text)
+            core.set_address(network, row, col, address_text, editor.model.dialect)
             if new_comment:
                 core.set_comment(network, row, col, comment)
 
