@@ -35,12 +35,20 @@ def model_address_problems(program: Program, dialect: str | None = None, *,
     dialect = dialect or program.dialect
     if dialect != SEED:
         return []
+    # each distinct address judged once (a program repeats its operands); the walk that
+    # places the diagnostics only when one is outside
+    every = [ins for network in program.networks for ins in network.instructions]
+    distinct: set[object] = {ins.operand for ins in every}
+    distinct.update(p for ins in every if ins.params for p in ins.params)
+    bad: dict[object, Diagnostic] = {address: problem for address in distinct
+           if (problem := model_problem(address, dialect)) is not None}
+    if not bad:
+        return []
     found: list[Diagnostic] = []
     for index, network in enumerate(program.networks):
         for ins in network.instructions:
-            addresses = [ins.operand, *ins.params]
-            for address in addresses:
-                problem = model_problem(address, dialect)
+            for address in (ins.operand, *ins.params):
+                problem = bad.get(address)
                 if problem is not None:
                     found.append(Diagnostic(problem.code, problem.args, ins.line,
                                             ins.column or 1,
