@@ -1168,8 +1168,8 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="105"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="234"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="106"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="235"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="251"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
@@ -1180,37 +1180,37 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="222"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="228"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="223"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="229"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="355"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="245"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="251"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="246"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="252"/>
         <location filename="../ladderworks/gui/editor/interactions.py" line="389"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="108"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="109"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="102"/>
-        <location filename="../ladderworks/gui/editor/editing.py" line="110"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="103"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="111"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="124"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="125"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="128"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="129"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -1225,12 +1225,12 @@
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="174"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="175"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="187"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="188"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
@@ -1241,7 +1241,7 @@
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="86"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="87"/>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="135"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
@@ -1252,17 +1252,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="263"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="264"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="275"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="276"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/editing.py" line="284"/>
+        <location filename="../ladderworks/gui/editor/editing.py" line="285"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -1512,24 +1512,24 @@
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="402"/>
+        <location filename="../ladderworks/gui/main_window.py" line="403"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="408"/>
+        <location filename="../ladderworks/gui/main_window.py" line="409"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="414"/>
+        <location filename="../ladderworks/gui/main_window.py" line="415"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <location filename="../ladderworks/gui/main_window.py" line="254"/>
-        <location filename="../ladderworks/gui/main_window.py" line="409"/>
+        <location filename="../ladderworks/gui/main_window.py" line="410"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -1668,32 +1668,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="372"/>
+        <location filename="../ladderworks/gui/main_window.py" line="373"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="388"/>
+        <location filename="../ladderworks/gui/main_window.py" line="389"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="451"/>
+        <location filename="../ladderworks/gui/main_window.py" line="452"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="454"/>
+        <location filename="../ladderworks/gui/main_window.py" line="455"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="486"/>
+        <location filename="../ladderworks/gui/main_window.py" line="487"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="487"/>
+        <location filename="../ladderworks/gui/main_window.py" line="488"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>

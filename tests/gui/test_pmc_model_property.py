@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QComboBox
 from pytestqt.qtbot import QtBot
@@ -138,3 +139,23 @@ def test_typing_an_address_follows_the_model(window: MainWindow, qtbot: QtBot,
     assert not editor.isVisible()  # the 30i's A area
     found = window.editor.networks[0].element_at(0, 10)
     assert found is not None and str(found[1].address) == "A100.0"  # type: ignore[union-attr]
+
+
+def test_a_model_registered_later_shows_in_the_list(window: MainWindow, qtbot: QtBot,
+                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    from ladderworks.core.models import FANUC_PMC, PmcModel
+    monkeypatch.setitem(MODELS, "fanuc-0i", PmcModel("fanuc-0i", "FANUC 0i-F PMC", FANUC_PMC))
+    dialog, combo = _dialog(window, qtbot)
+    assert [combo.itemText(i) for i in range(combo.count())][-1] == "FANUC 0i-F PMC"
+    dialog.close()
+
+
+def test_a_program_of_another_family_shows_its_model_read_only(
+        window: MainWindow, qtbot: QtBot, monkeypatch: pytest.MonkeyPatch) -> None:
+    from ladderworks.core.models import PmcModel
+    monkeypatch.setitem(MODELS, "delta-dvp", PmcModel("delta-dvp", "Delta DVP", "delta"))
+    window.program_info.dialect = "delta-dvp"
+    dialog, combo = _dialog(window, qtbot)
+    assert [combo.itemText(i) for i in range(combo.count())] == ["Delta DVP"]
+    assert not combo.isEnabled()
+    dialog.close()
