@@ -68,3 +68,13 @@ def test_parameter_and_scenario_lines_count_as_the_editor_does() -> None:
     assert [d.line for d in parameters.diagnostics] == [3]
     scenario = parse_scenario(f"PMC SIGNAL DATA\nREMARK,{ODD}\nSET,0,Q9.9,1\n")
     assert [d.line for d in scenario.diagnostics] == [3]
+
+
+def test_the_plc_control_screen_keeps_the_lines(window: MainWindow) -> None:
+    control = window.plc_docks.control
+    control.set_text(WRITES_INPUT)
+    assert control.program_text() == WRITES_INPUT
+    assert control.editor.blockCount() == len(split_lines(WRITES_INPUT)) + 1
+    control.stripe_ms = 0
+    result = control.compile()
+    assert [(d.code, d.line) for d in result.diagnostics if d.is_error] == [("write-input", 8)]

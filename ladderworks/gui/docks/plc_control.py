@@ -26,6 +26,7 @@ from ladderworks.core.il import Program, decode, parse, print_program
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
+from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.locale_numbers import decimal
 from ladderworks.gui.os_errors import os_error_text
@@ -173,7 +174,7 @@ class PlcControlDock(Retranslating, QDockWidget):
         """Show a mnemonic program (nothing compiled yet)."""
         self._pending = None
         self.path = path
-        self.editor.setPlainText(text)
+        self.editor.setPlainText(bad_bytes_shown(text))  # what Qt's widget would change, kept
         self.editor.set_diagnostics([])
         self.editor.set_converted(0)
 
@@ -201,13 +202,13 @@ class PlcControlDock(Retranslating, QDockWidget):
         """Put a loaded program's deferred text into the editor, all converted."""
         make, self._pending = self._pending, None
         if make is not None:
-            self.editor.setPlainText(make())
+            self.editor.setPlainText(bad_bytes_shown(make()))
             self.editor.set_converted(self.editor.blockCount())
 
     def program_text(self) -> str:
         """The mnemonic text on the screen (a deferred loaded text is made first)."""
         self._fill()
-        return self.editor.toPlainText()
+        return bad_bytes_back(self.editor.toPlainText())
 
     def _show_loaded(self) -> None:
         self.loaded.setText(translate("PlcControl", "In the PLC: {0}").format(self.loaded_name)
