@@ -4,107 +4,107 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="120"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="123"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="162"/>
         <source>Alarm message file</source>
         <translation>Alarm mesaj dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="157"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm dosyaları (*.dat);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>Programın mesajları (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="167"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="174"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm dosyası... bunun yerine bir AlarmMsg.dat kullanır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="178"/>
         <source>No alarm file</source>
         <translation>Alarm dosyası yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="173"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="180"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} mesaj</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="184"/>
         <source>{0} lines with problems</source>
         <translation>{0} satırda sorun var</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="191"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="202"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="209"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(alarm dosyasında {0} numaralı mesaj yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="243"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>Bit yeniden 0: RESET bu alarmı siler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
         <source>Seen at {0}</source>
         <translation>Görüldüğü saat: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="282"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
         <source>Alarms</source>
         <translation>ALARMLAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="285"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="294"/>
         <source>Alarm file...</source>
         <translation>Alarm dosyası...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="297"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="291"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="298"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="299"/>
         <source>PLC time</source>
         <translation>PLC zamanı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="293"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="300"/>
         <source>Clock</source>
         <translation>Saat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="294"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="301"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
@@ -1502,17 +1502,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="145"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="146"/>
         <source>No reference entry for this instruction.</source>
         <translation>Bu komut için başvuru kaydı yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="157"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="158"/>
         <source>Instruction reference</source>
         <translation>Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="158"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="159"/>
         <source>Search, e.g. TMR</source>
         <translation>Ara, örn. TMR</translation>
     </message>
@@ -1520,7 +1520,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="81"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="86"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -1530,34 +1530,32 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="86"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="202"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="35"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="91"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="95"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="122"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="120"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="36"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="129"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="133"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="133"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="137"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -1567,28 +1565,28 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="96"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="100"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="156"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="160"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="169"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="173"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="76"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="81"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="71"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="76"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -1598,17 +1596,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="237"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="240"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="249"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="252"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="259"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="262"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -1853,193 +1851,193 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <location filename="../ladderworks/gui/main_window.py" line="198"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="406"/>
+        <location filename="../ladderworks/gui/main_window.py" line="415"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="412"/>
+        <location filename="../ladderworks/gui/main_window.py" line="421"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="419"/>
+        <location filename="../ladderworks/gui/main_window.py" line="428"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="265"/>
-        <location filename="../ladderworks/gui/main_window.py" line="414"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="430"/>
+        <location filename="../ladderworks/gui/main_window.py" line="264"/>
+        <location filename="../ladderworks/gui/main_window.py" line="423"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="119"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="109"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="149"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="167"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="155"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="200"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="208"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="209"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="335"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="282"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="460"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="314"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="316"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
         <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="319"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="321"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="376"/>
+        <location filename="../ladderworks/gui/main_window.py" line="385"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="392"/>
+        <location filename="../ladderworks/gui/main_window.py" line="401"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="456"/>
+        <location filename="../ladderworks/gui/main_window.py" line="465"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="459"/>
+        <location filename="../ladderworks/gui/main_window.py" line="468"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="491"/>
+        <location filename="../ladderworks/gui/main_window.py" line="500"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="492"/>
+        <location filename="../ladderworks/gui/main_window.py" line="501"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2429,128 +2427,133 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="150"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC KONTROL EKRANI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
         <source>Open .MOD…</source>
         <translation>.MOD aç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
-        <source>Take the console&apos;s program</source>
-        <translation>Konsoldaki programı al</translation>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <source>Show the console&apos;s program as text</source>
+        <translation>Konsolun programını metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
         <source>Compile</source>
         <translation>Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="328"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="336"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="158"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="164"/>
+        <source>Shows the console&apos;s program here as mnemonic text, to read or change before Compile on this screen. F9 (PLC › Compile) loads the console&apos;s program into the PLC directly.</source>
+        <translation>Konsolun programını burada mnemonic metin olarak gösterir; bu ekranda Derle&apos;den önce okumak veya değiştirmek için. F9 (PLC › Derle) konsolun programını doğrudan PLC&apos;ye yükler.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="194"/>
         <source>Program loaded from the console</source>
         <translation>Program konsoldan yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="214"/>
         <source>In the PLC: {0}</source>
         <translation>PLC&apos;deki program: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="216"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="224"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="229"/>
         <source>Opened {0}</source>
         <translation>{0} açıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="235"/>
         <source>Open mnemonic program</source>
         <translation>Mnemonik program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="228"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod *.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="244"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>Konsoldaki program kodlanamıyor: hata listesine bakın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="240"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="248"/>
         <source>Program taken from the console</source>
         <translation>Program konsoldan alındı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="275"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="283"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Derleme başarısız: {0} hata. {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="295"/>
         <source>Converting…</source>
         <translation>Çevriliyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="311"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="319"/>
         <source>the program on this screen</source>
         <translation>bu ekrandaki program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="315"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="323"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Derleme bitti — {0} devre, {1} byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="318"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="326"/>
         <source>({0} warning(s))</source>
         <translation>({0} uyarı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="329"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="337"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} sinyal zorlanmış veya eleman pasif. PLC bunlarla başlatılsın mı?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="336"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="344"/>
         <source>Compile a program first</source>
         <translation>Önce bir program derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="357"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="365"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="360"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="368"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="371"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="366"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="374"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>
@@ -2736,6 +2739,39 @@
         <location filename="../ladderworks/gui/docks/online.py" line="203"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Sinyalini zorlamak için bir kontak veya çıkış seçin</translation>
+    </message>
+</context>
+<context>
+    <name>PlcState</name>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="24"/>
+        <source>RUN</source>
+        <translation>ÇALIŞIYOR</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="24"/>
+        <source>STOP</source>
+        <translation>DURDU</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="25"/>
+        <source>no program loaded</source>
+        <translation>yüklü program yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="27"/>
+        <source>{0} forced</source>
+        <translation>{0} zorlanmış</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="56"/>
+        <source>The simulated PLC: running (RUN) or stopped (STOP), and the program loaded into it (F9).</source>
+        <translation>Benzetilen PLC: çalışıyor (ÇALIŞIYOR) veya durdu (DURDU), ve içine yüklenen program (F9).</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/plc_state.py" line="59"/>
+        <source>Signals are forced: the PLC does not see the machine&apos;s values for them (PLC › Release the force).</source>
+        <translation>Sinyaller zorlanmış: PLC bunlar için makinenin değerlerini görmüyor (PLC › Zorlamayı bırak).</translation>
     </message>
 </context>
 <context>
@@ -2993,224 +3029,231 @@
 <context>
     <name>ProgramProperties</name>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="31"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="48"/>
         <source>Machine-tool builder</source>
         <translation>Takım tezgâhı üreticisi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="32"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="49"/>
         <source>Machine-tool name</source>
         <translation>Takım tezgâhı adı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="33"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="50"/>
         <source>PMC &amp; NC type</source>
         <translation>PMC ve NC tipi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="34"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="51"/>
         <source>Program number</source>
         <translation>Program numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="52"/>
         <source>Edition</source>
         <translation>Sürüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="53"/>
         <source>Drawing number</source>
         <translation>Çizim numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="37"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="54"/>
         <source>Date</source>
         <translation>Tarih</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="38"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="55"/>
         <source>Designed by</source>
         <translation>Tasarlayan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="39"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="56"/>
         <source>ROM written by</source>
         <translation>ROM&apos;a yazan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="40"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
         <source>Remarks</source>
         <translation>Notlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
-        <source>FANUC LADDER-III export</source>
-        <translation>FANUC LADDER-III dışa aktarımı</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="61"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="35"/>
         <source>LadderWorks (seed manual)</source>
         <translation>LadderWorks (temel kılavuz)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="36"/>
+        <source>FANUC Series 30i-A PMC (memory-B)</source>
+        <translation>FANUC Series 30i-A PMC (bellek-B)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
         <source>yes</source>
         <translation>evet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="65"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
         <source>no</source>
         <translation>hayır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="68"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="83"/>
         <source>File</source>
         <translation>Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="69"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="84"/>
         <source>(not saved)</source>
         <translation>(kaydedilmedi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="70"/>
-        <source>Dialect</source>
-        <translation>Lehçe</translation>
+        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="144"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="180"/>
+        <source>PMC model</source>
+        <translation>PMC modeli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="71"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="86"/>
         <source>Encoding</source>
         <translation>Kodlama</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="72"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="87"/>
         <source>Byte order mark</source>
         <translation>Bayt sırası işareti (BOM)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="73"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="88"/>
         <source>Line ends</source>
         <translation>Satır sonları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="74"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="89"/>
         <source>Framed in %@A … %@E</source>
         <translation>%@A … %@E çerçeveli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="75"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="90"/>
         <source>Networks</source>
         <translation>Devreler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="76"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="91"/>
         <source>Steps</source>
         <translation>Adımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="78"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="93"/>
         <source>Symbols (%@2)</source>
         <translation>Semboller (%@2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="95"/>
         <source>Messages (%@4)</source>
         <translation>Mesajlar (%@4)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="141"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="174"/>
+        <source>The PMC the program is written for: its address map and the ranges of its instructions. Kept in the file as a comment line the seed&apos;s tools skip.</source>
+        <translation>Programın yazıldığı PMC: adres haritası ve komutlarının aralıkları. Dosyada, seed araçlarının atladığı bir yorum satırı olarak saklanır.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/program_properties.py" line="190"/>
         <source>Program properties</source>
         <translation>Program özellikleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="199"/>
         <source>General</source>
         <translation>Genel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="150"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="200"/>
         <source>Property</source>
         <translation>Özellik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="151"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="201"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="153"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="203"/>
         <source>Title (%@1)</source>
         <translation>Başlık (%@1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="154"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="158"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
         <source>Item</source>
         <translation>Öğe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="154"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
         <source>Meaning</source>
         <translation>Anlamı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="155"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="205"/>
         <source>Text</source>
         <translation>Metin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="157"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
         <source>System parameters (%@0)</source>
         <translation>Sistem parametreleri (%@0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="160"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="210"/>
         <source>I/O modules (%@5)</source>
         <translation>G/Ç modülleri (%@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="161"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="161"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
         <source>Group</source>
         <translation>Grup</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
         <source>Base</source>
         <translation>Taban</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="162"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
         <source>Slot</source>
         <translation>Yuva</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="163"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="213"/>
         <source>Module</source>
         <translation>Modül</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="166"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="216"/>
         <source>Sections</source>
         <translation>Bölümler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="167"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
         <source>Header</source>
         <translation>Başlık satırı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="167"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
         <source>Lines</source>
         <translation>Satırlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="168"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
         <source>First line</source>
         <translation>İlk satır</translation>
     </message>
@@ -3515,6 +3558,11 @@
         <location filename="../ladderworks/gui/signal_list.py" line="182"/>
         <source>Description</source>
         <translation>Açıklama</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/signal_list.py" line="206"/>
+        <source>{0}: FANUC&apos;s name (* = active low: 0 means on); the seed manual writes {1}. Source: {2}</source>
+        <translation>{0}: FANUC&apos;nun adı (* = aktif düşük: 0 etkin demektir); seed el kitabı {1} yazar. Kaynak: {2}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/signal_list.py" line="168"/>

@@ -54,6 +54,21 @@ AREA_RANGES: dict[Area, tuple[tuple[int, int], ...]] = {
     Area.E: ((0, 9999),),  # extra relays
 }
 
+# The seed manual's own map (a LadderWorks "seed" program): no E area; A00-A99 (000, part 3).
+# A FANUC 30i program has AREA_RANGES (docs/address-map.md).
+SEED_AREA_RANGES: dict[Area, tuple[tuple[int, int], ...]] = {
+    Area.X: ((0, 127),),
+    Area.Y: ((0, 127),),
+    Area.F: ((0, 767),),
+    Area.G: ((0, 767),),
+    Area.R: ((0, 9499),),  # R0..R8999 and the system relays from R9000
+    Area.A: ((0, 99),),
+    Area.D: ((0, 9999),),
+    Area.T: ((0, 399),),
+    Area.C: ((0, 79),),
+    Area.K: ((0, 99),),
+}
+
 # Number of bytes to allocate for each area: its highest byte number + 1.
 AREA_SIZES: dict[Area, int] = {area: ranges[-1][1] + 1 for area, ranges in AREA_RANGES.items()}
 

@@ -1,10 +1,11 @@
-"""The F, G, X and Y signal dictionary of the seed manual: lookup by address, search by text."""
+"""The F, G, X and Y signal dictionary of the seed manual (with FANUC's `*` spelling of the
+active-low signals): lookup by address, search by text."""
 
 from __future__ import annotations
 
 import csv
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cache
 from pathlib import Path
 
@@ -15,6 +16,10 @@ from ladderworks.core.address import Address, AddressError, Area, parse_address
 SIGNAL_AREAS: tuple[Area, ...] = (Area.F, Area.G, Area.X, Area.Y)
 SIGNAL_FILES: dict[Area, str] = {area: f"{area.value.lower()}_signals.csv" for area in SIGNAL_AREAS}
 CSV_COLUMNS: tuple[str, ...] = ("address", "name", "english", "turkish", "notes", "board")
+# FANUC's own names of the signals whose name has a `*` (active low), which the seed's F/G
+# table drops; with where each comes from (docs/signals.md)
+FANUC_NAMES_FILE = "fanuc_names.csv"
+FANUC_COLUMNS: tuple[str, ...] = ("address", "fanuc", "seed", "source")
 
 # Turkish letters and their ASCII spelling, so `acil` finds `ACİL` and `is mili` finds `İŞ MİLİ`.
 # Both I and ı fold to i: a technician typing on an English keyboard cannot tell them apart.
@@ -40,6 +45,8 @@ class Signal:
     turkish: str
     notes: str = ""
     board: str = ""
+    seed_name: str = ""  # the seed manual's spelling when FANUC's differs (`ESP` for `*ESP`)
+    source: str = ""  # where FANUC's spelling comes from, when it differs
 
     @property
     def is_byte(self) -> bool:
@@ -48,7 +55,13 @@ class Signal:
 
     def text(self) -> str:
         """Every searchable text of the signal, folded."""
-        return fold(" ".join((self.name, self.english, self.turkish, self.notes)))
+        return fold(" ".join((self.name, self.seed_name, self.english, self.turkish,
+                              self.notes)))
+
+    def names(self) -> tuple[str, ...]:
+        """Every spelling of its name, folded: FANUC's, the seed's, and FANUC's without `*`."""
+        spellings = (self.name, self.seed_name, self.name.lstrip("*"))
+        return tuple(dict.fromkeys(fold(name) for name in spellings if name))
 
 
 def fold(text: str) -> str:
@@ -88,12 +101,34 @@ def read_signal_file(path: Path, area: Area) -> list[Signal]:
     return signals
 
 
+def read_fanuc_names(path: Path) -> dict[Address, tuple[str, str, str]]:
+    """FANUC's spelling of each starred signal: address -> (FANUC name, seed name, source)."""
+    names: dict[Address, tuple[str, str, str]] = {}
+    with path.open(encoding="utf-8", newline="") as handle:
+        reader = csv.DictReader(handle)
+        if tuple(reader.fieldnames or ()) != FANUC_COLUMNS:
+            raise ValueError(f"{path}: columns must be {','.join(FANUC_COLUMNS)}")
+        for row in reader:
+            names[parse_address(row["address"])] = (row["fanuc"].strip(), row["seed"].strip(),
+                                                    row["source"].strip())
+    return names
+
+
 @cache
 def load_signals() -> tuple[Signal, ...]:
-    """Every signal of resources/signals/, ordered by address (read once, then cached)."""
+    """Every signal of resources/signals/, ordered by address (read once, then cached); a
+    signal FANUC names with a `*` has FANUC's name, the seed's kept as `seed_name`."""
     signals: list[Signal] = []
     for area, filename in SIGNAL_FILES.items():
         signals.extend(read_signal_file(paths.signals_dir() / filename, area))
+    fanuc = read_fanuc_names(paths.signals_dir() / FANUC_NAMES_FILE)
+    for index, signal in enumerate(signals):
+        if signal.address in fanuc:
+            name, seed, source = fanuc[signal.address]
+            if seed != signal.name:
+                raise ValueError(f"{FANUC_NAMES_FILE}: {signal.address} is {signal.name!r} in "
+                                 f"the seed's table, not {seed!r}")
+            signals[index] = replace(signal, name=name, seed_name=seed, source=source)
     return tuple(sorted(signals, key=lambda s: sort_key(s.address)))
 
 
@@ -160,9 +195,9 @@ def _words(text: str) -> list[str]:
 
 
 @cache
-def _search_index() -> tuple[tuple[Signal, str, tuple[str, ...]], ...]:
-    """Each signal with its folded name and the folded words of its texts."""
-    return tuple((s, fold(s.name), tuple(_words(s.text()))) for s in load_signals())
+def _search_index() -> tuple[tuple[Signal, tuple[str, ...], tuple[str, ...]], ...]:
+    """Each signal with its folded names (every spelling) and the folded words of its texts."""
+    return tuple((s, s.names(), tuple(_words(s.text()))) for s in load_signals())
 
 
 def _word_match(signal_words: tuple[str, ...], query_words: list[str]) -> int:
@@ -177,7 +212,8 @@ def _word_match(signal_words: tuple[str, ...], query_words: list[str]) -> int:
 def search(query: str) -> list[Signal]:
     """Signals matching `query`, best first.
 
-    Matches: an address (`G8.4`; a byte `G8` gives all of G8), a short name (exact or prefix),
+    Matches: an address (`G8.4`; a byte `G8` gives all of G8), a short name (exact or prefix;
+    FANUC's `*ESP`, `ESP` or the seed's spelling alike),
     or words that each begin a word of the name, English, Turkish or notes text. Case and
     Turkish letters are folded (`acil` finds `ACİL`). An empty query gives every signal.
     Order: exact address or name; then name prefixes and whole-word text matches; then
@@ -191,13 +227,15 @@ def search(query: str) -> list[Signal]:
     groups: tuple[list[Signal], list[Signal], list[Signal]] = ([], [], [])
     groups[0].extend(_address_matches(text))
     seen = {signal.address for signal in groups[0]}
-    for signal, name, signal_words in _search_index():
+    bare = folded.lstrip("*")  # `*ESP` and `ESP` find the same signal
+    for signal, names, signal_words in _search_index():
         if signal.address in seen:
             continue
         words = _word_match(signal_words, query_words) if query_words else 0
-        if name == folded:
+        if folded in names or (bare and bare in names):
             groups[0].append(signal)
-        elif name.startswith(folded) or words == 2:
+        elif any(name.startswith(folded) or (bare and name.startswith(bare))
+                 for name in names) or words == 2:
             groups[1].append(signal)
         elif words == 1:
             groups[2].append(signal)

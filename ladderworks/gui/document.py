@@ -14,8 +14,8 @@ from ladderworks.core.collector import release_frozen
 from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.printer import encode_program, print_faithful
-from ladderworks.core.il.reading import parse_bytes
-from ladderworks.core.il.textform import UTF8, TextForm, encode_text
+from ladderworks.core.il.reading import parse_bytes, parse_text
+from ladderworks.core.il.textform import UTF8, TextForm, encode_text, split_lines
 from ladderworks.core.ladder.convert import adopt_origin, damaged_drafts
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.files import atomic_write_bytes, write_target
@@ -51,12 +51,22 @@ _BAD_BYTE = 0xDC00
 _SHOWN_BAD_BYTE = 0x10FC00
 
 
+# Characters a Qt text widget would not give back as they were: its toPlainText() turns the
+# line and paragraph separators into a line feed (a line more than the file has) and a
+# no-break space into a space; shown as visible private-use characters, given back on return.
+_QT_CHANGES = {"\u2028": chr(0x10FD28), "\u2029": chr(0x10FD29), "\u00a0": chr(0x10FDA0)}
+_QT_BACK = {shown: ch for ch, shown in _QT_CHANGES.items()}
+_QT_SHOWN = str.maketrans(_QT_CHANGES)
+_QT_RETURNED = str.maketrans(_QT_BACK)
+
+
 def bad_bytes_shown(text: str) -> str:
-    """Text for a Qt text widget: each kept invalid byte as a visible private-use character."""
+    """Text for a Qt text widget: each kept invalid byte as a visible private-use character
+    (and the characters Qt would change, _QT_CHANGES)."""
     if text.isascii():
         return text
     return "".join(chr(_SHOWN_BAD_BYTE + ord(ch) - _BAD_BYTE) if "\udc80" <= ch <= "\udcff"
-                   else ch for ch in text)
+                   else ch for ch in text).translate(_QT_SHOWN)
 
 
 def bad_bytes_back(text: str) -> str:
@@ -65,7 +75,14 @@ def bad_bytes_back(text: str) -> str:
         return text
     low, high = chr(_SHOWN_BAD_BYTE + 0x80), chr(_SHOWN_BAD_BYTE + 0xFF)
     return "".join(chr(_BAD_BYTE + ord(ch) - _SHOWN_BAD_BYTE) if low <= ch <= high else ch
-                   for ch in text)
+                   for ch in text).translate(_QT_RETURNED)
+
+
+def view_text(program: Program) -> str:
+    """The text the text view shows: the file's own lines (as Save writes them, so a line
+    number of a diagnostic is the view's line), each ended by LF."""
+    lines = split_lines(print_faithful(program))
+    return "\n".join(lines) + "\n" if lines else ""
 
 
 def same_file(a: Path, b: Path) -> bool:
@@ -176,6 +193,17 @@ class ProgramDocument(QObject):
         if program.form == self.form:
             return encode_program(program)
         return encode_text(print_faithful(program), self.form)
+
+    def read_text(self, text: str) -> ParseResult:
+        """Parse the text view's text as a text of this document's file: its lines end with
+        the file's line end, and the program keeps the file's form (encoding, BOM)."""
+        text = bad_bytes_back(text)
+        newline = self.form.newline
+        result = parse_text(text.replace("\n", newline) if newline != "\n" else text)  # sniffed
+        source = result.program.source
+        if source is not None:
+            source.form = replace(self.form, final_newline=source.form.final_newline)
+        return result
 
     def encode_text(self, text: str) -> bytes:
         """Text from the text view as bytes in the document's form (its line ends); EncodeError."""

@@ -24,6 +24,7 @@ from ladderworks.gui.document import (
     bad_bytes_back,
     bad_bytes_shown,
     same_file,
+    view_text,
 )
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.files import ReadOnlyFile, atomic_write_bytes, is_read_only
@@ -221,8 +222,9 @@ class FileActions(_Window):
 
     # -- saving --------------------------------------------------------------------------
 
-    def program_text(self) -> str | None:
-        """The current program as `.LAD` text, or None when it cannot be made (errors listed)."""
+    def program_text(self, *, faithful: bool = False) -> str | None:
+        """The current program as `.LAD` text, or None when it cannot be made (errors listed);
+        `faithful`: the file's own lines, as the text view shows them (`view_text`)."""
         if self.model.showing_text:
             return None
         program, diagnostics = self.model.program()
@@ -230,7 +232,7 @@ class FileActions(_Window):
             self.errors.set_diagnostics(diagnostics)
             self.errors.show()
             return None
-        return print_program(program)
+        return view_text(program) if faithful else print_program(program)
 
     def save(self) -> bool:
         """File > Save (Save As when the program has no file yet)."""

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import re
+from pathlib import PurePath
+
 from PySide6.QtCore import QSize
 from PySide6.QtGui import QShowEvent
 from PySide6.QtWidgets import (
@@ -17,6 +20,7 @@ from PySide6.QtWidgets import (
 from ladderworks.gui.screen_fit import fit_to_screen
 
 WANTED = QSize(900, 560)  # name, size, type and date side by side, also in Turkish
+_PATTERN = re.compile(r"\(\s*\*\.([^\s*?()]+)")  # `(*.LAD`: the first pattern's extension
 
 
 class SizedFileDialog(QFileDialog):
@@ -37,10 +41,30 @@ def make_file_dialog(parent: QWidget | None, caption: str, directory: str, filte
     if saving:
         dialog.setAcceptMode(QFileDialog.AcceptMode.AcceptSave)
         dialog.setFileMode(QFileDialog.FileMode.AnyFile)
+        # a name typed without an extension takes the chosen filter's (before Qt asks
+        # about overwriting, so `name` is asked about as `name.LAD`)
+        dialog.setDefaultSuffix(filter_suffix(dialog.selectedNameFilter()))
+        dialog.filterSelected.connect(lambda chosen: dialog.setDefaultSuffix(
+            filter_suffix(chosen)))
     else:
         dialog.setFileMode(QFileDialog.FileMode.ExistingFile)
     fit_to_screen(dialog, WANTED.expandedTo(dialog.sizeHint()))
     return dialog
+
+
+def filter_suffix(name_filter: str) -> str:
+    """The extension of a filter's first pattern (`Ladder programs (*.LAD *.lad)`: `LAD`);
+    "" for a filter of any name (`*`)."""
+    match = _PATTERN.search(name_filter)
+    return match.group(1) if match else ""
+
+
+def with_suffix(name: str, name_filter: str) -> str:
+    """`name` with the filter's extension added when its file name has none."""
+    suffix = filter_suffix(name_filter)
+    if not name or not suffix or PurePath(name).suffix:
+        return name
+    return f"{name}.{suffix}"
 
 
 def _fit_columns(dialog: QFileDialog) -> None:
@@ -66,10 +90,15 @@ def _widen_places(dialog: QFileDialog) -> None:
 
 
 def _chosen(dialog: QFileDialog) -> str:
-    """The file the user chose in `dialog`, or "" when cancelled."""
+    """The file the user chose in `dialog`, or "" when cancelled (a name to save without an
+    extension takes the chosen filter's, should the dialog not have added it)."""
     files = dialog.selectedFiles() if dialog.exec() == QDialog.DialogCode.Accepted else []
+    name_filter = dialog.selectedNameFilter()
+    saving = dialog.acceptMode() == QFileDialog.AcceptMode.AcceptSave
     dialog.deleteLater()
-    return files[0] if files else ""
+    if not files:
+        return ""
+    return with_suffix(files[0], name_filter) if saving else files[0]
 
 
 def open_file_name(parent: QWidget | None, caption: str, directory: str, filters: str) -> str:

@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core.il.textform import split_lines
 from ladderworks.core.instructions import ALL, InstructionSpec, lookup
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.screen_fit import fit_to_screen, keep_on_screen
@@ -45,7 +46,7 @@ def reference_sections(language: str = "en") -> dict[str, str]:
     lines: list[str] = []
     path = help_page(language)
     text = path.read_text("utf-8") if path.exists() else ""
-    for line in text.splitlines():
+    for line in split_lines(text):
         heading = line.startswith(("## ", "### "))
         if heading and key is not None:
             sections[key] = "\n".join(lines).strip() + "\n"

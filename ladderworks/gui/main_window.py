@@ -30,7 +30,7 @@ from ladderworks.gui.console_menus import Condition, ConsoleMenus
 from ladderworks.gui.dock_tabs import WholeDockTitles
 from ladderworks.gui.docks import cross_reference
 from ladderworks.gui.docks.plc_docks import build_plc_docks
-from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
+from ladderworks.gui.document import bad_bytes_shown
 from ladderworks.gui.editor.interactions import BY_TOOL
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.editor.name_menu import NameDisplayMenu
@@ -115,7 +115,6 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         named = self.actions_by_name
         self.editor.context_actions = [named[name] if name else None for name in CONTEXT_MENU]
         self.plc_docks = build_plc_docks(self, self.menus, PlcSession(self), self.editor)
-        self.program_opened.connect(self.plc_docks.alarms.use_program)
         self.names_menu.changed.connect(self.editor.relayout)
         self.names_menu.changed.connect(self.plc_docks.diagnostic.view.relayout)
         self.plc_docks.diagnostic.remember_zoom(self.settings)  # its zoom, saved
@@ -292,11 +291,23 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """File › Program properties: title, system parameters, I/O modules, sections, form."""
         from ladderworks.gui.program_properties import ProgramPropertiesDialog
 
-        dialog = ProgramPropertiesDialog(self.program_info, self.path, self)
+        dialog = ProgramPropertiesDialog(self.program_info, self.path, self, self.set_pmc_model)
         dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose, True)
         self.properties_dialog = dialog
         dialog.open()
         return dialog
+
+    def set_pmc_model(self, key: str) -> None:
+        """Make `key` the program's PMC model (Program properties): its ranges from now on,
+        kept in the file at the next Save."""
+        program = self.program_info
+        origin = self.model.document.origin  # the program the ladder was laid out from
+        if origin is None:  # a new program: its model is this one's
+            self.model.document.origin = origin = program
+        program.dialect = origin.dialect = key
+        self.dialect = key
+        self.model.mark_modified()
+        self.update_title()
 
     def remember_file(self, path: Path) -> None:
         """Put `path` first in File › Recent files."""
@@ -333,7 +344,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Show the program as instruction-list text."""
         if self.model.showing_text:
             return
-        text = self.program_text()
+        text = self.program_text(faithful=True)
         if text is None:
             return
         self.text_view.setPlainText(bad_bytes_shown(text))
@@ -344,10 +355,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Parse the text view and show it as ladder; errors stay in the text view."""
         if not self.model.showing_text:
             return True
-        from ladderworks.core.il.reading import parse_text  # a Delta text: Delta's reader
-
         modified = self.text_view.document().isModified()
-        result = parse_text(bad_bytes_back(self.text_view.toPlainText()))
+        result = self.document.read_text(self.text_view.toPlainText())  # in the file's form
         self.errors.set_diagnostics(result.diagnostics)
         if not result.ok:
             self.errors.show()

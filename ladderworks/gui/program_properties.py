@@ -1,5 +1,5 @@
-"""File › Program properties: the title, system parameters, I/O modules, sections and text form
-of the open program, read-only (LADDER-III's `%@0`, `%@1`, `%@5` sections)."""
+"""File › Program properties: the program's PMC model (chosen here), and its title, system
+parameters, I/O modules, sections and text form, read-only (LADDER-III's `%@0`, `%@1`, `%@5`)."""
 
 from __future__ import annotations
 
@@ -9,8 +9,10 @@ from pathlib import Path
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import (
     QAbstractItemView,
+    QComboBox,
     QDialog,
     QDialogButtonBox,
+    QFormLayout,
     QHeaderView,
     QTableWidget,
     QTableWidgetItem,
@@ -20,11 +22,26 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core import dialects
-from ladderworks.core.il.program import FANUC, Program
+from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
+from ladderworks.core.il.program import FANUC, SEED, Program
+from ladderworks.core.models import MODELS, model_of, same_family
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import ui_is_turkish
 
 translate = QCoreApplication.translate
+
+# The models' titles in the UI language (a model registered later shows its English title).
+MODEL_TITLES: dict[str, str] = {
+    SEED: QT_TRANSLATE_NOOP("ProgramProperties", "LadderWorks (seed manual)"),
+    FANUC: QT_TRANSLATE_NOOP("ProgramProperties", "FANUC Series 30i-A PMC (memory-B)"),
+}
+
+
+def model_title(key: str) -> str:
+    """A model's title in the UI language."""
+    title = MODEL_TITLES.get(key)
+    return translate("ProgramProperties", title) if title else model_of(key).title
+
 
 # The `%@1` title items, in the order of the PMC title screen (FANUC-PMC.md §2).
 TITLE_ITEMS: dict[int, Callable[[], str]] = {
@@ -54,20 +71,18 @@ def title_rows(program: Program) -> list[tuple[str, str, str]]:
 
 
 def general_rows(program: Program, path: Path | None) -> list[tuple[str, str]]:
-    """(property, value): file, dialect, text form, networks, steps, symbols, messages."""
+    """(property, value): file, PMC model, text form, networks, steps, symbols, messages."""
     form = program.form
     ends = {"\r\n": "CR LF", "\r": "CR", "\n": "LF"}.get(form.newline, repr(form.newline))
-    dialect = (translate("ProgramProperties", "FANUC LADDER-III export") if program.dialect == FANUC
-               else translate("ProgramProperties", "LadderWorks (seed manual)"))
     other = dialects.of(program)
-    if other is not None:  # a Delta program: the dialect's own title, in the UI language
-        dialect = other.title_tr if ui_is_turkish() else other.title
+    dialect = ((other.title_tr if ui_is_turkish() else other.title) if other is not None
+               else model_title(program.dialect))  # a Delta program: its own title
     yes, no = translate("ProgramProperties", "yes"), translate("ProgramProperties", "no")
     symbols = program.symbols
     return [
         (translate("ProgramProperties", "File"), str(path) if path else
          translate("ProgramProperties", "(not saved)")),
-        (translate("ProgramProperties", "Dialect"), dialect),
+        (translate("ProgramProperties", "PMC model"), dialect),
         (translate("ProgramProperties", "Encoding"), form.encoding),
         (translate("ProgramProperties", "Byte order mark"), yes if form.bom else no),
         (translate("ProgramProperties", "Line ends"), ends),
@@ -115,11 +130,20 @@ class ProgramPropertiesDialog(Retranslating, QDialog):
     """Read-only tabs: General, Title (`%@1`), System parameters (`%@0`), I/O modules (`%@5`),
     Sections."""
 
-    def __init__(self, program: Program, path: Path | None, parent: QWidget | None = None) -> None:
+    def __init__(self, program: Program, path: Path | None, parent: QWidget | None = None,
+                 choose_model: Callable[[str], None] | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("dialog_program_properties")
         self.program = program
         self.path = path
+        self.choose_model = choose_model  # makes a model the program's (None: read-only)
+        self.model_combo = QComboBox(self)
+        self.model_combo.setObjectName("properties_model")
+        self.model_combo.activated.connect(self._model_chosen)
+        form = QFormLayout()
+        self.model_label_text = translate("ProgramProperties", "PMC model")
+        form.addRow(self.model_label_text, self.model_combo)
+        self.model_form = form
         self.tabs = QTabWidget(self)
         self.tabs.setObjectName("properties_tabs")
         self.tables: dict[str, QTableWidget] = {}
@@ -128,6 +152,7 @@ class ProgramPropertiesDialog(Retranslating, QDialog):
         buttons.rejected.connect(self.reject)
         buttons.accepted.connect(self.accept)
         layout = QVBoxLayout(self)
+        layout.addLayout(form)
         layout.addWidget(self.tabs, 1)
         layout.addWidget(buttons)
         self.resize(720, 440)
@@ -136,9 +161,34 @@ class ProgramPropertiesDialog(Retranslating, QDialog):
         """Rebuild the tabs in the new language on a live switch (the shown tab stays)."""
         self._fill()
 
+    def _fill_models(self) -> None:
+        """The models of the program's family; another family's model is shown read-only."""
+        combo = self.model_combo
+        combo.clear()
+        current = self.program.dialect
+        models = same_family(current) if current in MODELS else []
+        for model in models or [model_of(current)]:
+            combo.addItem(model_title(model.key), model.key)
+        combo.setCurrentIndex(max(combo.findData(current), 0))
+        combo.setEnabled(self.choose_model is not None and len(models) > 1)
+        combo.setToolTip(translate(
+            "ProgramProperties", "The PMC the program is written for: its address map and "
+            "the ranges of its instructions. Kept in the file as a comment line the seed's "
+            "tools skip."))
+        label = self.model_form.labelForField(combo)
+        if label is not None:
+            label.setProperty("text", translate("ProgramProperties", "PMC model"))
+
+    def _model_chosen(self, index: int) -> None:
+        key = self.model_combo.itemData(index)
+        if self.choose_model is not None and key and key != self.program.dialect:
+            self.choose_model(key)
+            self._fill()
+
     def _fill(self) -> None:
         program, path = self.program, self.path
         self.setWindowTitle(translate("ProgramProperties", "Program properties"))
+        self._fill_models()
         shown = self.tabs.currentIndex()
         while self.tabs.count():
             page = self.tabs.widget(0)

@@ -116,7 +116,7 @@ class SignalListDock(Retranslating, QDockWidget):
             own, other = ((signal.turkish, signal.english) if turkish_first
                           else (signal.english, signal.turkish))
             rows.append(((str(signal.address), signal.name, own, other),
-                         "\n".join(t for t in (own, other, signal.notes) if t)))
+                         "\n".join(t for t in (own, other, signal.notes, _star(signal)) if t)))
         for row, (texts, tip) in enumerate(rows):
             for column, text in enumerate(texts):
                 item = QTableWidgetItem(text)
@@ -197,3 +197,12 @@ class SignalListDock(Retranslating, QDockWidget):
         if self._stale:
             self.show_matches(self.query.text())
         super().showEvent(event)
+
+
+def _star(signal: PlcSignal) -> str:
+    """What a FANUC `*` name means and where it comes from (empty for the others)."""
+    if not signal.seed_name:
+        return ""
+    return translate("SignalList", "{0}: FANUC's name (* = active low: 0 means on); the seed "
+                     "manual writes {1}. Source: {2}").format(
+        signal.name, signal.seed_name, signal.source)

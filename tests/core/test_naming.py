@@ -16,8 +16,8 @@ def _table(symbol: str, *comments: str) -> SymbolTable:
 
 
 def test_without_program_symbols_the_manual_names_the_signal() -> None:
-    assert address_names(G84, None) == Names("ESP", "EMERGENCY STOP")
-    assert address_names(G84, None, turkish=True) == Names("ESP", "ACİL DUR")
+    assert address_names(G84, None) == Names("*ESP", "EMERGENCY STOP")
+    assert address_names(G84, None, turkish=True) == Names("*ESP", "ACİL DUR")
 
 
 def test_the_programs_symbol_and_comment_come_first() -> None:
@@ -26,7 +26,7 @@ def test_the_programs_symbol_and_comment_come_first() -> None:
 
 
 def test_a_program_comment_without_a_symbol_is_not_hidden_behind_the_manual() -> None:
-    assert address_names(G84, _table("", "KENDİ AÇIKLAMAM")) == Names("ESP", "KENDİ AÇIKLAMAM")
+    assert address_names(G84, _table("", "KENDİ AÇIKLAMAM")) == Names("*ESP", "KENDİ AÇIKLAMAM")
 
 
 def test_a_program_symbol_without_a_comment_keeps_the_manuals_description() -> None:

@@ -95,7 +95,7 @@ def test_manual_rows_reassembled() -> None:
     assert [s.name for s in signals_in_byte("F5")] == [f"MBDT{i}" for i in range(2, 10)]
     assert signal_at("F55.7").name == "UO15"  # type: ignore[union-attr]
     assert signal_at("F303.7").name == "PD01X31"  # type: ignore[union-attr]
-    assert signal_at("G11.7").name == "JV15"  # type: ignore[union-attr]
+    assert signal_at("G11.7").name == "*JV15"  # type: ignore[union-attr]
     assert signal_at("G102.0").name == "-J1"  # type: ignore[union-attr]
     hw = signal_at("X0.0")
     assert hw is not None and hw.name == "HW_ESTP" and hw.board == "FP105/J1"
@@ -122,7 +122,7 @@ def test_signal_at_accepts_leading_zeros(text: str) -> None:
 
 
 def test_signal_at_address_object_and_misses() -> None:
-    assert signal_at(Address(Area.G, 8, 4)).name == "ESP"  # type: ignore[union-attr]
+    assert signal_at(Address(Area.G, 8, 4)).name == "*ESP"  # type: ignore[union-attr]
     assert signal_at("F0.0") is None
     assert signal_at("R100.0") is None
     assert signal_at("not an address") is None
@@ -137,7 +137,7 @@ def test_bit_of_a_byte_signal_gives_the_byte() -> None:
 
 def test_signals_in_byte() -> None:
     names = [s.name for s in signals_in_byte("G8.4")]
-    assert names == ["IT", "ESP", "SP", "ERS"]
+    assert names == ["*IT", "*ESP", "*SP", "ERS"]
     assert [s.address.bit for s in signals_in_byte("G8")] == [0, 4, 5, 7]
     assert signals_in_byte("R0") == []
     assert signals_in_byte("???") == []
@@ -174,23 +174,23 @@ def test_search_exact_name_before_prefix() -> None:
 
 
 def test_search_by_address_and_byte() -> None:
-    assert [s.name for s in search("G8.4")] == ["ESP"]
-    assert [s.name for s in search("G008.4")] == ["ESP"]
+    assert [s.name for s in search("G8.4")] == ["*ESP"]
+    assert [s.name for s in search("G008.4")] == ["*ESP"]
     assert [str(s.address) for s in search("G8")][:4] == ["G8.0", "G8.4", "G8.5", "G8.7"]
 
 
 def test_search_turkish_folding() -> None:
     names = [s.name for s in search("acil")]
-    assert names[0] == "ESP"  # ACİL DUR as a whole word comes before AÇILDI
+    assert names[0] == "*ESP"  # ACİL DUR as a whole word comes before AÇILDI
     assert "HW_ESTP" in names
-    assert [s.name for s in search("acil dur")] == ["ESP", "HW_ESTP"]
-    assert "ESP" in [s.name for s in search("ACİL")]
+    assert [s.name for s in search("acil dur")] == ["*ESP", "HW_ESTP"]
+    assert "*ESP" in [s.name for s in search("ACİL")]
     assert "ENB" in [s.name for s in search("is mili")]
     assert "ENB" in [s.name for s in search("İŞ MİLİ")]
 
 
 def test_search_english_words_and_notes() -> None:
-    assert [s.name for s in search("emergency stop")] == ["ESP"]
+    assert [s.name for s in search("emergency stop")] == ["*ESP"]
     assert [s.name for s in search("feed hold")] == ["SPL"]
     assert "SA" in [s.name for s in search("servo ready")]
 
@@ -222,7 +222,7 @@ def test_cli_signals_esp(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["signals", "G8.4"]) == 0
     out = capsys.readouterr().out
     assert out.splitlines() == [out.rstrip("\n")]
-    assert out.startswith("G8.4  ESP")
+    assert out.startswith("G8.4  *ESP")
     assert "EMERGENCY STOP" in out and "ACİL DUR" in out
 
 
@@ -245,3 +245,40 @@ def test_cli_signals_no_match(capsys: pytest.CaptureFixture[str]) -> None:
     captured = capsys.readouterr()
     assert captured.out == ""
     assert "no signal matches 'qqqq'" in captured.err
+
+
+# ------------------------------------------------------------------ FANUC's `*` names
+
+
+def test_fanuc_star_names_replace_the_seeds_spelling_with_their_source() -> None:
+    for address, fanuc, seed in (("G8.4", "*ESP", "ESP"), ("G8.0", "*IT", "IT"),
+                                 ("G8.5", "*SP", "SP"), ("G114.0", "*+L1", "LMS1P")):
+        signal = signal_at(address)
+        assert signal is not None
+        assert (signal.name, signal.seed_name) == (fanuc, seed)
+        assert "FANUC_STUDER_X22_P036" in signal.source
+    plain = signal_at("G8.7")
+    assert plain is not None and (plain.name, plain.seed_name, plain.source) == ("ERS", "", "")
+
+
+@pytest.mark.parametrize("query", ["*ESP", "ESP", "esp", "*esp"])
+def test_a_starred_signal_is_found_by_either_spelling(query: str) -> None:
+    assert str(search(query)[0].address) == "G8.4"
+
+
+def test_the_star_names_are_the_real_exports_symbols() -> None:
+    """Each row of fanuc_names.csv: the seed's name at that address, and the same FANUC
+    name in the real programs' symbol tables it cites."""
+    from tests.real_programs import real_programs_dir
+    with (paths.SIGNALS / "fanuc_names.csv").open(encoding="utf-8", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    assert len(rows) >= 60
+    texts = {name: (real_programs_dir() / f"{name}.txt").read_bytes().decode("utf-8")
+             for name in ("FANUC_STUDER_X22_P036", "FANUC_STUDER_S41_F036")}
+    seed = {str(s.address): s.seed_name for s in load_signals() if s.seed_name}
+    for row in rows:
+        assert row["fanuc"].startswith("*")
+        assert seed[row["address"]] == row["seed"]
+        for name in ("FANUC_STUDER_X22_P036", "FANUC_STUDER_S41_F036"):
+            if name in row["source"]:
+                assert f"\n{row['address']}" in texts[name] and row["fanuc"] in texts[name]

@@ -10,13 +10,13 @@ from PySide6.QtCore import QRect, Qt
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
-from ladderworks.core.il import parse
 from ladderworks.gui.docks import alarms as alarm_panel
 from ladderworks.gui.docks.alarms import AlarmDock, plc_time_text
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.translation import UiLanguage
 from tests.gui.plc_examples import running_session
+from tests.real_programs import real_programs_dir
 
 MOVING = parse_address("F102.0")  # MV1, X axis moving: the example writes A0.0
 
@@ -103,12 +103,51 @@ def test_the_window_puts_its_actions_in_the_menus(window: MainWindow) -> None:
     assert dock.objectName() == "alarmDock" and dock.isVisible()  # shown by default
 
 
-def test_an_opened_programs_messages_reach_the_panel(window: MainWindow) -> None:
-    program = parse("%@3\nRD X0.0\nWRT A0.0\n%@4\nA0.0\t1000 SPINDLE ALARM\n%\n").program
-    assert len(program.messages) == 1
-    window.program_opened.emit(program)  # the window tells the panel, nothing else does
-    assert window.plc_docks.alarms.program_messages == 1
-    assert "(%@4): 1" in window.plc_docks.alarms.file_label.text()
+SPINDLE = "%@3\nRD X0.0\nWRT A0.0\n%\n%@4\nA0.0\t1000 SPINDLE ALARM\n%\n"
+PLAIN = "%@3\nRD X0.0\nWRT A0.0\n%\n"
+A0 = parse_address("A0.0")
+
+
+def _f9(qtbot: QtBot, window: MainWindow) -> None:
+    """PLC › Compile (F9): the console's program into the PLC."""
+    with qtbot.waitSignal(window.plc_docks.session.program_loaded, timeout=30_000):
+        window.actions_by_name["action_compile"].trigger()
+
+
+def test_the_texts_are_the_loaded_programs_until_another_is_loaded(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path) -> None:
+    dock = window.plc_docks.alarms
+    table = window.plc_docks.session.run.alarm_table
+    sample = table.text_for(A0)
+    assert sample and "SPINDLE" not in sample  # the sample AlarmMsg.dat before any load
+    spindle, plain = tmp_path / "spindle.LAD", tmp_path / "plain.LAD"
+    spindle.write_text(SPINDLE, encoding="utf-8")
+    plain.write_text(PLAIN, encoding="utf-8")
+    assert window.load(spindle)
+    assert dock.session.run.alarm_table.text_for(A0) == sample  # opened, not loaded: unchanged
+    _f9(qtbot, window)
+    assert dock.program_messages == 1
+    assert dock.session.run.alarm_table.text_for(A0) == "1000 SPINDLE ALARM"
+    window.actions_by_name["action_new"].trigger()  # File › New: the PLC still runs it
+    assert dock.session.run.alarm_table.text_for(A0) == "1000 SPINDLE ALARM"
+    assert window.load(plain)  # File › Open of a program without messages
+    assert dock.session.run.alarm_table.text_for(A0) == "1000 SPINDLE ALARM"
+    assert "(%@4): 1" in dock.file_label.text()
+    _f9(qtbot, window)  # now the PLC has a program without `%@4`: the sample file's texts
+    assert dock.program_messages == 0
+    assert dock.session.run.alarm_table.text_for(A0) == sample
+
+
+def test_s41_alarm_keeps_its_programs_text_after_file_new(qtbot: QtBot, window: MainWindow
+                                                         ) -> None:
+    assert window.load(real_programs_dir() / "FANUC_STUDER_S41_F036.txt")
+    _f9(qtbot, window)
+    a05 = parse_address("A0.5")
+    table = window.plc_docks.session.run.alarm_table
+    assert window.plc_docks.session.run.alarm_table.text_for(a05) == "1999 STUDER OPTIONS NOT SET"
+    window.actions_by_name["action_new"].trigger()
+    assert window.plc_docks.session.run.alarm_table is table
+    assert table.text_for(a05) == "1999 STUDER OPTIONS NOT SET"
 
 
 def test_turkish(qtbot: QtBot, panel: tuple[PlcSession, AlarmDock]) -> None:

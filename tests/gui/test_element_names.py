@@ -101,14 +101,14 @@ def test_the_users_comment_comes_before_the_manuals_name(window: MainWindow,
                     "%@3\nRD X1.0\nWRT G8.4\nRD X1.1\nWRT G8.5   // KENDİ NOTUM\n%\n", "utf-8")
     window.load(path)
     _show(window, NameDisplay.COMMENT)
-    index, _row, _col, coil = _element(window, "G8.4")  # the manual names it ESP
+    index, _row, _col, coil = _element(window, "G8.4")  # FANUC names it *ESP
     item = window.editor.network_items[index]
     address, symbol, lines = item.label_lines(coil)
     assert (address, symbol) == ("G8.4", "ACILSTOP")
     assert " ".join(lines).startswith("ACİL STOP")  # the program's comment, not the manual's
-    index, _row, _col, coil = _element(window, "G8.5")  # in the manual: SP (feed hold)
+    index, _row, _col, coil = _element(window, "G8.5")  # FANUC: *SP (feed hold)
     _address, symbol, lines = window.editor.network_items[index].label_lines(coil)
-    assert symbol == "SP" and lines == ["KENDİ NOTUM"]  # the user's words, the manual's name
+    assert symbol == "*SP" and lines == ["KENDİ NOTUM"]  # the user's words, FANUC's name
 
 
 def test_view_element_names_changes_the_rows_and_is_remembered(window: MainWindow,

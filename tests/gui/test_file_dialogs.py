@@ -86,3 +86,57 @@ def test_save_dialog_keeps_title_filters_and_suggested_name(window: MainWindow) 
     assert dialog.width() >= 700  # not Qt's 632 × 408
     dialog.deleteLater()
     QApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)  # its state: to tmp_path
+
+
+def _type_name_when_shown(name: str, seen: dict[str, object], name_filter: str = "") -> None:
+    """Once the modal save dialog is up: pick `name_filter` (if given), type `name`, accept."""
+    dialog = QApplication.activeModalWidget()
+    if not isinstance(dialog, QFileDialog):
+        QTimer.singleShot(50, lambda: _type_name_when_shown(name, seen, name_filter))
+        return
+    if name_filter:
+        dialog.selectNameFilter(name_filter)
+        dialog.filterSelected.emit(name_filter)  # what choosing it in the combo sends
+    dialog.selectFile(name)  # as typed in its name field
+    seen["shown"] = True
+    dialog.accept()
+
+
+@pytest.mark.parametrize(("filters", "chosen", "typed", "expected"), [
+    ("Ladder programs (*.LAD *.lad);;All files (*)", "", "latch_timer", "latch_timer.LAD"),
+    ("Mnemonic programs (*.MOD);;All files (*)", "", "latch_timer", "latch_timer.MOD"),
+    ("PDF files (*.pdf)", "", "report", "report.pdf"),
+    ("CSV files (*.csv)", "", "trace", "trace.csv"),
+    ("PNG pictures (*.png)", "", "chart", "chart.png"),
+    ("Scenario files (*.csv);;All files (*)", "", "run", "run.csv"),
+    ("Ladder programs (*.LAD *.lad);;All files (*)", "All files (*)", "notes", "notes"),
+    ("Ladder programs (*.LAD *.lad);;All files (*)", "", "old.lad", "old.lad"),
+])
+def test_save_dialog_adds_the_chosen_filters_extension(
+        window: MainWindow, tmp_path: Path, filters: str, chosen: str, typed: str,
+        expected: str) -> None:
+    seen: dict[str, object] = {}
+    QTimer.singleShot(0, lambda: _type_name_when_shown(typed, seen, chosen))
+    name = file_dialogs.save_file_name(window, "Save", str(tmp_path / "x"), filters)
+    assert seen.get("shown")
+    assert name == str(tmp_path / expected)
+
+
+def test_save_as_ladder_filter_writes_a_file_open_lists(window: MainWindow, tmp_path: Path
+                                                       ) -> None:
+    assert window.load(EXAMPLES / "spindle_override.LAD")
+    folder = tmp_path / "saved"
+    folder.mkdir()
+    seen: dict[str, object] = {}
+    QTimer.singleShot(0, lambda: _type_name_when_shown(str(folder / "latch_timer"), seen))
+    window.actions_by_name["action_save_as"].trigger()
+    assert seen.get("shown")
+    assert [p.name for p in folder.iterdir() if not p.name.endswith(".prm")] == [
+        "latch_timer.LAD"]
+    assert window.path == folder / "latch_timer.LAD"
+
+
+def test_filter_suffix_reads_the_first_pattern() -> None:
+    assert file_dialogs.filter_suffix("Ladder programs (*.LAD *.lad)") == "LAD"
+    assert file_dialogs.filter_suffix("All files (*)") == ""
+    assert file_dialogs.with_suffix("/a.b/name", "CSV files (*.csv)") == "/a.b/name.csv"

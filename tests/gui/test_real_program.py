@@ -123,7 +123,7 @@ def test_program_properties_show_title_sections_and_text_form(
     assert ["7", "Date", written["7"].strip()] in title
     assert [row[0] for row in title] == [str(n) for n in range(1, 11)]
     general = dict((row[0], row[1]) for row in dialog.texts("properties_general"))
-    assert general["Dialect"] == "FANUC LADDER-III export"
+    assert general["PMC model"] == "FANUC Series 30i-A PMC (memory-B)"
     assert general["Line ends"] == "LF" and general["Byte order mark"] == "no"
     assert general["Symbols (%@2)"] == "12820"
     assert ["2", "BINARY"] in dialog.texts("properties_system")
@@ -175,11 +175,16 @@ def test_alarm_panel_shows_the_programs_message(
     window, _ = opened
     session = window.plc_docks.session
     dock = window.plc_docks.others["alarms"]
-    assert "(%@4): 2" in dock.file_label.text()
+    assert "(%@4)" not in dock.file_label.text()  # opened, not loaded into the PLC
     session.run.realtime = False
-    # X22 itself does not compile yet: a small program runs while X22's messages are the texts
-    compiled = session.load_program(parse("%@3\nRD X0.0\nWRT R0.0\n%\n").program)
+    # X22 itself does not compile yet: a small program with X22's messages goes into the PLC
+    small = parse("%@3\nRD X0.0\nWRT R0.0\n%\n").program
+    origin = window.document.origin
+    assert origin is not None
+    small.messages = origin.messages
+    compiled = session.load_program(small)
     assert compiled.binary is not None
+    assert "(%@4): 2" in dock.file_label.text()
     assert session.start()
     session.set_bit(parse_address("A0.1"), 1)
     session.run_scans(1)

@@ -29,7 +29,8 @@ def test_lists_every_signal_and_searches_turkish_words(window: MainWindow,
     qtbot.waitUntil(lambda: dock.table.rowCount() == len(load_signals()))
     found = dock.show_matches("acil")
     assert str(found[0].address) == "G8.4"
-    assert dock.table.item(0, 1).text() == "ESP"
+    assert dock.table.item(0, 1).text() == "*ESP"  # FANUC's spelling (active low)
+    assert "the seed manual writes ESP" in dock.table.item(0, 1).toolTip()
     assert dock.table.item(0, 2).text() == "EMERGENCY STOP"
     assert dock.table.item(0, 3).text().startswith("ACİL")
     window.signals_dock.query.setText("SPL")

@@ -3,7 +3,8 @@ single-pass (issue #13): a digest of every diagnostic (code, line, column, argum
 network) under the program's own dialect and the seed and FANUC overrides.
 
 A change that means to change these diagnostics updates the digests (print them with
-`_digest`); an optimisation never does."""
+`_digest`); an optimisation never does. (Issue 30, item 9: the seed override now checks the
+seed's address map too; the program's own and the FANUC digests did not change.)"""
 
 from __future__ import annotations
 
@@ -16,16 +17,16 @@ from ladderworks.core.il import parse_bytes
 from tests.real_programs import real_bytes
 
 PINNED = {
-    "FANUC_STUDER_X22_P036": "b626693f866d0419",
-    "FANUC_STUDER_S41_F036": "89d00c2aa3929a1e",
-    "FANUC_STUDER_S41_F034": "2bf81c3a9bf1049e",
+    "FANUC_STUDER_X22_P036": "ee3efa440cd63bc6",
+    "FANUC_STUDER_S41_F036": "d099f18d9bf068e2",
+    "FANUC_STUDER_S41_F034": "2286e6df42f66a68",
     "FANUC_X22_FRAG_END2_FIRST_SUBPROGRAM": "0b19c9903dbb086e",
-    "FANUC_X22_FRAG_LEVEL1": "e3b0c44298fc1c14",
-    "FANUC_X22_FRAG_fc62180_DECODE_MSTB": "3f1a6e0c502a31c0",
+    "FANUC_X22_FRAG_LEVEL1": "0a08a6f79aae4e4e",
+    "FANUC_X22_FRAG_fc62180_DECODE_MSTB": "783cea512347b783",
     "FANUC_X22_FRAG_fc62196_RESET_EVENT": "6d63b8492f7541f2",
-    "FANUC_X22_FRAG_fc62199_EMERGENCY_STOP": "e3b0c44298fc1c14",
+    "FANUC_X22_FRAG_fc62199_EMERGENCY_STOP": "91eef454d360e282",
     "FANUC_X22_FRAG_fc62224_DRESSING": "e27991878ef64553",
-    "FANUC_X22_FRAG_fc62500_DCS_BASE": "71f9b08cb5d1cbb8",
+    "FANUC_X22_FRAG_fc62500_DCS_BASE": "56eb0f3b53e0bd5c",
 }
 
 

@@ -27,6 +27,7 @@ from ladderworks.core.compiler.structure import (
     number_of,
 )
 from ladderworks.core.diagnostics import Diagnostic, Severity
+from ladderworks.core.il.model_check import model_address_problems
 from ladderworks.core.il.program import Instruction, Program
 from ladderworks.core.instructions import (
     Combine,
@@ -600,4 +601,7 @@ def check(program: Program, dialect: str | None = None, *,
     # no cycle collection meanwhile: the checks make tens of thousands of objects and no
     # cycles, and a collection would walk the program's whole heap (as parse and xref do)
     with collector_paused():
-        return _Checker(program, dialect, by_network).run()
+        found = _Checker(program, dialect, by_network).run()
+    # the addresses against the map of the program's model (a seed program: the seed's)
+    return found + model_address_problems(program, dialect or dialect_of(program),
+                                          by_network=by_network)

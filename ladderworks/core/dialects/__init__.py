@@ -10,6 +10,7 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable
 
+from ladderworks.core import models
 from ladderworks.core.address import AREA_SIZES, Address, AddressError, Area, parse_address
 from ladderworks.core.dialects.base import Dialect
 from ladderworks.core.instructions import add_rows
@@ -38,6 +39,8 @@ def register(dialect: Dialect) -> Dialect:
     if any(d.code == dialect.code and d is not dialect for d in _REGISTRY.values()):
         raise ValueError(f"dialect code {dialect.code} used twice")
     add_rows(dialect.rows)
+    if known is None:  # a model of its own family in the one list of models (core/models.py)
+        models.register(models.PmcModel(dialect.name, dialect.title, dialect.name))
     _REGISTRY[dialect.name] = dialect
     return dialect
 

@@ -13,6 +13,8 @@ from ladderworks.core.collector import collector_paused
 from ladderworks.core.diagnostics import Diagnostic, Severity, has_errors
 from ladderworks.core.il.line_scan import LABEL, comment_text
 from ladderworks.core.il.line_scan import line_parser as line_parser  # its place until now
+from ladderworks.core.il.model_check import model_address_problems
+from ladderworks.core.il.model_marker import marked_model
 from ladderworks.core.il.networks import LadderReader
 from ladderworks.core.il.program import (
     FANUC,
@@ -182,6 +184,7 @@ class _FileParser:
         self.firsts: dict[int, int] = {}
         self.labels = False
         self.dialect = "seed"  # decided before the ladder is read: parameter ranges depend on it
+        self.marked: str | None = None  # the PMC model a marker line names (model_marker)
         # False: the networks are for the compiler's checks only (parse_for_check), so the
         # other sections' views and what Save needs to write them back are not made
         self.whole = True
@@ -280,8 +283,11 @@ class _FileParser:
         self.diagnostics = [Diagnostic("not-a-program", {}, 1, 1), *errors[:2]]
 
     def _result(self) -> ParseResult:
-        if self.program.framed or self.labels or self.dialect == FANUC:
+        if self.marked:
+            self.program.dialect = self.marked
+        elif self.program.framed or self.labels or self.dialect == FANUC:
             self.program.dialect = FANUC
+        self.diagnostics.extend(model_address_problems(self.program))
         self.diagnostics.sort(key=lambda d: (d.line, d.column))
         return ParseResult(self.program, self.diagnostics)
 
@@ -289,7 +295,10 @@ class _FileParser:
 
     def _parse_ladder(self, start: int, stop: int) -> None:
         lines = self.lines
-        if self.program.framed or self.dialect == FANUC or any(
+        self.marked = marked_model(lines[:start]) if start else None
+        if self.marked:
+            self.dialect = self.marked
+        elif self.program.framed or self.dialect == FANUC or any(
                 line.endswith(":") and LABEL.match(line) for line in lines[start:stop]):
             self.dialect = FANUC
         reader = LadderReader(self.diagnostics, self.dialect)

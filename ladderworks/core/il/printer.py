@@ -6,6 +6,7 @@ from difflib import SequenceMatcher
 from typing import TYPE_CHECKING
 
 from ladderworks.core import dialects
+from ladderworks.core.il.model_marker import head_lines, header_texts
 from ladderworks.core.il.program import FANUC, Instruction, Network, ParamValue, Program, Section
 from ladderworks.core.il.textform import encode_text
 from ladderworks.core.instructions import InstructionSpec, Kind, ParamKind
@@ -86,7 +87,7 @@ def print_program(program: Program) -> str:
                  for line in other.network_lines(network, n == 0)]
         lines += _comment_lines(program.trailer, ";")
         return "\n".join(lines) + "\n"
-    out: list[str] = _comment_lines(program.header)
+    out: list[str] = _comment_lines(header_texts(program))
     if program.framed:
         out.append("%@A")
     for section in program.before:
@@ -178,7 +179,9 @@ def print_faithful(program: Program) -> str:
     def fresh(texts: list[str]) -> None:
         out.extend(text + newline for text in texts)
 
-    verbatim(0, source.ladder_start)
+    # the lines before the ladder as read; the PMC model's marker as the program says
+    out.extend(head_lines(program, lines[:source.ladder_start], ends[:source.ladder_start],
+                          newline))
     new_keys = [network.key() for network in program.networks]
     last_fresh = False
     for tag, i1, i2, j1, j2 in _align(source.keys, new_keys):

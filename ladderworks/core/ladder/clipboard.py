@@ -8,6 +8,7 @@ from typing import Any
 
 from ladderworks.core.address import AddressError, parse_address
 from ladderworks.core.il.program import ParamValue
+from ladderworks.core.il.textform import split_lines
 from ladderworks.core.instructions import Write, spec_for
 from ladderworks.core.ladder.edits import (
     Edit,
@@ -154,7 +155,7 @@ def copy_text(network: LadderNetwork, selection: Selection | None = None) -> str
 
 
 def _read(text: str) -> tuple[dict[str, Any], list[dict[str, Any]]]:
-    lines = [line for line in text.splitlines() if line.strip()]
+    lines = [line for line in split_lines(text) if line.strip()]
     if not lines or not lines[0].startswith(MAGIC):
         raise EditRefused("grid-text")
     try:

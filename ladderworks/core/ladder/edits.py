@@ -6,7 +6,8 @@ from dataclasses import dataclass, replace
 
 from ladderworks.core.address import Address, AddressError, parse_address
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError, Refused
-from ladderworks.core.il.program import ParamValue
+from ladderworks.core.il.model_check import model_problem
+from ladderworks.core.il.program import FANUC, ParamValue
 from ladderworks.core.ladder.model import (
     MAX_ROWS,
     WIRE,
@@ -260,22 +261,30 @@ def delete_row(network: LadderNetwork, row: int) -> Edit:
     return _change(network, work)
 
 
-def to_address(text: str | Address, cell: Cell | None = None, *, bit: bool = True) -> Address:
-    """Parse an address typed by the user; EditRefused carries the address diagnostic."""
+def to_address(text: str | Address, cell: Cell | None = None, *, bit: bool = True,
+               dialect: str = FANUC) -> Address:
+    """Parse an address typed by the user, in the map of a program of `dialect`; EditRefused
+    carries the address diagnostic."""
     if isinstance(text, Address):
         return text
     try:
-        return parse_address(text, want_bit=bit)
+        address = parse_address(text, want_bit=bit)
     except AddressError as exc:
         raise EditRefused(exc.code, cell, **exc.args_map) from None
+    problem = model_problem(address, dialect)  # a seed program: the seed's map
+    if problem is not None:
+        raise EditRefused(problem.code, cell, **problem.args)
+    return address
 
 
-def set_address(network: LadderNetwork, row: int, col: int, address: str | Address) -> Edit:
-    """Set the address of the contact or coil at a cell (typed text is checked)."""
+def set_address(network: LadderNetwork, row: int, col: int, address: str | Address,
+                dialect: str = FANUC) -> Edit:
+    """Set the address of the contact or coil at a cell (typed text is checked, in the map
+    of a program of `dialect`)."""
     found = network.element_at(row, col)
     if found is None or not isinstance(found[1], Contact | Coil):
         raise EditRefused("edit-no-element", (row, col), row=row, col=col)
-    value = to_address(address, (row, col))
+    value = to_address(address, (row, col), dialect=dialect)
     work = network.copy()
     work.cells[found[0]] = replace(found[1], address=value)
     return _change(network, work)

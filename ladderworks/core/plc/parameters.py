@@ -15,6 +15,7 @@ from pathlib import Path
 
 from ladderworks.core.address import Address, AddressError, Area, parse_address
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.il.textform import split_lines
 from ladderworks.core.plc.functions.counters import COUNTER_BYTES
 from ladderworks.core.plc.memory import Memory
 from ladderworks.core.plc.timer_table import SEED, timer_layout
@@ -193,7 +194,7 @@ def parse_parameters(text: str) -> ParameterFile:
     """Read parameter-file text; a bad line gives a diagnostic (with its line) and is kept."""
     parameters = PmcParameters()
     diagnostics: list[Diagnostic] = []
-    for number, line in enumerate(text.splitlines(), start=1):
+    for number, line in enumerate(split_lines(text), start=1):
         if line.strip() == KEPT_HEADER:
             continue
         item = _read_line(line, number)

@@ -19,6 +19,7 @@ from pathlib import Path
 from ladderworks.core import dialects
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
+from ladderworks.core.il.textform import split_lines
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.core.symbols import SymbolTable, resolve
 
@@ -238,7 +239,7 @@ def parse_scenario(text: str, name: str = "scenario",
     of the program's `dialect` (Delta's `X10`, `D0`; a T/C without a type is its value)."""
     scenario = Scenario(name)
     reader = _Reader(symbols, dialect)
-    lines = text.splitlines()
+    lines = split_lines(text)
     first = next((i for i, line in enumerate(lines) if line.strip()), None)
     scenario.program_line = (first or 0) + 1
     if first is None or lines[first].strip().strip(",").upper() != HEADER:

@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ladderworks.core.address import AddressError, parse_address
+from ladderworks.core.il.textform import split_lines
 
 LADDER3_ID = "Data"
 
@@ -52,7 +53,7 @@ def csv_text(table: TraceTable) -> str:
 
 def _rows(text: str) -> list[tuple[int, list[str]]]:
     return [(number, [field.strip() for field in line.split(",")])
-            for number, line in enumerate(text.splitlines(), start=1) if line.strip()]
+            for number, line in enumerate(split_lines(text), start=1) if line.strip()]
 
 
 def read_trace(text: str, period_ms: int) -> TraceTable:

@@ -65,7 +65,7 @@ class AlarmDock(Retranslating, QDockWidget):
         self.session = session
         self.alarm_file: Path | None = None
         self.file_problems: list[Diagnostic] = []
-        self.program_messages = 0  # > 0 while the open program's `%@4` messages are used
+        self.program_messages = 0  # > 0 while the loaded program's `%@4` messages are used
         self._file_table: AlarmTable | None = None  # the alarm file's table meanwhile
         self._seen: dict[tuple[int, int], datetime] = {}
         self.file_action = QAction(self)
@@ -104,6 +104,9 @@ class AlarmDock(Retranslating, QDockWidget):
         self.setWidget(body)
         self._alarms: list[ActiveAlarm] = []
         session.alarms_changed.connect(self._on_alarms)
+        # the texts are the program's in the PLC: they change when another is loaded into it,
+        # never when the console opens or starts one (File › New / Open)
+        session.program_loaded.connect(self._on_program_loaded)
         if not session.run.alarm_table.messages and DEFAULT_ALARM_FILE.exists():
             self.load_file(DEFAULT_ALARM_FILE)
         self.retranslate()
@@ -131,8 +134,12 @@ class AlarmDock(Retranslating, QDockWidget):
         self._fill()
         return True
 
+    def _on_program_loaded(self, _binary: object) -> None:
+        """A program was loaded into the PLC: its messages (or the file's) from now on."""
+        self.use_program(self.session.run.program or Program())
+
     def use_program(self, program: Program) -> None:
-        """A program was opened: its `%@4` messages are the texts; without them, the file's."""
+        """The PLC's program: its `%@4` messages are the texts; without them, the file's."""
         if program.messages:
             if not self.program_messages:
                 self._file_table = self.session.run.alarm_table

@@ -27,6 +27,7 @@ from ladderworks.gui import file_dialogs
 from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
+from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.locale_numbers import decimal
 from ladderworks.gui.os_errors import os_error_text
@@ -150,13 +151,20 @@ class PlcControlDock(Retranslating, QDockWidget):
         self.setWindowTitle(translate("PlcControl", "PLC CONTROL SCREEN"))
         texts = {
             "action_plc_open_mod": translate("PlcControl", "Open .MOD…"),
-            "action_plc_take_console": translate("PlcControl", "Take the console's program"),
+            "action_plc_take_console": translate("PlcControl",
+                                                 "Show the console's program as text"),
             "action_plc_control_compile": translate("PlcControl", "Compile"),
             "action_plc_start": translate("PlcControl", "START"),
             "action_plc_stop": translate("PlcControl", "STOP"),
         }
         for name, text in texts.items():
             self.control_actions[name].setText(text)
+        # F9 loads the console's program into the PLC; this only shows it here, to read or
+        # change as mnemonic text before this screen's Compile
+        self.control_actions["action_plc_take_console"].setToolTip(translate(
+            "PlcControl", "Shows the console's program here as mnemonic text, to read or "
+            "change before Compile on this screen. F9 (PLC › Compile) loads the console's "
+            "program into the PLC directly."))
         self._show_loaded()
         self._show_status(self.session.run.status())
 
@@ -166,7 +174,7 @@ class PlcControlDock(Retranslating, QDockWidget):
         """Show a mnemonic program (nothing compiled yet)."""
         self._pending = None
         self.path = path
-        self.editor.setPlainText(text)
+        self.editor.setPlainText(bad_bytes_shown(text))  # what Qt's widget would change, kept
         self.editor.set_diagnostics([])
         self.editor.set_converted(0)
 
@@ -194,13 +202,13 @@ class PlcControlDock(Retranslating, QDockWidget):
         """Put a loaded program's deferred text into the editor, all converted."""
         make, self._pending = self._pending, None
         if make is not None:
-            self.editor.setPlainText(make())
+            self.editor.setPlainText(bad_bytes_shown(make()))
             self.editor.set_converted(self.editor.blockCount())
 
     def program_text(self) -> str:
         """The mnemonic text on the screen (a deferred loaded text is made first)."""
         self._fill()
-        return self.editor.toPlainText()
+        return bad_bytes_back(self.editor.toPlainText())
 
     def _show_loaded(self) -> None:
         self.loaded.setText(translate("PlcControl", "In the PLC: {0}").format(self.loaded_name)

@@ -23,6 +23,7 @@ from ladderworks.gui.docks.time_chart import TimeChartDock
 from ladderworks.gui.docks.time_travel import TimeTravel
 from ladderworks.gui.editor.view import LadderEditor
 from ladderworks.gui.plc_session import PlcSession
+from ladderworks.gui.plc_state import PlcStateLabel
 
 RIGHT = Qt.DockWidgetArea.RightDockWidgetArea
 BOTTOM = Qt.DockWidgetArea.BottomDockWidgetArea
@@ -45,6 +46,8 @@ class PlcDocks:
     time_travel: TimeTravel  # PLC › Keep scan history
     modbus: ModbusDock  # PLC › Modbus server
     ascii_output: AsciiOutputDock  # PLC › ASCII output (a Fatek program's FUN 94)
+    # STOP / RUN, the program, forcing: in the status bar and on the main toolbar
+    states: tuple[PlcStateLabel, ...] = ()
 
     @property
     def others(self) -> dict[str, QDockWidget]:
@@ -137,6 +140,12 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     menus.register(control.control_actions["action_plc_control_compile"])
     menus.add(plc, run[0], separator=True, toolbar=True)
     menus.add(plc, run[1], toolbar=True)
+    states = (PlcStateLabel(session, lambda: control.loaded_name, window),
+              PlcStateLabel(session, lambda: control.loaded_name, window))
+    states[0].setObjectName("toolbar_plc_state")
+    menus.toolbar.addWidget(states[0])  # beside START / STOP
+    states[1].setObjectName("status_plc_state")
+    window.statusBar().addPermanentWidget(states[1])
     menus.add_many(plc, [online.actions[name] for name in ACTION_NAMES], separator=True)
     menus.insert_before("menu_file", alarms.file_action, "action_quit")
     menus.add(plc, alarms.reset_action)
@@ -155,4 +164,4 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
         app.aboutToQuit.connect(modbus.stop_server)  # the server thread ends with the program
         app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
     return PlcDocks(session, control, diagnostic, force_list, online, bits, chart, alarms,
-                    tables, scenario, travel, modbus, ascii_output)
+                    tables, scenario, travel, modbus, ascii_output, states)

@@ -9,9 +9,10 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from enum import StrEnum
 
-from ladderworks.core.address import AREA_SIZES, Address, Area
+from ladderworks.core.address import AREA_RANGES, AREA_SIZES, SEED_AREA_RANGES, Address, Area
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.diagnostics import Refused
+from ladderworks.core.il.program import SEED
 from ladderworks.core.instructions import InstructionSpec, Numbered
 from ladderworks.core.plc.functions.counters import (
     MAX_PRESET,
@@ -246,10 +247,23 @@ def counter_value(text: str) -> int:
     return check_range(parse_int(text), 0, MAX_PRESET)
 
 
-def data_byte(text: str, width: int = 1) -> int:
+def in_model_map(area: Area, byte: int, width: int, dialect: str) -> int:
+    """`byte` when bytes byte .. byte + width - 1 lie in one range of the area in the map of
+    the program's model (seed: the seed's; else the 30i's); else TableError `byte-range`."""
+    ranges = SEED_AREA_RANGES[area] if dialect == SEED else AREA_RANGES[area]
+    last = byte + max(width, 1) - 1
+    if not any(lo <= byte and last <= hi for lo, hi in ranges):
+        raise TableError("byte-range", text=f"{area.value}{byte}", area=area.value,
+                         last=ranges[-1][1] - max(width, 1) + 1,
+                         ranges=", ".join(f"{lo}-{hi}" for lo, hi in ranges))
+    return byte
+
+
+def data_byte(text: str, width: int = 1, dialect: str = SEED) -> int:
     """A D address (`D10`, `10`) with room for `width` bytes."""
     spelled = text.strip().upper().removeprefix("D")
-    return check_range(parse_int(spelled), 0, AREA_SIZES[Area.D] - width)
+    byte = check_range(parse_int(spelled), 0, AREA_SIZES[Area.D] - width)
+    return in_model_map(Area.D, byte, width, dialect)
 
 
 def data_width(text: str) -> int:
@@ -266,10 +280,11 @@ def data_value(text: str, width: int) -> int:
     return check_range(parse_int(text), -(1 << (bits - 1)), (1 << bits) - 1)
 
 
-def keep_byte(text: str) -> int:
-    """A K byte (`K5`, `5`), 0..99."""
+def keep_byte(text: str, dialect: str = SEED) -> int:
+    """A K byte (`K5`, `5`): 0..99 (and the system's 900..999 in a FANUC 30i program)."""
     spelled = text.strip().upper().removeprefix("K")
-    return check_range(parse_int(spelled), 0, AREA_SIZES[Area.K] - 1)
+    byte = check_range(parse_int(spelled), 0, AREA_SIZES[Area.K] - 1)
+    return in_model_map(Area.K, byte, 1, dialect)
 
 
 def keep_bits(text: str) -> int:

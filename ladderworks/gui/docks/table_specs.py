@@ -280,7 +280,7 @@ class DataSpec(TableSpec):
     def insert(self, session: PlcSession, texts: list[str]) -> None:
         """Address, width, value."""
         width = data_width(texts[1] or "1")
-        byte = data_byte(texts[0], width)
+        byte = data_byte(texts[0], width, session.run.dialect)
         session.set_parameter(Address(Area.D, byte), data_value(texts[2] or "0", width), width)
         self.listed[byte] = width
 
@@ -332,7 +332,7 @@ class KeepSpec(TableSpec):
 
     def insert(self, session: PlcSession, texts: list[str]) -> None:
         """Address, bits."""
-        byte = keep_byte(texts[0])
+        byte = keep_byte(texts[0], session.run.dialect)
         session.set_parameter(Address(Area.K, byte), keep_bits(texts[1] or "0"), 1)
         self.listed.add(byte)
 

@@ -138,7 +138,7 @@ class InlineEdit(QObject):
             return
         address_text = editor.resolve_address(address_text)
         try:
-            core.edits.to_address(address_text, (row, col))
+            core.edits.to_address(address_text, (row, col), dialect=editor.model.dialect)
         except EditRefused as refused:
             self._refuse(refused.diagnostic)
             return

@@ -65,8 +65,10 @@ class LadderEdits:
     def set_address(self, index: int, row: int, col: int, text: str,
                     comment: str | None = None) -> bool:
         """The address of a contact or coil, and its new `comment` (None: kept): one step."""
+        dialect = self.grid.model.dialect  # its map: a seed program's is the seed's
+
         def address_and_comment(network: LadderNetwork) -> None:
-            core.set_address(network, row, col, text)
+            core.set_address(network, row, col, text, dialect)
             if comment is not None:
                 core.set_comment(network, row, col, comment)
 

@@ -17,6 +17,7 @@ from ladderworks.core.compiler import (
     to_ops,
 )
 from ladderworks.core.compiler.binary import AREA_CODES, FORMAT_VERSION
+from ladderworks.core.il.program import FANUC
 from tests.core.plc.conftest import build
 
 PROGRAM = """
@@ -48,6 +49,7 @@ def test_version_3_and_the_area_codes_of_version_2_are_kept() -> None:
 
 def test_round_trip_keeps_every_new_kind_of_op() -> None:
     program = build(PROGRAM)
+    program.dialect = FANUC  # the E area is a FANUC 30i program's
     binary = compile(program)
     back = disassemble(binary)
     assert [[(i.name, i.operand, i.params, i.line) for i in n.instructions]
@@ -76,6 +78,8 @@ def test_version_2_is_refused_with_the_reason() -> None:
 
 
 def test_big_numbers_and_addresses_fit() -> None:
-    ops = decode(compile(build("RD R0.0\nNUMEB 4 4294967295 D9996\nRD E0.0\nWRT R1.0"))).ops
+    program = build("RD R0.0\nNUMEB 4 4294967295 D9996\nRD E0.0\nWRT R1.0")
+    program.dialect = FANUC  # the E area is a FANUC 30i program's
+    ops = decode(compile(program)).ops
     assert ops[1].params == (4, 4294967295, Address(Area.D, 9996))
     assert ops[2].operand == Address(Area.E, 0, 0)

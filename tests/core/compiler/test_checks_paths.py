@@ -8,7 +8,7 @@ import gc
 from ladderworks.core.address import Address, Area, format_address
 from ladderworks.core.compiler import check
 from ladderworks.core.il import Instruction, Network, Program, parse
-from ladderworks.core.il.program import LabelRef, ProgramRef
+from ladderworks.core.il.program import FANUC, LabelRef, ProgramRef
 
 
 def found(program: Program) -> list[tuple[str, dict[str, object], int, str, int | None]]:
@@ -30,6 +30,12 @@ def one(*instructions: Instruction) -> Program:
 R0_0 = Address(Area.R, 0, 0)
 
 
+def fanuc(program: Program) -> Program:
+    """`program` as a FANUC 30i program (its address map)."""
+    program.dialect = FANUC
+    return program
+
+
 def function(name: str, *params: object) -> Program:
     """RD R0.0 and the functional instruction `name` with `params`, built in code."""
     return one(Instruction("RD", R0_0), Instruction(name, params=params))  # type: ignore[arg-type]
@@ -40,12 +46,16 @@ def test_a_byte_address_parameter_needs_room_for_its_width() -> None:
         ("byte-range", {"text": "D9999", "area": "D", "last": 9998, "ranges": "0-9999"},
          0, "error", 0)]
     assert found(function("MOVW", Address(Area.D, 9998), Address(Area.D, 0))) == []
-    # X and Y have several ranges: the bytes must lie in one of them
-    assert found(function("MOVW", Address(Area.X, 127), Address(Area.R, 0))) == [
+    # X and Y have several ranges (a FANUC 30i program): the bytes must lie in one of them
+    assert found(fanuc(function("MOVW", Address(Area.X, 127), Address(Area.R, 0)))) == [
         ("byte-range", {"text": "X127", "area": "X", "last": 1126,
                         "ranges": "0-127, 200-327, 400-527, 600-727, 1000-1127"},
          0, "error", 0)]
-    assert found(function("MOVW", Address(Area.X, 200), Address(Area.R, 0))) == []
+    assert found(fanuc(function("MOVW", Address(Area.X, 200), Address(Area.R, 0)))) == []
+    # a seed program has the seed's map: X0-X127 only
+    assert found(function("MOVW", Address(Area.X, 200), Address(Area.R, 0))) == [
+        ("byte-range", {"text": "X200", "area": "X", "last": 127, "ranges": "0-127"},
+         0, "error", None)]
 
 
 def test_a_width_given_by_the_format_parameter() -> None:
