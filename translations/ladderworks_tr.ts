@@ -1520,7 +1520,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="81"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="84"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -1530,34 +1530,32 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="86"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="202"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="35"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="91"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="93"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="120"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="120"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="36"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="129"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="131"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="133"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -1567,28 +1565,28 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="96"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="98"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="156"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="158"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="169"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="171"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="76"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="79"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="71"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="74"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -1598,17 +1596,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="237"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="238"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="249"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="250"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="259"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="260"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -2057,57 +2055,122 @@
 <context>
     <name>ModbusDock</name>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="119"/>
         <source>Modbus server</source>
         <translation>Modbus sunucusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="90"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="120"/>
         <source>&amp;Address (host:port):</source>
         <translation>&amp;Adres (sunucu:port):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="121"/>
+        <source>&amp;Map file (CSV):</source>
+        <translation>&amp;Harita dosyası (CSV):</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
+        <source>the dialect&apos;s own map</source>
+        <translation>lehçenin kendi haritası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
+        <source>Choose…</source>
+        <translation>Seç…</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
+        <source>Dialect&apos;s map</source>
+        <translation>Lehçenin haritası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
+        <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
+        <translation>Programın lehçesinin kendi haritasını sun (docs/modbus.md)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
+        <source>Map served:</source>
+        <translation>Sunulan harita:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
         <source>Clients connected:</source>
         <translation>Bağlı istemciler:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="129"/>
         <source>Requests a second:</source>
         <translation>Saniyedeki istek:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="145"/>
         <source>Type the address as host:port, e.g. {0}.</source>
         <translation>Adresi sunucu:port olarak yazın, ör. {0}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="118"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="159"/>
         <source>Cannot listen on {0}: {1}</source>
         <translation>{0} dinlenemiyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="173"/>
+        <source>Modbus map file</source>
+        <translation>Modbus harita dosyası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="174"/>
+        <source>Modbus maps (*.csv);;All files (*)</source>
+        <translation>Modbus haritaları (*.csv);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="187"/>
+        <source>Cannot read the map {0}: {1}</source>
+        <translation>{0} haritası okunamıyor: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
+        <source>line {0}: {1}</source>
+        <translation>satır {0}: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="192"/>
+        <source>The map {0} is not served:</source>
+        <translation>{0} haritası sunulmuyor:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="200"/>
+        <source>the file {0}</source>
+        <translation>{0} dosyası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="201"/>
+        <source>the {0} dialect&apos;s own map</source>
+        <translation>{0} lehçesinin kendi haritası</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="222"/>
         <source>Stop server</source>
         <translation>Sunucuyu durdur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="223"/>
         <source>Start server</source>
         <translation>Sunucuyu başlat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="230"/>
         <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
         <translation>{0}:{1} dinleniyor (Modbus/TCP, her birim no), harita: {2}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="234"/>
         <source>Other computers on the network can read and write this PLC.</source>
         <translation>Ağdaki başka bilgisayarlar bu PLC&apos;yi okuyup yazabilir.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="160"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="239"/>
         <source>Stopped. An HMI on this computer connects to {0} once started.</source>
         <translation>Durduruldu. Başlatıldığında bu bilgisayardaki bir HMI {0} adresine bağlanır.</translation>
     </message>
