@@ -8,8 +8,10 @@ from pymodbus.client import ModbusTcpClient
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.address import parse_address
+from ladderworks.core.il import parse_file
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.translation import UiLanguage
+from ladderworks.paths import EXAMPLES
 from tests.core.modbus.conftest import spindle_binary
 from tests.gui.plc_docks_help import plc_docks
 
@@ -147,3 +149,27 @@ def test_a_bad_map_file_is_said_at_its_lines(qtbot: QtBot, tmp_path: Path,
         assert dock.map_label.text() == "&Harita dosyası (CSV):"
     finally:
         language.apply("en")
+
+
+def test_another_dialect_s_program_switches_or_stops_the_map(tmp_path: Path,
+                                                             window: MainWindow) -> None:
+    docks = plc_docks(window)
+    session, dock = docks.session, docks.modbus
+    assert session.load(spindle_binary()) == []
+    dock.address.setText("127.0.0.1:0")
+    assert dock.start_server() and dock.server is not None
+    fatek = parse_file(EXAMPLES / "fatek" / "conveyor.lst").program
+    assert session.load_program(fatek).binary is not None
+    assert dock.running and dock.server.bridge.map.name == "fatek"
+    assert dock.served.text() == "the fatek dialect's own map"
+    dock.stop_server()
+    own = tmp_path / "hmi.csv"
+    own.write_text("coils,0,8,X2.0,rw\n", encoding="utf-8")  # a PMC address
+    dock.map_file.setText(str(own))
+    assert not dock.start_server()  # X2.0 is no Fatek input
+    assert dock.status.text().startswith(f"The map {own} is not served:\nline 1: ")
+    assert session.load(spindle_binary()) == []
+    assert dock.start_server() and dock.served.text() == f"the file {own}"
+    assert session.load_program(fatek).binary is not None  # the file does not fit Fatek
+    assert not dock.running
+    assert dock.status.text().startswith(f"The map {own} is not served:\nline 1: ")
