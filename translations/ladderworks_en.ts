@@ -2090,87 +2090,92 @@
         <translation>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
         <source>Map served:</source>
         <translation>Map served:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
         <source>Clients connected:</source>
         <translation>Clients connected:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="129"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
         <source>Requests a second:</source>
         <translation>Requests a second:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="145"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="144"/>
         <source>Type the address as host:port, e.g. {0}.</source>
         <translation>Type the address as host:port, e.g. {0}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="158"/>
         <source>Cannot listen on {0}: {1}</source>
         <translation>Cannot listen on {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="173"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="172"/>
         <source>Modbus map file</source>
         <translation>Modbus map file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="173"/>
         <source>Modbus maps (*.csv);;All files (*)</source>
         <translation>Modbus maps (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="186"/>
         <source>Cannot read the map {0}: {1}</source>
         <translation>Cannot read the map {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="189"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="191"/>
         <source>The map {0} is not served:</source>
         <translation>The map {0} is not served:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="200"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="199"/>
         <source>the file {0}</source>
         <translation>the file {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="200"/>
         <source>the {0} dialect&apos;s own map</source>
         <translation>the {0} dialect&apos;s own map</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="222"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="221"/>
         <source>Stop server</source>
         <translation>Stop server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="223"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="222"/>
         <source>Start server</source>
         <translation>Start server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
+        <source>Map to serve:</source>
+        <translation>Map to serve:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
         <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
         <translation>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="234"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="235"/>
         <source>Other computers on the network can read and write this PLC.</source>
         <translation>Other computers on the network can read and write this PLC.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="240"/>
         <source>Stopped. An HMI on this computer connects to {0} once started.</source>
         <translation>Stopped. An HMI on this computer connects to {0} once started.</translation>
     </message>

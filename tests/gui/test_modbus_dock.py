@@ -94,6 +94,7 @@ def test_a_map_file_is_served_and_said(tmp_path: Path, window: MainWindow) -> No
     assert session.load(spindle_binary()) == []
     session.start()
     assert dock.served.text() == "the seed dialect's own map"
+    assert dock.served_label.text() == "Map to serve:"
     own = tmp_path / "hmi.csv"
     own.write_text("table,start,count,plc address,access\nholding,7,1,G30,r\n"
                    "coils,0,8,X2.0,rw\n", encoding="utf-8")
@@ -101,6 +102,7 @@ def test_a_map_file_is_served_and_said(tmp_path: Path, window: MainWindow) -> No
     dock.address.setText("127.0.0.1:0")
     assert dock.start_server() and dock.server is not None
     assert dock.served.text() == f"the file {own}"
+    assert dock.served_label.text() == "Map served:"
     assert not dock.map_file.isEnabled() and not dock.map_choose.isEnabled()
     client = ModbusTcpClient("127.0.0.1", port=dock.server.port, timeout=3)
     try:

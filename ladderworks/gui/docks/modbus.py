@@ -124,7 +124,6 @@ class ModbusDock(Retranslating, QDockWidget):
         self.map_default.setText(translate("ModbusDock", "Dialect's map"))
         self.map_default.setToolTip(translate("ModbusDock", "Serve the program's dialect's"
                                               " own map (docs/modbus.md)"))
-        self.served_label.setText(translate("ModbusDock", "Map served:"))
         self.clients_label.setText(translate("ModbusDock", "Clients connected:"))
         self.rate_label.setText(translate("ModbusDock", "Requests a second:"))
         self.show_state()
@@ -224,6 +223,8 @@ class ModbusDock(Retranslating, QDockWidget):
         self.address.setEnabled(not running)
         for widget in (self.map_file, self.map_choose, self.map_default):
             widget.setEnabled(not running)
+        self.served_label.setText(translate("ModbusDock", "Map served:") if running
+                                  else translate("ModbusDock", "Map to serve:"))
         self.served.setText(self.served_map_text())
         server = self.server
         if server is not None and running:
