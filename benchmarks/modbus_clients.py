@@ -5,8 +5,9 @@ port. Phase 1 measures the scan period with no client; phase 2 with four pymodbu
 polling as fast as answers come, each in its own process as an HMI would be (one switches the
 rotary switch through its coils, one reads the R102 relays, two read G30). The scan thread's
 start times are taken by wrapping the engine's `scan` (this benchmark only). Prints figures;
-asserts nothing. `--seconds S` sets each phase's length (default 2). Run from the checkout:
-`python -m benchmarks.modbus_clients`.
+asserts nothing. `--seconds S` sets each phase's length (default 2). Last, the time one
+request's bridge call takes (the engine lock is held for most of it: the longest a request can
+delay a scan's start). Run from the checkout: `python -m benchmarks.modbus_clients`.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from pymodbus.client import ModbusTcpClient
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.il import parse_file
 from ladderworks.core.modbus.bridge import PlcBridge
+from ladderworks.core.modbus.maps import Table
 from ladderworks.core.modbus.server import ModbusServer
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.paths import EXAMPLES
@@ -57,6 +59,24 @@ def poll(number: int, port: int, seconds: float, done: Synchronized) -> None:  #
         turn += 1
     client.close()
     done.value = turn
+
+
+def bridge_figures(binary: bytes, calls: int = 5000) -> str:
+    """Microseconds per bridge call (a virtual-clock PLC, no network): read, read, write."""
+    plc = PlcRun()
+    plc.load(binary)
+    plc.start()
+    bridge = PlcBridge(plc)
+    figures = []
+    for name, call in (
+            ("read 1 register", lambda: bridge.read_registers(Table.HOLDING, 3030, 1)),
+            ("read 8 coils", lambda: bridge.read_bits(Table.COILS, 10816, 8)),
+            ("write 3 coils", lambda: bridge.write_bits(Table.COILS, 17, [True, False, True]))):
+        began = time.perf_counter()
+        for _ in range(calls):
+            call()
+        figures.append(f"{name} {(time.perf_counter() - began) / calls * 1e6:.1f} us")
+    return ", ".join(figures)
 
 
 def main() -> None:
@@ -111,6 +131,7 @@ def main() -> None:
     status = plc.status()
     print(f"scan time:   min {status.min_ms:.3f} avg {status.avg_ms:.3f}"
           f" max {status.max_ms:.3f} ms, {status.overruns} overruns")
+    print(f"bridge call: {bridge_figures(binary)}")
 
 
 if __name__ == "__main__":

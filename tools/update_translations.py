@@ -46,7 +46,8 @@ def fill(ts: Path, translations: dict[str, str]) -> int:
             if node is None:
                 continue
             qualified = translations.get(f"{name}::{source}")
-            if qualified is not None and node.text != qualified:
+            if qualified is not None and (node.text != qualified
+                                          or node.get("type") == "unfinished"):
                 node.text = qualified
                 node.attrib.pop("type", None)
                 done += 1

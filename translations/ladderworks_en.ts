@@ -2055,57 +2055,127 @@
 <context>
     <name>ModbusDock</name>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="89"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="119"/>
         <source>Modbus server</source>
         <translation>Modbus server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="90"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="120"/>
         <source>&amp;Address (host:port):</source>
         <translation>&amp;Address (host:port):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="121"/>
+        <source>&amp;Map file (CSV):</source>
+        <translation>&amp;Map file (CSV):</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
+        <source>the dialect&apos;s own map</source>
+        <translation>the dialect&apos;s own map</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
+        <source>Choose…</source>
+        <translation>Choose…</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
+        <source>Dialect&apos;s map</source>
+        <translation>Dialect&apos;s map</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
+        <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
+        <translation>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
         <source>Clients connected:</source>
         <translation>Clients connected:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
         <source>Requests a second:</source>
         <translation>Requests a second:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="108"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="144"/>
         <source>Type the address as host:port, e.g. {0}.</source>
         <translation>Type the address as host:port, e.g. {0}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="118"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="158"/>
         <source>Cannot listen on {0}: {1}</source>
         <translation>Cannot listen on {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="146"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="172"/>
+        <source>Modbus map file</source>
+        <translation>Modbus map file</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="173"/>
+        <source>Modbus maps (*.csv);;All files (*)</source>
+        <translation>Modbus maps (*.csv);;All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="186"/>
+        <source>Cannot read the map {0}: {1}</source>
+        <translation>Cannot read the map {0}: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="189"/>
+        <source>line {0}: {1}</source>
+        <translation>line {0}: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="191"/>
+        <source>The map {0} is not served:</source>
+        <translation>The map {0} is not served:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="199"/>
+        <source>the file {0}</source>
+        <translation>the file {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="200"/>
+        <source>the {0} dialect&apos;s own map</source>
+        <translation>the {0} dialect&apos;s own map</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="221"/>
         <source>Stop server</source>
         <translation>Stop server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="222"/>
         <source>Start server</source>
         <translation>Start server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
+        <source>Map served:</source>
+        <translation>Map served:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
+        <source>Map to serve:</source>
+        <translation>Map to serve:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
         <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
         <translation>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="235"/>
         <source>Other computers on the network can read and write this PLC.</source>
         <translation>Other computers on the network can read and write this PLC.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="160"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="240"/>
         <source>Stopped. An HMI on this computer connects to {0} once started.</source>
         <translation>Stopped. An HMI on this computer connects to {0} once started.</translation>
     </message>

@@ -1,5 +1,8 @@
 """PLC › Modbus server: serve the console's PLC over Modbus/TCP (start/stop, address, clients).
 
+The map served is the program's dialect's own, or a user's CSV map file (`--map` of the CLI)
+chosen in the dock; a file's bad lines are listed at their line numbers, translated.
+
 The server answers from the session's own PlcRun (the memory the docks show), on its own
 asyncio thread (core `ModbusServer`); a client's write is published to the docks at once
 unless the scan thread runs (its publish timer shows it with the next snapshot).
@@ -10,7 +13,9 @@ from __future__ import annotations
 from PySide6.QtCore import QCoreApplication, QTimer, Signal
 from PySide6.QtWidgets import (
     QDockWidget,
+    QFileDialog,
     QFormLayout,
+    QHBoxLayout,
     QLabel,
     QLineEdit,
     QPushButton,
@@ -18,7 +23,10 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from ladderworks.core.modbus.bridge import PlcBridge
+from ladderworks.core.diagnostics import DiagnosticError
+from ladderworks.core.modbus.bridge import PlcBridge, program_dialect
+from ladderworks.core.modbus.map_file import read_map
+from ladderworks.core.modbus.maps import ModbusMap
 from ladderworks.core.modbus.server import (
     DEFAULT_HOST,
     DEFAULT_PORT,
@@ -26,6 +34,7 @@ from ladderworks.core.modbus.server import (
     is_loopback,
     parse_endpoint,
 )
+from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.retranslate import Retranslating
 
@@ -44,6 +53,7 @@ class ModbusDock(Retranslating, QDockWidget):
         self.session = session
         self.server: ModbusServer | None = None
         self.error = ""  # why the last start failed
+        self.served_file = ""  # the map file served (empty: the dialect's own map)
         body = QWidget(self)
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
@@ -53,6 +63,26 @@ class ModbusDock(Retranslating, QDockWidget):
         self.address.setObjectName("modbusAddress")
         self.address_label.setBuddy(self.address)
         form.addRow(self.address_label, self.address)
+        self.map_label = QLabel(body)
+        map_row = QHBoxLayout()
+        self.map_file = QLineEdit(body)  # empty: the dialect's own map
+        self.map_file.setObjectName("modbusMapFile")
+        self.map_label.setBuddy(self.map_file)
+        map_row.addWidget(self.map_file, 1)
+        self.map_choose = QPushButton(body)
+        self.map_choose.setObjectName("modbusMapChoose")
+        self.map_choose.clicked.connect(self.choose_map)
+        map_row.addWidget(self.map_choose)
+        self.map_default = QPushButton(body)
+        self.map_default.setObjectName("modbusMapDefault")
+        self.map_default.clicked.connect(self.map_file.clear)
+        map_row.addWidget(self.map_default)
+        form.addRow(self.map_label, map_row)
+        self.served_label = QLabel(body)
+        self.served = QLabel(body)
+        self.served.setObjectName("modbusServedMap")
+        self.served.setWordWrap(True)
+        form.addRow(self.served_label, self.served)
         self.clients_label = QLabel(body)
         self.clients = QLabel("0", body)
         self.clients.setObjectName("modbusClients")
@@ -88,6 +118,12 @@ class ModbusDock(Retranslating, QDockWidget):
         """Texts in the UI language."""
         self.setWindowTitle(translate("ModbusDock", "Modbus server"))
         self.address_label.setText(translate("ModbusDock", "&Address (host:port):"))
+        self.map_label.setText(translate("ModbusDock", "&Map file (CSV):"))
+        self.map_file.setPlaceholderText(translate("ModbusDock", "the dialect's own map"))
+        self.map_choose.setText(translate("ModbusDock", "Choose…"))
+        self.map_default.setText(translate("ModbusDock", "Dialect's map"))
+        self.map_default.setToolTip(translate("ModbusDock", "Serve the program's dialect's"
+                                              " own map (docs/modbus.md)"))
         self.clients_label.setText(translate("ModbusDock", "Clients connected:"))
         self.rate_label.setText(translate("ModbusDock", "Requests a second:"))
         self.show_state()
@@ -109,7 +145,11 @@ class ModbusDock(Retranslating, QDockWidget):
                                    ).format(f"{DEFAULT_HOST}:{DEFAULT_PORT}")
             self.show_state()
             return False
-        bridge = PlcBridge(self.session.run)  # the loaded program's dialect's map
+        readable, own_map = self.read_map_file()
+        if not readable:
+            self.show_state()
+            return False
+        bridge = PlcBridge(self.session.run, own_map)
         bridge.listeners.append(self.written.emit)
         server = ModbusServer(bridge, host, port)
         try:
@@ -120,10 +160,45 @@ class ModbusDock(Retranslating, QDockWidget):
             self.show_state()
             return False
         self.server = server
+        self.served_file = self.map_file.text().strip() if own_map is not None else ""
         server.requests_per_second()
         self._timer.start()
         self.show_state()
         return True
+
+    def choose_map(self) -> None:
+        """Pick a CSV map file (served from the next start)."""
+        path, _ = QFileDialog.getOpenFileName(
+            self, translate("ModbusDock", "Modbus map file"), self.map_file.text(),
+            translate("ModbusDock", "Modbus maps (*.csv);;All files (*)"))
+        if path:
+            self.map_file.setText(path)
+
+    def read_map_file(self) -> tuple[bool, ModbusMap | None]:
+        """(True, the map file's map, or None for the dialect's map when no file is named);
+        (False, None), with `error` set to its bad lines, when the file cannot be used."""
+        path = self.map_file.text().strip()
+        if not path:
+            return True, None
+        try:
+            return True, read_map(path, program_dialect(self.session.run))
+        except OSError as problem:
+            self.error = translate("ModbusDock", "Cannot read the map {0}: {1}").format(
+                path, problem.strerror or str(problem))
+        except DiagnosticError as problem:
+            lines = [translate("ModbusDock", "line {0}: {1}").format(
+                d.line, diagnostic_text(d)) for d in problem.diagnostics]
+            self.error = "\n".join([translate("ModbusDock", "The map {0} is not served:"
+                                               ).format(path), *lines])
+        return False, None
+
+    def served_map_text(self) -> str:
+        """Which map the server serves (or would serve): the dialect's own or the file."""
+        path = self.served_file if self.running else self.map_file.text().strip()
+        if path:
+            return translate("ModbusDock", "the file {0}").format(path)
+        return translate("ModbusDock", "the {0} dialect's own map").format(
+            program_dialect(self.session.run))
 
     def stop_server(self) -> None:
         """Close the clients' connections and stop listening."""
@@ -146,6 +221,11 @@ class ModbusDock(Retranslating, QDockWidget):
         self.button.setText(translate("ModbusDock", "Stop server") if running
                             else translate("ModbusDock", "Start server"))
         self.address.setEnabled(not running)
+        for widget in (self.map_file, self.map_choose, self.map_default):
+            widget.setEnabled(not running)
+        self.served_label.setText(translate("ModbusDock", "Map served:") if running
+                                  else translate("ModbusDock", "Map to serve:"))
+        self.served.setText(self.served_map_text())
         server = self.server
         if server is not None and running:
             text = translate("ModbusDock", "Listening on {0}:{1} (Modbus/TCP, any unit id),"
@@ -163,10 +243,18 @@ class ModbusDock(Retranslating, QDockWidget):
         self.show_figures()
 
     def _program_loaded(self, _binary: object) -> None:
-        """A new program: serve it with its dialect's map."""
-        if self.server is not None:
-            self.server.bridge.use()
+        """A new program: serve it with its dialect's map, or the map file read again for
+        its dialect (the server stops, the reason shown, when the file does not fit it)."""
+        if self.server is None:
             self.show_state()
+            return
+        readable, own_map = self.read_map_file()
+        if not readable:
+            self.stop_server()
+            return
+        self.server.bridge.use(own_map)
+        self.served_file = self.map_file.text().strip() if own_map is not None else ""
+        self.show_state()
 
     def _publish_if_idle(self) -> None:
         """Show a client's write now unless the scan thread's publish timer will."""
