@@ -29,9 +29,9 @@ from ladderworks.core.symbols import describe
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
-from ladderworks.gui.docks import trace_files
+from ladderworks.gui.docks import snapshot_gate, trace_files
 from ladderworks.gui.docks.bus_lane import BusLane
-from ladderworks.gui.docks.snapshot_gate import SnapshotGate
+from ladderworks.gui.docks.snapshot_gate import SnapshotGate, UpdateBudget
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.live_text import set_live_text
@@ -46,6 +46,9 @@ LANE_HEIGHT = 1.6  # a lane's trace spans 0..1 of it; the rest separates it from
 DEFAULT_PERIOD_MS = 8
 MAX_PERIOD_MS = 60_000
 _SPLIT = re.compile(r"[\s,;]+")
+# least seconds between two redraws while the PLC scans in real time (snapshot_gate.PACED):
+# four a second follow a running machine; each one takes the interpreter from the scan thread
+REDRAW_INTERVAL = 0.25
 _COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
 
 
@@ -58,6 +61,7 @@ class TimeChartDock(Retranslating, QDockWidget):
         self.session = session
         self.record = TraceRecord()
         self.sampling = False
+        self.follows = 0  # how often a redraw set the span it follows (tests)
         self._curves: list[pg.PlotDataItem] = []  # one step trace per lane
         self._fills: list[pg.PlotDataItem] = []  # the shading under each bit lane
         self._buses: dict[int, BusLane] = {}  # the value lanes, by lane
@@ -147,7 +151,8 @@ class TimeChartDock(Retranslating, QDockWidget):
         layout.addWidget(self.cursor_label)
         self.setWidget(body)
         # samples are taken at every snapshot; the lanes are drawn when shown, in budget
-        self.gate = SnapshotGate(self, lambda _snapshot: self._redraw(), session)
+        self.gate = SnapshotGate(self, lambda _snapshot: self._redraw(), session,
+                                 UpdateBudget(interval=REDRAW_INTERVAL))
         session.snapshot_ready.connect(self._take_samples)
         self.visibilityChanged.connect(lambda _shown: self.gate.flush())
         session.program_loaded.connect(self._on_program_loaded)
@@ -300,12 +305,26 @@ class TimeChartDock(Retranslating, QDockWidget):
                 self._buses[lane].set_steps([float(x) for x in steps], values)
                 continue
             xs, ys = self.lane_points(lane)
-            curve.setData(xs, ys)
-            next(fills).setData(xs, ys)
+            # the points are numbers: pyqtgraph's check for NaN and infinity is not needed
+            light = snapshot_gate.PACED
+            curve.setData(xs, ys, skipFiniteCheck=light)
+            next(fills).setData(xs, ys, skipFiniteCheck=light)
             self.gate.let_scan()  # ~1 ms a lane: a scan that is due goes first
+        self._follow()
         if self.record.times and self.time_cursor.value() < self.record.times[0]:
             self.time_cursor.setValue(self.record.times[0])
         self._show_cursor()
+
+    def _follow(self) -> None:
+        """While the chart follows the record, set its new time span now: left to the view's
+        auto-range, the span changes when the chart paints, and it paints twice."""
+        view = self.plot.getPlotItem().getViewBox()
+        if not (snapshot_gate.PACED and view.autoRangeEnabled()[0] and self.record.times):
+            return
+        end = self.record.end_ms or self.record.times[-1]
+        view.setXRange(self.record.times[0], end, padding=0.02)
+        view.enableAutoRange(x=True, y=False)  # still following: finds the span just set
+        self.follows += 1
 
     # -- zoom, pan, cursor -----------------------------------------------------------------
 
