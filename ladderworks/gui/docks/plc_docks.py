@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtCore import QCoreApplication, Qt, QTimer
 from PySide6.QtWidgets import QDockWidget, QMainWindow
 
 from ladderworks.core.il import Program
@@ -62,6 +62,24 @@ def _tab(window: QMainWindow, docks: list[QDockWidget]) -> None:
         window.tabifyDockWidget(docks[0], dock)
 
 
+# a window at most this high (a 1024×600 panel, maximised) is a small screen: the error list
+# joins the bottom PLC docks' tab group when one is opened
+SMALL_HEIGHT = 720
+
+
+def _share_the_bottom(window: QMainWindow, dock: QDockWidget) -> None:
+    """On a small screen, a bottom PLC dock opened takes the error list into its tab group:
+    side by side, the list (a real program's 1,333 warnings) took half the bottom row and
+    left the ladder a 310×210 corner; as a tab it is one click away, and the whole row's
+    width lets the dock's buttons fit on one line."""
+    errors = window.findChild(QDockWidget, "dock_errors")
+    if (window.height() > SMALL_HEIGHT or errors is None or errors is dock
+            or errors.isFloating() or window.dockWidgetArea(errors) != BOTTOM
+            or errors in window.tabifiedDockWidgets(dock)):
+        return
+    window.tabifyDockWidget(dock, errors)
+
+
 def _raise_when_shown(window: QMainWindow, dock: QDockWidget) -> None:
     """Its toggle brings a tabbed dock to the front, not only back into its group, and gives
     it a fair share of the window: a bottom dock at least a third of the height (a large
@@ -71,11 +89,17 @@ def _raise_when_shown(window: QMainWindow, dock: QDockWidget) -> None:
     def shown(checked: bool) -> None:
         if not checked:
             return
-        dock.raise_()
         area = window.dockWidgetArea(dock)
+        if area == BOTTOM:
+            _share_the_bottom(window, dock)
+        dock.raise_()
         third = window.height() // 3
         widest = window.width() * 45 // 100
-        if area == BOTTOM and dock.height() < third:
+        if area == BOTTOM and window.height() <= SMALL_HEIGHT:
+            # a third, not more: the ladder keeps the rest (once the tab group is laid out)
+            QTimer.singleShot(0, lambda: window.resizeDocks([dock], [third],
+                                                            Qt.Orientation.Vertical))
+        elif area == BOTTOM and dock.height() < third:
             window.resizeDocks([dock], [third], Qt.Orientation.Vertical)
         elif area == RIGHT and dock.width() > widest:
             window.resizeDocks([dock], [widest], Qt.Orientation.Horizontal)

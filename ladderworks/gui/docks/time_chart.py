@@ -79,19 +79,25 @@ class TimeChartDock(Retranslating, QDockWidget):
         self.period_spin.setRange(1, MAX_PERIOD_MS)
         self.period_spin.setValue(DEFAULT_PERIOD_MS)
         self.period_spin.setSuffix(" ms")
-        # the signals take what the row leaves (a list of addresses wants the width); the
-        # sampling time sits at its end: one row less on a 1024×600 screen
+        # the signals take the whole row (a list of addresses wants the width; the Turkish
+        # "ÖRNEKLEME ZAMANI:" beside it left a 1024-px screen a few characters of it); the
+        # sampling time goes before START, in the row of buttons that wraps
         self.signals_edit.setMinimumWidth(self.signals_edit.fontMetrics().horizontalAdvance("M")
                                           * 10)
         entry.addWidget(self.signals_label)
         entry.addWidget(self.signals_edit, 1)
-        entry.addSpacing(8)
-        entry.addWidget(self.period_label)
-        entry.addWidget(self.period_spin)
         layout.addLayout(entry)
         # buttons that wrap onto a second line in a narrow dock: none hides behind an overflow
         self.toolbar = ButtonFlow(body)
         self.toolbar.setObjectName("timeChartToolbar")
+        period = QWidget(self.toolbar)
+        period.setObjectName("timeChartPeriodField")
+        period_row = QHBoxLayout(period)
+        period_row.setContentsMargins(0, 0, 0, 0)
+        period_row.addWidget(self.period_label)
+        period_row.addWidget(self.period_spin)
+        self.toolbar.add_widget(period)
+        self.toolbar.add_separator()
         self.chart_actions: dict[str, QAction] = {}
         for name, slot in (
             ("action_time_chart_start", self.start),
@@ -121,7 +127,8 @@ class TimeChartDock(Retranslating, QDockWidget):
         self.plot = pg.PlotWidget(body, background="w",
                                   axisItems={"bottom": LocaleAxis("bottom")})
         self.plot.setObjectName("timeChartPlot")
-        self.plot.setMinimumHeight(100)  # a 1024×600 screen: the chart still fits with the docks
+        # a 1024×600 screen: the chart fits in a third of the height, the ladder keeps the rest
+        self.plot.setMinimumHeight(70)
         self.plot.scene().contextMenu = []  # pyqtgraph's own English "Export..."; ours are above
         self.plot.setMinimumWidth(380)  # room for the lane names and a readable time axis
         item = self.plot.getPlotItem()

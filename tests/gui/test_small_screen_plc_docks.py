@@ -1,0 +1,53 @@
+"""The PLC docks on a 1024×600 panel (issue 31 item 1): the error list joins the bottom PLC
+docks' tab group only on a small screen, and the time chart's signals keep the row's width."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QSize
+from pytestqt.qtbot import QtBot
+
+from ladderworks.gui.main_window import MainWindow
+from tests.gui.test_small_screen import PANEL, on_the_panel
+
+
+def open_chart(window: MainWindow, qtbot: QtBot) -> None:
+    window.errors.show()
+    window.actions_by_name["action_dock_time_chart"].trigger()
+    qtbot.waitUntil(window.plc_docks.time_chart.isVisible)
+
+
+def test_on_a_large_screen_the_error_list_stays_beside_the_chart(window: MainWindow,
+                                                                 qtbot: QtBot) -> None:
+    window.resize(QSize(1536, 832))
+    qtbot.waitUntil(lambda: window.height() == 832)
+    open_chart(window, qtbot)
+    chart = window.plc_docks.time_chart
+    assert window.errors not in window.tabifiedDockWidgets(chart)
+    assert window.errors.isVisible() and not window.errors.visibleRegion().isEmpty()
+
+
+def test_on_the_panel_the_error_list_is_a_tab_one_click_away(window: MainWindow,
+                                                             qtbot: QtBot) -> None:
+    on_the_panel(window, qtbot)
+    open_chart(window, qtbot)
+    chart = window.plc_docks.time_chart
+    assert window.errors in window.tabifiedDockWidgets(chart)
+    assert window.size() == PANEL
+    window.errors.raise_()
+    qtbot.waitUntil(lambda: not window.errors.visibleRegion().isEmpty())
+
+
+def test_the_turkish_sampling_time_leaves_the_signals_the_row(window: MainWindow,
+                                                             qtbot: QtBot) -> None:
+    """'ÖRNEKLEME ZAMANI:' beside the field left it a few characters at 1024 px: it sits before
+    START, in the row of buttons that wraps."""
+    window.set_language("tr")
+    on_the_panel(window, qtbot)
+    open_chart(window, qtbot)
+    chart = window.plc_docks.time_chart
+    qtbot.waitUntil(lambda: chart.width() > 600)
+    edit = chart.signals_edit
+    assert edit.width() >= chart.width() - chart.signals_label.width() - 40
+    assert chart.period_spin.parent().parent() is chart.toolbar
+    assert not chart.toolbar.hidden_buttons()
+    window.set_language("en")
