@@ -6,6 +6,7 @@ from __future__ import annotations
 from PySide6.QtCore import QSize
 from pytestqt.qtbot import QtBot
 
+from ladderworks.gui.docks.time_chart import SHORT_PLOT
 from ladderworks.gui.main_window import MainWindow
 from tests.gui.test_small_screen import PANEL, on_the_panel
 
@@ -51,3 +52,20 @@ def test_the_turkish_sampling_time_leaves_the_signals_the_row(window: MainWindow
     assert chart.period_spin.parent().parent() is chart.toolbar
     assert not chart.toolbar.hidden_buttons()
     window.set_language("en")
+
+
+def test_a_short_chart_gives_its_lanes_the_axis_titles_line(window: MainWindow,
+                                                            qtbot: QtBot) -> None:
+    on_the_panel(window, qtbot)
+    open_chart(window, qtbot)
+    chart = window.plc_docks.time_chart
+    axis = chart.plot.getPlotItem().getAxis("bottom")
+    qtbot.waitUntil(lambda: chart.plot.height() < SHORT_PLOT)
+    assert not axis.label.isVisible()
+    # a language switch sets the title again: still hidden
+    window.set_language("tr")
+    assert not axis.label.isVisible()
+    window.set_language("en")
+    chart.plot.setMinimumHeight(SHORT_PLOT)  # a taller chart names its axis
+    qtbot.waitUntil(lambda: chart.plot.height() >= SHORT_PLOT)
+    qtbot.waitUntil(axis.label.isVisible)

@@ -49,6 +49,7 @@ _SPLIT = re.compile(r"[\s,;]+")
 # least seconds between two redraws while the PLC scans in real time (snapshot_gate.PACED):
 # four a second follow a running machine; each one takes the interpreter from the scan thread
 REDRAW_INTERVAL = 0.25
+SHORT_PLOT = 140  # px: a plot this high or higher shows the time axis's title
 _COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
 
 
@@ -465,9 +466,16 @@ class TimeChartDock(Retranslating, QDockWidget):
             label.setMinimumHeight(label.heightForWidth(width) if label.text() else 0)
 
     def resizeEvent(self, event: QResizeEvent) -> None:
-        """Wrapped lines change with the width."""
+        """Wrapped lines change with the width; a short chart drops its axis title."""
         super().resizeEvent(event)
         self._fit_labels()
+        self._fit_axis_title()
+
+    def _fit_axis_title(self) -> None:
+        """A chart under SHORT_PLOT px (a 1024×600 screen's third) gives the lanes the
+        axis title's line: the numbers under the axis are milliseconds all the same."""
+        axis = self.plot.getPlotItem().getAxis("bottom")
+        axis.showLabel(self.plot.height() >= SHORT_PLOT)
 
     def _update_actions(self) -> None:
         self.chart_actions["action_time_chart_start"].setEnabled(not self.sampling)
@@ -500,6 +508,7 @@ class TimeChartDock(Retranslating, QDockWidget):
             translate("TimeChart", "Save the chart as a PNG picture")
         )
         self.plot.getPlotItem().setLabel("bottom", translate("TimeChart", "time (ms)"))
+        self._fit_axis_title()
         self.plot.getPlotItem().getAxis("bottom").picture = None  # ticks in the new decimal sign
         self.plot.getPlotItem().getAxis("bottom").update()
         trace_files.retranslate(self)
