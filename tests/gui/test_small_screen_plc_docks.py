@@ -1,5 +1,6 @@
 """The PLC docks on a 1024×600 panel (issue 31 item 1): the error list joins the bottom PLC
-docks' tab group only on a small screen, and the time chart's signals keep the row's width."""
+docks' tab group and the tool palette narrows to its names only on a small screen, and the
+time chart's signals keep the row's width."""
 
 from __future__ import annotations
 
@@ -69,3 +70,31 @@ def test_a_short_chart_gives_its_lanes_the_axis_titles_line(window: MainWindow,
     chart.plot.setMinimumHeight(SHORT_PLOT)  # a taller chart names its axis
     qtbot.waitUntil(lambda: chart.plot.height() >= SHORT_PLOT)
     qtbot.waitUntil(axis.label.isVisible)
+
+
+def test_on_the_panel_a_right_hand_plc_dock_narrows_the_tools_to_their_names(
+        window: MainWindow, qtbot: QtBot) -> None:
+    window.set_language("tr")  # the longer tool names
+    on_the_panel(window, qtbot)
+    palette = window.tool_palette
+    before = palette.width()
+    window.actions_by_name["action_dock_plc_control"].trigger()
+    qtbot.waitUntil(window.plc_docks.control.isVisible)
+    qtbot.waitUntil(lambda: palette.width() < before)
+    for button in palette.buttons:  # every tool's name still whole
+        assert button.width() >= button.sizeHint().width(), button.text()
+    assert window.size() == PANEL
+    assert window.editor.viewport().width() >= 300
+    window.set_language("en")
+
+
+def test_on_a_large_screen_the_tools_keep_their_width(window: MainWindow,
+                                                      qtbot: QtBot) -> None:
+    window.resize(QSize(1536, 832))
+    qtbot.waitUntil(lambda: window.height() == 832)
+    palette = window.tool_palette
+    before = palette.width()
+    window.actions_by_name["action_dock_plc_control"].trigger()
+    qtbot.waitUntil(window.plc_docks.control.isVisible)
+    qtbot.wait(50)
+    assert palette.width() == before
