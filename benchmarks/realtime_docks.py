@@ -5,15 +5,19 @@ runs the PLC on its wall-clock thread and prints, after the first second: the sc
 overruns (a scan that ended after the next one was due), the worst scan and the share of the
 GUI thread's CPU time. Dock sets: none (the alarm panel closed too), default (the window as it
 starts: the alarm panel), technician (PLC diagnostic, bit display live on six bytes, time
-chart sampling six bits). Each set runs twice in one run: "before" (every dock updates on
-every snapshot, shown or not: `snapshot_gate.UPDATE_ALWAYS`) and "after" (docks update only
-when shown, within the GUI thread's share: `gui/docks/snapshot_gate.py`).
+chart sampling six bits). Each set runs three times in one run: "before" (every dock updates
+on every snapshot, shown or not: `snapshot_gate.UPDATE_ALWAYS`), "gate" (docks update only
+when shown, within the GUI thread's share: `gui/docks/snapshot_gate.py`, `PACED` off) and
+"paced" (as "gate", and an update waits for the gap after a scan, the time chart redraws at
+most four times a second and sets the span it follows itself: `snapshot_gate.PACED`).
 
 Run: python benchmarks/realtime_docks.py [SECONDS] [--fifo]
 `--fifo` (Linux, root) runs the process at SCHED_FIFO priority so that other processes of a
 busy machine do not show in the figures (the GUI and scan threads still share the GIL).
 Environment, for experiments: SETS="technician" (the dock sets to run), SHARE=0.15 (the GUI
-thread's share, `snapshot_gate.SHARE`), PROFILE=1 (cProfile of the GUI thread per set).
+thread's share, `snapshot_gate.SHARE`), MODES="gate paced" (the modes to run), SWITCH_MS=1
+(the interpreter's switch interval, `sys.setswitchinterval`), PROFILE=1 (cProfile of the GUI
+thread per set).
 """
 
 from __future__ import annotations
@@ -28,6 +32,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAM = "FANUC_STUDER_S41_F036"
+MODES = tuple(os.environ.get("MODES", "before gate paced").split())
 SETS = tuple(os.environ.get("SETS", "none default technician").split())
 
 
@@ -40,7 +45,7 @@ def real_program() -> Path:
     raise SystemExit(f"{PROGRAM}.txt not found in shared/real-programs beside {ROOT}")
 
 
-def measure(before: bool, seconds: float) -> None:
+def measure(mode: str, seconds: float) -> None:
     """One process: open, compile, then each dock set for `seconds`; prints a line each."""
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
     sys.path.insert(0, str(ROOT))
@@ -55,7 +60,10 @@ def measure(before: bool, seconds: float) -> None:
     from ladderworks.gui.settings import Settings
     from ladderworks.gui.translation import UiLanguage
 
-    snapshot_gate.UPDATE_ALWAYS = before
+    snapshot_gate.UPDATE_ALWAYS = mode == "before"
+    snapshot_gate.PACED = mode == "paced"
+    if os.environ.get("SWITCH_MS"):
+        sys.setswitchinterval(float(os.environ["SWITCH_MS"]) / 1000)
     if os.environ.get("SHARE"):
         snapshot_gate.SHARE = float(os.environ["SHARE"])
     guard_singletons()
@@ -133,30 +141,30 @@ def measure(before: bool, seconds: float) -> None:
             docks.time_chart.stop()
             docks.bit_display.stop()
         session.stop()
-        print(f"{'before' if before else 'after':6}  {name:10}  {stats.scans:6}  "
+        print(f"{mode:6}  {name:10}  {stats.scans:6}  "
               f"{stats.overruns:8}  {stats.max_ms:8.1f}  {stats.avg_ms:6.2f}  {gui:5.0f} %",
               flush=True)
 
 
 def main() -> None:
-    """Both modes, each in a fresh process, figures side by side."""
+    """Every mode, each in a fresh process, figures side by side."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("seconds", nargs="?", type=float, default=6.0,
                         help="seconds measured per dock set, after the first (default 6)")
     parser.add_argument("--fifo", action="store_true",
                         help="SCHED_FIFO priority (Linux, root): a busy machine's other "
                              "processes out of the figures")
-    parser.add_argument("--mode", choices=("before", "after"), help=argparse.SUPPRESS)
+    parser.add_argument("--mode", choices=MODES, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.mode:
-        measure(args.mode == "before", args.seconds)
+        measure(args.mode, args.seconds)
         return
     if args.fifo:
         os.sched_setscheduler(0, os.SCHED_FIFO, os.sched_param(10))  # children inherit it
     print(f"{PROGRAM}: 8 ms scans on the wall clock, {args.seconds:.0f} s per dock set after "
           f"the first second{' (SCHED_FIFO)' if args.fifo else ''}")
     print("mode    docks        scans  overruns  worst ms  avg ms  GUI thread")
-    for mode in ("before", "after"):
+    for mode in MODES:
         subprocess.run([sys.executable, __file__, str(args.seconds), "--mode", mode],
                        check=True)
 

@@ -90,6 +90,11 @@ class ButtonFlow(QWidget):
         self.buttons[action.objectName()] = button
         return button
 
+    def add_widget(self, widget: QWidget) -> None:
+        """Another widget in the flow (a labelled field that wraps with the buttons)."""
+        widget.setParent(self)
+        self.flow.addWidget(widget)
+
     def add_separator(self) -> None:
         """A gap between two groups of buttons."""
         gap = QFrame(self)

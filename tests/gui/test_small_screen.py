@@ -70,12 +70,17 @@ def test_the_time_chart_opens_as_a_tab_and_still_fits(window: MainWindow, qtbot:
     window.actions_by_name["action_dock_time_chart"].trigger()
     qtbot.waitUntil(chart.isVisible)
     assert window.plc_docks.alarms in window.tabifiedDockWidgets(chart)  # behind it, a tab
+    # the error list too (issue 31): beside the chart it took half the bottom row
+    assert window.errors in window.tabifiedDockWidgets(chart)
     assert minimum(window).boundedTo(PANEL) == minimum(window), minimum(window)
     assert window.size() == PANEL
-    for widget in (window.statusBar(), window.errors, chart.plot, chart.signals_edit,
-                   window.editor):
+    for widget in (window.statusBar(), chart.plot, chart.signals_edit, window.editor):
         assert inside(window, widget), widget.objectName()
-    assert window.editor.viewport().height() >= 100
+    assert not chart.toolbar.hidden_buttons()
+    # a third at most, unless its smallest size is more (an 11 pt font)
+    qtbot.waitUntil(lambda: chart.height() <= max(PANEL.height() // 3,
+                                                  chart.minimumSizeHint().height()))
+    assert window.editor.viewport().height() >= 200, window.editor.viewport().size()
     window.set_language("en")
 
 
@@ -160,7 +165,16 @@ def test_tabbed_docks_show_their_whole_titles(window: MainWindow, qtbot: QtBot) 
                        ("action_dock_force_list", docks.force_list)):
         window.actions_by_name[name].trigger()
         qtbot.waitUntil(dock.isVisible)
-    window.resizeDocks([docks.time_chart], [300], Qt.Orientation.Horizontal)  # its narrowest
+    # the error list joined the group on the panel (issue 31); beside it again, as a user
+    # drags it, it leaves the group narrow
+    window.removeDockWidget(window.errors)
+    window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, window.errors,
+                         Qt.Orientation.Horizontal)
+    window.errors.show()
+    docks.time_chart.raise_()
+    qtbot.waitUntil(lambda: docks.time_chart.width() < PANEL.width())
+    window.resizeDocks([docks.time_chart, window.errors], [300, PANEL.width() - 300],
+                       Qt.Orientation.Horizontal)  # its narrowest
     qtbot.waitUntil(lambda: docks.time_chart.width() < 480)
     titles = {dock.windowTitle() for dock in (docks.alarms, docks.time_chart, docks.scenario,
                                               docks.force_list)}

@@ -38,6 +38,15 @@ class RealTimeRunner:
         self._min = float("inf")
         self._max = 0.0
         self._overruns = 0
+        self._next_start = 0.0  # perf_counter time the next scan is due
+        self._scanning = False
+
+    def due_in(self) -> float:
+        """Seconds until the next scan starts: 0 while one runs or is late (the GUI thread
+        times its long updates just after a scan, so the two do not wait for each other)."""
+        if self._scanning:
+            return 0.0
+        return max(0.0, self._next_start - time.perf_counter())
 
     @property
     def running(self) -> bool:
@@ -78,10 +87,13 @@ class RealTimeRunner:
         period = self.engine.period_ms / 1000.0
         next_start = time.perf_counter()
         while not self._stop.is_set():
+            self._scanning = True
             began = time.perf_counter()
             self.engine.scan()
             took = time.perf_counter() - began
             next_start += period
+            self._next_start = next_start
+            self._scanning = False
             now = time.perf_counter()
             late = now > next_start
             with self._lock:
@@ -92,6 +104,6 @@ class RealTimeRunner:
                 if late:
                     self._overruns += 1
             if late:
-                next_start = now
+                next_start = self._next_start = now
             else:
                 self._stop.wait(next_start - now)

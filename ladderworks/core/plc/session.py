@@ -207,6 +207,10 @@ class PlcRun:
         """True while the real-time runner's thread scans."""
         return self._runner is not None
 
+    def due_in(self) -> float | None:
+        """Seconds until the real-time thread's next scan (None when no thread scans)."""
+        return None if self._runner is None else self._runner.due_in()
+
     def start(self) -> bool:
         """Start scanning (a thread when real-time); False when no program is loaded."""
         if self.engine is None:

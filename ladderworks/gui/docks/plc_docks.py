@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from PySide6.QtCore import QCoreApplication, Qt
-from PySide6.QtWidgets import QDockWidget, QMainWindow
+from PySide6.QtCore import QCoreApplication, Qt, QTimer
+from PySide6.QtWidgets import QDockWidget, QMainWindow, QToolButton
 
 from ladderworks.core.il import Program
 from ladderworks.gui.console_menus import ConsoleMenus
@@ -27,6 +27,7 @@ from ladderworks.gui.plc_state import PlcStateLabel
 
 RIGHT = Qt.DockWidgetArea.RightDockWidgetArea
 BOTTOM = Qt.DockWidgetArea.BottomDockWidgetArea
+LEFT = Qt.DockWidgetArea.LeftDockWidgetArea
 
 
 @dataclass(slots=True)
@@ -67,6 +68,39 @@ def _tab(window: QMainWindow, docks: list[QDockWidget]) -> None:
         window.tabifyDockWidget(docks[0], dock)
 
 
+# a window at most this high (a 1024×600 panel, maximised) is a small screen: the error list
+# joins the bottom PLC docks' tab group when one is opened
+SMALL_HEIGHT = 720
+TOOLS_MARGIN = 28  # px beside the widest tool button: the palette's margins and scroll bar
+
+
+def _share_the_bottom(window: QMainWindow, dock: QDockWidget) -> None:
+    """On a small screen, a bottom PLC dock opened takes the error list into its tab group:
+    side by side, the list (a real program's 1,333 warnings) took half the bottom row and
+    left the ladder a 310×210 corner; as a tab it is one click away, and the whole row's
+    width lets the dock's buttons fit on one line."""
+    errors = window.findChild(QDockWidget, "dock_errors")
+    if (window.height() > SMALL_HEIGHT or errors is None or errors is dock
+            or errors.isFloating() or window.dockWidgetArea(errors) != BOTTOM
+            or errors in window.tabifiedDockWidgets(dock)):
+        return
+    window.tabifyDockWidget(dock, errors)
+
+
+def _narrow_the_tools(window: QMainWindow) -> None:
+    """On a small screen, a right-hand PLC dock opened narrows the tool palette's group to its
+    widest tool's name (the palette's 230 px leave the ladder 310 px of a 1024-px screen)."""
+    palette = window.findChild(QDockWidget, "dock_palette")
+    if (palette is None or palette.isFloating() or not palette.isVisible()
+            or window.dockWidgetArea(palette) != LEFT):
+        return
+    widest = max((button.sizeHint().width() for button in palette.findChildren(QToolButton)),
+                 default=0)
+    if widest and palette.width() > widest + TOOLS_MARGIN:
+        QTimer.singleShot(0, lambda: window.resizeDocks([palette], [widest + TOOLS_MARGIN],
+                                                        Qt.Orientation.Horizontal))
+
+
 def _raise_when_shown(window: QMainWindow, dock: QDockWidget) -> None:
     """Its toggle brings a tabbed dock to the front, not only back into its group, and gives
     it a fair share of the window: a bottom dock at least a third of the height (a large
@@ -76,11 +110,19 @@ def _raise_when_shown(window: QMainWindow, dock: QDockWidget) -> None:
     def shown(checked: bool) -> None:
         if not checked:
             return
-        dock.raise_()
         area = window.dockWidgetArea(dock)
+        if area == BOTTOM:
+            _share_the_bottom(window, dock)
+        elif area == RIGHT and window.height() <= SMALL_HEIGHT:
+            _narrow_the_tools(window)
+        dock.raise_()
         third = window.height() // 3
         widest = window.width() * 45 // 100
-        if area == BOTTOM and dock.height() < third:
+        if area == BOTTOM and window.height() <= SMALL_HEIGHT:
+            # a third, not more: the ladder keeps the rest (once the tab group is laid out)
+            QTimer.singleShot(0, lambda: window.resizeDocks([dock], [third],
+                                                            Qt.Orientation.Vertical))
+        elif area == BOTTOM and dock.height() < third:
             window.resizeDocks([dock], [third], Qt.Orientation.Vertical)
         elif area == RIGHT and dock.width() > widest:
             window.resizeDocks([dock], [widest], Qt.Orientation.Horizontal)

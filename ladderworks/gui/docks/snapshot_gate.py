@@ -8,7 +8,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 
-from PySide6.QtCore import QObject, QTimer
+from PySide6.QtCore import QObject, Qt, QTimer
 from PySide6.QtWidgets import QWidget
 
 from ladderworks.core.plc.session import PlcSnapshot
@@ -20,6 +20,13 @@ UPDATE_ALWAYS = False
 # of the GUI thread's time that may be spent while the PLC scans in real time: the rest
 # leaves the interpreter to the scan thread
 SHARE = 0.25
+# True: a long update waits for the gap after a scan, and a dock may ask for a least time
+# between its updates (the time chart's redraws); benchmarks/realtime_docks.py flips it
+PACED = True
+# an update starts only when the real-time thread's next scan is at least this far (seconds)
+QUIET = 0.003
+# how often a gate looks again for the gap after a scan before it updates anyway
+TRIES = 12
 
 
 class UpdateBudget:
@@ -28,8 +35,10 @@ class UpdateBudget:
 
     def __init__(self, share: float | None = None,
                  clock: Callable[[], float] = time.perf_counter,
-                 cpu: Callable[[], float] = time.thread_time) -> None:
+                 cpu: Callable[[], float] = time.thread_time,
+                 interval: float = 0.0) -> None:
         self.share = share if share is not None else SHARE
+        self.interval = interval  # least seconds between two updates (when PACED)
         self.clock = clock
         self.cpu = cpu  # this thread's CPU time: the GUI thread's, as updates run there
         self.marks: tuple[float, float] | None = None  # (clock, cpu) when the last one began
@@ -39,7 +48,9 @@ class UpdateBudget:
         if self.marks is None:
             return 0.0
         began, busy = self.marks
-        return max(0.0, (self.cpu() - busy) / self.share - (self.clock() - began))
+        gone = self.clock() - began
+        least = self.interval if PACED else 0.0
+        return max(0.0, (self.cpu() - busy) / self.share - gone, least - gone)
 
     def run(self, update: Callable[[], None]) -> None:
         """Run `update` and start counting from it."""
@@ -62,7 +73,10 @@ class SnapshotGate(QObject):
         self.budget = budget if budget is not None else UpdateBudget()
         self.pending = False  # a snapshot was held back
         self.updates = 0  # how many ran (tests, benchmarks)
+        self.deferred = 0  # how often an update waited for the gap after a scan (tests)
+        self._tries = 0
         self._timer = QTimer(self)
+        self._timer.setTimerType(Qt.TimerType.PreciseTimer)
         self._timer.setSingleShot(True)
         self._timer.timeout.connect(self.flush)
 
@@ -74,16 +88,37 @@ class SnapshotGate(QObject):
         self.pending = True
         if not self.widget.isVisible():
             return
-        wait = self.budget.wait() if self.session.run.threaded else 0.0
+        wait = self.wait()
         if wait <= 0:
             self._run(snapshot)
         elif not self._timer.isActive():
             self._timer.start(max(1, round(wait * 1000)))
 
+    def wait(self) -> float:
+        """Seconds before the next update may run: the budget's wait and, when PACED, until
+        the gap after the real-time thread's next scan if that scan is due within QUIET."""
+        if not self.session.run.threaded:
+            return 0.0
+        wait = self.budget.wait()
+        if wait > 0 or not PACED or self._tries >= TRIES:
+            return wait
+        due = self.session.run.due_in()
+        if due is None or due >= QUIET:
+            return 0.0
+        self._tries += 1
+        self.deferred += 1
+        return due + 0.0005  # just after the scan has begun: it is found running, or done
+
     def flush(self) -> None:
-        """Make up for a snapshot held back, with the latest (when the widget is shown)."""
-        if self.pending and self.widget.isVisible():
-            self._run(self.session.run.snapshot())
+        """Make up for a snapshot held back, with the latest (when the widget is shown),
+        when the budget and the scan's gap allow."""
+        if not (self.pending and self.widget.isVisible()):
+            return
+        wait = self.wait()
+        if wait > 0:
+            self._timer.start(max(1, round(wait * 1000)))
+            return
+        self._run(self.session.run.snapshot())
 
     def let_scan(self) -> None:
         """Between two pieces of a long update: while the real-time thread scans, give it the
@@ -94,6 +129,7 @@ class SnapshotGate(QObject):
 
     def _run(self, snapshot: PlcSnapshot) -> None:
         self.pending = False
+        self._tries = 0
         self._timer.stop()
         self.updates += 1
         self.budget.run(lambda: self.update(snapshot))

@@ -29,9 +29,9 @@ from ladderworks.core.symbols import describe
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
-from ladderworks.gui.docks import trace_files
+from ladderworks.gui.docks import snapshot_gate, trace_files
 from ladderworks.gui.docks.bus_lane import BusLane
-from ladderworks.gui.docks.snapshot_gate import SnapshotGate
+from ladderworks.gui.docks.snapshot_gate import SnapshotGate, UpdateBudget
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.live_text import set_live_text
@@ -46,6 +46,10 @@ LANE_HEIGHT = 1.6  # a lane's trace spans 0..1 of it; the rest separates it from
 DEFAULT_PERIOD_MS = 8
 MAX_PERIOD_MS = 60_000
 _SPLIT = re.compile(r"[\s,;]+")
+# least seconds between two redraws while the PLC scans in real time (snapshot_gate.PACED):
+# four a second follow a running machine; each one takes the interpreter from the scan thread
+REDRAW_INTERVAL = 0.25
+SHORT_PLOT = 140  # px: a plot this high or higher shows the time axis's title
 _COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
 
 
@@ -58,6 +62,7 @@ class TimeChartDock(Retranslating, QDockWidget):
         self.session = session
         self.record = TraceRecord()
         self.sampling = False
+        self.follows = 0  # how often a redraw set the span it follows (tests)
         self._curves: list[pg.PlotDataItem] = []  # one step trace per lane
         self._fills: list[pg.PlotDataItem] = []  # the shading under each bit lane
         self._buses: dict[int, BusLane] = {}  # the value lanes, by lane
@@ -75,19 +80,25 @@ class TimeChartDock(Retranslating, QDockWidget):
         self.period_spin.setRange(1, MAX_PERIOD_MS)
         self.period_spin.setValue(DEFAULT_PERIOD_MS)
         self.period_spin.setSuffix(" ms")
-        # the signals take what the row leaves (a list of addresses wants the width); the
-        # sampling time sits at its end: one row less on a 1024×600 screen
+        # the signals take the whole row (a list of addresses wants the width; the Turkish
+        # "ÖRNEKLEME ZAMANI:" beside it left a 1024-px screen a few characters of it); the
+        # sampling time goes before START, in the row of buttons that wraps
         self.signals_edit.setMinimumWidth(self.signals_edit.fontMetrics().horizontalAdvance("M")
                                           * 10)
         entry.addWidget(self.signals_label)
         entry.addWidget(self.signals_edit, 1)
-        entry.addSpacing(8)
-        entry.addWidget(self.period_label)
-        entry.addWidget(self.period_spin)
         layout.addLayout(entry)
         # buttons that wrap onto a second line in a narrow dock: none hides behind an overflow
         self.toolbar = ButtonFlow(body)
         self.toolbar.setObjectName("timeChartToolbar")
+        period = QWidget(self.toolbar)
+        period.setObjectName("timeChartPeriodField")
+        period_row = QHBoxLayout(period)
+        period_row.setContentsMargins(0, 0, 0, 0)
+        period_row.addWidget(self.period_label)
+        period_row.addWidget(self.period_spin)
+        self.toolbar.add_widget(period)
+        self.toolbar.add_separator()
         self.chart_actions: dict[str, QAction] = {}
         for name, slot in (
             ("action_time_chart_start", self.start),
@@ -117,7 +128,8 @@ class TimeChartDock(Retranslating, QDockWidget):
         self.plot = pg.PlotWidget(body, background="w",
                                   axisItems={"bottom": LocaleAxis("bottom")})
         self.plot.setObjectName("timeChartPlot")
-        self.plot.setMinimumHeight(100)  # a 1024×600 screen: the chart still fits with the docks
+        # a 1024×600 screen: the chart fits in a third of the height, the ladder keeps the rest
+        self.plot.setMinimumHeight(70)
         self.plot.scene().contextMenu = []  # pyqtgraph's own English "Export..."; ours are above
         self.plot.setMinimumWidth(380)  # room for the lane names and a readable time axis
         item = self.plot.getPlotItem()
@@ -147,7 +159,8 @@ class TimeChartDock(Retranslating, QDockWidget):
         layout.addWidget(self.cursor_label)
         self.setWidget(body)
         # samples are taken at every snapshot; the lanes are drawn when shown, in budget
-        self.gate = SnapshotGate(self, lambda _snapshot: self._redraw(), session)
+        self.gate = SnapshotGate(self, lambda _snapshot: self._redraw(), session,
+                                 UpdateBudget(interval=REDRAW_INTERVAL))
         session.snapshot_ready.connect(self._take_samples)
         self.visibilityChanged.connect(lambda _shown: self.gate.flush())
         session.program_loaded.connect(self._on_program_loaded)
@@ -301,12 +314,26 @@ class TimeChartDock(Retranslating, QDockWidget):
                 self._buses[lane].set_steps([float(x) for x in steps], values)
                 continue
             xs, ys = self.lane_points(lane)
-            curve.setData(xs, ys)
-            next(fills).setData(xs, ys)
+            # the points are numbers: pyqtgraph's check for NaN and infinity is not needed
+            light = snapshot_gate.PACED
+            curve.setData(xs, ys, skipFiniteCheck=light)
+            next(fills).setData(xs, ys, skipFiniteCheck=light)
             self.gate.let_scan()  # ~1 ms a lane: a scan that is due goes first
+        self._follow()
         if self.record.times and self.time_cursor.value() < self.record.times[0]:
             self.time_cursor.setValue(self.record.times[0])
         self._show_cursor()
+
+    def _follow(self) -> None:
+        """While the chart follows the record, set its new time span now: left to the view's
+        auto-range, the span changes when the chart paints, and it paints twice."""
+        view = self.plot.getPlotItem().getViewBox()
+        if not (snapshot_gate.PACED and view.autoRangeEnabled()[0] and self.record.times):
+            return
+        end = self.record.end_ms or self.record.times[-1]
+        view.setXRange(self.record.times[0], end, padding=0.02)
+        view.enableAutoRange(x=True, y=False)  # still following: finds the span just set
+        self.follows += 1
 
     # -- zoom, pan, cursor -----------------------------------------------------------------
 
@@ -449,9 +476,16 @@ class TimeChartDock(Retranslating, QDockWidget):
             label.setMinimumHeight(label.heightForWidth(width) if label.text() else 0)
 
     def resizeEvent(self, event: QResizeEvent) -> None:
-        """Wrapped lines change with the width."""
+        """Wrapped lines change with the width; a short chart drops its axis title."""
         super().resizeEvent(event)
         self._fit_labels()
+        self._fit_axis_title()
+
+    def _fit_axis_title(self) -> None:
+        """A chart under SHORT_PLOT px (a 1024×600 screen's third) gives the lanes the
+        axis title's line: the numbers under the axis are milliseconds all the same."""
+        axis = self.plot.getPlotItem().getAxis("bottom")
+        axis.showLabel(self.plot.height() >= SHORT_PLOT)
 
     def _update_actions(self) -> None:
         self.chart_actions["action_time_chart_start"].setEnabled(not self.sampling)
@@ -484,6 +518,7 @@ class TimeChartDock(Retranslating, QDockWidget):
             translate("TimeChart", "Save the chart as a PNG picture")
         )
         self.plot.getPlotItem().setLabel("bottom", translate("TimeChart", "time (ms)"))
+        self._fit_axis_title()
         self.plot.getPlotItem().getAxis("bottom").picture = None  # ticks in the new decimal sign
         self.plot.getPlotItem().getAxis("bottom").update()
         trace_files.retranslate(self)

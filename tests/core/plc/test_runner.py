@@ -53,3 +53,13 @@ def test_runner_can_restart_and_reset_its_figures() -> None:
     assert wait_until(lambda: runner.stats().scans >= 2)
     runner.stop()
     assert runner.stats().scans >= 2
+
+
+def test_runner_says_when_the_next_scan_is_due() -> None:
+    engine = engine_for("RD X0.0\nWRT Y0.0", period_ms=1000)
+    runner = RealTimeRunner(engine)
+    assert runner.due_in() == 0  # not started
+    runner.start()
+    assert wait_until(lambda: engine.scan_count >= 1 and runner.due_in() > 0)
+    assert 0.5 < runner.due_in() <= 1.0  # a second's period: the next scan is most of it away
+    runner.stop()
