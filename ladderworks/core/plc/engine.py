@@ -77,8 +77,9 @@ class ScanEngine:
         self.force_table = ForceTable()
         self.trace: TraceSampler | None = None
         self.history: ScanHistory | None = None  # set to keep every scan (needs monitored)
-        self.power_flow = bytearray(len(self.program.ops))
+        self._power_flow = bytearray(len(self.program.ops))
         self._flow = [0] * len(self.program.ops)  # what the monitored code writes
+        self._flow_stale = False  # `_flow` holds a scan's power flow not yet in the bytes
         # every change of the A area, with the time of the scan that made it (newest last)
         self.alarm_log: deque[tuple[int, bytes]] = deque(maxlen=ALARM_LOG_CAPACITY)
         self._alarm_bits = bytes(self.memory.areas[Area.A])
@@ -131,7 +132,7 @@ class ScanEngine:
             try:
                 self._current.scan(ctx, self._flow, self.scan_count % self.divisions == 0)
                 if self._monitored:
-                    self.power_flow[:] = bytes(self._flow)
+                    self._flow_stale = True  # made into bytes when read (power_flow)
             finally:
                 self.force_table.apply(self.memory)
             alarms = self.memory.areas[Area.A]
@@ -183,10 +184,22 @@ class ScanEngine:
                 state.clear()
             self._ctx.power_on()  # DIFU/DIFD edge memories are shared by number, not per call
             self._first_scan = True
-            self.power_flow[:] = bytes(len(self.power_flow))
+            self._power_flow[:] = bytes(len(self._power_flow))
             self._flow[:] = [0] * len(self._flow)
+            self._flow_stale = False
 
     # -- monitoring ----------------------------------------------------------------------
+
+    @property
+    def power_flow(self) -> bytearray:
+        """The last monitored scan's result of every op, one byte per op (made from the
+        scan's list when first read after the scan: a view reading it 10 times a second
+        does not pay for a copy in every scan)."""
+        with self.lock:
+            if self._flow_stale:
+                self._power_flow[:] = bytes(self._flow)
+                self._flow_stale = False
+            return self._power_flow
 
     @property
     def monitored(self) -> bool:

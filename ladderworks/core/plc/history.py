@@ -27,7 +27,10 @@ class ScanSource(Protocol):
     memory: Memory
     now_ms: int
     scan_count: int
-    power_flow: bytearray
+
+    @property
+    def power_flow(self) -> bytearray:
+        """The last scan's result of every op, one byte per op."""
 
 
 BLOCK = 64
