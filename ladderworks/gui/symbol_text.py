@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 
+from ladderworks.core import dialects
 from ladderworks.core.address import Address
 from ladderworks.core.il import Instruction, print_instruction
 from ladderworks.core.ladder import Coil, Contact, FunctionBox, LadderNetwork, open_cells
@@ -31,15 +32,23 @@ def labelled(address: Address, symbols: SymbolTable | None) -> str:
     return f"{address} {name}" if name else str(address)
 
 
-def tooltip(address: Address, symbols: SymbolTable | None) -> str:
-    """Lines for a tooltip: `X21.7  ESKIP`, then the comment (or the signal's descriptions)."""
-    lines = [str(address)]
+def program_name(address: Address, symbols: SymbolTable | None, dialect: str | None) -> str:
+    """The name of `address` in a program of `dialect`: a dialect's has no FANUC signal names."""
+    if dialects.get(dialect) is None:
+        return describe(address, symbols)
+    return (symbols.symbol(address) or "") if symbols is not None else ""
+
+
+def tooltip(address: Address, symbols: SymbolTable | None, dialect: str | None = None) -> str:
+    """Lines for a tooltip: `X21.7  ESKIP`, then the comment (or the signal's descriptions); in
+    a program of a dialect its device (`X17`) and no FANUC signal."""
+    lines = [dialects.format_address(address, dialect)]
     found = symbols.lookup(address) if symbols is not None else None
     if found is not None and found.symbol:
         lines[0] += f"  {found.symbol}"
         lines += [comment for comment in found.comments if comment]
         return "\n".join(lines)
-    signal = signal_at(address)
+    signal = signal_at(address) if dialects.get(dialect) is None else None
     if signal is not None:
         lines[0] += f"  {signal.name}"
         lines += [text for text in (signal.turkish, signal.english, signal.notes) if text]
