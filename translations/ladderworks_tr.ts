@@ -1414,87 +1414,97 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
         <source>one of {0}</source>
         <translation>şunlardan biri: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
         <source>{0} to {1}</source>
         <translation>{0} ile {1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <source>a device of this PLC</source>
+        <translation>bu PLC&apos;nin bir aygıtı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <source>a constant or a device of this PLC</source>
+        <translation>bir sabit ya da bu PLC&apos;nin bir aygıtı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte adresi ({0} byte)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
         <source>byte address</source>
         <translation>byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
         <source>constant or byte address</source>
         <translation>sabit veya byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>en çok 4 ikili hane, örneğin 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
         <source>P{0} to P{1}</source>
         <translation>P{0} ile P{1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
         <source>L{0} to L{1}</source>
         <translation>L{0} ile L{1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="61"/>
         <source>constant or address, kept as written</source>
         <translation>sabit veya adres, yazıldığı gibi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="63"/>
         <source>values separated by spaces</source>
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="172"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="175"/>
         <source>This instruction has no parameters.</source>
         <translation>Bu komutun parametresi yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="161"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="180"/>
         <source>Parameter</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="162"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="181"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="163"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="182"/>
         <source>Allowed</source>
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="197"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="216"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
     </message>
@@ -1520,7 +1530,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="81"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="84"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -1530,34 +1540,32 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="86"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="202"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="35"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="91"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="93"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="120"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="120"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="36"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="129"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="131"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="133"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -1567,28 +1575,28 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="96"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="98"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="156"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="158"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="169"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="171"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="76"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="79"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="71"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="74"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -1598,27 +1606,27 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="237"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="238"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="249"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="250"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="259"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="260"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="67"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="76"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="84"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="93"/>
         <source>open circuit here: draw a wire or an element</source>
         <translation>devre burada açık: bir çizgi veya bir eleman çizin</translation>
     </message>
@@ -1853,29 +1861,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <location filename="../ladderworks/gui/main_window.py" line="200"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="406"/>
+        <location filename="../ladderworks/gui/main_window.py" line="412"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="412"/>
+        <location filename="../ladderworks/gui/main_window.py" line="418"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="419"/>
+        <location filename="../ladderworks/gui/main_window.py" line="425"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/main_window.py" line="265"/>
-        <location filename="../ladderworks/gui/main_window.py" line="414"/>
+        <location filename="../ladderworks/gui/main_window.py" line="271"/>
+        <location filename="../ladderworks/gui/main_window.py" line="420"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -2014,32 +2022,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="376"/>
+        <location filename="../ladderworks/gui/main_window.py" line="382"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="392"/>
+        <location filename="../ladderworks/gui/main_window.py" line="398"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="456"/>
+        <location filename="../ladderworks/gui/main_window.py" line="462"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="459"/>
+        <location filename="../ladderworks/gui/main_window.py" line="465"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="491"/>
+        <location filename="../ladderworks/gui/main_window.py" line="497"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="492"/>
+        <location filename="../ladderworks/gui/main_window.py" line="498"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2841,8 +2849,8 @@
         <translation>Adres (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="60"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="284"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="295"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
     </message>
@@ -2852,42 +2860,47 @@
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="318"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="329"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
+        <source>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</source>
+        <translation>{0} programının PMC parametre tabloları yoktur: zamanlayıcı ve sayıcı ayar değerleri komutlarında yazılıdır. T, C ve D aygıtlarını bit gösteriminde ve zaman kartında izleyin.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="339"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="340"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="322"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="341"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="342"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="331"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="350"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="334"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="353"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
@@ -3560,127 +3573,127 @@
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="376"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="398"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="395"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="403"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="87"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="401"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="410"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="412"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="141"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="416"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="421"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="418"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="423"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="469"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="470"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="467"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="469"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="474"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="470"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="475"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="477"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="473"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="478"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="474"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="479"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="475"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="480"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="481"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="481"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="486"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="484"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="489"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="486"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="491"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="111"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
@@ -3879,22 +3892,32 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="111"/>
+        <location filename="../ladderworks/gui/palette.py" line="29"/>
+        <source>Delta DVP instructions</source>
+        <translation>Delta DVP komutları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="30"/>
+        <source>Fatek FBs instructions</source>
+        <translation>Fatek FBs komutları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="139"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="112"/>
+        <location filename="../ladderworks/gui/palette.py" line="140"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="25"/>
+        <location filename="../ladderworks/gui/palette.py" line="27"/>
         <source>Seed manual instructions</source>
         <translation>Kılavuzdaki komutlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="26"/>
+        <location filename="../ladderworks/gui/palette.py" line="28"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC komutları</translation>
     </message>
@@ -3902,42 +3925,42 @@
 <context>
     <name>TraceFiles</name>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="71"/>
         <source>LADDER-III...</source>
         <translation>LADDER-III...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="70"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="73"/>
         <source>Export the samples as a LADDER-III signal-trace result</source>
         <translation>Örnekleri LADDER-III sinyal izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="74"/>
         <source>Import...</source>
         <translation>İçe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="76"/>
         <source>Show a LADDER-III trace result or a CSV trace</source>
         <translation>Bir LADDER-III izleme sonucunu ya da CSV izlemesini göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="102"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="116"/>
         <source>{0}, line {1}: not a trace file</source>
         <translation>{0}, satır {1}: izleme dosyası değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="110"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="124"/>
         <source>Imported {0}: {1} samples</source>
         <translation>{0} içe aktarıldı: {1} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="131"/>
         <source>Export as LADDER-III trace result</source>
         <translation>LADDER-III izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="140"/>
         <source>Import a trace</source>
         <translation>Bir izleme içe aktar</translation>
     </message>

@@ -38,7 +38,8 @@ def test_delta_lanes_readout_and_csv_in_delta_spelling(qtbot: QtBot, window: Mai
     assert [chart.lane_name(s) for s in chart.record.signals] == ["X0", "Y0", "T0"]  # no HW_ESTP
     assert list(chart.cursor_values()) == ["X0", "Y0", "T0"]
     chart.set_cursor(chart.record.times[-1])
-    assert chart.cursor_label.text().count("X0 = 1") == 1 and "X0.0" not in chart.cursor_label.text()
+    readout = chart.cursor_label.text()
+    assert readout.count("X0 = 1") == 1 and "X0.0" not in readout
     csv = tmp_path / "trace.csv"
     assert chart.export_csv(csv)
     assert csv.read_text(encoding="utf-8").splitlines()[0] == "time_ms,X0,Y0,T0"

@@ -234,6 +234,10 @@ class TimeChartDock(Retranslating, QDockWidget):
 
     # -- drawing -----------------------------------------------------------------------------
 
+    def program_dialect(self) -> str | None:
+        """The loaded program's dialect (its devices name the lanes)."""
+        return self.session.run.program_dialect
+
     def lane_name(self, signal: TracedSignal) -> str:
         """The lane's label: the address and, for a named signal, its short name."""
         name = program_name(signal.address, self.session.symbols,

@@ -42,6 +42,9 @@ class TimeChartDock(Protocol):
     def show_record(self, record: TraceRecord) -> None:
         """Show a finished record instead of live samples."""
 
+    def program_dialect(self) -> str | None:
+        """The loaded program's dialect (its devices name the CSV's columns)."""
+
 
 def table_of(record: TraceRecord) -> TraceTable:
     """The record as a file table."""
@@ -102,7 +105,7 @@ def import_trace(dock: TimeChartDock, path: str | Path) -> bool:
     period = dock.period_spin.value()
     try:
         table = read_trace(Path(path).read_text(encoding="utf-8", errors="replace"), period)
-        dialect = dock.session.run.program_dialect
+        dialect = dock.program_dialect()
         signals = [_label_signal(label, dialect) for label in table.labels]
     except OSError as error:
         dock.say(translate("TimeChart", "Cannot read {0}: {1}").format(
