@@ -6,7 +6,8 @@ from PySide6.QtCore import QCoreApplication
 
 from ladderworks.core import dialects
 from ladderworks.core.address import Address
-from ladderworks.core.il import Instruction, print_instruction
+from ladderworks.core.dialects.spelling import spelling
+from ladderworks.core.il import Instruction
 from ladderworks.core.ladder import Coil, Contact, FunctionBox, LadderNetwork, open_cells
 from ladderworks.core.naming import address_names
 from ladderworks.core.signals import signal_at
@@ -70,9 +71,11 @@ def element_tooltip(network: LadderNetwork, row: int, col: int,
 
 
 def cell_status(network: LadderNetwork, index: int, row: int, col: int,
-                symbols: SymbolTable | None) -> str:
+                symbols: SymbolTable | None, dialect: str | None = None) -> str:
     """Status-bar text of network `index`'s cell: the cell, and the address with its signal
-    name and comment (or the function with its parameters)."""
+    name and comment (or the function with its parameters); in a program of `dialect` in its
+    spelling (`X0`, `TMR T0 K10`) and without FANUC signal names."""
+    shown = spelling(dialect)
     parts = [QCoreApplication.translate("LadderEditor", "N{0} row {1} col {2}").format(
         index + 1, row + 1, col + 1)]
     if network.label:
@@ -81,14 +84,15 @@ def cell_status(network: LadderNetwork, index: int, row: int, col: int,
     if found is not None:
         element = found[1]
         if isinstance(element, Contact | Coil) and element.address is not None:
-            parts.append(str(element.address))
-            described = name_and_text(element.address, symbols)
+            parts.append(shown.address(element.address))
+            described = (name_and_text(element.address, symbols) if not shown.dialect else
+                         None)
             if described is not None:
                 parts.append(" — ".join(text for text in described if text))
             if element.comment:
                 parts.append(element.comment)
         elif isinstance(element, FunctionBox):
-            parts.append(print_instruction(Instruction(element.name, params=element.params)))
+            parts.append(shown.instruction(Instruction(element.name, params=element.params)))
     if (row, col) in open_cells(network):  # the red mark, in words (keyboard users)
         parts.append(QCoreApplication.translate(
             "LadderEditor", "open circuit here: draw a wire or an element"))

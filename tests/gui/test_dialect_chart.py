@@ -80,3 +80,12 @@ def test_pmc_lanes_keep_pmc_spelling_and_signal_names(qtbot: QtBot,
     assert chart.start()
     assert [s.label for s in chart.record.signals] == ["X0.0", "D10:2"]
     assert chart.lane_name(chart.record.signals[0]) == "X0.0 HW_ESTP"
+
+
+def test_status_bar_names_the_cell_in_delta_spelling(window: MainWindow) -> None:
+    assert window.load(paths.EXAMPLES / "delta" / "timer_t0.txt")
+    contact = window.editor.describe_cell(0, 0, 0)
+    assert contact.split("  |  ")[1:] == ["X0"]  # not X0.0 HW_ESTP
+    box = next(cell for cell, element in window.model.networks[0].cells.items()
+               if type(element).__name__ == "FunctionBox")
+    assert window.editor.describe_cell(0, *box).endswith("TMR T0 K10")
