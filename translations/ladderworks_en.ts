@@ -1414,87 +1414,97 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
         <source>one of {0}</source>
         <translation>one of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
         <source>{0} to {1}</source>
         <translation>{0} to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <source>a device of this PLC</source>
+        <translation>a device of this PLC</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <source>a constant or a device of this PLC</source>
+        <translation>a constant or a device of this PLC</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte address ({0} bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
         <source>byte address</source>
         <translation>byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
         <source>constant or byte address</source>
         <translation>constant or byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>up to 4 binary digits, e.g. 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
         <source>P{0} to P{1}</source>
         <translation>P{0} to P{1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
         <source>L{0} to L{1}</source>
         <translation>L{0} to L{1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="61"/>
         <source>constant or address, kept as written</source>
         <translation>constant or address, kept as written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="63"/>
         <source>values separated by spaces</source>
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="172"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="175"/>
         <source>This instruction has no parameters.</source>
         <translation>This instruction has no parameters.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="161"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="180"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="162"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="181"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="163"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="182"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="197"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="216"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -1611,12 +1621,12 @@
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="67"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="79"/>
         <source>N{0} row {1} col {2}</source>
         <translation>N{0} row {1} col {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="84"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="97"/>
         <source>open circuit here: draw a wire or an element</source>
         <translation>open circuit here: draw a wire or an element</translation>
     </message>
@@ -1851,29 +1861,29 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="198"/>
+        <location filename="../ladderworks/gui/main_window.py" line="199"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="415"/>
+        <location filename="../ladderworks/gui/main_window.py" line="421"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="421"/>
+        <location filename="../ladderworks/gui/main_window.py" line="427"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="428"/>
+        <location filename="../ladderworks/gui/main_window.py" line="434"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="430"/>
-        <location filename="../ladderworks/gui/main_window.py" line="264"/>
-        <location filename="../ladderworks/gui/main_window.py" line="423"/>
+        <location filename="../ladderworks/gui/main_window.py" line="270"/>
+        <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -2012,32 +2022,32 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="385"/>
+        <location filename="../ladderworks/gui/main_window.py" line="391"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="401"/>
+        <location filename="../ladderworks/gui/main_window.py" line="407"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="465"/>
+        <location filename="../ladderworks/gui/main_window.py" line="471"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="468"/>
+        <location filename="../ladderworks/gui/main_window.py" line="474"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="500"/>
+        <location filename="../ladderworks/gui/main_window.py" line="506"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="501"/>
+        <location filename="../ladderworks/gui/main_window.py" line="507"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2947,8 +2957,8 @@
         <translation>Address (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="60"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="284"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="295"/>
         <source>INSERT</source>
         <translation>INSERT</translation>
     </message>
@@ -2958,42 +2968,47 @@
         <translation>TMRB: the preset is fixed in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
         <source>DELETE</source>
         <translation>DELETE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="318"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="329"/>
         <source>PLC tables</source>
         <translation>PLC tables</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
+        <source>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</source>
+        <translation>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="339"/>
         <source>Timers (TMR)</source>
         <translation>Timers (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="340"/>
         <source>Counters (CTR)</source>
         <translation>Counters (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="322"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="341"/>
         <source>Data table (D)</source>
         <translation>Data table (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="342"/>
         <source>Keep relays (K)</source>
         <translation>Keep relays (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="331"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="350"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="334"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="353"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</translation>
     </message>
@@ -3653,152 +3668,152 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="185"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="198"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="197"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="210"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="209"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="222"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="222"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="235"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="403"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="418"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="398"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="422"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="87"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="428"/>
         <source>Cannot write {0}</source>
         <translation>Cannot write {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>Export time chart as CSV</source>
         <translation>Export time chart as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="141"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="416"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="448"/>
         <source>Export time chart as PNG</source>
         <translation>Export time chart as PNG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="418"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="503"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="504"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="505"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="467"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="506"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="469"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="508"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="470"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="509"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="510"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="511"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="473"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="512"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="474"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="513"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="475"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="514"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="515"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="481"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="520"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="484"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="523"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="486"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="525"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="111"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
@@ -3997,22 +4012,32 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="111"/>
+        <location filename="../ladderworks/gui/palette.py" line="29"/>
+        <source>Delta DVP instructions</source>
+        <translation>Delta DVP instructions</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="30"/>
+        <source>Fatek FBs instructions</source>
+        <translation>Fatek FBs instructions</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="139"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="112"/>
+        <location filename="../ladderworks/gui/palette.py" line="140"/>
         <source>Function:</source>
         <translation>Function:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="25"/>
+        <location filename="../ladderworks/gui/palette.py" line="27"/>
         <source>Seed manual instructions</source>
         <translation>Seed manual instructions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="26"/>
+        <location filename="../ladderworks/gui/palette.py" line="28"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC instructions</translation>
     </message>
@@ -4020,42 +4045,42 @@
 <context>
     <name>TraceFiles</name>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="71"/>
         <source>LADDER-III...</source>
         <translation>LADDER-III...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="70"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="73"/>
         <source>Export the samples as a LADDER-III signal-trace result</source>
         <translation>Export the samples as a LADDER-III signal-trace result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="74"/>
         <source>Import...</source>
         <translation>Import...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="76"/>
         <source>Show a LADDER-III trace result or a CSV trace</source>
         <translation>Show a LADDER-III trace result or a CSV trace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="102"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="116"/>
         <source>{0}, line {1}: not a trace file</source>
         <translation>{0}, line {1}: not a trace file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="110"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="124"/>
         <source>Imported {0}: {1} samples</source>
         <translation>Imported {0}: {1} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="131"/>
         <source>Export as LADDER-III trace result</source>
         <translation>Export as LADDER-III trace result</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="140"/>
         <source>Import a trace</source>
         <translation>Import a trace</translation>
     </message>

@@ -1414,87 +1414,97 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="34"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
         <source>one of {0}</source>
         <translation>şunlardan biri: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="36"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
         <source>{0} to {1}</source>
         <translation>{0} ile {1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="40"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <source>a device of this PLC</source>
+        <translation>bu PLC&apos;nin bir aygıtı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <source>a constant or a device of this PLC</source>
+        <translation>bir sabit ya da bu PLC&apos;nin bir aygıtı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte adresi ({0} byte)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
         <source>byte address</source>
         <translation>byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
         <source>constant or byte address</source>
         <translation>sabit veya byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>en çok 4 ikili hane, örneğin 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
         <source>P{0} to P{1}</source>
         <translation>P{0} ile P{1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
         <source>L{0} to L{1}</source>
         <translation>L{0} ile L{1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="54"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="61"/>
         <source>constant or address, kept as written</source>
         <translation>sabit veya adres, yazıldığı gibi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="63"/>
         <source>values separated by spaces</source>
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="153"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="172"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="156"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="175"/>
         <source>This instruction has no parameters.</source>
         <translation>Bu komutun parametresi yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="158"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="161"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="180"/>
         <source>Parameter</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="162"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="181"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="163"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="182"/>
         <source>Allowed</source>
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="197"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="216"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
     </message>
@@ -1611,12 +1621,12 @@
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="67"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="79"/>
         <source>N{0} row {1} col {2}</source>
         <translation>D{0} satır {1} sütun {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/symbol_text.py" line="84"/>
+        <location filename="../ladderworks/gui/symbol_text.py" line="97"/>
         <source>open circuit here: draw a wire or an element</source>
         <translation>devre burada açık: bir çizgi veya bir eleman çizin</translation>
     </message>
@@ -1851,29 +1861,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="198"/>
+        <location filename="../ladderworks/gui/main_window.py" line="199"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="415"/>
+        <location filename="../ladderworks/gui/main_window.py" line="421"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="421"/>
+        <location filename="../ladderworks/gui/main_window.py" line="427"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="428"/>
+        <location filename="../ladderworks/gui/main_window.py" line="434"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="430"/>
-        <location filename="../ladderworks/gui/main_window.py" line="264"/>
-        <location filename="../ladderworks/gui/main_window.py" line="423"/>
+        <location filename="../ladderworks/gui/main_window.py" line="270"/>
+        <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -2012,32 +2022,32 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="385"/>
+        <location filename="../ladderworks/gui/main_window.py" line="391"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="401"/>
+        <location filename="../ladderworks/gui/main_window.py" line="407"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="465"/>
+        <location filename="../ladderworks/gui/main_window.py" line="471"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="468"/>
+        <location filename="../ladderworks/gui/main_window.py" line="474"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="500"/>
+        <location filename="../ladderworks/gui/main_window.py" line="506"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="501"/>
+        <location filename="../ladderworks/gui/main_window.py" line="507"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2947,8 +2957,8 @@
         <translation>Adres (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="60"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="284"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="295"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
     </message>
@@ -2958,42 +2968,47 @@
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="318"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="329"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
+        <source>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</source>
+        <translation>{0} programının PMC parametre tabloları yoktur: zamanlayıcı ve sayıcı ayar değerleri komutlarında yazılıdır. T, C ve D aygıtlarını bit gösteriminde ve zaman kartında izleyin.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="339"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="321"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="340"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="322"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="341"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="342"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="331"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="350"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="334"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="353"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
@@ -3653,152 +3668,152 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="185"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="198"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="197"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="210"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="209"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="222"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="222"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="235"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="371"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="403"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="386"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="418"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="390"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="398"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="422"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="87"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="396"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="428"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="405"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="407"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="118"/>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="141"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="416"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="448"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="418"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="464"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="503"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="465"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="504"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="466"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="505"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="467"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="506"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="469"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="508"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="470"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="509"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="510"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="511"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="473"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="512"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="474"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="513"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="475"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="514"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="476"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="515"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="481"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="520"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="484"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="523"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="486"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="525"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="111"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
@@ -3997,22 +4012,32 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="111"/>
+        <location filename="../ladderworks/gui/palette.py" line="29"/>
+        <source>Delta DVP instructions</source>
+        <translation>Delta DVP komutları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="30"/>
+        <source>Fatek FBs instructions</source>
+        <translation>Fatek FBs komutları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="139"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="112"/>
+        <location filename="../ladderworks/gui/palette.py" line="140"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="25"/>
+        <location filename="../ladderworks/gui/palette.py" line="27"/>
         <source>Seed manual instructions</source>
         <translation>Kılavuzdaki komutlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="26"/>
+        <location filename="../ladderworks/gui/palette.py" line="28"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC komutları</translation>
     </message>
@@ -4020,42 +4045,42 @@
 <context>
     <name>TraceFiles</name>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="71"/>
         <source>LADDER-III...</source>
         <translation>LADDER-III...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="70"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="73"/>
         <source>Export the samples as a LADDER-III signal-trace result</source>
         <translation>Örnekleri LADDER-III sinyal izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="71"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="74"/>
         <source>Import...</source>
         <translation>İçe aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="73"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="76"/>
         <source>Show a LADDER-III trace result or a CSV trace</source>
         <translation>Bir LADDER-III izleme sonucunu ya da CSV izlemesini göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="102"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="116"/>
         <source>{0}, line {1}: not a trace file</source>
         <translation>{0}, satır {1}: izleme dosyası değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="110"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="124"/>
         <source>Imported {0}: {1} samples</source>
         <translation>{0} içe aktarıldı: {1} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="131"/>
         <source>Export as LADDER-III trace result</source>
         <translation>LADDER-III izleme sonucu olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/trace_files.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/trace_files.py" line="140"/>
         <source>Import a trace</source>
         <translation>Bir izleme içe aktar</translation>
     </message>

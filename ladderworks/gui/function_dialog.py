@@ -16,7 +16,10 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core import dialects
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects.functions import check_params, operand_params
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Instruction
 from ladderworks.core.il.printer import print_instruction
 from ladderworks.core.instructions import InstructionSpec, Param, ParamKind
@@ -35,6 +38,10 @@ def allowed_text(param: Param, dialect: str = "seed") -> str:
                 ", ".join(str(c) for c in param.choices))
         return QCoreApplication.translate("FunctionDialog", "{0} to {1}").format(
             param.lo, param.highest(dialect))
+    if dialects.get(dialect) is not None and param.kind in (ParamKind.ADDRESS, ParamKind.VALUE):
+        return (QCoreApplication.translate("FunctionDialog", "a device of this PLC")
+                if param.kind is ParamKind.ADDRESS else
+                QCoreApplication.translate("FunctionDialog", "a constant or a device of this PLC"))
     if param.kind is ParamKind.ADDRESS:
         if isinstance(param.width, int):
             return QCoreApplication.translate(
@@ -59,7 +66,13 @@ def allowed_text(param: Param, dialect: str = "seed") -> str:
 def check_function(spec: InstructionSpec, values: list[str], dialect: str = "seed") -> tuple[
         Instruction | None, list[Diagnostic]]:
     """Build the instruction from typed values, checked by the core's parser with the ranges
-    of a program of `dialect` (a LADDER-III program: the 30i's)."""
+    of a program of `dialect` (a LADDER-III program: the 30i's; a Delta/Fatek row: by the
+    dialect's reader, in its spelling)."""
+    if spec.dialect:
+        params, diagnostics = check_params(spec, values, spec.dialect)
+        if params is None or diagnostics:
+            return None, diagnostics
+        return Instruction(spec.name, params=params), []
     params, diagnostics = function_params(spec.name, [v.strip() for v in values if v.strip()],
                                           dialect)
     if params is None or diagnostics:
@@ -118,15 +131,19 @@ class FunctionDialog(Retranslating, QDialog):
         self.buttons.helpRequested.connect(self.show_help)
         self.help_window: InstructionHelp | None = None
         layout.addWidget(self.buttons)
-        self._params = list(spec.params)
+        self._params = list(operand_params(spec))  # a dialect's: the operands of its line
         self.table.setRowCount(len(self._params))
         current = instruction.param_map() if instruction is not None else {}
+        spelled = (spelling(spec.dialect).params(spec, instruction.params)
+                   if spec.dialect and instruction is not None else [])  # Delta's `K5`, `D10`
         for row, param in enumerate(self._params):
             name_item = QTableWidgetItem()
             name_item.setFlags(Qt.ItemFlag.ItemIsEnabled)
             self.table.setItem(row, 0, name_item)
             value = current.get(param.name)
-            if isinstance(value, tuple):
+            if row < len(spelled):
+                text = spelled[row]
+            elif isinstance(value, tuple):
                 text = " ".join(str(v) for v in value)
             else:
                 text = _value_text(param, value) if value is not None else ""
@@ -149,6 +166,8 @@ class FunctionDialog(Retranslating, QDialog):
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
         name, title = instruction_label(self.spec), instruction_title(self.spec)
+        if self.spec.dialect:
+            name = spelling(self.spec.dialect).name(self.spec)
         self.setWindowTitle(f"{name} — {title}")
         self._title.setText(QCoreApplication.translate(
             "FunctionDialog", "{0} — {1}: fill in the parameters").format(name, title)

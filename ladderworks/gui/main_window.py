@@ -134,6 +134,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.editor.message.connect(self.show_message)
         self.set_tool(Tool.SELECT)
         self.editor.set_function(self.tool_palette.current_function())
+        self.model.document_reset.connect(self._palette_for_program)
         self.retranslate()
         self.resize(1200, 800)
         self._first_show = True
@@ -233,6 +234,11 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
     def current_tool(self) -> Tool:
         """The checked tool."""
         return self.editor.tool
+
+    def _palette_for_program(self) -> None:
+        """The palette offers the functional instructions of the open program's dialect."""
+        self.tool_palette.set_dialect(self.model.dialect)
+        self.editor.set_function(self.tool_palette.current_function())
 
     def _on_function_chosen(self, name: str) -> None:
         self.editor.set_function(name)

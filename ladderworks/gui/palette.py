@@ -17,13 +17,23 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
-from ladderworks.core.instructions import lookup, palette_groups
+from ladderworks.core.dialects.functions import palette_rows
+from ladderworks.core.dialects.spelling import spelling
+from ladderworks.core.instructions import InstructionSpec, lookup, palette_groups
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import instruction_title
 
 # The title of each palette group, by the rows' `source` (a source without one shows its name).
 GROUP_TITLES = {"seed": QT_TRANSLATE_NOOP("ToolPalette", "Seed manual instructions"),
-                "pmc": QT_TRANSLATE_NOOP("ToolPalette", "FANUC PMC instructions")}
+                "pmc": QT_TRANSLATE_NOOP("ToolPalette", "FANUC PMC instructions"),
+                "delta": QT_TRANSLATE_NOOP("ToolPalette", "Delta DVP instructions"),
+                "fatek": QT_TRANSLATE_NOOP("ToolPalette", "Fatek FBs instructions")}
+
+
+def function_groups(dialect: str | None) -> tuple[tuple[str, tuple[InstructionSpec, ...]], ...]:
+    """The palette's groups for a program of `dialect`: its own boxes, else the PMC's rows."""
+    rows = palette_rows(dialect)
+    return ((str(dialect), rows),) if rows else palette_groups()
 
 
 class ToolPalette(Retranslating, QDockWidget):
@@ -58,11 +68,8 @@ class ToolPalette(Retranslating, QDockWidget):
         self.functions = QComboBox(body)
         self.functions.setObjectName("function_combo")
         self._groups: list[tuple[int, str]] = []  # rows of the group titles (not choosable)
-        for source, specs in palette_groups():
-            self._add_group_title(source)
-            for spec in specs:
-                self.functions.addItem(spec.name, spec.name)
-        self.functions.setCurrentIndex(1)
+        self.dialect: str | None = None  # the program's: its boxes are offered
+        self._fill(None)
         self.functions.currentIndexChanged.connect(self._on_function)
         self.functions.activated.connect(self._on_function)  # chosen again: the tool again
         layout.addWidget(self.functions)
@@ -77,6 +84,27 @@ class ToolPalette(Retranslating, QDockWidget):
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         scroll.setMaximumWidth(body.maximumWidth() + scroll.verticalScrollBar().sizeHint().width())
         self.setWidget(scroll)
+        self.retranslate()
+
+    def _fill(self, dialect: str | None) -> None:
+        self.functions.clear()
+        self._groups = []
+        for source, specs in function_groups(dialect):
+            self._add_group_title(source)
+            for spec in specs:
+                self.functions.addItem(spec.name, spec.name)
+        self.functions.setCurrentIndex(1)
+
+    def set_dialect(self, dialect: str | None) -> None:
+        """Offer the functional instructions of a program of `dialect` (the PMC's for
+        "seed"/"fanuc"); the first is chosen when the list changes."""
+        if function_groups(dialect) == function_groups(self.dialect):
+            self.dialect = dialect
+            return
+        self.dialect = dialect
+        blocked = self.functions.blockSignals(True)
+        self._fill(dialect)
+        self.functions.blockSignals(blocked)
         self.retranslate()
 
     def _add_group_title(self, source: str) -> None:
@@ -120,5 +148,6 @@ class ToolPalette(Retranslating, QDockWidget):
             spec = lookup(str(self.functions.itemData(index)))
             assert spec is not None
             title = instruction_title(spec)
-            self.functions.setItemText(index, f"{spec.name} — {title}")
+            name = spelling(spec.dialect).name(spec) if spec.dialect else spec.name
+            self.functions.setItemText(index, f"{name} — {title}")
             self.functions.setItemData(index, title, Qt.ItemDataRole.ToolTipRole)

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 
+from ladderworks.core import dialects
 from ladderworks.core.address import Address
-from ladderworks.core.il import Instruction, print_instruction
+from ladderworks.core.dialects.spelling import spelling
+from ladderworks.core.il import Instruction
 from ladderworks.core.ladder import Coil, Contact, FunctionBox, LadderNetwork, open_cells
 from ladderworks.core.naming import address_names
 from ladderworks.core.signals import signal_at
@@ -31,15 +33,23 @@ def labelled(address: Address, symbols: SymbolTable | None) -> str:
     return f"{address} {name}" if name else str(address)
 
 
-def tooltip(address: Address, symbols: SymbolTable | None) -> str:
-    """Lines for a tooltip: `X21.7  ESKIP`, then the comment (or the signal's descriptions)."""
-    lines = [str(address)]
+def program_name(address: Address, symbols: SymbolTable | None, dialect: str | None) -> str:
+    """The name of `address` in a program of `dialect`: a dialect's has no FANUC signal names."""
+    if dialects.get(dialect) is None:
+        return describe(address, symbols)
+    return (symbols.symbol(address) or "") if symbols is not None else ""
+
+
+def tooltip(address: Address, symbols: SymbolTable | None, dialect: str | None = None) -> str:
+    """Lines for a tooltip: `X21.7  ESKIP`, then the comment (or the signal's descriptions); in
+    a program of a dialect its device (`X17`) and no FANUC signal."""
+    lines = [dialects.format_address(address, dialect)]
     found = symbols.lookup(address) if symbols is not None else None
     if found is not None and found.symbol:
         lines[0] += f"  {found.symbol}"
         lines += [comment for comment in found.comments if comment]
         return "\n".join(lines)
-    signal = signal_at(address)
+    signal = signal_at(address) if dialects.get(dialect) is None else None
     if signal is not None:
         lines[0] += f"  {signal.name}"
         lines += [text for text in (signal.turkish, signal.english, signal.notes) if text]
@@ -61,9 +71,11 @@ def element_tooltip(network: LadderNetwork, row: int, col: int,
 
 
 def cell_status(network: LadderNetwork, index: int, row: int, col: int,
-                symbols: SymbolTable | None) -> str:
+                symbols: SymbolTable | None, dialect: str | None = None) -> str:
     """Status-bar text of network `index`'s cell: the cell, and the address with its signal
-    name and comment (or the function with its parameters)."""
+    name and comment (or the function with its parameters); in a program of `dialect` in its
+    spelling (`X0`, `TMR T0 K10`) and without FANUC signal names."""
+    shown = spelling(dialect)
     parts = [QCoreApplication.translate("LadderEditor", "N{0} row {1} col {2}").format(
         index + 1, row + 1, col + 1)]
     if network.label:
@@ -72,14 +84,15 @@ def cell_status(network: LadderNetwork, index: int, row: int, col: int,
     if found is not None:
         element = found[1]
         if isinstance(element, Contact | Coil) and element.address is not None:
-            parts.append(str(element.address))
-            described = name_and_text(element.address, symbols)
+            parts.append(shown.address(element.address))
+            described = (name_and_text(element.address, symbols) if not shown.dialect else
+                         None)
             if described is not None:
                 parts.append(" — ".join(text for text in described if text))
             if element.comment:
                 parts.append(element.comment)
         elif isinstance(element, FunctionBox):
-            parts.append(print_instruction(Instruction(element.name, params=element.params)))
+            parts.append(shown.instruction(Instruction(element.name, params=element.params)))
     if (row, col) in open_cells(network):  # the red mark, in words (keyboard users)
         parts.append(QCoreApplication.translate(
             "LadderEditor", "open circuit here: draw a wire or an element"))

@@ -274,7 +274,7 @@ class BitDisplayDock(Retranslating, QDockWidget):
 
     def bit_tooltip(self, address: Address) -> str:
         """The signal name and descriptions of a bit, whether it can be forced, and its force."""
-        lines = [tooltip(address, self.session.symbols)]
+        lines = [tooltip(address, self.session.symbols, self.session.run.program_dialect)]
         forced = self._forced.get(address)
         if forced is not None:
             lines.append(translate("BitDisplay", "Forced to {0}").format(int(forced)))

@@ -31,7 +31,7 @@ from ladderworks.core.plc.session import PlcRun
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.time_chart import TimeChartDock
-from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord
+from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, traced
 from ladderworks.gui.error_list import location_text
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.header_fit import fit_headers
@@ -129,7 +129,7 @@ class ScenarioDock(Retranslating, QDockWidget):
         if plc.load(binary, self.session.run.program) or plc.engine is None:
             return None
         self._check_program(scenario)
-        signals = _signals(scenario)
+        signals = _signals(scenario, self.session.run.program_dialect)
         trace = (plc.engine.start_trace([s.address for s in signals], plc.engine.period_ms,
                                         widths=[s.width for s in signals]) if signals else None)
         result = run_scenario(plc, scenario)
@@ -276,11 +276,11 @@ class ScenarioDock(Retranslating, QDockWidget):
 
 
 
-def _signals(scenario: Scenario) -> list[TracedSignal]:
+def _signals(scenario: Scenario, dialect: str | None) -> list[TracedSignal]:
     """Every address the scenario sets or checks, once, in order of appearance."""
     seen: dict[tuple[object, int], TracedSignal] = {}
     for step in scenario.steps:
         for target, _value in step.items:
             key = (target.address, target.width)
-            seen.setdefault(key, TracedSignal(target.address, target.width))
+            seen.setdefault(key, traced(target.address, target.width, dialect))
     return list(seen.values())

@@ -29,6 +29,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core import dialects
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks import snapshot_gate
@@ -39,6 +40,7 @@ from ladderworks.gui.docks.table_specs import Row, TableSpec, table_specs
 from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 from ladderworks.gui.retranslate import Retranslating
+from ladderworks.gui.translation import ui_is_turkish
 
 translate = QCoreApplication.translate
 
@@ -135,6 +137,12 @@ class PlcTablesDock(Retranslating, QDockWidget):
             self.tables[kind] = self._make_view(kind, model)
             self.tabs.addTab(self.tables[kind], "")
         layout.addWidget(self.tabs, 1)
+        self.dialect_note = QLabel(body)  # a Delta/Fatek program: no PMC tables
+        self.dialect_note.setObjectName("plcTablesDialectNote")
+        self.dialect_note.setWordWrap(True)
+        self.dialect_note.setAlignment(Qt.AlignmentFlag.AlignTop | Qt.AlignmentFlag.AlignLeft)
+        self.dialect_note.hide()
+        layout.addWidget(self.dialect_note, 1)
         self.message = QLabel(body)
         self.message.setObjectName("plcTablesMessage")
         self.message.setWordWrap(True)
@@ -205,6 +213,9 @@ class PlcTablesDock(Retranslating, QDockWidget):
         for model in self.models.values():
             model.set_program(program, use)
         self._stale.clear()
+        dialect = dialects.get(self.session.run.program_dialect)
+        self.tabs.setVisible(dialect is None)  # the tables are PMC parameters
+        self.dialect_note.setVisible(dialect is not None)
         self.retranslate()  # the timer columns follow the program's dialect
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
@@ -316,6 +327,14 @@ class PlcTablesDock(Retranslating, QDockWidget):
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
         self.setWindowTitle(translate("PlcTables", "PLC tables"))
+        dialect = dialects.get(self.session.run.program_dialect)
+        if dialect is not None:
+            self.dialect_note.setText(translate(
+                "PlcTables",
+                "A {0} program has no PMC parameter tables: its timer and counter presets "
+                "are written in its instructions. Watch its T, C and D devices in the bit "
+                "display and the time chart.").format(
+                    dialect.title_tr if ui_is_turkish() else dialect.title))
         titles = {
             TableKind.TIMER: translate("PlcTables", "Timers (TMR)"),
             TableKind.COUNTER: translate("PlcTables", "Counters (CTR)"),

@@ -25,7 +25,6 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.address import AddressError
-from ladderworks.core.symbols import describe
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
@@ -39,6 +38,7 @@ from ladderworks.gui.locale_numbers import LocaleAxis
 from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession, PlcSnapshot
 from ladderworks.gui.retranslate import Retranslating
+from ladderworks.gui.symbol_text import program_name
 
 translate = QCoreApplication.translate
 
@@ -247,9 +247,14 @@ class TimeChartDock(Retranslating, QDockWidget):
 
     # -- drawing -----------------------------------------------------------------------------
 
+    def program_dialect(self) -> str | None:
+        """The loaded program's dialect (its devices name the lanes)."""
+        return self.session.run.program_dialect
+
     def lane_name(self, signal: TracedSignal) -> str:
         """The lane's label: the address and, for a named signal, its short name."""
-        name = describe(signal.address, self.session.symbols)
+        name = program_name(signal.address, self.session.symbols,
+                            self.session.run.program_dialect)
         return f"{signal.label} {name}" if name else signal.label
 
     def lane_base(self, lane: int) -> float:

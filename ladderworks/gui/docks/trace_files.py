@@ -15,7 +15,7 @@ from ladderworks.core.plc.trace import TraceSample
 from ladderworks.core.plc.trace_file import TraceFileError, TraceTable, ladder3_text, read_trace
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.button_flow import ButtonFlow
-from ladderworks.gui.docks.trace_record import TraceRecord, parse_traced
+from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.os_errors import os_error_text
 
@@ -41,6 +41,9 @@ class TimeChartDock(Protocol):
 
     def show_record(self, record: TraceRecord) -> None:
         """Show a finished record instead of live samples."""
+
+    def program_dialect(self) -> str | None:
+        """The loaded program's dialect (its devices name the CSV's columns)."""
 
 
 def table_of(record: TraceRecord) -> TraceTable:
@@ -85,6 +88,16 @@ def export_ladder3(dock: TimeChartDock, path: str | Path) -> bool:
     return True
 
 
+def _label_signal(label: str, dialect: str | None) -> TracedSignal:
+    """A CSV column's lane: the loaded program's device (`D0`), else a PMC address."""
+    try:
+        return parse_traced(label, None, dialect)
+    except AddressError:
+        if dialect is None:
+            raise
+        return parse_traced(label)
+
+
 def import_trace(dock: TimeChartDock, path: str | Path) -> bool:
     """Show a LADDER-III trace result (frames at the chosen sampling time) or our CSV."""
     if dock.sampling:
@@ -92,7 +105,8 @@ def import_trace(dock: TimeChartDock, path: str | Path) -> bool:
     period = dock.period_spin.value()
     try:
         table = read_trace(Path(path).read_text(encoding="utf-8", errors="replace"), period)
-        signals = [parse_traced(label) for label in table.labels]
+        dialect = dock.program_dialect()
+        signals = [_label_signal(label, dialect) for label in table.labels]
     except OSError as error:
         dock.say(translate("TimeChart", "Cannot read {0}: {1}").format(
                   path, os_error_text(error)), error=True)

@@ -7,6 +7,7 @@ from bisect import bisect_right
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from ladderworks.core import dialects
 from ladderworks.core.address import Address
 from ladderworks.core.dialects import typed_target
 from ladderworks.core.plc.trace import TraceSample
@@ -19,6 +20,7 @@ class TracedSignal:
 
     address: Address
     width: int = 1
+    spelled: str = ""  # the address as the program's dialect writes it (`D0`), "" for the PMC's
 
     @property
     def is_bit(self) -> bool:
@@ -27,7 +29,10 @@ class TracedSignal:
 
     @property
     def label(self) -> str:
-        """The lane's name as typed in the CSV header: `R1.4`, `R100`, `D10:2` for 2 bytes."""
+        """The lane's name as typed in the CSV header: `R1.4`, `R100`, `D10:2` for 2 bytes; a
+        dialect's device as the program writes it (`X0`, `D0`)."""
+        if self.spelled:
+            return self.spelled
         text = str(self.address)
         return text if self.width == 1 else f"{text}:{self.width}"
 
@@ -42,7 +47,14 @@ def parse_traced(text: str, symbols: SymbolTable | None = None,
     """`R1.4`, `R100`, `D10:2` (a 2-byte value), `D20:4`, or a program symbol (`ESKIP`); in a
     Delta program Delta's devices (`X10`, `D0`); raises AddressError (see `parse_target`)."""
     target = typed_target(text, symbols.address_of if symbols is not None else None, dialect)
-    return TracedSignal(target.address, target.width)
+    return traced(target.address, target.width, dialect)
+
+
+def traced(address: Address, width: int, dialect: str | None = None) -> TracedSignal:
+    """The lane of `address` (`width` bytes), labelled in the spelling of `dialect`."""
+    if dialects.get(dialect) is None:
+        return TracedSignal(address, width)
+    return TracedSignal(address, width, dialects.format_address(address, dialect))
 
 
 class TraceRecord:

@@ -344,7 +344,8 @@ class GridView(QGraphicsView):
 
     def describe_cell(self, index: int, row: int, col: int) -> str:
         """Status-bar text: the cell, and the address with its signal name and comment."""
-        return cell_status(self.networks[index], index, row, col, self.model.symbols)
+        return cell_status(self.networks[index], index, row, col, self.model.symbols,
+                           self.model.dialect)
 
     def select_element(self, index: int, row: int, col: int) -> None:
         """Select the element covering a cell (nothing on a wire or an empty cell)."""
