@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 from pymodbus.client import ModbusTcpClient
@@ -67,3 +68,19 @@ def client(server: ModbusServer) -> Iterator[ModbusTcpClient]:
     connected = client_of(server)
     yield connected
     connected.close()
+
+
+def dialect_plc(path: Path, dialect: str, realtime: bool) -> PlcRun:
+    """A dialect's example program loaded and started, at its dialect's scan period."""
+    from ladderworks.core import dialects
+
+    found = dialects.get(dialect)
+    assert found is not None
+    program = parse_file(path).program
+    assert program.dialect == dialect
+    binary = compile_program(program).binary
+    assert binary is not None
+    run = PlcRun(realtime=realtime, period_ms=found.period_ms)
+    assert run.load(binary, program) == []
+    assert run.start()
+    return run

@@ -8,9 +8,7 @@ import pytest
 from pymodbus.client import ModbusTcpClient
 
 from ladderworks.core import dialects
-from ladderworks.core.compiler import compile_program
 from ladderworks.core.diagnostics import DiagnosticError
-from ladderworks.core.il import parse_file
 from ladderworks.core.modbus.bridge import PlcBridge, servable
 from ladderworks.core.modbus.cells import cells_for
 from ladderworks.core.modbus.map_file import parse_map
@@ -18,7 +16,7 @@ from ladderworks.core.modbus.maps import DELTA_MAP, Access, MapRow, ModbusMap, T
 from ladderworks.core.modbus.server import ModbusServer
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.paths import EXAMPLES
-from tests.core.modbus.conftest import client_of
+from tests.core.modbus.conftest import client_of, dialect_plc
 from tests.core.modbus.test_server import wait_for
 
 CMP_D10 = EXAMPLES / "delta" / "cmp_d10.txt"  # X0: CMP K20 D10 M0; M0..M2 -> Y0..Y2
@@ -29,14 +27,7 @@ X0, Y0, M0, D0 = 0x0400, 0x0500, 0x0800, 0x1000
 
 def delta_plc(realtime: bool) -> PlcRun:
     """The CMP example loaded and started."""
-    program = parse_file(CMP_D10).program
-    assert program.dialect == "delta"
-    binary = compile_program(program).binary
-    assert binary is not None
-    run = PlcRun(realtime=realtime, period_ms=DELTA.period_ms)
-    assert run.load(binary, program) == []
-    assert run.start()
-    return run
+    return dialect_plc(CMP_D10, "delta", realtime)
 
 
 @pytest.fixture

@@ -11,15 +11,13 @@ import pytest
 from pymodbus.client import ModbusTcpClient
 
 from ladderworks.core import dialects
-from ladderworks.core.compiler import compile_program
-from ladderworks.core.il import parse_file
 from ladderworks.core.modbus.bridge import PlcBridge
 from ladderworks.core.modbus.cells import cells_for
 from ladderworks.core.modbus.maps import FATEK_MAP, Table
 from ladderworks.core.modbus.server import ModbusServer
 from ladderworks.core.plc.session import PlcRun
 from ladderworks.paths import CHECKOUT, EXAMPLES
-from tests.core.modbus.conftest import TIMEOUT, client_of
+from tests.core.modbus.conftest import TIMEOUT, client_of, dialect_plc
 from tests.core.modbus.test_cli_serve import SERVING
 from tests.core.modbus.test_server import wait_for
 
@@ -32,14 +30,7 @@ Y0, X0, M0, R0, D0 = 0, 1000, 2000, 0, 6000
 
 def fatek_plc(realtime: bool) -> PlcRun:
     """The conveyor example loaded and started."""
-    program = parse_file(CONVEYOR).program
-    assert program.dialect == "fatek"
-    binary = compile_program(program).binary
-    assert binary is not None
-    run = PlcRun(realtime=realtime, period_ms=FATEK.period_ms)
-    assert run.load(binary, program) == []
-    assert run.start()
-    return run
+    return dialect_plc(CONVEYOR, "fatek", realtime)
 
 
 @pytest.fixture
