@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from itertools import compress, count
 from operator import attrgetter
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from ladderworks.core.address import (
     AREA_RANGES,
@@ -20,6 +20,8 @@ from ladderworks.core.address import (
     parse_address,
 )
 from ladderworks.core.collector import collector_paused
+from ladderworks.core.compiler.implementations import cnc_stub as cnc_stub
+from ladderworks.core.compiler.implementations import implementation_of as implementation_of
 from ladderworks.core.compiler.structure import (
     FlowItem,
     Structure,
@@ -47,7 +49,6 @@ from ladderworks.core.plc.families import IMPLEMENTED
 
 if TYPE_CHECKING:
     from ladderworks.core.dialects.base import Dialect
-    from ladderworks.core.plc.functions import FunctionImpl
 
 MAX_PUSHES = 8  # ST0..ST8: eight levels above ST0
 
@@ -64,31 +65,6 @@ _STARTS = Combine.READ
 
 # The accesses of a parameter the checks treat as a write (no input address there).
 _OUTPUTS = frozenset({ParamAccess.WRITE, ParamAccess.READ_WRITE})
-
-
-def cnc_stub(ctx: object, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
-    """A CNC-side or unknown instruction with no CNC: W1 = ACT (docs/instructions.md)."""
-    return bool(inputs[-1]) if inputs else False
-
-
-def implementation_of(spec: InstructionSpec,
-                      registry: dict[str, FunctionImpl]) -> FunctionImpl | None:
-    """The implementation of a functional instruction: the registry's, else `impl_for`'s (the
-    functions package's generic entry, when it has one), else the CNC stub for an unknown SUB."""
-    impl = registry.get(spec.name)
-    if impl is not None:
-        return impl
-    from ladderworks.core.plc import functions  # loaded with the engine, never by `check`
-
-    impl_for: Callable[[InstructionSpec], Any] | None = getattr(functions, "impl_for", None)
-    if impl_for is not None and (spec.cnc or not spec.known):
-        try:
-            found = impl_for(spec)
-        except (KeyError, LookupError):
-            found = None
-        if found is not None:
-            return found
-    return cnc_stub if not spec.known else None
 
 
 def dialect_of(program: object) -> str:

@@ -15,16 +15,18 @@ from __future__ import annotations
 
 from collections.abc import Callable, Collection
 from dataclasses import dataclass
-from functools import lru_cache
-from types import CodeType
 from typing import Any
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.compiler.binary import BinaryFormatError, Op
 from ladderworks.core.compiler.checks import MAX_PUSHES, implementation_of
 from ladderworks.core.compiler.structure import LOOP_LIMIT, Unit, analyse, number_of
-from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.instructions import Combine, Flow, Kind, StackOp, Write
+from ladderworks.core.plc.codegen_plan import CHUNK_OPS as CHUNK_OPS
+from ladderworks.core.plc.codegen_plan import JumpToMain as JumpToMain
+from ladderworks.core.plc.codegen_plan import ScanLoopError as ScanLoopError
+from ladderworks.core.plc.codegen_plan import chunk_plan, loop_stop
+from ladderworks.core.plc.codegen_plan import compiled as compiled
 from ladderworks.core.plc.functions import FunctionImpl
 
 ScanFunction = Callable[..., None]  # scan(ctx, M, full=True)
@@ -32,25 +34,8 @@ ScanFunction = Callable[..., None]  # scan(ctx, M, full=True)
 _AREA_NAMES = tuple(area.value for area in Area)
 _MAX_NESTING = 40  # parentheses per expression before it is stored in its variable
 _MAX_TERMS = 64  # operators per expression (Python's compiler recurses on long chains)
-CHUNK_OPS = 1500  # ops per generated function (keeps every function small for Python)
 SYSTEM_RELAY = 9091  # R9091.2/.3/.4: level 1/2/3 running
 _LEVEL_BITS = {1: 4, 2: 8, 3: 16}
-
-
-class ScanLoopError(DiagnosticError):
-    """A backward label jump repeated more than LOOP_LIMIT times in one scan (run stopped)."""
-
-    def __init__(self, label: int, line: int) -> None:
-        super().__init__([Diagnostic("endless-loop", {"label": label, "limit": LOOP_LIMIT},
-                                     line, 0)])
-
-
-class JumpToMain(Exception):
-    """JMPC: leave the subprograms and continue at a label of the level's main program."""
-
-    def __init__(self, label: int) -> None:
-        super().__init__(label)
-        self.label = label
 
 
 @dataclass(slots=True)
@@ -248,7 +233,7 @@ class _Generator:
         self.unit_count = max(self.unit_count, number + 1)
         self.jumps, self.commons, self.jump_ids = [], [], 0
         labelled = bool(unit.labels)
-        starts, chunk_of_label = _chunk_plan(self.ops, unit)
+        starts, chunk_of_label = chunk_plan(self.ops, unit)
         self.chunk_of_label = chunk_of_label
         label_starts = set(unit.labels.values())
         chunks: list[str] = []
@@ -545,48 +530,6 @@ class _Generator:
 
 
 
-def _chunk_plan(ops: tuple[Op, ...], unit: Unit) -> tuple[set[int], dict[int, int]]:
-    """Where a unit's chunks start (op indices), and the chunk each of its labels starts.
-
-    A chunk ends after CHUNK_OPS ops (at a network start if one comes in the last quarter);
-    in a unit with labels every LBL starts a chunk (the dispatch loop's jump targets).
-    """
-    starts = {unit.start}
-    chunk_of_label: dict[int, int] = {}
-    by_index = {index: label for label, index in unit.labels.items()}
-    size = 0
-    for index in range(unit.start, unit.end):
-        network_start = index == unit.start or \
-            ops[index].source.network != ops[index - 1].source.network
-        if index != unit.start and (index in by_index or size >= CHUNK_OPS or (
-                network_start and size >= CHUNK_OPS * 3 // 4)):
-            starts.add(index)
-            size = 0
-        if index in by_index:
-            chunk_of_label[by_index[index]] = len(starts) - 1
-        size += 1
-    return starts, chunk_of_label
-
-
-def _loop(ops: tuple[Op, ...], units: list[Unit]) -> Callable[..., None]:
-    """The dispatch loop's stop: raise ScanLoopError naming the label jumped to."""
-
-    def loop(unit: int, chunk: int, labels: dict[int, int]) -> None:
-        label = next((k for k, v in labels.items() if v == chunk), 0)
-        index = units[unit].labels.get(label, 0)
-        raise ScanLoopError(label, ops[index].source.line if index < len(ops) else 0)
-
-    return loop
-
-
-@lru_cache(maxsize=4)
-def compiled(source: str) -> CodeType:
-    """The compiled scan module of `source`; kept for a program loaded again (F9 of an
-    unchanged program, a second engine): compiling 38k ops takes ~0.5 s. A code object holds
-    no state: each exec makes new functions over the engine's own namespace."""
-    return compile(source, "<ladder scan>", "exec")
-
-
 def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
              registry: dict[str, FunctionImpl], states: list[dict[str, Any]] | None = None, *,
              disabled: Collection[int] = (), monitored: bool = False) -> GeneratedScan:
@@ -611,7 +554,7 @@ def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
     namespace["ONES"] = [1] * max(1, generator.common_count)
     namespace["SV"] = [()]
     namespace["JM"] = JumpToMain
-    namespace["LOOP"] = _loop(ops, generator.structure.units())
+    namespace["LOOP"] = loop_stop(ops, generator.structure.units())
     exec(compiled(source), namespace)
     return GeneratedScan(source, namespace["scan"])
 

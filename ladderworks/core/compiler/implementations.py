@@ -1,0 +1,37 @@
+"""Which implementation a functional instruction runs: the registry's, the functions
+package's generic entry, or the CNC stub (the checks and the code generator ask here)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from ladderworks.core.instructions import InstructionSpec
+
+if TYPE_CHECKING:
+    from ladderworks.core.plc.functions import FunctionImpl
+
+
+def cnc_stub(ctx: object, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
+    """A CNC-side or unknown instruction with no CNC: W1 = ACT (docs/instructions.md)."""
+    return bool(inputs[-1]) if inputs else False
+
+
+def implementation_of(spec: InstructionSpec,
+                      registry: dict[str, FunctionImpl]) -> FunctionImpl | None:
+    """The implementation of a functional instruction: the registry's, else `impl_for`'s (the
+    functions package's generic entry, when it has one), else the CNC stub for an unknown SUB."""
+    impl = registry.get(spec.name)
+    if impl is not None:
+        return impl
+    from ladderworks.core.plc import functions  # loaded with the engine, never by `check`
+
+    impl_for: Callable[[InstructionSpec], Any] | None = getattr(functions, "impl_for", None)
+    if impl_for is not None and (spec.cnc or not spec.known):
+        try:
+            found = impl_for(spec)
+        except (KeyError, LookupError):
+            found = None
+        if found is not None:
+            return found
+    return cnc_stub if not spec.known else None
