@@ -12,6 +12,7 @@ from ladderworks.core.il.program import Instruction
 from ladderworks.core.instructions import Kind
 from ladderworks.core.ladder.logic import (
     MAX_PUSHES,
+    ContactPlace,
     Leaf,
     Logic,
     Parallel,
@@ -24,6 +25,7 @@ from ladderworks.core.ladder.logic import (
     series,
 )
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork, Wire
+from ladderworks.core.ladder.row_contacts import contact_combine
 
 
 @dataclass(slots=True)
@@ -137,6 +139,20 @@ def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "
     """The network's meaning, or None with diagnostics at the cells (None, [] when empty).
 
     Box parameters are checked with the ranges of the program's `dialect` ("seed"/"fanuc")."""
+    rung, diags = _read_grid(network, index, dialect)
+    if rung is not None:
+        try:
+            code_rung(rung)
+        except ContactPlace as place:  # an edge/comparison contact its dialect cannot code
+            diags.append(Diagnostic("contact-place", {}, network=index,
+                                    cell=place.cell or (0, 0)))
+            return None, diags
+    return rung, diags
+
+
+def _read_grid(network: LadderNetwork, index: int | None, dialect: str
+               ) -> tuple[Rung | None, list[Diagnostic]]:
+    """read_grid without the check that each dialect contact can be coded where it stands."""
     diags: list[Diagnostic] = []
 
     def report(code: str, cell: Cell, **args: object) -> None:
@@ -148,7 +164,8 @@ def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "
     coils: list[tuple[Cell, Coil, int]] = []
     boxes: list[tuple[Cell, FunctionBox]] = []
     for (r, c), element in network.elements():
-        if isinstance(element, Contact | Coil) and element.address is None:
+        if isinstance(element, Contact | Coil) and element.address is None \
+                and not (isinstance(element, Contact) and element.function):
             report("no-address", (r, c))
         if isinstance(element, Contact):
             src, dst = nets.net((r, c)), nets.net((r, c + 1))
@@ -338,12 +355,17 @@ def _cycle_edge(edges: list[_Edge]) -> _Edge | None:
 def _check_depth(rung: Rung, report: Callable[..., None]) -> None:
     cells: list[Cell | None] = []
     depth = 0
-    for ins, cell in zip(code_rung(rung, cells), cells, strict=True):
-        depth += ins.spec.pushes if ins.spec.kind is Kind.BASIC else 0
+    try:
+        code = code_rung(rung, cells)
+    except ContactPlace:  # read_grid reports it
+        return
+    for ins, cell in zip(code, cells, strict=True):
+        joins = ins.spec.kind is Kind.BASIC or contact_combine(ins.spec) is not None
+        depth += ins.spec.pushes if joins else 0
         if depth > MAX_PUSHES:
             report("stack-depth", cell or (0, 0))
             return
-        if ins.spec.kind is not Kind.BASIC:
+        if not joins:
             depth = 0
 
 

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.instructions import BASIC, Combine, InstructionSpec, Kind, Write
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox
+from ladderworks.core.ladder.row_contacts import contact_combine, row_for
 
 MAX_PUSHES = 8  # ST0 plus ST1..ST8: at most eight values pushed under ST0
 
@@ -82,7 +83,23 @@ def contact_spec(contact: Contact) -> InstructionSpec:
     return _basic(Combine.READ, Write.NONE, contact.negated, 0, True)
 
 
-def _contact_instruction(contact: Contact, combine: Combine, push: bool) -> Instruction:
+class ContactPlace(Exception):
+    """A dialect's edge or comparison contact stands where its dialect has no row for it."""
+
+    def __init__(self, contact: Contact, cell: Cell | None) -> None:
+        super().__init__(contact.function)
+        self.contact = contact
+        self.cell = cell
+
+
+def _contact_instruction(contact: Contact, combine: Combine, push: bool,
+                         cell: Cell | None = None) -> Instruction:
+    if contact.function:
+        row = row_for(contact.function, combine, push)
+        if row is None:
+            raise ContactPlace(contact, cell)
+        return Instruction(row.name, params=contact.params, comment=contact.comment,
+                           lead=contact.lead)
     spec = _basic(combine, Write.NONE, contact.negated, 1 if push else 0, True)
     return Instruction(spec.name, contact.address, comment=contact.comment, lead=contact.lead)
 
@@ -100,13 +117,13 @@ def code_logic(logic: Logic, push: bool = False,
         cells = []
     if isinstance(logic, Leaf):
         cells.append(logic.cell)
-        return [_contact_instruction(logic.contact, Combine.READ, push)]
+        return [_contact_instruction(logic.contact, Combine.READ, push, logic.cell)]
     out = code_logic(logic.items[0], push, cells)
     combine = Combine.AND if isinstance(logic, Series) else Combine.OR
     for item in logic.items[1:]:
         if isinstance(item, Leaf):
             cells.append(item.cell)
-            out.append(_contact_instruction(item.contact, combine, False))
+            out.append(_contact_instruction(item.contact, combine, False, item.cell))
         else:
             out.extend(code_logic(item, True, cells))
             cells.append(None)
@@ -163,7 +180,7 @@ def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
         for item in block.items if isinstance(block, Series) else (block,):
             if isinstance(item, Leaf):
                 cells.append(item.cell)
-                out.append(_contact_instruction(item.contact, Combine.AND, False))
+                out.append(_contact_instruction(item.contact, Combine.AND, False, item.cell))
             else:
                 out.extend(code_logic(item, True, cells))
                 cells.append(None)
@@ -177,7 +194,7 @@ def stack_depth(instructions: list[Instruction]) -> int:
     depth = deepest = 0
     for ins in instructions:
         spec = ins.spec
-        if spec.kind is Kind.BASIC:
+        if spec.kind is Kind.BASIC or contact_combine(spec) is not None:
             depth += spec.pushes
         elif spec.inputs:
             depth = 0
@@ -192,6 +209,21 @@ class Undrawable(Exception):
 _PREVIOUS = Leaf(Contact(None, comment="the result written so far"))  # chain start marker
 
 
+def _join(stack: list[Logic], contact: Contact, combine: Combine, pushes: int, name: str
+          ) -> None:
+    """A contact read into the symbolic stack: RD starts, RD.STK pushes, AND/OR join."""
+    if combine is Combine.READ:
+        if bool(stack) != (pushes > 0):  # RD starts the logic, RD.STK pushes onto it
+            raise Undrawable(name)
+        stack.append(Leaf(contact))
+        return
+    if not stack or pushes:
+        raise Undrawable(name)
+    top = stack.pop()
+    stack.append(series(top, Leaf(contact)) if combine is Combine.AND
+                 else parallel(top, Leaf(contact)))
+
+
 def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung:
     """The meaning of one network's instructions; Undrawable for code with no ladder picture
     (unbalanced stack, OR after an output, a function without its control inputs, ...)."""
@@ -201,6 +233,7 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
     for ins in instructions:
         spec = ins.spec
         name = ins.name
+        joins = contact_combine(spec)  # a dialect's edge or comparison contact
         if spec.is_coil:
             if phase == "logic":
                 if rung.box is None and len(stack) != 1:
@@ -219,11 +252,15 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             coil = Coil(ins.operand, spec.negated, ins.comment, ins.lead, spec.write)
             (rung.chain[-1][1] if rung.chain else rung.coils).append(coil)
             continue
-        if phase == "coils" and rung.box is None and spec.kind is Kind.BASIC:
+        if phase == "coils" and rung.box is None and (spec.kind is Kind.BASIC or joins):
             phase = "chain"
             stack = [_PREVIOUS]
         if phase not in ("logic", "chain"):
             raise Undrawable(name)
+        if joins is not None:
+            _join(stack, Contact(None, False, ins.comment, ins.lead, name, ins.params), joins,
+                  spec.pushes, name)
+            continue
         if spec.kind is not Kind.BASIC:
             if phase == "chain" or len(stack) != len(spec.inputs):
                 raise Undrawable(name)
@@ -240,16 +277,7 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             stack.append(series(a, b) if spec.combine is Combine.AND else parallel(a, b))
             continue
         contact = Contact(ins.operand, spec.negated, ins.comment, ins.lead)
-        if spec.combine is Combine.READ:
-            if bool(stack) != (spec.pushes > 0):  # RD starts the logic, RD.STK pushes onto it
-                raise Undrawable(name)
-            stack.append(Leaf(contact))
-        else:
-            if not stack:
-                raise Undrawable(name)
-            top = stack.pop()
-            stack.append(series(top, Leaf(contact)) if spec.combine is Combine.AND
-                         else parallel(top, Leaf(contact)))
+        _join(stack, contact, spec.combine, spec.pushes, name)
     if rung.box is None and rung.logic is None:
         raise Undrawable("no output")
     if phase == "chain":
