@@ -9,7 +9,7 @@ from itertools import pairwise
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il.program import Instruction
-from ladderworks.core.instructions import Kind
+from ladderworks.core.instructions import Kind, StackOp
 from ladderworks.core.ladder.logic import (
     MAX_PUSHES,
     ContactPlace,
@@ -23,6 +23,7 @@ from ladderworks.core.ladder.logic import (
     parallel,
     read_rung,
     series,
+    stack_row,
 )
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork, Wire
 from ladderworks.core.ladder.row_contacts import contact_combine
@@ -250,6 +251,12 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str
         report("reverse-flow", cycle.cell)
         return None, diags
     if box is None:
+        if len(targets) > 1 and stack_row(StackOp.DUP, dialect) is not None:
+            chain, _ = _read_chain(left, targets, useful, coils, lambda *a, **k: None, [])
+            branched = _read_branches(left, targets, useful, coils) if chain is None else None
+            if branched is not None:
+                _check_depth(branched, report)
+                return (None if has_errors(diags) else branched), diags
         return _read_chain(left, targets, useful, coils, report, diags)
     blocks: list[Logic] = []
     owner: dict[int, int] = {}
@@ -311,6 +318,40 @@ def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
     if has_errors(diags):
         return None, diags
     return rung, diags
+
+
+def _read_branches(left: int, outputs: list[int], useful: list[_Edge],
+                   coils: list[tuple[Cell, Coil, int]]) -> Rung | None:
+    """Coils on several branches from one point (a dialect with MPS/MRD/MPP): the logic from
+    the rail to that point, then each branch's block and coils, top to bottom; None when the
+    drawing is not so (each edge must belong to the common part or to one branch)."""
+    back = {o: _reach({o}, useful, False) for o in outputs}
+    common = set.intersection(*back.values()) - {left}
+    if not common:
+        return None
+    point = min(common, key=lambda n: len(_reach({n}, useful, True)))
+    after = _reach({point}, useful, True)
+    into = _reach({point}, useful, False)
+    first_row = {net: cell for cell, _, net in reversed(coils)}
+    order = sorted(outputs, key=lambda o: first_row[o])
+    shared = [e for e in useful if e.dst in into]
+    owner: dict[int, int] = {id(e): -1 for e in shared}
+    branches: list[tuple[Logic | None, list[Coil]]] = []
+    for index, target in enumerate(order):
+        part = [e for e in useful if e.src in after and e.dst in back[target]]
+        for e in part:
+            if id(e) in owner:
+                return None
+            owner[id(e)] = index
+        block = _reduce(part, point, target) if target != point else None
+        if isinstance(block, _Edge) or (block is None and part):
+            return None
+        branches.append((block, [coil for _, coil, net in coils if net == target]))
+    logic = _reduce(shared, left, point)
+    if isinstance(logic, _Edge) or len(owner) != len(useful):
+        return None
+    return Rung(logic=logic, branches=branches,
+                coil_cells=[cell for o in order for cell, _, net in coils if net == o])
 
 
 def _box_param_problems(box: FunctionBox, dialect: str = "seed") -> list[Diagnostic]:

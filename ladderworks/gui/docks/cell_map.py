@@ -55,11 +55,18 @@ def program_matches(program: Program, binary: BinaryProgram) -> bool:
     return keys == [op_key(op.name, op.operand, op.params) for op in binary.ops]
 
 
-def standard_cells(network: LadderNetwork) -> list[tuple[Cell | None, Instruction]]:
+def stack_dialect(binary: BinaryProgram) -> str:
+    """The dialect a drawing is read in to match the binary: a registered dialect's own (its
+    MPS/MRD/MPP branches code in it), "seed" for the PMC's (as before)."""
+    return binary.dialect if binary.dialect not in ("seed", "fanuc") else "seed"
+
+
+def standard_cells(network: LadderNetwork, dialect: str = "seed"
+                   ) -> list[tuple[Cell | None, Instruction]]:
     """The core's standard coding of a drawn network (output chains included), each
     instruction with the cell it comes from (None for stack operations); [] when the network
     cannot be coded."""
-    rung, _ = read_grid(network)
+    rung, _ = read_grid(network, dialect=dialect)  # a Delta MPS branch codes in Delta
     if rung is None:
         return []
     cells: list[Cell | None] = []
@@ -91,7 +98,7 @@ def cell_ops(network: LadderNetwork, ops: Sequence[int], binary: BinaryProgram) 
     text) is matched element by element in drawing order (same kind, address and NOT)."""
     if network.listing is not None:
         return {}
-    coded = standard_cells(network)
+    coded = standard_cells(network, stack_dialect(binary))
     keys = [op_key(ins.name, ins.operand, ins.params) for _, ins in coded]
     mine = [binary.ops[i] for i in ops]
     if keys == [op_key(op.name, op.operand, op.params) for op in mine]:
