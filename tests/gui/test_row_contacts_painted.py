@@ -67,3 +67,15 @@ def test_power_flows_through_a_comparison_contact_when_it_passes() -> None:
         power = network_power(net, plc.memory.bit, cells, flow=bytes(plc.power_flow))
         assert ((0, 1) in power.closed) is closed, value
         assert ((0, net.coil_column) in power.coils) is closed
+
+
+def test_the_live_ladder_matches_a_delta_program_with_branches_and_row_contacts() -> None:
+    from ladderworks.core.ladder.convert import program_to_ladder
+    from ladderworks.gui.docks.live_ladder import match_networks
+    program = delta("LD X0\nMPS\nAND X1\nOUT Y0\nMPP\nAND= D0 K5\nOUT Y1\n" + TEXT)
+    networks = program_to_ladder(program).networks
+    assert all(net.listing is None for net in networks[:-1])  # END is a box of its own
+    groups = match_networks(networks, decode(compile(program)))
+    assert groups is not None and len(groups[0]) == 7  # RD MPS AND WRT MPP AND= WRT
+    cells = cell_ops(networks[0], groups[0], decode(compile(program)))
+    assert len(cells) == 5  # the contacts and coils; MPS / MPP have no cell
