@@ -209,6 +209,8 @@ class NetworkItem(QGraphicsItem):
     def _label_lines(self, element: Contact | Coil) -> tuple[str, str, list[str]]:
         if isinstance(element, Contact) and element.function:  # operands above / below
             texts = row_contacts.operand_texts(element, self.spelling)
+            if not self.rows.symbol:  # no line under the element: both above
+                return " ".join(texts), "", []
             return texts[0] if texts else "", " ".join(texts[1:]), []
         address = self.spelling.address(element.address) if element.address is not None else "?"
         rows = self.rows
