@@ -301,7 +301,8 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
     for ins in instructions:
         spec = ins.spec
         name = ins.name
-        joins = contact_combine(spec)  # a dialect's edge or comparison contact
+        # a dialect's edge or comparison contact
+        joins = contact_combine(spec) if spec.kind is Kind.FUNCTION else None
         if spec.is_coil:
             if phase == "logic":
                 if rung.box is None and len(stack) != 1:

@@ -18,6 +18,7 @@ if TYPE_CHECKING:
 EDGES = frozenset((Operation.RISING, Operation.FALLING))
 COMPARISONS = frozenset((Operation.EQUAL, Operation.GREATER, Operation.LESS,
                          Operation.NOT_EQUAL, Operation.LESS_EQUAL, Operation.GREATER_EQUAL))
+_TESTS = EDGES | COMPARISONS
 MARKS = {Operation.RISING: "↑", Operation.FALLING: "↓"}
 
 
@@ -26,7 +27,7 @@ def contact_combine(spec: InstructionSpec) -> Combine | None:
 
     A row with `combine` (Delta) joins so; a one-input row with W1 that tests an edge or a
     comparison (Fatek's TU/TD/FUN 170–175: IN AND the test) is a series (AND) contact."""
-    if spec.kind is not Kind.FUNCTION or spec.operation not in EDGES | COMPARISONS:
+    if spec.kind is not Kind.FUNCTION or spec.operation not in _TESTS:
         return None
     if spec.combine is not Combine.NONE:
         return spec.combine
