@@ -582,596 +582,606 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="105"/>
+        <source>this edge or comparison contact has no form for this place in the dialect (put it in series after another contact)</source>
+        <translation>this edge or comparison contact has no form for this place in the dialect (put it in series after another contact)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="108"/>
         <source>coils hang on different points of the logic; join them to one point</source>
         <translation>coils hang on different points of the logic; join them to one point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="107"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="110"/>
         <source>only coils may follow the output of {name}</source>
         <translation>only coils may follow the output of {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="108"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="111"/>
         <source>one function box per network: put {name} in a network of its own</source>
         <translation>one function box per network: put {name} in a network of its own</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="111"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="114"/>
         <source>cell ({row}, {col}) is outside the grid</source>
         <translation>cell ({row}, {col}) is outside the grid</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="112"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="115"/>
         <source>only coils go in the coil column (cell ({row}, {col}))</source>
         <translation>only coils go in the coil column (cell ({row}, {col}))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="114"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="117"/>
         <source>{name} does not fit here: a box needs two contact columns</source>
         <translation>{name} does not fit here: a box needs two contact columns</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="116"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="119"/>
+        <source>an edge or comparison contact has no normally closed form</source>
+        <translation>an edge or comparison contact has no normally closed form</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="121"/>
         <source>there is no suitable element at cell ({row}, {col})</source>
         <translation>there is no suitable element at cell ({row}, {col})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="118"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="123"/>
         <source>a line must be horizontal or vertical</source>
         <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="119"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="121"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} and {replacement}: replace a bit with a bit, a byte with a byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} would be replaced with itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="128"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="130"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="145"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also in network {other})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="158"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="160"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="160"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII format: the text opened by {quote} is never closed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII format: a repeat count must be 1 to 999, found {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII format: text after END: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII format: END is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; is not a Fatek instruction</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
         <source>{name} needs a device</source>
         <translation>{name} needs a device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; is not a Fatek device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="201"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} cannot take &apos;{text}&apos; (use {kinds})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; is out of range ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} with nothing before it: a network starts with ORG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} needs two blocks: start the second one with LD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} is set twice in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="210"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
         <source>a network has at most {limit} TR points</source>
         <translation>a network has at most {limit} TR points</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>LD TR{number} before OUT TR{number} in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} on the left rail: put ORG SHORT before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="221"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="223"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number} is not a Fatek function LadderWorks knows</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="225"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: the operand line {param} is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="227"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} takes no more operands, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} is kept and drawn but not simulated: its outputs stay 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos; is not the time base of {name} ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: no function output here (FO0-FO7 after a box)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; is not a device (use {letters} with a number)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; is out of range ({first} to {last})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; is not a bit device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="241"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; is not a word device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; is not a K or H constant</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name} is a {dialect} instruction the simulator does not run</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>subroutine without its SRET (before the next pointer or END)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>no pointer P{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="255"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>no subroutine P{program} after FEND for this CALL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} without a logic result before it (start with LD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
         <source>this pointer P number is used twice</source>
         <translation>this pointer P number is used twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>a second PROGRAM line (the one on line {first} counts)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="286"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>the program &apos;{path}&apos; cannot be loaded: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{count} addresses from {start} run past Modbus address 65535</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} cannot be written over Modbus: the access must be r</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} are bits: a width is for registers only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end} overlap the row on line {other}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>the map has no row</source>
         <translation>the map has no row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
@@ -1631,7 +1641,7 @@
         <translation>open circuit here: draw a wire or an element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="66"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="67"/>
         <source>N{0}</source>
         <translation>N{0}</translation>
     </message>

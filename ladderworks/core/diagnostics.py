@@ -102,6 +102,9 @@ MESSAGES: dict[str, str] = {
     "box-inputs": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} needs its {count} control inputs connected"),
     "no-address": QT_TRANSLATE_NOOP("Diagnostic", "this element has no address yet"),
+    "contact-place": QT_TRANSLATE_NOOP(
+        "Diagnostic", "this edge or comparison contact has no form for this place in the "
+        "dialect (put it in series after another contact)"),
     "coil-branch": QT_TRANSLATE_NOOP(
         "Diagnostic", "coils hang on different points of the logic; join them to one point"),
     "box-output": QT_TRANSLATE_NOOP("Diagnostic", "only coils may follow the output of {name}"),
@@ -113,6 +116,8 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "only coils go in the coil column (cell ({row}, {col}))"),
     "edit-box-room": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} does not fit here: a box needs two contact columns"),
+    "edit-row-contact": QT_TRANSLATE_NOOP(
+        "Diagnostic", "an edge or comparison contact has no normally closed form"),
     "edit-no-element": QT_TRANSLATE_NOOP(
         "Diagnostic", "there is no suitable element at cell ({row}, {col})"),
     "edit-line": QT_TRANSLATE_NOOP("Diagnostic", "a line must be horizontal or vertical"),

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ladderworks.core.dialects.spelling import Spelling, spelling
 from ladderworks.core.instructions import Write
+from ladderworks.core.ladder import row_contacts
 from ladderworks.core.ladder.model import (
     Coil,
     Contact,
@@ -27,11 +28,17 @@ def _symbol(element: Contact | Coil | Wire) -> str:
     mark = "/" if element.negated else " "
     if isinstance(element, Coil) and element.write is not Write.OUT:  # SET / RST: (S) / (R)
         mark = "S" if element.write is Write.SET else "R"
+    if isinstance(element, Contact) and element.function:  # |↑|, |>=|: edge, comparison
+        mark = row_contacts.mark(element.function)
+        return f"{'-' * (3 - len(mark) // 2)}|{mark}|{'-' * (3 - (len(mark) - 1) // 2)}"
     return f"---{'|' if isinstance(element, Contact) else '('}{mark}" \
            f"{'|' if isinstance(element, Contact) else ')'}---"
 
 
 def _label(element: Contact | Coil, spell: Spelling) -> str:
+    if isinstance(element, Contact) and element.function:
+        text = " ".join(row_contacts.operand_texts(element, spell))
+        return text[:CELL].center(CELL)
     text = spell.address(element.address) if element.address is not None else "?"
     return text[:CELL].center(CELL)
 
@@ -122,6 +129,8 @@ def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None,
             continue
         name = (spell.address(element.address) if isinstance(element, Contact | Coil)
                 and element.address
+                else " ".join(row_contacts.operand_texts(element, spell))
+                if isinstance(element, Contact) and element.function
                 else element.name if isinstance(element, FunctionBox) else "?")
         notes.extend(f"   ({r},{c}) {name}: // {text}" for text in element.lead)
         if element.comment:

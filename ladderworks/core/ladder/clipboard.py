@@ -73,6 +73,9 @@ def _element_record(element: Element) -> dict[str, Any]:
                   "not": element.negated}
         if isinstance(element, Coil) and element.write is not Write.OUT:
             record["write"] = element.write.value
+        if isinstance(element, Contact) and element.function:  # an edge / comparison contact
+            record["function"] = element.function
+            record["params"] = [p if isinstance(p, int) else str(p) for p in element.params]
     if element.comment:
         record["comment"] = element.comment
     if element.lead:
@@ -120,6 +123,12 @@ def _element_from(record: dict[str, Any]) -> Element:
     if kind in ("contact", "coil"):
         text = record.get("address")
         address = parse_address(str(text), want_bit=True) if text else None
+        if kind == "contact" and record.get("function"):
+            name = str(record["function"])
+            values = list(record.get("params", []))
+            if spec_for(name, len(values)) is None:
+                raise ValueError(name)
+            return Contact(None, False, comment, lead, name, _parse_params(name, values))
         if kind == "contact":
             return Contact(address, bool(record.get("not", False)), comment, lead)
         write = Write(str(record.get("write", Write.OUT.value)))

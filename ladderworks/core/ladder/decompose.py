@@ -9,9 +9,10 @@ from itertools import pairwise
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il.program import Instruction
-from ladderworks.core.instructions import Kind
+from ladderworks.core.instructions import Kind, StackOp
 from ladderworks.core.ladder.logic import (
     MAX_PUSHES,
+    ContactPlace,
     Leaf,
     Logic,
     Parallel,
@@ -22,8 +23,10 @@ from ladderworks.core.ladder.logic import (
     parallel,
     read_rung,
     series,
+    stack_row,
 )
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork, Wire
+from ladderworks.core.ladder.row_contacts import contact_combine
 
 
 @dataclass(slots=True)
@@ -137,6 +140,20 @@ def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "
     """The network's meaning, or None with diagnostics at the cells (None, [] when empty).
 
     Box parameters are checked with the ranges of the program's `dialect` ("seed"/"fanuc")."""
+    rung, diags = _read_grid(network, index, dialect)
+    if rung is not None:
+        try:
+            code_rung(rung)
+        except ContactPlace as place:  # an edge/comparison contact its dialect cannot code
+            diags.append(Diagnostic("contact-place", {}, network=index,
+                                    cell=place.cell or (0, 0)))
+            return None, diags
+    return rung, diags
+
+
+def _read_grid(network: LadderNetwork, index: int | None, dialect: str
+               ) -> tuple[Rung | None, list[Diagnostic]]:
+    """read_grid without the check that each dialect contact can be coded where it stands."""
     diags: list[Diagnostic] = []
 
     def report(code: str, cell: Cell, **args: object) -> None:
@@ -148,7 +165,8 @@ def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "
     coils: list[tuple[Cell, Coil, int]] = []
     boxes: list[tuple[Cell, FunctionBox]] = []
     for (r, c), element in network.elements():
-        if isinstance(element, Contact | Coil) and element.address is None:
+        if isinstance(element, Contact | Coil) and element.address is None \
+                and not (isinstance(element, Contact) and element.function):
             report("no-address", (r, c))
         if isinstance(element, Contact):
             src, dst = nets.net((r, c)), nets.net((r, c + 1))
@@ -233,6 +251,12 @@ def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "
         report("reverse-flow", cycle.cell)
         return None, diags
     if box is None:
+        if len(targets) > 1 and stack_row(StackOp.DUP, dialect) is not None:
+            chain, _ = _read_chain(left, targets, useful, coils, lambda *a, **k: None, [])
+            branched = _read_branches(left, targets, useful, coils) if chain is None else None
+            if branched is not None:
+                _check_depth(branched, report)
+                return (None if has_errors(diags) else branched), diags
         return _read_chain(left, targets, useful, coils, report, diags)
     blocks: list[Logic] = []
     owner: dict[int, int] = {}
@@ -296,6 +320,40 @@ def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
     return rung, diags
 
 
+def _read_branches(left: int, outputs: list[int], useful: list[_Edge],
+                   coils: list[tuple[Cell, Coil, int]]) -> Rung | None:
+    """Coils on several branches from one point (a dialect with MPS/MRD/MPP): the logic from
+    the rail to that point, then each branch's block and coils, top to bottom; None when the
+    drawing is not so (each edge must belong to the common part or to one branch)."""
+    back = {o: _reach({o}, useful, False) for o in outputs}
+    common = set.intersection(*back.values()) - {left}
+    if not common:
+        return None
+    point = min(common, key=lambda n: len(_reach({n}, useful, True)))
+    after = _reach({point}, useful, True)
+    into = _reach({point}, useful, False)
+    first_row = {net: cell for cell, _, net in reversed(coils)}
+    order = sorted(outputs, key=lambda o: first_row[o])
+    shared = [e for e in useful if e.dst in into]
+    owner: dict[int, int] = {id(e): -1 for e in shared}
+    branches: list[tuple[Logic | None, list[Coil]]] = []
+    for index, target in enumerate(order):
+        part = [e for e in useful if e.src in after and e.dst in back[target]]
+        for e in part:
+            if id(e) in owner:
+                return None
+            owner[id(e)] = index
+        block = _reduce(part, point, target) if target != point else None
+        if isinstance(block, _Edge) or (block is None and part):
+            return None
+        branches.append((block, [coil for _, coil, net in coils if net == target]))
+    logic = _reduce(shared, left, point)
+    if isinstance(logic, _Edge) or len(owner) != len(useful):
+        return None
+    return Rung(logic=logic, branches=branches,
+                coil_cells=[cell for o in order for cell, _, net in coils if net == o])
+
+
 def _box_param_problems(box: FunctionBox, dialect: str = "seed") -> list[Diagnostic]:
     """The parser's complaints about a box's parameters (count, kinds, ranges); a dialect's
     box (Delta TMR) holds the values its reader made, which the compiler checks see."""
@@ -338,12 +396,17 @@ def _cycle_edge(edges: list[_Edge]) -> _Edge | None:
 def _check_depth(rung: Rung, report: Callable[..., None]) -> None:
     cells: list[Cell | None] = []
     depth = 0
-    for ins, cell in zip(code_rung(rung, cells), cells, strict=True):
-        depth += ins.spec.pushes if ins.spec.kind is Kind.BASIC else 0
+    try:
+        code = code_rung(rung, cells)
+    except ContactPlace:  # read_grid reports it
+        return
+    for ins, cell in zip(code, cells, strict=True):
+        joins = ins.spec.kind is Kind.BASIC or contact_combine(ins.spec) is not None
+        depth += ins.spec.pushes if joins else 0
         if depth > MAX_PUSHES:
             report("stack-depth", cell or (0, 0))
             return
-        if ins.spec.kind is not Kind.BASIC:
+        if not joins:
             depth = 0
 
 

@@ -128,6 +128,8 @@ def invert(network: LadderNetwork, row: int, col: int) -> Edit:
     found = network.element_at(row, col)
     if found is None or not isinstance(found[1], Contact | Coil):
         raise EditRefused("edit-no-element", (row, col), row=row, col=col)
+    if isinstance(found[1], Contact) and found[1].function:  # no NC edge/comparison contact
+        raise EditRefused("edit-row-contact", (row, col), row=row, col=col)
     work = network.copy()
     work.cells[found[0]] = flip(found[1])
     return _change(network, work)
@@ -286,7 +288,10 @@ def set_address(network: LadderNetwork, row: int, col: int, address: str | Addre
         raise EditRefused("edit-no-element", (row, col), row=row, col=col)
     value = to_address(address, (row, col), dialect=dialect)
     work = network.copy()
-    work.cells[found[0]] = replace(found[1], address=value)
+    element = found[1]
+    if isinstance(element, Contact) and element.function:  # an address makes it a plain contact
+        element = replace(element, function="", params=())
+    work.cells[found[0]] = replace(element, address=value)
     return _change(network, work)
 
 

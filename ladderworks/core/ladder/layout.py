@@ -89,6 +89,8 @@ def draw_rung(rung: Rung, columns: int = DEFAULT_COLUMNS) -> LadderNetwork:
             net.rows = height
         for c in range(box_col + BOX_WIDTH, net.columns):
             net.cells[(0, c)] = WIRE
+    elif rung.branches:
+        return _draw_branches(rung, columns)
     else:
         return _draw_chain(rung, columns)
     _draw_coils(net, 0, rung.coils)
@@ -151,4 +153,29 @@ def layout_network(instructions: list[Instruction] | tuple[Instruction, ...],
     net.comments = comments
     if code_rung(rung) != list(instructions):
         net.source = tuple(instructions)
+    return net
+
+
+def _draw_branches(rung: Rung, columns: int) -> LadderNetwork:
+    """Delta's MPS / MRD / MPP: the common logic from the rail, then each branch from its end
+    (the branch point), one below the other, joined there by vertical links."""
+    assert rung.logic is not None
+    common_w, common_h = size(rung.logic)
+    widths = [size(block)[0] if block is not None else 0 for block, _ in rung.branches]
+    net = LadderNetwork(max(columns, common_w + max(widths)), 1)
+    place_logic(net, rung.logic, 0, 0)
+    row = 0
+    last = 0
+    for (block, coils), width in zip(rung.branches, widths, strict=True):
+        height = size(block)[1] if block is not None else 1
+        if block is not None:
+            place_logic(net, block, row, common_w)
+        for c in range(common_w + width, net.columns):
+            net.cells[(row, c)] = WIRE
+        _draw_coils(net, row, coils)
+        last = row
+        row += max(height, len(coils))
+    for r in range(0, last):
+        net.links.add((r, common_w))
+    net.rows = max(net.rows, row, common_h)
     return net

@@ -5,8 +5,17 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ladderworks.core.il.program import Instruction
-from ladderworks.core.instructions import BASIC, Combine, InstructionSpec, Kind, Write
+from ladderworks.core.instructions import (
+    BASIC,
+    BY_NAME,
+    Combine,
+    InstructionSpec,
+    Kind,
+    StackOp,
+    Write,
+)
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox
+from ladderworks.core.ladder.row_contacts import contact_combine, row_for
 
 MAX_PUSHES = 8  # ST0 plus ST1..ST8: at most eight values pushed under ST0
 
@@ -63,6 +72,9 @@ class Rung:
     chain: list[tuple[Logic, list[Coil]]] = field(default_factory=list)
     # where the box and the coils are drawn (coils in coding order: `coils`, then the chain's);
     # empty when the rung was read from text
+    # a dialect's stack branches (Delta MPS / MRD / MPP): after `logic`, each branch's block
+    # (None: its coils hang on the branch point) and coils, first to last (at least two)
+    branches: list[tuple[Logic | None, list[Coil]]] = field(default_factory=list)
     box_cell: Cell | None = field(default=None, compare=False)
     coil_cells: list[Cell] = field(default_factory=list, compare=False)
 
@@ -82,9 +94,35 @@ def contact_spec(contact: Contact) -> InstructionSpec:
     return _basic(Combine.READ, Write.NONE, contact.negated, 0, True)
 
 
-def _contact_instruction(contact: Contact, combine: Combine, push: bool) -> Instruction:
+class ContactPlace(Exception):
+    """A dialect's edge or comparison contact stands where its dialect has no row for it."""
+
+    def __init__(self, contact: Contact, cell: Cell | None) -> None:
+        super().__init__(contact.function)
+        self.contact = contact
+        self.cell = cell
+
+
+def _contact_instruction(contact: Contact, combine: Combine, push: bool,
+                         cell: Cell | None = None) -> Instruction:
+    if contact.function:
+        row = row_for(contact.function, combine, push)
+        if row is None:
+            raise ContactPlace(contact, cell)
+        return Instruction(row.name, params=contact.params, comment=contact.comment,
+                           lead=contact.lead)
     spec = _basic(combine, Write.NONE, contact.negated, 1 if push else 0, True)
     return Instruction(spec.name, contact.address, comment=contact.comment, lead=contact.lead)
+
+
+def stack_row(op: StackOp, dialect: str = "") -> InstructionSpec | None:
+    """The basic row that does `op` to the result stack (Delta's MPS/MRD/MPP), by its field;
+    of `dialect` when given."""
+    for spec in list(BY_NAME.values()):
+        if spec.kind is Kind.BASIC and spec.stack is op and (not dialect
+                                                              or spec.dialect == dialect):
+            return spec
+    return None
 
 
 def _stack_instruction(combine: Combine) -> Instruction:
@@ -100,13 +138,13 @@ def code_logic(logic: Logic, push: bool = False,
         cells = []
     if isinstance(logic, Leaf):
         cells.append(logic.cell)
-        return [_contact_instruction(logic.contact, Combine.READ, push)]
+        return [_contact_instruction(logic.contact, Combine.READ, push, logic.cell)]
     out = code_logic(logic.items[0], push, cells)
     combine = Combine.AND if isinstance(logic, Series) else Combine.OR
     for item in logic.items[1:]:
         if isinstance(item, Leaf):
             cells.append(item.cell)
-            out.append(_contact_instruction(item.contact, combine, False))
+            out.append(_contact_instruction(item.contact, combine, False, item.cell))
         else:
             out.extend(code_logic(item, True, cells))
             cells.append(None)
@@ -159,11 +197,21 @@ def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
     elif rung.logic is not None:
         out.extend(code_logic(rung.logic, False, cells))
     write(rung.coils)
+    for index, (branch, coils) in enumerate(rung.branches):
+        op = StackOp.DUP if index == 0 else (
+            StackOp.DROP if index == len(rung.branches) - 1 else StackOp.OVER)
+        row = stack_row(op)
+        assert row is not None, op
+        out.append(Instruction(row.name))
+        cells.append(None)
+        if branch is not None:
+            _continue(branch, out, cells)
+        write(coils)
     for block, coils in rung.chain:
         for item in block.items if isinstance(block, Series) else (block,):
             if isinstance(item, Leaf):
                 cells.append(item.cell)
-                out.append(_contact_instruction(item.contact, Combine.AND, False))
+                out.append(_contact_instruction(item.contact, Combine.AND, False, item.cell))
             else:
                 out.extend(code_logic(item, True, cells))
                 cells.append(None)
@@ -172,12 +220,24 @@ def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
     return out
 
 
+def _continue(block: Logic, out: list[Instruction], cells: list[Cell | None]) -> None:
+    """A block in series with the result so far: AND b, or RD.STK … AND.STK."""
+    for item in block.items if isinstance(block, Series) else (block,):
+        if isinstance(item, Leaf):
+            cells.append(item.cell)
+            out.append(_contact_instruction(item.contact, Combine.AND, False, item.cell))
+        else:
+            out.extend(code_logic(item, True, cells))
+            cells.append(None)
+            out.append(_stack_instruction(Combine.AND))
+
+
 def stack_depth(instructions: list[Instruction]) -> int:
     """Most values held under ST0 at any point (must be ≤ MAX_PUSHES)."""
     depth = deepest = 0
     for ins in instructions:
         spec = ins.spec
-        if spec.kind is Kind.BASIC:
+        if spec.kind is Kind.BASIC or contact_combine(spec) is not None:
             depth += spec.pushes
         elif spec.inputs:
             depth = 0
@@ -192,21 +252,66 @@ class Undrawable(Exception):
 _PREVIOUS = Leaf(Contact(None, comment="the result written so far"))  # chain start marker
 
 
+def _join(stack: list[Logic], contact: Contact, combine: Combine, pushes: int, name: str
+          ) -> None:
+    """A contact read into the symbolic stack: RD starts, RD.STK pushes, AND/OR join."""
+    if combine is Combine.READ:
+        if bool(stack) != (pushes > 0):  # RD starts the logic, RD.STK pushes onto it
+            raise Undrawable(name)
+        stack.append(Leaf(contact))
+        return
+    if not stack or pushes:
+        raise Undrawable(name)
+    top = stack.pop()
+    stack.append(series(top, Leaf(contact)) if combine is Combine.AND
+                 else parallel(top, Leaf(contact)))
+
+
+def _branch_block(stack: list[Logic], name: str) -> Logic:
+    """A stack branch's block read since its MPS / MRD / MPP (it must have one)."""
+    top = stack[0] if len(stack) == 1 else None
+    if top is _PREVIOUS:  # coils on the branch point: the grid reads that as an output chain
+        raise Undrawable(name)
+    if not isinstance(top, Series) or top.items[0] is not _PREVIOUS:
+        raise Undrawable(name)
+    rest = top.items[1:]
+    return rest[0] if len(rest) == 1 else Series(rest)
+
+
+def _branch_op(op: StackOp, phase: str, branching: str, stack: list[Logic], rung: Rung,
+               name: str) -> str:
+    """MPS starts the branches (the logic so far is their common part), MRD a next branch,
+    MPP the last; anything else (INV, a second MPS) has no picture here."""
+    if op is StackOp.DUP and phase == "logic" and not branching and rung.box is None \
+            and len(stack) == 1:
+        rung.logic = stack[0]
+        return "open"
+    if op in (StackOp.OVER, StackOp.DROP) and branching == "open" and phase == "coils":
+        return "open" if op is StackOp.OVER else "last"
+    raise Undrawable(name)
+
+
 def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung:
     """The meaning of one network's instructions; Undrawable for code with no ladder picture
     (unbalanced stack, OR after an output, a function without its control inputs, ...)."""
     stack: list[Logic] = []
     rung = Rung()
     phase = "logic"  # then "coils" after the first WRT / the function; "chain" after more logic
+    branching = ""  # "open" after MPS/MRD, "last" after MPP (Delta's stack branches)
     for ins in instructions:
         spec = ins.spec
         name = ins.name
+        # a dialect's edge or comparison contact
+        joins = contact_combine(spec) if spec.kind is Kind.FUNCTION else None
         if spec.is_coil:
             if phase == "logic":
                 if rung.box is None and len(stack) != 1:
                     raise Undrawable(name)
                 if rung.box is None:
                     rung.logic = stack[0]
+            elif branching:
+                if phase == "branch":  # the branch's first coil (more may follow)
+                    rung.branches.append((_branch_block(stack, name), []))
             elif phase == "chain":
                 top = stack[0] if len(stack) == 1 else None
                 if not isinstance(top, Series) or top.items[0] is not _PREVIOUS:
@@ -217,15 +322,27 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             if ins.operand is None:
                 raise Undrawable(name)
             coil = Coil(ins.operand, spec.negated, ins.comment, ins.lead, spec.write)
-            (rung.chain[-1][1] if rung.chain else rung.coils).append(coil)
+            (rung.branches[-1][1] if branching else rung.chain[-1][1] if rung.chain
+             else rung.coils).append(coil)
             continue
-        if phase == "coils" and rung.box is None and spec.kind is Kind.BASIC:
+        if spec.kind is Kind.BASIC and spec.stack is not StackOp.NONE:
+            branching = _branch_op(spec.stack, phase, branching, stack, rung, name)
+            phase = "branch"
+            stack = [_PREVIOUS]
+            continue
+        if branching and phase == "coils":
+            raise Undrawable(name)  # logic after a branch's coils without MRD / MPP
+        if phase == "coils" and rung.box is None and (spec.kind is Kind.BASIC or joins):
             phase = "chain"
             stack = [_PREVIOUS]
-        if phase not in ("logic", "chain"):
+        if phase not in ("logic", "chain", "branch"):
             raise Undrawable(name)
+        if joins is not None:
+            _join(stack, Contact(None, False, ins.comment, ins.lead, name, ins.params), joins,
+                  spec.pushes, name)
+            continue
         if spec.kind is not Kind.BASIC:
-            if phase == "chain" or len(stack) != len(spec.inputs):
+            if phase in ("chain", "branch") or len(stack) != len(spec.inputs):
                 raise Undrawable(name)
             rung.box = FunctionBox.new(name, ins.params, ins.comment, ins.lead)
             rung.inputs = list(stack)
@@ -240,20 +357,13 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             stack.append(series(a, b) if spec.combine is Combine.AND else parallel(a, b))
             continue
         contact = Contact(ins.operand, spec.negated, ins.comment, ins.lead)
-        if spec.combine is Combine.READ:
-            if bool(stack) != (spec.pushes > 0):  # RD starts the logic, RD.STK pushes onto it
-                raise Undrawable(name)
-            stack.append(Leaf(contact))
-        else:
-            if not stack:
-                raise Undrawable(name)
-            top = stack.pop()
-            stack.append(series(top, Leaf(contact)) if spec.combine is Combine.AND
-                         else parallel(top, Leaf(contact)))
+        _join(stack, contact, spec.combine, spec.pushes, name)
     if rung.box is None and rung.logic is None:
         raise Undrawable("no output")
-    if phase == "chain":
+    if phase in ("chain", "branch"):
         raise Undrawable("logic after the last coil")
+    if branching and (branching != "last" or len(rung.branches) < 2):
+        raise Undrawable("MPS without its MPP")
     if rung.box is not None and not rung.box.spec.w1 and rung.coils:
         raise Undrawable("coils")
     return rung

@@ -23,12 +23,17 @@ Cell = tuple[int, int]  # (row, column)
 
 @dataclass(frozen=True, slots=True)
 class Contact:
-    """A contact: normally open (RD/AND/OR) or normally closed (`negated`, the .NOT forms)."""
+    """A contact: normally open (RD/AND/OR) or normally closed (`negated`, the .NOT forms).
+
+    A dialect's edge or comparison contact (`row_contacts.py`) has `function`, the row it was
+    read with (`DVP.LD=`, `FBS.TU`), and `params`, its operands; its `address` is None."""
 
     address: Address | None = None  # None while the user has not typed it yet
     negated: bool = False
     comment: str = ""  # the element's comment (trailing `// ...` of its instruction)
     lead: tuple[str, ...] = ()  # comment lines written just before its instruction
+    function: str = ""  # a functional row drawn as a contact ("" for RD/AND/OR)
+    params: tuple[ParamValue, ...] = ()  # its operands
 
 
 @dataclass(frozen=True, slots=True)

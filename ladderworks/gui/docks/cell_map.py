@@ -11,11 +11,12 @@ from dataclasses import dataclass, field
 from ladderworks.core.address import Address
 from ladderworks.core.compiler.binary import BinaryProgram, Op
 from ladderworks.core.il.program import Instruction, LabelRef, Network, Program, ProgramRef
-from ladderworks.core.instructions import Write
+from ladderworks.core.instructions import Combine, Write, lookup
 from ladderworks.core.ladder.decompose import NodeNets, read_grid
 from ladderworks.core.ladder.logic import code_rung
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork, Wire
 from ladderworks.core.ladder.power import powered_nets
+from ladderworks.core.ladder.row_contacts import contact_combine
 
 OpKey = tuple[str, object, tuple[object, ...]]
 
@@ -54,11 +55,18 @@ def program_matches(program: Program, binary: BinaryProgram) -> bool:
     return keys == [op_key(op.name, op.operand, op.params) for op in binary.ops]
 
 
-def standard_cells(network: LadderNetwork) -> list[tuple[Cell | None, Instruction]]:
+def stack_dialect(binary: BinaryProgram) -> str:
+    """The dialect a drawing is read in to match the binary: a registered dialect's own (its
+    MPS/MRD/MPP branches code in it), "seed" for the PMC's (as before)."""
+    return binary.dialect if binary.dialect not in ("seed", "fanuc") else "seed"
+
+
+def standard_cells(network: LadderNetwork, dialect: str = "seed"
+                   ) -> list[tuple[Cell | None, Instruction]]:
     """The core's standard coding of a drawn network (output chains included), each
     instruction with the cell it comes from (None for stack operations); [] when the network
     cannot be coded."""
-    rung, _ = read_grid(network)
+    rung, _ = read_grid(network, dialect=dialect)  # a Delta MPS branch codes in Delta
     if rung is None:
         return []
     cells: list[Cell | None] = []
@@ -68,6 +76,10 @@ def standard_cells(network: LadderNetwork) -> list[tuple[Cell | None, Instructio
 
 def _same_element(element: object, op: Op) -> bool:
     spec = op.spec
+    if isinstance(element, Contact) and element.function:  # an edge / comparison contact
+        row = lookup(element.function)
+        return (row is not None and contact_combine(spec) is not None
+                and spec.operation is row.operation and tuple(op.params) == element.params)
     if isinstance(element, Contact):
         return (spec.is_contact and op.operand == element.address
                 and spec.negated == element.negated)
@@ -86,7 +98,7 @@ def cell_ops(network: LadderNetwork, ops: Sequence[int], binary: BinaryProgram) 
     text) is matched element by element in drawing order (same kind, address and NOT)."""
     if network.listing is not None:
         return {}
-    coded = standard_cells(network)
+    coded = standard_cells(network, stack_dialect(binary))
     keys = [op_key(ins.name, ins.operand, ins.params) for _, ins in coded]
     mine = [binary.ops[i] for i in ops]
     if keys == [op_key(op.name, op.operand, op.params) for op in mine]:
@@ -101,6 +113,15 @@ def cell_ops(network: LadderNetwork, ops: Sequence[int], binary: BinaryProgram) 
                 free.remove(index)
                 break
     return found
+
+
+def _contact_passed(element: Contact, index: int | None, flow: bytes) -> bool:
+    """An edge / comparison contact is shown closed when the engine's recorded result of its
+    op is on and that result is the test itself or the test in series (its READ / AND form);
+    an OR form's result may come from the branch above it, so it is not shown closed."""
+    row = lookup(element.function)
+    return (row is not None and contact_combine(row) is not Combine.OR
+            and index is not None and index < len(flow) and bool(flow[index]))
 
 
 @dataclass(slots=True)
@@ -140,7 +161,10 @@ def network_power(network: LadderNetwork, value: Callable[[Address], int],
         if (isinstance(element, Contact | Coil) and element.address is not None
                 and element.address in forced):
             power.forced[(r, c)] = int(forced[element.address])
-        if isinstance(element, Contact) and element.address is not None:
+        if isinstance(element, Contact) and element.function:
+            if (r, c) not in off and _contact_passed(element, cells.get((r, c)), flow):
+                power.closed.add((r, c))
+        elif isinstance(element, Contact) and element.address is not None:
             if (r, c) not in off and bool(value(element.address)) != element.negated:
                 power.closed.add((r, c))
         elif isinstance(element, FunctionBox):

@@ -12,7 +12,13 @@ from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.core.instructions import ParamKind
 from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.model import Cell, FunctionBox, LadderNetwork
-from ladderworks.gui.docks.cell_map import binary_networks, cell_ops, network_power, op_key
+from ladderworks.gui.docks.cell_map import (
+    binary_networks,
+    cell_ops,
+    network_power,
+    op_key,
+    stack_dialect,
+)
 from ladderworks.gui.docks.power_overlay import PowerOverlay
 from ladderworks.gui.editor.geometry import Layout, RowMetrics
 from ladderworks.gui.editor.lazy_items import LazyItems
@@ -26,7 +32,7 @@ def match_networks(networks: list[LadderNetwork], binary: BinaryProgram) -> list
     result: list[list[int]] = []
     next_group = 0
     for network in networks:
-        instructions, _ = network_to_instructions(network)
+        instructions, _ = network_to_instructions(network, dialect=stack_dialect(binary))
         if not instructions:
             if network.is_empty() and not network.comments:
                 result.append([])

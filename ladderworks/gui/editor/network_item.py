@@ -9,6 +9,7 @@ from PySide6.QtWidgets import QGraphicsItem, QStyleOptionGraphicsItem, QWidget
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.dialects.spelling import spelling as spelling_of
 from ladderworks.core.instructions import Write
+from ladderworks.core.ladder import row_contacts
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
 from ladderworks.core.ladder.open_circuit import OpenEnd, open_ends
 from ladderworks.gui.editor.geometry import (
@@ -206,6 +207,11 @@ class NetworkItem(QGraphicsItem):
         return cached
 
     def _label_lines(self, element: Contact | Coil) -> tuple[str, str, list[str]]:
+        if isinstance(element, Contact) and element.function:  # operands above / below
+            texts = row_contacts.operand_texts(element, self.spelling)
+            if not self.rows.symbol:  # no line under the element: both above
+                return " ".join(texts), "", []
+            return texts[0] if texts else "", " ".join(texts[1:]), []
         address = self.spelling.address(element.address) if element.address is not None else "?"
         rows = self.rows
         if not rows.symbol:
@@ -224,7 +230,8 @@ class NetworkItem(QGraphicsItem):
         """The address above the element; its symbol and comment lines under it."""
         address, symbol, lines = self.label_lines(element)
         painter.setFont(label_font)
-        painter.setPen(INK if element.address is not None else ERROR)
+        painter.setPen(INK if element.address is not None
+                       or (isinstance(element, Contact) and element.function) else ERROR)
         painter.drawText(QRectF(x, y + 1, CELL_W, 16), Qt.AlignmentFlag.AlignCenter, address)
         below = y + self.rows.wire + 12
         if symbol:
@@ -251,6 +258,10 @@ class NetworkItem(QGraphicsItem):
         painter.drawLine(QPointF(right, mid - 11), QPointF(right, mid + 11))
         if element.negated:
             painter.drawLine(QPointF(left - 3, mid + 11), QPointF(right + 3, mid - 11))
+        if element.function:  # ↑ / ↓ of an edge, the operator of a comparison
+            painter.setFont(small_font)
+            painter.drawText(QRectF(left - 6, mid - 9, right - left + 12, 18),
+                             Qt.AlignmentFlag.AlignCenter, row_contacts.mark(element.function))
         self._labels(painter, element, x, y, label_font, small_font)
 
     def _paint_coil(self, painter: QPainter, element: Coil, x: float, y: float, col: int,

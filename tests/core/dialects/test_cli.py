@@ -68,8 +68,8 @@ def test_every_example_passes_its_scenario(program: Path, capsys) -> None:
 def test_ladder_art_in_delta_spelling(capsys) -> None:
     assert main(["ladder", str(EXAMPLES / "compare_contacts.txt")]) == 0
     out = capsys.readouterr().out
-    assert "|    X0 " in out and "T0 K100" in out and "+------ LD= ------+" in out
-    assert "LD< C1 C2" in out  # a rung with no ladder picture: its Delta listing
+    assert "|    X0 " in out and "T0 K100" in out and "---|=|---" in out and "T0 K5" in out
+    assert "LD< C1 C2" not in out and "---|<|---" in out and "C1 C2" in out  # now ladder
     assert "X0.0" not in out and "RD" not in out
 
 

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+from ladderworks.core.instruction_fields import Operation
 from ladderworks.core.instructions import (
     FUNCTION_OPCODE,
     InstructionSpec,
@@ -39,10 +40,12 @@ FO = _raw("fo")  # the box's output byte (FO0 bit 0 …)
 
 def _row(name: str, sub: int, mnemonic: str, title: str, title_tr: str, *,
          inputs: tuple[str, ...] = ("EN",), params: tuple[Param, ...] = (),
-         w1: bool = True, cnc: bool = False) -> InstructionSpec:
+         w1: bool = True, cnc: bool = False,
+         operation: Operation = Operation.NONE) -> InstructionSpec:
     return InstructionSpec(name, Kind.FUNCTION, sub, inputs=inputs, params=params, w1=w1,
                            title=title, title_tr=title_tr, opcode=FUNCTION_OPCODE,
-                           mnemonic=mnemonic, cnc=cnc, source="fatek", dialect="fatek")
+                           mnemonic=mnemonic, cnc=cnc, source="fatek", dialect="fatek",
+                           operation=operation)
 
 
 # FUN n of the listing -> the row it becomes
@@ -56,9 +59,9 @@ ROWS: tuple[InstructionSpec, ...] = (
     _row("FBS.RST", OTHER + 2, "RST", "Reset a timer or counter", "ZAMANLAYICI/SAYICI SIFIRLA",
          params=(_number("kind", 0, 1), _number("number", 0, 255)), w1=False),
     _row("FBS.TU", OTHER + 3, "TU", "Rising edge contact", "YÜKSELEN KENAR KONTAĞI", inputs=("IN",),
-         params=(Param("device", ParamKind.BIT),)),
+         params=(Param("device", ParamKind.BIT),), operation=Operation.RISING),
     _row("FBS.TD", OTHER + 4, "TD", "Falling edge contact", "DÜŞEN KENAR KONTAĞI", inputs=("IN",),
-         params=(Param("device", ParamKind.BIT),)),
+         params=(Param("device", ParamKind.BIT),), operation=Operation.FALLING),
     _row("FBS.MOV", SUB_BASE + 8, "MOV", "Move", "TAŞI",
          params=(MODE, _value("S"), _register("output")), w1=False),
     _row("FBS.ADD", SUB_BASE + 11, "(+)", "Addition", "TOPLAMA",
@@ -81,7 +84,7 @@ ROWS: tuple[InstructionSpec, ...] = (
                  _register("Pt", ParamAccess.READ_WRITE), FO)),
     *(_row(name, SUB_BASE + fun, symbol, f"Compare contact {symbol}",
            f"KARŞILAŞTIRMA KONTAĞI {symbol}", inputs=("IN",),
-           params=(MODE, _value("Sa"), _value("Sb")))
+           params=(MODE, _value("Sa"), _value("Sb")), operation=Operation(symbol[1:-1]))
       for fun, name, symbol in ((170, "FBS.EQ", "(=)"), (171, "FBS.GT", "(>)"),
                                 (172, "FBS.LT", "(<)"), (173, "FBS.NE", "(<>)"),
                                 (174, "FBS.GE", "(>=)"), (175, "FBS.LE", "(<=)"))),

@@ -1,0 +1,63 @@
+"""Delta's MPS / MRD / MPP branches drawn as ladder branches from one point, and read back
+from the grid to the same instructions; what has no such picture stays a list."""
+
+from __future__ import annotations
+
+import pytest
+
+from ladderworks.core.compiler import compile
+from ladderworks.core.ladder.decompose import network_to_instructions
+from ladderworks.core.ladder.layout import layout_network
+from ladderworks.core.ladder.model import Coil
+from ladderworks.core.plc.engine import ScanEngine
+
+from .conftest import delta, get, put
+
+DRAWN = [
+    "LD X0\nMPS\nAND X1\nOUT Y0\nMRD\nAND X2\nOUT Y1\nMPP\nANI X3\nOUT Y2\nEND\n",
+    "LD X0\nOR X5\nMPS\nAND X1\nOUT Y0\nOUT Y3\nMPP\nANI X2\nOUT Y2\nEND\n",
+    "LD X0\nMPS\nLD X1\nOR X2\nANB\nOUT Y0\nMPP\nAND= D0 K1\nOUT Y2\nEND\n",
+]
+LISTS = [
+    "LD X0\nOR X5\nMPS\nAND X1\nOUT Y0\nMPP\nOUT Y2\nEND\n",  # coils on the branch point
+    "LD X0\nMPS\nAND X1\nMPS\nAND X2\nOUT Y0\nMPP\nOUT Y1\nMPP\nOUT Y2\nEND\n",  # nested
+    "LD X0\nMPS\nAND X1\nOUT Y0\nEND\n",  # no MPP
+    "LD X0\nINV\nOUT Y0\nEND\n",
+]
+
+
+@pytest.mark.parametrize("text", DRAWN)
+def test_branches_are_drawn_and_read_back(text: str) -> None:
+    code = list(delta(text).networks[0].instructions)
+    net = layout_network(code)
+    assert net.listing is None and net.source is None
+    coils = [cell for cell, e in net.elements() if isinstance(e, Coil)]
+    assert len({row for row, _ in coils}) == len(coils)  # one row each, in the coil column
+    back, diags = network_to_instructions(net, dialect="delta")
+    assert not diags and back == code
+
+
+@pytest.mark.parametrize("text", LISTS)
+def test_no_picture_stays_a_list(text: str) -> None:
+    code = delta(text).networks[0].instructions
+    net = layout_network(code)
+    assert net.listing == tuple(code)
+
+
+def test_a_branch_drawing_is_not_pmc_ladder() -> None:
+    net = layout_network(list(delta(DRAWN[0]).networks[0].instructions))
+    code, diags = network_to_instructions(net)  # the PMC has no MPS: FANUC's coil-branch
+    assert code is None and [d.code for d in diags] == ["coil-branch"]
+
+
+def test_the_drawn_branches_run_as_written() -> None:
+    program = delta(DRAWN[0])
+    net = layout_network(list(program.networks[0].instructions))
+    program.networks[0].instructions[:] = network_to_instructions(net, dialect="delta")[0] or []
+    plc = ScanEngine(compile(program))
+    for x0, x1, x2, x3 in ((1, 1, 0, 0), (1, 0, 1, 1), (0, 1, 1, 0)):
+        for name, value in (("X0", x0), ("X1", x1), ("X2", x2), ("X3", x3)):
+            put(plc, name, value)
+        plc.scan()
+        assert (get(plc, "Y0"), get(plc, "Y1"), get(plc, "Y2")) == (
+            x0 & x1, x0 & x2, x0 & (1 - x3))

@@ -1,0 +1,121 @@
+"""Delta's and Fatek's edge and comparison contacts drawn as contacts in the ladder grid:
+laid out (not kept as lists), coded back to the same instructions, saved byte for byte."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ladderworks.core.il import parse_file
+from ladderworks.core.il.printer import encode_program
+from ladderworks.core.instructions import Operation
+from ladderworks.core.ladder import EditRefused, invert, set_address
+from ladderworks.core.ladder.clipboard import copy_text, network_from_text
+from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
+from ladderworks.core.ladder.decompose import network_to_instructions
+from ladderworks.core.ladder.layout import layout_network
+from ladderworks.core.ladder.logic import stack_depth
+from ladderworks.core.ladder.model import WIRE, Contact, FunctionBox, LadderNetwork
+from ladderworks.core.ladder.row_contacts import contact_combine, mark
+
+from .conftest import delta
+
+ROOT = Path(__file__).resolve().parents[3] / "resources" / "examples"
+PROGRAMS = sorted((ROOT / "delta").glob("*.txt")) + sorted((ROOT / "fatek").glob("*.lst"))
+
+
+def _row_contacts(net: LadderNetwork) -> list[Contact]:
+    return [e for _, e in net.elements() if isinstance(e, Contact) and e.function]
+
+
+@pytest.mark.parametrize("path", PROGRAMS, ids=lambda p: p.name)
+def test_examples_draw_their_row_contacts_and_round_trip(path: Path) -> None:
+    program = parse_file(path).program
+    doc = program_to_ladder(program)
+    for network, net in zip(program.networks, doc.networks, strict=True):
+        has_row_contact = any(contact_combine(ins.spec) is not None
+                              for ins in network.instructions)
+        if has_row_contact:
+            assert net.listing is None, [ins.name for ins in network.instructions]
+            assert _row_contacts(net)
+            assert net.source is None  # the drawing's standard coding is the text's
+        code, diags = network_to_instructions(net, dialect=program.dialect)
+        assert not diags and code == list(network.instructions)
+    back, diags = ladder_to_program(doc)
+    assert not diags
+    assert encode_program(back) == path.read_bytes()
+
+
+def test_delta_comparison_mid_rung_is_a_contact_with_its_operands() -> None:
+    program = delta("LD X1\nLD< C1 C2\nOR> C2 K10\nANB\nAND= D0 K5\nOUT Y1\nEND\n")
+    net = layout_network(program.networks[0].instructions)
+    assert net.listing is None
+    contacts = _row_contacts(net)
+    assert [mark(c.function) for c in contacts] == ["<", "=", ">"]  # row 0, then OR> below
+    assert all(len(c.params) == 2 and c.address is None for c in contacts)
+    code, diags = network_to_instructions(net, dialect="delta")
+    assert not diags and code == list(program.networks[0].instructions)
+
+
+def test_delta_edges_in_series_and_parallel() -> None:
+    program = delta("LDP X0\nORF X1\nANDP M0\nOUT Y0\nEND\n")
+    net = layout_network(program.networks[0].instructions)
+    assert [mark(c.function) for c in _row_contacts(net)] == ["↑", "↑", "↓"]  # X0, M0; X1
+    assert network_to_instructions(net, dialect="delta")[0] == list(
+        program.networks[0].instructions)
+
+
+def test_fatek_conveyor_counter_is_ladder() -> None:
+    program = parse_file(ROOT / "fatek" / "conveyor.lst").program
+    doc = program_to_ladder(program)
+    counter = next(net for net in doc.networks
+                   if any(isinstance(e, FunctionBox) and len(e.pins) == 2
+                          for e in net.cells.values()))
+    assert counter.listing is None
+    (edge,) = _row_contacts(counter)
+    assert mark(edge.function) == "↑"
+
+
+def test_a_fatek_edge_contact_on_the_rail_is_reported_at_its_cell() -> None:
+    program = parse_file(ROOT / "fatek" / "conveyor.lst").program
+    net = next(n for n in program_to_ladder(program).networks if _row_contacts(n))
+    (cell,) = [c for c, e in net.cells.items() if isinstance(e, Contact) and e.function]
+    moved = net.copy()
+    moved.source = None
+    moved.cells[(cell[0], 0)] = moved.cells.pop(cell)  # over the SHORT contact on the rail
+    moved.cells[cell] = WIRE
+    code, diags = network_to_instructions(moved, dialect="fatek")
+    assert code is None and [d.code for d in diags] == ["contact-place"]
+    assert diags[0].cell == (cell[0], 0)
+
+
+def test_edits_on_a_row_contact() -> None:
+    program = delta("LD X1\nAND= D0 K5\nOUT Y1\nEND\n")
+    net = layout_network(program.networks[0].instructions)
+    with pytest.raises(EditRefused) as refused:
+        invert(net, 0, 1)
+    assert refused.value.diagnostic.code == "edit-row-contact"
+    set_address(net, 0, 1, "X2.0")
+    assert net.cells[(0, 1)] == Contact(net.cells[(0, 1)].address)  # a plain contact now
+    assert network_to_instructions(net)[0] is not None
+
+
+def test_clipboard_keeps_a_row_contact() -> None:
+    program = delta("LD X1\nAND= D0 K5\nOUT Y1\nEND\n")
+    net = layout_network(program.networks[0].instructions)
+    assert network_from_text(copy_text(net)) == net
+
+
+def test_stack_depth_counts_a_pushing_comparison() -> None:
+    code = list(delta("LD X1\nLD= D0 K5\nOR X2\nANB\nOUT Y1\nEND\n").networks[0].instructions)
+    assert stack_depth(code) == 1
+
+
+def test_fatek_rows_say_their_operation() -> None:
+    from ladderworks.core.dialects.fatek.rows import ROWS
+    tests = {spec.mnemonic: spec.operation for spec in ROWS if spec.inputs == ("IN",)}
+    assert tests == {"TU": Operation.RISING, "TD": Operation.FALLING, "(=)": Operation.EQUAL,
+                     "(>)": Operation.GREATER, "(<)": Operation.LESS,
+                     "(<>)": Operation.NOT_EQUAL, "(>=)": Operation.GREATER_EQUAL,
+                     "(<=)": Operation.LESS_EQUAL}
