@@ -186,13 +186,14 @@ class LadderPages:
         for use in xref.sorted_uses():
             by_address.setdefault(use.address, []).append(use)
         text_width = self._list_width()
+        other = spelling(self.job.dialect).dialect  # a Delta or Fatek program
         rows = []
         for address, uses in by_address.items():
             written = _network_list(uses, Access.WRITE)
             read = _network_list(uses, Access.READ)
             lines = max(self._line_count(written, text_width), self._line_count(read, text_width))
-            rows.append(AppendixRow(address, describe(address, self.job.symbols), written, read,
-                                    lines))
+            symbol = "" if other else describe(address, self.job.symbols)  # no FANUC signals
+            rows.append(AppendixRow(address, symbol, written, read, lines))
         return rows
 
     def _columns(self) -> tuple[float, float, float, float]:
@@ -317,10 +318,11 @@ class LadderPages:
         y += self.heading_h
         painter.setFont(self.small_font)
         flags = int(Qt.AlignmentFlag.AlignLeft | Qt.TextFlag.TextWordWrap)
+        spell = spelling(self.job.dialect)  # a Delta program's X0, not X0.0
         for index in page.rows:
             row = self.rows[index]
             height = row.lines * self.line_h
-            painter.drawText(QRectF(x_address, y, 86, height), flags, str(row.address))
+            painter.drawText(QRectF(x_address, y, 86, height), flags, spell.address(row.address))
             painter.drawText(QRectF(x_symbol, y, 156, height), flags, self.metrics.elidedText(
                 row.symbol, Qt.TextElideMode.ElideRight, 156))
             painter.drawText(QRectF(x_written, y, width, height), flags, row.written or "-")
