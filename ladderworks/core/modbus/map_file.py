@@ -12,6 +12,7 @@ import csv
 from pathlib import Path
 
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError, Refused
+from ladderworks.core.il.textform import split_lines
 from ladderworks.core.modbus.cells import Cells, cells_for
 from ladderworks.core.modbus.maps import LAST_ADDRESS, Access, MapRow, ModbusMap, Table
 
@@ -66,7 +67,7 @@ def parse_map(text: str, name: str = "map", dialect: str = "seed") -> ModbusMap:
     elements = cells_for(dialect)
     rows: list[MapRow] = []
     problems: list[Diagnostic] = []
-    reader = csv.reader(text.splitlines())
+    reader = csv.reader(split_lines(text))
     for number, cells in enumerate(reader, start=1):
         if not cells or not "".join(cells).strip() or cells[0].lstrip().startswith("#"):
             continue

@@ -19,6 +19,7 @@ from ladderworks.core.compiler import compile_program
 from ladderworks.core.compiler.binary import MAGIC, decode
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.il import parse_file
+from ladderworks.core.il.textform import split_lines
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS
 from ladderworks.core.plc.parameters import (
     ParameterFile,
@@ -115,7 +116,7 @@ def is_scenario_file(path: str) -> bool:
     """True when the file's first non-empty line is the scenario header (OSError if unreadable)."""
     with open(path, "rb") as file:
         head = file.read(4096).decode("utf-8-sig", errors="replace")
-    first = next((line for line in head.splitlines() if line.strip()), "")
+    first = next((line for line in split_lines(head) if line.strip()), "")
     return first.strip().strip(",").upper() == HEADER
 
 

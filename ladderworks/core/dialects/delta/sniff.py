@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import re
 
+from ladderworks.core.il.textform import split_lines
+
 # a Delta line: optional step number, a mnemonic, operands joined to their numbers (X0, K10)
 _LINE = re.compile(
     r"^\s*(?:\d+\s+)?([A-Z][A-Z0-9]*(?:[=<>]{1,2})?)((?:[ \t]+[A-Z][0-9A-F]*)*)\s*(?:(?:;|//).*)?$",
@@ -26,7 +28,7 @@ def score(text: str) -> int:
         return 0  # a PMC (LadderWorks / LADDER-III) file
     total = matched = 0
     distinctive = False
-    for line in text.splitlines()[:SAMPLE_LINES * 2]:
+    for line in split_lines(text)[:SAMPLE_LINES * 2]:
         if not line.strip() or _COMMENT.match(line):
             continue
         total += 1

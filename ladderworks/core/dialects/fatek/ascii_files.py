@@ -11,6 +11,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.dialects.fatek.ascii_format import AsciiFormat, parse_format
 from ladderworks.core.dialects.fatek.devices import DeviceError, parse_device, word_address
+from ladderworks.core.il.textform import split_lines
 
 SUFFIX = ".ascii"
 _HEADER = re.compile(r"^\s*\[\s*([A-Za-z]+\s*\d+)\s*\]\s*$")
@@ -29,7 +30,7 @@ def read_ascii_files(text: str) -> AsciiFiles:
     file with errors is kept as None: ASCWR then ends with ERR)."""
     result = AsciiFiles()
     sections: list[tuple[int, str, list[str]]] = []
-    for number, line in enumerate(text.splitlines(), start=1):
+    for number, line in enumerate(split_lines(text), start=1):
         header = _HEADER.match(line)
         if header is not None:
             sections.append((number, header.group(1), []))

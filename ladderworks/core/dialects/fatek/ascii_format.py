@@ -7,6 +7,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.il.textform import split_lines
 
 LINE_FEED = "\n"
 PAGE_FEED = "\f"
@@ -175,7 +176,7 @@ def _item(reader: _Reader, raw: str, start: int, quoted: list[tuple[str, int]]) 
 
 def _shown(reader: _Reader, start: int) -> str:
     """The item's text as written, for a message (one line, at most 30 characters)."""
-    text = reader.text[start:reader.pos].strip().splitlines()
+    text = split_lines(reader.text[start:reader.pos].strip())
     first = text[0] if text else ""
     return first if len(first) <= 30 else first[:29] + "…"
 
@@ -217,7 +218,7 @@ def parse_format(text: str, first_line: int = 1) -> tuple[AsciiFormat, list[Diag
             rest = text[after:].strip()
             if rest:
                 reader.error(after + text[after:].index(rest[0]), "fatek-ascii-after-end",
-                             text=rest.splitlines()[0][:30])
+                             text=split_lines(rest)[0][:30])
             break
         raw, start, quoted = _raw_item(reader)
         if reader.unclosed:

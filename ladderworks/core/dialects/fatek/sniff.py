@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 
 from ladderworks.core.dialects.fatek.listing import read_listing
+from ladderworks.core.il.textform import split_lines
 
 _HEADER = re.compile(r"^\s*Printed Item\s*:\s*Mnemonic", re.I | re.M)
 # what only Fatek writes: ORG, ANDLD/ORLD, OUT TR/LD TR, FUN n, ORGF …, FO n
@@ -19,7 +20,7 @@ def score(text: str) -> int:
         return 0  # a PMC (LadderWorks / LADDER-III) file
     if _HEADER.search(text[:8192]):
         return 100
-    lines = [line for line in text.splitlines()[:SAMPLE_LINES] if line.strip()]
+    lines = [line for line in split_lines(text)[:SAMPLE_LINES] if line.strip()]
     if not lines:
         return 0
     listing, problems = read_listing(lines)
