@@ -39,17 +39,17 @@ def word_of(text: str) -> Address:
     return DEVICES.word(text)[0]
 
 
-def get(plc: ScanEngine, text: str) -> int:
+def get(plc: ScanEngine, text: str, dialect: str = "delta") -> int:
     """A device's value: a bit (X, Y, M, S) or a word (T, C, D: signed; `D4:4` 32-bit)."""
-    address, width = dialects.parse_target(text, "delta")
+    address, width = dialects.parse_target(text, dialect)
     if address.bit is not None:
         return plc.memory.bit(address)
     return plc.memory.read(address, width, signed=True)
 
 
-def put(plc: ScanEngine, text: str, value: int) -> None:
+def put(plc: ScanEngine, text: str, value: int, dialect: str = "delta") -> None:
     """Set a device (an input bit, as the machine would, or a word)."""
-    address, width = DEVICES.target(text)
+    address, width = dialects.parse_target(text, dialect)
     if address.bit is not None:
         plc.memory.set_bit(address, value)
     else:

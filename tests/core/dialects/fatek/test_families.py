@@ -12,6 +12,7 @@ from ladderworks.core.dialects.fatek.ascii_format import parse_format
 from ladderworks.core.dialects.fatek.terminal import AsciiTerminal
 from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.plc.engine import ScanEngine
+from tests.core.dialects import conftest as dialects_conftest
 
 MODES = pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
 
@@ -26,18 +27,13 @@ def plc(text: str, monitored: bool) -> ScanEngine:
 
 
 def get(engine: ScanEngine, text: str) -> int:
-    address, width = DEVICES.target(text)
-    if address.bit is not None:
-        return engine.memory.bit(address)
-    return engine.memory.read(address, width, signed=True)
+    """A Fatek device's value (a bit, or a signed word)."""
+    return dialects_conftest.get(engine, text, "fatek")
 
 
 def put(engine: ScanEngine, text: str, value: int) -> None:
-    address, width = DEVICES.target(text)
-    if address.bit is not None:
-        engine.memory.set_bit(address, value)
-    else:
-        engine.memory.write(address, value, width)
+    """Set a Fatek device."""
+    dialects_conftest.put(engine, text, value, "fatek")
 
 
 def scan(engine: ScanEngine, **inputs: int) -> None:

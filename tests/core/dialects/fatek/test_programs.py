@@ -19,6 +19,7 @@ from ladderworks.core.il.reading import parse_bytes, parse_file
 from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.plc.engine import ScanEngine
 from ladderworks.core.plc.session import PlcRun
+from tests.core.dialects import conftest as dialects_conftest
 from tests.core.dialects.fatek.test_ascii_format import REPORT
 
 EXAMPLES = Path(__file__).resolve().parents[4] / "resources" / "examples" / "fatek"
@@ -39,18 +40,13 @@ def engine(text: str, monitored: bool = False) -> ScanEngine:
 
 
 def get(plc: ScanEngine, text: str) -> int:
-    address, width = DEVICES.target(text)
-    if address.bit is not None:
-        return plc.memory.bit(address)
-    return plc.memory.read(address, width, signed=True)
+    """A Fatek device's value (a bit, or a signed word)."""
+    return dialects_conftest.get(plc, text, "fatek")
 
 
 def put(plc: ScanEngine, text: str, value: int) -> None:
-    address, width = DEVICES.target(text)
-    if address.bit is not None:
-        plc.memory.set_bit(address, value)
-    else:
-        plc.memory.write(address, value, width)
+    """Set a Fatek device."""
+    dialects_conftest.put(plc, text, value, "fatek")
 
 
 @pytest.mark.parametrize("path", LISTINGS, ids=lambda p: p.name)
