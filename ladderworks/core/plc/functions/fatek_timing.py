@@ -89,22 +89,34 @@ def _counter_start(memory: Memory, state: dict, device: Device, cv_at: Address,
             memory.write(cv_at, 0, width)
 
 
+def _count_input(ctx: FunctionContext, state: dict, number: int, ck: bool, clr: bool,
+                 fo: object) -> tuple[Device, Address, int, bool] | None:
+    """What the counters share: their places, the value at the load, CK's rising edge; None
+    when CLR cleared the value, the contact and FO0."""
+    device, cv_at, width, _contact = _places(state, "C", number)
+    memory = ctx.memory
+    _counter_start(memory, state, device, cv_at, width)
+    rising = bool(ck) and not state.get("ck", False)
+    state["ck"] = bool(ck)
+    if clr:
+        memory.write(cv_at, 0, width)
+        _set(memory, device, False)
+        write_outputs(memory, fo, False)
+        return None
+    return device, cv_at, width, rising
+
+
 @function("FBS.CTR")
 def fatek_counter(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                   params: tuple) -> bool:
     """Up counter Cn: inputs CK (top) and CLR."""
     number, preset, fo = params
     ck, clr = inputs
-    device, cv_at, width, _contact = _places(state, "C", number)
-    memory = ctx.memory
-    _counter_start(memory, state, device, cv_at, width)
-    rising = ck and not state.get("ck", False)
-    state["ck"] = bool(ck)
-    if clr:
-        memory.write(cv_at, 0, width)
-        _set(memory, device, False)
-        write_outputs(memory, fo, False)
+    counted = _count_input(ctx, state, number, ck, clr, fo)
+    if counted is None:
         return False
+    device, cv_at, width, rising = counted
+    memory = ctx.memory
     value = memory.read(cv_at, width, signed=True)
     top = 2**31 - 1 if counter_is_32bit(number) else MAX16
     if rising and value < top:
@@ -122,16 +134,11 @@ def fatek_up_down_counter(ctx: FunctionContext, state: dict, inputs: tuple[bool,
     """FUN 7 UDCTR: inputs CK, U/D, CLR; FO0 only while CV = PV; the value wraps."""
     number, preset, fo = params
     ck, up_down, clr = inputs
-    device, cv_at, width, _contact = _places(state, "C", number)
-    memory = ctx.memory
-    _counter_start(memory, state, device, cv_at, width)
-    rising = ck and not state.get("ck", False)
-    state["ck"] = bool(ck)
-    if clr:
-        memory.write(cv_at, 0, width)
-        _set(memory, device, False)
-        write_outputs(memory, fo, False)
+    counted = _count_input(ctx, state, number, ck, clr, fo)
+    if counted is None:
         return False
+    device, cv_at, width, rising = counted
+    memory = ctx.memory
     value = memory.read(cv_at, width, signed=True)
     if rising:
         memory.write(cv_at, value + (1 if up_down else -1), width)  # two's complement wrap
