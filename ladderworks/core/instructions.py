@@ -478,11 +478,6 @@ def numbered_row(numbered: Numbered) -> InstructionSpec:
     raise KeyError(numbered)
 
 
-def implemented() -> frozenset[str]:
-    """The names of the functional instructions that a module of `plc/functions` implements."""
-    return frozenset(spec.name for spec in FUNCTIONS if spec.family)
-
-
 def add_rows(rows: tuple[InstructionSpec, ...]) -> None:
     """Join a dialect's rows to the table (core/dialects does, when it registers a dialect).
 

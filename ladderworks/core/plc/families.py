@@ -7,7 +7,7 @@ refuses a row's name that nothing registered."""
 from __future__ import annotations
 
 from ladderworks.core import dialects
-from ladderworks.core.instructions import FUNCTIONS, implemented
+from ladderworks.core.instructions import FUNCTIONS
 
 FAMILIES: dict[str, tuple[str, ...]] = {}
 for _spec in FUNCTIONS:
@@ -20,5 +20,4 @@ for _dialect in dialects.every():
     FAMILIES.update(_dialect.families)
 
 # Every functional instruction that has an implementation.
-IMPLEMENTED: frozenset[str] = implemented() | {
-    name for dialect in dialects.every() for names in dialect.families.values() for name in names}
+IMPLEMENTED: frozenset[str] = frozenset(name for names in FAMILIES.values() for name in names)

@@ -15,6 +15,7 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ladderworks.core import dialects
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.compiler.binary import MAGIC, decode
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
@@ -137,8 +138,9 @@ def run_job(job: ScenarioJob) -> ScenarioOutcome:
         first.diagnostics.append(Diagnostic("scenario-no-program", {}, first.program_line, 1))
         return ScenarioOutcome(job, None, ScenarioResult(first))
     loaded = load_program(program, job.params, job.dialect)
+    respelled = loaded.symbols is not None or dialects.get(loaded.dialect) is not None
     scenario = (read_scenario(job.scenario, loaded.symbols, loaded.dialect)
-                if loaded.binary is not None else first)
+                if loaded.binary is not None and respelled else first)  # read again if it tells
     column = 1 if job.program else 2
     if loaded.binary is None:
         scenario.diagnostics.append(Diagnostic(
