@@ -7,6 +7,8 @@ import signal
 import socket
 import subprocess
 import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
@@ -20,29 +22,37 @@ from tests.core.modbus.test_server import wait_for
 SERVING = re.compile(r"on 127\.0\.0\.1:(\d+), Modbus/TCP")
 
 
-def test_serve_answers_until_sigterm_then_exits_0() -> None:
-    with subprocess.Popen([sys.executable, "-m", "ladderworks.cli", "serve", str(SPINDLE),
+@contextmanager
+def served(program: Path) -> Iterator[tuple[subprocess.Popen[str], str, ModbusTcpClient]]:
+    """`ladderworks-cli serve PROGRAM` on a free loopback port: the process, the line it printed
+    first and a client connected to it; the process is killed at the end if it still runs."""
+    with subprocess.Popen([sys.executable, "-m", "ladderworks.cli", "serve", str(program),
                            "--modbus", "127.0.0.1:0"], cwd=CHECKOUT, text=True,
-                          stdout=subprocess.PIPE, stderr=subprocess.PIPE) as served:
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE) as process:
         try:
-            assert served.stdout is not None
-            first = served.stdout.readline()
+            assert process.stdout is not None
+            first = process.stdout.readline()
             found = SERVING.search(first)
             assert found, first
             client = ModbusTcpClient("127.0.0.1", port=int(found.group(1)), timeout=TIMEOUT)
             assert client.connect()
-            assert not client.write_coils(17, [True, False, True]).isError()
-            assert wait_for(lambda: client.read_holding_registers(3030, count=1).registers
-                            == [60])
-            served.send_signal(signal.SIGTERM)
-            assert served.wait(timeout=2) == 0  # stops within 2 s, exit 0
-            client.close()
+            yield process, first, client
         finally:
-            if served.poll() is None:
-                served.kill()
-                served.wait()
-        out, err = served.communicate()
-        assert "stopped" in out and err == ""
+            if process.poll() is None:
+                process.kill()
+                process.wait()
+
+
+def test_serve_answers_until_sigterm_then_exits_0() -> None:
+    with served(SPINDLE) as (process, _first, client):
+        assert not client.write_coils(17, [True, False, True]).isError()
+        assert wait_for(lambda: client.read_holding_registers(3030, count=1).registers
+                        == [60])
+        process.send_signal(signal.SIGTERM)
+        assert process.wait(timeout=2) == 0  # stops within 2 s, exit 0
+        client.close()
+        out, err = process.communicate()
+    assert "stopped" in out and err == ""
 
 
 def test_serve_listens_on_loopback_unless_told() -> None:
@@ -74,27 +84,14 @@ def test_bad_options_are_refused(option: list[str], text: str,
 
 def test_serve_takes_a_delta_program_s_period_and_map() -> None:
     program = CHECKOUT / "resources" / "examples" / "delta" / "cmp_d10.txt"
-    with subprocess.Popen([sys.executable, "-m", "ladderworks.cli", "serve", str(program),
-                           "--modbus", "127.0.0.1:0"], cwd=CHECKOUT, text=True,
-                          stdout=subprocess.PIPE, stderr=subprocess.PIPE) as served:
-        try:
-            assert served.stdout is not None
-            first = served.stdout.readline()
-            assert "(delta, 10 ms scans)" in first and "map delta" in first
-            found = SERVING.search(first)
-            assert found, first
-            client = ModbusTcpClient("127.0.0.1", port=int(found.group(1)), timeout=TIMEOUT)
-            assert client.connect()
-            assert not client.write_register(0x1000 + 10, 30).isError()  # D10
-            assert not client.write_coil(0x0400, True).isError()  # X0
-            assert wait_for(lambda: client.read_coils(0x0502, count=1).bits[0])  # Y2
-            client.close()
-            served.send_signal(signal.SIGTERM)
-            assert served.wait(timeout=2) == 0
-        finally:
-            if served.poll() is None:
-                served.kill()
-                served.wait()
+    with served(program) as (process, first, client):
+        assert "(delta, 10 ms scans)" in first and "map delta" in first
+        assert not client.write_register(0x1000 + 10, 30).isError()  # D10
+        assert not client.write_coil(0x0400, True).isError()  # X0
+        assert wait_for(lambda: client.read_coils(0x0502, count=1).bits[0])  # Y2
+        client.close()
+        process.send_signal(signal.SIGTERM)
+        assert process.wait(timeout=2) == 0
 
 
 def test_a_port_in_use_is_said_and_exit_2(capsys: pytest.CaptureFixture[str]) -> None:

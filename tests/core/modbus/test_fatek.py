@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import signal
-import subprocess
-import sys
 from collections.abc import Iterator
 
 import pytest
@@ -16,9 +14,9 @@ from ladderworks.core.modbus.cells import cells_for
 from ladderworks.core.modbus.maps import FATEK_MAP, Table
 from ladderworks.core.modbus.server import ModbusServer
 from ladderworks.core.plc.session import PlcRun
-from ladderworks.paths import CHECKOUT, EXAMPLES
-from tests.core.modbus.conftest import TIMEOUT, client_of, dialect_plc
-from tests.core.modbus.test_cli_serve import SERVING
+from ladderworks.paths import EXAMPLES
+from tests.core.modbus.conftest import client_of, dialect_plc
+from tests.core.modbus.test_cli_serve import served
 from tests.core.modbus.test_server import wait_for
 
 # X0 start / X1 stop -> Y0 (self-holding); X6 rising: R1 = R0 + 7; M1924 (first scan): R2 = 100
@@ -94,26 +92,13 @@ def test_fatek_timers_and_32_bit_counters_are_reached() -> None:
 
 
 def test_serve_a_fatek_program_until_sigterm() -> None:
-    with subprocess.Popen([sys.executable, "-m", "ladderworks.cli", "serve", str(CONVEYOR),
-                           "--modbus", "127.0.0.1:0"], cwd=CHECKOUT, text=True,
-                          stdout=subprocess.PIPE, stderr=subprocess.PIPE) as served:
-        try:
-            assert served.stdout is not None
-            first = served.stdout.readline()
-            assert "(fatek, " in first and "map fatek" in first, first
-            found = SERVING.search(first)
-            assert found, first
-            client = ModbusTcpClient("127.0.0.1", port=int(found.group(1)), timeout=TIMEOUT)
-            assert client.connect()
-            assert not client.write_coil(X0, True).isError()
-            assert wait_for(lambda: client.read_coils(Y0, count=1).bits[0])
-            assert client.read_holding_registers(R0 + 2, count=1).registers == [100]
-            client.close()
-            served.send_signal(signal.SIGTERM)
-            assert served.wait(timeout=2) == 0
-        finally:
-            if served.poll() is None:
-                served.kill()
-                served.wait()
-        out, err = served.communicate()
-        assert "stopped" in out and err == ""
+    with served(CONVEYOR) as (process, first, client):
+        assert "(fatek, " in first and "map fatek" in first, first
+        assert not client.write_coil(X0, True).isError()
+        assert wait_for(lambda: client.read_coils(Y0, count=1).bits[0])
+        assert client.read_holding_registers(R0 + 2, count=1).registers == [100]
+        client.close()
+        process.send_signal(signal.SIGTERM)
+        assert process.wait(timeout=2) == 0
+        out, err = process.communicate()
+    assert "stopped" in out and err == ""
