@@ -208,14 +208,7 @@ def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
             _continue(branch, out, cells)
         write(coils)
     for block, coils in rung.chain:
-        for item in block.items if isinstance(block, Series) else (block,):
-            if isinstance(item, Leaf):
-                cells.append(item.cell)
-                out.append(_contact_instruction(item.contact, Combine.AND, False, item.cell))
-            else:
-                out.extend(code_logic(item, True, cells))
-                cells.append(None)
-                out.append(_stack_instruction(Combine.AND))
+        _continue(block, out, cells)
         write(coils)
     return out
 
