@@ -63,17 +63,38 @@ def test_a_fatek_hmi_drives_inputs_and_reads_registers(
     assert wait_for(lambda: not client.read_coils(Y0, count=1).bits[0])
     assert not client.write_register(D0 + 3, 1234).isError()  # D3
     assert run.read(devices.word("D3")[0], 2) == 1234
-    answer = client.read_holding_registers(5000, count=1)  # R5000: not in the device map
+    answer = client.read_holding_registers(4168, count=1)  # no R4168-R4999 (FBs manual)
     assert answer.isError() and answer.exception_code == 2
     answer = client.write_coil(9000, True)  # timer status: read only
     assert answer.isError() and answer.exception_code == 2
 
 
-def test_every_fatek_row_but_r5000_reaches_fatek_devices() -> None:
+def test_r5000_to_r5998_and_d_registers_are_served(
+        fatek_client: tuple[ModbusTcpClient, PlcRun]) -> None:
+    """Fatek's 405001-405999 (R5000-R5998) and 406001-408999 (D0-D2998), with a real client."""
+    client, run = fatek_client
+    devices = FATEK.devices
+    assert not client.write_registers(5000, [4321, 65535]).isError()  # R5000, R5001 (-1)
+    assert run.read(devices.word("R5000")[0], 2) == 4321
+    assert run.read(devices.word("R5001")[0], 2) == 0xFFFF
+    assert client.read_holding_registers(5000, count=2).registers == [4321, 65535]
+    assert not client.write_register(5998, 7).isError()  # R5998, the table's last
+    assert client.read_holding_registers(5998, count=1).registers == [7]
+    assert run.read(devices.word("R5998")[0], 2) == 7
+    assert not client.write_register(D0 + 2998, 99).isError()  # D2998
+    assert run.read(devices.word("D2998")[0], 2) == 99
+    assert client.read_holding_registers(D0 + 2998, count=1).registers == [99]
+    answer = client.read_holding_registers(5999, count=1)  # past Fatek's table
+    assert answer.isError() and answer.exception_code == 2
+    # R5000 is a register of the program too: not R0's, not a counter's memory
+    assert run.read(devices.word("R0")[0], 2) != 4321
+    assert run.read(devices.word("C0")[0], 2) == 0
+
+
+def test_every_fatek_row_reaches_fatek_devices() -> None:
     bridge = PlcBridge(fatek_plc(realtime=False))
     served = {(row.table, row.start) for row in bridge.map.rows}
-    missing = [row for row in FATEK_MAP.rows if (row.table, row.start) not in served]
-    assert [(row.table, row.device) for row in missing] == [(Table.HOLDING, "R5000")]
+    assert [row for row in FATEK_MAP.rows if (row.table, row.start) not in served] == []
     cells = cells_for("fatek")
     for row in bridge.map.rows:
         cells.check(row)

@@ -21,7 +21,7 @@ BIT_RANGES: dict[str, tuple[int, int]] = {
     "TR": (0, 39),  # temporary relays: 40 a network (002:361)
 }
 WORD_RANGES: dict[str, tuple[int, int]] = {
-    "R": (0, 4999),  # registers (R4128-R4134 the real-time clock; 004:223-224)
+    "R": (0, 8071),  # registers: R0-R4167 and R5000-R8071 (ROR_RANGE); R4168-R4999 none
     "D": (0, 4095),  # data registers
     "T": (0, 255),  # timer present values (as a register operand)
     "C": (0, 255),  # counter present values (C200-C255 32-bit)
@@ -30,6 +30,13 @@ WORD_RANGES: dict[str, tuple[int, int]] = {
     "WM": (0, 1984),
     "WS": (0, 984),
 }
+
+# The R registers (FBs-PLC manual §5.2: R0-R8071 by indirect addressing, R3840-R4167 the IR, OR
+# and SR registers; Fatek's Modbus table: R0-R4167, R5000-R5998). R0-R3839 general (R4128-R4134
+# the real-time clock, 004:223-224), R3840-R3903 IR, R3904-R3967 OR, R3968-R4167 SR,
+# R5000-R8071 ROR (or general registers). No R4168-R4999.
+R_RANGES: tuple[tuple[int, int], ...] = ((0, 4167), (5000, 8071))
+ROR_FIRST = 5000
 
 # Special relays (the FBs-PLC manual's special relay table; docs/dialects.md)
 FIRST_SCAN = 1924  # M1924: ON for the first scan after RUN
@@ -108,11 +115,18 @@ def parse_device(text: str, *, bit: bool) -> Device:
     if base not in ranges or (bit and kind != base):
         raise DeviceError("fatek-device-kind", text, "bit" if bit else "word")
     low, high = ranges[base]
-    if not low <= number <= high:
-        raise DeviceError("fatek-device-range", text, f"{base}{low}-{base}{high}")
+    if not low <= number <= high or (base == "R" and not _is_register(number)):
+        spans = R_RANGES if base == "R" else ((low, high),)
+        raise DeviceError("fatek-device-range", text,
+                          ", ".join(f"{base}{first}-{base}{last}" for first, last in spans))
     if base in ("WX", "WY", "WM", "WS") and number % 8:
         raise DeviceError("fatek-device-range", text, f"{base}0, {base}8, {base}16 …")
     return Device(kind, number)
+
+
+def _is_register(number: int) -> bool:
+    """True for the numbers an R register has (R0-R4167, R5000-R8071)."""
+    return any(first <= number <= last for first, last in R_RANGES)
 
 
 def parse_constant(text: str) -> int | None:
@@ -133,11 +147,12 @@ _BIT_BASE: dict[str, tuple[Area, int]] = {
     "C": (Area.R, 490),  # C0-C255 contacts: R490.0-R521.7
 }
 _WORD_BASE: dict[str, tuple[Area, int, int]] = {  # area, first byte, bytes per number
-    "R": (Area.D, 0, 2),  # R0-R4999: D0-D9999
+    "R": (Area.D, 0, 2),  # R0-R4167: D0-D8335 (R5000-R8071: _ROR_BASE)
     "D": (Area.E, 0, 2),  # D0-D4095: E0-E8191
     "T": (Area.R, 1000, 2),  # T0-T255 present values: R1000-R1511 (cleared at a load)
     "C": (Area.T, 0, 4),  # C0-C255 present values, 4 bytes each: T0-T1023 (kept: C0-C139)
 }
+_ROR_BASE = (Area.T, 2048)  # R5000-R8071: T2048-T8191 (kept on a cold start as R0-R4167)
 FO_AREA = (Area.R, 2700)  # function outputs: one byte (FO0-FO7) a box, R2700 on
 FO_BOXES = 6000  # boxes with outputs a program may have (R2700-R8699)
 _WORD_OF_BITS = {"WX": "X", "WY": "Y", "WM": "M", "WS": "S"}
@@ -158,8 +173,11 @@ def word_address(device: Device) -> tuple[Address, int]:
         area, first = _BIT_BASE[_WORD_OF_BITS[base]]
         return Address(area, first + device.number // 8), 4 if double else 2
     area, first, size = _WORD_BASE[base]
+    number = device.number
+    if base == "R" and number >= ROR_FIRST:
+        (area, first), number = _ROR_BASE, number - ROR_FIRST
     wide = double or (base == "C" and counter_is_32bit(device.number))
-    return Address(area, first + size * device.number), 4 if wide else 2
+    return Address(area, first + size * number), 4 if wide else 2
 
 
 def fo_address(index: int) -> Address:
@@ -184,10 +202,15 @@ def word_device_at(address: Address) -> Device | None:
     """The Fatek register an engine byte address starts (R, D, T and C values)."""
     if address.bit is not None:
         return None
+    area, first = _ROR_BASE
+    if address.area is area and address.byte >= first and not (address.byte - first) % 2:
+        number = ROR_FIRST + (address.byte - first) // 2
+        if ROR_FIRST <= number <= R_RANGES[-1][1]:
+            return Device("R", number)
     for kind, (area, first, size) in _WORD_BASE.items():
         offset = address.byte - first
         if address.area is area and offset >= 0 and not offset % size:
-            low, high = WORD_RANGES[kind]
+            low, high = R_RANGES[0] if kind == "R" else WORD_RANGES[kind]
             number = offset // size
             if low <= number <= high:
                 return Device(kind, number)
@@ -209,7 +232,8 @@ DEVICES = DeviceMap((
     _map_device("T", "timer", bits=_BIT_BASE["T"], words=_WORD_BASE["T"][:2], stride=2),
     _map_device("C", "counter", bits=_BIT_BASE["C"], words=_WORD_BASE["C"][:2], stride=4,
                 wide_from=COUNTER_32_FIRST),
-    _map_device("R", "register", words=_WORD_BASE["R"][:2], stride=2),
+    MapDevice("R", *R_RANGES[0], "register", words=_WORD_BASE["R"][:2], stride=2),
+    MapDevice("R", *R_RANGES[1], "register (ROR)", words=_ROR_BASE, stride=2),
     _map_device("D", "data register", words=_WORD_BASE["D"][:2], stride=2),
     # not Fatek devices: the boxes' outputs (FO n of box k is FO(8k + n), its byte FOB k)
     MapDevice("FO", 0, 8 * FO_BOXES - 1, "function output", bits=FO_AREA),

@@ -16,6 +16,7 @@ from ladderworks.core.dialects.fatek.devices import (
     parse_device,
     timer_base_ms,
     word_address,
+    word_device_at,
 )
 
 
@@ -35,6 +36,8 @@ def test_spellings(text: str, bit: bool, device: Device) -> None:
     ("TR40", True, "fatek-device-range"), ("R0", True, "fatek-device-kind"),
     ("Y0", False, "fatek-device-kind"), ("WX3", False, "fatek-device-range"),
     ("Q1", True, "fatek-device"), ("DR0", True, "fatek-device-kind"),
+    ("R4168", False, "fatek-device-range"), ("R4999", False, "fatek-device-range"),
+    ("R8072", False, "fatek-device-range"), ("D4096", False, "fatek-device-range"),
 ])
 def test_bad_spellings(text: str, bit: bool, code: str) -> None:
     with pytest.raises(DeviceError) as error:
@@ -58,6 +61,13 @@ def test_memory_map() -> None:
     assert word_address(Device("DR", 3)) == (Address(Area.D, 6), 4)
     assert word_address(Device("C", 199)) == (Address(Area.T, 796), 2)
     assert word_address(Device("C", 200)) == (Address(Area.T, 800), 4)
+    # R5000-R8071 (ROR): T2048 on, after the counters' values (T0-T1023)
+    assert word_address(Device("R", 5000)) == (Address(Area.T, 2048), 2)
+    assert word_address(Device("R", 8071)) == (Address(Area.T, 8190), 2)
+    assert word_device_at(Address(Area.T, 2050)) == Device("R", 5001)
+    assert word_device_at(Address(Area.T, 800)) == Device("C", 200)
+    assert word_device_at(Address(Area.D, 8334)) == Device("R", 4167)
+    assert word_device_at(Address(Area.D, 8336)) is None  # no R4168
     assert word_address(Device("WX", 8)) == (Address(Area.X, 1), 2)
     for kind, number in (("X", 255), ("M", 2001), ("S", 999), ("TR", 0), ("T", 17),
                          ("C", 255)):

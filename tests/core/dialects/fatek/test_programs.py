@@ -213,3 +213,16 @@ def test_boxes_are_drawn_and_the_not_simulated_keep_their_operand_lines() -> Non
 def test_terminal_is_a_fresh_one_per_run() -> None:
     assert PlcRun().ascii_terminal is not PlcRun().ascii_terminal
     assert isinstance(PlcRun().ascii_terminal, AsciiTerminal)
+
+
+def test_the_ror_registers_and_the_last_d_register_are_program_devices() -> None:
+    """R5000-R8071 and D0-D4095 (FBs manual; docs/dialects.md): written and read by a program,
+    kept apart from R0-R4167 and the counters' values; R4168 is refused at its line."""
+    plc = engine("ORG M1924\nFUN 8 MOV\n S : 1234\n D : R5000\n"
+                 "ORG M1924\nFUN 11 (+)\n Sa: R5000\n Sb: 1\n D : R8071\n"
+                 "ORG M1924\nFUN 8 MOV\n S : R8071\n D : D4095\n")
+    plc.scan()
+    assert (get(plc, "R5000"), get(plc, "R8071"), get(plc, "D4095")) == (1234, 1235, 1235)
+    assert get(plc, "R0") == 0 and get(plc, "R4167") == 0 and get(plc, "C200") == 0
+    result = parse_bytes(b"ORG X0\nFUN 8 MOV\n S : 1\n D : R4168\n", "fatek")
+    assert [(d.code, d.line) for d in result.diagnostics] == [("fatek-operand", 4)]
