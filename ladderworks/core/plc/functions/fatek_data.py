@@ -96,7 +96,9 @@ def _arithmetic(fun: int) -> FunctionImpl:
 
 
 def _step(fun: int) -> FunctionImpl:
-    """FUN 15 (+1), 16 (-1): D := D + 1 / D - 1; FO0 D = 0, FO1 it wrapped (carry/borrow)."""
+    """FUN 15 (+1), 16 (-1): D := D + 1 / D - 1; FO0 its one output: on when D wrapped past
+    the limit (overflow 32767 -> -32768 / underflow -32768 -> 32767; FBs-PLC manual §5.1,
+    "CY Carry(FO0)", and §5.4 OVF/UDF)."""
 
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
@@ -108,7 +110,7 @@ def _step(fun: int) -> FunctionImpl:
         exact = ctx.memory.read(destination, size, signed=True) + (1 if fun == 15 else -1)
         value = _wrap(exact, size)
         ctx.memory.write(destination, value, size)
-        return _result(ctx, state, fo, value == 0, value != exact)
+        return _result(ctx, state, fo, value != exact)
 
     return impl
 

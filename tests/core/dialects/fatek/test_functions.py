@@ -173,9 +173,16 @@ def test_pulse_form_runs_on_the_rising_edge_only() -> None:
     for enable in (True, True, False, True):
         plc.run("FBS.INC", (enable,), (1, _r(9), FO))
     assert plc.word("R9") == 2
+    assert plc.fo() == [0, 0, 0]  # no overflow (FO0 is not "D = 0")
     plc.set_word("R8", -32768)
-    plc.run("FBS.DEC", (True,), (0, _r(8), FO))
-    assert plc.word("R8") == 32767 and plc.fo()[1] == 1
+    plc.run("FBS.DEC", (True,), (0, _r(8), FO))  # underflow: FO0 (FBs manual §5.4, UDF)
+    assert plc.word("R8") == 32767 and plc.fo() == [1, 0, 0]
+    plc.set_word("R8", 32767)
+    assert plc.run("FBS.INC", (True,), (0, _r(8), FO))  # overflow: FO0 (manual: CY, FO0)
+    assert plc.word("R8") == -32768 and plc.fo() == [1, 0, 0]
+    plc.set_word("R8", -1)
+    assert not plc.run("FBS.INC", (True,), (0, _r(8), FO))  # D = 0 is no output of (+1)
+    assert plc.word("R8") == 0 and plc.fo() == [0, 0, 0]
 
 
 def test_comparison_contacts() -> None:
