@@ -226,3 +226,26 @@ def test_the_ror_registers_and_the_last_d_register_are_program_devices() -> None
     assert get(plc, "R0") == 0 and get(plc, "R4167") == 0 and get(plc, "C200") == 0
     result = parse_bytes(b"ORG X0\nFUN 8 MOV\n S : 1\n D : R4168\n", "fatek")
     assert [(d.code, d.line) for d in result.diagnostics] == [("fatek-operand", 4)]
+
+
+# The mnemonic column of the FBs/FB-PLC manuals' examples (FBs manual §5.1, FB-PLC manual §6.1:
+# the FP-07/FP-08 key-in form): `FUN n` without its name and operand lines `D: R 0`, a space
+# between the device letter and its number. Written here in that form, not copied.
+MANUAL_FORM = "ORG X0\nFUN 15P\n D: R 0\nFO 0\nOUT Y0\nORG X1\nFUN 11D\n Sa: R 0\n Sb: R 2\n D: R 4\n"
+
+
+def test_the_manuals_key_in_form_reads_runs_and_saves_as_it_was() -> None:
+    result = parse_bytes(MANUAL_FORM.encode(), "fatek")
+    assert result.ok, [d.located("t") for d in result.diagnostics]
+    assert encode_program(result.program) == MANUAL_FORM.encode()
+    plc = ScanEngine(compile(result.program), period_ms=10)
+    put(plc, "R0", 32766)
+    for x0 in (1, 0, 1):  # two rising edges of X0: R0 32766 -> 32767 -> -32768 (overflow)
+        put(plc, "X0", x0)
+        plc.scan()
+    assert get(plc, "R0") == -32768 and get(plc, "Y0") == 1  # FO0: the overflow
+    put(plc, "R0:4", 100_000)
+    put(plc, "R2:4", 23)
+    put(plc, "X1", 1)
+    plc.scan()
+    assert get(plc, "R4:4") == 100_023  # FUN 11D: R1-R0 + R3-R2 -> R5-R4
