@@ -231,7 +231,8 @@ def test_the_ror_registers_and_the_last_d_register_are_program_devices() -> None
 # The mnemonic column of the FBs/FB-PLC manuals' examples (FBs manual §5.1, FB-PLC manual §6.1:
 # the FP-07/FP-08 key-in form): `FUN n` without its name and operand lines `D: R 0`, a space
 # between the device letter and its number. Written here in that form, not copied.
-MANUAL_FORM = "ORG X0\nFUN 15P\n D: R 0\nFO 0\nOUT Y0\nORG X1\nFUN 11D\n Sa: R 0\n Sb: R 2\n D: R 4\n"
+MANUAL_FORM = ("ORG X0\nFUN 15P\n D: R 0\nFO 0\nOUT Y0\n"
+               "ORG X1\nFUN 11D\n Sa: R 0\n Sb: R 2\n D: R 4\n")
 
 
 def test_the_manuals_key_in_form_reads_runs_and_saves_as_it_was() -> None:
