@@ -29,7 +29,7 @@ from ladderworks.core.dialects.fatek.devices import (
     word_address,
 )
 from ladderworks.core.dialects.fatek.listing import OperandLine, Record
-from ladderworks.core.dialects.fatek.rows import BY_FUN, NOT_SIMULATED, ROWS
+from ladderworks.core.dialects.fatek.rows import BY_FUN, NOT_SIMULATED, ROWS, operand_label
 from ladderworks.core.il.program import Instruction, ParamValue
 from ladderworks.core.instructions import InstructionSpec, ParamKind
 
@@ -155,7 +155,7 @@ class ProgramLowering(StackLowering):
                                                  line.line, line.column))
                 params.append(value)
             else:
-                label = "D" if param.name == "output" else param.name  # Fatek's destination
+                label = operand_label(param.name)  # Fatek's D, PV
                 line = next(operands, None)
                 if line is None:
                     raise refused(record, "fatek-missing-operand", name=_name(record),

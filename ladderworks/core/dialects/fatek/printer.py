@@ -6,7 +6,7 @@ from __future__ import annotations
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.fatek.branches import ALWAYS_OFF, ALWAYS_ON
 from ladderworks.core.dialects.fatek.devices import FO_AREA, device_at, word_device_at
-from ladderworks.core.dialects.fatek.rows import SUB_BASE
+from ladderworks.core.dialects.fatek.rows import SUB_BASE, operand_label
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, Network
 from ladderworks.core.instructions import Combine, InstructionSpec, Kind, Write
@@ -81,7 +81,7 @@ def _box_lines(ins: Instruction) -> list[str]:
         if param.name == "counter":
             lines.append(f"    CV: C{values['counter']}")
             continue
-        label = "D" if param.name == "output" else param.name  # the destination, Fatek's D
+        label = operand_label(param.name)  # Fatek's D, PV
         lines.append(f"    {label:<2}: {device_text(values[param.name])}")
     return lines
 
@@ -197,7 +197,7 @@ def instruction_text(instruction: Instruction) -> str:
     if spec.cnc:
         return f"{name} {instruction.comment}".strip()
     texts = params_text(spec, instruction.params)
-    labels = ["D" if p.name == "output" else p.name for p in spec.params
+    labels = [operand_label(p.name) for p in spec.params
               if p.name not in _HIDDEN]
     if name.startswith("FUN"):
         return " ".join([name, *(f"{label}: {text}" for label, text in

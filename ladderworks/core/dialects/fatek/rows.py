@@ -34,6 +34,16 @@ def _raw(name: str) -> Param:
     return Param(name, ParamKind.RAW, INT32_LOW, INT32_HIGH)
 
 
+# A parameter's label on its operand line where Fatek's differs from the row's name
+_LABELS = {"output": "D", "preset": "PV"}
+
+
+def operand_label(name: str) -> str:
+    """The operand line's label of a row parameter: `D` for the destination, `PV` for a
+    preset (FUN 7 UDCTR's `PV: 10`, the FBs manual §5.1), else the parameter's name."""
+    return _LABELS.get(name, name)
+
+
 MODE = _number("mode", 0, 3)  # bit 0: the P (pulse) form, bit 1: the D (32-bit) form
 FO = _raw("fo")  # the box's output byte (FO0 bit 0 …)
 

@@ -250,3 +250,13 @@ def test_the_manuals_key_in_form_reads_runs_and_saves_as_it_was() -> None:
     put(plc, "X1", 1)
     plc.scan()
     assert get(plc, "R4:4") == 100_023  # FUN 11D: R1-R0 + R3-R2 -> R5-R4
+
+
+def test_a_changed_up_down_counter_is_written_so_that_it_reads_back() -> None:
+    """FUN 7's preset is written `PV:` (the manuals' label), not the row's name `preset:`,
+    which the reader refused: a changed network with UDCTR could not be opened again."""
+    program = fatek("ORG X0\nLD X3\nLD X1\nFUN 7 UDCTR\n  CV: C200\n  PV: 2\nFO 0\nOUT Y1\n")
+    lines = [line for network in program.networks for line in network_lines(network, False)]
+    assert "    PV: 2" in lines
+    again = fatek("\n".join(lines))
+    assert [n.instructions for n in again.networks] == [n.instructions for n in program.networks]
