@@ -28,7 +28,7 @@ from ladderworks.core.dialects.fatek.devices import (
     timer_base_ms,
     word_address,
 )
-from ladderworks.core.dialects.fatek.listing import OperandLine, Record
+from ladderworks.core.dialects.fatek.listing import Record
 from ladderworks.core.dialects.fatek.rows import BY_FUN, NOT_SIMULATED, ROWS, operand_label
 from ladderworks.core.il.program import Instruction, ParamValue
 from ladderworks.core.instructions import InstructionSpec, ParamKind
@@ -137,12 +137,6 @@ class ProgramLowering(StackLowering):
                 params.append(fo)
             elif param.name == "fun":
                 params.append(record.fun or 0)
-            elif param.name in ("counter", "timer"):  # FUN 7 UDCTR's `CV: C0`
-                line = next(operands, None)
-                if line is None:
-                    raise refused(record, "fatek-missing-operand", name=_name(record),
-                                param="CV")
-                params.append(_numbered(line, "C" if param.name == "counter" else "T"))
             elif param.name == "MD":
                 line = next(operands, None)
                 if line is None:
@@ -278,18 +272,6 @@ def _name(record: Record) -> str:
     if record.fun is not None:
         return f"FUN {record.fun} {record.fun_name}".strip()
     return record.mnemonic
-
-
-def _numbered(line: OperandLine, kind: str) -> int:
-    """The number of a counter or timer named on an operand line (`CV: C0`)."""
-    try:
-        device = parse_device(line.text, bit=True)
-    except DeviceError:
-        device = Device("", -1)
-    if device.kind != kind:
-        raise BranchError(Diagnostic("fatek-operand", {"text": line.text, "param": "CV"},
-                                     line.line, line.column))
-    return device.number
 
 
 def operand(text: str, line: int, param: str, constant: bool, column: int = 1) -> ParamValue:

@@ -78,9 +78,6 @@ def _box_lines(ins: Instruction) -> list[str]:
     for param in spec.params:
         if param.name in ("mode", "fo", "fun"):
             continue
-        if param.name == "counter":
-            lines.append(f"    CV: C{values['counter']}")
-            continue
         label = operand_label(param.name)  # Fatek's D, PV
         lines.append(f"    {label:<2}: {device_text(values[param.name])}")
     return lines

@@ -17,6 +17,7 @@ from ladderworks.core.dialects.fatek.devices import (
     counter_is_retentive,
     timer_base_ms,
     word_address,
+    word_device_at,
 )
 from ladderworks.core.plc.functions import FunctionContext, executed_once_this_scan, function
 from ladderworks.core.plc.memory import Memory
@@ -131,20 +132,33 @@ def fatek_counter(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
 @function("FBS.UDCTR")
 def fatek_up_down_counter(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                           params: tuple) -> bool:
-    """FUN 7 UDCTR: inputs CK, U/D, CLR; FO0 only while CV = PV; the value wraps."""
-    number, preset, fo = params
+    """FUN 7 UDCTR: inputs CK, U/D, CLR; FO0 only while CV = PV; the value wraps. CV is a
+    counter (`CV: C0`: its contact follows FO0) or a register (`CV: R 0`, as the FBs manual
+    §5.1 writes it: 16 bits)."""
+    cv_at, preset, fo = params
     ck, up_down, clr = inputs
-    counted = _count_input(ctx, state, number, ck, clr, fo)
-    if counted is None:
-        return False
-    device, cv_at, width, rising = counted
+    device = word_device_at(cv_at)
+    if device is not None and device.kind == "C":
+        counted = _count_input(ctx, state, device.number, ck, clr, fo)
+        if counted is None:
+            return False
+        _device, cv_at, width, rising = counted
+    else:
+        device, width = None, 2
+        rising = bool(ck) and not state.get("ck", False)
+        state["ck"] = bool(ck)
+        if clr:
+            ctx.memory.write(cv_at, 0, width)
+            write_outputs(ctx.memory, fo, False)
+            return False
     memory = ctx.memory
     value = memory.read(cv_at, width, signed=True)
     if rising:
         memory.write(cv_at, value + (1 if up_down else -1), width)  # two's complement wrap
         value = memory.read(cv_at, width, signed=True)
     equal = value == operand_value(memory, preset, width)
-    _set(memory, device, equal)
+    if device is not None:
+        _set(memory, device, equal)
     write_outputs(memory, fo, equal)
     return equal
 

@@ -117,17 +117,35 @@ def test_counters_retentive_and_32_bit() -> None:
 def test_up_down_counter() -> None:
     """001:652-694: U/D 1 up, 0 down; FO0 only while CV = PV; 32767 + 1 -> -32768 and back."""
     plc = Plc()
+    c0 = word_address(Device("C", 0))[0]
     for expected, fo0 in ((1, False), (2, True), (3, False)):
-        plc.run("FBS.UDCTR", (False, True, False), (0, 2, FO))
-        assert plc.run("FBS.UDCTR", (True, True, False), (0, 2, FO)) is fo0
-        assert plc.word("C0") == expected
+        plc.run("FBS.UDCTR", (False, True, False), (c0, 2, FO))
+        assert plc.run("FBS.UDCTR", (True, True, False), (c0, 2, FO)) is fo0
+        assert plc.word("C0") == expected and plc.bit("C", 0) == fo0  # C0's contact too
     plc.set_word("C0", 32767)
-    plc.run("FBS.UDCTR", (False, True, False), (0, 2, FO))
-    plc.run("FBS.UDCTR", (True, True, False), (0, 2, FO))
+    plc.run("FBS.UDCTR", (False, True, False), (c0, 2, FO))
+    plc.run("FBS.UDCTR", (True, True, False), (c0, 2, FO))
     assert plc.word("C0") == -32768
-    plc.run("FBS.UDCTR", (False, False, False), (0, 2, FO))
-    plc.run("FBS.UDCTR", (True, False, False), (0, 2, FO))
+    plc.run("FBS.UDCTR", (False, False, False), (c0, 2, FO))
+    plc.run("FBS.UDCTR", (True, False, False), (c0, 2, FO))
     assert plc.word("C0") == 32767
+
+
+def test_up_down_counter_on_a_register() -> None:
+    """The FBs manual's own form (§5.1, `FUN 7 / CV: R 0 / PV: 10`): CV is a register; FO0
+    while CV = PV; CLR clears it; no counter contact is touched."""
+    plc = Plc()
+    r0 = _r(0)
+    for _ in range(2):
+        plc.run("FBS.UDCTR", (False, True, False), (r0, 2, FO), "r")
+        fo0 = plc.run("FBS.UDCTR", (True, True, False), (r0, 2, FO), "r")
+    assert plc.word("R0") == 2 and fo0 and plc.fo()[0] == 1
+    assert plc.bit("C", 0) == 0
+    plc.run("FBS.UDCTR", (False, False, False), (r0, 2, FO), "r")
+    assert not plc.run("FBS.UDCTR", (True, False, False), (r0, 2, FO), "r")  # down: 1
+    assert plc.word("R0") == 1
+    assert not plc.run("FBS.UDCTR", (False, False, True), (r0, 2, FO), "r")  # CLR
+    assert plc.word("R0") == 0 and plc.fo()[0] == 0
 
 
 def test_reset_of_a_timer_and_a_counter() -> None:

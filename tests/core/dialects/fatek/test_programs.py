@@ -252,11 +252,27 @@ def test_the_manuals_key_in_form_reads_runs_and_saves_as_it_was() -> None:
     assert get(plc, "R4:4") == 100_023  # FUN 11D: R1-R0 + R3-R2 -> R5-R4
 
 
+def test_the_manuals_up_down_counter_on_a_register_runs() -> None:
+    """FUN 7 with `CV: R 0` (FBs manual §5.1; it was refused: LadderWorks took only C)."""
+    plc = engine("ORG X0\nLD X1\nLD X2\nFUN 7\n CV: R 0\n PV: 3\nFO 0\nOUT Y0\n")
+    put(plc, "X1", 1)  # U/D: up
+    for x0 in (1, 0, 1, 0, 1):  # three rising edges of CK
+        put(plc, "X0", x0)
+        plc.scan()
+    assert get(plc, "R0") == 3 and get(plc, "Y0") == 1
+    put(plc, "X2", 1)  # CLR
+    plc.scan()
+    assert get(plc, "R0") == 0 and get(plc, "Y0") == 0
+
+
 def test_a_changed_up_down_counter_is_written_so_that_it_reads_back() -> None:
     """FUN 7's preset is written `PV:` (the manuals' label), not the row's name `preset:`,
     which the reader refused: a changed network with UDCTR could not be opened again."""
-    program = fatek("ORG X0\nLD X3\nLD X1\nFUN 7 UDCTR\n  CV: C200\n  PV: 2\nFO 0\nOUT Y1\n")
-    lines = [line for network in program.networks for line in network_lines(network, False)]
-    assert "    PV: 2" in lines
-    again = fatek("\n".join(lines))
-    assert [n.instructions for n in again.networks] == [n.instructions for n in program.networks]
+    for cv in ("C200", "R7"):
+        program = fatek(f"ORG X0\nLD X3\nLD X1\nFUN 7 UDCTR\n  CV: {cv}\n  PV: 2\nFO 0\nOUT Y1\n")
+        lines = [line for network in program.networks
+                 for line in network_lines(network, False)]
+        assert "    PV: 2" in lines and f"    CV: {cv}" in lines
+        again = fatek("\n".join(lines))
+        assert [n.instructions for n in again.networks] == [
+            n.instructions for n in program.networks]
