@@ -186,3 +186,15 @@ def test_a_map_file_with_a_bom_reads(tmp_path: Path) -> None:
     path.write_bytes("\ufeffcoils,0,8,X0.0,rw\r\n".encode())
     assert read_map(path).rows[0].device == "X0.0"
     assert cells.first(read_map(path).rows[0]) == parse_address("X0.0")
+
+
+def test_a_fatek_map_file_reaches_the_registers_past_fatek_s_table() -> None:
+    """R5999-R8071 and D2999-D4095 have no address in Fatek's table (docs/modbus.md): a map
+    file serves them; R4168 (no such register in the FBs manual's map) is refused at its line."""
+    own = parse_map("holding,10000,3072,R5000,rw,2\nholding,20000,4096,D0,rw,2\n", "f.csv",
+                    "fatek")
+    assert [(row.device, row.count) for row in own.rows] == [("R5000", 3072), ("D0", 4096)]
+    with pytest.raises(DiagnosticError) as caught:
+        parse_map("holding,0,1,R0,rw,2\nholding,10,1,R4168,rw,2\n"
+                  "holding,100,3073,R5000,rw,2\nholding,9000,4097,D0,rw,2\n", "bad.csv", "fatek")
+    assert [d.line for d in caught.value.diagnostics] == [2, 3, 4]  # R8072, D4096: past the end
