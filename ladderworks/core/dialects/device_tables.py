@@ -49,7 +49,8 @@ class DeviceTables:
     counter_letter: str = "C"
     registers: tuple[str, ...] = ("D",)  # the register letters, in tab order
     constant: str = "{0}"  # how a constant preset is written ("K{0}" for Delta)
-    switched_bases: Mapping[int, str] = field(default_factory=dict)  # number -> relay note
+    # timer number -> (the relay that switches its base, ms a count while it is on)
+    switched_bases: Mapping[int, tuple[str, int]] = field(default_factory=dict)
 
 
 @dataclass(frozen=True, slots=True)
@@ -58,6 +59,7 @@ class Preset:
 
     text: str  # "K10", "D5", "30", "R0"
     value: int  # the constant, or the register's value now
+    register: bool = False  # a register names it (its value may change while running)
 
 
 @dataclass(frozen=True, slots=True)
@@ -74,6 +76,7 @@ class DeviceRow:
     base_ms: int = 0  # timers
     preset: Preset | None = None  # None: no instruction of the program sets it
     up_down: bool = False  # counters
+    letter: str = ""  # the device's letter ("T", "R")
 
 
 @dataclass
@@ -142,7 +145,7 @@ def preset(tables: DeviceTables, devices: DeviceMap, param: object, width: int,
            areas: Areas) -> Preset:
     """A preset parameter: a constant (`K10`), or a register (`D5`) and its value now."""
     if isinstance(param, Address):
-        return Preset(devices.format(param) or str(param), _read(areas, param, width))
+        return Preset(devices.format(param) or str(param), _read(areas, param, width), True)
     value = int(param) if isinstance(param, int) else 0
     return Preset(tables.constant.format(value), value)
 
@@ -157,7 +160,8 @@ def device_row(table: Table, tables: DeviceTables, devices: DeviceMap, letter: s
     width = device.width(number)
     value = _read(areas, address, width)
     if table is Table.REGISTERS:
-        return DeviceRow(table, device.spell(number), number, address, width, value)
+        return DeviceRow(table, device.spell(number), number, address, width, value,
+                         letter=device.letter)
     contact = _bit(areas, device.bit_address(number)) if device.bits is not None else None
     uses = (used.timers if table is Table.TIMERS else used.counters) if used else {}
     found = uses.get(number)
@@ -165,7 +169,7 @@ def device_row(table: Table, tables: DeviceTables, devices: DeviceMap, letter: s
     base = tables.timer_base(number, areas) if table is Table.TIMERS else 0
     up_down = used is not None and table is Table.COUNTERS and number in used.up_down
     return DeviceRow(table, device.spell(number), number, address, width, value, contact, base,
-                     set_by, up_down)
+                     set_by, up_down, device.letter)
 
 
 def table_rows(table: Table, tables: DeviceTables, devices: DeviceMap, used: ProgramDevices,
@@ -177,8 +181,9 @@ def table_rows(table: Table, tables: DeviceTables, devices: DeviceMap, used: Pro
         wanted = {(tables.counter_letter, n) for n in used.counters}
     else:
         wanted = set(used.registers)
-    wanted |= listed
-    order = {letter: index for index, letter in enumerate(table_letters(table, tables))}
+    letters = table_letters(table, tables)
+    wanted |= {item for item in listed if item[0] in letters}
+    order = {letter: index for index, letter in enumerate(letters)}
     rows = []
     for letter, number in sorted(wanted, key=lambda item: (order.get(item[0], 99), item[1])):
         row = device_row(table, tables, devices, letter, number, areas, used)

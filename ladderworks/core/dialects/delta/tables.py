@@ -28,4 +28,4 @@ TABLES = DeviceTables(
     timers={"DVP.TMR": Use(0, 1)},
     counters={"DVP.CNT": Use(0, 1), "DVP.DCNT": Use(0, 1, up_down=True)},
     timer_base=base_now, registers=("D",), constant="K{0}",
-    switched_bases={n: "M1028" for n in range(FAST_FIRST, FAST_LAST + 1)})
+    switched_bases={n: ("M1028", 10) for n in range(FAST_FIRST, FAST_LAST + 1)})
