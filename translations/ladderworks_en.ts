@@ -2928,7 +2928,6 @@
         <translation>Preset</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="98"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="189"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="194"/>
         <source>Current value</source>
@@ -2962,6 +2961,7 @@
         <translation>Base</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="98"/>
         <location filename="../ladderworks/gui/docks/device_specs.py" line="105"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="249"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="254"/>

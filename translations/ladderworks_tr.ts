@@ -2928,7 +2928,6 @@
         <translation>Ayar değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="98"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="189"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="194"/>
         <source>Current value</source>
@@ -2959,9 +2958,10 @@
     <message>
         <location filename="../ladderworks/gui/docks/device_specs.py" line="102"/>
         <source>Base</source>
-        <translation>Zaman tabanı</translation>
+        <translation>Taban</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="98"/>
         <location filename="../ladderworks/gui/docks/device_specs.py" line="105"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="249"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="254"/>
@@ -3080,17 +3080,17 @@
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="362"/>
         <source>Timers (T)</source>
-        <translation>Zamanlayıcılar (T)</translation>
+        <translation>Zamanlayıcı (T)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="363"/>
         <source>Counters (C)</source>
-        <translation>Sayıcılar (C)</translation>
+        <translation>Sayıcı (C)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="364"/>
         <source>Registers ({0})</source>
-        <translation>Veri register&apos;ları ({0})</translation>
+        <translation>Register ({0})</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="374"/>

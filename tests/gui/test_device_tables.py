@@ -137,10 +137,23 @@ def test_fatek_tables(qtbot: QtBot, window: MainWindow) -> None:
 def test_device_tables_in_turkish_and_back_to_pmc(qtbot: QtBot, window: MainWindow) -> None:
     session, tables = _run(qtbot, window, "delta/timer_t0.txt")
     window.set_language("tr")
-    assert tables.device_tabs.tabText(0) == "Zamanlayıcılar (T)"
+    assert tables.device_tabs.tabText(0) == "Zamanlayıcı (T)"
     assert tables.cell_texts(TIMERS)[0][4] == "KAPALI"
     window.set_language("en")
     session.stop()
     assert window.load(paths.EXAMPLES / "mcode_decoder.LAD")
     qtbot.keyClick(window, Qt.Key.Key_F9)
     assert tables.tabs.isVisibleTo(tables) and not tables.device_tabs.isVisibleTo(tables)
+
+
+def test_the_last_column_fills_the_table(qtbot: QtBot, window: MainWindow) -> None:
+    window.resize(1000, 600)
+    window.show()
+    _session, tables = _run(qtbot, window, "fatek/conveyor.lst")
+    tables.raise_()
+    tables.device_tabs.setCurrentIndex(2)
+    qtbot.wait(50)
+    view = tables.tables[REGISTERS]
+    header = view.horizontalHeader()
+    assert sum(header.sectionSize(i) for i in range(header.count())) >= \
+        view.viewport().width() - 2

@@ -95,7 +95,7 @@ class DeviceSpec(TableSpec):
     def headers(self, session: PlcSession) -> list[str]:
         """The column titles."""
         device = translate("PlcTables", "Device")
-        value = translate("PlcTables", "Current value")
+        value = translate("PlcTables", "Value")  # the current value (short: a narrow dock)
         contact = translate("PlcTables", "Contact")
         preset = translate("PlcTables", "Preset")
         if self.table is Table.TIMERS:

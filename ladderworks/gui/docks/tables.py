@@ -203,6 +203,9 @@ class PlcTablesDock(Retranslating, QDockWidget):
         if table.isVisible():
             self._unfitted.discard(kind)
             table.resizeColumnsToContents()
+            header = table.horizontalHeader()  # the last column fills the width again
+            header.setStretchLastSection(False)
+            header.setStretchLastSection(True)
         else:
             self._unfitted.add(kind)
 
