@@ -128,6 +128,7 @@ def program_devices(tables: DeviceTables, devices: DeviceMap, ops: object) -> Pr
 
 
 def _read(areas: Areas, address: Address, width: int) -> int:
+    """The signed value of `width` bytes at `address`."""
     data = areas[address.area]
     return int.from_bytes(data[address.byte:address.byte + width], "little", signed=True)
 
@@ -150,31 +151,41 @@ def preset(tables: DeviceTables, devices: DeviceMap, param: object, width: int,
     return Preset(tables.constant.format(value), value)
 
 
-def device_row(table: Table, tables: DeviceTables, devices: DeviceMap, letter: str,
-               number: int, areas: Areas, used: ProgramDevices | None = None) -> DeviceRow | None:
-    """The row of device `letter``number` now; None if the dialect has no such device."""
+@dataclass(frozen=True, slots=True)
+class Place:
+    """What a row needs that does not change while a program runs: found once, read often."""
+
+    table: Table
+    device: str
+    number: int
+    letter: str
+    address: Address
+    width: int
+    contact: Address | None
+    preset: tuple[object, int] | None  # the preset parameter and its width
+    up_down: bool
+
+
+def place(table: Table, devices: DeviceMap, letter: str, number: int,
+          used: ProgramDevices | None = None) -> Place | None:
+    """Where device `letter``number` and its preset are; None if the dialect has no such
+    word device."""
     device = _device(devices, letter, number)
     if device is None or device.words is None:
         return None
-    address = device.word_address(number)
-    width = device.width(number)
-    value = _read(areas, address, width)
-    if table is Table.REGISTERS:
-        return DeviceRow(table, device.spell(number), number, address, width, value,
-                         letter=device.letter)
-    contact = _bit(areas, device.bit_address(number)) if device.bits is not None else None
+    counting = table is not Table.REGISTERS
+    contact = device.bit_address(number) if counting and device.bits is not None else None
     uses = (used.timers if table is Table.TIMERS else used.counters) if used else {}
-    found = uses.get(number)
-    set_by = preset(tables, devices, found[0], found[1], areas) if found else None
-    base = tables.timer_base(number, areas) if table is Table.TIMERS else 0
     up_down = used is not None and table is Table.COUNTERS and number in used.up_down
-    return DeviceRow(table, device.spell(number), number, address, width, value, contact, base,
-                     set_by, up_down, device.letter)
+    return Place(table, device.spell(number), number, device.letter,
+                 device.word_address(number), device.width(number), contact,
+                 uses.get(number) if counting else None, up_down)
 
 
-def table_rows(table: Table, tables: DeviceTables, devices: DeviceMap, used: ProgramDevices,
-               listed: set[tuple[str, int]], areas: Areas) -> list[DeviceRow]:
-    """The rows of a table: the devices the program uses and those the user listed, sorted."""
+def table_places(table: Table, tables: DeviceTables, devices: DeviceMap, used: ProgramDevices,
+                 listed: set[tuple[str, int]]) -> list[Place]:
+    """The places of a table's rows: the devices the program uses and those the user listed,
+    sorted (by letter in the table's order, then number)."""
     if table is Table.TIMERS:
         wanted = {(tables.timer_letter, n) for n in used.timers}
     elif table is Table.COUNTERS:
@@ -184,12 +195,37 @@ def table_rows(table: Table, tables: DeviceTables, devices: DeviceMap, used: Pro
     letters = table_letters(table, tables)
     wanted |= {item for item in listed if item[0] in letters}
     order = {letter: index for index, letter in enumerate(letters)}
+    found = (place(table, devices, letter, number, used)
+             for letter, number in sorted(wanted, key=lambda item: (order[item[0]], item[1])))
+    return [where for where in found if where is not None]
+
+
+def read_rows(places: list[Place], tables: DeviceTables, devices: DeviceMap,
+              areas: Areas) -> list[DeviceRow]:
+    """The rows at these places as the memory `areas` hold them now."""
     rows = []
-    for letter, number in sorted(wanted, key=lambda item: (order.get(item[0], 99), item[1])):
-        row = device_row(table, tables, devices, letter, number, areas, used)
-        if row is not None:
-            rows.append(row)
+    for where in places:
+        address = where.address
+        start = address.byte
+        value = int.from_bytes(areas[address.area][start:start + where.width], "little",
+                               signed=True)
+        if where.table is Table.REGISTERS:
+            rows.append(DeviceRow(where.table, where.device, where.number, address, where.width,
+                                  value, letter=where.letter))
+            continue
+        contact = _bit(areas, where.contact) if where.contact is not None else None
+        set_by = (preset(tables, devices, where.preset[0], where.preset[1], areas)
+                  if where.preset is not None else None)
+        base = tables.timer_base(where.number, areas) if where.table is Table.TIMERS else 0
+        rows.append(DeviceRow(where.table, where.device, where.number, address, where.width,
+                              value, contact, base, set_by, where.up_down, where.letter))
     return rows
+
+
+def table_rows(table: Table, tables: DeviceTables, devices: DeviceMap, used: ProgramDevices,
+               listed: set[tuple[str, int]], areas: Areas) -> list[DeviceRow]:
+    """The rows of a table now (`table_places` then `read_rows`)."""
+    return read_rows(table_places(table, tables, devices, used, listed), tables, devices, areas)
 
 
 def table_letters(table: Table, tables: DeviceTables) -> tuple[str, ...]:

@@ -18,12 +18,14 @@ from ladderworks.core.address import AddressError
 from ladderworks.core.dialects.device_tables import (
     DeviceRow,
     DeviceTables,
+    Place,
     ProgramDevices,
     Table,
     device_range,
     program_devices,
+    read_rows,
     table_letters,
-    table_rows,
+    table_places,
 )
 from ladderworks.gui.docks.table_entries import (
     Areas,
@@ -62,6 +64,9 @@ class DeviceSpec(TableSpec):
     _program: object = None  # the binary `_used` was read from
     _dialect: str = ""
     _used: ProgramDevices = field(default_factory=ProgramDevices)
+    # the places of the rows, and the devices used and listed they were found for
+    _places: list[Place] = field(default_factory=list)
+    _placed: tuple[object, frozenset[tuple[str, int]]] = (None, frozenset())
 
     # -- what the dialect has ------------------------------------------------------------
 
@@ -116,7 +121,10 @@ class DeviceSpec(TableSpec):
         used = self._devices_used(session)
         if tables is None or dialect is None:
             return []
-        return list(table_rows(self.table, tables, dialect.devices, used, self.listed, areas))
+        if self._placed[0] is not used or self._placed[1] != self.listed:
+            self._placed = (used, frozenset(self.listed))  # another program or list
+            self._places = table_places(self.table, tables, dialect.devices, used, self.listed)
+        return list(read_rows(self._places, tables, dialect.devices, areas))
 
     def key(self, row: Row) -> tuple[object, ...]:
         """The device."""
