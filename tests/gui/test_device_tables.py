@@ -7,6 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QAbstractItemView, QApplication, QLineEdit
 from pytestqt.qtbot import QtBot
 
 from ladderworks import paths
@@ -157,3 +158,52 @@ def test_the_last_column_fills_the_table(qtbot: QtBot, window: MainWindow) -> No
     header = view.horizontalHeader()
     assert sum(header.sectionSize(i) for i in range(header.count())) >= \
         view.viewport().width() - 2
+
+
+def test_insert_form_and_delete_on_a_device_table(qtbot: QtBot, window: MainWindow) -> None:
+    session, tables = _run(qtbot, window, "delta/cmp_d10.txt")
+    tables.device_tabs.setCurrentIndex(2)
+    tables.context_menu(REGISTERS, -1)
+    assert tables.insert_action is not None
+    tables.insert_action.trigger()
+    dialog = tables.insert_dialog
+    assert dialog is not None and dialog.isVisible() and len(dialog.fields) == 1
+    dialog.set_texts(["D20-D10"])
+    dialog.try_accept()
+    assert dialog.isVisible() and "D20-D10" in dialog.error.text()
+    dialog.set_texts(["D20-D21"])
+    dialog.try_accept()
+    qtbot.waitUntil(lambda: not dialog.isVisible())
+    assert [row[0] for row in tables.cell_texts(REGISTERS)] == ["D10", "D20", "D21"]
+    session.run.write(parse_target("D21", "delta")[0], 77, 2)
+    session.run_scans(1)
+    assert _row(tables, REGISTERS, "D21")[1:] == ["77", "004D"]
+    tables.context_menu(REGISTERS, 2)
+    assert tables.delete_action is not None and tables.delete_action.isEnabled()
+    tables.delete_action.trigger()  # an added device leaves the list; its value stays
+    assert [row[0] for row in tables.cell_texts(REGISTERS)] == ["D10", "D20"]
+    assert session.run.read(parse_target("D21", "delta")[0], 2) == 77
+    assert tables.delete_row(REGISTERS, 0) is None  # the program's D10 stays listed
+    assert [row[0] for row in tables.cell_texts(REGISTERS)] == ["D10", "D20"]
+
+
+def test_a_value_typed_into_the_cell(qtbot: QtBot, window: MainWindow) -> None:
+    """Double-click a register's value, type, ENTER: as the user does."""
+    window.show()
+    session, tables = _run(qtbot, window, "fatek/conveyor.lst")
+    tables.raise_()
+    table = tables.tables[REGISTERS]
+    tables.device_tabs.setCurrentWidget(table)
+    qtbot.waitUntil(table.isVisible)
+    rect = table.visualRect(table.model().index(1, 2))  # R1's hex
+    qtbot.mouseClick(table.viewport(), Qt.MouseButton.LeftButton, pos=rect.center())
+    qtbot.mouseDClick(table.viewport(), Qt.MouseButton.LeftButton, pos=rect.center())
+    qtbot.waitUntil(lambda: isinstance(QApplication.focusWidget(), QLineEdit))
+    editor = QApplication.focusWidget()
+    assert isinstance(editor, QLineEdit)
+    editor.selectAll()
+    qtbot.keyClicks(editor, "FF00")
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    qtbot.waitUntil(lambda: table.state() != QAbstractItemView.State.EditingState)
+    assert session.run.read(parse_target("R1", "fatek")[0], 2) == 0xFF00
+    assert _row(tables, REGISTERS, "R1")[1:] == ["-256", "FF00"]
