@@ -86,6 +86,14 @@ def test_delta_counter_counts_in_the_table(qtbot: QtBot, window: MainWindow) -> 
     session.set_bit(x0, 1)
     session.run_scans(1)
     assert _row(tables, COUNTERS, "C0")[3:] == ["10", "ON"]
+    model = tables.models[COUNTERS]  # an ON contact is drawn green, an OFF one not
+    assert model.data(model.index(0, 4), Qt.ItemDataRole.BackgroundRole) is not None
+    assert model.data(model.index(0, 3), Qt.ItemDataRole.BackgroundRole) is None
+    session.set_bit(parse_target("X1", "delta")[0], 1)  # RST C0
+    session.run_scans(1)
+    assert _row(tables, COUNTERS, "C0")[3:] == ["0", "OFF"]
+    assert model.data(model.index(0, 4), Qt.ItemDataRole.BackgroundRole) \
+        == model.data(model.index(0, 1), Qt.ItemDataRole.BackgroundRole)  # read-only grey
 
 
 def test_delta_register_preset_and_32bit_counter(qtbot: QtBot, window: MainWindow,

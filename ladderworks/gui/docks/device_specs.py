@@ -185,6 +185,10 @@ class DeviceSpec(TableSpec):
         assert isinstance(row, DeviceRow)
         self.listed.discard((row.letter, row.number))
 
+    def lit(self, row: Row, column: int) -> bool:
+        """The contact column of a timer or counter that is on."""
+        return isinstance(row, DeviceRow) and column == 4 and bool(row.contact)
+
     def tooltip(self, row: Row) -> str:
         """A timer whose base a relay switches says so."""
         if isinstance(row, DeviceRow) and row.table is Table.TIMERS and self._dialect:

@@ -95,6 +95,10 @@ class TableSpec:
         """A cell's tooltip."""
         return ""
 
+    def lit(self, row: Row, column: int) -> bool:
+        """True when the cell shows a contact that is on (drawn green)."""
+        return False
+
 
 @dataclass
 class TimerSpec(TableSpec):
