@@ -54,6 +54,24 @@ def hex_value(text: str, width: int) -> int:
     return data_value(str(value), width)
 
 
+# the last program's devices: the three tables of a dock read them once (key: binary, dialect)
+_LAST: list[tuple[object, str, ProgramDevices]] = []
+
+
+def _devices_of(binary: object, name: str) -> ProgramDevices:
+    """What a loaded program uses (its dialect's `program_devices`), found once per load."""
+    if _LAST and _LAST[0][0] is binary and _LAST[0][1] == name:
+        return _LAST[0][2]
+    dialect = dialects.get(name)
+    tables = dialect.device_tables() if dialect is not None else None
+    ops = getattr(binary, "ops", None)
+    used = (program_devices(tables, dialect.devices, ops)
+            if tables is not None and dialect is not None and ops is not None
+            else ProgramDevices())
+    _LAST[:] = [(binary, name, used)]
+    return used
+
+
 @dataclass
 class DeviceSpec(TableSpec):
     """A table of a dialect's devices: columns, rows from the PLC memory, edits written to it."""
@@ -88,11 +106,7 @@ class DeviceSpec(TableSpec):
             if name != self._dialect:
                 self.listed.clear()  # another dialect's devices
             self._program, self._dialect = binary, name
-            dialect = dialects.get(name)
-            tables = dialect.device_tables() if dialect is not None else None
-            self._used = (program_devices(tables, dialect.devices, binary.ops)
-                          if tables is not None and dialect is not None and binary is not None
-                          else ProgramDevices())
+            self._used = _devices_of(binary, name)
         return self._used
 
     # -- the TableSpec interface -----------------------------------------------------------
