@@ -109,6 +109,8 @@ def test_delta_register_preset_and_32bit_counter(qtbot: QtBot, window: MainWindo
     session.set_bit(parse_target("M1028", "delta")[0], 1)
     session.run_scans(1)
     assert _row(tables, TIMERS, "T64")[1] == "10 ms"
+    model = tables.models[TIMERS]
+    assert model.data(model.index(0, 1), Qt.ItemDataRole.ToolTipRole) == "M1028 on: 10 ms a count"
     assert tables.edit_cell(COUNTERS, 0, 3, "-100000") is None
     assert session.run.read(parse_target("C200", "delta")[0], 4) == (-100000) & 0xFFFFFFFF
 
