@@ -2877,228 +2877,228 @@
 <context>
     <name>PlcTables</name>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="112"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="116"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="192"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="104"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="112"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="116"/>
         <source>Type</source>
         <translation>Tip</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="110"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="120"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="114"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="124"/>
         <source>Preset (ms)</source>
         <translation>Ayar değeri (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="109"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="113"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="123"/>
         <source>Preset (ticks)</source>
         <translation>Ayar değeri (tık)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="111"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="115"/>
         <source>Precision</source>
         <translation>Hassasiyet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="113"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="117"/>
         <source>Tick (ms)</source>
         <translation>Adım (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="114"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="118"/>
         <source>Delay (ms)</source>
         <translation>Gecikme (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="125"/>
         <source>Timer number (1-{0})</source>
         <translation>Zamanlayıcı numarası (1-{0})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="100"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="197"/>
         <source>Preset</source>
         <translation>Ayar değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="189"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="198"/>
         <source>Current value</source>
         <translation>Şimdiki değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="308"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="257"/>
         <source>Bytes</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="116"/>
         <source>Device</source>
         <translation>Aygıt</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="99"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="118"/>
         <source>Contact</source>
         <translation>Kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="102"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="121"/>
         <source>Base</source>
         <translation>Taban</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="98"/>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="105"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="249"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="254"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="258"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="105"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="249"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="305"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="309"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="110"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="129"/>
         <source>Devices ({0}0 or a range {0}0-{0}9)</source>
         <translation>Aygıtlar ({0}0 ya da bir aralık {0}0-{0}9)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="154"/>
         <source>ON</source>
         <translation>AÇIK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="132"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="154"/>
         <source>OFF</source>
         <translation>KAPALI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="138"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="160"/>
         <source>{0} ms</source>
         <translation>{0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="162"/>
         <source>{0}-bit up/down</source>
         <translation>{0} bit yukarı/aşağı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="141"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="163"/>
         <source>{0}-bit up</source>
         <translation>{0} bit yukarı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="213"/>
         <source>{0} on: {1} ms a count</source>
         <translation>{0} açıkken: sayım başına {1} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="309"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="308"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="313"/>
         <source>Bits 7..0</source>
         <translation>Bitler 7..0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="197"/>
         <source>Counter number (1-20)</source>
         <translation>Sayıcı numarası (1-20)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="257"/>
         <source>Address (D)</source>
         <translation>Adres (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="309"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="313"/>
         <source>Address (K)</source>
         <translation>Adres (K)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="63"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="310"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="313"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="175"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="179"/>
         <source>TMRB: the preset is fixed in the program</source>
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="316"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="348"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="354"/>
         <source>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</source>
         <translation>{0} programının PMC parametre tabloları yoktur: zamanlayıcı ve sayıcı ayar değerleri komutlarında yazılıdır. T, C ve D aygıtlarını bit gösteriminde ve zaman kartında izleyin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="358"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="361"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="359"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="362"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="360"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="363"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="364"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="365"/>
         <source>Timers (T)</source>
         <translation>Zamanlayıcı (T)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="366"/>
         <source>Counters (C)</source>
         <translation>Sayıcı (C)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="367"/>
         <source>Registers ({0})</source>
         <translation>Register ({0})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="374"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="377"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="377"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="380"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
