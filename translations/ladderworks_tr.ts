@@ -977,211 +977,221 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="247"/>
+        <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
+        <translation>&apos;{text}&apos; bu tabloda listelenmez ({letters} kullanın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
+        <translation>&apos;{text}&apos;: bir aygıt ya da en çok {most} aygıtlık bir İLK-SON aralığı verin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="286"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -2867,158 +2877,228 @@
 <context>
     <name>PlcTables</name>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="111"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="116"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="192"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="111"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="116"/>
         <source>Type</source>
         <translation>Tip</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="109"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="114"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="124"/>
         <source>Preset (ms)</source>
         <translation>Ayar değeri (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="108"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="118"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="113"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="123"/>
         <source>Preset (ticks)</source>
         <translation>Ayar değeri (tık)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="110"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="115"/>
         <source>Precision</source>
         <translation>Hassasiyet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="112"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="117"/>
         <source>Tick (ms)</source>
         <translation>Adım (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="113"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="118"/>
         <source>Delay (ms)</source>
         <translation>Gecikme (ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="120"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="125"/>
         <source>Timer number (1-{0})</source>
         <translation>Zamanlayıcı numarası (1-{0})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="187"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="119"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="197"/>
         <source>Preset</source>
         <translation>Ayar değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="188"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="193"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="198"/>
         <source>Current value</source>
         <translation>Şimdiki değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="247"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="303"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="308"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="247"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="257"/>
         <source>Bytes</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="116"/>
+        <source>Device</source>
+        <translation>Aygıt</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="118"/>
+        <source>Contact</source>
+        <translation>Kontak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="121"/>
+        <source>Base</source>
+        <translation>Taban</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="117"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="124"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="258"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="248"/>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="304"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="253"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="309"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="303"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="129"/>
+        <source>Devices ({0}0 or a range {0}0-{0}9)</source>
+        <translation>Aygıtlar ({0}0 ya da bir aralık {0}0-{0}9)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="154"/>
+        <source>ON</source>
+        <translation>AÇIK</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="154"/>
+        <source>OFF</source>
+        <translation>KAPALI</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="160"/>
+        <source>{0} ms</source>
+        <translation>{0} ms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="162"/>
+        <source>{0}-bit up/down</source>
+        <translation>{0} bit yukarı/aşağı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="163"/>
+        <source>{0}-bit up</source>
+        <translation>{0} bit yukarı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="213"/>
+        <source>{0} on: {1} ms a count</source>
+        <translation>{0} açıkken: sayım başına {1} ms</translation>
+    </message>
+    <message>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="308"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="313"/>
         <source>Bits 7..0</source>
         <translation>Bitler 7..0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="197"/>
         <source>Counter number (1-20)</source>
         <translation>Sayıcı numarası (1-20)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="252"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="257"/>
         <source>Address (D)</source>
         <translation>Adres (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="308"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="313"/>
         <source>Address (K)</source>
         <translation>Adres (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="62"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="295"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="313"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/table_specs.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/table_specs.py" line="179"/>
         <source>TMRB: the preset is fixed in the program</source>
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="298"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="316"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="329"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="354"/>
         <source>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</source>
         <translation>{0} programının PMC parametre tabloları yoktur: zamanlayıcı ve sayıcı ayar değerleri komutlarında yazılıdır. T, C ve D aygıtlarını bit gösteriminde ve zaman kartında izleyin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="339"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="361"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="340"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="362"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="341"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="363"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="342"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="364"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="350"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="365"/>
+        <source>Timers (T)</source>
+        <translation>Zamanlayıcı (T)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="366"/>
+        <source>Counters (C)</source>
+        <translation>Sayıcı (C)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="367"/>
+        <source>Registers ({0})</source>
+        <translation>Register ({0})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="377"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="353"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="380"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
@@ -3086,37 +3166,37 @@
         <translation>{0} sayfa yazıcıya gönderildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="279"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="280"/>
         <source>Printed {0}</source>
         <translation>Yazdırıldı: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="281"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="282"/>
         <source>Page {0} / {1}</source>
         <translation>Sayfa {0} / {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="308"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="309"/>
         <source>Cross reference</source>
         <translation>Çapraz referans</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="311"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="312"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="312"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="313"/>
         <source>Symbol</source>
         <translation>Sembol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="313"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="314"/>
         <source>Written in networks</source>
         <translation>Yazıldığı devreler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/print_pages.py" line="314"/>
+        <location filename="../ladderworks/gui/print_pages.py" line="315"/>
         <source>Read in networks</source>
         <translation>Okunduğu devreler</translation>
     </message>

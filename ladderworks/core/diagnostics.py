@@ -244,6 +244,10 @@ MESSAGES: dict[str, str] = {
     "device-range": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is out of range ({first} to {last})"),
     "device-bit-needed": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a bit device"),
     "device-word-needed": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a word device"),
+    "device-not-in-table": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not listed in this table (use {letters})"),
+    "device-range-order": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}': give a device or a range FIRST-LAST of at most {most} devices"),
     "dialect-operand": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name}: operand {index} must be one of {expected}, found '{text}'"),
     "dialect-constant": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a K or H constant"),

@@ -13,6 +13,7 @@ from ladderworks.core.dialects.devices import DeviceMap
 from ladderworks.core.instructions import InstructionSpec, lookup
 
 if TYPE_CHECKING:
+    from ladderworks.core.dialects.device_tables import DeviceTables
     from ladderworks.core.il.program import Network, Program
     from ladderworks.core.il.textform import TextForm
 
@@ -51,6 +52,7 @@ class Dialect:
     families: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     # the compiler checks' codes said in the dialect's words (sp-without-spe: its SRET)
     codes: Mapping[str, str] = field(default_factory=dict)
+    tables: str = ""  # "module:NAME", its device_tables.DeviceTables (the PLC tables dock)
 
     def read(self, text: str, form: TextForm, lines: list[str],
              ends: list[str]) -> tuple[Program, list[Diagnostic]]:
@@ -82,6 +84,12 @@ class Dialect:
         if code == diagnostic.code and args is diagnostic.args:
             return diagnostic
         return replace(diagnostic, code=code, args=args)
+
+    def device_tables(self) -> DeviceTables | None:
+        """Its device monitor tables (timers, counters, registers), None when it has none."""
+        if not self.tables:
+            return None
+        return _function(self.tables)  # type: ignore[return-value]
 
     @staticmethod
     def function(path: str) -> Callable[..., object]:

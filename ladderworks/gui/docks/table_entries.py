@@ -27,12 +27,15 @@ DATA_WIDTHS = (1, 2, 4)
 
 
 class TableKind(StrEnum):
-    """The four tables a PMC user edits."""
+    """The four tables a PMC user edits, and the three of a Delta/Fatek program's devices."""
 
     TIMER = "timer"
     COUNTER = "counter"
     DATA = "data"
     KEEP = "keep"
+    DEVICE_TIMERS = "device-timers"  # a Delta/Fatek program's (gui/docks/device_specs.py)
+    DEVICE_COUNTERS = "device-counters"
+    REGISTERS = "registers"
 
 
 class TableError(Refused, ValueError):

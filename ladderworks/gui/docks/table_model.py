@@ -19,6 +19,7 @@ from ladderworks.gui.symbol_text import tooltip
 
 Index = QModelIndex | QPersistentModelIndex
 _READ_ONLY = QBrush(QColor("#eeeeee"))
+_LIT = QBrush(QColor("#b8e8b8"))  # a contact that is on
 
 
 class PlcTableModel(QAbstractTableModel):
@@ -75,6 +76,8 @@ class PlcTableModel(QAbstractTableModel):
                 return f"{text} {symbol}" if symbol else text
             return text
         if role == Qt.ItemDataRole.BackgroundRole:
+            if self.spec.lit(row, index.column()):
+                return _LIT
             editable = self.spec.editable(row, index.column(), self.session)
             return None if editable else _READ_ONLY
         if role == Qt.ItemDataRole.ToolTipRole:

@@ -12,6 +12,7 @@ from typing import ClassVar
 from PySide6.QtCore import QCoreApplication
 
 from ladderworks.core.address import Address, Area
+from ladderworks.core.dialects.device_tables import DeviceRow
 from ladderworks.core.instructions import Numbered, numbered_row
 from ladderworks.core.plc.functions.counters import counter_value_address
 from ladderworks.gui.docks.table_entries import (
@@ -42,7 +43,7 @@ from ladderworks.gui.plc_session import PlcSession
 
 translate = QCoreApplication.translate
 
-Row = TimerRow | CounterRow | DataRow | KeepRow
+Row = TimerRow | CounterRow | DataRow | KeepRow | DeviceRow  # DeviceRow: gui/docks/device_specs
 # The instruction a timer row stands for, by `TimerRow.fixed`: TMR, TMRB.
 _TIMER_NAMES = {False: numbered_row(Numbered.TIMER).name,
                 True: numbered_row(Numbered.FIXED_TIMER).name}
@@ -93,6 +94,10 @@ class TableSpec:
     def tooltip(self, row: Row) -> str:
         """A cell's tooltip."""
         return ""
+
+    def lit(self, row: Row, column: int) -> bool:
+        """True when the cell shows a contact that is on (drawn green)."""
+        return False
 
 
 @dataclass

@@ -33,6 +33,7 @@ from ladderworks.core import dialects
 from ladderworks.core.compiler.binary import BinaryProgram
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks import snapshot_gate
+from ladderworks.gui.docks.device_specs import DeviceSpec, device_specs
 from ladderworks.gui.docks.snapshot_gate import SnapshotGate
 from ladderworks.gui.docks.table_entries import DATA_WIDTHS, ProgramUse, TableError, TableKind
 from ladderworks.gui.docks.table_model import PlcTableModel
@@ -117,7 +118,8 @@ class PlcTablesDock(Retranslating, QDockWidget):
         super().__init__(parent)
         self.setObjectName("plcTablesDock")
         self.session = session
-        self.specs: dict[TableKind, TableSpec] = {spec.kind: spec for spec in table_specs()}
+        self.specs: dict[TableKind, TableSpec] = {
+            spec.kind: spec for spec in [*table_specs(), *device_specs()]}
         self.models: dict[TableKind, PlcTableModel] = {}
         self.tables: dict[TableKind, QTableView] = {}
         self.insert_dialog: InsertRowDialog | None = None
@@ -126,6 +128,9 @@ class PlcTablesDock(Retranslating, QDockWidget):
         layout.setContentsMargins(4, 4, 4, 4)
         self.tabs = QTabWidget(body)
         self.tabs.setObjectName("plcTablesTabs")
+        self.device_tabs = QTabWidget(body)  # a Delta/Fatek program's timers, counters, registers
+        self.device_tabs.setObjectName("plcDeviceTabs")
+        self.device_tabs.hide()
         self._unfitted: set[TableKind] = set()  # tables whose columns wait to be fitted
         self._stale: set[TableKind] = set()  # tables that missed a snapshot (not shown)
         for kind, spec in self.specs.items():
@@ -134,10 +139,12 @@ class PlcTablesDock(Retranslating, QDockWidget):
             model.refused.connect(self._refused)
             model.stored.connect(lambda: self._say(""))
             self.models[kind] = model
-            self.tables[kind] = self._make_view(kind, model)
-            self.tabs.addTab(self.tables[kind], "")
+            tabs = self._tabs_of(kind)
+            self.tables[kind] = self._make_view(kind, model, tabs)
+            tabs.addTab(self.tables[kind], "")
         layout.addWidget(self.tabs, 1)
-        self.dialect_note = QLabel(body)  # a Delta/Fatek program: no PMC tables
+        layout.addWidget(self.device_tabs, 1)
+        self.dialect_note = QLabel(body)  # a dialect program without device tables
         self.dialect_note.setObjectName("plcTablesDialectNote")
         self.dialect_note.setWordWrap(True)
         self.dialect_note.setAlignment(Qt.AlignmentFlag.AlignTop | Qt.AlignmentFlag.AlignLeft)
@@ -155,11 +162,16 @@ class PlcTablesDock(Retranslating, QDockWidget):
         session.snapshot_ready.connect(self._on_snapshot)
         session.program_loaded.connect(self._on_program)
         self.tabs.currentChanged.connect(lambda _index: self._shown_changed())
+        self.device_tabs.currentChanged.connect(lambda _index: self._shown_changed())
         self.visibilityChanged.connect(lambda _shown: self._shown_changed())
         self.retranslate()
 
-    def _make_view(self, kind: TableKind, model: PlcTableModel) -> QTableView:
-        table = QTableView(self.tabs)
+    def _tabs_of(self, kind: TableKind) -> QTabWidget:
+        """The tab widget a table is in: the PMC's, or the dialect devices'."""
+        return self.device_tabs if isinstance(self.specs[kind], DeviceSpec) else self.tabs
+
+    def _make_view(self, kind: TableKind, model: PlcTableModel, tabs: QTabWidget) -> QTableView:
+        table = QTableView(tabs)
         table.setModel(model)
         table.setObjectName(f"plcTable_{kind.value}")
         table.verticalHeader().hide()
@@ -191,12 +203,16 @@ class PlcTablesDock(Retranslating, QDockWidget):
         if table.isVisible():
             self._unfitted.discard(kind)
             table.resizeColumnsToContents()
+            header = table.horizontalHeader()  # the last column fills the width again
+            header.setStretchLastSection(False)
+            header.setStretchLastSection(True)
         else:
             self._unfitted.add(kind)
 
     def _current_kind(self) -> TableKind | None:
+        shown = self.device_tabs if self.device_tabs.isVisibleTo(self) else self.tabs
         return next((k for k, table in self.tables.items()
-                     if table is self.tabs.currentWidget()), None)
+                     if table is shown.currentWidget()), None)
 
     def _shown_changed(self) -> None:
         """Another tab, or the dock shown or hidden: the table shown catches up."""
@@ -214,8 +230,10 @@ class PlcTablesDock(Retranslating, QDockWidget):
             model.set_program(program, use)
         self._stale.clear()
         dialect = dialects.get(self.session.run.program_dialect)
+        devices = dialect.device_tables() if dialect is not None else None
         self.tabs.setVisible(dialect is None)  # the tables are PMC parameters
-        self.dialect_note.setVisible(dialect is not None)
+        self.device_tabs.setVisible(devices is not None)  # WPLSoft's / WinProladder's
+        self.dialect_note.setVisible(dialect is not None and devices is None)
         self.retranslate()  # the timer columns follow the program's dialect
 
     def _on_snapshot(self, snapshot: PlcSnapshot) -> None:
@@ -320,6 +338,10 @@ class PlcTablesDock(Retranslating, QDockWidget):
 
     # -- texts -------------------------------------------------------------------------------
 
+    def _letters(self, kind: TableKind) -> tuple[str, ...]:
+        spec = self.specs[kind]
+        return spec.letters(self.session) if isinstance(spec, DeviceSpec) else ()
+
     def _say(self, text: str, *, error: bool = False) -> None:
         self.message.setStyleSheet("color:#c00000;" if error else "")
         self.message.setText(text)
@@ -340,9 +362,14 @@ class PlcTablesDock(Retranslating, QDockWidget):
             TableKind.COUNTER: translate("PlcTables", "Counters (CTR)"),
             TableKind.DATA: translate("PlcTables", "Data table (D)"),
             TableKind.KEEP: translate("PlcTables", "Keep relays (K)"),
+            TableKind.DEVICE_TIMERS: translate("PlcTables", "Timers (T)"),
+            TableKind.DEVICE_COUNTERS: translate("PlcTables", "Counters (C)"),
+            TableKind.REGISTERS: translate("PlcTables", "Registers ({0})").format(
+                ", ".join(self._letters(TableKind.REGISTERS)) or "D"),
         }
-        for index, kind in enumerate(self.specs):
-            self.tabs.setTabText(index, titles[kind])
+        for kind in self.specs:
+            tabs = self._tabs_of(kind)
+            tabs.setTabText(tabs.indexOf(self.tables[kind]), titles[kind])
             self.models[kind].retranslate()
             fit_headers(self.tables[kind])  # the titles in the new language, whole
         layout = self.session.run.timers

@@ -35,4 +35,5 @@ DIALECT = Dialect(
     printer="ladderworks.core.dialects.fatek.printer:network_lines", relays=relays,
     period_ms=10, extensions=(".lst", ".fbs"),
     namer="ladderworks.core.dialects.fatek.printer:mnemonic_of",
-    spelling="ladderworks.core.dialects.fatek.printer:spelling", families=FAMILIES)
+    spelling="ladderworks.core.dialects.fatek.printer:spelling",
+    tables="ladderworks.core.dialects.fatek.tables:TABLES", families=FAMILIES)

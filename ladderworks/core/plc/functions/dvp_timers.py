@@ -14,22 +14,17 @@ from functools import cache
 
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import M1028, T
+from ladderworks.core.dialects.delta.tables import timer_base_ms
 from ladderworks.core.plc.functions import FunctionContext, executed_once_this_scan, function
 from ladderworks.core.plc.functions.dvp_data import value
 from ladderworks.core.plc.memory import Memory
 
-FAST_FIRST, FAST_LAST = 64, 126  # 10 ms with M1028 on
-MS_TIMER = 127  # 1 ms
 MAX_VALUE = 32767
 
 
 def base_ms(memory: Memory, number: int) -> int:
-    """Timer `number`'s base in ms (M1028 read now)."""
-    if number == MS_TIMER:
-        return 1
-    if FAST_FIRST <= number <= FAST_LAST and memory.bit(M1028):
-        return 10
-    return 100
+    """Timer `number`'s base in ms (M1028 read now; the rule is core/dialects/delta/tables)."""
+    return timer_base_ms(number, bool(memory.bit(M1028)))
 
 
 @cache

@@ -1,7 +1,8 @@
 """Fatek FBs timers, counters, their RST, TU/TD edge contacts (docs/dialects.md, Fatek).
 
 Timer Tn (001:392-432): EN = 1 counts in the number's base (0.01 s, 0.1 s, 1 s); the present
-value CV runs on to 32767 and stays; CV >= PV closes Tn and TUP (FO0); EN = 0 clears CV, Tn and
+value CV (read from memory each scan, so a value set from the PLC tables counts on) runs on to
+32767 and stays; CV >= PV closes Tn and TUP (FO0); EN = 0 clears CV, Tn and
 TUP. Counter Cn (001:572-612): CLR = 1 clears CV, Cn and CUP (FO0) and stops counting; else each
 CK 0 -> 1 adds 1; CUP and Cn while CV >= PV; CV stops at 32767 (2147483647 for C200-C255).
 Up/down counter FUN 7 (001:652-694): U/D = 1 up, 0 down; FO0 only while CV = PV; wraps.
@@ -70,10 +71,13 @@ def fatek_timer(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
         write_outputs(memory, fo, False)
         return False
     counting = executed_once_this_scan(ctx, state)
-    elapsed = state.get("ms")
-    elapsed = 0 if elapsed is None else elapsed + (ctx.scan_ms if counting else 0)
-    state["ms"] = elapsed
-    value = min(elapsed // timer_base_ms(number), MAX16)
+    rest = state.get("ms")
+    if rest is None:  # the scan that starts it: CV 0
+        rest, value = 0, 0
+    else:  # CV as the memory holds it (the PLC tables may have changed it) + the counts
+        ticks, rest = divmod(rest + (ctx.scan_ms if counting else 0), timer_base_ms(number))
+        value = min(memory.read(cv_at, 2, signed=True) + ticks, MAX16)
+    state["ms"] = rest
     memory.write(cv_at, value, 2)
     up = value >= operand_value(memory, preset)
     memory.set_bit(contact, up)
