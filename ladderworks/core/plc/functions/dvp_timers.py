@@ -61,6 +61,7 @@ def tmr(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tup
         current = memory.read(timer, 2, signed=True)
         base = base_ms(memory, number)
         ticks, state["ms"] = divmod(elapsed, base)
+        ctx.wake(ctx.now_ms + base - state["ms"])  # the next tick
         if current < target:
             current = min(current + ticks, target, MAX_VALUE)
             memory.write(timer, current, 2)

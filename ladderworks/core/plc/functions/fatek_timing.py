@@ -72,7 +72,10 @@ def fatek_timer(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
     elapsed = state.get("ms")
     elapsed = 0 if elapsed is None else elapsed + (ctx.scan_ms if counting else 0)
     state["ms"] = elapsed
-    value = min(elapsed // timer_base_ms(number), MAX16)
+    base = timer_base_ms(number)
+    value = min(elapsed // base, MAX16)
+    if value < MAX16:  # the present value changes at the next tick
+        ctx.wake(ctx.now_ms + base - elapsed % base)
     memory.write(cv_at, value, 2)
     up = value >= operand_value(memory, preset)
     memory.set_bit(contact, up)
