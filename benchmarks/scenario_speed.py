@@ -5,9 +5,9 @@ the program reads (a bit toggled and a byte written) every second, and one that 
 5 s, for MINUTES minutes (default 10; `--minutes 0.5` for a short run), then checks one of
 them at the end. Each runs from a cold start the way `ladderworks-cli test` does, once with
 every scan run (`--every-scan`) and once skipping the scans of a repeating state (the
-default); the two must end with the same memory. Prints virtual time / CPU time of this process (the speed-up over real time on
-one core; the shared machine's wall time is printed beside it) of both. Prints figures;
-asserts nothing.
+default); the two must end with the same memory. Prints virtual time / CPU time of this
+process (the speed-up over real time on one core; the shared machine's wall time is printed
+beside it) of both. Prints figures; asserts nothing.
 """
 
 from __future__ import annotations

@@ -32,7 +32,9 @@ CLEARED_AREAS: tuple[Area, ...] = tuple(
 
 # System relay R9091: .0 always 0, .1 always 1, .5 a 200 ms clock, .6 a 1 s clock.
 SYSTEM_RELAY = 9091
-SYSTEM_CLOCKS = ((200, 104), (1000, 504))  # R9091.5, R9091.6: (period, time on) in ms
+# R9091.5 and R9091.6: (bit, period, time on) in ms
+SYSTEM_CLOCKS = ((Address(Area.R, SYSTEM_RELAY, 5), 200, 104),
+                 (Address(Area.R, SYSTEM_RELAY, 6), 1000, 504))
 
 
 def load_binary(data: bytes) -> BinaryProgram:
@@ -196,10 +198,9 @@ class ScanEngine:
 
     def _system_relays(self, now: int) -> None:
         value = 0b10
-        if now % 200 < 104:
-            value |= 1 << 5
-        if now % 1000 < 504:
-            value |= 1 << 6
+        for bit, period, on in SYSTEM_CLOCKS:
+            if now % period < on:
+                value |= 1 << (bit.bit or 0)
         self.memory.areas[Area.R][SYSTEM_RELAY] = value
 
     # -- start and stop ------------------------------------------------------------------

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from math import lcm
 from typing import Any
 
+from ladderworks.core.address import Address, Area
 from ladderworks.core.plc.functions import NEVER, FunctionContext
 
 # state keys that hold time: they may grow between the two ends of a cycle ("at" is the scan
@@ -30,6 +31,7 @@ MAX_PERIOD = 4  # the longest cycle looked for, in scans
 MAX_WAIT = 64  # scans between two tries at most, after tries whose states differed
 
 Clock = tuple[int, int]  # (period, time on) in ms; on while time % period < time on
+ClockRelay = tuple[Address, int, int]  # a clock's bit, period and time on
 Hidden = tuple[list[dict[str, Any]], dict[Any, bool], tuple[Any, ...]]
 
 
@@ -54,25 +56,35 @@ def clock_change(after_ms: int, scan_ms: int, clocks: Iterable[Clock], limit_ms:
 
 @dataclass(slots=True)
 class _Trial:
-    """A cycle being confirmed: its length, the state at its start, scans still to run."""
+    """A cycle being confirmed: its length, the state at its start (and that scan's time),
+    scans still to run."""
 
     period: int
     fingerprint: bytes
     hidden: Hidden
     alarms: int
     left: int
+    started_ms: int
+    wake_ms: int  # the earliest wake said in the cycle's scans and the one before them
 
 
 class CycleSkipper:
     """Watches the scans of one run (`ScanEngine.advance`) and says how many to skip."""
 
-    def __init__(self, areas: Mapping[Any, bytearray], states: tuple[dict[str, Any], ...],
-                 ctx: FunctionContext, clocks: tuple[Clock, ...], period_ms: int,
+    def __init__(self, areas: Mapping[Area, bytearray], states: tuple[dict[str, Any], ...],
+                 ctx: FunctionContext, clocks: tuple[ClockRelay, ...], period_ms: int,
                  divisions: int = 1) -> None:
         self._areas = tuple(areas.values())
         self._states = states
         self._ctx = ctx
-        self._clocks = clocks
+        self._clocks = tuple((period, on) for _bit, period, on in clocks)
+        offsets, at = {}, 0
+        for area, data in areas.items():
+            offsets[area], at = at, at + len(data)
+        # the clock relays' bytes, left out when looking for a cycle (not when confirming one):
+        # a clock's edge that changes nothing else finds the cycle of before it at once
+        self._clock_bytes = sorted({offsets[bit.area] + bit.byte for bit, _p, _o in clocks
+                                    if bit.area in offsets})
         self._period = period_ms
         self._lengths = tuple(p for p in range(1, MAX_PERIOD + 1) if p % divisions == 0)
         self._ring: deque[bytes] = deque(maxlen=MAX_PERIOD)
@@ -84,6 +96,14 @@ class CycleSkipper:
 
     def _fingerprint(self) -> bytes:
         return b"".join(self._areas)
+
+    def _without_clocks(self, fingerprint: bytes) -> bytes:
+        if not self._clock_bytes:
+            return fingerprint
+        masked = bytearray(fingerprint)
+        for at in self._clock_bytes:
+            masked[at] = 0
+        return bytes(masked)
 
     def _hidden(self, live: bool = False) -> Hidden:
         """The state beside memory: copies of the call sites' states, or the live ones."""
@@ -97,42 +117,46 @@ class CycleSkipper:
         changes so far): how many of the scans due before `limit_ms` may be skipped now (their
         timers already moved on)."""
         fingerprint = self._fingerprint()
+        looked = self._without_clocks(fingerprint)
+        ctx = self._ctx
+        wake, ctx.wake_ms = ctx.wake_ms, NEVER  # what this scan's timers said
         trial = self._trial
+        skipped = 0
         if trial is not None:
+            trial.wake_ms = min(trial.wake_ms, wake)
             trial.left -= 1
             if trial.left == 0:
                 self._trial = None
                 skipped = self._conclude(trial, fingerprint, next_ms, limit_ms, alarms)
-                if skipped:
-                    self._ring.clear()
-                    return skipped
         elif self._wait:
             self._wait -= 1
         else:
             ring = self._ring
             for length in self._lengths:
-                if length <= len(ring) and ring[-length] == fingerprint:
+                if length <= len(ring) and ring[-length] == looked:
                     self.tries += 1
-                    self._ctx.wake_ms = NEVER
-                    self._trial = _Trial(length, fingerprint, self._hidden(), alarms, length)
+                    self._trial = _Trial(length, fingerprint, self._hidden(), alarms, length,
+                                         next_ms - self._period, wake)
                     break
-        self._ring.append(fingerprint)
-        return 0
+        self._ring.append(looked)
+        return skipped
 
     def _conclude(self, trial: _Trial, fingerprint: bytes, next_ms: int, limit_ms: int,
                   alarms: int) -> int:
         """Skip whole cycles when the state came back (timers aside) and nothing changed the
         A area in the cycle; the scans skipped."""
         growth = None
-        if fingerprint == trial.fingerprint and alarms == trial.alarms:
+        period = self._period
+        last_ms = next_ms - period
+        if (fingerprint == trial.fingerprint and alarms == trial.alarms
+                and clock_change(trial.started_ms, period, self._clocks, NEVER) > last_ms):
             growth = _growth(trial.hidden, self._hidden(live=True))
         if growth is None:
             self._misses += 1
             self._wait = min(MAX_WAIT, (1 << self._misses) - 1)
             return 0
         self._misses = 0
-        period = self._period
-        horizon = min(self._ctx.wake_ms, limit_ms,
+        horizon = min(trial.wake_ms, limit_ms,
                       clock_change(next_ms - period, period, self._clocks, limit_ms))
         cycles = max(0, -(-(horizon - next_ms) // period)) // trial.period
         if cycles:
