@@ -18,7 +18,7 @@ from ladderworks.core.plc.forcing import ForceEntry, ForceTable
 from ladderworks.core.plc.functions import FunctionContext, load_all
 from ladderworks.core.plc.history import ScanHistory
 from ladderworks.core.plc.memory import Memory
-from ladderworks.core.plc.skipping import CycleSkipper
+from ladderworks.core.plc.skipping import CycleSkipper, clocks_read
 from ladderworks.core.plc.trace import DEFAULT_CAPACITY, TraceSampler
 
 DEFAULT_PERIOD_MS = 8  # FANUC level-1 period
@@ -95,7 +95,9 @@ class ScanEngine:
         found = dialects.get(self.program.dialect)
         self._dialect_relays = found.relays if found is not None else None
         self._first_scan = True  # the first scan since the engine was made or cold-started
-        self._clocks = SYSTEM_CLOCKS + (found.clocks if found is not None else ())
+        clocks = SYSTEM_CLOCKS + (found.clocks if found is not None else ())
+        self._clocks = clocks_read(self.program.ops, clocks, self.program.dialect)
+        self._unread_clocks = tuple(clock for clock in clocks if clock not in self._clocks)
         # True: `advance` runs every scan; False: it skips the scans of a state that repeats
         # (core/plc/skipping.py), with the same result after every scan it runs
         self.every_scan = False
@@ -134,9 +136,7 @@ class ScanEngine:
             ctx = self._ctx
             ctx.now_ms = now
             ctx.scan_ms = self.period_ms
-            self._system_relays(now)
-            if self._dialect_relays is not None:  # a dialect's special relays (Delta M1000..)
-                self._dialect_relays(self.memory.areas, now, self._first_scan)
+            self._relays(now)
             self._first_scan = False
             self.force_table.apply(self.memory)
             try:
@@ -180,7 +180,8 @@ class ScanEngine:
             skipper = None
             if not self.every_scan and self.trace is None and self.history is None:
                 skipper = CycleSkipper(self.memory.areas, self._current.states, self._ctx,
-                                       self._clocks, self.period_ms, self.divisions)
+                                       self._clocks, self.period_ms, self.divisions,
+                                       self._unread_clocks)
             count = 0
             while self.now_ms < limit_ms:
                 self.scan()
@@ -194,7 +195,15 @@ class ScanEngine:
                         self.scan_count += skipped
                         self.skipped += skipped
                         count += skipped
+                        self._relays(self.now_ms - self.period_ms)  # the last skipped scan's
+                        self.force_table.apply(self.memory)  # forces win, as after a scan
             return count
+
+    def _relays(self, now: int) -> None:
+        """The relays a scan at `now` starts with: R9091 and the dialect's (Delta M1000..)."""
+        self._system_relays(now)
+        if self._dialect_relays is not None:
+            self._dialect_relays(self.memory.areas, now, self._first_scan)
 
     def _system_relays(self, now: int) -> None:
         value = 0b10

@@ -22,6 +22,7 @@ from math import lcm
 from typing import Any
 
 from ladderworks.core.address import Address, Area
+from ladderworks.core.compiler.binary import Op
 from ladderworks.core.plc.functions import NEVER, FunctionContext
 
 # state keys that hold time: they may grow between the two ends of a cycle ("at" is the scan
@@ -54,26 +55,55 @@ def clock_change(after_ms: int, scan_ms: int, clocks: Iterable[Clock], limit_ms:
     return best
 
 
-@dataclass(slots=True)
-class _Trial:
-    """A cycle being confirmed: its length, the state at its start (and that scan's time),
-    scans still to run."""
+def clocks_read(ops: Iterable[Op], clocks: Iterable[ClockRelay], dialect: str
+                ) -> tuple[ClockRelay, ...]:
+    """The clocks whose bit an op reads (or may: an operand on it, a parameter whose extent
+    covers its byte, by the instruction table's widths); the others cannot change a scan."""
+    from ladderworks.core.xref import function_operands
 
-    period: int
+    clocks = tuple(clocks)
+    found: set[ClockRelay] = set()
+    for op in ops:
+        operand = op.operand
+        if operand is not None:
+            uses = [(operand, 0 if operand.is_bit else 1)]
+        elif any(isinstance(value, Address) for value in op.params):
+            uses = [(o.address, o.width) for o in function_operands(op.spec, op.params, dialect)]
+        else:
+            continue
+        for clock in clocks:
+            bit = clock[0]
+            for address, width in uses:
+                if address.area is not bit.area:
+                    continue
+                if (address.byte == bit.byte and (address.bit is None or address.bit == bit.bit)
+                        if width <= 1 else address.byte <= bit.byte < address.byte + width):
+                    found.add(clock)
+    return tuple(clock for clock in clocks if clock in found)
+
+
+@dataclass(slots=True)
+class _Seen:
+    """The state after one scan: memory, the states beside it, what its timers said."""
+
     fingerprint: bytes
     hidden: Hidden
     alarms: int
-    left: int
-    started_ms: int
-    wake_ms: int  # the earliest wake said in the cycle's scans and the one before them
+    at_ms: int  # the scan's time
+    wake_ms: int  # the earliest time a timer of the scan said it acts otherwise
 
 
 class CycleSkipper:
-    """Watches the scans of one run (`ScanEngine.advance`) and says how many to skip."""
+    """Watches the scans of one run (`ScanEngine.advance`) and says how many to skip.
+
+    After each scan it keeps the state (memory as one bytes object, copies of the call sites'
+    states that hold anything) of the last `MAX_PERIOD` scans; a scan whose state equals one
+    of those (timers' time aside) closes a cycle.
+    """
 
     def __init__(self, areas: Mapping[Area, bytearray], states: tuple[dict[str, Any], ...],
                  ctx: FunctionContext, clocks: tuple[ClockRelay, ...], period_ms: int,
-                 divisions: int = 1) -> None:
+                 divisions: int = 1, unread: tuple[ClockRelay, ...] = ()) -> None:
         self._areas = tuple(areas.values())
         self._states = states
         self._ctx = ctx
@@ -81,89 +111,86 @@ class CycleSkipper:
         offsets, at = {}, 0
         for area, data in areas.items():
             offsets[area], at = at, at + len(data)
-        # the clock relays' bytes, left out when looking for a cycle (not when confirming one):
-        # a clock's edge that changes nothing else finds the cycle of before it at once
-        self._clock_bytes = sorted({offsets[bit.area] + bit.byte for bit, _p, _o in clocks
-                                    if bit.area in offsets})
+        # the bits of clocks no op reads, left out of the state (set from the time after a skip)
+        self._unread = tuple((offsets[bit.area] + bit.byte, 0xFF ^ (1 << (bit.bit or 0)))
+                             for bit, _period, _on in unread)
         self._period = period_ms
         self._lengths = tuple(p for p in range(1, MAX_PERIOD + 1) if p % divisions == 0)
-        self._ring: deque[bytes] = deque(maxlen=MAX_PERIOD)
-        self._trial: _Trial | None = None
+        self._ring: deque[_Seen] = deque(maxlen=MAX_PERIOD)
+        self._track()
         self._wait = 0  # scans before the next try
         self._misses = 0  # tries in a row whose states differed
         self.skipped = 0  # scans skipped in this run
         self.tries = 0  # cycles tried (figures for the benchmark)
 
-    def _fingerprint(self) -> bytes:
-        return b"".join(self._areas)
-
-    def _without_clocks(self, fingerprint: bytes) -> bytes:
-        if not self._clock_bytes:
-            return fingerprint
-        masked = bytearray(fingerprint)
-        for at in self._clock_bytes:
-            masked[at] = 0
-        return bytes(masked)
+    def _track(self) -> None:
+        """Copy only the states that hold something: a state never empties within a run (only
+        a cold start clears them), so one empty at the end of a cycle was empty all along."""
+        self._held = [state for state in self._states if state]
+        self._empty = [state for state in self._states if not state]
 
     def _hidden(self, live: bool = False) -> Hidden:
         """The state beside memory: copies of the call sites' states, or the live ones."""
         ctx = self._ctx
         sent = tuple(getattr(value, "writes", None) for value in ctx.extra.values())
-        states = list(self._states) if live else [state.copy() for state in self._states]
-        return states, dict(ctx.edges), sent
+        held = list(self._held) if live else [state.copy() for state in self._held]
+        return held, dict(ctx.edges), sent
 
     def after_scan(self, next_ms: int, limit_ms: int, alarms: int) -> int:
         """Called after each scan (`next_ms` the next scan's time, `alarms` the count of A-area
         changes so far): how many of the scans due before `limit_ms` may be skipped now (their
         timers already moved on)."""
-        fingerprint = self._fingerprint()
-        looked = self._without_clocks(fingerprint)
         ctx = self._ctx
         wake, ctx.wake_ms = ctx.wake_ms, NEVER  # what this scan's timers said
-        trial = self._trial
+        fingerprint = b"".join(self._areas)
+        if self._unread:
+            masked = bytearray(fingerprint)
+            for at, keep in self._unread:
+                masked[at] &= keep
+            fingerprint = bytes(masked)
+        ring = self._ring
         skipped = 0
-        if trial is not None:
-            trial.wake_ms = min(trial.wake_ms, wake)
-            trial.left -= 1
-            if trial.left == 0:
-                self._trial = None
-                skipped = self._conclude(trial, fingerprint, next_ms, limit_ms, alarms)
-        elif self._wait:
+        if self._wait:
             self._wait -= 1
         else:
-            ring = self._ring
             for length in self._lengths:
-                if length <= len(ring) and ring[-length] == looked:
+                if length <= len(ring) and ring[-length].fingerprint == fingerprint:
                     self.tries += 1
-                    self._trial = _Trial(length, fingerprint, self._hidden(), alarms, length,
-                                         next_ms - self._period, wake)
+                    skipped = self._close(length, wake, next_ms, limit_ms, alarms)
                     break
-        self._ring.append(looked)
+        if not skipped:
+            ring.append(_Seen(fingerprint, self._hidden(), alarms, next_ms - self._period, wake))
         return skipped
 
-    def _conclude(self, trial: _Trial, fingerprint: bytes, next_ms: int, limit_ms: int,
-                  alarms: int) -> int:
-        """Skip whole cycles when the state came back (timers aside) and nothing changed the
-        A area in the cycle; the scans skipped."""
-        growth = None
+    def _close(self, length: int, wake: int, next_ms: int, limit_ms: int, alarms: int) -> int:
+        """The scans to skip when the state `length` scans ago came back (timers aside), no
+        clock changed and nothing changed the A area since: whole cycles up to the horizon."""
+        ring = self._ring
+        first = ring[-length]
         period = self._period
         last_ms = next_ms - period
-        if (fingerprint == trial.fingerprint and alarms == trial.alarms
-                and clock_change(trial.started_ms, period, self._clocks, NEVER) > last_ms):
-            growth = _growth(trial.hidden, self._hidden(live=True))
+        growth = None
+        if (alarms == first.alarms and clock_change(first.at_ms, period, self._clocks, NEVER)
+                > last_ms):
+            if any(self._empty):  # a call site ran for the first time: copy it from now on
+                self._track()
+                ring.clear()
+            else:
+                growth = _growth(first.hidden, self._hidden(live=True))
         if growth is None:
             self._misses += 1
             self._wait = min(MAX_WAIT, (1 << self._misses) - 1)
             return 0
         self._misses = 0
-        horizon = min(trial.wake_ms, limit_ms,
-                      clock_change(next_ms - period, period, self._clocks, limit_ms))
-        cycles = max(0, -(-(horizon - next_ms) // period)) // trial.period
+        wakes = min([wake, *(seen.wake_ms for seen in list(ring)[-length:])])
+        horizon = min(wakes, limit_ms, clock_change(last_ms, period, self._clocks, limit_ms))
+        cycles = max(0, -(-(horizon - next_ms) // period)) // length
         if cycles:
             for state, key, step in growth:
                 state[key] += step * cycles
-            self.skipped += cycles * trial.period
-        return cycles * trial.period
+            self.skipped += cycles * length
+            ring.clear()  # their times are past: the next cycle is found from scans to come
+        return cycles * length
 
 
 def _growth(before: Hidden, after: Hidden) -> list[tuple[dict[str, Any], str, int]] | None:

@@ -269,7 +269,8 @@ def test_random_programs_run_the_same_skipping_scans(seed: int, divisions: int,
     engines = pair(decode(result.binary), divisions, monitored)
     inputs = bytes_of(Area.X, 2)
     driver = Driver(engines, rng, inputs, bytes_of(Area.R, 6),
-                    [Address(Area.X, 0, 1), Address(Area.R, 1, 2), Address(Area.R, 0, 0)])
+                    [Address(Area.X, 0, 1), Address(Area.R, 1, 2), Address(Area.R, 0, 0),
+                     Address(Area.R, 9091, 5)])
     driver.run(400, rate=0.2)
     for op in rng.sample(range(len(engines[0].program.ops)), k=1):
         for engine in engines:
@@ -300,7 +301,15 @@ def test_a_scan_toggling_bit_is_a_cycle_of_two() -> None:
     text = "%@3\nRD.NOT R0.0\nWRT R0.0\nRD R0.0\nAND X0.0\nWRT R0.1\n%\n"
     full, fast = pair(binary_of(text))
     driver = Driver((full, fast), random.Random(2), bytes_of(Area.X, 1), [], [])
-    assert driver.run(5_000, rate=0.02) > 2_000  # R9091's clocks change every 96-104 ms
+    assert driver.run(5_000, rate=0.02) > 4_000
+
+
+def test_a_clock_the_program_reads_ends_each_skip() -> None:
+    text = "%@3\nRD.NOT R0.0\nWRT R0.0\nRD R9091.5\nWRT R0.1\n%\n"
+    full, fast = pair(binary_of(text))
+    driver = Driver((full, fast), random.Random(2), [], [], [])
+    skipped = driver.run(5_000, rate=0.0, longest=500)
+    assert 2_000 < skipped < 4_500  # R9091.5 changes every 96-104 ms (12-13 scans)
 
 
 def test_no_scan_is_skipped_while_a_trace_samples() -> None:
@@ -311,7 +320,7 @@ def test_no_scan_is_skipped_while_a_trace_samples() -> None:
     assert engine.skipped == 0 and len(engine.trace.take()) == 1000  # type: ignore[union-attr]
     engine.stop_trace()
     engine.advance(16_000)
-    assert engine.skipped > 500  # of 1000: R9091's clocks change every 96-104 ms
+    assert engine.skipped > 990  # of 1000: R9091's clocks are not read
 
 
 def test_waitfor_stops_at_the_scan_a_skipped_run_would_reach() -> None:
@@ -369,3 +378,16 @@ def test_cli_test_and_run_take_every_scan(capsys: pytest.CaptureFixture[str]) ->
         outputs.append(capsys.readouterr().out)
     assert outputs[0] == outputs[2] and outputs[1] == outputs[3]  # the same results
     assert "R1.7 = 1" in outputs[3]
+
+
+def test_a_clock_is_read_by_a_contact_on_it_or_a_parameter_over_its_byte() -> None:
+    from ladderworks.core.plc.engine import SYSTEM_CLOCKS
+    from ladderworks.core.plc.skipping import clocks_read
+
+    fast, slow = SYSTEM_CLOCKS
+    for text, read in (("RD R9091.5\nWRT R0.0", (fast,)), ("RD R9091.1\nWRT R0.0", ()),
+                       ("RD R0.0\nMOVB R9091 R1", (fast, slow)),
+                       ("RD R0.0\nMOVW R9090 R2", (fast, slow)),
+                       ("RD R0.0\nMOVW R9092 R2", ())):
+        binary = binary_of(f"%@3\n{text}\n%\n")
+        assert clocks_read(binary.ops, SYSTEM_CLOCKS, binary.dialect) == read, text
