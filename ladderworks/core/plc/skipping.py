@@ -116,6 +116,11 @@ class CycleSkipper:
                              for bit, _period, _on in unread)
         self._period = period_ms
         self._lengths = tuple(p for p in range(1, MAX_PERIOD + 1) if p % divisions == 0)
+        # the clocks' common period (in whole level-2 cycles): the state at scans that far
+        # apart is compared, and a state that comes back skips whole such periods
+        self._round = lcm(*(period for period, _on in self._clocks), period_ms * divisions) \
+            if self._clocks else 0
+        self._mark: _Seen | None = None  # the state after the last scan at a round's start
         self._ring: deque[_Seen] = deque(maxlen=MAX_PERIOD)
         self._track()
         self._wait = 0  # scans before the next try
@@ -149,6 +154,11 @@ class CycleSkipper:
                 masked[at] &= keep
             fingerprint = bytes(masked)
         ring = self._ring
+        last_ms = next_ms - self._period
+        if self._round and last_ms % self._round == 0:  # a round begins: compare with the last
+            skipped = self._close_round(fingerprint, wake, last_ms, limit_ms, alarms)
+            if skipped:
+                return skipped
         skipped = 0
         if self._wait:
             self._wait -= 1
@@ -159,8 +169,43 @@ class CycleSkipper:
                     skipped = self._close(length, wake, next_ms, limit_ms, alarms)
                     break
         if not skipped:
-            ring.append(_Seen(fingerprint, self._hidden(), alarms, next_ms - self._period, wake))
+            ring.append(_Seen(fingerprint, self._hidden(), alarms, last_ms, wake))
         return skipped
+
+    def _close_round(self, fingerprint: bytes, wake: int, last_ms: int, limit_ms: int,
+                     alarms: int) -> int:
+        """At a round's first scan: the scans of whole rounds to skip when the state at the
+        last round's first scan came back (timers aside); else this scan becomes the mark.
+
+        The clocks repeat every round, so a state that comes back repeats the round for as
+        long as no timer whose time grows over it reaches its next tick or preset (its
+        "wake", in its state) and the A area changed nowhere in it.
+        """
+        mark = self._mark
+        self._mark = _Seen(fingerprint, self._hidden(), alarms, last_ms, wake)
+        if (mark is None or mark.at_ms != last_ms - self._round or mark.alarms != alarms
+                or mark.fingerprint != fingerprint):
+            return 0
+        if any(self._empty):
+            self._track()
+            self._ring.clear()
+            self._mark = None
+            return 0
+        growth = _growth(mark.hidden, self._hidden(live=True))
+        if growth is None:
+            return 0
+        horizon = min([limit_ms, *(state.get("wake", last_ms) for state, key, _step in growth
+                                   if key != "at")])  # a timer that said nothing: no skip
+        rounds = max(0, (horizon - 1 - last_ms) // self._round)
+        if rounds:
+            for state, key, step in growth:
+                state[key] += step * rounds
+            skipped = rounds * self._round // self._period
+            self.skipped += skipped
+            self._ring.clear()
+            self._mark = None
+            return skipped
+        return 0
 
     def _close(self, length: int, wake: int, next_ms: int, limit_ms: int, alarms: int) -> int:
         """The scans to skip when the state `length` scans ago came back (timers aside), no
@@ -184,6 +229,8 @@ class CycleSkipper:
         self._misses = 0
         wakes = min([wake, *(seen.wake_ms for seen in list(ring)[-length:])])
         horizon = min(wakes, limit_ms, clock_change(last_ms, period, self._clocks, limit_ms))
+        if self._round:  # the next round's first scan runs: it is compared with this one's
+            horizon = min(horizon, last_ms - last_ms % self._round + self._round)
         cycles = max(0, -(-(horizon - next_ms) // period)) // length
         if cycles:
             for state, key, step in growth:

@@ -45,9 +45,11 @@ class FunctionContext:
     # the earliest time a timer said it may act differently (core/plc/skipping.py reads it)
     wake_ms: int = NEVER
 
-    def wake(self, at_ms: int) -> None:
+    def wake(self, state: dict, at_ms: int = NEVER) -> None:
         """Say that from `at_ms` on this call site may write or answer otherwise than now
-        (a running timer's next tick or its preset reached): no scan from then is skipped."""
+        (a running timer's next tick or its preset reached; NEVER: not while its time runs
+        on): no scan from then is skipped. Kept in its state as "wake" too."""
+        state["wake"] = at_ms
         if at_ms < self.wake_ms:
             self.wake_ms = at_ms
 

@@ -18,7 +18,7 @@ from ladderworks.core.dialects.fatek.devices import (
     timer_base_ms,
     word_address,
 )
-from ladderworks.core.plc.functions import FunctionContext, executed_once_this_scan, function
+from ladderworks.core.plc.functions import NEVER, FunctionContext, executed_once_this_scan, function
 from ladderworks.core.plc.memory import Memory
 
 MAX16 = 32767
@@ -74,8 +74,8 @@ def fatek_timer(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
     state["ms"] = elapsed
     base = timer_base_ms(number)
     value = min(elapsed // base, MAX16)
-    if value < MAX16:  # the present value changes at the next tick
-        ctx.wake(ctx.now_ms + base - elapsed % base)
+    # the present value changes at the next tick, until its most
+    ctx.wake(state, ctx.now_ms + base - elapsed % base if value < MAX16 else NEVER)
     memory.write(cv_at, value, 2)
     up = value >= operand_value(memory, preset)
     memory.set_bit(contact, up)
