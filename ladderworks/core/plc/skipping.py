@@ -30,6 +30,7 @@ from ladderworks.core.plc.functions import NEVER, FunctionContext
 ACCUMULATORS = frozenset({"elapsed", "ms", "at"})
 MAX_PERIOD = 4  # the longest cycle looked for, in scans
 MAX_WAIT = 64  # scans between two tries at most, after tries whose states differed
+ROUNDS = 2  # a state is compared with the one at the start of one or two rounds before
 
 Clock = tuple[int, int]  # (period, time on) in ms; on while time % period < time on
 ClockRelay = tuple[Address, int, int]  # a clock's bit, period and time on
@@ -120,7 +121,9 @@ class CycleSkipper:
         # apart is compared, and a state that comes back skips whole such periods
         self._round = lcm(*(period for period, _on in self._clocks), period_ms * divisions) \
             if self._clocks else 0
-        self._mark: _Seen | None = None  # the state after the last scan at a round's start
+        # the states after the last scans at a round's start (one round, or two: a bit that
+        # flips every scan is the other way round after an odd number of scans)
+        self._marks: deque[_Seen] = deque(maxlen=ROUNDS)
         self._ring: deque[_Seen] = deque(maxlen=MAX_PERIOD)
         self._track()
         self._wait = 0  # scans before the next try
@@ -130,9 +133,12 @@ class CycleSkipper:
 
     def _track(self) -> None:
         """Copy only the states that hold something: a state never empties within a run (only
-        a cold start clears them), so one empty at the end of a cycle was empty all along."""
+        a cold start clears them), so one empty at the end of a cycle was empty all along.
+        The states kept so far copied fewer: they are forgotten."""
         self._held = [state for state in self._states if state]
         self._empty = [state for state in self._states if not state]
+        self._ring.clear()
+        self._marks.clear()
 
     def _hidden(self, live: bool = False) -> Hidden:
         """The state beside memory: copies of the call sites' states, or the live ones."""
@@ -174,37 +180,41 @@ class CycleSkipper:
 
     def _close_round(self, fingerprint: bytes, wake: int, last_ms: int, limit_ms: int,
                      alarms: int) -> int:
-        """At a round's first scan: the scans of whole rounds to skip when the state at the
-        last round's first scan came back (timers aside); else this scan becomes the mark.
+        """At a round's first scan: the scans of whole spans of rounds to skip when the state
+        at the first scan of one or two rounds before came back (timers aside).
 
-        The clocks repeat every round, so a state that comes back repeats the round for as
+        The clocks repeat every round, so a state that comes back repeats the span for as
         long as no timer whose time grows over it reaches its next tick or preset (its
         "wake", in its state) and the A area changed nowhere in it.
         """
-        mark = self._mark
-        self._mark = _Seen(fingerprint, self._hidden(), alarms, last_ms, wake)
-        if (mark is None or mark.at_ms != last_ms - self._round or mark.alarms != alarms
-                or mark.fingerprint != fingerprint):
-            return 0
-        if any(self._empty):
-            self._track()
-            self._ring.clear()
-            self._mark = None
-            return 0
-        growth = _growth(mark.hidden, self._hidden(live=True))
-        if growth is None:
-            return 0
-        horizon = min([limit_ms, *(state.get("wake", last_ms) for state, key, _step in growth
-                                   if key != "at")])  # a timer that said nothing: no skip
-        rounds = max(0, (horizon - 1 - last_ms) // self._round)
-        if rounds:
+        marks = self._marks
+        if marks and marks[-1].at_ms != last_ms - self._round:
+            marks.clear()  # a skip or a run in between: not consecutive rounds
+        seen = _Seen(fingerprint, self._hidden(), alarms, last_ms, wake)
+        for back in range(1, len(marks) + 1):
+            mark = marks[-back]
+            if mark.alarms != alarms or mark.fingerprint != fingerprint:
+                continue
+            if any(self._empty):
+                self._track()
+                return 0
+            growth = _growth(mark.hidden, self._hidden(live=True))
+            if growth is None:
+                continue
+            span = back * self._round
+            horizon = min([limit_ms, *(state.get("wake", last_ms)
+                                       for state, key, _step in growth if key != "at")])
+            spans = max(0, (horizon - 1 - last_ms) // span)  # a timer that said nothing: 0
+            if not spans:
+                break
             for state, key, step in growth:
-                state[key] += step * rounds
-            skipped = rounds * self._round // self._period
+                state[key] += step * spans
+            skipped = spans * span // self._period
             self.skipped += skipped
             self._ring.clear()
-            self._mark = None
+            marks.clear()
             return skipped
+        marks.append(seen)
         return 0
 
     def _close(self, length: int, wake: int, next_ms: int, limit_ms: int, alarms: int) -> int:
@@ -219,7 +229,6 @@ class CycleSkipper:
                 > last_ms):
             if any(self._empty):  # a call site ran for the first time: copy it from now on
                 self._track()
-                ring.clear()
             else:
                 growth = _growth(first.hidden, self._hidden(live=True))
         if growth is None:

@@ -272,6 +272,7 @@ def test_random_programs_run_the_same_skipping_scans(seed: int, divisions: int,
                     [Address(Area.X, 0, 1), Address(Area.R, 1, 2), Address(Area.R, 0, 0),
                      Address(Area.R, 9091, 5)])
     driver.run(400, rate=0.2)
+    driver.run(3000, rate=0.02, longest=600)  # runs of more than two rounds of the clocks
     for op in rng.sample(range(len(engines[0].program.ops)), k=1):
         for engine in engines:
             engine.disable(op)
@@ -304,12 +305,15 @@ def test_a_scan_toggling_bit_is_a_cycle_of_two() -> None:
     assert driver.run(5_000, rate=0.02) > 4_000
 
 
-def test_a_clock_the_program_reads_ends_each_skip() -> None:
-    text = "%@3\nRD.NOT R0.0\nWRT R0.0\nRD R9091.5\nWRT R0.1\n%\n"
+def test_a_clock_the_program_reads_ends_each_skip_or_whole_rounds_are_skipped() -> None:
+    text = "%@3\nRD.NOT R0.0\nWRT R0.0\nRD R9091.5\nWRT R0.1\nRD R9091.6\nWRT R0.2\n%\n"
     full, fast = pair(binary_of(text))
     driver = Driver((full, fast), random.Random(2), [], [], [])
-    skipped = driver.run(5_000, rate=0.0, longest=500)
+    # runs shorter than two rounds (1 s: the clocks' common period): skips end at the edges
+    skipped = driver.run(5_000, rate=0.0, longest=100)
     assert 2_000 < skipped < 4_500  # R9091.5 changes every 96-104 ms (12-13 scans)
+    # long runs: the state at a round's start comes back, whole rounds are skipped
+    assert driver.run(50_000, rate=0.0, longest=5_000) > 48_000
 
 
 def test_no_scan_is_skipped_while_a_trace_samples() -> None:
@@ -353,6 +357,7 @@ def run_real(name: str, scans: int) -> None:
     rng = random.Random(name)
     driver = Driver(engines, rng, inputs, used[:200], coils[:20])
     assert driver.run(scans, rate=0.1) > 0
+    assert driver.run(scans, rate=0.01, longest=400) > 0  # more than two rounds of the clocks
 
 
 @pytest.mark.parametrize("name", ["FANUC_STUDER_X22_P036", "FANUC_STUDER_S41_F036",
