@@ -27,6 +27,9 @@ def pytest_addoption(parser: pytest.Parser) -> None:
                   "scenario tests (default: true)", type="bool", default=True)
     parser.addini("ladderworks_scan_period", "scan period in ms of the scenario tests "
                   "(default: 8)", default="8")
+    parser.addini("ladderworks_every_scan", "run every scan of the scenario tests (default: "
+                  "false: the scans of a state that repeats are skipped, with the same results)",
+                  type="bool", default=False)
 
 
 def pytest_collect_file(file_path: Path, parent: pytest.Collector) -> pytest.Collector | None:
@@ -61,7 +64,8 @@ class ScenarioItem(pytest.Item):
     def runtest(self) -> None:
         """Run it; raise ScenarioFailed with the failures' messages."""
         period = int(self.config.getini("ladderworks_scan_period"))
-        outcome = run_job(ScenarioJob(str(self.path), period_ms=period))
+        outcome = run_job(ScenarioJob(str(self.path), period_ms=period,
+                                      every_scan=self.config.getini("ladderworks_every_scan")))
         result = self.result = outcome.result
         result.scenario.name = self._shown_name()
         if outcome.messages:

@@ -26,6 +26,13 @@ def add_dialect_option(parser: argparse.ArgumentParser) -> None:
                              "default: recognised from the content")
 
 
+def add_every_scan_option(parser: argparse.ArgumentParser) -> None:
+    """Add `--every-scan` to a command that runs a program on the virtual clock."""
+    parser.add_argument("--every-scan", action="store_true",
+                        help="run every scan; by default the scans of a state that repeats "
+                             "are skipped, with the same results (docs/engine.md)")
+
+
 def use_dialect(args: argparse.Namespace) -> None:
     """Take the command's --dialect for the programs it reads (cli.main, before the command)."""
     _forced[0] = getattr(args, "dialect", None)

@@ -8,7 +8,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from ladderworks.cli._programs import add_dialect_option, parsed
+from ladderworks.cli._programs import add_dialect_option, add_every_scan_option, parsed
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.compiler import compile_program, disassemble
 from ladderworks.core.compiler.binary import MAGIC, decode
@@ -55,6 +55,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     run.add_argument("--print", action="append", default=[], metavar="ADDR,...",
                      dest="print_", help="print ADDR = VALUE lines at the end (repeatable)")
     run.add_argument("--trace", metavar="ADDR,...", help="print a CSV trace of these")
+    add_every_scan_option(run)
     run.add_argument("--ascii-out", metavar="FILE",
                      help="write what a Fatek FUN 94 ASCWR sent to the terminal (UTF-8)")
     run.add_argument("--period", type=int, default=DEFAULT_PERIOD_MS, metavar="MS",
@@ -187,7 +188,8 @@ def _run(args: argparse.Namespace) -> int:
     parameters = _parameters(args.file, args.params)
     if parameters is None:
         return 2
-    plc = PlcRun(period_ms=args.scan_period, divisions=args.divisions)
+    plc = PlcRun(period_ms=args.scan_period, divisions=args.divisions,
+                 every_scan=args.every_scan)
     plc.set_parameters(parameters.parameters)
     _use_ascii_files(plc, args.file)
     problems = plc.load(binary)
@@ -208,19 +210,21 @@ def _run(args: argparse.Namespace) -> int:
     end_ms = args.ms
     if scans is None and end_ms is None:
         scans = 1
-    done = 0
     stopped = False
-    while (scans is not None and done < scans) or (end_ms is not None and engine.now_ms < end_ms):
+    if scans is not None:  # N scans: up to the time of the last
+        end_ms = max(end_ms or 0, engine.now_ms + scans * engine.period_ms)
+    assert end_ms is not None
+    while engine.now_ms < end_ms:
         while pending and pending[0][0] <= engine.now_ms:
             _, target, value = pending.pop(0)
             target.write(engine, value)
+        until = min(end_ms, pending[0][0]) if pending else end_ms  # up to the next --set
         try:
-            plc.run_scans(1)
+            plc.advance(max(until, engine.now_ms + 1))
         except DiagnosticError as error:  # a run-time stop (an endless label loop)
             _report(args.file, error.diagnostics)
             stopped = True
             break
-        done += 1
     if trace is not None:
         print("time_ms," + ",".join(t.text for t in traced))
         for sample in trace.take():

@@ -7,7 +7,7 @@ import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-from ladderworks.cli._programs import add_dialect_option, forced_dialect
+from ladderworks.cli._programs import add_dialect_option, add_every_scan_option, forced_dialect
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS
 from ladderworks.core.plc.scenario import ScenarioResult
 from ladderworks.core.plc.scenario_batch import (
@@ -38,6 +38,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                       help="run the scenarios in N processes (default: one per core); results "
                            "are printed in the order given")
     test.add_argument("-v", "--verbose", action="store_true", help="print every check")
+    add_every_scan_option(test)
     test.set_defaults(handler=_test)
 
 
@@ -72,8 +73,8 @@ def _test(args: argparse.Namespace) -> int:
             if not loaded.messages:
                 print(f"ladderworks-cli: {program}: {loaded.reason}", file=sys.stderr)
             return 1
-    jobs = [ScenarioJob(name, program, args.params, args.scan_period, forced_dialect())
-            for name in files]
+    jobs = [ScenarioJob(name, program, args.params, args.scan_period, forced_dialect(),
+                        args.every_scan) for name in files]
     told = {program}
     outcomes: list[ScenarioOutcome] = []
     for outcome in run_jobs(jobs, args.jobs):

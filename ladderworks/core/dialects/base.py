@@ -44,6 +44,9 @@ class Dialect:
     reader: str  # "module:function", a Reader
     printer: str  # "module:function", a NetworkPrinter
     relays: Relays | None = None  # its special relays, set by the engine before each scan
+    # its clock relays: (bit, period, time on), ms; `relays` changes nothing else after the
+    # first scan (the engine skips no scan across a clock's edge: core/plc/skipping.py)
+    clocks: tuple[tuple[Address, int, int], ...] = ()
     period_ms: int = 10  # its usual scan period (the CLI's and the session's default)
     extensions: tuple[str, ...] = ()  # file name endings its files use (".dvp")
     namer: str = ""  # "module:function": a row's name in the dialect's text (LD for RD)

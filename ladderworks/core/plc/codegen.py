@@ -49,6 +49,7 @@ class GeneratedScan:
 
     source: str
     scan: ScanFunction
+    states: tuple[dict[str, Any], ...] = ()  # the state of each function call, in op order
 
 
 @dataclass(slots=True)
@@ -556,5 +557,5 @@ def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
     namespace["JM"] = JumpToMain
     namespace["LOOP"] = loop_stop(ops, generator.structure.units())
     exec(compiled(source), namespace)
-    return GeneratedScan(source, namespace["scan"])
+    return GeneratedScan(source, namespace["scan"], namespace["ST"])
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import threading
 from collections import deque
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import fields
 from typing import Any
 
@@ -18,6 +18,7 @@ from ladderworks.core.plc.forcing import ForceEntry, ForceTable
 from ladderworks.core.plc.functions import FunctionContext, load_all
 from ladderworks.core.plc.history import ScanHistory
 from ladderworks.core.plc.memory import Memory
+from ladderworks.core.plc.skipping import CycleSkipper, clocks_read
 from ladderworks.core.plc.trace import DEFAULT_CAPACITY, TraceSampler
 
 DEFAULT_PERIOD_MS = 8  # FANUC level-1 period
@@ -31,6 +32,9 @@ CLEARED_AREAS: tuple[Area, ...] = tuple(
 
 # System relay R9091: .0 always 0, .1 always 1, .5 a 200 ms clock, .6 a 1 s clock.
 SYSTEM_RELAY = 9091
+# R9091.5 and R9091.6: (bit, period, time on) in ms
+SYSTEM_CLOCKS = ((Address(Area.R, SYSTEM_RELAY, 5), 200, 104),
+                 (Address(Area.R, SYSTEM_RELAY, 6), 1000, 504))
 
 
 def load_binary(data: bytes) -> BinaryProgram:
@@ -91,6 +95,14 @@ class ScanEngine:
         found = dialects.get(self.program.dialect)
         self._dialect_relays = found.relays if found is not None else None
         self._first_scan = True  # the first scan since the engine was made or cold-started
+        clocks = SYSTEM_CLOCKS + (found.clocks if found is not None else ())
+        self._clocks = clocks_read(self.program.ops, clocks, self.program.dialect)
+        self._unread_clocks = tuple(clock for clock in clocks if clock not in self._clocks)
+        # True: `advance` runs every scan; False: it skips the scans of a state that repeats
+        # (core/plc/skipping.py), with the same result after every scan it runs
+        self.every_scan = False
+        self.skipped = 0  # scans skipped since the engine was made
+        self.alarm_changes = 0  # changes of the A area logged since the engine was made
         self._current = self._variant()
 
     @property
@@ -124,9 +136,7 @@ class ScanEngine:
             ctx = self._ctx
             ctx.now_ms = now
             ctx.scan_ms = self.period_ms
-            self._system_relays(now)
-            if self._dialect_relays is not None:  # a dialect's special relays (Delta M1000..)
-                self._dialect_relays(self.memory.areas, now, self._first_scan)
+            self._relays(now)
             self._first_scan = False
             self.force_table.apply(self.memory)
             try:
@@ -139,6 +149,7 @@ class ScanEngine:
             if alarms != self._alarm_bits:  # ~100 ns: the alarm panel misses no pulse
                 self._alarm_bits = bytes(alarms)
                 self.alarm_log.append((now, self._alarm_bits))
+                self.alarm_changes += 1
             if self.trace is not None:
                 self.trace.sample(self.memory, now)
             if self.history is not None:  # time travel (core/plc/history.py), off by default
@@ -154,19 +165,51 @@ class ScanEngine:
     def step(self, ms: int) -> int:
         """Advance the virtual clock by `ms`, scanning once per period; the scans run."""
         with self.lock:
-            end = self.now_ms + ms
+            return self.advance(self.now_ms + ms)
+
+    def advance(self, limit_ms: int, until: Callable[[], bool] | None = None) -> int:
+        """Run the scans due before `limit_ms` (stopping after one at which `until()` holds);
+        the scans done, skipped ones included.
+
+        Unless `every_scan` is set, a trace is sampling or history kept, the scans of a state
+        that repeats are skipped (core/plc/skipping.py): memory and every state are then what
+        running them would have left, after every scan that runs and at the end. `until` must
+        read memory only.
+        """
+        with self.lock:
+            skipper = None
+            if not self.every_scan and self.trace is None and self.history is None:
+                skipper = CycleSkipper(self.memory.areas, self._current.states, self._ctx,
+                                       self._clocks, self.period_ms, self.divisions,
+                                       self._unread_clocks)
             count = 0
-            while self.now_ms < end:
+            while self.now_ms < limit_ms:
                 self.scan()
                 count += 1
+                if until is not None and until():
+                    break
+                if skipper is not None:
+                    skipped = skipper.after_scan(self.now_ms, limit_ms, self.alarm_changes)
+                    if skipped:
+                        self.now_ms += skipped * self.period_ms
+                        self.scan_count += skipped
+                        self.skipped += skipped
+                        count += skipped
+                        self._relays(self.now_ms - self.period_ms)  # the last skipped scan's
+                        self.force_table.apply(self.memory)  # forces win, as after a scan
             return count
+
+    def _relays(self, now: int) -> None:
+        """The relays a scan at `now` starts with: R9091 and the dialect's (Delta M1000..)."""
+        self._system_relays(now)
+        if self._dialect_relays is not None:
+            self._dialect_relays(self.memory.areas, now, self._first_scan)
 
     def _system_relays(self, now: int) -> None:
         value = 0b10
-        if now % 200 < 104:
-            value |= 1 << 5
-        if now % 1000 < 504:
-            value |= 1 << 6
+        for bit, period, on in SYSTEM_CLOCKS:
+            if now % period < on:
+                value |= 1 << (bit.bit or 0)
         self.memory.areas[Area.R][SYSTEM_RELAY] = value
 
     # -- start and stop ------------------------------------------------------------------

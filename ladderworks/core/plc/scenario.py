@@ -329,22 +329,18 @@ def run_scenario(plc: PlcRun, scenario: Scenario,
     start_ms = engine.now_ms
     at = start_ms
 
-    def scan() -> None:
-        if not plc.run_scans(1):  # a real-time PlcRun scans on its own thread
+    def run_before(limit: int, until: Callable[[], bool] | None = None) -> None:
+        """Run every scan due before `limit` ms (PlcRun.advance: the scans of a repeating
+        state skipped, with the same result), or until `until()` holds after one."""
+        if engine.now_ms < limit and not plc.advance(limit, until):
             raise ValueError("scenarios run on the virtual clock, not a real-time PlcRun")
-
-    def scan_through(limit: int) -> None:
-        """Run every scan due at or before `limit` ms."""
-        while engine.now_ms <= limit:
-            scan()
 
     try:
         for step in scenario.steps:
             target_time = at + rounded(step.wait_ms, period)
             if step.command in ("SET", "FORCE", "RELEASE"):
                 at = target_time
-                while engine.now_ms < at:
-                    scan()
+                run_before(at)
                 for target, value in step.items:
                     if step.command == "FORCE":
                         plc.force(target.address, value)
@@ -356,19 +352,18 @@ def run_scenario(plc: PlcRun, scenario: Scenario,
             target, expected = step.items[0]
             if step.command == "EXPECT":
                 at = target_time
-                scan_through(at)
+                run_before(at + 1)
                 got = target.read(plc)
                 check = CheckResult(step.line, step.command, target.text, expected, got,
                                     at - start_ms, got == expected)
             else:
-                scan_through(at)
-                while True:
+                run_before(at + 1)
+                got = target.read(plc)
+                if got != expected:  # the scans while the one before was before the timeout
+                    run_before(target_time + period,
+                               lambda: target.read(plc) == expected)  # noqa: B023
                     got = target.read(plc)
-                    seen = engine.now_ms - period
-                    if got == expected or seen >= target_time:
-                        break
-                    scan()
-                at = seen
+                at = seen = engine.now_ms - period
                 check = CheckResult(step.line, step.command, target.text, expected, got,
                                     seen - start_ms, got == expected)
             result.checks.append(check)

@@ -42,6 +42,7 @@ class ScenarioJob:
     params: str | None = None  # a PMC parameter file for every program (else PROGRAM.prm)
     period_ms: int = DEFAULT_PERIOD_MS
     dialect: str | None = None  # read programs as this dialect (--dialect), else by content
+    every_scan: bool = False  # run every scan (--every-scan), else skip a repeating state's
 
 
 @dataclass(slots=True)
@@ -121,9 +122,10 @@ def is_scenario_file(path: str) -> bool:
     return first.strip().strip(",").upper() == HEADER
 
 
-def cold_run(loaded: LoadedProgram, period_ms: int) -> tuple[PlcRun, list[Diagnostic]]:
+def cold_run(loaded: LoadedProgram, period_ms: int,
+             every_scan: bool = False) -> tuple[PlcRun, list[Diagnostic]]:
     """A fresh PLC with the program loaded from a cold start, its PMC parameters applied."""
-    plc = PlcRun(period_ms=period_ms)
+    plc = PlcRun(period_ms=period_ms, every_scan=every_scan)
     plc.set_parameters(loaded.parameters)
     assert loaded.binary is not None
     return plc, plc.load(loaded.binary)
@@ -147,7 +149,7 @@ def run_job(job: ScenarioJob) -> ScenarioOutcome:
             "scenario-program", {"path": program, "reason": loaded.reason},
             scenario.program_line, column))
         return ScenarioOutcome(job, program, ScenarioResult(scenario), loaded.messages)
-    plc, problems = cold_run(loaded, job.period_ms)
+    plc, problems = cold_run(loaded, job.period_ms, job.every_scan)
     if problems:
         scenario.diagnostics.append(Diagnostic(
             "scenario-program", {"path": program, "reason": problems[0].message()},

@@ -117,8 +117,9 @@ class PlcRun:
     """One PLC: the loaded program's engine, its memory, forces, trace, alarms and parameters."""
 
     def __init__(self, *, realtime: bool = False, period_ms: int = DEFAULT_PERIOD_MS,
-                 divisions: int = 1) -> None:
+                 divisions: int = 1, every_scan: bool = False) -> None:
         self.realtime = realtime  # start() runs a wall-clock thread; else the virtual clock
+        self.every_scan = every_scan  # `advance` skips no scan (ScanEngine.every_scan)
         self.period_ms = period_ms
         self.divisions = divisions  # level 2 and 3 run every `divisions` scans (docs/engine.md)
         self.memory = Memory()
@@ -166,6 +167,7 @@ class PlcRun:
         engine.extra[ASCII_TERMINAL] = self.ascii_terminal  # a Fatek program's FUN 94 output
         engine.extra[ASCII_FILES] = self.ascii_files
         engine.cold_start()
+        engine.every_scan = self.every_scan
         self.parameters.apply(self.memory)
         engine.monitored = self._monitors > 0
         if old is not None:
@@ -251,7 +253,21 @@ class PlcRun:
         engine = self.engine
         if engine is None or not self._running or self._runner is not None:
             return 0
-        return self.run_scans(-(-ms // engine.period_ms))
+        return self.advance(engine.now_ms + ms)
+
+    def advance(self, limit_ms: int, until: Callable[[], bool] | None = None) -> int:
+        """The scans due before `limit_ms` on the virtual clock, stopping after one at which
+        `until()` holds (ScanEngine.advance: a repeating state's scans skipped unless
+        `every_scan`); the scans done, 0 when not started or real-time."""
+        engine = self.engine
+        if engine is None or not self._running or self._runner is not None:
+            return 0
+        began, skipped = time.perf_counter(), engine.skipped
+        count = engine.advance(limit_ms, until)
+        ran = count - (engine.skipped - skipped)
+        if ran:
+            self._figures.add((time.perf_counter() - began) / ran)
+        return count
 
     def status(self) -> PlcStatus:
         """The figures now."""

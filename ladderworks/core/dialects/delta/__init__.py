@@ -41,6 +41,7 @@ M1000 = relay(1000)  # on while the PLC runs
 M1002 = relay(1002)  # on for the first scan after RUN
 M1013 = relay(1013)  # 1 s clock: 0.5 s on, 0.5 s off
 M1014 = relay(1014)  # 1 min clock: 30 s on, 30 s off
+CLOCKS = ((M1013, 1000, 500), (M1014, 60_000, 30_000))  # (bit, period, time on), ms
 M1028 = relay(1028)  # on: T64..T126 count in 10 ms
 M1200 = relay(1200)  # M1200..M1255: C200..C255 count down when on
 
@@ -54,7 +55,8 @@ _R = Area.R
 def relays(areas: dict[Area, bytearray], now_ms: int, first: bool) -> None:
     """Delta's special relays, set before each scan (the engine calls this)."""
     data = areas[_R]
-    states = (True, first, now_ms % 1000 < 500, now_ms % 60_000 < 30_000)
+    (_, second, half), (_, minute, on) = CLOCKS
+    states = (True, first, now_ms % second < half, now_ms % minute < on)
     for (byte, mask), on in zip(_SCAN_RELAYS, states, strict=True):
         data[byte] = data[byte] | mask if on else data[byte] & ~mask & 0xFF
 
@@ -63,6 +65,7 @@ DIALECT = Dialect(
     name=NAME, title="Delta DVP", title_tr="Delta DVP", code=2, devices=DEVICES, rows=ROWS,
     sniff=score, reader="ladderworks.core.dialects.delta.reader:read",
     printer="ladderworks.core.dialects.delta.printer:network_lines", relays=relays,
+    clocks=CLOCKS,
     period_ms=10, extensions=(".dvp", ".il", ".txt"),
     namer="ladderworks.core.dialects.delta.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.delta.printer:spelling",

@@ -33,6 +33,7 @@ DIALECT = Dialect(
     name=NAME, title="Fatek FBs", title_tr="Fatek FBs", code=3, devices=DEVICES, rows=ROWS,
     sniff=score, reader="ladderworks.core.dialects.fatek.reader:read",
     printer="ladderworks.core.dialects.fatek.printer:network_lines", relays=relays,
+    clocks=tuple((address, period, period // 2) for address, period in _CLOCKS),
     period_ms=10, extensions=(".lst", ".fbs"),
     namer="ladderworks.core.dialects.fatek.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.fatek.printer:spelling",

@@ -28,6 +28,7 @@ REMAINDER_REGISTER = Address(Area.R, 9002)  # DIVB leaves its remainder here (R9
 FLAG_ZERO = 0x01  # R9000.0: the result is zero (COMPB: input = comparison)
 FLAG_NEGATIVE = 0x02  # R9000.1: the result is negative (COMPB: input < comparison)
 FLAG_OVERFLOW = 0x20  # R9000.5: overflow, or the operation could not be done
+NEVER = 1 << 62  # a time no run reaches (FunctionContext.wake_ms when no timer runs)
 
 
 @dataclass(slots=True)
@@ -41,6 +42,16 @@ class FunctionContext:
     dialect: str = "seed"  # the program's dialect: "seed" (LadderWorks) or "fanuc" (LADDER-III)
     # DIFU/DIFD edge memories, one per (instruction name, edge number), shared by call sites
     edges: dict[tuple[str, int], bool] = field(default_factory=dict)
+    # the earliest time a timer said it may act differently (core/plc/skipping.py reads it)
+    wake_ms: int = NEVER
+
+    def wake(self, state: dict, at_ms: int = NEVER) -> None:
+        """Say that from `at_ms` on this call site may write or answer otherwise than now
+        (a running timer's next tick or its preset reached; NEVER: not while its time runs
+        on): no scan from then is skipped. Kept in its state as "wake" too."""
+        state["wake"] = at_ms
+        if at_ms < self.wake_ms:
+            self.wake_ms = at_ms
 
     def power_on(self) -> None:
         """Forget what instructions keep outside their call sites (cold start: edge memories)."""

@@ -55,9 +55,13 @@ def tmr(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tup
         target = value(memory, preset)
         current = memory.read(timer, 2, signed=True)
         base = base_ms(memory, number)
-        ticks, state["ms"] = divmod(elapsed, base)
         if current < target:
+            ticks, state["ms"] = divmod(elapsed, base)
+            ctx.wake(state, ctx.now_ms + base - state["ms"])  # the next tick
             current = min(current + ticks, target, MAX_VALUE)
             memory.write(timer, current, 2)
+        else:  # stopped at the set value: no time counts on (docs/dialects.md)
+            state["ms"] = 0
+            ctx.wake(state)
         memory.set_bit(contact, current >= target)
     return act

@@ -20,7 +20,7 @@ from ladderworks.core.dialects.fatek.devices import (
     word_address,
     word_device_at,
 )
-from ladderworks.core.plc.functions import FunctionContext, executed_once_this_scan, function
+from ladderworks.core.plc.functions import NEVER, FunctionContext, executed_once_this_scan, function
 from ladderworks.core.plc.memory import Memory
 
 MAX16 = 32767
@@ -72,12 +72,17 @@ def fatek_timer(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
         return False
     counting = executed_once_this_scan(ctx, state)
     rest = state.get("ms")
+    base = timer_base_ms(number)
     if rest is None:  # the scan that starts it: CV 0
         rest, value = 0, 0
     else:  # CV as the memory holds it (the PLC tables may have changed it) + the counts
-        ticks, rest = divmod(rest + (ctx.scan_ms if counting else 0), timer_base_ms(number))
+        ticks, rest = divmod(rest + (ctx.scan_ms if counting else 0), base)
         value = min(memory.read(cv_at, 2, signed=True) + ticks, MAX16)
+    if value >= MAX16:  # at its most no time counts on
+        rest = 0
     state["ms"] = rest
+    # the present value changes at the next tick, until its most
+    ctx.wake(state, ctx.now_ms + base - rest if value < MAX16 else NEVER)
     memory.write(cv_at, value, 2)
     up = value >= operand_value(memory, preset)
     memory.set_bit(contact, up)

@@ -15,7 +15,13 @@ timer's precision at T[2(n-1)] and the precision code at T9000+2(n-1).
 from __future__ import annotations
 
 from ladderworks.core.address import Address, Area
-from ladderworks.core.plc.functions import FunctionContext, executed_once_this_scan, fits, function
+from ladderworks.core.plc.functions import (
+    NEVER,
+    FunctionContext,
+    executed_once_this_scan,
+    fits,
+    function,
+)
 from ladderworks.core.plc.memory import Memory
 
 TIMER_BYTES = 4  # seed: bytes of preset (ms, binary) per timer in the T area
@@ -81,6 +87,16 @@ def effective_preset(preset_ms: int, tick_ms: int) -> int:
     return max(preset_ms, 0) // tick_ms * tick_ms
 
 
+def reached(ctx: FunctionContext, state: dict, elapsed: int, preset_ms: int) -> bool:
+    """True once `elapsed` reaches `preset_ms`; until then the timer wakes the scan in which
+    it would (time that passes without a scan cannot be skipped past it)."""
+    if elapsed >= preset_ms:
+        ctx.wake(state)
+        return True
+    ctx.wake(state, ctx.now_ms + preset_ms - elapsed)
+    return False
+
+
 def elapsed_ms(ctx: FunctionContext, state: dict, running: bool) -> int | None:
     """ms the timer has run, counted only in scans that execute it; None (and reset) when it
     does not run."""
@@ -105,8 +121,9 @@ def tmr(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tup
     if elapsed is None:
         return False
     if ctx.dialect == "fanuc":
-        return elapsed >= fanuc_preset_ms(ctx.memory, number)
-    return elapsed >= effective_preset(read_timer_preset(ctx.memory, number), timer_tick(number))
+        return reached(ctx, state, elapsed, fanuc_preset_ms(ctx.memory, number))
+    return reached(ctx, state, elapsed,
+                   effective_preset(read_timer_preset(ctx.memory, number), timer_tick(number)))
 
 
 @function("TMRB")
@@ -116,7 +133,7 @@ def tmrb(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tu
     elapsed = elapsed_ms(ctx, state, inputs[-1])
     if elapsed is None:
         return False
-    return elapsed >= effective_preset(preset, FAST_TICK_MS)
+    return reached(ctx, state, elapsed, effective_preset(preset, FAST_TICK_MS))
 
 
 @function("TMRBF")
@@ -132,7 +149,7 @@ def tmrbf(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: t
         return False
     elapsed = elapsed_ms(ctx, state, True)
     assert elapsed is not None
-    if elapsed >= effective_preset(preset, FAST_TICK_MS):
+    if reached(ctx, state, elapsed, effective_preset(preset, FAST_TICK_MS)):
         state["on"] = False
         elapsed_ms(ctx, state, False)
     return bool(state["on"])
@@ -151,5 +168,7 @@ def tmrc(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tu
         return False
     preset = ctx.memory.read(preset_at, 2)
     units = min(elapsed // unit, preset)
+    # the register changes at the next unit, until the preset
+    ctx.wake(state, ctx.now_ms + unit - elapsed % unit if units < preset else NEVER)
     ctx.memory.write(register, units, 4)
     return units >= preset

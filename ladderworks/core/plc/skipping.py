@@ -1,0 +1,272 @@
+"""Scans skipped exactly: a program whose whole state repeats every p scans is not scanned
+again until something can differ (a timer's tick or preset, a clock relay's edge, the end
+of the run asked for); the skipped scans' effect is applied at once. docs/engine.md.
+
+The state is everything a scan reads: every byte of memory, every function call's state
+(timers, counters, edges), the DIFU/DIFD edge memories and the count of what the functions
+sent out (FUN 94's terminal). A scan is a function of that state, the forces and disabled
+elements (fixed while the engine's lock is held), the clock relays and the time the timers
+count. So if the state after scan k + p equals the state after scan k, except for the keys in
+`ACCUMULATORS` which grew by the same amount in every timer that runs, the scans after k + p
+repeat scans k + 1 .. k + p for as long as no timer reaches a tick or its preset (each says
+when: `FunctionContext.wake`) and no clock relay changes: those scans are skipped in whole
+cycles of p, and the accumulators moved on by what the skipped cycles would have added.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from math import lcm
+from typing import Any
+
+from ladderworks.core.address import Address, Area
+from ladderworks.core.compiler.binary import Op
+from ladderworks.core.plc.functions import NEVER, FunctionContext
+
+# state keys that hold time: they may grow between the two ends of a cycle ("at" is the scan
+# a call site last ran in; "elapsed" and "ms" the time a timer has counted)
+ACCUMULATORS = frozenset({"elapsed", "ms", "at"})
+MAX_PERIOD = 4  # the longest cycle looked for, in scans
+MAX_WAIT = 64  # scans between two tries at most, after tries whose states differed
+ROUNDS = 2  # a state is compared with the one at the start of one or two rounds before
+
+Clock = tuple[int, int]  # (period, time on) in ms; on while time % period < time on
+ClockRelay = tuple[Address, int, int]  # a clock's bit, period and time on
+Hidden = tuple[list[dict[str, Any]], dict[Any, bool], tuple[Any, ...]]
+
+
+def clock_change(after_ms: int, scan_ms: int, clocks: Iterable[Clock], limit_ms: int) -> int:
+    """The first scan time after `after_ms` (scans every `scan_ms`) at which a clock reads
+    otherwise than at `after_ms`; `limit_ms` when none does before it."""
+    best = limit_ms
+    for period, on in clocks:
+        was = after_ms % period < on
+        stop = min(best, after_ms + lcm(period, scan_ms) + period + 1)  # the pattern repeats
+        start = after_ms - after_ms % period
+        while start < stop:
+            for edge in (start + on, start + period):
+                if edge <= after_ms:
+                    continue
+                scan = after_ms + -(-(edge - after_ms) // scan_ms) * scan_ms  # first at/after
+                if scan < best and (scan % period < on) != was:
+                    best = scan
+            start += period
+    return best
+
+
+def clocks_read(ops: Iterable[Op], clocks: Iterable[ClockRelay], dialect: str
+                ) -> tuple[ClockRelay, ...]:
+    """The clocks whose bit an op reads (or may: an operand on it, a parameter whose extent
+    covers its byte, by the instruction table's widths); the others cannot change a scan."""
+    from ladderworks.core.xref import function_operands
+
+    clocks = tuple(clocks)
+    found: set[ClockRelay] = set()
+    for op in ops:
+        operand = op.operand
+        if operand is not None:
+            uses = [(operand, 0 if operand.is_bit else 1)]
+        elif any(isinstance(value, Address) for value in op.params):
+            uses = [(o.address, o.width) for o in function_operands(op.spec, op.params, dialect)]
+        else:
+            continue
+        for clock in clocks:
+            bit = clock[0]
+            for address, width in uses:
+                if address.area is not bit.area:
+                    continue
+                if (address.byte == bit.byte and (address.bit is None or address.bit == bit.bit)
+                        if width <= 1 else address.byte <= bit.byte < address.byte + width):
+                    found.add(clock)
+    return tuple(clock for clock in clocks if clock in found)
+
+
+@dataclass(slots=True)
+class _Seen:
+    """The state after one scan: memory, the states beside it, what its timers said."""
+
+    fingerprint: bytes
+    hidden: Hidden
+    alarms: int
+    at_ms: int  # the scan's time
+    wake_ms: int  # the earliest time a timer of the scan said it acts otherwise
+
+
+class CycleSkipper:
+    """Watches the scans of one run (`ScanEngine.advance`) and says how many to skip.
+
+    After each scan it keeps the state (memory as one bytes object, copies of the call sites'
+    states that hold anything) of the last `MAX_PERIOD` scans; a scan whose state equals one
+    of those (timers' time aside) closes a cycle.
+    """
+
+    def __init__(self, areas: Mapping[Area, bytearray], states: tuple[dict[str, Any], ...],
+                 ctx: FunctionContext, clocks: tuple[ClockRelay, ...], period_ms: int,
+                 divisions: int = 1, unread: tuple[ClockRelay, ...] = ()) -> None:
+        self._areas = tuple(areas.values())
+        self._states = states
+        self._ctx = ctx
+        self._clocks = tuple((period, on) for _bit, period, on in clocks)
+        offsets, at = {}, 0
+        for area, data in areas.items():
+            offsets[area], at = at, at + len(data)
+        # the bits of clocks no op reads, left out of the state (set from the time after a skip)
+        self._unread = tuple((offsets[bit.area] + bit.byte, 0xFF ^ (1 << (bit.bit or 0)))
+                             for bit, _period, _on in unread)
+        self._period = period_ms
+        self._lengths = tuple(p for p in range(1, MAX_PERIOD + 1) if p % divisions == 0)
+        # the clocks' common period (in whole level-2 cycles): the state at scans that far
+        # apart is compared, and a state that comes back skips whole such periods
+        self._round = lcm(*(period for period, _on in self._clocks), period_ms * divisions) \
+            if self._clocks else 0
+        # the states after the last scans at a round's start (one round, or two: a bit that
+        # flips every scan is the other way round after an odd number of scans)
+        self._marks: deque[_Seen] = deque(maxlen=ROUNDS)
+        self._ring: deque[_Seen] = deque(maxlen=MAX_PERIOD)
+        self._track()
+        self._wait = 0  # scans before the next try
+        self._misses = 0  # tries in a row whose states differed
+        self.skipped = 0  # scans skipped in this run
+        self.tries = 0  # cycles tried (figures for the benchmark)
+
+    def _track(self) -> None:
+        """Copy only the states that hold something: a state never empties within a run (only
+        a cold start clears them), so one empty at the end of a cycle was empty all along.
+        The states kept so far copied fewer: they are forgotten."""
+        self._held = [state for state in self._states if state]
+        self._empty = [state for state in self._states if not state]
+        self._ring.clear()
+        self._marks.clear()
+
+    def _hidden(self, live: bool = False) -> Hidden:
+        """The state beside memory: copies of the call sites' states, or the live ones."""
+        ctx = self._ctx
+        sent = tuple(getattr(value, "writes", None) for value in ctx.extra.values())
+        held = list(self._held) if live else [state.copy() for state in self._held]
+        return held, dict(ctx.edges), sent
+
+    def after_scan(self, next_ms: int, limit_ms: int, alarms: int) -> int:
+        """Called after each scan (`next_ms` the next scan's time, `alarms` the count of A-area
+        changes so far): how many of the scans due before `limit_ms` may be skipped now (their
+        timers already moved on)."""
+        ctx = self._ctx
+        wake, ctx.wake_ms = ctx.wake_ms, NEVER  # what this scan's timers said
+        fingerprint = b"".join(self._areas)
+        if self._unread:
+            masked = bytearray(fingerprint)
+            for at, keep in self._unread:
+                masked[at] &= keep
+            fingerprint = bytes(masked)
+        ring = self._ring
+        last_ms = next_ms - self._period
+        if self._round and last_ms % self._round == 0:  # a round begins: compare with the last
+            skipped = self._close_round(fingerprint, wake, last_ms, limit_ms, alarms)
+            if skipped:
+                return skipped
+        skipped = 0
+        if self._wait:
+            self._wait -= 1
+        else:
+            for length in self._lengths:
+                if length <= len(ring) and ring[-length].fingerprint == fingerprint:
+                    self.tries += 1
+                    skipped = self._close(length, wake, next_ms, limit_ms, alarms)
+                    break
+        if not skipped:
+            ring.append(_Seen(fingerprint, self._hidden(), alarms, last_ms, wake))
+        return skipped
+
+    def _close_round(self, fingerprint: bytes, wake: int, last_ms: int, limit_ms: int,
+                     alarms: int) -> int:
+        """At a round's first scan: the scans of whole spans of rounds to skip when the state
+        at the first scan of one or two rounds before came back (timers aside).
+
+        The clocks repeat every round, so a state that comes back repeats the span for as
+        long as no timer whose time grows over it reaches its next tick or preset (its
+        "wake", in its state) and the A area changed nowhere in it.
+        """
+        marks = self._marks
+        if marks and marks[-1].at_ms != last_ms - self._round:
+            marks.clear()  # a skip or a run in between: not consecutive rounds
+        seen = _Seen(fingerprint, self._hidden(), alarms, last_ms, wake)
+        for back in range(1, len(marks) + 1):
+            mark = marks[-back]
+            if mark.alarms != alarms or mark.fingerprint != fingerprint:
+                continue
+            if any(self._empty):
+                self._track()
+                return 0
+            growth = _growth(mark.hidden, self._hidden(live=True))
+            if growth is None:
+                continue
+            span = back * self._round
+            horizon = min([limit_ms, *(state.get("wake", last_ms)
+                                       for state, key, _step in growth if key != "at")])
+            spans = max(0, (horizon - 1 - last_ms) // span)  # a timer that said nothing: 0
+            if not spans:
+                break
+            for state, key, step in growth:
+                state[key] += step * spans
+            skipped = spans * span // self._period
+            self.skipped += skipped
+            self._ring.clear()
+            marks.clear()
+            return skipped
+        marks.append(seen)
+        return 0
+
+    def _close(self, length: int, wake: int, next_ms: int, limit_ms: int, alarms: int) -> int:
+        """The scans to skip when the state `length` scans ago came back (timers aside), no
+        clock changed and nothing changed the A area since: whole cycles up to the horizon."""
+        ring = self._ring
+        first = ring[-length]
+        period = self._period
+        last_ms = next_ms - period
+        growth = None
+        if (alarms == first.alarms and clock_change(first.at_ms, period, self._clocks, NEVER)
+                > last_ms):
+            if any(self._empty):  # a call site ran for the first time: copy it from now on
+                self._track()
+            else:
+                growth = _growth(first.hidden, self._hidden(live=True))
+        if growth is None:
+            self._misses += 1
+            self._wait = min(MAX_WAIT, (1 << self._misses) - 1)
+            return 0
+        self._misses = 0
+        wakes = min([wake, *(seen.wake_ms for seen in list(ring)[-length:])])
+        horizon = min(wakes, limit_ms, clock_change(last_ms, period, self._clocks, limit_ms))
+        if self._round:  # the next round's first scan runs: it is compared with this one's
+            horizon = min(horizon, last_ms - last_ms % self._round + self._round)
+        cycles = max(0, -(-(horizon - next_ms) // period)) // length
+        if cycles:
+            for state, key, step in growth:
+                state[key] += step * cycles
+            self.skipped += cycles * length
+            ring.clear()  # their times are past: the next cycle is found from scans to come
+        return cycles * length
+
+
+def _growth(before: Hidden, after: Hidden) -> list[tuple[dict[str, Any], str, int]] | None:
+    """What each accumulator grew by from `before` to `after` (the states of `after` are the
+    live ones), or None when anything else differs."""
+    states, edges, sent = before
+    live, edges_after, sent_after = after
+    if edges != edges_after or sent != sent_after:
+        return None
+    growth = []
+    for old, new in zip(states, live, strict=True):
+        if old == new:
+            continue
+        if old.keys() != new.keys():
+            return None
+        for key, value in new.items():
+            was = old[key]
+            if value == was:
+                continue
+            if key not in ACCUMULATORS or type(value) is not int or type(was) is not int:
+                return None
+            growth.append((new, key, value - was))
+    return growth
