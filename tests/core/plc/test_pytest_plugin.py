@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+# imported before pytester's inline runs: their modules leave sys.modules after each, and a
+# process pool made later with a second copy of these cannot pickle its worker function
+import concurrent.futures.process  # noqa: F401
 import shutil
 import subprocess
 import sys
@@ -10,6 +13,7 @@ from pathlib import Path
 import pytest
 
 import ladderworks
+import ladderworks.core.plc.scenario_batch
 from tests.core.plc.conftest import EXAMPLES
 
 pytest_plugins = ["pytester"]
