@@ -51,6 +51,11 @@ class Dialect:
     families: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     # the compiler checks' codes said in the dialect's words (sp-without-spe: its SRET)
     codes: Mapping[str, str] = field(default_factory=dict)
+    # "module:function": (row, typed operand texts) -> the lines of the dialect's text that read
+    # as that row with those operands (the function dialog checks them so: dialects/functions)
+    probe: str = ""
+    # "module:function": (row, params) -> the texts the function dialog shows, one an operand
+    operand_texts: str = ""
 
     def read(self, text: str, form: TextForm, lines: list[str],
              ends: list[str]) -> tuple[Program, list[Diagnostic]]:

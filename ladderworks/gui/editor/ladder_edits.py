@@ -12,6 +12,7 @@ from PySide6.QtWidgets import QApplication
 from ladderworks.core import ladder as core
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
+from ladderworks.core.dialects.functions import is_contact
 from ladderworks.core.il import Instruction
 from ladderworks.core.instructions import FUNCTIONS, lookup
 from ladderworks.core.ladder import (
@@ -140,9 +141,13 @@ class LadderEdits:
     def open_function_dialog(
         self, index: int, row: int, col: int, name: str, box: FunctionBox | None = None
     ) -> None:
-        """The function property table; on OK the box is placed (or its parameters set)."""
+        """The function property table; on OK the box is placed (or its parameters set). A
+        dialect's edge or comparison row (`is_contact`) is placed as a contact."""
         spec = box.spec if box is not None else lookup(name)
         if spec is None:
+            return
+        if is_contact(spec):
+            self.open_contact_dialog(index, row, col, spec.name)
             return
         grid = self.grid
         current = Instruction(box.name, params=box.params) if box is not None else None
@@ -170,6 +175,42 @@ class LadderEdits:
                         core.set_comment(network, row, col, dialog.comment_text)
 
                 self.run_edit(index, params_and_comment,  # one step: parameters and comment
+                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"),
+                                          spec.name))
+            grid.setFocus()
+
+        dialog.accepted.connect(done)
+        dialog.open()
+
+    def open_contact_dialog(self, index: int, row: int, col: int, name: str,
+                            contact: Contact | None = None) -> None:
+        """The operands of a dialect's edge or comparison contact (row `name`); on OK the
+        contact is placed at the cell (or, given `contact`, its operands and comment set)."""
+        spec = lookup(contact.function if contact is not None else name)
+        if spec is None:
+            return
+        grid = self.grid
+        current = Instruction(spec.name, params=contact.params) if contact is not None else None
+        dialog = FunctionDialog(spec, current, grid, contact.comment if contact else "",
+                                grid.model.dialect)
+        self.function_dialog = dialog
+
+        def done() -> None:
+            instruction = dialog.instruction
+            if instruction is None:
+                return
+            if contact is None:
+                element = Contact(None, False, dialog.comment_text, (), spec.name,
+                                  instruction.params)
+                if self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
+                                 editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
+                                             spec.name)):
+                    grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
+                                                            element))
+            else:
+                changed = replace(contact, params=instruction.params,
+                                  comment=dialog.comment_text)
+                self.run_edit(index, lambda n: core.replace_element(n, row, col, changed),
                               editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"),
                                           spec.name))
             grid.setFocus()

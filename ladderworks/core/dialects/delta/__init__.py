@@ -66,6 +66,7 @@ DIALECT = Dialect(
     period_ms=10, extensions=(".dvp", ".il", ".txt"),
     namer="ladderworks.core.dialects.delta.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.delta.printer:spelling", families=FAMILIES,
+    probe="ladderworks.core.dialects.delta.editing:probe_lines",
     codes={"sp-without-spe": "dvp-missing-sret", "spe-without-sp": "dvp-sret-alone",
            "outside-subprogram": "dvp-outside-subroutine", "label-missing": "dvp-pointer-missing",
            "call-missing": "dvp-call-missing", "no-logic": "dvp-no-logic",

@@ -35,4 +35,6 @@ DIALECT = Dialect(
     printer="ladderworks.core.dialects.fatek.printer:network_lines", relays=relays,
     period_ms=10, extensions=(".lst", ".fbs"),
     namer="ladderworks.core.dialects.fatek.printer:mnemonic_of",
-    spelling="ladderworks.core.dialects.fatek.printer:spelling", families=FAMILIES)
+    spelling="ladderworks.core.dialects.fatek.printer:spelling", families=FAMILIES,
+    probe="ladderworks.core.dialects.fatek.editing:probe_lines",
+    operand_texts="ladderworks.core.dialects.fatek.editing:operand_texts")
