@@ -146,7 +146,7 @@ def add_parallel(network: LadderNetwork, row: int, col: int,
         raise EditRefused("edit-no-element", (row, col), row=row, col=col)
     (row, col), old = found
     new = element if element is not None else (
-        Coil(write=old.write) if isinstance(old, Coil) else Contact())
+        Coil(write=old.write, row=old.row) if isinstance(old, Coil) else Contact())
     work = network.copy()
     if row + 1 < work.rows and work.element_at(row + 1, col) is not None:
         _insert_row(work, row + 1)

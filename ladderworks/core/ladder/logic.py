@@ -13,6 +13,7 @@ from ladderworks.core.instructions import (
     Kind,
     StackOp,
     Write,
+    lookup,
 )
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox
 from ladderworks.core.ladder.row_contacts import contact_combine, row_for
@@ -160,7 +161,11 @@ def first_cell(logic: Logic) -> tuple[int, int]:
 
 
 def coil_spec(coil: Coil) -> InstructionSpec:
-    """The coil's row of the table: WRT, WRT.NOT, SET or RST."""
+    """The coil's row of the table: WRT, WRT.NOT, SET or RST; a dialect's own row it was read
+    with (Fatek's OUT L) when it has one."""
+    own = lookup(coil.row) if coil.row else None
+    if own is not None and own.write is coil.write and own.negated == coil.negated:
+        return own
     return _basic(Combine.NONE, coil.write, coil.negated and coil.write is Write.OUT, 0, True)
 
 
@@ -314,7 +319,8 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             phase = "coils"
             if ins.operand is None:
                 raise Undrawable(name)
-            coil = Coil(ins.operand, spec.negated, ins.comment, ins.lead, spec.write)
+            coil = Coil(ins.operand, spec.negated, ins.comment, ins.lead, spec.write,
+                        name if spec.dialect else "")  # a dialect's own coil row: kept
             (rung.branches[-1][1] if branching else rung.chain[-1][1] if rung.chain
              else rung.coils).append(coil)
             continue

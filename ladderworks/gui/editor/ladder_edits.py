@@ -113,7 +113,8 @@ class LadderEdits:
             old = found[1]
             assert isinstance(old, Contact | Coil)
             if isinstance(old, Coil) and isinstance(element, Coil) and old.write != element.write:
-                kind = replace(old, negated=element.negated, write=element.write)
+                kind = replace(old, negated=element.negated, write=element.write,
+                               row=element.row)
                 self.run_edit(index, lambda n: core.replace_element(n, row, col, kind),
                               PLACE_COIL)
             elif old.negated != element.negated:

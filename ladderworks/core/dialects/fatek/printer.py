@@ -96,6 +96,8 @@ def instruction_lines(instructions: list[Instruction], index: int, first: bool
     if spec.kind is Kind.BASIC:
         operand = ins.operand
         if spec.write is not Write.NONE:
+            if spec.dialect:  # Fatek's own coil row: OUT L
+                return [_line(spec.text_name, device_text(operand))], index + 1
             if spec.write is Write.SET:
                 return [_line("OUTS", device_text(operand))], index + 1
             if spec.write is Write.RESET:
