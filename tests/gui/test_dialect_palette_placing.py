@@ -233,6 +233,10 @@ def test_fatek_boxes_and_contacts_placed_run_and_save(qtbot: QtBot, window: Main
     _place(qtbot, window, end + 3, (0, 1), "FBS.TU", ["X14"])
     contact = model.networks[end + 3].cells[(0, 1)]
     assert isinstance(contact, Contact) and contact.function == "FBS.TU"
+    fo_bytes = [dict(zip((p.name for p in c.spec.params), c.params, strict=False)).get("fo")
+                for n in model.networks for c in n.cells.values() if isinstance(c, FunctionBox)]
+    fo_bytes = [fo for fo in fo_bytes if fo is not None]
+    assert len(fo_bytes) == len(set(fo_bytes)) > 4  # each placed box its own FO byte
     _compile_and_start(qtbot, window)
     session = window.plc_docks.session
     r10, r11, r12 = (_device(t, "fatek") for t in ("R10", "R11", "R12"))

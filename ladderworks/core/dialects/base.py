@@ -56,6 +56,9 @@ class Dialect:
     probe: str = ""
     # "module:function": (row, params) -> the texts the function dialog shows, one an operand
     operand_texts: str = ""
+    # "module:function": (row, params, the program's other boxes as (row, params)) -> the
+    # params of a box placed in the editor (Fatek: an FO byte no other box has)
+    placed: str = ""
 
     def read(self, text: str, form: TextForm, lines: list[str],
              ends: list[str]) -> tuple[Program, list[Diagnostic]]:

@@ -3,7 +3,7 @@ operands checked by its reader."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from functools import cache
 
 from ladderworks.core import dialects
@@ -185,3 +185,15 @@ def _indexed(diagnostic: Diagnostic, texts: list[str]) -> Diagnostic:
         if typed.strip() and typed.strip().upper() == text.strip().upper():
             return replace(diagnostic, args={**diagnostic.args, "index": index + 1})
     return diagnostic
+
+
+def placed_params(spec: InstructionSpec, params: tuple[ParamValue, ...],
+                  others: Iterable[tuple[InstructionSpec, tuple[ParamValue, ...]]]
+                  ) -> tuple[ParamValue, ...]:
+    """The params of a box of `spec` placed in a program whose other boxes are `others`, as
+    its dialect gives them (Fatek: its own FO byte); unchanged for a dialect without."""
+    found = dialects.get(spec.dialect)
+    if found is None or not found.placed:
+        return params
+    placed: Callable[..., tuple[ParamValue, ...]] = found.function(found.placed)  # type: ignore
+    return placed(spec, params, others)

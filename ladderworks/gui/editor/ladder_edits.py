@@ -12,7 +12,7 @@ from PySide6.QtWidgets import QApplication
 from ladderworks.core import ladder as core
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
-from ladderworks.core.dialects.functions import is_contact
+from ladderworks.core.dialects.functions import is_contact, placed_params
 from ladderworks.core.il import Instruction
 from ladderworks.core.instructions import FUNCTIONS, lookup
 from ladderworks.core.ladder import (
@@ -161,7 +161,10 @@ class LadderEdits:
             if instruction is None:
                 return
             if box is None:
-                element = FunctionBox.new(spec.name, instruction.params, dialog.comment_text)
+                others = [(cell.spec, cell.params) for network in grid.networks
+                          for cell in network.cells.values() if isinstance(cell, FunctionBox)]
+                params = placed_params(spec, instruction.params, others)  # Fatek: its FO byte
+                element = FunctionBox.new(spec.name, params, dialog.comment_text)
                 if self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
                                  editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
                                              spec.name)):

@@ -37,4 +37,5 @@ DIALECT = Dialect(
     namer="ladderworks.core.dialects.fatek.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.fatek.printer:spelling", families=FAMILIES,
     probe="ladderworks.core.dialects.fatek.editing:probe_lines",
-    operand_texts="ladderworks.core.dialects.fatek.editing:operand_texts")
+    operand_texts="ladderworks.core.dialects.fatek.editing:operand_texts",
+    placed="ladderworks.core.dialects.fatek.editing:placed_params")

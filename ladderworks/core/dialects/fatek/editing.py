@@ -3,7 +3,10 @@ operands, checked as the listing lines WinProladder prints for them (`FUN 11P (+
 
 from __future__ import annotations
 
-from ladderworks.core.dialects.fatek.printer import params_text
+from collections.abc import Iterable
+
+from ladderworks.core.dialects.fatek.devices import FO_BOXES, fo_address
+from ladderworks.core.dialects.fatek.printer import LABELS, params_text
 from ladderworks.core.dialects.fatek.rows import OTHER, SUB_BASE
 from ladderworks.core.il.program import ParamValue
 from ladderworks.core.instructions import InstructionSpec, Operation
@@ -25,8 +28,7 @@ def _labels(spec: InstructionSpec) -> list[str]:
     for param in spec.params:
         if param.name in _HIDDEN:
             continue
-        labels.append({"output": "D", "counter": "CV", "preset": "PV"}.get(param.name,
-                                                                         param.name))
+        labels.append(LABELS.get(param.name, param.name))
     return labels
 
 
@@ -59,3 +61,25 @@ def probe_lines(spec: InstructionSpec, texts: list[str]) -> list[str]:
                                                                      strict=False) if value]
         return ["ORG X0", f"FUN {fun}{forms} {spec.text_name}", *operands]
     return ["ORG X0", " ".join([spec.text_name, *(v for v in values if v)])]
+
+
+FO = "fo"  # a box's FO byte parameter (core/dialects/fatek/rows.py)
+
+
+def placed_params(spec: InstructionSpec, params: tuple[ParamValue, ...],
+                  others: Iterable[tuple[InstructionSpec, tuple[ParamValue, ...]]]
+                  ) -> tuple[ParamValue, ...]:
+    """A box placed in the editor gets the first FO byte no other box of the program has (the
+    reader numbers them by position; a save and a new reading number them so again)."""
+    names = [param.name for param in spec.params]
+    if FO not in names:
+        return params
+    taken = set()
+    for other, values in others:
+        named = dict(zip((p.name for p in other.params), values, strict=False))
+        if FO in named:
+            taken.add(named[FO])
+    index = next((k for k in range(FO_BOXES) if fo_address(k) not in taken), FO_BOXES - 1)
+    chosen = list(params)
+    chosen[names.index(FO)] = fo_address(index)
+    return tuple(chosen)

@@ -12,6 +12,8 @@ from ladderworks.core.il.program import Instruction, Network
 from ladderworks.core.instructions import Combine, InstructionSpec, Kind, Write
 
 WIDTH = 9  # the mnemonic column, as WinProladder prints it
+# an operand line's label where it is not the parameter's name (`D : R1`, `CV: C0`, `PV: 10`)
+LABELS = {"output": "D", "counter": "CV", "preset": "PV"}
 _CONTACT_BOXES = {"FBS.TU": "TU", "FBS.TD": "TD"}
 _COMPARE_BOXES = frozenset(("FBS.EQ", "FBS.GT", "FBS.LT", "FBS.NE", "FBS.GE", "FBS.LE"))
 
@@ -81,7 +83,7 @@ def _box_lines(ins: Instruction) -> list[str]:
         if param.name == "counter":
             lines.append(f"    CV: C{values['counter']}")
             continue
-        label = "D" if param.name == "output" else param.name  # the destination, Fatek's D
+        label = LABELS.get(param.name, param.name)  # the destination is Fatek's D
         lines.append(f"    {label:<2}: {device_text(values[param.name])}")
     return lines
 
