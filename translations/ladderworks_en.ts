@@ -1566,7 +1566,7 @@
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="123"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="124"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
@@ -1576,12 +1576,12 @@
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="134"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="138"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="139"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -1596,14 +1596,14 @@
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="165"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="206"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="169"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="210"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="178"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="214"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="182"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="218"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
@@ -1624,17 +1624,17 @@
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="281"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="285"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="293"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="297"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="303"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="307"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
@@ -1649,7 +1649,7 @@
         <translation>open circuit here: draw a wire or an element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="67"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="73"/>
         <source>N{0}</source>
         <translation>N{0}</translation>
     </message>
@@ -2517,7 +2517,52 @@
         <translation>Number of messages</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/translation.py" line="92"/>
+        <source>Form (P, D)</source>
+        <translation>Form (P, D)</translation>
+    </message>
+    <message>
         <location filename="../ladderworks/gui/translation.py" line="93"/>
+        <source>Nesting level (N0-N7)</source>
+        <translation>Nesting level (N0-N7)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="94"/>
+        <source>Device</source>
+        <translation>Device</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="95"/>
+        <source>Timer or counter (T5, C3)</source>
+        <translation>Timer or counter (T5, C3)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="96"/>
+        <source>Source 1</source>
+        <translation>Source 1</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="97"/>
+        <source>Source 2</source>
+        <translation>Source 2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="98"/>
+        <source>Source</source>
+        <translation>Source</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="99"/>
+        <source>Lower limit</source>
+        <translation>Lower limit</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="100"/>
+        <source>Upper limit</source>
+        <translation>Upper limit</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="103"/>
         <source>Parameter {0}</source>
         <translation>Parameter {0}</translation>
     </message>

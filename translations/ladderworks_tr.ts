@@ -1566,7 +1566,7 @@
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="123"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="124"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
@@ -1576,12 +1576,12 @@
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="134"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="138"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="139"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -1596,14 +1596,14 @@
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="165"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="206"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="169"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="210"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="178"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="214"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="182"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="218"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
@@ -1624,17 +1624,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="281"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="285"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="293"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="297"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="303"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="307"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -1649,7 +1649,7 @@
         <translation>devre burada açık: bir çizgi veya bir eleman çizin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="67"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="73"/>
         <source>N{0}</source>
         <translation>D{0}</translation>
     </message>
@@ -2517,7 +2517,52 @@
         <translation>Mesaj sayısı</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/translation.py" line="92"/>
+        <source>Form (P, D)</source>
+        <translation>Biçim (P, D)</translation>
+    </message>
+    <message>
         <location filename="../ladderworks/gui/translation.py" line="93"/>
+        <source>Nesting level (N0-N7)</source>
+        <translation>İç içelik düzeyi (N0-N7)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="94"/>
+        <source>Device</source>
+        <translation>Cihaz</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="95"/>
+        <source>Timer or counter (T5, C3)</source>
+        <translation>Zamanlayıcı ya da sayıcı (T5, C3)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="96"/>
+        <source>Source 1</source>
+        <translation>Kaynak 1</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="97"/>
+        <source>Source 2</source>
+        <translation>Kaynak 2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="98"/>
+        <source>Source</source>
+        <translation>Kaynak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="99"/>
+        <source>Lower limit</source>
+        <translation>Alt sınır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="100"/>
+        <source>Upper limit</source>
+        <translation>Üst sınır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="103"/>
         <source>Parameter {0}</source>
         <translation>Parametre {0}</translation>
     </message>
