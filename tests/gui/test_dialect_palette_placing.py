@@ -16,6 +16,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.dialects import parse_target
 from ladderworks.core.il.reading import parse_file
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
+from ladderworks.core.ladder.row_contacts import ALWAYS_ON
 from ladderworks.gui.main_window import MainWindow
 
 
@@ -233,6 +234,11 @@ def test_fatek_boxes_and_contacts_placed_run_and_save(qtbot: QtBot, window: Main
     _place(qtbot, window, end + 3, (0, 1), "FBS.TU", ["X14"])
     contact = model.networks[end + 3].cells[(0, 1)]
     assert isinstance(contact, Contact) and contact.function == "FBS.TU"
+    model.insert_network(end + 4, _rung("fatek", None, "Y21"))
+    _place(qtbot, window, end + 4, (0, 0), "FBS.TD", ["X15"])  # on the rail: after SHORT
+    short, falling = (model.networks[end + 4].cells[(0, c)] for c in (0, 1))
+    assert isinstance(short, Contact) and short.address == ALWAYS_ON
+    assert isinstance(falling, Contact) and falling.function == "FBS.TD"
     fo_bytes = [dict(zip((p.name for p in c.spec.params), c.params, strict=False)).get("fo")
                 for n in model.networks for c in n.cells.values() if isinstance(c, FunctionBox)]
     fo_bytes = [fo for fo in fo_bytes if fo is not None]
@@ -257,6 +263,14 @@ def test_fatek_boxes_and_contacts_placed_run_and_save(qtbot: QtBot, window: Main
     session.set_bit(_device("X12", "fatek"), 1)
     session.run_scans(1)
     assert session.run.read(c0, 2) == 0  # RST C0
+    x15, y21 = _device("X15", "fatek"), _device("Y21", "fatek")
+    session.set_bit(x15, 1)
+    session.run_scans(1)
+    session.set_bit(x15, 0)
+    session.run_scans(1)
+    assert session.run.bit(y21) == 1  # TD: one scan after X15 fell
+    session.run_scans(1)
+    assert session.run.bit(y21) == 0
     y20 = _device("Y20", "fatek")
     session.set_bit(_device("X13", "fatek"), 1)
     session.set_bit(_device("X14", "fatek"), 1)
@@ -271,12 +285,12 @@ def test_fatek_boxes_and_contacts_placed_run_and_save(qtbot: QtBot, window: Main
     assert data.startswith(head)  # the rest byte for byte (CRLF/LF, headers, step numbers)
     text = data.decode("utf-8")
     for line in ("FUN 11   (+)", "    Sa: R10", "    Sb: 5", "    D : R11", "FUN 15P  (+1)",
-                 "    D : R12", "RST      C0", "AND TU   X14"):
+                 "    D : R12", "RST      C0", "AND TU   X14", "ORG TD   X15"):
         assert line in text.splitlines(), line
     result = parse_file(copy)
     assert result.ok, result.diagnostics
     found = {i.name: i for i in result.program.instructions()}
-    assert {"FBS.ADD", "FBS.INC", "FBS.RST", "FBS.TU"} <= set(found)
+    assert {"FBS.ADD", "FBS.INC", "FBS.RST", "FBS.TU", "FBS.TD"} <= set(found)
     assert found["FBS.INC"].param_map()["mode"] == 1
     assert window.load(copy)  # re-opened and drawn
 

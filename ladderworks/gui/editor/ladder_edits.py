@@ -206,7 +206,7 @@ class LadderEdits:
             if contact is None:
                 element = Contact(None, False, dialog.comment_text, (), spec.name,
                                   instruction.params)
-                if self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
+                if self.run_edit(index, lambda n: core.place_row_contact(n, row, col, element),
                                  editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
                                              spec.name)):
                     grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
