@@ -135,12 +135,14 @@ def _reduce(edges: list[_Edge], left: int, target: int) -> Logic | _Edge:
     return min(inner or edges, key=lambda e: e.cell)
 
 
-def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "seed"
-              ) -> tuple[Rung | None, list[Diagnostic]]:
+def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "seed",
+              branches: bool = False) -> tuple[Rung | None, list[Diagnostic]]:
     """The network's meaning, or None with diagnostics at the cells (None, [] when empty).
 
-    Box parameters are checked with the ranges of the program's `dialect` ("seed"/"fanuc")."""
-    rung, diags = _read_grid(network, index, dialect)
+    Box parameters are checked with the ranges of the program's `dialect` ("seed"/"fanuc").
+    `branches`: coils on several points read as MPS/MRD/MPP branches even where they read
+    as an output chain too (a branch whose coils hang on the branch point)."""
+    rung, diags = _read_grid(network, index, dialect, branches)
     if rung is not None:
         try:
             code_rung(rung)
@@ -151,8 +153,8 @@ def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "
     return rung, diags
 
 
-def _read_grid(network: LadderNetwork, index: int | None, dialect: str
-               ) -> tuple[Rung | None, list[Diagnostic]]:
+def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
+               branches: bool = False) -> tuple[Rung | None, list[Diagnostic]]:
     """read_grid without the check that each dialect contact can be coded where it stands."""
     diags: list[Diagnostic] = []
 
@@ -253,7 +255,8 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str
     if box is None:
         if len(targets) > 1 and stack_row(StackOp.DUP, dialect) is not None:
             chain, _ = _read_chain(left, targets, useful, coils, lambda *a, **k: None, [])
-            branched = _read_branches(left, targets, useful, coils) if chain is None else None
+            branched = (_read_branches(left, targets, useful, coils)
+                        if chain is None or branches else None)
             if branched is not None:
                 _check_depth(branched, report)
                 return (None if has_errors(diags) else branched), diags
@@ -425,10 +428,18 @@ def network_to_instructions(network: LadderNetwork, index: int | None = None,
     code = code_rung(rung)
     if network.source is not None:
         try:
-            original = code_rung(read_rung(network.source))
+            was = read_rung(network.source)
         except Undrawable:
-            original = None
+            was = None
+        original = code_rung(was) if was is not None else None
         if original == code:
             return list(network.source), diags
+        if was is not None and was.branches and stack_row(StackOp.DUP, dialect) is not None:
+            # read from MPS/MRD/MPP branches: a branch on the branch point reads as an output
+            # chain too; the branches are kept (changed or not)
+            branched, _ = read_grid(network, index, dialect, branches=True)
+            if branched is not None:
+                again = code_rung(branched)
+                return (list(network.source) if again == original else again), diags
     return code, diags
 

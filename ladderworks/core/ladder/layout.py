@@ -151,8 +151,8 @@ def layout_network(instructions: list[Instruction] | tuple[Instruction, ...],
     if net.columns > MAX_COLUMNS or net.rows > MAX_ROWS:
         return LadderNetwork(columns, 1, comments=comments, listing=tuple(instructions))
     net.comments = comments
-    if code_rung(rung) != list(instructions):
-        net.source = tuple(instructions)
+    if code_rung(rung) != list(instructions) or any(block is None for block, _ in rung.branches):
+        net.source = tuple(instructions)  # a branch on its branch point reads as a chain too
     return net
 
 

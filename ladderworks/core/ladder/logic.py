@@ -265,11 +265,12 @@ def _join(stack: list[Logic], contact: Contact, combine: Combine, pushes: int, n
                  else parallel(top, Leaf(contact)))
 
 
-def _branch_block(stack: list[Logic], name: str) -> Logic:
-    """A stack branch's block read since its MPS / MRD / MPP (it must have one)."""
+def _branch_block(stack: list[Logic], name: str) -> Logic | None:
+    """A stack branch's block read since its MPS / MRD / MPP; None for coils on the branch
+    point itself (`MPP / OUT y`: drawn as a branch of wire; layout keeps the coding)."""
     top = stack[0] if len(stack) == 1 else None
-    if top is _PREVIOUS:  # coils on the branch point: the grid reads that as an output chain
-        raise Undrawable(name)
+    if top is _PREVIOUS:
+        return None
     if not isinstance(top, Series) or top.items[0] is not _PREVIOUS:
         raise Undrawable(name)
     rest = top.items[1:]

@@ -3,15 +3,17 @@ from the grid to the same instructions; what has no such picture stays a list.""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
 from ladderworks.core.compiler import compile
 from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.layout import layout_network
-from ladderworks.core.ladder.model import Coil
+from ladderworks.core.ladder.model import Coil, Contact
 from ladderworks.core.plc.engine import ScanEngine
 
-from .conftest import delta, get, put
+from .conftest import bit_of, delta, get, put
 
 DRAWN = [
     "LD X0\nMPS\nAND X1\nOUT Y0\nMRD\nAND X2\nOUT Y1\nMPP\nANI X3\nOUT Y2\nEND\n",
@@ -19,7 +21,6 @@ DRAWN = [
     "LD X0\nMPS\nLD X1\nOR X2\nANB\nOUT Y0\nMPP\nAND= D0 K1\nOUT Y2\nEND\n",
 ]
 LISTS = [
-    "LD X0\nOR X5\nMPS\nAND X1\nOUT Y0\nMPP\nOUT Y2\nEND\n",  # coils on the branch point
     "LD X0\nMPS\nAND X1\nMPS\nAND X2\nOUT Y0\nMPP\nOUT Y1\nMPP\nOUT Y2\nEND\n",  # nested
     "LD X0\nMPS\nAND X1\nOUT Y0\nEND\n",  # no MPP
     "LD X0\nINV\nOUT Y0\nEND\n",
@@ -61,3 +62,46 @@ def test_the_drawn_branches_run_as_written() -> None:
         plc.scan()
         assert (get(plc, "Y0"), get(plc, "Y1"), get(plc, "Y2")) == (
             x0 & x1, x0 & x2, x0 & (1 - x3))
+
+
+ON_THE_POINT = [
+    "LD X0\nOR X5\nMPS\nAND X1\nOUT Y0\nMPP\nOUT Y2\nEND\n",
+    "LD X0\nMPS\nOUT Y2\nMPP\nAND X1\nOUT Y0\nEND\n",
+    "LD X0\nMPS\nAND X1\nOUT Y0\nMRD\nOUT Y3\nMPP\nANI X2\nOUT Y2\nEND\n",
+]
+
+
+@pytest.mark.parametrize("text", ON_THE_POINT)
+def test_a_branch_without_contacts_is_drawn_and_kept(text: str) -> None:
+    """Coils on the branch point itself: a branch of wire from the point (the same picture as
+    an output chain, so the coding is kept in `source` and read back as branches)."""
+    code = list(delta(text).networks[0].instructions)
+    net = layout_network(code)
+    assert net.listing is None and net.source == tuple(code)
+    coils = [cell for cell, e in net.elements() if isinstance(e, Coil)]
+    assert len({row for row, _ in coils}) == len(coils) == text.count("OUT")
+    back, diags = network_to_instructions(net, dialect="delta")
+    assert not diags and back == code
+
+
+def test_an_edited_branch_network_keeps_its_branches() -> None:
+    code = list(delta(ON_THE_POINT[0]).networks[0].instructions)
+    net = layout_network(code)
+    x1 = bit_of("X1")
+    cell = next(c for c, e in net.elements() if isinstance(e, Contact) and e.address == x1)
+    net.cells[cell] = replace(net.cells[cell], address=bit_of("X7"))  # type: ignore[arg-type]
+    back, diags = network_to_instructions(net, dialect="delta")
+    assert not diags and back is not None
+    names = [i.name for i in back]
+    assert names == [i.name for i in code]  # MPS … MPP, not an output chain
+    assert back[3].operand == bit_of("X7")
+    program = delta(ON_THE_POINT[0])
+    program.networks[0].instructions[:] = back
+    plc = ScanEngine(compile(program))
+    put(plc, "X0", 1)
+    put(plc, "X7", 1)
+    plc.scan()
+    assert (get(plc, "Y0"), get(plc, "Y2")) == (1, 1)
+    put(plc, "X7", 0)
+    plc.scan()
+    assert (get(plc, "Y0"), get(plc, "Y2")) == (0, 1)
