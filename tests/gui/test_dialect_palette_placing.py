@@ -69,7 +69,7 @@ def _compile_and_start(qtbot: QtBot, window: MainWindow) -> None:
     session = window.plc_docks.session
     session.run.realtime = False
     qtbot.keyClick(window, Qt.Key.Key_F9)
-    assert session.run.engine is not None, window.errors.diagnostics
+    assert session.run.engine is not None, window.errors.diagnostics()
     start = window.findChild(QAction, "action_plc_start")
     assert start is not None
     start.trigger()
@@ -311,3 +311,17 @@ def test_bad_operand_marks_its_row(qtbot: QtBot, window: MainWindow) -> None:
     assert dialog.table.currentRow() == 2  # the D row is marked
     dialog.reject()
     assert not any(isinstance(c, FunctionBox) for c in window.model.networks[end].cells.values())
+
+
+def test_a_jump_to_a_missing_pointer_is_diagnosed_at_its_network(qtbot: QtBot, window: MainWindow,
+                                                            tmp_path: Path) -> None:
+    copy = _copy(tmp_path, "delta", "timer_t0.txt")
+    assert window.load(copy)
+    end = _end(window)
+    window.model.insert_network(end, _rung("delta", "X3", None))
+    _place(qtbot, window, end, (0, 1), "DVP.CJ", ["P9"])  # no P9 in the program
+    qtbot.keyClick(window, Qt.Key.Key_F9)
+    found = [d for d in window.errors.diagnostics() if d.is_error]
+    assert [d.code for d in found] == ["dvp-pointer-missing"]
+    assert found[0].network == end  # the compiler's structure check names the network
+    assert window.plc_docks.session.run.engine is None  # not loaded
