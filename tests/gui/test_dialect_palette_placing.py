@@ -113,6 +113,7 @@ def test_delta_contacts_placed_run_and_save(qtbot: QtBot, window: MainWindow,
     _place(qtbot, window, end, (0, 0), "DVP.LD=", ["D0", "K5"])  # on the rail: LD=
     window.model.insert_network(end + 1, _rung("delta", "X1", "Y2", first=2))
     _place(qtbot, window, end + 1, (0, 1), "DVP.LDP", ["X2"])  # in series: ANDP
+    assert window.model.undo_stack.undoText() == "Place LDP"  # the dialect's spelling
     contact = window.model.networks[end + 1].cells[(0, 1)]
     assert isinstance(contact, Contact) and contact.function == "DVP.LDP"
     window.editor.make_visible_items()

@@ -13,8 +13,9 @@ from ladderworks.core import ladder as core
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
 from ladderworks.core.dialects.functions import is_contact, placed_params
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Instruction
-from ladderworks.core.instructions import FUNCTIONS, lookup
+from ladderworks.core.instructions import FUNCTIONS, InstructionSpec, lookup
 from ladderworks.core.ladder import (
     Coil,
     Contact,
@@ -35,6 +36,11 @@ OpenAddress = Callable[[int, int, int, bool], None]  # network, row, column, jus
 # the two names more than one operation gives its step
 DELETE = editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete"))  # an element, a selection
 PLACE_COIL = editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place coil"))  # new, or its kind
+
+
+def shown_name(spec: InstructionSpec) -> str:
+    """A row's name as the program's text writes it (`LD=`, `FUN 11 (+)`; the PMC's own)."""
+    return spelling(spec.dialect).name(spec) if spec.dialect else spec.name
 
 
 class LadderEdits:
@@ -167,7 +173,7 @@ class LadderEdits:
                 element = FunctionBox.new(spec.name, params, dialog.comment_text)
                 if self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
                                  editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
-                                             spec.name)):
+                                             shown_name(spec))):
                     grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
                                                             element))
             else:
@@ -180,7 +186,7 @@ class LadderEdits:
 
                 self.run_edit(index, params_and_comment,  # one step: parameters and comment
                               editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"),
-                                          spec.name))
+                                          shown_name(spec)))
             grid.setFocus()
 
         dialog.accepted.connect(done)
@@ -208,7 +214,7 @@ class LadderEdits:
                                   instruction.params)
                 if self.run_edit(index, lambda n: core.place_row_contact(n, row, col, element),
                                  editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
-                                             spec.name)):
+                                             shown_name(spec))):
                     grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
                                                             element))
             else:
@@ -216,7 +222,7 @@ class LadderEdits:
                                   comment=dialog.comment_text)
                 self.run_edit(index, lambda n: core.replace_element(n, row, col, changed),
                               editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"),
-                                          spec.name))
+                                          shown_name(spec)))
             grid.setFocus()
 
         dialog.accepted.connect(done)
