@@ -12,6 +12,7 @@ from ladderworks.core.il.program import Instruction
 from ladderworks.core.instructions import Kind, StackOp
 from ladderworks.core.ladder.logic import (
     MAX_PUSHES,
+    Branch,
     ContactPlace,
     Leaf,
     Logic,
@@ -326,8 +327,10 @@ def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
 def _read_branches(left: int, outputs: list[int], useful: list[_Edge],
                    coils: list[tuple[Cell, Coil, int]]) -> Rung | None:
     """Coils on several branches from one point (a dialect with MPS/MRD/MPP): the logic from
-    the rail to that point, then each branch's block and coils, top to bottom; None when the
-    drawing is not so (each edge must belong to the common part or to one branch)."""
+    the rail to that point, then each branch's block and coils, top to bottom; outputs whose
+    paths from the point share an edge are one branch with branches of its own (nested MPS),
+    read the same way from that point. None when the drawing is not so (each edge must belong
+    to the common part or to one branch, a branch's outputs on rows next to each other)."""
     back = {o: _reach({o}, useful, False) for o in outputs}
     common = set.intersection(*back.values()) - {left}
     if not common:
@@ -338,18 +341,36 @@ def _read_branches(left: int, outputs: list[int], useful: list[_Edge],
     first_row = {net: cell for cell, _, net in reversed(coils)}
     order = sorted(outputs, key=lambda o: first_row[o])
     shared = [e for e in useful if e.dst in into]
+    parts = {o: [e for e in useful if e.src in after and e.dst in back[o]] for o in order}
+    groups: list[list[int]] = []  # outputs whose paths share an edge, in row order
+    for target in order:
+        ids = {id(e) for e in parts[target]}
+        joined = [g for g in groups if any(ids & {id(e) for e in parts[o]} for o in g)]
+        if len(joined) > 1 or (joined and joined[0] is not groups[-1]):
+            return None  # not a nesting: a branch's outputs must follow each other
+        if joined:
+            joined[0].append(target)
+        else:
+            groups.append([target])
     owner: dict[int, int] = {id(e): -1 for e in shared}
-    branches: list[tuple[Logic | None, list[Coil]]] = []
-    for index, target in enumerate(order):
-        part = [e for e in useful if e.src in after and e.dst in back[target]]
+    branches: list[Branch] = []
+    for index, group in enumerate(groups):
+        part = list({id(e): e for o in group for e in parts[o]}.values())
         for e in part:
             if id(e) in owner:
                 return None
             owner[id(e)] = index
+        if len(group) > 1:
+            inner = _read_branches(point, group, part, coils)
+            if inner is None or inner.logic is None:
+                return None
+            branches.append((inner.logic, [], inner.branches))
+            continue
+        target = group[0]
         block = _reduce(part, point, target) if target != point else None
         if isinstance(block, _Edge) or (block is None and part):
             return None
-        branches.append((block, [coil for _, coil, net in coils if net == target]))
+        branches.append((block, [coil for _, coil, net in coils if net == target], []))
     logic = _reduce(shared, left, point)
     if isinstance(logic, _Edge) or len(owner) != len(useful):
         return None

@@ -21,7 +21,6 @@ DRAWN = [
     "LD X0\nMPS\nLD X1\nOR X2\nANB\nOUT Y0\nMPP\nAND= D0 K1\nOUT Y2\nEND\n",
 ]
 LISTS = [
-    "LD X0\nMPS\nAND X1\nMPS\nAND X2\nOUT Y0\nMPP\nOUT Y1\nMPP\nOUT Y2\nEND\n",  # nested
     "LD X0\nMPS\nAND X1\nOUT Y0\nEND\n",  # no MPP
     "LD X0\nINV\nOUT Y0\nEND\n",
 ]
@@ -105,3 +104,44 @@ def test_an_edited_branch_network_keeps_its_branches() -> None:
     put(plc, "X7", 0)
     plc.scan()
     assert (get(plc, "Y0"), get(plc, "Y2")) == (0, 1)
+
+
+NESTED = [
+    "LD X0\nMPS\nAND X1\nMPS\nAND X2\nOUT Y0\nMPP\nOUT Y1\nMPP\nOUT Y2\nEND\n",
+    "LD X0\nMPS\nAND X1\nMPS\nAND X2\nOUT Y0\nMPP\nAND X3\nOUT Y1\nMPP\nAND X4\nOUT Y2\nEND\n",
+    "LD X0\nMPS\nAND X1\nOUT Y5\nMPP\nAND X6\nMPS\nAND X2\nOUT Y0\nMRD\nOUT Y3\nMPP\n"
+    "AND X3\nOUT Y1\nEND\n",
+    "LD X0\nMPS\nAND X1\nMPS\nLD X2\nOR X7\nANB\nMPS\nAND X5\nOUT Y0\nMPP\nOUT Y6\nMPP\n"
+    "AND X3\nOUT Y1\nMPP\nAND X4\nOUT Y2\nEND\n",
+]
+
+
+@pytest.mark.parametrize("text", NESTED)
+def test_nested_branches_are_drawn_read_back_and_run(text: str) -> None:
+    """An MPS inside a branch: that branch's own branches from the end of its block."""
+    program = delta(text)
+    code = list(program.networks[0].instructions)
+    net = layout_network(code)
+    assert net.listing is None
+    coils = [cell for cell, e in net.elements() if isinstance(e, Coil)]
+    assert len({row for row, _ in coils}) == len(coils) == text.count("OUT")
+    back, diags = network_to_instructions(net, dialect="delta")
+    assert not diags and back == code
+    again = net.copy()  # the grid alone (no kept coding): the same meaning on every input
+    again.source = None
+    back, diags = network_to_instructions(again, dialect="delta")
+    assert not diags and back is not None
+    inputs = sorted({str(i.operand): i.operand for i in code
+                     if i.operand is not None and i.operand.area.name == "X"}.values(), key=str)
+    outputs = [i.operand for i in code if i.spec.is_coil]
+    redrawn = delta(text)
+    redrawn.networks[0].instructions[:] = back
+    plcs = [ScanEngine(compile(program)), ScanEngine(compile(redrawn))]
+    for mask in range(1 << len(inputs)):
+        results = []
+        for plc in plcs:
+            for bit, address in enumerate(inputs):
+                plc.memory.set_bit(address, (mask >> bit) & 1)
+            plc.scan()
+            results.append([plc.memory.bit(o) for o in outputs])
+        assert results[0] == results[1], mask
