@@ -145,3 +145,18 @@ def test_nested_branches_are_drawn_read_back_and_run(text: str) -> None:
             plc.scan()
             results.append([plc.memory.bit(o) for o in outputs])
         assert results[0] == results[1], mask
+
+
+def test_a_program_with_such_branches_saves_byte_for_byte() -> None:
+    from ladderworks.core.il.printer import encode_program
+    from ladderworks.core.il.reading import parse_bytes
+    from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
+
+    data = ("".join(NESTED + ON_THE_POINT).replace("END\n", "")
+            .replace("\n", "\r\n") + "END\r\n").encode("utf-8")
+    result = parse_bytes(data, "delta")
+    assert result.ok, result.diagnostics
+    doc = program_to_ladder(result.program)
+    assert all(net.listing is None for net in doc.networks[:-1])
+    back, diags = ladder_to_program(doc)
+    assert not diags and encode_program(back) == data
