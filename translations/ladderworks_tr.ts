@@ -1434,97 +1434,103 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="37"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
         <source>one of {0}</source>
         <translation>şunlardan biri: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
         <source>{0} to {1}</source>
         <translation>{0} ile {1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
         <source>a device of this PLC</source>
         <translation>bu PLC&apos;nin bir aygıtı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="44"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
         <source>a constant or a device of this PLC</source>
         <translation>bir sabit ya da bu PLC&apos;nin bir aygıtı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="47"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte adresi ({0} byte)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
         <source>byte address</source>
         <translation>byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="60"/>
         <source>constant or byte address</source>
         <translation>sabit veya byte adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="62"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>en çok 4 ikili hane, örneğin 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="55"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="64"/>
         <source>P{0} to P{1}</source>
         <translation>P{0} ile P{1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <source>empty, P (on the rising edge), D (32-bit) or DP</source>
+        <translation>boş, P (yükselen kenarda), D (32 bit) ya da DP</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/function_dialog.py" line="67"/>
         <source>L{0} to L{1}</source>
         <translation>L{0} ile L{1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="61"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
         <source>constant or address, kept as written</source>
         <translation>sabit veya adres, yazıldığı gibi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="63"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="72"/>
         <source>values separated by spaces</source>
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="172"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="181"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="175"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="184"/>
         <source>This instruction has no parameters.</source>
         <translation>Bu komutun parametresi yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="177"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="186"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="180"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="189"/>
         <source>Parameter</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="181"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="190"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="182"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="191"/>
         <source>Allowed</source>
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="216"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="225"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
     </message>
@@ -1550,73 +1556,75 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="86"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="93"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="352"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="354"/>
         <source>The comment tool works on an empty row only</source>
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="35"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="37"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="95"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="102"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="122"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="36"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="133"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="141"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="137"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="145"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="313"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="315"/>
         <source>Line: click the second point</source>
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="100"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="107"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="160"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="175"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="216"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="173"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="188"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="224"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="81"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="88"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="76"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="83"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -1626,17 +1634,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="240"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="291"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="252"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="303"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="262"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="313"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -1651,7 +1659,7 @@
         <translation>devre burada açık: bir çizgi veya bir eleman çizin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="67"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="73"/>
         <source>N{0}</source>
         <translation>D{0}</translation>
     </message>
@@ -2519,7 +2527,52 @@
         <translation>Mesaj sayısı</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/translation.py" line="92"/>
+        <source>Form (P, D)</source>
+        <translation>Biçim (P, D)</translation>
+    </message>
+    <message>
         <location filename="../ladderworks/gui/translation.py" line="93"/>
+        <source>Nesting level (N0-N7)</source>
+        <translation>İç içelik düzeyi (N0-N7)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="94"/>
+        <source>Device</source>
+        <translation>Cihaz</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="95"/>
+        <source>Timer or counter (T5, C3)</source>
+        <translation>Zamanlayıcı ya da sayıcı (T5, C3)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="96"/>
+        <source>Source 1</source>
+        <translation>Kaynak 1</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="97"/>
+        <source>Source 2</source>
+        <translation>Kaynak 2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="98"/>
+        <source>Source</source>
+        <translation>Kaynak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="99"/>
+        <source>Lower limit</source>
+        <translation>Alt sınır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="100"/>
+        <source>Upper limit</source>
+        <translation>Üst sınır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/translation.py" line="103"/>
         <source>Parameter {0}</source>
         <translation>Parametre {0}</translation>
     </message>
@@ -3949,152 +4002,152 @@
 <context>
     <name>Tool</name>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="113"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="115"/>
         <source>Select</source>
         <translation>SEÇİM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="174"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="176"/>
         <source>Input</source>
         <translation>GİRİŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="189"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="191"/>
         <source>NOT input</source>
         <translation>GİRİŞ DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="203"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="205"/>
         <source>Output</source>
         <translation>ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="217"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="219"/>
         <source>NOT output</source>
         <translation>ÇIKIŞ DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="231"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="233"/>
         <source>SET coil</source>
         <translation>SET ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="246"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="248"/>
         <source>RST coil</source>
         <translation>RST ÇIKIŞ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="261"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="263"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="275"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="277"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="289"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="291"/>
         <source>Line</source>
         <translation>ÇİZGİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="338"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="340"/>
         <source>Comment</source>
         <translation>YORUM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="371"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="373"/>
         <source>Delete</source>
         <translation>SİL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="385"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="387"/>
         <source>Function</source>
         <translation>FONKSİYON</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="402"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="404"/>
         <source>Insert row before</source>
         <translation>ÖNCEYE SATIR GİR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="417"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="419"/>
         <source>Insert row after</source>
         <translation>SONRAYA SATIR GİR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="114"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="116"/>
         <source>Click an element or drag over cells to select; right-click: cut, copy, paste</source>
         <translation>Bir eleman seçmek için tıklayın veya hücreler üzerinde sürükleyin; sağ tık: kes, kopyala, yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="175"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="177"/>
         <source>Click a cell to place a contact (RD / AND), type its address, ENTER</source>
         <translation>Kontak (RD / AND) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="190"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="192"/>
         <source>Click a cell to place a NOT contact (RD.NOT / AND.NOT)</source>
         <translation>DEĞİL kontak (RD.NOT / AND.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="204"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="206"/>
         <source>Click a cell to place a coil (WRT), type its address, ENTER</source>
         <translation>Çıkış (WRT) koymak için hücreye tıklayın, adresini yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="218"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="220"/>
         <source>Click a cell to place a NOT coil (WRT.NOT)</source>
         <translation>DEĞİL çıkış (WRT.NOT) koymak için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="232"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="234"/>
         <source>Click a cell to place a SET coil (bit := 1 while the logic is 1)</source>
         <translation>SET çıkış koymak için hücreye tıklayın (mantık 1 iken bit := 1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="247"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="249"/>
         <source>Click a cell to place an RST coil (bit := 0 while the logic is 1)</source>
         <translation>RST çıkış koymak için hücreye tıklayın (mantık 1 iken bit := 0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="262"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="264"/>
         <source>Click a contact or coil to turn it into its inverse</source>
         <translation>Tersine çevirmek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="276"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="278"/>
         <source>Click a contact or coil to add a parallel one below it</source>
         <translation>Altına paralel eklemek için bir kontak veya çıkışa tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="290"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="292"/>
         <source>Click a first point, then a second point: a horizontal or vertical wire</source>
         <translation>Birinci noktaya, sonra ikinci noktaya tıklayın: yatay veya dikey çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="339"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="341"/>
         <source>Click the start of an empty row, type the comment, ENTER</source>
         <translation>Boş bir satırın başına tıklayın, yorumu yazın, ENTER</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="372"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="374"/>
         <source>Click an element to delete it</source>
         <translation>Silmek için elemanın üzerine tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="386"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="388"/>
         <source>Choose a function in the list, click the diagram, fill its table</source>
         <translation>Listeden fonksiyonu seçin, diyagrama tıklayın, özellik tablosunu doldurun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="403"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="405"/>
         <source>Click a cell to insert an empty row before it</source>
         <translation>Önüne boş satır girmek için hücreye tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/interactions.py" line="418"/>
+        <location filename="../ladderworks/gui/editor/interactions.py" line="420"/>
         <source>Click a cell to insert an empty row after it</source>
         <translation>Arkasına boş satır girmek için hücreye tıklayın</translation>
     </message>
@@ -4102,32 +4155,52 @@
 <context>
     <name>ToolPalette</name>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="29"/>
+        <location filename="../ladderworks/gui/palette.py" line="30"/>
         <source>Delta DVP instructions</source>
         <translation>Delta DVP komutları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="30"/>
+        <location filename="../ladderworks/gui/palette.py" line="31"/>
         <source>Fatek FBs instructions</source>
         <translation>Fatek FBs komutları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="139"/>
+        <location filename="../ladderworks/gui/palette.py" line="32"/>
+        <source>Delta DVP program structure</source>
+        <translation>Delta DVP program yapısı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="33"/>
+        <source>Delta DVP contacts</source>
+        <translation>Delta DVP kontakları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="34"/>
+        <source>Fatek FBs program structure</source>
+        <translation>Fatek FBs program yapısı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="35"/>
+        <source>Fatek FBs contacts</source>
+        <translation>Fatek FBs kontakları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="155"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="140"/>
+        <location filename="../ladderworks/gui/palette.py" line="156"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="27"/>
+        <location filename="../ladderworks/gui/palette.py" line="28"/>
         <source>Seed manual instructions</source>
         <translation>Kılavuzdaki komutlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="28"/>
+        <location filename="../ladderworks/gui/palette.py" line="29"/>
         <source>FANUC PMC instructions</source>
         <translation>FANUC PMC komutları</translation>
     </message>

@@ -18,7 +18,7 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core import dialects
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects.functions import check_params, operand_params
+from ladderworks.core.dialects.functions import check_params, operand_params, operand_texts
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Instruction
 from ladderworks.core.il.printer import print_instruction
@@ -29,9 +29,18 @@ from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import instruction_label, instruction_title, param_label
 
+FORMS = "mode"  # a Fatek row's forms, typed as P, D or DP (core/dialects/fatek/editing.py)
+
 
 def allowed_text(param: Param, dialect: str = "seed") -> str:
     """What may be typed for `param` in a program of `dialect`, from the instruction table."""
+    dialect_program = dialects.get(dialect) is not None
+    if dialect_program and param.kind is ParamKind.NUMBER and param.name == FORMS:
+        return QCoreApplication.translate(
+            "FunctionDialog", "empty, P (on the rising edge), D (32-bit) or DP")
+    if dialect_program and param.kind in (ParamKind.LABEL, ParamKind.PROGRAM):
+        return QCoreApplication.translate("FunctionDialog", "P{0} to P{1}").format(
+            param.lo, param.hi)
     if param.kind is ParamKind.NUMBER:
         if param.choices:
             return QCoreApplication.translate("FunctionDialog", "one of {0}").format(
@@ -134,7 +143,7 @@ class FunctionDialog(Retranslating, QDialog):
         self._params = list(operand_params(spec))  # a dialect's: the operands of its line
         self.table.setRowCount(len(self._params))
         current = instruction.param_map() if instruction is not None else {}
-        spelled = (spelling(spec.dialect).params(spec, instruction.params)
+        spelled = (operand_texts(spec, instruction.params)
                    if spec.dialect and instruction is not None else [])  # Delta's `K5`, `D10`
         for row, param in enumerate(self._params):
             name_item = QTableWidgetItem()

@@ -17,7 +17,8 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
-from ladderworks.core.dialects.functions import palette_rows
+from ladderworks.core.dialects.functions import is_contact, same_operation
+from ladderworks.core.dialects.functions import palette_groups as dialect_groups
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.instructions import InstructionSpec, lookup, palette_groups
 from ladderworks.gui.retranslate import Retranslating
@@ -27,13 +28,28 @@ from ladderworks.gui.translation import instruction_title
 GROUP_TITLES = {"seed": QT_TRANSLATE_NOOP("ToolPalette", "Seed manual instructions"),
                 "pmc": QT_TRANSLATE_NOOP("ToolPalette", "FANUC PMC instructions"),
                 "delta": QT_TRANSLATE_NOOP("ToolPalette", "Delta DVP instructions"),
-                "fatek": QT_TRANSLATE_NOOP("ToolPalette", "Fatek FBs instructions")}
+                "fatek": QT_TRANSLATE_NOOP("ToolPalette", "Fatek FBs instructions"),
+                "delta.structure": QT_TRANSLATE_NOOP("ToolPalette", "Delta DVP program structure"),
+                "delta.contacts": QT_TRANSLATE_NOOP("ToolPalette", "Delta DVP contacts"),
+                "fatek.structure": QT_TRANSLATE_NOOP("ToolPalette", "Fatek FBs program structure"),
+                "fatek.contacts": QT_TRANSLATE_NOOP("ToolPalette", "Fatek FBs contacts")}
 
 
 def function_groups(dialect: str | None) -> tuple[tuple[str, tuple[InstructionSpec, ...]], ...]:
-    """The palette's groups for a program of `dialect`: its own boxes, else the PMC's rows."""
-    rows = palette_rows(dialect)
-    return ((str(dialect), rows),) if rows else palette_groups()
+    """The palette's groups for a program of `dialect`: its own boxes, program structure and
+    contacts (`dialects.functions.palette_groups`), else the PMC's rows."""
+    return dialect_groups(dialect) or palette_groups()
+
+
+def entry_name(spec: InstructionSpec) -> str:
+    """A palette entry's name as the program's text writes it: `TMR`, `FUN 11 (+)`; a contact
+    by each of its forms, `LD= / AND= / OR=`."""
+    if not spec.dialect:
+        return spec.name
+    spell = spelling(spec.dialect)
+    if is_contact(spec):
+        return " / ".join(spell.name(row) for row in same_operation(spec))
+    return spell.name(spec)
 
 
 class ToolPalette(Retranslating, QDockWidget):
@@ -148,6 +164,5 @@ class ToolPalette(Retranslating, QDockWidget):
             spec = lookup(str(self.functions.itemData(index)))
             assert spec is not None
             title = instruction_title(spec)
-            name = spelling(spec.dialect).name(spec) if spec.dialect else spec.name
-            self.functions.setItemText(index, f"{name} — {title}")
+            self.functions.setItemText(index, f"{entry_name(spec)} — {title}")
             self.functions.setItemData(index, title, Qt.ItemDataRole.ToolTipRole)

@@ -88,6 +88,16 @@ def param_label(name: str) -> str:
         "group": QCoreApplication.translate("Param", "DI/DO group"),
         "control": QCoreApplication.translate("Param", "Control data"),
         "messages": QCoreApplication.translate("Param", "Number of messages"),
+        # a Delta / Fatek row's operands (core/dialects)
+        "mode": QCoreApplication.translate("Param", "Form (P, D)"),
+        "nest": QCoreApplication.translate("Param", "Nesting level (N0-N7)"),
+        "device": QCoreApplication.translate("Param", "Device"),
+        "number": QCoreApplication.translate("Param", "Timer or counter (T5, C3)"),
+        "s1": QCoreApplication.translate("Param", "Source 1"),
+        "s2": QCoreApplication.translate("Param", "Source 2"),
+        "source": QCoreApplication.translate("Param", "Source"),
+        "low": QCoreApplication.translate("Param", "Lower limit"),
+        "high": QCoreApplication.translate("Param", "Upper limit"),
     }
     if name not in labels and name[:1] == "p" and name[1:].isdigit():  # SUB n: p1, p2, ...
         return QCoreApplication.translate("Param", "Parameter {0}").format(name[1:])

@@ -27,7 +27,7 @@ def test_palette_follows_the_program_dialect(window: MainWindow) -> None:
     entries = _entries(window)
     assert entries[0] == "— Delta DVP instructions —"
     assert "TMR — " + lookup("DVP.TMR").title in entries  # type: ignore[union-attr]
-    assert not any(e.startswith("TMRB") or e.startswith("LD=") for e in entries)
+    assert not any(e.startswith("TMRB") for e in entries)  # no PMC row
     assert window.tool_palette.current_function() == "DVP.PLS"
     window.set_language("tr")
     assert _entries(window)[0] == "— Delta DVP komutları —"

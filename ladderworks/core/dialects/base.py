@@ -56,6 +56,14 @@ class Dialect:
     # the compiler checks' codes said in the dialect's words (sp-without-spe: its SRET)
     codes: Mapping[str, str] = field(default_factory=dict)
     tables: str = ""  # "module:NAME", its device_tables.DeviceTables (the PLC tables dock)
+    # "module:function": (row, typed operand texts) -> the lines of the dialect's text that read
+    # as that row with those operands (the function dialog checks them so: dialects/functions)
+    probe: str = ""
+    # "module:function": (row, params) -> the texts the function dialog shows, one an operand
+    operand_texts: str = ""
+    # "module:function": (row, params, the program's other boxes as (row, params)) -> the
+    # params of a box placed in the editor (Fatek: an FO byte no other box has)
+    placed: str = ""
 
     def read(self, text: str, form: TextForm, lines: list[str],
              ends: list[str]) -> tuple[Program, list[Diagnostic]]:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from ladderworks.core.dialects.spelling import Spelling, spelling
-from ladderworks.core.instructions import Write
 from ladderworks.core.ladder import row_contacts
 from ladderworks.core.ladder.model import (
     Coil,
@@ -12,6 +11,7 @@ from ladderworks.core.ladder.model import (
     LadderDocument,
     LadderNetwork,
     Wire,
+    coil_mark,
 )
 from ladderworks.core.symbols import SymbolTable
 
@@ -26,8 +26,8 @@ def _symbol(element: Contact | Coil | Wire) -> str:
     if isinstance(element, Wire):
         return "-" * CELL
     mark = "/" if element.negated else " "
-    if isinstance(element, Coil) and element.write is not Write.OUT:  # SET / RST: (S) / (R)
-        mark = "S" if element.write is Write.SET else "R"
+    if isinstance(element, Coil) and coil_mark(element):  # SET / RST: (S) / (R); OUT L: (L)
+        mark = coil_mark(element)
     if isinstance(element, Contact) and element.function:  # |↑|, |>=|: edge, comparison
         mark = row_contacts.mark(element.function)
         return f"{'-' * (3 - len(mark) // 2)}|{mark}|{'-' * (3 - (len(mark) - 1) // 2)}"

@@ -9,7 +9,7 @@ from typing import Any
 from ladderworks.core.address import AddressError, parse_address
 from ladderworks.core.il.program import ParamValue
 from ladderworks.core.il.textform import split_lines
-from ladderworks.core.instructions import Write, spec_for
+from ladderworks.core.instructions import Write, lookup, spec_for
 from ladderworks.core.ladder.edits import (
     Edit,
     EditRefused,
@@ -73,6 +73,8 @@ def _element_record(element: Element) -> dict[str, Any]:
                   "not": element.negated}
         if isinstance(element, Coil) and element.write is not Write.OUT:
             record["write"] = element.write.value
+        if isinstance(element, Coil) and element.row:  # a dialect's own coil (OUT L)
+            record["row"] = element.row
         if isinstance(element, Contact) and element.function:  # an edge / comparison contact
             record["function"] = element.function
             record["params"] = [p if isinstance(p, int) else str(p) for p in element.params]
@@ -134,7 +136,10 @@ def _element_from(record: dict[str, Any]) -> Element:
         write = Write(str(record.get("write", Write.OUT.value)))
         if write is Write.NONE:
             raise ValueError(write)
-        return Coil(address, bool(record.get("not", False)), comment, lead, write)
+        row = str(record.get("row", ""))
+        if row and lookup(row) is None:
+            raise ValueError(row)
+        return Coil(address, bool(record.get("not", False)), comment, lead, write, row)
     raise ValueError(kind)
 
 

@@ -12,6 +12,7 @@ from ladderworks.core.il.program import Instruction
 from ladderworks.core.instructions import Kind, StackOp
 from ladderworks.core.ladder.logic import (
     MAX_PUSHES,
+    Branch,
     ContactPlace,
     Leaf,
     Logic,
@@ -135,12 +136,14 @@ def _reduce(edges: list[_Edge], left: int, target: int) -> Logic | _Edge:
     return min(inner or edges, key=lambda e: e.cell)
 
 
-def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "seed"
-              ) -> tuple[Rung | None, list[Diagnostic]]:
+def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "seed",
+              branches: bool = False) -> tuple[Rung | None, list[Diagnostic]]:
     """The network's meaning, or None with diagnostics at the cells (None, [] when empty).
 
-    Box parameters are checked with the ranges of the program's `dialect` ("seed"/"fanuc")."""
-    rung, diags = _read_grid(network, index, dialect)
+    Box parameters are checked with the ranges of the program's `dialect` ("seed"/"fanuc").
+    `branches`: coils on several points read as MPS/MRD/MPP branches even where they read
+    as an output chain too (a branch whose coils hang on the branch point)."""
+    rung, diags = _read_grid(network, index, dialect, branches)
     if rung is not None:
         try:
             code_rung(rung)
@@ -151,8 +154,8 @@ def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "
     return rung, diags
 
 
-def _read_grid(network: LadderNetwork, index: int | None, dialect: str
-               ) -> tuple[Rung | None, list[Diagnostic]]:
+def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
+               branches: bool = False) -> tuple[Rung | None, list[Diagnostic]]:
     """read_grid without the check that each dialect contact can be coded where it stands."""
     diags: list[Diagnostic] = []
 
@@ -253,7 +256,8 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str
     if box is None:
         if len(targets) > 1 and stack_row(StackOp.DUP, dialect) is not None:
             chain, _ = _read_chain(left, targets, useful, coils, lambda *a, **k: None, [])
-            branched = _read_branches(left, targets, useful, coils) if chain is None else None
+            branched = (_read_branches(left, targets, useful, coils)
+                        if chain is None or branches else None)
             if branched is not None:
                 _check_depth(branched, report)
                 return (None if has_errors(diags) else branched), diags
@@ -323,8 +327,10 @@ def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
 def _read_branches(left: int, outputs: list[int], useful: list[_Edge],
                    coils: list[tuple[Cell, Coil, int]]) -> Rung | None:
     """Coils on several branches from one point (a dialect with MPS/MRD/MPP): the logic from
-    the rail to that point, then each branch's block and coils, top to bottom; None when the
-    drawing is not so (each edge must belong to the common part or to one branch)."""
+    the rail to that point, then each branch's block and coils, top to bottom; outputs whose
+    paths from the point share an edge are one branch with branches of its own (nested MPS),
+    read the same way from that point. None when the drawing is not so (each edge must belong
+    to the common part or to one branch, a branch's outputs on rows next to each other)."""
     back = {o: _reach({o}, useful, False) for o in outputs}
     common = set.intersection(*back.values()) - {left}
     if not common:
@@ -335,18 +341,36 @@ def _read_branches(left: int, outputs: list[int], useful: list[_Edge],
     first_row = {net: cell for cell, _, net in reversed(coils)}
     order = sorted(outputs, key=lambda o: first_row[o])
     shared = [e for e in useful if e.dst in into]
+    parts = {o: [e for e in useful if e.src in after and e.dst in back[o]] for o in order}
+    groups: list[list[int]] = []  # outputs whose paths share an edge, in row order
+    for target in order:
+        ids = {id(e) for e in parts[target]}
+        joined = [g for g in groups if any(ids & {id(e) for e in parts[o]} for o in g)]
+        if len(joined) > 1 or (joined and joined[0] is not groups[-1]):
+            return None  # not a nesting: a branch's outputs must follow each other
+        if joined:
+            joined[0].append(target)
+        else:
+            groups.append([target])
     owner: dict[int, int] = {id(e): -1 for e in shared}
-    branches: list[tuple[Logic | None, list[Coil]]] = []
-    for index, target in enumerate(order):
-        part = [e for e in useful if e.src in after and e.dst in back[target]]
+    branches: list[Branch] = []
+    for index, group in enumerate(groups):
+        part = list({id(e): e for o in group for e in parts[o]}.values())
         for e in part:
             if id(e) in owner:
                 return None
             owner[id(e)] = index
+        if len(group) > 1:
+            inner = _read_branches(point, group, part, coils)
+            if inner is None or inner.logic is None:
+                return None
+            branches.append((inner.logic, [], inner.branches))
+            continue
+        target = group[0]
         block = _reduce(part, point, target) if target != point else None
         if isinstance(block, _Edge) or (block is None and part):
             return None
-        branches.append((block, [coil for _, coil, net in coils if net == target]))
+        branches.append((block, [coil for _, coil, net in coils if net == target], []))
     logic = _reduce(shared, left, point)
     if isinstance(logic, _Edge) or len(owner) != len(useful):
         return None
@@ -425,10 +449,18 @@ def network_to_instructions(network: LadderNetwork, index: int | None = None,
     code = code_rung(rung)
     if network.source is not None:
         try:
-            original = code_rung(read_rung(network.source))
+            was = read_rung(network.source)
         except Undrawable:
-            original = None
+            was = None
+        original = code_rung(was) if was is not None else None
         if original == code:
             return list(network.source), diags
+        if was is not None and was.branches and stack_row(StackOp.DUP, dialect) is not None:
+            # read from MPS/MRD/MPP branches: a branch on the branch point reads as an output
+            # chain too; the branches are kept (changed or not)
+            branched, _ = read_grid(network, index, dialect, branches=True)
+            if branched is not None:
+                again = code_rung(branched)
+                return (list(network.source) if again == original else again), diags
     return code, diags
 

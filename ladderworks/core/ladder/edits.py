@@ -21,6 +21,7 @@ from ladderworks.core.ladder.model import (
     Wire,
     flip,
 )
+from ladderworks.core.ladder.row_contacts import ALWAYS_ON, needs_lead
 from ladderworks.core.ladder.wiring import connect, target_cell
 
 
@@ -102,6 +103,22 @@ def place_wired(network: LadderNetwork, row: int, col: int, element: Element) ->
     return _change(network, work)
 
 
+def place_row_contact(network: LadderNetwork, row: int, col: int, contact: Contact) -> Edit:
+    """Place a dialect's edge/comparison contact; one with only a series form (Fatek's TU)
+    clicked on the rail's column goes after a SHORT contact there, as its text reads
+    (`ORG TU X2`: SHORT, then TU); EditRefused when the next cell is taken."""
+    if col != 0 or not contact.function or not needs_lead(contact.function):
+        return place_wired(network, row, col, contact)
+    if network.element_at(row, 1) not in (None, ((row, 1), WIRE)):
+        raise EditRefused("contact-place", (row, 0), row=row, col=0)
+    work = network.copy()
+    _put(work, row, 0, Contact(ALWAYS_ON))
+    connect(work, (row, 0), work.cells[(row, 0)])
+    _put(work, row, 1, contact)
+    connect(work, (row, 1), contact)
+    return _change(network, work)
+
+
 def replace_element(network: LadderNetwork, row: int, col: int, element: Element) -> Edit:
     """Replace the element covering a cell with another (same as `place` at its anchor)."""
     found = network.element_at(row, col)
@@ -146,7 +163,7 @@ def add_parallel(network: LadderNetwork, row: int, col: int,
         raise EditRefused("edit-no-element", (row, col), row=row, col=col)
     (row, col), old = found
     new = element if element is not None else (
-        Coil(write=old.write) if isinstance(old, Coil) else Contact())
+        Coil(write=old.write, row=old.row) if isinstance(old, Coil) else Contact())
     work = network.copy()
     if row + 1 < work.rows and work.element_at(row + 1, col) is not None:
         _insert_row(work, row + 1)

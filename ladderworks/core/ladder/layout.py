@@ -4,12 +4,14 @@ from __future__ import annotations
 
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.ladder.logic import (
+    Branch,
     Leaf,
     Logic,
     Rung,
     Series,
     Undrawable,
     code_rung,
+    has_bare_branch,
     read_rung,
 )
 from ladderworks.core.ladder.model import (
@@ -151,31 +153,46 @@ def layout_network(instructions: list[Instruction] | tuple[Instruction, ...],
     if net.columns > MAX_COLUMNS or net.rows > MAX_ROWS:
         return LadderNetwork(columns, 1, comments=comments, listing=tuple(instructions))
     net.comments = comments
-    if code_rung(rung) != list(instructions):
-        net.source = tuple(instructions)
+    if code_rung(rung) != list(instructions) or has_bare_branch(rung.branches):
+        net.source = tuple(instructions)  # a branch on its branch point reads as a chain too
     return net
 
 
 def _draw_branches(rung: Rung, columns: int) -> LadderNetwork:
     """Delta's MPS / MRD / MPP: the common logic from the rail, then each branch from its end
-    (the branch point), one below the other, joined there by vertical links."""
+    (the branch point), one below the other, joined there by vertical links; a branch's own
+    branches (nested MPS) from the end of its block, the same way."""
     assert rung.logic is not None
     common_w, common_h = size(rung.logic)
-    widths = [size(block)[0] if block is not None else 0 for block, _ in rung.branches]
-    net = LadderNetwork(max(columns, common_w + max(widths)), 1)
+    net = LadderNetwork(max(columns, common_w + _branches_width(rung.branches)), 1)
     place_logic(net, rung.logic, 0, 0)
-    row = 0
-    last = 0
-    for (block, coils), width in zip(rung.branches, widths, strict=True):
-        height = size(block)[1] if block is not None else 1
-        if block is not None:
-            place_logic(net, block, row, common_w)
-        for c in range(common_w + width, net.columns):
-            net.cells[(row, c)] = WIRE
-        _draw_coils(net, row, coils)
-        last = row
-        row += max(height, len(coils))
-    for r in range(0, last):
-        net.links.add((r, common_w))
-    net.rows = max(net.rows, row, common_h)
+    rows = _place_branches(net, rung.branches, 0, common_w)
+    net.rows = max(net.rows, rows, common_h)
     return net
+
+
+def _branches_width(branches: list[Branch]) -> int:
+    """Columns the branches need after their branch point."""
+    return max((size(block)[0] if block is not None else 0) + _branches_width(inner)
+               for block, _coils, inner in branches) if branches else 0
+
+
+def _place_branches(net: LadderNetwork, branches: list[Branch], row: int, col: int) -> int:
+    """Draw branches from the point at node (row, col), one below the other; the rows used."""
+    start = last = row
+    for block, coils, inner in branches:
+        width, height = size(block) if block is not None else (0, 1)
+        if block is not None:
+            place_logic(net, block, row, col)
+        if inner:
+            height = max(height, _place_branches(net, inner, row, col + width))
+        else:
+            for c in range(col + width, net.columns):
+                net.cells[(row, c)] = WIRE
+            _draw_coils(net, row, coils)
+            height = max(height, len(coils))
+        last = row
+        row += height
+    for r in range(start, last):
+        net.links.add((r, col))
+    return row - start

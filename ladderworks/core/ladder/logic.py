@@ -13,6 +13,7 @@ from ladderworks.core.instructions import (
     Kind,
     StackOp,
     Write,
+    lookup,
 )
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox
 from ladderworks.core.ladder.row_contacts import contact_combine, row_for
@@ -59,6 +60,10 @@ def parallel(a: Logic, b: Logic) -> Parallel:
     return Parallel(top + bottom)
 
 
+# A stack branch: its block (None: on the branch point), its coils, its own branches.
+Branch = tuple["Logic | None", list[Coil], list["Branch"]]
+
+
 @dataclass(slots=True)
 class Rung:
     """What a network means: logic feeding coils, or control inputs feeding a function box."""
@@ -73,10 +78,16 @@ class Rung:
     # where the box and the coils are drawn (coils in coding order: `coils`, then the chain's);
     # empty when the rung was read from text
     # a dialect's stack branches (Delta MPS / MRD / MPP): after `logic`, each branch's block
-    # (None: its coils hang on the branch point) and coils, first to last (at least two)
-    branches: list[tuple[Logic | None, list[Coil]]] = field(default_factory=list)
+    # (None: its coils hang on the branch point), coils and branches of its own (a nested MPS
+    # after its block: then it has no coils), first to last (at least two)
+    branches: list[Branch] = field(default_factory=list)
     box_cell: Cell | None = field(default=None, compare=False)
     coil_cells: list[Cell] = field(default_factory=list, compare=False)
+
+
+def has_bare_branch(branches: list[Branch]) -> bool:
+    """True when a branch (at any depth) has no block: its coils hang on the branch point."""
+    return any(block is None or has_bare_branch(inner) for block, _coils, inner in branches)
 
 
 def _basic(combine: Combine, write: Write, negated: bool, pushes: int, operand: bool
@@ -160,7 +171,11 @@ def first_cell(logic: Logic) -> tuple[int, int]:
 
 
 def coil_spec(coil: Coil) -> InstructionSpec:
-    """The coil's row of the table: WRT, WRT.NOT, SET or RST."""
+    """The coil's row of the table: WRT, WRT.NOT, SET or RST; a dialect's own row it was read
+    with (Fatek's OUT L) when it has one."""
+    own = lookup(coil.row) if coil.row else None
+    if own is not None and own.write is coil.write and own.negated == coil.negated:
+        return own
     return _basic(Combine.NONE, coil.write, coil.negated and coil.write is Write.OUT, 0, True)
 
 
@@ -197,16 +212,21 @@ def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
     elif rung.logic is not None:
         out.extend(code_logic(rung.logic, False, cells))
     write(rung.coils)
-    for index, (branch, coils) in enumerate(rung.branches):
-        op = StackOp.DUP if index == 0 else (
-            StackOp.DROP if index == len(rung.branches) - 1 else StackOp.OVER)
-        row = stack_row(op)
-        assert row is not None, op
-        out.append(Instruction(row.name))
-        cells.append(None)
-        if branch is not None:
-            _continue(branch, out, cells)
-        write(coils)
+
+    def branches(each: list[Branch]) -> None:
+        for index, (branch, coils, inner) in enumerate(each):
+            op = StackOp.DUP if index == 0 else (
+                StackOp.DROP if index == len(each) - 1 else StackOp.OVER)
+            row = stack_row(op)
+            assert row is not None, op
+            out.append(Instruction(row.name))
+            cells.append(None)
+            if branch is not None:
+                _continue(branch, out, cells)
+            branches(inner)
+            write(coils)
+
+    branches(rung.branches)
     for block, coils in rung.chain:
         _continue(block, out, cells)
         write(coils)
@@ -260,27 +280,52 @@ def _join(stack: list[Logic], contact: Contact, combine: Combine, pushes: int, n
                  else parallel(top, Leaf(contact)))
 
 
-def _branch_block(stack: list[Logic], name: str) -> Logic:
-    """A stack branch's block read since its MPS / MRD / MPP (it must have one)."""
+def _branch_block(stack: list[Logic], name: str) -> Logic | None:
+    """A stack branch's block read since its MPS / MRD / MPP; None for coils on the branch
+    point itself (`MPP / OUT y`: drawn as a branch of wire; layout keeps the coding)."""
     top = stack[0] if len(stack) == 1 else None
-    if top is _PREVIOUS:  # coils on the branch point: the grid reads that as an output chain
-        raise Undrawable(name)
+    if top is _PREVIOUS:
+        return None
     if not isinstance(top, Series) or top.items[0] is not _PREVIOUS:
         raise Undrawable(name)
     rest = top.items[1:]
     return rest[0] if len(rest) == 1 else Series(rest)
 
 
-def _branch_op(op: StackOp, phase: str, branching: str, stack: list[Logic], rung: Rung,
-               name: str) -> str:
-    """MPS starts the branches (the logic so far is their common part), MRD a next branch,
-    MPP the last; anything else (INV, a second MPS) has no picture here."""
-    if op is StackOp.DUP and phase == "logic" and not branching and rung.box is None \
+class _Level:
+    """An MPS level being read: its branches, and whether its MPP came (`last`)."""
+
+    def __init__(self, branches: list[Branch]) -> None:
+        self.branches = branches
+        self.last = False
+
+
+def _branch_op(op: StackOp, phase: str, levels: list[_Level], stack: list[Logic], rung: Rung,
+               name: str) -> None:
+    """MPS starts the branches (the logic so far is their common part) — or, inside a branch
+    before its coils, the branch's own branches (nested MPS) —, MRD a next branch, MPP the
+    last (after closing the nested levels whose MPP came); anything else (INV) has no picture."""
+    if op is StackOp.DUP and phase == "logic" and not levels and rung.box is None \
             and len(stack) == 1:
         rung.logic = stack[0]
-        return "open"
-    if op in (StackOp.OVER, StackOp.DROP) and branching == "open" and phase == "coils":
-        return "open" if op is StackOp.OVER else "last"
+        levels.append(_Level(rung.branches))
+        return
+    if op is StackOp.DUP and phase == "branch" and levels:
+        block = _branch_block(stack, name)
+        if block is None:
+            raise Undrawable(name)
+        inner: list[Branch] = []
+        levels[-1].branches.append((block, [], inner))
+        levels.append(_Level(inner))
+        return
+    if op in (StackOp.OVER, StackOp.DROP) and levels and phase == "coils":
+        while levels and levels[-1].last:
+            if len(levels.pop().branches) < 2:
+                raise Undrawable(name)
+        if not levels:
+            raise Undrawable(name)
+        levels[-1].last = op is StackOp.DROP
+        return
     raise Undrawable(name)
 
 
@@ -290,7 +335,7 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
     stack: list[Logic] = []
     rung = Rung()
     phase = "logic"  # then "coils" after the first WRT / the function; "chain" after more logic
-    branching = ""  # "open" after MPS/MRD, "last" after MPP (Delta's stack branches)
+    levels: list[_Level] = []  # Delta's stack branches: the MPS levels open
     for ins in instructions:
         spec = ins.spec
         name = ins.name
@@ -302,9 +347,9 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
                     raise Undrawable(name)
                 if rung.box is None:
                     rung.logic = stack[0]
-            elif branching:
+            elif levels:
                 if phase == "branch":  # the branch's first coil (more may follow)
-                    rung.branches.append((_branch_block(stack, name), []))
+                    levels[-1].branches.append((_branch_block(stack, name), [], []))
             elif phase == "chain":
                 top = stack[0] if len(stack) == 1 else None
                 if not isinstance(top, Series) or top.items[0] is not _PREVIOUS:
@@ -314,16 +359,17 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             phase = "coils"
             if ins.operand is None:
                 raise Undrawable(name)
-            coil = Coil(ins.operand, spec.negated, ins.comment, ins.lead, spec.write)
-            (rung.branches[-1][1] if branching else rung.chain[-1][1] if rung.chain
+            coil = Coil(ins.operand, spec.negated, ins.comment, ins.lead, spec.write,
+                        name if spec.dialect else "")  # a dialect's own coil row: kept
+            (levels[-1].branches[-1][1] if levels else rung.chain[-1][1] if rung.chain
              else rung.coils).append(coil)
             continue
         if spec.kind is Kind.BASIC and spec.stack is not StackOp.NONE:
-            branching = _branch_op(spec.stack, phase, branching, stack, rung, name)
+            _branch_op(spec.stack, phase, levels, stack, rung, name)
             phase = "branch"
             stack = [_PREVIOUS]
             continue
-        if branching and phase == "coils":
+        if levels and phase == "coils":
             raise Undrawable(name)  # logic after a branch's coils without MRD / MPP
         if phase == "coils" and rung.box is None and (spec.kind is Kind.BASIC or joins):
             phase = "chain"
@@ -355,7 +401,7 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
         raise Undrawable("no output")
     if phase in ("chain", "branch"):
         raise Undrawable("logic after the last coil")
-    if branching and (branching != "last" or len(rung.branches) < 2):
+    if any(not level.last or len(level.branches) < 2 for level in levels):
         raise Undrawable("MPS without its MPP")
     if rung.box is not None and not rung.box.spec.w1 and rung.coils:
         raise Undrawable("coils")

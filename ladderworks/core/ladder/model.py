@@ -45,6 +45,7 @@ class Coil:
     comment: str = ""
     lead: tuple[str, ...] = ()
     write: Write = Write.OUT  # what the coil does with ST0: OUT (WRT), SET, RESET (RST)
+    row: str = ""  # a dialect's own coil row it was read with (Fatek's OUT L), "" for the table's
 
 
 @dataclass(frozen=True, slots=True)
@@ -249,10 +250,23 @@ class LadderDocument:
 
 
 def flip(element: Contact | Coil) -> Contact | Coil:
-    """The NOT tool: contact NO⇄NC, coil WRT⇄WRT.NOT, SET⇄RST (they have no inverted form)."""
+    """The NOT tool: contact NO⇄NC, coil WRT⇄WRT.NOT, SET⇄RST (they have no inverted form);
+    a dialect's own coil row (Fatek's OUT L) becomes the table's inverted coil."""
     if isinstance(element, Coil) and element.write is not Write.OUT:
-        return replace(element, write=Write.RESET if element.write is Write.SET else Write.SET)
+        return replace(element, write=Write.RESET if element.write is Write.SET else Write.SET,
+                       row="")
+    if isinstance(element, Coil):
+        return replace(element, negated=not element.negated, row="")
     return replace(element, negated=not element.negated)
+
+
+def coil_mark(coil: Coil) -> str:
+    """What a coil shows inside: S / R for SET / RST, the last word of a dialect's own coil
+    row's spelling (`L` for Fatek's OUT L), "" for WRT."""
+    own = lookup(coil.row) if coil.row else None
+    if own is not None:
+        return own.text_name.split()[-1]
+    return {Write.SET: "S", Write.RESET: "R"}.get(coil.write, "")
 
 
 def is_end(name: str) -> bool:

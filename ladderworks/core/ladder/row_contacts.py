@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from ladderworks.core.address import Address, Area
 from ladderworks.core.instructions import BY_NAME, Combine, InstructionSpec, Kind, Operation, lookup
 
 if TYPE_CHECKING:
@@ -87,6 +88,18 @@ def operand_texts(contact: Contact, spell: Spelling) -> list[str]:
         return [str(value) for value in contact.params]
     texts = spell.params(spec, contact.params)
     return texts[-1:] if is_edge(contact.function) else texts[-2:]
+
+
+# The engine's always-1 system relay (R9091.1, core/plc/engine.py): Fatek's SHORT, the contact
+# its reader puts before a series-only contact at the start of a rung (`ORG TU X2`).
+ALWAYS_ON = Address(Area.R, 9091, 1)
+
+
+def needs_lead(function: str) -> bool:
+    """True for a contact row with only its series form (Fatek's TU/TD/FUN 170-175): on the
+    rail it needs a contact before it, as its reader reads `ORG TU X2` (SHORT, then TU)."""
+    return (row_for(function, Combine.READ, False) is None
+            and row_for(function, Combine.AND, False) is not None)
 
 
 def is_edge(function: str) -> bool:

@@ -76,7 +76,9 @@ class Interaction:
         if found is None:
             return
         (r, c), element = found
-        if isinstance(element, Contact | Coil):
+        if isinstance(element, Contact) and element.function:  # an edge/comparison contact
+            self.edits.open_contact_dialog(index, r, c, element.function, element)
+        elif isinstance(element, Contact | Coil):
             self.inline.open_address(index, r, c)
         elif isinstance(element, FunctionBox):
             self.edits.open_function_dialog(index, r, c, element.name, element)

@@ -12,8 +12,10 @@ from PySide6.QtWidgets import QApplication
 from ladderworks.core import ladder as core
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
+from ladderworks.core.dialects.functions import is_contact, placed_params
+from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Instruction
-from ladderworks.core.instructions import FUNCTIONS, lookup
+from ladderworks.core.instructions import FUNCTIONS, InstructionSpec, lookup
 from ladderworks.core.ladder import (
     Coil,
     Contact,
@@ -34,6 +36,11 @@ OpenAddress = Callable[[int, int, int, bool], None]  # network, row, column, jus
 # the two names more than one operation gives its step
 DELETE = editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Delete"))  # an element, a selection
 PLACE_COIL = editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place coil"))  # new, or its kind
+
+
+def shown_name(spec: InstructionSpec) -> str:
+    """A row's name as the program's text writes it (`LD=`, `FUN 11 (+)`; the PMC's own)."""
+    return spelling(spec.dialect).name(spec) if spec.dialect else spec.name
 
 
 class LadderEdits:
@@ -112,7 +119,8 @@ class LadderEdits:
             old = found[1]
             assert isinstance(old, Contact | Coil)
             if isinstance(old, Coil) and isinstance(element, Coil) and old.write != element.write:
-                kind = replace(old, negated=element.negated, write=element.write)
+                kind = replace(old, negated=element.negated, write=element.write,
+                               row=element.row)
                 self.run_edit(index, lambda n: core.replace_element(n, row, col, kind),
                               PLACE_COIL)
             elif old.negated != element.negated:
@@ -140,9 +148,13 @@ class LadderEdits:
     def open_function_dialog(
         self, index: int, row: int, col: int, name: str, box: FunctionBox | None = None
     ) -> None:
-        """The function property table; on OK the box is placed (or its parameters set)."""
+        """The function property table; on OK the box is placed (or its parameters set). A
+        dialect's edge or comparison row (`is_contact`) is placed as a contact."""
         spec = box.spec if box is not None else lookup(name)
         if spec is None:
+            return
+        if is_contact(spec):
+            self.open_contact_dialog(index, row, col, spec.name)
             return
         grid = self.grid
         current = Instruction(box.name, params=box.params) if box is not None else None
@@ -155,10 +167,13 @@ class LadderEdits:
             if instruction is None:
                 return
             if box is None:
-                element = FunctionBox.new(spec.name, instruction.params, dialog.comment_text)
+                others = [(cell.spec, cell.params) for network in grid.networks
+                          for cell in network.cells.values() if isinstance(cell, FunctionBox)]
+                params = placed_params(spec, instruction.params, others)  # Fatek: its FO byte
+                element = FunctionBox.new(spec.name, params, dialog.comment_text)
                 if self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
                                  editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
-                                             spec.name)):
+                                             shown_name(spec))):
                     grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
                                                             element))
             else:
@@ -171,7 +186,43 @@ class LadderEdits:
 
                 self.run_edit(index, params_and_comment,  # one step: parameters and comment
                               editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"),
-                                          spec.name))
+                                          shown_name(spec)))
+            grid.setFocus()
+
+        dialog.accepted.connect(done)
+        dialog.open()
+
+    def open_contact_dialog(self, index: int, row: int, col: int, name: str,
+                            contact: Contact | None = None) -> None:
+        """The operands of a dialect's edge or comparison contact (row `name`); on OK the
+        contact is placed at the cell (or, given `contact`, its operands and comment set)."""
+        spec = lookup(contact.function if contact is not None else name)
+        if spec is None:
+            return
+        grid = self.grid
+        current = Instruction(spec.name, params=contact.params) if contact is not None else None
+        dialog = FunctionDialog(spec, current, grid, contact.comment if contact else "",
+                                grid.model.dialect)
+        self.function_dialog = dialog
+
+        def done() -> None:
+            instruction = dialog.instruction
+            if instruction is None:
+                return
+            if contact is None:
+                element = Contact(None, False, dialog.comment_text, (), spec.name,
+                                  instruction.params)
+                if self.run_edit(index, lambda n: core.place_row_contact(n, row, col, element),
+                                 editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
+                                             shown_name(spec))):
+                    grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
+                                                            element))
+            else:
+                changed = replace(contact, params=instruction.params,
+                                  comment=dialog.comment_text)
+                self.run_edit(index, lambda n: core.replace_element(n, row, col, changed),
+                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"),
+                                          shown_name(spec)))
             grid.setFocus()
 
         dialog.accepted.connect(done)

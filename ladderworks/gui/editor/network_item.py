@@ -8,9 +8,15 @@ from PySide6.QtWidgets import QGraphicsItem, QStyleOptionGraphicsItem, QWidget
 
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.dialects.spelling import spelling as spelling_of
-from ladderworks.core.instructions import Write
 from ladderworks.core.ladder import row_contacts
-from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
+from ladderworks.core.ladder.model import (
+    Coil,
+    Contact,
+    FunctionBox,
+    LadderNetwork,
+    Wire,
+    coil_mark,
+)
 from ladderworks.core.ladder.open_circuit import OpenEnd, open_ends
 from ladderworks.gui.editor.geometry import (
     CELL_W,
@@ -275,10 +281,11 @@ class NetworkItem(QGraphicsItem):
         painter.drawArc(QRectF(right - 14, mid - 11, 14, 22), -80 * 16, 160 * 16)
         if element.negated:
             painter.drawLine(QPointF(left, mid + 11), QPointF(right, mid - 11))
-        if element.write is not Write.OUT:  # (S) / (R), as LADDER-III draws them
+        mark = coil_mark(element)  # (S) / (R), as LADDER-III draws them; Fatek's (L)
+        if mark:
             painter.setFont(label_font)
             painter.drawText(QRectF(left, mid - 9, right - left, 18), Qt.AlignmentFlag.AlignCenter,
-                             "S" if element.write is Write.SET else "R")
+                             mark)
         self._labels(painter, element, x, y, label_font, small_font)
 
     def _paint_box(self, painter: QPainter, box: FunctionBox, x: float, y: float,

@@ -70,6 +70,7 @@ DIALECT = Dialect(
     namer="ladderworks.core.dialects.delta.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.delta.printer:spelling",
     tables="ladderworks.core.dialects.delta.tables:TABLES", families=FAMILIES,
+    probe="ladderworks.core.dialects.delta.editing:probe_lines",
     codes={"sp-without-spe": "dvp-missing-sret", "spe-without-sp": "dvp-sret-alone",
            "outside-subprogram": "dvp-outside-subroutine", "label-missing": "dvp-pointer-missing",
            "call-missing": "dvp-call-missing", "no-logic": "dvp-no-logic",

@@ -162,8 +162,10 @@ for _offset, _op in enumerate(COMPARISONS):
     _test = Operation(_op)  # the comparison the contact makes (Operation.EQUAL for "=")
     for _start, _api in _API.items():
         _name = _start + _op
-        _title = f"Compare {_op} ({_start})"
-        _title_tr = f"KARŞILAŞTIRMA KONTAĞI {_op}"
+        _place = {"LD": "", "AND": " in series", "OR": " in parallel"}[_start]
+        _place_tr = {"LD": "", "AND": " (SERİ)", "OR": " (PARALEL)"}[_start]
+        _title = f"Compare {_op} contact{_place}"  # as the edge contacts' titles
+        _title_tr = f"KARŞILAŞTIRMA KONTAĞI {_op}{_place_tr}"
         if _start == "LD":
             _add(_name, "load", (WORD_IN, WORD_IN),
                  _row(_name, SUB_BASE + _api + _offset, _title, _title_tr, inputs=(),

@@ -37,4 +37,7 @@ DIALECT = Dialect(
     period_ms=10, extensions=(".lst", ".fbs"),
     namer="ladderworks.core.dialects.fatek.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.fatek.printer:spelling",
-    tables="ladderworks.core.dialects.fatek.tables:TABLES", families=FAMILIES)
+    tables="ladderworks.core.dialects.fatek.tables:TABLES", families=FAMILIES,
+    probe="ladderworks.core.dialects.fatek.editing:probe_lines",
+    operand_texts="ladderworks.core.dialects.fatek.editing:operand_texts",
+    placed="ladderworks.core.dialects.fatek.editing:placed_params")

@@ -195,6 +195,8 @@ class StackLowering:
         name = {"OUTS": "SET", "OUTR": "RST"}.get(record.mnemonic, "WRT")
         if record.modifier == "NOT":
             name = "WRT.NOT"
+        elif record.modifier == "L":
+            name = "FBS.OUTL"  # kept as its own row: saved `OUT L` again
         self.emit(record, name, bit_address(device))
         self.after_output = True
 

@@ -12,6 +12,7 @@ from ladderworks.core.il.program import Instruction, Network
 from ladderworks.core.instructions import Combine, InstructionSpec, Kind, Write
 
 WIDTH = 9  # the mnemonic column, as WinProladder prints it
+# an operand line's label where it is not the parameter's name (`D : R1`, `CV: C0`, `PV: 10`)
 _CONTACT_BOXES = {"FBS.TU": "TU", "FBS.TD": "TD"}
 _COMPARE_BOXES = frozenset(("FBS.EQ", "FBS.GT", "FBS.LT", "FBS.NE", "FBS.GE", "FBS.LE"))
 
@@ -93,6 +94,8 @@ def instruction_lines(instructions: list[Instruction], index: int, first: bool
     if spec.kind is Kind.BASIC:
         operand = ins.operand
         if spec.write is not Write.NONE:
+            if spec.dialect:  # Fatek's own coil row: OUT L
+                return [_line(spec.text_name, device_text(operand))], index + 1
             if spec.write is Write.SET:
                 return [_line("OUTS", device_text(operand))], index + 1
             if spec.write is Write.RESET:

@@ -11,6 +11,7 @@ from ladderworks.core.instructions import (
     Param,
     ParamAccess,
     ParamKind,
+    Write,
 )
 
 SUB_BASE = 20_000  # a Fatek row's SUB number: 20000 + FUN n (21000.. for the others)
@@ -58,8 +59,15 @@ def _row(name: str, sub: int, mnemonic: str, title: str, title_tr: str, *,
                            operation=operation)
 
 
+# `OUT L` (retentive coil, Y only, 002:98): a basic row of its own, so a changed network is
+# written `OUT L` again; it runs as WRT (no power loss is simulated). Fatek's basic opcodes 0x50..
+RETENTIVE = InstructionSpec("FBS.OUTL", Kind.BASIC, operand=True, writes=True, write=Write.OUT,
+                            opcode=0x50, title="Retentive output", title_tr="KALICI ÇIKIŞ",
+                            mnemonic="OUT L", source="fatek", dialect="fatek")
+
 # FUN n of the listing -> the row it becomes
 ROWS: tuple[InstructionSpec, ...] = (
+    RETENTIVE,
     _row("FBS.TMR", OTHER, "TMR", "Timer", "ZAMANLAYICI",
          params=(_number("timer", 0, 255), _value("preset"), FO)),
     _row("FBS.CTR", OTHER + 1, "CTR", "Counter", "SAYICI", inputs=("CK", "CLR"),
