@@ -43,6 +43,16 @@ def shown_name(spec: InstructionSpec) -> str:
     return spelling(spec.dialect).name(spec) if spec.dialect else spec.name
 
 
+def _place_step(spec: InstructionSpec) -> StepName:
+    """The undo step of placing a box or a dialect's contact of row `spec`."""
+    return editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"), shown_name(spec))
+
+
+def _params_step(spec: InstructionSpec) -> StepName:
+    """The undo step of changing the operands of a box or a dialect's contact."""
+    return editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"), shown_name(spec))
+
+
 class LadderEdits:
     """Turns a tool use, a menu action or a key into an undo command on the grid's model; a
     refused edit becomes the grid's status message. `open_address` opens the in-place
@@ -172,8 +182,7 @@ class LadderEdits:
                 params = placed_params(spec, instruction.params, others)  # Fatek: its FO byte
                 element = FunctionBox.new(spec.name, params, dialog.comment_text)
                 if self.run_edit(index, lambda n: core.place_wired(n, row, col, element),
-                                 editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
-                                             shown_name(spec))):
+                                 _place_step(spec)):
                     grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
                                                             element))
             else:
@@ -185,8 +194,7 @@ class LadderEdits:
                         core.set_comment(network, row, col, dialog.comment_text)
 
                 self.run_edit(index, params_and_comment,  # one step: parameters and comment
-                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"),
-                                          shown_name(spec)))
+                              _params_step(spec))
             grid.setFocus()
 
         dialog.accepted.connect(done)
@@ -213,16 +221,14 @@ class LadderEdits:
                 element = Contact(None, False, dialog.comment_text, (), spec.name,
                                   instruction.params)
                 if self.run_edit(index, lambda n: core.place_row_contact(n, row, col, element),
-                                 editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Place {0}"),
-                                             shown_name(spec))):
+                                 _place_step(spec)):
                     grid.cursor_to(index, *core.target_cell(grid.networks[index], row, col,
                                                             element))
             else:
                 changed = replace(contact, params=instruction.params,
                                   comment=dialog.comment_text)
                 self.run_edit(index, lambda n: core.replace_element(n, row, col, changed),
-                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"),
-                                          shown_name(spec)))
+                              _params_step(spec))
             grid.setFocus()
 
         dialog.accepted.connect(done)
