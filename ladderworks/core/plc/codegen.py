@@ -2,7 +2,9 @@
 
 Every stack level ST0..ST8 is a local variable (its depth is known at each op), every area a
 local bytearray, and each contact a shift-and-mask on a constant byte index. In fast mode a run
-of contacts becomes one expression; in monitored mode each op's result is stored in `M[op]`.
+of contacts becomes one expression; in monitored mode each op's result is stored in its place
+of a 256-op list (`m3[17]`, codegen_flow.py). `flow_by_op` stores it in `M[op]` instead, one
+flat list, as the generator did before (kept for benchmarks/scan_speed.py and the tests).
 
 The code is flat by construction: a JMP range is a guard `if not sk:` over its ops (`sk` is the
 id of the jump being taken, one variable per program unit), never a nested block, so any number
@@ -22,6 +24,7 @@ from ladderworks.core.compiler.binary import BinaryFormatError, Op
 from ladderworks.core.compiler.checks import MAX_PUSHES, implementation_of
 from ladderworks.core.compiler.structure import LOOP_LIMIT, Unit, analyse, number_of
 from ladderworks.core.instructions import Combine, Flow, Kind, StackOp, Write
+from ladderworks.core.plc.codegen_flow import flow_blocks, flow_bytes, flow_slot, zero_lines
 from ladderworks.core.plc.codegen_plan import CHUNK_OPS as CHUNK_OPS
 from ladderworks.core.plc.codegen_plan import JumpToMain as JumpToMain
 from ladderworks.core.plc.codegen_plan import ScanLoopError as ScanLoopError
@@ -30,6 +33,7 @@ from ladderworks.core.plc.codegen_plan import compiled as compiled
 from ladderworks.core.plc.functions import FunctionImpl
 
 ScanFunction = Callable[..., None]  # scan(ctx, M, full=True)
+Blocks = tuple[list[int], ...]
 
 _AREA_NAMES = tuple(area.value for area in Area)
 _MAX_NESTING = 40  # parentheses per expression before it is stored in its variable
@@ -42,13 +46,20 @@ _LEVEL_BITS = {1: 4, 2: 8, 3: 16}
 class GeneratedScan:
     """The generated source and the compiled scan function `scan(ctx, M, full=True)`.
 
-    `M` is a list of one int per op (the monitored mode's power flow: a list, because storing
-    into a list is about 3x faster than into a bytearray); `full` False runs level 1 only
-    (a scan between two level-2 passes).
+    The monitored mode's power flow is in `blocks` (one int per op, in lists of 256: storing
+    into a list is about 3x faster than into a bytearray; `flow()` makes the bytes); `M` is
+    the flat list of one int per op that the `flow_by_op` variant writes instead (None for
+    the others); `full` False runs level 1 only (a scan between two level-2 passes).
     """
 
     source: str
     scan: ScanFunction
+    blocks: Blocks = ()
+    count: int = 0  # ops
+
+    def flow(self) -> bytes:
+        """The last scan's power flow, one byte per op (monitored variant; else all 0)."""
+        return flow_bytes(self.blocks, self.count) if self.blocks else bytes(self.count)
 
 
 @dataclass(slots=True)
@@ -108,11 +119,12 @@ _DEFAULTS = ", ".join(f"{a}={a}" for a in _AREA_NAMES) + \
 
 class _Generator:
     def __init__(self, ops: tuple[Op, ...], registry: dict[str, FunctionImpl],
-                 disabled: Collection[int], monitored: bool) -> None:
+                 disabled: Collection[int], monitored: bool, flow_by_op: bool = False) -> None:
         self.ops = ops
         self.registry = registry
         self.disabled = disabled
         self.monitored = monitored
+        self.by_op = flow_by_op
         # each op's table row, looked up once (Op.spec looks it up by name on every read)
         self.specs = [op.spec for op in ops]
         self.structure = analyse([(spec, op.params)
@@ -148,6 +160,14 @@ class _Generator:
         self.guarded = False
         self.lines.append("    " + line)
 
+    def slot(self, index: int) -> str:
+        """Where the generated code stores op `index`'s power flow."""
+        if self.by_op:
+            return f"M[{index}]"
+        block, place = flow_slot(index)
+        self.chunk_blocks.add(block)
+        return place
+
     def var(self, depth: int) -> str:
         self.chunk_depth = max(self.chunk_depth, depth)
         return f"s{depth}"
@@ -178,6 +198,7 @@ class _Generator:
         self.chunk_depth = 0
         self.chunk_commons: set[int] = {r.ident for r in self.commons}
         self.chunk_opened: set[int] = set()
+        self.chunk_blocks: set[int] = set()  # the power flow lists the chunk writes
         self.carried = carried
         self.values = [_Value(self.var(d)) for d in range(carried)] or [_Value("0")]
 
@@ -190,7 +211,8 @@ class _Generator:
             self.lines.append(f"    SV[0] = ({names},)")
         name = f"c{self.chunk_count}"
         self.chunk_count += 1
-        head = [f"def {name}(ctx, M, {_DEFAULTS}):"]
+        blocks = "".join(f", m{k}=FB[{k}]" for k in sorted(self.chunk_blocks))
+        head = [f"def {name}(ctx, M, {_DEFAULTS}{blocks}):"]
         head.append("    " + " = ".join(f"s{d}" for d in range(self.chunk_depth + 1)) + " = 0")
         if self.carried:
             head.append("    " + ", ".join(f"s{d}" for d in range(self.carried)) + ", = SV[0]")
@@ -208,13 +230,19 @@ class _Generator:
             units[unit.name] = self.unit(unit)
         body = ["def scan(ctx, M, full=True, R=R):"]
         levels = self.structure.levels
-        if self.monitored:
-            first = levels.get(1)
+        first = levels.get(1)
+        if self.monitored and self.by_op:
             if first is not None:
                 body += ["    if not full:", f"        M[{first.start}:{first.end}] = "
                          f"ZERO[{first.start}:{first.end}]", "    else:", "        M[:] = ZERO"]
             else:
                 body.append("    M[:] = ZERO")
+        elif self.monitored:
+            if first is not None:
+                body += ["    if not full:", *zero_lines(first.start, first.end, "        "),
+                         "        pass", "    else:", *zero_lines(0, len(self.ops), "        ")]
+            else:
+                body += zero_lines(0, len(self.ops), "    ")
         for level in sorted(levels):
             indent = "    " if level == 1 else "        "
             if level > 1:
@@ -330,8 +358,8 @@ class _Generator:
                 self.store(depth)
             name = self.var(top)
             value = self.values[top].expr
-            self.emit(f"M[{index}] = {name}" if value == name
-                      else f"M[{index}] = {name} = {value}")
+            self.emit(f"{self.slot(index)} = {name}" if value == name
+                      else f"{self.slot(index)} = {name} = {value}")
             self.values[top] = _Value(name)
         if ended:
             self.close_jumps(ended, index, self.live_after(index))
@@ -461,7 +489,7 @@ class _Generator:
         ended: list[_Range] = []
         if flow in (Flow.JUMP, Flow.LABEL_JUMP, Flow.LABEL_JUMP_MAIN, Flow.CALL) \
                 and self.monitored:
-            self.emit(f"M[{index}] = {act}")
+            self.emit(f"{self.slot(index)} = {act}")
         target = number_of(op.params[0]) if op.params else None
         if flow is Flow.JUMP:
             self.jump_ids += 1
@@ -532,13 +560,16 @@ class _Generator:
 
 def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
              registry: dict[str, FunctionImpl], states: list[dict[str, Any]] | None = None, *,
-             disabled: Collection[int] = (), monitored: bool = False) -> GeneratedScan:
+             disabled: Collection[int] = (), monitored: bool = False,
+             flow_by_op: bool = False) -> GeneratedScan:
     """Generate and compile the scan function for `ops`.
 
     `states` holds one dict per function call in program order and is shared between the
     variants of one program (so switching mode or disabling keeps timers and edges).
+    `flow_by_op` (monitored): the power flow into the flat list `M`, as before the blocks.
     """
-    generator = _Generator(ops, registry, frozenset(disabled), monitored)
+    generator = _Generator(ops, registry, frozenset(disabled), monitored,
+                           monitored and flow_by_op)
     source = generator.run()
     if states is None:
         states = []
@@ -548,7 +579,10 @@ def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
     namespace["FN"] = tuple(generator.impls)
     namespace["ST"] = tuple(states[index] for index in generator.calls)
     namespace["PA"] = tuple(ops[index].params for index in generator.calls)
-    namespace["ZERO"] = [0] * len(ops)
+    namespace["ZERO"] = [0] * len(ops) if monitored and flow_by_op else []
+    blocks = flow_blocks(len(ops)) if monitored and not flow_by_op else ()
+    namespace["FB"] = blocks
+    namespace["Z"] = [0] * len(blocks[0]) if blocks else []
     namespace["SK"] = [0] * max(1, generator.unit_count)
     namespace["CM"] = [1] * max(1, generator.common_count)
     namespace["ONES"] = [1] * max(1, generator.common_count)
@@ -556,5 +590,5 @@ def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
     namespace["JM"] = JumpToMain
     namespace["LOOP"] = loop_stop(ops, generator.structure.units())
     exec(compiled(source), namespace)
-    return GeneratedScan(source, namespace["scan"])
+    return GeneratedScan(source, namespace["scan"], blocks, len(ops))
 
