@@ -1,4 +1,5 @@
-"""Where the monitored scan writes the power flow: lists of 256 ops, each op at a small index.
+"""Where the monitored scan writes the power flow (lists of 256 ops, each op at a small index),
+and the generated scan that holds them.
 
 Op n's result goes to `m<n // 256>[n % 256]`, a chunk function's default argument for each of
 its blocks. A store `M[n]` into one list of every op needs a constant `n`: for 35,000 ops that
@@ -8,6 +9,11 @@ beside the code; indices below 257 are Python's shared small ints.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
+
+ScanFunction = Callable[..., None]  # scan(ctx, M, full=True)
+Blocks = tuple[list[int], ...]
 FLOW_BLOCK = 256  # ops per list (0..255 are small ints; so are their indices)
 
 
@@ -38,6 +44,41 @@ def zero_lines(start: int, end: int, indent: str) -> list[str]:
     return lines
 
 
+def flow_reset(level1: tuple[int, int] | None, count: int, by_op: bool) -> list[str]:
+    """The scan function's first lines: every op's power flow 0, or level 1's only in a scan
+    that runs level 1 only (`full` false); `by_op`: in the flat list `M` (`ZERO` zeros)."""
+    if by_op:
+        if level1 is None:
+            return ["    M[:] = ZERO"]
+        start, end = level1
+        return ["    if not full:", f"        M[{start}:{end}] = ZERO[{start}:{end}]",
+                "    else:", "        M[:] = ZERO"]
+    if level1 is None:
+        return zero_lines(0, count, "    ")
+    return ["    if not full:", *zero_lines(*level1, "        "), "        pass",
+            "    else:", *zero_lines(0, count, "        ")]
+
+
 def flow_bytes(blocks: tuple[list[int], ...], count: int) -> bytes:
     """The power flow of `count` ops, one byte per op, from the blocks."""
     return b"".join(map(bytes, blocks))[:count]
+
+
+@dataclass(slots=True)
+class GeneratedScan:
+    """The generated source and the compiled scan function `scan(ctx, M, full=True)`.
+
+    The monitored mode's power flow is in `blocks` (one int per op, in lists of 256: storing
+    into a list is about 3x faster than into a bytearray; `flow()` makes the bytes); `M` is
+    the flat list of one int per op that the `flow_by_op` variant writes instead (None for
+    the others); `full` False runs level 1 only (a scan between two level-2 passes).
+    """
+
+    source: str
+    scan: ScanFunction
+    blocks: Blocks = ()
+    count: int = 0  # ops
+
+    def flow(self) -> bytes:
+        """The last scan's power flow, one byte per op (monitored variant; else all 0)."""
+        return flow_bytes(self.blocks, self.count) if self.blocks else bytes(self.count)
