@@ -59,9 +59,17 @@ def flow_reset(level1: tuple[int, int] | None, count: int, by_op: bool) -> list[
             "    else:", *zero_lines(0, count, "        ")]
 
 
-def flow_bytes(blocks: tuple[list[int], ...], count: int) -> bytes:
-    """The power flow of `count` ops, one byte per op, from the blocks."""
-    return b"".join(map(bytes, blocks))[:count]
+def flow_into(blocks: Blocks, out: bytearray) -> bytearray:
+    """The power flow of `len(out)` ops written into `out`, one byte per op (a slice store
+    per block: about twice as fast as joining the blocks' bytes)."""
+    count = len(out)
+    for number, block in enumerate(blocks):
+        start = number * FLOW_BLOCK
+        if start + FLOW_BLOCK <= count:
+            out[start:start + FLOW_BLOCK] = block
+        elif start < count:
+            out[start:count] = block[:count - start]
+    return out
 
 
 @dataclass(slots=True)
@@ -81,4 +89,8 @@ class GeneratedScan:
 
     def flow(self) -> bytes:
         """The last scan's power flow, one byte per op (monitored variant; else all 0)."""
-        return flow_bytes(self.blocks, self.count) if self.blocks else bytes(self.count)
+        return bytes(flow_into(self.blocks, bytearray(self.count)))
+
+    def flow_into(self, out: bytearray) -> None:
+        """Write the last scan's power flow into `out` (one byte for each of `count` ops)."""
+        flow_into(self.blocks, out)

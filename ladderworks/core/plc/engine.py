@@ -199,7 +199,7 @@ class ScanEngine:
         does not pay for a copy in every scan)."""
         with self.lock:
             if self._flow_stale is not None:
-                self._power_flow[:] = self._flow_stale.flow()
+                self._flow_stale.flow_into(self._power_flow)
                 self._flow_stale = None
             return self._power_flow
 
