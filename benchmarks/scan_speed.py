@@ -7,11 +7,12 @@ networks in the shape of a real FANUC program (level 1 + END1, level 2 with JMP 
 and CALLU of 100 subprograms, SP/SPE, END), which the generator cuts into per-unit chunk
 functions; (3) the real X22 program (shared/real-programs/FANUC_STUDER_X22_P036.txt) when the
 parser can read it. Timings are interleaved (floor, fast, monitored, repeated; best of each)
-and in CPU time of the thread (time.thread_time_ns) because the machine is shared. The
-monitored mode is timed twice: as it runs (the power flow's bytes are made when a view reads
-them) and with the bytes read after every scan (as it is with time travel on). Then the
-generated code alone (no engine around it), before and after in one run: fast, monitored as
-before (`flow_by_op`: a store `M[op]` into one list per op) and monitored now (256-op lists).
+and in CPU time of the thread (time.thread_time_ns) because the machine is shared: 30 rounds
+of 4 scans, the best round being the least disturbed. The monitored mode is timed twice: as it
+runs (the power flow's bytes are made when a view reads them) and with the bytes read after
+every scan (as it is with time travel on). Then the generated code alone (no engine around
+it), before and after in one run: fast, monitored as before (`flow_by_op`: a store `M[op]`
+into one list per op) and monitored now (256-op lists).
 Prints figures; asserts nothing.
 """
 
@@ -227,7 +228,7 @@ def measure(engine: ScanEngine, scans: int,
 
     runs["copied"] = copy_every_scan
     runs.update(code_alone(engine))
-    return best_ns(runs, scans)
+    return best_ns(runs, scans, rounds=30)
 
 
 def code_alone(engine: ScanEngine) -> dict[str, Callable[[], None]]:
@@ -265,19 +266,19 @@ def main() -> None:
         floor_scan(x, f, r)  # type: ignore[operator]
 
     check_same_logic(engine, floor)
-    report(f"basic logic, {len(networks)} networks", steps, measure(engine, 20, floor))
+    report(f"basic logic, {len(networks)} networks", steps, measure(engine, 4, floor))
     shaped_text = shaped(networks)
     shaped_engine = engine_of(shaped_text)
     assert shaped_engine is not None
     shaped_engine.memory.areas[Area.X][:] = memory.areas[Area.X]
     shaped_steps = len(shaped_engine.program.ops)
     report("FANUC-shaped (levels, JMP blocks, 100 subprograms)", shaped_steps,
-           measure(shaped_engine, 20))
+           measure(shaped_engine, 4))
     if X22.exists():
         result = parse_file(X22)
         if result.ok:
             real = ScanEngine(compile_ladder(result.program))
-            report("X22 real program", result.program.step_count(), measure(real, 10))
+            report("X22 real program", result.program.step_count(), measure(real, 4))
         else:
             print(f"X22 real program: not measured, the parser does not read it yet "
                   f"({len(result.diagnostics)} diagnostics)")
