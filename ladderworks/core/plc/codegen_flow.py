@@ -17,7 +17,7 @@ Blocks = tuple[list[int], ...]
 FLOW_BLOCK = 256  # ops per list (0..255 are small ints; so are their indices)
 
 
-def flow_blocks(count: int) -> tuple[list[int], ...]:
+def flow_blocks(count: int) -> Blocks:
     """Zeroed lists for the power flow of `count` ops (the last one full size too)."""
     return tuple([0] * FLOW_BLOCK for _ in range(max(1, -(-count // FLOW_BLOCK))))
 

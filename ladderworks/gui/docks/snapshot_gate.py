@@ -26,8 +26,9 @@ PACED = True
 # True: the time chart follows the record by setting its span at each redraw, without the
 # view's auto-range (which goes over every curve's data in each paint); benchmarks flip it
 SPAN_SET = True
-# True: the time chart's items let a due scan run before each paints (yield_to_scan): a
-# paint of six lanes takes 15-25 ms, a scan waited up to 5 ms for it; benchmarks flip it
+# True: the time chart's and the diagnostic's items let a due scan run before each paints
+# (yield_to_scan): a chart paint of six lanes takes 15-25 ms, a diagnostic network ~3 ms, and
+# a scan due meanwhile waited up to 5 ms for the interpreter; benchmarks flip it
 YIELD = True
 # an update starts only when the real-time thread's next scan is at least this far (seconds)
 QUIET = 0.003
