@@ -5,11 +5,17 @@ runs the PLC on its wall-clock thread and prints, after the first second: the sc
 overruns (a scan that ended after the next one was due), the worst scan and the share of the
 GUI thread's CPU time. Dock sets: none (the alarm panel closed too), default (the window as it
 starts: the alarm panel), technician (PLC diagnostic, bit display live on six bytes, time
-chart sampling six bits). Each set runs three times in one run: "before" (every dock updates
+chart sampling six bits). Each set runs in each mode, in one run: "before" (every dock updates
 on every snapshot, shown or not: `snapshot_gate.UPDATE_ALWAYS`), "gate" (docks update only
-when shown, within the GUI thread's share: `gui/docks/snapshot_gate.py`, `PACED` off) and
+when shown, within the GUI thread's share: `gui/docks/snapshot_gate.py`, `PACED` off),
 "paced" (as "gate", and an update waits for the gap after a scan, the time chart redraws at
-most four times a second and sets the span it follows itself: `snapshot_gate.PACED`).
+most four times a second and sets the span it follows itself: `snapshot_gate.PACED`) and
+"now" (as "paced", and the time chart follows without the view's auto-range, which walked
+every curve's data in each paint: `snapshot_gate.SPAN_SET`; each of its lanes and axes lets a
+due scan run before it paints: `snapshot_gate.YIELD`). Besides the wall-clock figures:
+the scan thread's CPU time per scan (the rest of a scan's time it waited, for the interpreter's
+lock or a processor) and the latest start after a scan's due time (the scan thread waking up:
+the interpreter's lock held by the GUI thread, or the processors busy).
 
 Run: python benchmarks/realtime_docks.py [SECONDS] [--fifo]
 `--fifo` (Linux, root) runs the process at SCHED_FIFO priority so that other processes of a
@@ -32,7 +38,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAM = "FANUC_STUDER_S41_F036"
-MODES = tuple(os.environ.get("MODES", "before gate paced").split())
+MODES = tuple(os.environ.get("MODES", "before gate paced now").split())
 SETS = tuple(os.environ.get("SETS", "none default technician").split())
 
 
@@ -61,7 +67,8 @@ def measure(mode: str, seconds: float) -> None:
     from ladderworks.gui.translation import UiLanguage
 
     snapshot_gate.UPDATE_ALWAYS = mode == "before"
-    snapshot_gate.PACED = mode == "paced"
+    snapshot_gate.PACED = mode in ("paced", "now")
+    snapshot_gate.SPAN_SET = snapshot_gate.YIELD = mode == "now"
     if os.environ.get("SWITCH_MS"):
         sys.setswitchinterval(float(os.environ["SWITCH_MS"]) / 1000)
     if os.environ.get("SHARE"):
@@ -142,8 +149,8 @@ def measure(mode: str, seconds: float) -> None:
             docks.bit_display.stop()
         session.stop()
         print(f"{mode:6}  {name:10}  {stats.scans:6}  "
-              f"{stats.overruns:8}  {stats.max_ms:8.1f}  {stats.avg_ms:6.2f}  {gui:5.0f} %",
-              flush=True)
+              f"{stats.overruns:8}  {stats.max_ms:8.1f}  {stats.avg_ms:6.2f}  "
+              f"{stats.cpu_avg_ms:6.2f}  {stats.late_max_ms:8.1f}  {gui:5.0f} %", flush=True)
 
 
 def main() -> None:
@@ -163,7 +170,7 @@ def main() -> None:
         os.sched_setscheduler(0, os.SCHED_FIFO, os.sched_param(10))  # children inherit it
     print(f"{PROGRAM}: 8 ms scans on the wall clock, {args.seconds:.0f} s per dock set after "
           f"the first second{' (SCHED_FIFO)' if args.fifo else ''}")
-    print("mode    docks        scans  overruns  worst ms  avg ms  GUI thread")
+    print("mode    docks        scans  overruns  worst ms  avg ms  cpu ms  late max  GUI thread")
     for mode in MODES:
         subprocess.run([sys.executable, __file__, str(args.seconds), "--mode", mode],
                        check=True)

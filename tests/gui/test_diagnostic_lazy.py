@@ -3,9 +3,13 @@ networks shown, and the same drawing, power and highlighting as if all were made
 
 from __future__ import annotations
 
+import pytest
+
 from ladderworks.core.address import parse_address
 from ladderworks.core.il import parse
 from ladderworks.core.ladder.layout import layout_network
+from ladderworks.core.plc.session import PlcRun
+from ladderworks.gui.docks import snapshot_gate
 from ladderworks.gui.docks.cell_map import cell_ops, network_power, standard_cells
 from ladderworks.gui.docks.diagnostic import DiagnosticDock
 from ladderworks.gui.main_window import MainWindow
@@ -127,3 +131,20 @@ def test_compiling_again_lays_out_only_the_changed_networks(window: MainWindow) 
     program = parse(program_text(changed)).program
     assert after == [layout_network(net.instructions, net.comments)
                      for net in program.networks]
+
+
+def test_each_network_lets_a_due_scan_go_first_before_it_paints(
+        window: MainWindow, monkeypatch: pytest.MonkeyPatch) -> None:
+    dock = shown_dock(window, program_text())
+    due = [0.05]
+    monkeypatch.setattr(PlcRun, "threaded", property(lambda _self: True))
+    monkeypatch.setattr(PlcRun, "due_in", lambda _self: due[0])
+    sleeps: list[float] = []
+    monkeypatch.setattr(snapshot_gate.time, "sleep", sleeps.append)
+    dock.view.grab()  # no scan due within the paint: it never pauses
+    assert dock.gate.yields == 0 and sleeps == []
+    due[0] = 0.0  # a scan running, or waiting for the interpreter
+    dock.view.grab()
+    made = len(list(dock.view.network_items.made()))
+    assert dock.gate.yields >= made > 3  # the view, then each network on screen
+    assert all(0 < pause < 0.002 for pause in sleeps)

@@ -122,12 +122,54 @@ def test_the_following_chart_sets_its_span_when_it_redraws(
     view = dock.plot.getPlotItem().getViewBox()
     low, high = dock.time_range()
     assert low <= dock.record.times[0] and high >= (dock.record.end_ms or 0)
-    assert view.autoRangeEnabled()[0]  # still following
+    assert dock.following and not view.autoRangeEnabled()[0]  # follows by its span set
     dock.set_time_range(10, 20)  # the user zooms: the chart stops following
     follows = dock.follows
     session.run_scans(5)
     dock._redraw()
     assert dock.follows == follows and dock.time_range() == pytest.approx((10, 20))
+    dock.fit()  # follows again
+    session.run_scans(5)
+    dock._redraw()
+    assert dock.follows > follows and dock.time_range()[1] >= (dock.record.end_ms or 0)
+    dock.stop()
+
+
+def test_a_mouse_zoom_stops_the_following(qtbot: QtBot, session: PlcSession) -> None:
+    dock = chart(qtbot, session)
+    session.run_scans(30)
+    dock._redraw()
+    view = dock.plot.getPlotItem().getViewBox()
+    view.sigRangeChangedManually.emit([True, False])  # as a wheel or drag in the chart does
+    assert not dock.following
+    low, high = dock.time_range()
+    session.run_scans(20)
+    dock._redraw()
+    assert dock.time_range() == pytest.approx((low, high))
+    dock.stop()
+
+
+def test_the_following_chart_paints_without_the_views_auto_range(
+        qtbot: QtBot, session: PlcSession, monkeypatch: pytest.MonkeyPatch) -> None:
+    dock = chart(qtbot, session)
+    view = dock.plot.getPlotItem().getViewBox()
+    calls: list[int] = []
+    original = view.childrenBounds  # the auto-range's walk over every curve's data
+    monkeypatch.setattr(view, "childrenBounds",
+                        lambda *args, **kwargs: (calls.append(1), original(*args, **kwargs))[1])
+    session.run_scans(30)  # the first span set turns the view's auto-range off (one walk)
+    calls.clear()
+    for _ in range(3):
+        session.run_scans(10)
+        dock._redraw()
+        dock.plot.grab()  # a paint
+    assert calls == [] and dock.following
+    monkeypatch.setattr(snapshot_gate, "SPAN_SET", False)  # before: the view's auto-range
+    dock.fit()
+    session.run_scans(5)
+    dock._redraw()
+    dock.plot.grab()
+    assert calls
     dock.stop()
 
 
@@ -138,4 +180,27 @@ def test_before_pacing_the_chart_left_its_span_to_the_view(
     session.run_scans(10)
     dock._redraw()
     assert dock.follows == 0
+    dock.stop()
+
+
+def test_the_charts_paint_lets_a_due_scan_go_first(
+        qtbot: QtBot, session: PlcSession, monkeypatch: pytest.MonkeyPatch) -> None:
+    dock = chart(qtbot, session)
+    session.run_scans(30)
+    dock._redraw()
+    due = [0.05]
+    threaded(monkeypatch, due)
+    sleeps: list[float] = []
+    monkeypatch.setattr(snapshot_gate.time, "sleep", sleeps.append)
+    dock.plot.grab()  # no scan due within the paint: it never pauses
+    assert dock.gate.yields == 0 and sleeps == []
+    due[0] = 0.0  # a scan running, or waiting for the interpreter
+    dock.plot.grab()
+    # each lane, its fill and both axes paused once: the scan goes first at each of them
+    assert dock.gate.yields >= 2 * len(dock.record.signals) + 2
+    assert sleeps and all(0 < pause < 0.002 for pause in sleeps)
+    monkeypatch.setattr(snapshot_gate, "YIELD", False)  # before: the paint went straight on
+    yields = dock.gate.yields
+    dock.plot.grab()
+    assert dock.gate.yields == yields
     dock.stop()

@@ -2,7 +2,9 @@
 
 Every stack level ST0..ST8 is a local variable (its depth is known at each op), every area a
 local bytearray, and each contact a shift-and-mask on a constant byte index. In fast mode a run
-of contacts becomes one expression; in monitored mode each op's result is stored in `M[op]`.
+of contacts becomes one expression; in monitored mode each op's result is stored in its place
+of a 256-op list (`m3[17]`, codegen_flow.py). `flow_by_op` stores it in `M[op]` instead, one
+flat list, as the generator did before (kept for benchmarks/scan_speed.py and the tests).
 
 The code is flat by construction: a JMP range is a guard `if not sk:` over its ops (`sk` is the
 id of the jump being taken, one variable per program unit), never a nested block, so any number
@@ -13,8 +15,7 @@ small dispatch loop, so JMPB can go backward. Dispatch is on the instruction tab
 
 from __future__ import annotations
 
-from collections.abc import Callable, Collection
-from dataclasses import dataclass
+from collections.abc import Collection
 from typing import Any
 
 from ladderworks.core.address import Address, Area
@@ -22,14 +23,21 @@ from ladderworks.core.compiler.binary import BinaryFormatError, Op
 from ladderworks.core.compiler.checks import MAX_PUSHES, implementation_of
 from ladderworks.core.compiler.structure import LOOP_LIMIT, Unit, analyse, number_of
 from ladderworks.core.instructions import Combine, Flow, Kind, StackOp, Write
+from ladderworks.core.plc.codegen_flow import GeneratedScan as GeneratedScan
+from ladderworks.core.plc.codegen_flow import flow_blocks, flow_reset, flow_slot
 from ladderworks.core.plc.codegen_plan import CHUNK_OPS as CHUNK_OPS
 from ladderworks.core.plc.codegen_plan import JumpToMain as JumpToMain
 from ladderworks.core.plc.codegen_plan import ScanLoopError as ScanLoopError
 from ladderworks.core.plc.codegen_plan import chunk_plan, loop_stop
 from ladderworks.core.plc.codegen_plan import compiled as compiled
+from ladderworks.core.plc.codegen_values import (
+    Range,
+    Value,
+    bit_expr,
+    count_in_innermost,
+    counted,
+)
 from ladderworks.core.plc.functions import FunctionImpl
-
-ScanFunction = Callable[..., None]  # scan(ctx, M, full=True)
 
 _AREA_NAMES = tuple(area.value for area in Area)
 _MAX_NESTING = 40  # parentheses per expression before it is stored in its variable
@@ -38,93 +46,29 @@ SYSTEM_RELAY = 9091  # R9091.2/.3/.4: level 1/2/3 running
 _LEVEL_BITS = {1: 4, 2: 8, 3: 16}
 
 
-@dataclass(slots=True)
-class GeneratedScan:
-    """The generated source and the compiled scan function `scan(ctx, M, full=True)`.
-
-    `M` is a list of one int per op (the monitored mode's power flow: a list, because storing
-    into a list is about 3x faster than into a bytearray); `full` False runs level 1 only
-    (a scan between two level-2 passes).
-    """
-
-    source: str
-    scan: ScanFunction
-    states: tuple[dict[str, Any], ...] = ()  # the state of each function call, in op order
-
-
-@dataclass(slots=True)
-class _Range:
-    """An open JMP or COM range: its id (JMP) or gate variable (COM), and the coils left
-    (None: up to the end instruction, JMPE or COME)."""
-
-    ident: int
-    left: int | None
-    gates_boxes: bool = False  # COM only: its gate also turns the boxes' inputs off (Delta MC)
-
-
-def _count_coil(ranges: list[_Range]) -> _Range | None:
-    """Count one coil in the innermost of `ranges`; the range it ended, if any.
-
-    A coil counts only for the innermost open range (JMP and COM alike): a counted range
-    nested inside another counts its own coils, and the outer one goes on counting after it.
-    """
-    if not ranges or ranges[-1].left is None:
-        return None
-    ranges[-1].left -= 1
-    if ranges[-1].left > 0:
-        return None
-    return ranges.pop()
-
-
-def _counted(coils: object) -> int | None:
-    """A range's coil count from the instruction's parameter: None for 0 (up to the end)."""
-    return coils if isinstance(coils, int) and coils > 0 else None
-
-
-class _Value:
-    """The Python expression for one stack level, and how it was built."""
-
-    __slots__ = ("expr", "nesting", "terms", "top")
-
-    def __init__(self, expr: str, top: str = "", nesting: int = 0, terms: int = 1) -> None:
-        self.expr = expr
-        self.top = top  # top-level operator: "", "&" or "|"
-        self.nesting = nesting
-        self.terms = terms
-
-
-def _bit_expr(address: Address, inverted: bool) -> str:
-    assert address.bit is not None
-    byte = f"{address.area.value}[{address.byte}]"
-    if inverted:
-        byte = "~" + byte
-    if address.bit:
-        return f"({byte} >> {address.bit} & 1)"
-    return f"({byte} & 1)"
-
-
 _DEFAULTS = ", ".join(f"{a}={a}" for a in _AREA_NAMES) + \
     ", FN=FN, ST=ST, PA=PA, SK=SK, CM=CM, SV=SV"
 
 
 class _Generator:
     def __init__(self, ops: tuple[Op, ...], registry: dict[str, FunctionImpl],
-                 disabled: Collection[int], monitored: bool) -> None:
+                 disabled: Collection[int], monitored: bool, flow_by_op: bool = False) -> None:
         self.ops = ops
         self.registry = registry
         self.disabled = disabled
         self.monitored = monitored
+        self.by_op = flow_by_op
         # each op's table row, looked up once (Op.spec looks it up by name on every read)
         self.specs = [op.spec for op in ops]
         self.structure = analyse([(spec, op.params)
                                   for spec, op in zip(self.specs, ops, strict=True)])
         self.out: list[str] = []  # every finished function
         self.lines: list[str] = []  # the chunk being generated
-        self.values: list[_Value] = [_Value("0")]
+        self.values: list[Value] = [Value("0")]
         self.impls: list[FunctionImpl] = []
         self.calls: list[int] = []  # op index of each function call
-        self.jumps: list[_Range] = []
-        self.commons: list[_Range] = []
+        self.jumps: list[Range] = []
+        self.commons: list[Range] = []
         self.common_count = 0
         self.unit_count = 0
         self.chunk_count = 0
@@ -149,6 +93,14 @@ class _Generator:
         self.guarded = False
         self.lines.append("    " + line)
 
+    def slot(self, index: int) -> str:
+        """Where the generated code stores op `index`'s power flow."""
+        if self.by_op:
+            return f"M[{index}]"
+        block, place = flow_slot(index)
+        self.chunk_blocks.add(block)
+        return place
+
     def var(self, depth: int) -> str:
         self.chunk_depth = max(self.chunk_depth, depth)
         return f"s{depth}"
@@ -159,7 +111,7 @@ class _Generator:
         name = self.var(depth)
         if value.expr != name:
             self.emit(f"{name} = {value.expr}")
-            self.values[depth] = _Value(name)
+            self.values[depth] = Value(name)
         return name
 
     def store_all(self) -> None:
@@ -179,8 +131,9 @@ class _Generator:
         self.chunk_depth = 0
         self.chunk_commons: set[int] = {r.ident for r in self.commons}
         self.chunk_opened: set[int] = set()
+        self.chunk_blocks: set[int] = set()  # the power flow lists the chunk writes
         self.carried = carried
-        self.values = [_Value(self.var(d)) for d in range(carried)] or [_Value("0")]
+        self.values = [Value(self.var(d)) for d in range(carried)] or [Value("0")]
 
     def end_chunk(self, unit: int, mid_network: bool, result: str) -> str:
         """Finish the chunk: its prelude, body and return; the function's name."""
@@ -191,7 +144,8 @@ class _Generator:
             self.lines.append(f"    SV[0] = ({names},)")
         name = f"c{self.chunk_count}"
         self.chunk_count += 1
-        head = [f"def {name}(ctx, M, {_DEFAULTS}):"]
+        blocks = "".join(f", m{k}=FB[{k}]" for k in sorted(self.chunk_blocks))
+        head = [f"def {name}(ctx, M, {_DEFAULTS}{blocks}):"]
         head.append("    " + " = ".join(f"s{d}" for d in range(self.chunk_depth + 1)) + " = 0")
         if self.carried:
             head.append("    " + ", ".join(f"s{d}" for d in range(self.carried)) + ", = SV[0]")
@@ -209,13 +163,10 @@ class _Generator:
             units[unit.name] = self.unit(unit)
         body = ["def scan(ctx, M, full=True, R=R):"]
         levels = self.structure.levels
+        first = levels.get(1)
         if self.monitored:
-            first = levels.get(1)
-            if first is not None:
-                body += ["    if not full:", f"        M[{first.start}:{first.end}] = "
-                         f"ZERO[{first.start}:{first.end}]", "    else:", "        M[:] = ZERO"]
-            else:
-                body.append("    M[:] = ZERO")
+            body += flow_reset((first.start, first.end) if first else None, len(self.ops),
+                               self.by_op)
         for level in sorted(levels):
             indent = "    " if level == 1 else "        "
             if level > 1:
@@ -253,9 +204,9 @@ class _Generator:
                 chunks.append(self.end_chunk(number, mid, result))
                 self.start_chunk(depth)
             if at_label:
-                self.values = [_Value(self.var(d)) for d in range(len(self.values))]
+                self.values = [Value(self.var(d)) for d in range(len(self.values))]
             elif new_network:
-                self.values = [_Value("0")]
+                self.values = [Value("0")]
             self.op(index, op, labelled)
         result = str(len(chunks) + 1) if labelled else "None"
         chunks.append(self.end_chunk(number, False, result))
@@ -299,7 +250,7 @@ class _Generator:
         spec = self.specs[index + 1]
         return not (spec.combine is Combine.READ and spec.pushes == 0 and spec.operand)
 
-    def close_jumps(self, ended: list[_Range], index: int, live: bool) -> None:
+    def close_jumps(self, ended: list[Range], index: int, live: bool) -> None:
         """End JMP ranges (the lowest id first opened): the taken one stops skipping; after a
         counted range ending inside a network, its stack values read 0 if it was taken."""
         if live:
@@ -315,7 +266,7 @@ class _Generator:
     def op(self, index: int, op: Op, labelled: bool) -> None:
         spec = self.specs[index]
         off = index in self.disabled
-        ended: list[_Range] = []
+        ended: list[Range] = []
         if spec.kind is Kind.BASIC:
             if spec.write is not Write.NONE:
                 assert op.operand is not None
@@ -331,9 +282,9 @@ class _Generator:
                 self.store(depth)
             name = self.var(top)
             value = self.values[top].expr
-            self.emit(f"M[{index}] = {name}" if value == name
-                      else f"M[{index}] = {name} = {value}")
-            self.values[top] = _Value(name)
+            self.emit(f"{self.slot(index)} = {name}" if value == name
+                      else f"{self.slot(index)} = {name} = {value}")
+            self.values[top] = Value(name)
         if ended:
             self.close_jumps(ended, index, self.live_after(index))
 
@@ -341,19 +292,19 @@ class _Generator:
         spec = self.specs[index]
         if spec.operand:
             assert op.operand is not None
-            term = "0" if off else _bit_expr(op.operand, spec.negated)
+            term = "0" if off else bit_expr(op.operand, spec.negated)
             if spec.pushes > 0:
                 if len(self.values) > MAX_PUSHES:
                     raise self.fail(index, "stack deeper than ST8")
-                self.values.append(_Value(term))
+                self.values.append(Value(term))
                 self.var(len(self.values) - 1)
             elif spec.combine is Combine.READ:
-                self.values[-1] = _Value(term)
+                self.values[-1] = Value(term)
             elif off and spec.combine is Combine.OR:
                 return
             else:
                 operator = "&" if spec.combine is Combine.AND else "|"
-                self.values[-1] = self.combine(self.values[-1], operator, _Value(term))
+                self.values[-1] = self.combine(self.values[-1], operator, Value(term))
             return
         if spec.stack is not StackOp.NONE:
             self.stack_op(index, spec.stack)
@@ -368,20 +319,20 @@ class _Generator:
         """A dialect's stack operation (Delta MPS, MRD, MPP, INV) on the stack values."""
         top = len(self.values) - 1
         if op is StackOp.INVERT:
-            self.values[top] = _Value(f"(1 ^ {self.store(top)})")
+            self.values[top] = Value(f"(1 ^ {self.store(top)})")
         elif op is StackOp.DUP:
             if len(self.values) > MAX_PUSHES:
                 raise self.fail(index, "stack deeper than ST8")
-            self.values.append(_Value(self.store(top)))
+            self.values.append(Value(self.store(top)))
             self.var(top + 1)
         elif top < 1:
             raise self.fail(index, "stack operation with nothing pushed")
         elif op is StackOp.OVER:
-            self.values[top] = _Value(self.store(top - 1))
+            self.values[top] = Value(self.store(top - 1))
         else:  # DROP
             self.values.pop()
 
-    def combine(self, left: _Value, operator: str, right: _Value) -> _Value:
+    def combine(self, left: Value, operator: str, right: Value) -> Value:
         left_expr, right_expr = left.expr, right.expr
         nesting = max(left.nesting, right.nesting)
         if operator == "&":
@@ -389,23 +340,23 @@ class _Generator:
                 left_expr, nesting = f"({left_expr})", nesting + 1
             if right.top == "|":
                 right_expr, nesting = f"({right_expr})", nesting + 1
-        value = _Value(f"{left_expr} {operator} {right_expr}", operator, nesting,
+        value = Value(f"{left_expr} {operator} {right_expr}", operator, nesting,
                        left.terms + right.terms)
         if nesting > _MAX_NESTING or value.terms > _MAX_TERMS:
             depth = len(self.values) - 1
             self.emit(f"{self.var(depth)} = {value.expr}")
-            value = _Value(self.var(depth))
+            value = Value(self.var(depth))
         return value
 
-    def count_coil(self) -> list[_Range]:
+    def count_coil(self) -> list[Range]:
         """Count a coil (written or disabled) in the innermost COM and JMP ranges; the JMP
         range it ended, if any."""
-        _count_coil(self.commons)
-        ended = _count_coil(self.jumps)
+        count_in_innermost(self.commons)
+        ended = count_in_innermost(self.jumps)
         return [ended] if ended is not None else []
 
     def write(self, index: int, address: Address, kind: Write, inverted: bool,
-              off: bool) -> list[_Range]:
+              off: bool) -> list[Range]:
         if off:
             return self.count_coil()  # a disabled coil still counts in a COM or JMP range
         depth = len(self.values) - 1
@@ -426,7 +377,7 @@ class _Generator:
             condition = value.expr
         elif live or self.monitored:
             condition = f"({self.var(depth)} := {value.expr})"
-            self.values[depth] = _Value(self.var(depth))
+            self.values[depth] = Value(self.var(depth))
         else:
             condition = value.expr
         on, off_line = f"{byte} |= {mask}", f"{byte} &= {0xFF ^ mask}"
@@ -441,7 +392,7 @@ class _Generator:
             self.emit(f"    {off_line}")
         return self.count_coil()
 
-    def function(self, index: int, op: Op, off: bool, labelled: bool) -> list[_Range]:
+    def function(self, index: int, op: Op, off: bool, labelled: bool) -> list[Range]:
         spec = self.specs[index]
         count = len(spec.inputs)
         if count and len(self.values) < count:
@@ -449,7 +400,7 @@ class _Generator:
         if spec.pushes > 0:  # a contact-like box starting a new value (Delta LD= in a rung)
             if len(self.values) > MAX_PUSHES:
                 raise self.fail(index, "stack deeper than ST8")
-            self.values.append(_Value("0"))
+            self.values.append(Value("0"))
             self.var(len(self.values) - 1)
         self.store_all()
         first = len(self.values) - count if count else len(self.values) - 1
@@ -459,10 +410,10 @@ class _Generator:
             inputs[-1] = f"(cm{gating.ident} & {inputs[-1]})"
         act = inputs[-1] if inputs else "1"
         flow = spec.flow
-        ended: list[_Range] = []
+        ended: list[Range] = []
         if flow in (Flow.JUMP, Flow.LABEL_JUMP, Flow.LABEL_JUMP_MAIN, Flow.CALL) \
                 and self.monitored:
-            self.emit(f"M[{index}] = {act}")
+            self.emit(f"{self.slot(index)} = {act}")
         target = number_of(op.params[0]) if op.params else None
         if flow is Flow.JUMP:
             self.jump_ids += 1
@@ -471,7 +422,7 @@ class _Generator:
                 self.emit(f"    sk = SK[{self.unit_number}] = {self.jump_ids}")
                 self.uses_sk = True
             self.guarded = False  # the ops after the JMP test `sk` afresh
-            self.jumps.append(_Range(self.jump_ids, _counted(op.params[0] if op.params else 0)))
+            self.jumps.append(Range(self.jump_ids, counted(op.params[0] if op.params else 0)))
         elif flow is Flow.JUMP_END:
             # ends the innermost JMP 0, and any JMP n opened inside it that is still counting
             while self.jumps and self.jumps[-1].left is not None:
@@ -488,7 +439,7 @@ class _Generator:
             if self.commons:
                 gate = f"{gate} & cm{self.commons[-1].ident}"
             self.emit(f"cm{ident} = CM[{ident}] = {gate}")
-            self.commons.append(_Range(ident, _counted(op.params[0] if op.params else 0),
+            self.commons.append(Range(ident, counted(op.params[0] if op.params else 0),
                                        spec.gates_boxes))
         elif flow is Flow.COMMON_END:
             for k in range(len(self.commons) - 1, -1, -1):
@@ -524,22 +475,25 @@ class _Generator:
                           f"PA[{call}])")
         del self.values[first + 1:]
         if flow is Flow.NONE:
-            self.values[first] = _Value(self.var(first))
+            self.values[first] = Value(self.var(first))
         else:
-            self.values[first] = _Value("0")
+            self.values[first] = Value("0")
         return ended
 
 
 
 def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
              registry: dict[str, FunctionImpl], states: list[dict[str, Any]] | None = None, *,
-             disabled: Collection[int] = (), monitored: bool = False) -> GeneratedScan:
+             disabled: Collection[int] = (), monitored: bool = False,
+             flow_by_op: bool = False) -> GeneratedScan:
     """Generate and compile the scan function for `ops`.
 
     `states` holds one dict per function call in program order and is shared between the
     variants of one program (so switching mode or disabling keeps timers and edges).
+    `flow_by_op` (monitored): the power flow into the flat list `M`, as before the blocks.
     """
-    generator = _Generator(ops, registry, frozenset(disabled), monitored)
+    generator = _Generator(ops, registry, frozenset(disabled), monitored,
+                           monitored and flow_by_op)
     source = generator.run()
     if states is None:
         states = []
@@ -549,7 +503,10 @@ def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
     namespace["FN"] = tuple(generator.impls)
     namespace["ST"] = tuple(states[index] for index in generator.calls)
     namespace["PA"] = tuple(ops[index].params for index in generator.calls)
-    namespace["ZERO"] = [0] * len(ops)
+    namespace["ZERO"] = [0] * len(ops) if monitored and flow_by_op else []
+    blocks = flow_blocks(len(ops)) if monitored and not flow_by_op else ()
+    namespace["FB"] = blocks
+    namespace["Z"] = [0] * len(blocks[0]) if blocks else []
     namespace["SK"] = [0] * max(1, generator.unit_count)
     namespace["CM"] = [1] * max(1, generator.common_count)
     namespace["ONES"] = [1] * max(1, generator.common_count)
@@ -557,5 +514,5 @@ def generate(ops: tuple[Op, ...], areas: dict[Area, bytearray],
     namespace["JM"] = JumpToMain
     namespace["LOOP"] = loop_stop(ops, generator.structure.units())
     exec(compiled(source), namespace)
-    return GeneratedScan(source, namespace["scan"], namespace["ST"])
+    return GeneratedScan(source, namespace["scan"], blocks, len(ops), namespace["ST"])
 

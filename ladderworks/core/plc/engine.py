@@ -82,8 +82,8 @@ class ScanEngine:
         self.trace: TraceSampler | None = None
         self.history: ScanHistory | None = None  # set to keep every scan (needs monitored)
         self._power_flow = bytearray(len(self.program.ops))
-        self._flow = [0] * len(self.program.ops)  # what the monitored code writes
-        self._flow_stale = False  # `_flow` holds a scan's power flow not yet in the bytes
+        self._flow_stale: GeneratedScan | None = None  # the variant whose last scan's power
+        # flow is not in the bytes yet
         # every change of the A area, with the time of the scan that made it (newest last)
         self.alarm_log: deque[tuple[int, bytes]] = deque(maxlen=ALARM_LOG_CAPACITY)
         self._alarm_bits = bytes(self.memory.areas[Area.A])
@@ -140,9 +140,9 @@ class ScanEngine:
             self._first_scan = False
             self.force_table.apply(self.memory)
             try:
-                self._current.scan(ctx, self._flow, self.scan_count % self.divisions == 0)
+                self._current.scan(ctx, None, self.scan_count % self.divisions == 0)
                 if self._monitored:
-                    self._flow_stale = True  # made into bytes when read (power_flow)
+                    self._flow_stale = self._current  # made into bytes when read (power_flow)
             finally:
                 self.force_table.apply(self.memory)
             alarms = self.memory.areas[Area.A]
@@ -228,20 +228,22 @@ class ScanEngine:
             self._ctx.power_on()  # DIFU/DIFD edge memories are shared by number, not per call
             self._first_scan = True
             self._power_flow[:] = bytes(len(self._power_flow))
-            self._flow[:] = [0] * len(self._flow)
-            self._flow_stale = False
+            for variant in self._variants.values():
+                for block in variant.blocks:
+                    block[:] = [0] * len(block)
+            self._flow_stale = None
 
     # -- monitoring ----------------------------------------------------------------------
 
     @property
     def power_flow(self) -> bytearray:
         """The last monitored scan's result of every op, one byte per op (made from the
-        scan's list when first read after the scan: a view reading it 10 times a second
+        scan's lists when first read after the scan: a view reading it 10 times a second
         does not pay for a copy in every scan)."""
         with self.lock:
-            if self._flow_stale:
-                self._power_flow[:] = bytes(self._flow)
-                self._flow_stale = False
+            if self._flow_stale is not None:
+                self._flow_stale.flow_into(self._power_flow)
+                self._flow_stale = None
             return self._power_flow
 
     @property

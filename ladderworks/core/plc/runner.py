@@ -18,6 +18,9 @@ class ScanStats:
     avg_ms: float = 0.0
     max_ms: float = 0.0
     overruns: int = 0  # scans that started late because the previous one ran past its period
+    cpu_avg_ms: float = 0.0  # the scan thread's CPU time per scan (the rest of a scan's time
+    # it waited: for the interpreter's lock, held by another thread, or for a processor)
+    late_max_ms: float = 0.0  # the latest start after a scan's due time (waiting to wake up)
 
 
 class RealTimeRunner:
@@ -38,6 +41,8 @@ class RealTimeRunner:
         self._min = float("inf")
         self._max = 0.0
         self._overruns = 0
+        self._cpu = 0.0
+        self._late = 0.0
         self._next_start = 0.0  # perf_counter time the next scan is due
         self._scanning = False
 
@@ -75,13 +80,15 @@ class RealTimeRunner:
             if not self._count:
                 return ScanStats()
             return ScanStats(self._count, self._min * 1e3, self._total / self._count * 1e3,
-                             self._max * 1e3, self._overruns)
+                             self._max * 1e3, self._overruns, self._cpu / self._count * 1e3,
+                             self._late * 1e3)
 
     def reset_stats(self) -> None:
         """Start the figures afresh."""
         with self._lock:
             self._count, self._total, self._min, self._max, self._overruns = (
                 0, 0.0, float("inf"), 0.0, 0)
+            self._cpu = self._late = 0.0
 
     def _loop(self) -> None:
         period = self.engine.period_ms / 1000.0
@@ -89,7 +96,10 @@ class RealTimeRunner:
         while not self._stop.is_set():
             self._scanning = True
             began = time.perf_counter()
+            due = next_start
+            cpu = time.thread_time()
             self.engine.scan()
+            cpu = time.thread_time() - cpu
             took = time.perf_counter() - began
             next_start += period
             self._next_start = next_start
@@ -99,6 +109,8 @@ class RealTimeRunner:
             with self._lock:
                 self._count += 1
                 self._total += took
+                self._cpu += cpu
+                self._late = max(self._late, began - due)
                 self._min = min(self._min, took)
                 self._max = max(self._max, took)
                 if late:

@@ -23,6 +23,13 @@ SHARE = 0.25
 # True: a long update waits for the gap after a scan, and a dock may ask for a least time
 # between its updates (the time chart's redraws); benchmarks/realtime_docks.py flips it
 PACED = True
+# True: the time chart follows the record by setting its span at each redraw, without the
+# view's auto-range (which goes over every curve's data in each paint); benchmarks flip it
+SPAN_SET = True
+# True: the time chart's and the diagnostic's items let a due scan run before each paints
+# (yield_to_scan): a chart paint of six lanes takes 15-25 ms, a diagnostic network ~3 ms, and
+# a scan due meanwhile waited up to 5 ms for the interpreter; benchmarks flip it
+YIELD = True
 # an update starts only when the real-time thread's next scan is at least this far (seconds)
 QUIET = 0.003
 # how often a gate looks again for the gap after a scan before it updates anyway
@@ -74,6 +81,7 @@ class SnapshotGate(QObject):
         self.pending = False  # a snapshot was held back
         self.updates = 0  # how many ran (tests, benchmarks)
         self.deferred = 0  # how often an update waited for the gap after a scan (tests)
+        self.yields = 0  # how often a paint let a due scan go first (tests, benchmarks)
         self._tries = 0
         self._timer = QTimer(self)
         self._timer.setTimerType(Qt.TimerType.PreciseTimer)
@@ -126,6 +134,18 @@ class SnapshotGate(QObject):
         for the rest of the update (a switch comes only every 5 ms otherwise)."""
         if self.session.run.threaded and not UPDATE_ALWAYS:
             time.sleep(0.0002)
+
+    def yield_to_scan(self) -> None:
+        """Within a long paint: if the real-time thread's scan is due within a millisecond
+        (or running, or waiting for the interpreter), sleep till it has begun, so that it runs
+        at its time and whole (the GUI thread waits a switch interval, 5 ms, before it asks
+        for the interpreter back)."""
+        if not (YIELD and self.session.run.threaded) or UPDATE_ALWAYS:
+            return
+        due = self.session.run.due_in()
+        if due is not None and due < 0.001:
+            self.yields += 1
+            time.sleep(due + 0.0002)
 
     def _run(self, snapshot: PlcSnapshot) -> None:
         self.pending = False
