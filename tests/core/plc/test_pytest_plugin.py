@@ -2,9 +2,6 @@
 
 from __future__ import annotations
 
-# imported before pytester's inline runs: their modules leave sys.modules after each, and a
-# process pool made later with a second copy of these cannot pickle its worker function
-import concurrent.futures.process  # noqa: F401
 import shutil
 import subprocess
 import sys
