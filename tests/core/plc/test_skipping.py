@@ -256,7 +256,7 @@ def random_program(rng: random.Random) -> str:
     return "%@3\n" + "\n".join(body) + "\n%\n"
 
 
-@settings(max_examples=examples(300), deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(seed=st.integers(0, 10**9), divisions=st.sampled_from([1, 1, 2]),
        monitored=st.booleans())
 def test_random_programs_run_the_same_skipping_scans(seed: int, divisions: int,
@@ -363,7 +363,7 @@ def run_real(name: str, scans: int) -> None:
 @pytest.mark.parametrize("name", ["FANUC_STUDER_X22_P036", "FANUC_STUDER_S41_F036",
                                   "FANUC_STUDER_S41_F034"])
 def test_real_programs_run_the_same_skipping_scans(name: str) -> None:
-    run_real(name, 1500)
+    run_real(name, 800)
 
 
 # -- the command line --------------------------------------------------------------------------
