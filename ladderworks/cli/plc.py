@@ -206,21 +206,17 @@ def _run(args: argparse.Namespace) -> int:
                                 widths=[t.width for t in traced]) if traced else None)
     sets.sort(key=lambda item: item[0])
     pending = list(sets)
-    scans = args.scans if args.scans is not None else None
-    end_ms = args.ms
-    if scans is None and end_ms is None:
-        scans = 1
+    end_ms = args.ms  # or N scans (default 1): up to the time after the last
+    if end_ms is None:
+        end_ms = engine.now_ms + (args.scans if args.scans is not None else 1) * engine.period_ms
     stopped = False
-    if scans is not None:  # N scans: up to the time of the last
-        end_ms = max(end_ms or 0, engine.now_ms + scans * engine.period_ms)
-    assert end_ms is not None
     while engine.now_ms < end_ms:
         while pending and pending[0][0] <= engine.now_ms:
             _, target, value = pending.pop(0)
             target.write(engine, value)
         until = min(end_ms, pending[0][0]) if pending else end_ms  # up to the next --set
         try:
-            plc.advance(max(until, engine.now_ms + 1))
+            plc.advance(until)
         except DiagnosticError as error:  # a run-time stop (an endless label loop)
             _report(args.file, error.diagnostics)
             stopped = True

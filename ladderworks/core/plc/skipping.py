@@ -128,8 +128,6 @@ class CycleSkipper:
         self._track()
         self._wait = 0  # scans before the next try
         self._misses = 0  # tries in a row whose states differed
-        self.skipped = 0  # scans skipped in this run
-        self.tries = 0  # cycles tried (figures for the benchmark)
 
     def _track(self) -> None:
         """Copy only the states that hold something: a state never empties within a run (only
@@ -160,26 +158,33 @@ class CycleSkipper:
                 masked[at] &= keep
             fingerprint = bytes(masked)
         ring = self._ring
-        last_ms = next_ms - self._period
-        if self._round and last_ms % self._round == 0:  # a round begins: compare with the last
-            skipped = self._close_round(fingerprint, wake, last_ms, limit_ms, alarms)
+        seen = _Seen(fingerprint, self._hidden(), alarms, next_ms - self._period, wake)
+        if self._round and seen.at_ms % self._round == 0:  # a round begins: compare
+            skipped = self._close_round(seen, limit_ms)
             if skipped:
                 return skipped
-        skipped = 0
         if self._wait:
             self._wait -= 1
         else:
             for length in self._lengths:
                 if length <= len(ring) and ring[-length].fingerprint == fingerprint:
-                    self.tries += 1
-                    skipped = self._close(length, wake, next_ms, limit_ms, alarms)
+                    skipped = self._close(length, seen, next_ms, limit_ms)
+                    if skipped:
+                        return skipped
                     break
-        if not skipped:
-            ring.append(_Seen(fingerprint, self._hidden(), alarms, last_ms, wake))
-        return skipped
+        if len(seen.hidden[0]) != len(self._held):  # tracked afresh meanwhile: copy again
+            seen = _Seen(fingerprint, self._hidden(), seen.alarms, seen.at_ms, seen.wake_ms)
+        ring.append(seen)
+        return 0
 
-    def _close_round(self, fingerprint: bytes, wake: int, last_ms: int, limit_ms: int,
-                     alarms: int) -> int:
+    def _skip(self, growth: list[tuple[dict[str, Any], str, int]], times: int) -> None:
+        """Move each time key on by `times` times its growth; the scans kept are past (a
+        round's marks are, too: the next round's start is no longer one round after them)."""
+        for state, key, step in growth:
+            state[key] += step * times
+        self._ring.clear()
+
+    def _close_round(self, seen: _Seen, limit_ms: int) -> int:
         """At a round's first scan: the scans of whole spans of rounds to skip when the state
         at the first scan of one or two rounds before came back (timers aside).
 
@@ -188,12 +193,12 @@ class CycleSkipper:
         "wake", in its state) and the A area changed nowhere in it.
         """
         marks = self._marks
+        last_ms = seen.at_ms
         if marks and marks[-1].at_ms != last_ms - self._round:
             marks.clear()  # a skip or a run in between: not consecutive rounds
-        seen = _Seen(fingerprint, self._hidden(), alarms, last_ms, wake)
         for back in range(1, len(marks) + 1):
             mark = marks[-back]
-            if mark.alarms != alarms or mark.fingerprint != fingerprint:
+            if mark.alarms != seen.alarms or mark.fingerprint != seen.fingerprint:
                 continue
             if any(self._empty):
                 self._track()
@@ -207,26 +212,21 @@ class CycleSkipper:
             spans = max(0, (horizon - 1 - last_ms) // span)  # a timer that said nothing: 0
             if not spans:
                 break
-            for state, key, step in growth:
-                state[key] += step * spans
-            skipped = spans * span // self._period
-            self.skipped += skipped
-            self._ring.clear()
-            marks.clear()
-            return skipped
+            self._skip(growth, spans)
+            return spans * span // self._period
         marks.append(seen)
         return 0
 
-    def _close(self, length: int, wake: int, next_ms: int, limit_ms: int, alarms: int) -> int:
+    def _close(self, length: int, seen: _Seen, next_ms: int, limit_ms: int) -> int:
         """The scans to skip when the state `length` scans ago came back (timers aside), no
         clock changed and nothing changed the A area since: whole cycles up to the horizon."""
         ring = self._ring
         first = ring[-length]
         period = self._period
-        last_ms = next_ms - period
+        last_ms = seen.at_ms
         growth = None
-        if (alarms == first.alarms and clock_change(first.at_ms, period, self._clocks, NEVER)
-                > last_ms):
+        if (seen.alarms == first.alarms
+                and clock_change(first.at_ms, period, self._clocks, NEVER) > last_ms):
             if any(self._empty):  # a call site ran for the first time: copy it from now on
                 self._track()
             else:
@@ -236,16 +236,13 @@ class CycleSkipper:
             self._wait = min(MAX_WAIT, (1 << self._misses) - 1)
             return 0
         self._misses = 0
-        wakes = min([wake, *(seen.wake_ms for seen in list(ring)[-length:])])
+        wakes = min([seen.wake_ms, *(kept.wake_ms for kept in list(ring)[-length:])])
         horizon = min(wakes, limit_ms, clock_change(last_ms, period, self._clocks, limit_ms))
         if self._round:  # the next round's first scan runs: it is compared with this one's
             horizon = min(horizon, last_ms - last_ms % self._round + self._round)
         cycles = max(0, -(-(horizon - next_ms) // period)) // length
         if cycles:
-            for state, key, step in growth:
-                state[key] += step * cycles
-            self.skipped += cycles * length
-            ring.clear()  # their times are past: the next cycle is found from scans to come
+            self._skip(growth, cycles)
         return cycles * length
 
 
