@@ -1,21 +1,26 @@
 """Real-time PLC with docks open: S41_F036 scanning at 8 ms in the main window (issue 30).
 
 Opens the real program as a user does (File › Open, F9, START), then for each set of docks
-runs the PLC on its wall-clock thread and prints, after the first second: the scans, the
-overruns (a scan that ended after the next one was due), the worst scan and the share of the
-GUI thread's CPU time. Dock sets: none (the alarm panel closed too), default (the window as it
-starts: the alarm panel), technician (PLC diagnostic, bit display live on six bytes, time
-chart sampling six bits). Each set runs in each mode, in one run: "before" (every dock updates
-on every snapshot, shown or not: `snapshot_gate.UPDATE_ALWAYS`), "gate" (docks update only
-when shown, within the GUI thread's share: `gui/docks/snapshot_gate.py`, `PACED` off),
-"paced" (as "gate", and an update waits for the gap after a scan, the time chart redraws at
-most four times a second and sets the span it follows itself: `snapshot_gate.PACED`) and
-"now" (as "paced", and the time chart follows without the view's auto-range, which walked
-every curve's data in each paint: `snapshot_gate.SPAN_SET`; each of its lanes and axes lets a
-due scan run before it paints: `snapshot_gate.YIELD`). Besides the wall-clock figures:
-the scan thread's CPU time per scan (the rest of a scan's time it waited, for the interpreter's
-lock or a processor) and the latest start after a scan's due time (the scan thread waking up:
-the interpreter's lock held by the GUI thread, or the processors busy).
+runs the real-time PLC and prints, after the first second: the scans, the overruns (a scan
+that ended after the next one was due), the worst scan, the share of the GUI thread's CPU
+time and the time START took (the first start spawns the scan process and builds the program
+there). Dock sets: none (the alarm panel closed too), default (the window as it starts: the
+alarm panel), technician (PLC diagnostic, bit display live on six bytes, time chart sampling
+six bits), busy (the technician's docks, and the IDE checks the whole program every second,
+as F9 does before it loads: about half a second of the GUI thread each time).
+
+Each set runs in each mode, in one run. On a thread of the IDE's process, which shares the
+interpreter's lock with the GUI: "before" (every dock updates on every snapshot, shown or
+not: `snapshot_gate.UPDATE_ALWAYS`), "gate" (docks update only when shown, within the GUI
+thread's share: `gui/docks/snapshot_gate.py`, `PACED` off), "paced" (as "gate", and an update
+waits for the gap after a scan, the time chart redraws at most four times a second and sets
+the span it follows itself: `snapshot_gate.PACED`) and "now" (as "paced", and the time chart
+follows without the view's auto-range: `snapshot_gate.SPAN_SET`; each of its lanes and axes
+lets a due scan run before it paints: `snapshot_gate.YIELD`). In a process of its own:
+"process" (as "now", the scans in the scan process, core/plc/scan_process.py: the default).
+Besides the wall-clock figures: the scan's CPU time per scan (the rest of a scan's time it
+waited, for the interpreter's lock or a processor) and the latest start after a scan's due
+time (waking up: the interpreter's lock held by the GUI thread, or the processors busy).
 
 Run: python benchmarks/realtime_docks.py [SECONDS] [--fifo]
 `--fifo` (Linux, root) runs the process at SCHED_FIFO priority so that other processes of a
@@ -38,8 +43,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAM = "FANUC_STUDER_S41_F036"
-MODES = tuple(os.environ.get("MODES", "before gate paced now").split())
-SETS = tuple(os.environ.get("SETS", "none default technician").split())
+MODES = tuple(os.environ.get("MODES", "before gate paced now process").split())
+SETS = tuple(os.environ.get("SETS", "none default technician busy").split())
 
 
 def real_program() -> Path:
@@ -59,6 +64,8 @@ def measure(mode: str, seconds: float) -> None:
     from PySide6.QtWidgets import QApplication
 
     from ladderworks.core.address import parse_address
+    from ladderworks.core.compiler import compile_program
+    from ladderworks.core.il import parse_file
     from ladderworks.core.plc.runner import RealTimeRunner
     from ladderworks.gui.docks import snapshot_gate
     from ladderworks.gui.main_window import MainWindow
@@ -67,8 +74,8 @@ def measure(mode: str, seconds: float) -> None:
     from ladderworks.gui.translation import UiLanguage
 
     snapshot_gate.UPDATE_ALWAYS = mode == "before"
-    snapshot_gate.PACED = mode in ("paced", "now")
-    snapshot_gate.SPAN_SET = snapshot_gate.YIELD = mode == "now"
+    snapshot_gate.PACED = mode in ("paced", "now", "process")
+    snapshot_gate.SPAN_SET = snapshot_gate.YIELD = mode in ("now", "process")
     if os.environ.get("SWITCH_MS"):
         sys.setswitchinterval(float(os.environ["SWITCH_MS"]) / 1000)
     if os.environ.get("SHARE"):
@@ -89,6 +96,8 @@ def measure(mode: str, seconds: float) -> None:
         raise SystemExit("S41_F036 did not compile")
     docks = window.plc_docks
     session = docks.session
+    session.run.scan_process = mode == "process"
+    program = parse_file(real_program()).program
     inputs = [parse_address(f"X{byte}") for byte in (0, 1, 2, 3, 4, 8, 9, 10)]
     toggle = [0]
 
@@ -103,7 +112,8 @@ def measure(mode: str, seconds: float) -> None:
             dock.hide()
         if name == "default":
             docks.alarms.show()
-        if name == "technician":  # all three in view: the diagnostic beside the bit display
+        watching = name in ("technician", "busy")
+        if watching:  # all three in view: the diagnostic beside the bit display
             for dock in technician:
                 dock.show()
             window.splitDockWidget(docks.diagnostic, docks.bit_display, Qt.Orientation.Vertical)
@@ -112,14 +122,22 @@ def measure(mode: str, seconds: float) -> None:
             docks.bit_display.start()
             docks.time_chart.signals_edit.setText("X0.0 Y0.0 R0.1 F0.0 G4.3 R100.0")
         app.processEvents()
+        began = time.perf_counter()
         session.start()
-        if name == "technician":
+        start_s = time.perf_counter() - began
+        if session.run.process_error:
+            raise SystemExit(f"the scan process did not start: {session.run.process_error}")
+        if watching:
             docks.time_chart.start()
         runner = session.run._runner
         assert runner is not None
         timer = QTimer()
         timer.timeout.connect(machine)
         timer.start(250)
+        checks = QTimer()
+        checks.timeout.connect(lambda: compile_program(program))
+        if name == "busy":
+            checks.start(1000)
         marks: list[tuple[float, float]] = []
 
         def first_second(runner: RealTimeRunner = runner,
@@ -143,14 +161,17 @@ def measure(mode: str, seconds: float) -> None:
         stats = runner.stats()
         timer.stop()
         shown = [dock for dock in technician if dock.isVisible()]
-        if name == "technician":
+        checks.stop()
+        if watching:
             assert len(shown) == 3, [dock.objectName() for dock in shown]
             docks.time_chart.stop()
             docks.bit_display.stop()
         session.stop()
         print(f"{mode:6}  {name:10}  {stats.scans:6}  "
               f"{stats.overruns:8}  {stats.max_ms:8.1f}  {stats.avg_ms:6.2f}  "
-              f"{stats.cpu_avg_ms:6.2f}  {stats.late_max_ms:8.1f}  {gui:5.0f} %", flush=True)
+              f"{stats.cpu_avg_ms:6.2f}  {stats.late_max_ms:8.1f}  {gui:5.0f} %  "
+              f"{start_s:7.2f}", flush=True)
+    session.close()
 
 
 def main() -> None:
@@ -170,7 +191,8 @@ def main() -> None:
         os.sched_setscheduler(0, os.SCHED_FIFO, os.sched_param(10))  # children inherit it
     print(f"{PROGRAM}: 8 ms scans on the wall clock, {args.seconds:.0f} s per dock set after "
           f"the first second{' (SCHED_FIFO)' if args.fifo else ''}")
-    print("mode    docks        scans  overruns  worst ms  avg ms  cpu ms  late max  GUI thread")
+    print("mode    docks        scans  overruns  worst ms  avg ms  cpu ms  late max  GUI thread"
+          "  start s")
     for mode in MODES:
         subprocess.run([sys.executable, __file__, str(args.seconds), "--mode", mode],
                        check=True)

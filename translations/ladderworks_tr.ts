@@ -1556,7 +1556,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="93"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="103"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -1571,12 +1571,12 @@
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="102"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="112"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
@@ -1586,12 +1586,12 @@
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="141"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="151"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="145"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -1601,30 +1601,28 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="107"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="175"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="216"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="48"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="188"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="224"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="53"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="88"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="98"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="83"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="93"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -1634,17 +1632,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="291"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="297"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="303"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="309"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="313"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="319"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -2691,22 +2689,37 @@
         <translation>Önce bir program derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="368"/>
+        <source>scans in a process of their own</source>
+        <translation>taramalar kendi süreçlerinde</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="370"/>
+        <source>scans in the IDE&apos;s process</source>
+        <translation>taramalar IDE&apos;nin sürecinde</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="372"/>
+        <source>scan process: {0}</source>
+        <translation>tarama süreci: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="377"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="368"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="380"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="371"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="383"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="374"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="386"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>
@@ -2714,103 +2727,103 @@
 <context>
     <name>PlcDiagnostic</name>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="286"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="293"/>
         <source>PLC DIAGNOSTIC</source>
         <translation>PLC TEŞHİS</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="287"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="294"/>
         <source>Address, e.g. R102.0</source>
         <translation>Adres, örneğin R102.0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="288"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="295"/>
         <source>Find</source>
         <translation>Bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="296"/>
         <source>Where written</source>
         <translation>Nerede yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="297"/>
         <source>Follow</source>
         <translation>Takip et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="291"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="298"/>
         <source>Why?</source>
         <translation>Neden?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="299"/>
         <source>Go to the scan where the address last changed and mark the contacts that changed it</source>
         <translation>Adresin son değiştiği taramaya git ve onu değiştiren kontakları işaretle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="295"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="302"/>
         <source>Back to live</source>
         <translation>Canlıya dön</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="296"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="303"/>
         <source>Zoom out (Ctrl+wheel)</source>
         <translation>Uzaklaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="297"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="304"/>
         <source>Zoom in (Ctrl+wheel)</source>
         <translation>Yakınlaştır (Ctrl+tekerlek)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="306"/>
         <source>Keep the searched address in view while the PLC runs</source>
         <translation>PLC çalışırken aranan adresi ekranda tut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="309"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="316"/>
         <source>{0} %</source>
         <translation>%{0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="387"/>
         <location filename="../ladderworks/gui/docks/online.py" line="144"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="393"/>
         <source>No program loaded</source>
         <translation>Yüklü program yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="395"/>
         <source>RUNNING — scan {0}</source>
         <translation>ÇALIŞIYOR — tarama {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="390"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="397"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="431"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="438"/>
         <source>&apos;{0}&apos; is not an address</source>
         <translation>&apos;{0}&apos; bir adres değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="475"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="482"/>
         <source>&apos;{0}&apos; is not in the program</source>
         <translation>&apos;{0}&apos; programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="485"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="492"/>
         <source>No coil writes {0}</source>
         <translation>{0} adresine yazan çıkış yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/diagnostic.py" line="495"/>
+        <location filename="../ladderworks/gui/docks/diagnostic.py" line="502"/>
         <source>{0} of {1}: network {2}</source>
         <translation>{0} / {1}: devre {2}</translation>
     </message>
@@ -3811,147 +3824,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="177"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="180"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="198"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="210"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="213"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="222"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="225"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="238"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="403"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="425"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="418"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="422"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="430"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="444"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="87"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="428"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="437"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="459"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="439"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="461"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="132"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="141"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="448"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="470"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="503"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="525"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="504"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="526"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="505"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="527"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="506"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="528"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="508"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="530"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="509"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="531"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="510"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="532"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="511"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="512"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="513"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="535"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="514"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="515"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="537"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="520"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="523"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="525"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="547"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>

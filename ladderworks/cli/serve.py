@@ -74,7 +74,8 @@ def _serve(args: argparse.Namespace) -> int:
     parameters = _parameters(args.file, args.params)
     if parameters is None:
         return 2
-    plc = PlcRun(realtime=True, period_ms=args.scan_period or scan_period(dialect))
+    plc = PlcRun(realtime=True, period_ms=args.scan_period or scan_period(dialect),
+                 scan_process=True)  # scans in a process of their own (docs/engine.md)
     plc.set_parameters(parameters.parameters)
     problems = plc.load(binary)
     if problems:
@@ -101,7 +102,7 @@ def _serve(args: argparse.Namespace) -> int:
             pass
     finally:
         server.stop()
-        plc.stop()
+        plc.close()  # stops, and ends the scan process
         for number, handler in previous.items():
             signal.signal(number, handler)
     print("stopped", flush=True)

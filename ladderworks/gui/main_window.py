@@ -534,4 +534,5 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.recovery.close()  # saved or discarded: the recovery copy goes
         if self.help_window is not None:
             self.help_window.close()
+        self.plc_docks.session.close()  # the PLC stops; its scan process ends
         event.accept()

@@ -56,9 +56,11 @@ class PlcSession(QObject):
     symbols_changed = Signal(object)  # the open program's SymbolTable, or None
 
     def __init__(self, parent: QObject | None = None, *, realtime: bool = True,
-                 period_ms: int = DEFAULT_PERIOD_MS, publish_ms: int = PUBLISH_MS) -> None:
+                 period_ms: int = DEFAULT_PERIOD_MS, publish_ms: int = PUBLISH_MS,
+                 scan_process: bool = True) -> None:
         super().__init__(parent)
-        self.run = PlcRun(realtime=realtime, period_ms=period_ms)
+        # real time: the scans run in a process of their own (core/plc/scan_process.py)
+        self.run = PlcRun(realtime=realtime, period_ms=period_ms, scan_process=scan_process)
         self._timer = QTimer(self)
         self._timer.setInterval(publish_ms)
         self._timer.timeout.connect(self.publish)
@@ -76,6 +78,7 @@ class PlcSession(QObject):
         if was_running:
             self._stopped()
         assert self.run.binary is not None
+        self.run.prepare()  # the scan process builds it while the user looks (START waits less)
         self.program_loaded.emit(self.run.binary)
         self.forces_changed.emit(self.run.forces())
         self.publish()
@@ -104,6 +107,11 @@ class PlcSession(QObject):
         if self.run.stop():
             self._stopped()
 
+    def close(self) -> None:
+        """Stop, and end the scan process (the window closes or the program quits)."""
+        self.stop()
+        self.run.close()
+
     def _stopped(self) -> None:
         self._timer.stop()
         self.running_changed.emit(False)
@@ -129,8 +137,12 @@ class PlcSession(QObject):
         snap = self.run.snapshot()
         if self.run.threaded:
             self._update_alarms()
-        self.status_changed.emit(self.run.status())
+        status = self.run.status()  # a scan process gone stops the PLC (PlcRun.status)
+        self.status_changed.emit(status)
         self.snapshot_ready.emit(snap)
+        if self._timer.isActive() and not status.running:
+            self._timer.stop()
+            self.running_changed.emit(False)
 
     def _publish_if_stopped(self) -> None:
         if not self.run.running:

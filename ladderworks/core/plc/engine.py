@@ -5,6 +5,7 @@ from __future__ import annotations
 import threading
 from collections import deque
 from collections.abc import Callable, Iterable
+from contextlib import AbstractContextManager
 from dataclasses import fields
 from typing import Any
 
@@ -18,6 +19,7 @@ from ladderworks.core.plc.forcing import ForceEntry, ForceTable
 from ladderworks.core.plc.functions import FunctionContext, load_all
 from ladderworks.core.plc.history import ScanHistory
 from ladderworks.core.plc.memory import Memory
+from ladderworks.core.plc.scan_state import ScanSetup, ScanState
 from ladderworks.core.plc.skipping import ClockRelay, CycleSkipper, clocks_read
 from ladderworks.core.plc.trace import DEFAULT_CAPACITY, TraceSampler
 
@@ -77,10 +79,14 @@ class ScanEngine:
         self.period_ms = period_ms
         self.now_ms = 0
         self.scan_count = 0
-        self.lock = threading.RLock()
+        # the lock every public method takes (PlcRun puts its ScanLock here, for a scan process)
+        self.lock: AbstractContextManager[object] = threading.RLock()
         self.force_table = ForceTable()
         self.trace: TraceSampler | None = None
-        self.history: ScanHistory | None = None  # set to keep every scan (needs monitored)
+        self._history: ScanHistory | None = None
+        # told after a change of the setup (forces, disabled ops, monitoring, trace, history):
+        # a scan process is sent the new setup (PlcRun)
+        self.on_setup: Callable[[], None] | None = None
         self._power_flow = bytearray(len(self.program.ops))
         self._flow_stale: GeneratedScan | None = None  # the variant whose last scan's power
         # flow is not in the bytes yet
@@ -104,6 +110,11 @@ class ScanEngine:
         self.every_scan = False
         self.skipped = 0  # scans skipped since the engine was made
         self.alarm_changes = 0  # changes of the A area logged since the engine was made
+        # True while a scan process scans the program (core/plc/process_runner.py): memory's
+        # areas are then shared, and a variant made now would keep them; it is made at the
+        # next scan here instead
+        self.parked = False
+        self._pending = False
         self._current = self._variant()
 
     @property
@@ -125,14 +136,27 @@ class ScanEngine:
             self._variants[key] = variant
         return variant
 
+    def _choose(self) -> None:
+        """Use the variant of the monitoring and disabled ops now (parked: at the next scan)."""
+        if self.parked:
+            self._pending = True
+        else:
+            self._current = self._variant()
+
     @property
     def source(self) -> str:
         """The Python source of the scan now in use (for the curious and for tests)."""
+        if self._pending and not self.parked:
+            self._pending = False
+            self._current = self._variant()
         return self._current.source
 
     def scan(self) -> None:
         """One scan at `now_ms`, then advance the clock by one period."""
         with self.lock:
+            if self._pending:
+                self._pending = False
+                self._current = self._variant()
             now = self.now_ms
             ctx = self._ctx
             ctx.now_ms = now
@@ -153,8 +177,8 @@ class ScanEngine:
                 self.alarm_changes += 1
             if self.trace is not None:
                 self.trace.sample(self.memory, now)
-            if self.history is not None:  # time travel (core/plc/history.py), off by default
-                self.history.record(self)
+            if self._history is not None:  # time travel (core/plc/history.py), off by default
+                self._history.record(self)
             self.scan_count += 1
             self.now_ms = now + self.period_ms
 
@@ -237,6 +261,53 @@ class ScanEngine:
                     block[:] = [0] * len(block)
             self._flow_stale = None
 
+    # -- moving to and from a scan process (core/plc/scan_process.py) ----------------------
+
+    def export_state(self) -> ScanState:
+        """What the next scan depends on besides memory and the setup (a copy)."""
+        with self.lock:
+            return ScanState(self.now_ms, self.scan_count, self._first_scan,
+                             [dict(state) for state in self._states], dict(self._ctx.edges),
+                             self._alarm_bits)
+
+    def import_state(self, state: ScanState) -> None:
+        """Go on from `state` (another engine of the same program left it)."""
+        with self.lock:
+            self.now_ms, self.scan_count = state.now_ms, state.scan_count
+            self._first_scan = state.first_scan
+            for mine, theirs in zip(self._states, state.states, strict=True):
+                mine.clear()  # in place: the scan's code holds these dicts
+                mine.update(theirs)
+            self._ctx.edges.clear()
+            self._ctx.edges.update(state.edges)
+            self._alarm_bits = state.alarm_bits
+
+    def setup(self) -> ScanSetup:
+        """The forces, disabled elements, monitoring and trace now."""
+        with self.lock:
+            trace = self.trace.spec() if self.trace is not None else None
+            return ScanSetup(self.force_table.forced(), self.force_table.disabled_lines(),
+                             self._monitored, trace)
+
+    def use_setup(self, setup: ScanSetup) -> None:
+        """Take another engine's setup; a trace of another ident starts sampling afresh."""
+        with self.lock:
+            self.force_table = setup.force_table()
+            self._monitored = setup.monitored
+            self._current = self._variant()
+            spec = setup.trace
+            if spec is None:
+                self.trace = None
+            elif self.trace is None or self.trace.ident != spec.ident:
+                self.trace = TraceSampler.from_spec(spec)
+
+    def adopt_clock(self, scan_count: int, now_ms: int, flow: bytes | memoryview) -> None:
+        """The scan count, clock and power flow another engine's last scan left."""
+        with self.lock:
+            self.scan_count, self.now_ms = scan_count, now_ms
+            self._power_flow[:] = flow
+            self._flow_stale = None
+
     # -- monitoring ----------------------------------------------------------------------
 
     @property
@@ -259,7 +330,23 @@ class ScanEngine:
     def monitored(self, on: bool) -> None:
         with self.lock:
             self._monitored = bool(on)
-            self._current = self._variant()
+            self._choose()
+        self._setup_changed()
+
+    @property
+    def history(self) -> ScanHistory | None:
+        """The scan history kept for time travel (core/plc/history.py): None, off, by default;
+        set to keep every scan (it needs the monitored scan)."""
+        return self._history
+
+    @history.setter
+    def history(self, history: ScanHistory | None) -> None:
+        self._history = history
+        self._setup_changed()
+
+    def _setup_changed(self) -> None:
+        if self.on_setup is not None:
+            self.on_setup()
 
     def power_flow_map(self) -> list[tuple[SourcePosition, bool]]:
         """The last monitored scan's result of every op, with the op's source position."""
@@ -273,11 +360,14 @@ class ScanEngine:
         """Hold a bit at 0 or 1 (written before and after the logic of every scan)."""
         with self.lock:
             self.force_table.force(address, bool(value))
+        self._setup_changed()
 
     def release(self, address: Address) -> bool:
         """Stop forcing a bit."""
         with self.lock:
-            return self.force_table.release(address)
+            done = self.force_table.release(address)
+        self._setup_changed()
+        return done
 
     def op_index(self, op: int | SourcePosition | tuple[int, int]) -> int:
         """An op index from an index, a SourcePosition or a (network, instruction) pair."""
@@ -297,16 +387,18 @@ class ScanEngine:
         with self.lock:
             index = self.op_index(op)
             self.force_table.disable(index, self.program.ops[index].source.line)
-            self._current = self._variant()
-            return index
+            self._choose()
+        self._setup_changed()
+        return index
 
     def enable(self, op: int | SourcePosition | tuple[int, int]) -> int:
         """Enable a disabled element again; returns its op index."""
         with self.lock:
             index = self.op_index(op)
             self.force_table.enable(index)
-            self._current = self._variant()
-            return index
+            self._choose()
+        self._setup_changed()
+        return index
 
     def forces(self) -> list[ForceEntry]:
         """Everything forced or disabled, in one list."""
@@ -317,7 +409,8 @@ class ScanEngine:
         """Release every force and enable every element."""
         with self.lock:
             self.force_table.clear()
-            self._current = self._variant()
+            self._choose()
+        self._setup_changed()
 
     # -- tracing and alarms --------------------------------------------------------------
 
@@ -326,14 +419,16 @@ class ScanEngine:
                     widths: list[int] | None = None) -> TraceSampler:
         """Sample `addresses` (bytes: `widths` bytes each) every `period_ms` from the next scan."""
         with self.lock:
-            self.trace = TraceSampler(list(addresses), period_ms, capacity, widths)
-            return self.trace
+            trace = self.trace = TraceSampler(list(addresses), period_ms, capacity, widths)
+        self._setup_changed()
+        return trace
 
     def stop_trace(self) -> TraceSampler | None:
         """Stop sampling; returns the sampler (its samples can still be taken)."""
         with self.lock:
             trace, self.trace = self.trace, None
-            return trace
+        self._setup_changed()
+        return trace
 
     def take_alarm_changes(self) -> list[tuple[int, bytes]]:
         """The A-area changes since the last call, oldest first: (scan time ms, 100 bytes)."""

@@ -75,6 +75,14 @@ class ForceTable:
         """The forced bits and their values."""
         return dict(self._forced)
 
+    def disabled_lines(self) -> dict[int, int]:
+        """The disabled op indices and their source lines."""
+        return dict(self._disabled)
+
+    def forget_memory(self) -> None:
+        """Memory's areas changed (a scan process began or ended): find them again at apply."""
+        self._masks = []
+
     def entries(self) -> list[ForceEntry]:
         """Everything forced or disabled, forces first (by address), then ops in order."""
         items = [ForceEntry("force", address, value)

@@ -17,9 +17,9 @@ The policy, in one place:
 from __future__ import annotations
 
 import time
+import weakref
 from collections.abc import Callable, Iterable
 from contextlib import AbstractContextManager, nullcontext
-from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.alarms import ActiveAlarm, ActiveAlarms, AlarmTable
@@ -29,7 +29,7 @@ from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.dialects.fatek.ascii_format import AsciiFormat
 from ladderworks.core.dialects.fatek.terminal import AsciiTerminal
 from ladderworks.core.il.program import Program
-from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
+from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine, load_binary
 from ladderworks.core.plc.forcing import ForceEntry
 from ladderworks.core.plc.functions.counters import (
     counter_preset_address,
@@ -38,68 +38,19 @@ from ladderworks.core.plc.functions.counters import (
 from ladderworks.core.plc.functions.fatek_io import ASCII_FILES, ASCII_TERMINAL
 from ladderworks.core.plc.memory import Memory
 from ladderworks.core.plc.parameters import PARAMETER_AREAS, PmcParameters
+from ladderworks.core.plc.plc_status import PlcSnapshot, PlcStatus, ScanFigures
+from ladderworks.core.plc.process_runner import ProcessRunner, ScanProcess, ScanProcessError
 from ladderworks.core.plc.runner import RealTimeRunner, ScanStats
+from ladderworks.core.plc.scan_state import ScanLock
 from ladderworks.core.plc.timer_table import TimerLayout, dialect_of, timer_layout
 from ladderworks.core.plc.trace import TraceSample, TraceSampler
+
+__all__ = ["MACHINE_AREAS", "OpRef", "PlcRun", "PlcSnapshot", "PlcStatus", "compile_and_load"]
 
 OpRef = int | tuple[int, int]
 # Areas the machine and the CNC write (the program only reads them): a released force gives
 # the bit back its machine value.
 MACHINE_AREAS = frozenset({Area.X, Area.F})
-
-
-@dataclass(frozen=True, slots=True)
-class PlcStatus:
-    """What the PLC control screen shows: running or not, scans and their times (ms)."""
-
-    loaded: bool = False
-    running: bool = False
-    scan_count: int = 0
-    now_ms: int = 0
-    period_ms: int = DEFAULT_PERIOD_MS
-    min_ms: float = 0.0
-    avg_ms: float = 0.0
-    max_ms: float = 0.0
-    overruns: int = 0
-
-
-@dataclass(frozen=True, slots=True)
-class PlcSnapshot:
-    """A consistent copy of the PLC between two scans: every area and the power flow."""
-
-    scan_count: int = 0
-    now_ms: int = 0
-    areas: dict[Area, bytes] = field(default_factory=dict)
-    power_flow: bytes = b""  # ST0 after each op (all 0 unless monitored)
-    monitored: bool = False
-    disabled: frozenset[int] = frozenset()
-
-    def bit(self, address: Address) -> int:
-        """The bit at a bit address (0 or 1)."""
-        assert address.bit is not None
-        return self.areas[address.area][address.byte] >> address.bit & 1
-
-    def read(self, address: Address, width: int = 1) -> int:
-        """The `width`-byte little-endian value at a byte address."""
-        data = self.areas[address.area]
-        return int.from_bytes(data[address.byte:address.byte + width], "little")
-
-
-class ScanFigures:
-    """Min/avg/max of scans run on the virtual clock (the runner keeps its own)."""
-
-    def __init__(self) -> None:
-        self.count = 0
-        self.total = 0.0
-        self.low = float("inf")
-        self.high = 0.0
-
-    def add(self, seconds: float) -> None:
-        """Count one scan that took `seconds`."""
-        self.count += 1
-        self.total += seconds
-        self.low = min(self.low, seconds)
-        self.high = max(self.high, seconds)
 
 
 def compile_and_load(program: Program,
@@ -117,8 +68,17 @@ class PlcRun:
     """One PLC: the loaded program's engine, its memory, forces, trace, alarms and parameters."""
 
     def __init__(self, *, realtime: bool = False, period_ms: int = DEFAULT_PERIOD_MS,
-                 divisions: int = 1, every_scan: bool = False) -> None:
+                 divisions: int = 1, every_scan: bool = False,
+                 scan_process: bool = False) -> None:
         self.realtime = realtime  # start() runs a wall-clock thread; else the virtual clock
+        # real-time scans run in a process of their own (core/plc/scan_process.py), unless
+        # time travel keeps the history; else on a thread of this process
+        self.scan_process = scan_process
+        self.process_error = ""  # why the last start scans here after all ("" when it did not)
+        self._process: ScanProcess | None = None
+        self._data: bytes | None = None  # the loaded binary as given (the process builds it)
+        self._lock = ScanLock()  # every engine's lock: a scan process's lock joins it
+        self._closer: weakref.finalize | None = None
         self.every_scan = every_scan  # `advance` skips no scan (ScanEngine.every_scan)
         self.period_ms = period_ms
         self.divisions = divisions  # level 2 and 3 run every `divisions` scans (docs/engine.md)
@@ -133,7 +93,7 @@ class PlcRun:
         self.ascii_files: dict[Address, AsciiFormat | None] = {}
         self.trace: TraceSampler | None = None
         self._alarms = ActiveAlarms(self.alarm_table)
-        self._runner: RealTimeRunner | None = None
+        self._runner: RealTimeRunner | ProcessRunner | None = None
         self._running = False
         self._figures = ScanFigures()
         self._stopped_stats: ScanStats | None = None
@@ -154,14 +114,20 @@ class PlcRun:
              program: Program | None = None) -> list[Diagnostic]:
         """Load a binary (stops first): cold start, then the parameters; [] when loaded."""
         try:
-            # monitored from the start when a view monitors: one variant generated, not two
-            engine = ScanEngine(binary, period_ms=self.period_ms, memory=self.memory,
-                                divisions=self.divisions, monitored=self._monitors > 0)
+            decoded = binary if isinstance(binary, BinaryProgram) else load_binary(binary)
         except DiagnosticError as error:
-            return list(error.diagnostics)
+            return list(error.diagnostics)  # refused: the PLC runs on
+        # stopped first: a scan process holds memory's areas until it stops, and the new
+        # engine's code binds them
         self.stop()
+        # monitored from the start when a view monitors: one variant generated, not two
+        engine = ScanEngine(decoded, period_ms=self.period_ms, memory=self.memory,
+                            divisions=self.divisions, monitored=self._monitors > 0)
         old = self.engine
         self.engine = engine
+        engine.lock = self._lock
+        engine.on_setup = self._setup_changed
+        self._data = binary if isinstance(binary, bytes) else None
         self.binary = engine.program
         self.program = program
         engine.extra[ASCII_TERMINAL] = self.ascii_terminal  # a Fatek program's FUN 94 output
@@ -178,6 +144,8 @@ class PlcRun:
         self._figures = ScanFigures()
         self._stopped_stats = None
         self._alarms.clear()
+        if self._process is not None:  # built while the user looks at the new program
+            self._build()
         return []
 
     def load_program(self, program: Program) -> CompileResult:
@@ -220,9 +188,64 @@ class PlcRun:
         if not self._running:
             self._running = True
             if self.realtime:
-                self._runner = RealTimeRunner(self.engine)
+                self._runner = self._process_runner() or RealTimeRunner(self.engine)
                 self._runner.start()
         return True
+
+    def _build(self) -> None:
+        assert self._process is not None and self.engine is not None
+        self._process.build(self.engine, self._data, self.ascii_files)
+
+    def prepare(self) -> None:
+        """Start the scan process and build the loaded program there, in the background: a
+        START that follows waits only for what is left (a real program takes seconds)."""
+        self._process_runner(wait=False)
+
+    def _process_runner(self, wait: bool = True) -> ProcessRunner | None:
+        """A runner in the scan process (started and built when needed); None to scan here."""
+        engine = self.engine
+        self.process_error = ""
+        if not (self.scan_process and self.realtime) or engine is None or \
+                engine.history is not None:
+            return None
+        try:
+            if self._process is not None and not self._process.alive:
+                self._end_process()
+            if self._process is None:
+                self._process = ScanProcess()
+                self._closer = weakref.finalize(self, self._process.close)  # ends with the run
+            if self._process.built is not engine:
+                self._build()
+            if not wait:
+                return None
+            self._process.wait_ready()
+        except (OSError, ScanProcessError) as error:
+            self.process_error = str(error)
+            return None
+        return ProcessRunner(engine, self._process, self._lock)
+
+    def _setup_changed(self) -> None:
+        """Forces, disabled elements, monitoring, trace or history changed on the engine."""
+        runner, engine = self._runner, self.engine
+        if not isinstance(runner, ProcessRunner) or engine is None:
+            return
+        if engine.history is None:
+            runner.send_setup()
+            return
+        runner.stop(safe=False)  # time travel records every scan: they run here from now
+        self._runner = RealTimeRunner(engine)
+        self._runner.start()
+
+    def close(self) -> None:
+        """End the scan process (the IDE closes): the PLC stops first."""
+        self.stop()
+        self._end_process()
+
+    def _end_process(self) -> None:
+        if self._process is not None:
+            if self._closer is not None:
+                self._closer()  # ScanProcess.close, once
+            self._process = None
 
     def stop(self) -> bool:
         """Stop scanning (outputs Y go to 0, the safe state); False if it was not running."""
@@ -233,6 +256,8 @@ class PlcRun:
         if self._runner is not None:
             self._runner.stop()
             self._stopped_stats = self._runner.stats()
+            if isinstance(self._runner, ProcessRunner) and self._runner.error:
+                self.process_error = self._runner.error
             self._runner = None
         self._running = False
         return True
@@ -274,6 +299,11 @@ class PlcRun:
         engine = self.engine
         if engine is None:
             return PlcStatus(period_ms=self.period_ms)
+        if isinstance(self._runner, ProcessRunner) and self._runner.lost:
+            self.stop()  # the safe state; the PLC control shows why (process_error)
+        if isinstance(self._runner, ProcessRunner):
+            with engine.lock:
+                self._runner.sync()
         stats = self._runner.stats() if self._runner is not None else self._stopped_stats
         if stats is not None:
             low, avg, high, overruns = stats.min_ms, stats.avg_ms, stats.max_ms, stats.overruns
@@ -282,14 +312,19 @@ class PlcRun:
             low = f.low * 1e3 if f.count else 0.0
             avg = f.total / f.count * 1e3 if f.count else 0.0
             high, overruns = f.high * 1e3, 0
+        scanner = ("process" if isinstance(self._runner, ProcessRunner) else
+                   "thread" if self._runner is not None else "")
         return PlcStatus(True, self._running, engine.scan_count, engine.now_ms,
-                         engine.period_ms, low, avg, high, overruns)
+                         engine.period_ms, low, avg, high, overruns, scanner,
+                         self.process_error)
 
     def snapshot(self) -> PlcSnapshot:
         """A copy of memory and power flow taken between two scans."""
         engine = self.engine
         if engine is None:
             return PlcSnapshot(areas=self.memory.snapshot())
+        if isinstance(self._runner, ProcessRunner):
+            return self._runner.snapshot()
         with engine.lock:
             return PlcSnapshot(engine.scan_count, engine.now_ms, self.memory.snapshot(),
                                bytes(engine.power_flow), engine.monitored,
@@ -309,7 +344,7 @@ class PlcRun:
 
     def lock(self) -> AbstractContextManager[object]:
         """The engine's lock (nothing to lock before a load)."""
-        return self.engine.lock if self.engine is not None else nullcontext()
+        return self._lock if self.engine is not None else nullcontext()
 
     def set_bit(self, address: Address, value: bool | int) -> None:
         """Set a bit between two scans; on a held (forced X/F) bit, what it goes back to."""

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 
 from ladderworks.core.address import Address
 from ladderworks.core.plc.memory import Memory
+from ladderworks.core.plc.scan_state import TraceSpec
 
 DEFAULT_CAPACITY = 100_000
 
@@ -42,6 +43,8 @@ class TraceSampler:
         self._seq = 0
         self.dropped = 0
         widths = widths or [1] * len(self.addresses)
+        self.widths = tuple(widths)
+        self.ident = id(self)  # the samples of a scan process's copy come back to this one
         self._readers = [(address.area, address.byte, address.bit, width)
                          for address, width in zip(self.addresses, widths, strict=True)]
 
@@ -64,6 +67,35 @@ class TraceSampler:
                 self.dropped += 1
             self._buffer.append(TraceSample(self._seq, now_ms, values))
             self._seq += 1
+
+    def spec(self) -> TraceSpec:
+        """The settings and position: a copy elsewhere samples on from here."""
+        with self._lock:
+            return TraceSpec(self.ident, tuple(self.addresses), self.period_ms,
+                             self._buffer.maxlen or DEFAULT_CAPACITY, self.widths,
+                             self._next_ms, self._seq)
+
+    @classmethod
+    def from_spec(cls, spec: TraceSpec) -> TraceSampler:
+        """A sampler like the one `spec` describes, going on from its position."""
+        sampler = cls(list(spec.addresses), spec.period_ms, spec.capacity, list(spec.widths))
+        sampler.ident = spec.ident
+        sampler.go_on(spec.next_ms, spec.seq)
+        return sampler
+
+    def go_on(self, next_ms: int | None, seq: int) -> None:
+        """Take the next sample at `next_ms`, numbered `seq` (a copy's position)."""
+        with self._lock:
+            self._next_ms, self._seq = next_ms, seq
+
+    def extend(self, samples: list[TraceSample]) -> None:
+        """Keep samples a copy took (a scan process's), as if taken here."""
+        with self._lock:
+            for sample in samples:
+                if len(self._buffer) == self._buffer.maxlen:
+                    self.dropped += 1
+                self._buffer.append(sample)
+                self._seq = sample.seq + 1
 
     def take(self) -> list[TraceSample]:
         """Every sample not taken yet, oldest first (the buffer is emptied)."""

@@ -360,6 +360,18 @@ class PlcControlDock(Retranslating, QDockWidget):
         self.control_actions["action_plc_control_compile"].setEnabled(
             not running and not self.compiling)
 
+    @staticmethod
+    def _scanner_text(status: PlcStatus) -> str:
+        """Where the scans run, and why not in their own process when they could not."""
+        text = ""
+        if status.scanner == "process":
+            text = " · " + translate("PlcControl", "scans in a process of their own")
+        elif status.scanner == "thread":
+            text = " · " + translate("PlcControl", "scans in the IDE's process")
+        if status.problem:
+            text += " · " + translate("PlcControl", "scan process: {0}").format(status.problem)
+        return text
+
     def _show_status(self, status: PlcStatus) -> None:
         if not status.loaded:
             self.indicator.setText(translate("PlcControl", "NO PROGRAM"))
@@ -377,7 +389,7 @@ class PlcControlDock(Retranslating, QDockWidget):
                 "period {4} ms · overruns {5}").format(
                 status.scan_count, decimal(status.min_ms, 3), decimal(status.avg_ms, 3),
                 decimal(status.max_ms, 3),
-                status.period_ms, status.overruns))
+                status.period_ms, status.overruns) + self._scanner_text(status))
         else:
             self.figures.setText("")
         self._update_actions()

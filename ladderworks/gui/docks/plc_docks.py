@@ -204,6 +204,6 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     app = QCoreApplication.instance()
     if app is not None:
         app.aboutToQuit.connect(modbus.stop_server)  # the server thread ends with the program
-        app.aboutToQuit.connect(session.stop)  # the scan thread ends with the program
+        app.aboutToQuit.connect(session.close)  # the scan process ends with the program
     return PlcDocks(session, control, diagnostic, force_list, online, bits, chart, alarms,
                     tables, scenario, travel, modbus, ascii_output, states)
