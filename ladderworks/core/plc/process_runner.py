@@ -342,7 +342,7 @@ class ProcessRunner:
     def _output(self, alarms: list[tuple[int, bytes]], ident: int, samples: list[Any],
                 texts: list[str]) -> None:
         engine = self.engine
-        with self.lock:
+        with self.lock.local:  # the IDE's own: the scan process need not wait for this
             if alarms:
                 engine.alarm_log.extend(alarms)
                 engine.alarm_changes += len(alarms)

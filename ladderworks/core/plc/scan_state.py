@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import threading
+import time
 from dataclasses import dataclass
 from typing import Any
 
 from ladderworks.core.address import Address
 from ladderworks.core.plc.forcing import ForceTable
+
+POLL_S = 0.0001  # how often a thread of the IDE's looks whether the scan process's lock is free
 
 
 @dataclass(slots=True)
@@ -54,6 +57,19 @@ class ScanSetup:
         return table
 
 
+def _take(shared: Any, blocking: bool, timeout: float) -> bool:
+    """Take the scan process's lock without waiting for it inside the call: a blocking wait
+    gives up the interpreter's lock, and a thread that got the process's lock could then wait
+    for the interpreter while another thread of the IDE's holds it in a long call, the scan
+    process waiting all that time. Polled, the lock is only ever taken with the interpreter."""
+    end = None if timeout < 0 else time.perf_counter() + timeout
+    while not shared.acquire(False):
+        if not blocking or (end is not None and time.perf_counter() > end):
+            return False
+        time.sleep(POLL_S)
+    return True
+
+
 class ScanLock:
     """The engine's lock: a thread lock and, while a scan process runs, that process's lock.
 
@@ -70,8 +86,7 @@ class ScanLock:
         if not self._local.acquire(blocking, timeout):
             return False
         shared = self.shared
-        if shared is not None and not shared.acquire(blocking,
-                                                     None if timeout < 0 else timeout):
+        if shared is not None and not _take(shared, blocking, timeout):
             self._local.release()
             return False
         stack = getattr(self._taken, "stack", None)
@@ -79,6 +94,12 @@ class ScanLock:
             stack = self._taken.stack = []
         stack.append(shared)
         return True
+
+    @property
+    def local(self) -> threading.RLock:
+        """The thread lock alone: for what only this process's threads share (the scan
+        process's output the IDE keeps)."""
+        return self._local
 
     def release(self) -> None:
         """Give the lock back."""

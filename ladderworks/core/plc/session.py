@@ -302,7 +302,7 @@ class PlcRun:
         if isinstance(self._runner, ProcessRunner) and self._runner.lost:
             self.stop()  # the safe state; the PLC control shows why (process_error)
         if isinstance(self._runner, ProcessRunner):
-            with engine.lock:
+            with self._lock.local:
                 self._runner.sync()
         stats = self._runner.stats() if self._runner is not None else self._stopped_stats
         if stats is not None:
