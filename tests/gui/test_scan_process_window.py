@@ -63,4 +63,4 @@ def test_start_scans_in_the_scan_process_and_the_window_sees_it(qtbot: QtBot,
     assert session.run.read(parse_address("Y0")) == 0
     assert all(isinstance(data, bytearray) for data in session.run.memory.areas.values())
     window.close()
-    assert session.run._process is None  # closing the window ends the scan process
+    assert session.run._slot.process is None  # closing the window ends the scan process

@@ -17,6 +17,7 @@ import queue
 import sys
 import threading
 import time
+import weakref
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from multiprocessing.shared_memory import SharedMemory
@@ -25,7 +26,7 @@ from typing import Any
 from ladderworks.core.compiler.binary import encode
 from ladderworks.core.plc.engine import ScanEngine
 from ladderworks.core.plc.plc_status import PlcSnapshot
-from ladderworks.core.plc.runner import ScanStats
+from ladderworks.core.plc.runner import ScanStats, stats_of
 from ladderworks.core.plc.scan_process import (
     FRAME,
     FRAME_AT,
@@ -240,6 +241,42 @@ def _free(block: SharedMemory) -> None:
         block.unlink()
 
 
+class ProcessSlot:
+    """The scan process of one PLC run: spawned when first needed, kept for the next loads and
+    starts, replaced when it has ended, closed with the run (or when the run is collected)."""
+
+    def __init__(self) -> None:
+        self.process: ScanProcess | None = None
+        self._closer: weakref.finalize | None = None
+
+    def build(self, engine: ScanEngine, data: bytes | None, files: dict[Any, Any]) -> None:
+        """A program loaded: the process, if there is one, builds it in the background."""
+        if self.process is not None and self.process.alive:
+            self.process.build(engine, data, files)
+
+    def runner(self, owner: object, engine: ScanEngine, data: bytes | None,
+               files: dict[Any, Any], lock: ScanLock, wait: bool) -> ProcessRunner | None:
+        """A runner for `engine` in the process (spawned and built as needed); None when not
+        `wait`ing (the build goes on). OSError or ScanProcessError if it cannot be had."""
+        if self.process is not None and not self.process.alive:
+            self.close()
+        if self.process is None:
+            self.process = ScanProcess()
+            self._closer = weakref.finalize(owner, self.process.close)  # ends with the run
+        if self.process.built is not engine:
+            self.process.build(engine, data, files)
+        if not wait:
+            return None
+        self.process.wait_ready()
+        return ProcessRunner(engine, self.process, lock)
+
+    def close(self) -> None:
+        """End the process (once)."""
+        if self._closer is not None:
+            self._closer()
+        self.process = self._closer = None
+
+
 class ProcessRunner:
     """Scans `engine`'s program in `process` every period of wall-clock time until `stop()`
     (RealTimeRunner's face: its figures, overruns and due time come from the process)."""
@@ -362,11 +399,7 @@ class ProcessRunner:
 
     def stats(self) -> ScanStats:
         """The process's scan figures so far."""
-        count, total, low, high, overruns, cpu, late = self.process.header()[4:]
-        if not count:
-            return ScanStats()
-        return ScanStats(count, low * 1e3, total / count * 1e3, high * 1e3, overruns,
-                         cpu / count * 1e3, late * 1e3)
+        return stats_of(*self.process.header()[4:])
 
     def reset_stats(self) -> None:
         """Start the figures afresh."""

@@ -23,6 +23,38 @@ class ScanStats:
     late_max_ms: float = 0.0  # the latest start after a scan's due time (waiting to wake up)
 
 
+class Figures:
+    """Scan-time figures as they accumulate (seconds): what `ScanStats` is made of."""
+
+    def __init__(self) -> None:
+        self.count, self.total, self.low, self.high = 0, 0.0, float("inf"), 0.0
+        self.overruns, self.cpu, self.late = 0, 0.0, 0.0
+
+    def add(self, took: float, cpu: float, late: float, overrun: bool) -> None:
+        """Count one scan: its duration, its CPU time, how late it began, and an overrun."""
+        self.count += 1
+        self.total += took
+        self.cpu += cpu
+        self.late = max(self.late, late)
+        self.low = min(self.low, took)
+        self.high = max(self.high, took)
+        self.overruns += overrun
+
+    def values(self) -> tuple[int, float, float, float, int, float, float]:
+        """Count, total, min, max, overruns, CPU, latest start (the scan process's header)."""
+        low = self.low if self.count else 0.0
+        return self.count, self.total, low, self.high, self.overruns, self.cpu, self.late
+
+
+def stats_of(count: int, total: float, low: float, high: float, overruns: int, cpu: float,
+             late: float) -> ScanStats:
+    """The figures in ms from `Figures.values()`."""
+    if not count:
+        return ScanStats()
+    return ScanStats(count, low * 1e3, total / count * 1e3, high * 1e3, overruns,
+                     cpu / count * 1e3, late * 1e3)
+
+
 class RealTimeRunner:
     """Scans `engine` every `engine.period_ms` of wall-clock time until `stop()`.
 
@@ -36,13 +68,7 @@ class RealTimeRunner:
         self._thread: threading.Thread | None = None
         self._stop = threading.Event()
         self._lock = threading.Lock()
-        self._count = 0
-        self._total = 0.0
-        self._min = float("inf")
-        self._max = 0.0
-        self._overruns = 0
-        self._cpu = 0.0
-        self._late = 0.0
+        self._figures = Figures()
         self._next_start = 0.0  # perf_counter time the next scan is due
         self._scanning = False
 
@@ -77,18 +103,12 @@ class RealTimeRunner:
     def stats(self) -> ScanStats:
         """The scan-time figures so far."""
         with self._lock:
-            if not self._count:
-                return ScanStats()
-            return ScanStats(self._count, self._min * 1e3, self._total / self._count * 1e3,
-                             self._max * 1e3, self._overruns, self._cpu / self._count * 1e3,
-                             self._late * 1e3)
+            return stats_of(*self._figures.values())
 
     def reset_stats(self) -> None:
         """Start the figures afresh."""
         with self._lock:
-            self._count, self._total, self._min, self._max, self._overruns = (
-                0, 0.0, float("inf"), 0.0, 0)
-            self._cpu = self._late = 0.0
+            self._figures = Figures()
 
     def _loop(self) -> None:
         period = self.engine.period_ms / 1000.0
@@ -107,14 +127,7 @@ class RealTimeRunner:
             now = time.perf_counter()
             late = now > next_start
             with self._lock:
-                self._count += 1
-                self._total += took
-                self._cpu += cpu
-                self._late = max(self._late, began - due)
-                self._min = min(self._min, took)
-                self._max = max(self._max, took)
-                if late:
-                    self._overruns += 1
+                self._figures.add(took, cpu, began - due, late)
             if late:
                 next_start = self._next_start = now
             else:

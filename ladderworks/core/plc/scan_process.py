@@ -28,6 +28,7 @@ from ladderworks.core.dialects import memory_sizes
 from ladderworks.core.dialects.fatek.terminal import AsciiTerminal
 from ladderworks.core.plc.engine import ScanEngine
 from ladderworks.core.plc.functions.fatek_io import ASCII_FILES, ASCII_TERMINAL
+from ladderworks.core.plc.runner import Figures
 from ladderworks.core.plc.scan_state import ScanSetup, ScanState
 
 # scan count, clock (ms), next start (perf_counter s), scanning (0/1), then the figures:
@@ -89,29 +90,6 @@ class SentTerminal(AsciiTerminal):
         """Receive one output of ASCWR, and keep it for the IDE."""
         super().write(text)
         self.sent.append(text)
-
-
-class Figures:
-    """The scan-time figures (RealTimeRunner's): count, total, min, max, overruns, CPU, late."""
-
-    def __init__(self) -> None:
-        self.count, self.total, self.low, self.high = 0, 0.0, float("inf"), 0.0
-        self.overruns, self.cpu, self.late = 0, 0.0, 0.0
-
-    def add(self, took: float, cpu: float, late: float, overrun: bool) -> None:
-        """Count one scan."""
-        self.count += 1
-        self.total += took
-        self.cpu += cpu
-        self.late = max(self.late, late)
-        self.low = min(self.low, took)
-        self.high = max(self.high, took)
-        self.overruns += overrun
-
-    def values(self) -> tuple[int, float, float, float, int, float, float]:
-        """In the header's order."""
-        low = self.low if self.count else 0.0
-        return self.count, self.total, low, self.high, self.overruns, self.cpu, self.late
 
 
 class Scanner:

@@ -17,7 +17,6 @@ The policy, in one place:
 from __future__ import annotations
 
 import time
-import weakref
 from collections.abc import Callable, Iterable
 from contextlib import AbstractContextManager, nullcontext
 
@@ -39,7 +38,7 @@ from ladderworks.core.plc.functions.fatek_io import ASCII_FILES, ASCII_TERMINAL
 from ladderworks.core.plc.memory import Memory
 from ladderworks.core.plc.parameters import PARAMETER_AREAS, PmcParameters
 from ladderworks.core.plc.plc_status import PlcSnapshot, PlcStatus, ScanFigures
-from ladderworks.core.plc.process_runner import ProcessRunner, ScanProcess, ScanProcessError
+from ladderworks.core.plc.process_runner import ProcessRunner, ProcessSlot, ScanProcessError
 from ladderworks.core.plc.runner import RealTimeRunner, ScanStats
 from ladderworks.core.plc.scan_state import ScanLock
 from ladderworks.core.plc.timer_table import TimerLayout, dialect_of, timer_layout
@@ -75,10 +74,9 @@ class PlcRun:
         # time travel keeps the history; else on a thread of this process
         self.scan_process = scan_process
         self.process_error = ""  # why the last start scans here after all ("" when it did not)
-        self._process: ScanProcess | None = None
+        self._slot = ProcessSlot()
         self._data: bytes | None = None  # the loaded binary as given (the process builds it)
         self._lock = ScanLock()  # every engine's lock: a scan process's lock joins it
-        self._closer: weakref.finalize | None = None
         self.every_scan = every_scan  # `advance` skips no scan (ScanEngine.every_scan)
         self.period_ms = period_ms
         self.divisions = divisions  # level 2 and 3 run every `divisions` scans (docs/engine.md)
@@ -144,8 +142,7 @@ class PlcRun:
         self._figures = ScanFigures()
         self._stopped_stats = None
         self._alarms.clear()
-        if self._process is not None:  # built while the user looks at the new program
-            self._build()
+        self._slot.build(engine, self._data, self.ascii_files)  # while the user looks
         return []
 
     def load_program(self, program: Program) -> CompileResult:
@@ -192,10 +189,6 @@ class PlcRun:
                 self._runner.start()
         return True
 
-    def _build(self) -> None:
-        assert self._process is not None and self.engine is not None
-        self._process.build(self.engine, self._data, self.ascii_files)
-
     def prepare(self) -> None:
         """Start the scan process and build the loaded program there, in the background: a
         START that follows waits only for what is left (a real program takes seconds)."""
@@ -209,20 +202,11 @@ class PlcRun:
                 engine.history is not None:
             return None
         try:
-            if self._process is not None and not self._process.alive:
-                self._end_process()
-            if self._process is None:
-                self._process = ScanProcess()
-                self._closer = weakref.finalize(self, self._process.close)  # ends with the run
-            if self._process.built is not engine:
-                self._build()
-            if not wait:
-                return None
-            self._process.wait_ready()
+            return self._slot.runner(self, engine, self._data, self.ascii_files, self._lock,
+                                     wait)
         except (OSError, ScanProcessError) as error:
             self.process_error = str(error)
             return None
-        return ProcessRunner(engine, self._process, self._lock)
 
     def _setup_changed(self) -> None:
         """Forces, disabled elements, monitoring, trace or history changed on the engine."""
@@ -239,13 +223,7 @@ class PlcRun:
     def close(self) -> None:
         """End the scan process (the IDE closes): the PLC stops first."""
         self.stop()
-        self._end_process()
-
-    def _end_process(self) -> None:
-        if self._process is not None:
-            if self._closer is not None:
-                self._closer()  # ScanProcess.close, once
-            self._process = None
+        self._slot.close()
 
     def stop(self) -> bool:
         """Stop scanning (outputs Y go to 0, the safe state); False if it was not running."""

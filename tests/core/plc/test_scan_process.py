@@ -196,7 +196,7 @@ def test_a_load_while_running_stops_and_builds_the_new_program(live: PlcRun) -> 
 def test_a_process_gone_stops_the_plc_and_the_next_start_makes_another(live: PlcRun) -> None:
     live.set_bit(at("X0.0"), 1)
     assert wait_until(lambda: live.bit(at("Y0.0")) == 1)
-    process = live._process
+    process = live._slot.process
     assert process is not None
     process.process.kill()
     process.process.join(10)
@@ -204,7 +204,7 @@ def test_a_process_gone_stops_the_plc_and_the_next_start_makes_another(live: Plc
     assert live.process_error
     assert live.bit(at("Y0.0")) == 0 and live.bit(at("X0.0")) == 1
     assert live.start() and isinstance(live._runner, ProcessRunner) and live.running
-    assert live._process is not process
+    assert live._slot.process is not process
     assert wait_until(lambda: live.bit(at("Y0.0")) == 1)
     live.stop()
     assert all(isinstance(data, bytearray) for data in live.memory.areas.values())
