@@ -111,13 +111,13 @@ class Scanner:
         while True:
             try:
                 message = self.commands.recv()
-            except (EOFError, OSError):
-                break
-            if message[0] == "build":
-                self.build(*message[1:])
-            elif message[0] == "run" and self.engine is not None:
-                self.run(message[1], message[2])
-            elif message[0] == "quit":
+                if message[0] == "build":
+                    self.build(*message[1:])
+                elif message[0] == "run" and self.engine is not None:
+                    self.run(message[1], message[2])
+                elif message[0] == "quit":
+                    break
+            except (EOFError, OSError):  # the IDE is gone: so is its PLC
                 break
         self.engine = None
         self.views.clear()
