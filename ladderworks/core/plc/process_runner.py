@@ -254,6 +254,11 @@ class ProcessSlot:
         if self.process is not None and self.process.alive:
             self.process.build(engine, data, files)
 
+    def send_files(self, files: dict[Any, Any]) -> None:
+        """The ASCII files changed: the process's FUN 94 sends these from now."""
+        if self.process is not None and self.process.alive:
+            self.process.send("files", dict(files))
+
     def runner(self, owner: object, engine: ScanEngine, data: bytes | None,
                files: dict[Any, Any], lock: ScanLock, wait: bool) -> ProcessRunner | None:
         """A runner for `engine` in the process (spawned and built as needed); None when not

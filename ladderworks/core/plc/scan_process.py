@@ -8,9 +8,10 @@ the power flow. What else a scan makes (A-area changes, trace samples, FUN 94 te
 back on a pipe. `serve` is the process's main; `core/plc/process_runner.py` is the IDE's end.
 
 Messages to the process: ("build", ident, binary, period, divisions, ASCII files, flow block
-name), ("run", ScanState, ScanSetup), then while running ("setup", ScanSetup),
-("reset",) and ("stop",); ("quit",). From it: ("ready", ident, error or ""), ("out", alarm
-changes, trace ident, samples, texts) and ("stopped", ScanState, trace position).
+name), ("run", ScanState, ScanSetup), then while running ("setup", ScanSetup), ("reset",)
+and ("stop",); ("files", ASCII files) at any time; ("quit",). From it: ("ready", ident,
+error or ""), ("out", alarm changes, trace ident, samples, texts) and ("stopped", ScanState,
+trace position).
 """
 
 from __future__ import annotations
@@ -103,6 +104,7 @@ class Scanner:
         self.frame = self.layout.views(buffer(block), frame=True)
         self.engine: ScanEngine | None = None
         self.terminal = SentTerminal()
+        self.files: dict[Any, Any] = {}  # the engine's ASCII_FILES, changed in place
         self.flow_block: SharedMemory | None = None
         self.figures = Figures()
 
@@ -115,6 +117,8 @@ class Scanner:
                     self.build(*message[1:])
                 elif message[0] == "run" and self.engine is not None:
                     self.run(message[1], message[2])
+                elif message[0] == "files":
+                    self.use_files(message[1])
                 elif message[0] == "quit":
                     break
             except (EOFError, OSError):  # the IDE is gone: so is its PLC
@@ -138,7 +142,8 @@ class Scanner:
             self.outputs.send(("ready", ident, f"{type(error).__name__}: {error}"))
             return
         engine.extra[ASCII_TERMINAL] = self.terminal
-        engine.extra[ASCII_FILES] = files
+        self.use_files(files)
+        engine.extra[ASCII_FILES] = self.files
         if self.flow_block is not None:
             self.flow_block.close()
         self.flow_block = attach(flow_name)
@@ -229,7 +234,14 @@ class Scanner:
                 engine.use_setup(message[1])
             elif message[0] == "reset":
                 self.figures = Figures()
+            elif message[0] == "files":
+                self.use_files(message[1])
         return True
+
+    def use_files(self, files: dict[Any, Any]) -> None:
+        """The ASCII files FUN 94 sends (a Fatek program's), as the IDE has them now."""
+        self.files.clear()
+        self.files.update(files)
 
     def send_outputs(self, engine: ScanEngine) -> None:
         """What the scan made besides memory: A-area changes, trace samples, FUN 94 text."""

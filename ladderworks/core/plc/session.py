@@ -107,6 +107,7 @@ class PlcRun:
         """The ASCII files FUN 94 sends (a Fatek program's, read beside it); kept across loads."""
         self.ascii_files.clear()
         self.ascii_files.update(files)
+        self._slot.send_files(files)
 
     def load(self, binary: bytes | BinaryProgram,
              program: Program | None = None) -> list[Diagnostic]:

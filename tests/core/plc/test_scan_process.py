@@ -8,8 +8,11 @@ from collections.abc import Callable, Iterator
 
 import pytest
 
+from ladderworks import paths
+from ladderworks.core import dialects
 from ladderworks.core.address import Address, parse_address
-from ladderworks.core.il import parse
+from ladderworks.core.dialects.fatek.ascii_files import load_ascii_files
+from ladderworks.core.il import parse, parse_file
 from ladderworks.core.plc.history import ScanHistory
 from ladderworks.core.plc.process_runner import ProcessRunner
 from ladderworks.core.plc.runner import RealTimeRunner
@@ -208,3 +211,31 @@ def test_a_process_gone_stops_the_plc_and_the_next_start_makes_another(live: Plc
     assert wait_until(lambda: live.bit(at("Y0.0")) == 1)
     live.stop()
     assert all(isinstance(data, bytearray) for data in live.memory.areas.values())
+
+
+def test_fun_94_text_comes_back_and_the_ascii_files_follow_the_ide() -> None:
+    """004: X0 0 -> 1 with X1, X2 at 0 prints the report through Port 1; the ASCII files
+    given while the process scans are the ones it sends."""
+    path = paths.EXAMPLES / "fatek" / "production_report.lst"
+    files = load_ascii_files(path)
+    reference = PlcRun(period_ms=10)
+    reference.use_ascii_files(files.files)
+    assert reference.load_program(parse_file(path).program).binary is not None
+    run = PlcRun(realtime=True, period_ms=10, scan_process=True)
+    try:
+        assert run.load_program(parse_file(path).program).binary is not None
+        assert run.start() and isinstance(run._runner, ProcessRunner)
+        run.use_ascii_files(files.files)
+        x0 = dialects.parse_target("X0", "fatek")[0]
+        count = scans(run)
+        assert wait_until(lambda: scans(run) > count + 3)
+        run.set_bit(x0, 1)
+        assert wait_until(lambda: run.ascii_terminal.writes == 1)
+        reference.start()
+        reference.run_scans(2)
+        reference.set_bit(x0, 1)
+        reference.run_scans(2)
+        assert reference.ascii_terminal.text() != ""
+        assert run.ascii_terminal.text() == reference.ascii_terminal.text()
+    finally:
+        run.close()
