@@ -3,11 +3,12 @@
 Opens the real program as a user does (File › Open, F9, START), then for each set of docks
 runs the real-time PLC and prints, after the first second: the scans, the overruns (a scan
 that ended after the next one was due), the worst scan, the share of the GUI thread's CPU
-time and the time START took (the first start spawns the scan process and builds the program
-there). Dock sets: none (the alarm panel closed too), default (the window as it starts: the
-alarm panel), technician (PLC diagnostic, bit display live on six bytes, time chart sampling
-six bits), busy (the technician's docks, and the IDE checks the whole program every second,
-as F9 does before it loads: about half a second of the GUI thread each time).
+time and, in mode "process", the time from START until the scans ran in the scan process (a
+thread scans while the process builds the program, which F9 began). Dock sets: none (the
+alarm panel closed too), default (the window as it starts: the alarm panel), technician (PLC
+diagnostic, bit display live on six bytes, time chart sampling six bits), busy (the
+technician's docks, and the IDE checks the whole program every second, as F9 does before it
+loads: about half a second of the GUI thread each time).
 
 Each set runs in each mode, in one run. On a thread of the IDE's process, which shares the
 interpreter's lock with the GUI: "before" (every dock updates on every snapshot, shown or
@@ -66,6 +67,7 @@ def measure(mode: str, seconds: float) -> None:
     from ladderworks.core.address import parse_address
     from ladderworks.core.compiler import compile_program
     from ladderworks.core.il import parse_file
+    from ladderworks.core.plc.process_runner import ProcessRunner
     from ladderworks.core.plc.runner import RealTimeRunner
     from ladderworks.gui.docks import snapshot_gate
     from ladderworks.gui.main_window import MainWindow
@@ -124,9 +126,11 @@ def measure(mode: str, seconds: float) -> None:
         app.processEvents()
         began = time.perf_counter()
         session.start()
+        while mode == "process" and not isinstance(session.run._runner, ProcessRunner):
+            app.processEvents()  # the publish timer's status() moves the scans there
+            if session.run.process_error:
+                raise SystemExit(f"the scan process failed: {session.run.process_error}")
         start_s = time.perf_counter() - began
-        if session.run.process_error:
-            raise SystemExit(f"the scan process did not start: {session.run.process_error}")
         if watching:
             docks.time_chart.start()
         runner = session.run._runner

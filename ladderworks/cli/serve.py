@@ -99,7 +99,7 @@ def _serve(args: argparse.Namespace) -> int:
         if warning is not None:
             print(f"ladderworks-cli: warning: {warning}", file=sys.stderr, flush=True)
         while not stop.wait(0.2):
-            pass
+            plc.status()  # moves the scans into the scan process once it has built the program
     finally:
         server.stop()
         plc.close()  # stops, and ends the scan process

@@ -28,7 +28,8 @@ def test_start_scans_in_the_scan_process_and_the_window_sees_it(qtbot: QtBot,
     control.show()
     control.raise_()
     control.control_actions["action_plc_start"].trigger()
-    assert session.run.running and isinstance(session.run._runner, ProcessRunner)
+    assert session.run.running  # on a thread until the scan process has built the program
+    qtbot.waitUntil(lambda: isinstance(session.run._runner, ProcessRunner), timeout=20000)
     set_switch(session, 5)
     g30 = parse_address("G30")
     qtbot.waitUntil(lambda: session.run.read(g30) == override_code(5), timeout=10000)

@@ -134,6 +134,21 @@ class ScanProcess:
         if self._ready[1]:
             raise ScanProcessError(self._ready[1])
 
+    def is_ready(self) -> bool:
+        """True when the last program sent is built, without waiting; ScanProcessError if its
+        build failed or the process has ended."""
+        while self._ready is None or self._ready[0] != self._ident:
+            try:
+                message = self._replies.get_nowait()
+            except queue.Empty:
+                return False
+            if message[0] == "gone":
+                raise ScanProcessError("the scan process has ended")
+            if message[0] == "ready":
+                self._ready = (message[1], message[2])
+        self.wait_ready()  # at once now: frees the old flow blocks, raises a build's error
+        return True
+
     def flow(self, count: int) -> memoryview:
         """The power flow of the last monitored scan, `count` ops (a view: copy it)."""
         assert self._flow is not None
@@ -261,8 +276,8 @@ class ProcessSlot:
 
     def runner(self, owner: object, engine: ScanEngine, data: bytes | None,
                files: dict[Any, Any], lock: ScanLock, wait: bool) -> ProcessRunner | None:
-        """A runner for `engine` in the process (spawned and built as needed); None when not
-        `wait`ing (the build goes on). OSError or ScanProcessError if it cannot be had."""
+        """A runner for `engine` in the process (spawned and built as needed); not `wait`ing,
+        None while the build goes on. OSError or ScanProcessError if it cannot be had."""
         if self.process is not None and not self.process.alive:
             self.close()
         if self.process is None:
@@ -270,9 +285,10 @@ class ProcessSlot:
             self._closer = weakref.finalize(owner, self.process.close)  # ends with the run
         if self.process.built is not engine:
             self.process.build(engine, data, files)
-        if not wait:
+        if wait:
+            self.process.wait_ready()
+        elif not self.process.is_ready():
             return None
-        self.process.wait_ready()
         return ProcessRunner(engine, self.process, lock)
 
     def close(self) -> None:

@@ -92,13 +92,15 @@ class RealTimeRunner:
         self._thread = threading.Thread(target=self._loop, name="plc-scan", daemon=True)
         self._thread.start()
 
-    def stop(self) -> None:
-        """Stop scanning and put the outputs in the safe state (every Y = 0)."""
+    def stop(self, safe: bool = True) -> None:
+        """Stop scanning and put the outputs in the safe state (every Y = 0; not `safe`:
+        left as they are, the scans going on elsewhere)."""
         self._stop.set()
         if self._thread is not None:
             self._thread.join()
             self._thread = None
-        self.engine.stop()
+        if safe:
+            self.engine.stop()
 
     def stats(self) -> ScanStats:
         """The scan-time figures so far."""

@@ -75,6 +75,7 @@ class PlcRun:
         self.scan_process = scan_process
         self.process_error = ""  # why the last start scans here after all ("" when it did not)
         self._slot = ProcessSlot()
+        self._handover = False  # the thread scans until the scan process has built the program
         self._data: bytes | None = None  # the loaded binary as given (the process builds it)
         self._lock = ScanLock()  # every engine's lock: a scan process's lock joins it
         self.every_scan = every_scan  # `advance` skips no scan (ScanEngine.every_scan)
@@ -185,14 +186,36 @@ class PlcRun:
             return False
         if not self._running:
             self._running = True
-            if self.realtime:
-                self._runner = self._process_runner() or RealTimeRunner(self.engine)
+            if self.realtime:  # on a thread until the scan process has built the program
+                runner = self._process_runner(wait=False)
+                self._handover = runner is None and self._process_wanted()
+                self._runner = runner or RealTimeRunner(self.engine)
                 self._runner.start()
         return True
 
+    def _process_wanted(self) -> bool:
+        """True when the scans belong in the scan process (and nothing went wrong there)."""
+        engine = self.engine
+        return (self.scan_process and self.realtime and engine is not None
+                and engine.history is None and not self.process_error)
+
+    def _hand_over(self) -> None:
+        """The scan process has built the program: the scans move there from the thread,
+        between two scans (the state goes with them, as at STOP and START)."""
+        if not self._handover or not isinstance(self._runner, RealTimeRunner):
+            return
+        runner = self._process_runner(wait=False) if self._process_wanted() else None
+        if runner is None:
+            self._handover = self._process_wanted()  # still building; else stays here
+            return
+        self._handover = False
+        self._runner.stop(safe=False)
+        self._runner = runner
+        runner.start()
+
     def prepare(self) -> None:
-        """Start the scan process and build the loaded program there, in the background: a
-        START that follows waits only for what is left (a real program takes seconds)."""
+        """Start the scan process and build the loaded program there, in the background (a
+        real program takes seconds; the scans run on a thread of this process meanwhile)."""
         self._process_runner(wait=False)
 
     def _process_runner(self, wait: bool = True) -> ProcessRunner | None:
@@ -228,6 +251,7 @@ class PlcRun:
 
     def stop(self) -> bool:
         """Stop scanning (outputs Y go to 0, the safe state); False if it was not running."""
+        self._handover = False
         if not self._running:
             return False
         if self._runner is None and self.engine is not None:
@@ -278,6 +302,7 @@ class PlcRun:
         engine = self.engine
         if engine is None:
             return PlcStatus(period_ms=self.period_ms)
+        self._hand_over()
         if isinstance(self._runner, ProcessRunner) and self._runner.lost:
             self.stop()  # the safe state; the PLC control shows why (process_error)
         if isinstance(self._runner, ProcessRunner):
@@ -302,6 +327,7 @@ class PlcRun:
         engine = self.engine
         if engine is None:
             return PlcSnapshot(areas=self.memory.snapshot())
+        self._hand_over()
         if isinstance(self._runner, ProcessRunner):
             return self._runner.snapshot()
         with engine.lock:

@@ -68,9 +68,15 @@ def live() -> Iterator[PlcRun]:
     """A run scanning in its scan process."""
     run = make(True)
     assert run.start()
-    assert isinstance(run._runner, ProcessRunner), run.process_error
+    assert in_process(run), run.process_error
     yield run
     run.close()
+
+
+def in_process(run: PlcRun) -> bool:
+    """Wait until the scans have moved into the scan process (a thread scans until it has
+    built the program; `status()` moves them)."""
+    return wait_until(lambda: run.status().running and isinstance(run._runner, ProcessRunner))
 
 
 def scans(run: PlcRun) -> int:
@@ -87,6 +93,7 @@ def same(run: PlcRun, reference: PlcRun) -> None:
 
 
 def test_scans_in_the_process_leave_what_the_same_scans_here_leave(live: PlcRun) -> None:
+    """The first leg began on a thread while the process built the program (`live`)."""
     reference = make(False)
     reference.start()
     counts = []
@@ -109,7 +116,7 @@ def test_scans_in_the_process_leave_what_the_same_scans_here_leave(live: PlcRun)
         reference.stop()
         reference.start()
         live.realtime = True
-        assert live.start() and isinstance(live._runner, ProcessRunner)
+        assert live.start() and isinstance(live._runner, ProcessRunner)  # built: at once
     assert counts[0] >= 150 and live.engine is not None
     assert live.read(at("R3")) == 0  # nothing wrote it
     assert live.engine.alarm_changes > 10  # A0.1 follows the oscillator
@@ -191,8 +198,10 @@ def test_a_load_while_running_stops_and_builds_the_new_program(live: PlcRun) -> 
     assert live.load_program(parse(other).program).binary is not None
     assert not live.running
     live.set_bit(at("X0.0"), 1)
-    assert live.start() and isinstance(live._runner, ProcessRunner)
+    assert live.start()  # on a thread while the process builds it (unless already built)
     assert wait_until(lambda: live.bit(at("Y0.2")) == 1)
+    assert in_process(live)
+    assert live.bit(at("Y0.2")) == 1
     assert live.bit(at("Y0.0")) == 0
 
 
@@ -206,7 +215,7 @@ def test_a_process_gone_stops_the_plc_and_the_next_start_makes_another(live: Plc
     assert not live.status().running  # the safe state
     assert live.process_error
     assert live.bit(at("Y0.0")) == 0 and live.bit(at("X0.0")) == 1
-    assert live.start() and isinstance(live._runner, ProcessRunner) and live.running
+    assert live.start() and live.running and in_process(live)
     assert live._slot.process is not process
     assert wait_until(lambda: live.bit(at("Y0.0")) == 1)
     live.stop()
@@ -224,7 +233,7 @@ def test_fun_94_text_comes_back_and_the_ascii_files_follow_the_ide() -> None:
     run = PlcRun(realtime=True, period_ms=10, scan_process=True)
     try:
         assert run.load_program(parse_file(path).program).binary is not None
-        assert run.start() and isinstance(run._runner, ProcessRunner)
+        assert run.start() and in_process(run)
         run.use_ascii_files(files.files)
         x0 = dialects.parse_target("X0", "fatek")[0]
         count = scans(run)
