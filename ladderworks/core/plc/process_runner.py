@@ -40,6 +40,7 @@ from ladderworks.core.plc.scan_process import (
 from ladderworks.core.plc.scan_state import ScanLock, ScanState, TraceSpec
 
 FRESH_SCANS = 8  # a monitored snapshot's frame is at most this many scans old (64 ms at 8 ms)
+ASK_SCANS = 4  # a snapshot asks for a new frame once the last is this many scans old
 START_TIMEOUT_S = 120.0  # a program's build in the process (S41_F036: about 2 s)
 
 
@@ -381,7 +382,8 @@ class ProcessRunner:
     def snapshot(self) -> PlcSnapshot:
         """Memory and power flow between two scans. Monitored, the last frame's: the process
         records the power flow only of a scan asked for (the others run the faster variant);
-        this asks for the next one, and waits for one when the last is older than
+        this asks for the next one once the last is `ASK_SCANS` old (several views' snapshots
+        of one moment share a frame), and waits for one when the last is older than
         `FRESH_SCANS`."""
         engine = self.engine
         if engine.monitored and self._running:
@@ -391,7 +393,8 @@ class ProcessRunner:
             disabled = engine.force_table.disabled
             if engine.monitored and self._running:
                 frame = self.process.frame(len(engine.program.ops))
-                self.process.ask_frame()
+                if frame is None or engine.scan_count - frame[0] >= ASK_SCANS:
+                    self.process.ask_frame()
                 if frame is not None:
                     return PlcSnapshot(*frame, True, disabled)
             return PlcSnapshot(engine.scan_count, engine.now_ms, engine.memory.snapshot(),
