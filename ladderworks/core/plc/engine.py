@@ -138,25 +138,28 @@ class ScanEngine:
 
     def _choose(self) -> None:
         """Use the variant of the monitoring and disabled ops now (parked: at the next scan)."""
-        if self.parked:
-            self._pending = True
-        else:
+        self._pending = True
+        if not self.parked:
+            self._settle()
+
+    def _settle(self) -> None:
+        """Make the variant a change asked for while parked, if any."""
+        if self._pending:
+            self._pending = False
             self._current = self._variant()
 
     @property
     def source(self) -> str:
         """The Python source of the scan now in use (for the curious and for tests)."""
-        if self._pending and not self.parked:
-            self._pending = False
-            self._current = self._variant()
+        if not self.parked:
+            self._settle()
         return self._current.source
 
     def scan(self) -> None:
         """One scan at `now_ms`, then advance the clock by one period."""
         with self.lock:
             if self._pending:
-                self._pending = False
-                self._current = self._variant()
+                self._settle()
             now = self.now_ms
             ctx = self._ctx
             ctx.now_ms = now
@@ -283,17 +286,17 @@ class ScanEngine:
             self._alarm_bits = state.alarm_bits
 
     def setup(self) -> ScanSetup:
-        """The forces, disabled elements, monitoring and trace now."""
+        """The forces, disabled elements and trace now (a scan process monitors the scans a
+        view asks for: core/plc/scan_process.py)."""
         with self.lock:
             trace = self.trace.spec() if self.trace is not None else None
             return ScanSetup(self.force_table.forced(), self.force_table.disabled_lines(),
-                             self._monitored, trace)
+                             trace)
 
     def use_setup(self, setup: ScanSetup) -> None:
         """Take another engine's setup; a trace of another ident starts sampling afresh."""
         with self.lock:
             self.force_table = setup.force_table()
-            self._monitored = setup.monitored
             self._current = self._variant()
             spec = setup.trace
             if spec is None:

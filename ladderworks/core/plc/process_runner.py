@@ -25,6 +25,7 @@ from typing import Any
 
 from ladderworks.core.compiler.binary import encode
 from ladderworks.core.plc.engine import ScanEngine
+from ladderworks.core.plc.functions.fatek_io import ASCII_TERMINAL
 from ladderworks.core.plc.plc_status import PlcSnapshot
 from ladderworks.core.plc.runner import ScanStats, stats_of
 from ladderworks.core.plc.scan_process import (
@@ -409,7 +410,7 @@ class ProcessRunner:
                 engine.alarm_changes += len(alarms)
             if samples and engine.trace is not None and engine.trace.ident == ident:
                 engine.trace.extend(samples)
-            terminal = engine.extra.get("ascii_terminal")
+            terminal = engine.extra.get(ASCII_TERMINAL)
             for text in texts:
                 if terminal is not None:
                     terminal.write(text)

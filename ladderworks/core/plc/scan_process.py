@@ -187,8 +187,7 @@ class Scanner:
                     flow[:] = engine.power_flow
                     FRAME.pack_into(block, FRAME_AT, wanted, engine.scan_count, engine.now_ms)
                     served = wanted
-                HEADER.pack_into(block, 0, engine.scan_count, engine.now_ms,
-                                 next_start + period, 0, *self.figures.values())
+                self.header_time(next_start, 1)  # the count and clock go with memory
             cpu = time.thread_time() - cpu
             due, next_start = next_start, next_start + period
             now = time.perf_counter()

@@ -40,11 +40,10 @@ class TraceSpec:
 
 @dataclass(frozen=True, slots=True)
 class ScanSetup:
-    """What a user sets on a running PLC: forces, disabled elements, monitoring, the trace."""
+    """What a user sets on a running PLC: forces, disabled elements, the trace."""
 
     forced: dict[Address, bool]
     disabled: dict[int, int]  # op index -> source line
-    monitored: bool
     trace: TraceSpec | None
 
     def force_table(self) -> ForceTable:

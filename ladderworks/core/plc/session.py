@@ -222,8 +222,7 @@ class PlcRun:
         """A runner in the scan process (started and built when needed); None to scan here."""
         engine = self.engine
         self.process_error = ""
-        if not (self.scan_process and self.realtime) or engine is None or \
-                engine.history is not None:
+        if engine is None or not self._process_wanted():
             return None
         try:
             return self._slot.runner(self, engine, self._data, self.ascii_files, self._lock,

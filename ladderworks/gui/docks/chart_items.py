@@ -48,14 +48,5 @@ class YieldingAxis(pg.AxisItem):
         super().paint(painter, option, widget)
 
 
-class YieldingLocaleAxis(LocaleAxis):
+class YieldingLocaleAxis(YieldingAxis, LocaleAxis):
     """The time axis (the UI language's decimal sign), letting a due scan run first."""
-
-    def __init__(self, orientation: str, before_paint: Callable[[], None] = _nothing) -> None:
-        super().__init__(orientation)
-        self.before_paint = before_paint
-
-    def paint(self, painter: Any, option: Any, widget: Any = None) -> None:
-        """Paint, after a due scan."""
-        self.before_paint()
-        super().paint(painter, option, widget)
