@@ -1,0 +1,196 @@
+"""Read a WPLSoft `.dvp` project (binary, header `57 01 01 00`): its instruction list and comments.
+
+The layout, learned from public projects (docs/dialects.md, ".dvp projects"): a 0x100-byte
+header (title at 0x0E, PLC model at 0x4A, format version at 0x4C, the program's key), the
+program memory from 0x100 (one word a step, XOR-scrambled with a 2- or 4-byte key, unused steps
+NOP 0x7FFF), a 0x48-byte block of settings, then text sections `<TypeBegin>` `Function=NAME`
+`<TypeEnd>` `<DataBegin>` ... `<DataEnd>` (Initial Value, Device Comment: `DEVICE$&text` lines,
+Output Comment, Symbol Table, Device Comment Range) with binary blocks between them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ladderworks.core.diagnostics import Diagnostic, Severity
+from ladderworks.core.dialects.delta.dvp_codes import (
+    END,
+    NOP,
+    DvpCodeError,
+    DvpInstruction,
+    decode_words,
+)
+
+MAGIC = b"\x57\x01\x01\x00"
+PROGRAM_START = 0x100
+SETTINGS_SIZE = 0x48  # the block between the program memory and the first text section
+MODEL, VERSION, TITLE, TITLE_END = 0x4A, 0x4C, 0x0E, 0x22
+KEY_OLD, KEY = 0x56, 0x5E  # where the key of each format version is
+SECTION_START = b"<TypeBegin>\nFunction="
+FIRST_SECTION = SECTION_START + b"Initial Value\n"
+DATA_BEGIN, DATA_END = b"<TypeEnd>\n<DataBegin>\n", b"<DataEnd>"
+COMMENTS = "Device Comment"
+COMMENT_SPLIT = "$&"
+ENCODING = "cp1252"  # WPLSoft writes the Windows ANSI code page; cp1252 reads every byte
+MOST_SECTIONS = 64
+
+
+class DvpError(ValueError):
+    """A `.dvp` file that cannot be read: the diagnostic `code` at byte `offset`."""
+
+    def __init__(self, code: str, offset: int, **args: object) -> None:
+        super().__init__(f"{code} at byte {offset}")
+        self.code = code
+        self.offset = offset
+        self.args_map = {"offset": offset, **args}
+
+    def diagnostic(self) -> Diagnostic:
+        """The error as a diagnostic (line 1, the byte offset in the message)."""
+        return Diagnostic(self.code, dict(self.args_map), line=1, column=1)
+
+
+@dataclass(slots=True)
+class DvpProject:
+    """What a `.dvp` project holds that LadderWorks reads."""
+
+    title: str
+    model: int  # the PLC model code at 0x4A (5: ES/SS, 7: SA/SX2 ..., as WPLSoft numbers them)
+    version: int  # the format version at 0x4C (214, 215, 216 seen)
+    capacity: int  # program memory in steps
+    instructions: list[DvpInstruction] = field(default_factory=list)
+    comments: dict[str, str] = field(default_factory=dict)  # device text -> comment
+    sections: list[str] = field(default_factory=list)  # the text sections' names, in order
+    warnings: list[Diagnostic] = field(default_factory=list)
+
+    @property
+    def steps(self) -> int:
+        """The steps the program uses (up to and with END)."""
+        if not self.instructions:
+            return 0
+        return self.instructions[-1].step + 1  # END is one step
+
+
+def is_dvp(data: bytes) -> bool:
+    """True when `data` starts as a WPLSoft project does."""
+    return data[:4] == MAGIC
+
+
+def _keystream(data: bytes, version: int) -> bytes | None:
+    """The 4 bytes the program words are XORed with (by the byte's place mod 4), or None."""
+    if version == 215:
+        key = data[KEY:KEY + 4]
+        return bytes((key[0], key[1] ^ 0x80, key[2], key[3] ^ 0x80))
+    if version in (214, 216):
+        byte = data[KEY_OLD if version == 214 else KEY]
+        return bytes((byte, byte ^ 0x80, byte, byte ^ 0x80))
+    return None
+
+
+def _words(area: bytes, stream: bytes) -> list[int]:
+    """The program memory's words, unscrambled."""
+    plain = bytes(b ^ stream[i & 3] for i, b in enumerate(area))
+    return [plain[i] | plain[i + 1] << 8 for i in range(0, len(plain) - 1, 2)]
+
+
+def _program(words: list[int], offset: int) -> list[DvpInstruction]:
+    """The instructions up to END; what follows END must be the NOP filler."""
+    used = len(words)
+    while used and words[used - 1] == NOP:
+        used -= 1
+    if not used:
+        return []
+    try:
+        found = decode_words(words[:used])
+    except DvpCodeError as error:
+        raise DvpError(error.code, offset + 2 * error.index, word=f"{error.word:04X}",
+                       step=error.index) from None
+    last = found[-1]
+    if last.mnemonic != "END" or words[last.step] != END:
+        raise DvpError("dvp-no-end", offset + 2 * used)
+    end = last.step + 1
+    if end != used:
+        raise DvpError("dvp-after-end", offset + 2 * end, step=end)
+    return found
+
+
+def _sections(data: bytes, start: int) -> tuple[list[str], dict[str, tuple[int, bytes]]]:
+    """The text sections from `start`: their names in order and each one's data (offset,
+    bytes)."""
+    names: list[str] = []
+    bodies: dict[str, tuple[int, bytes]] = {}
+    at = data.find(SECTION_START, start)
+    while at >= 0 and len(names) < MOST_SECTIONS:
+        name_at = at + len(SECTION_START)
+        name_end = data.find(b"\n", name_at, name_at + 256)
+        if name_end < 0:
+            raise DvpError("dvp-bad-section", at)
+        name = data[name_at:name_end].decode(ENCODING)
+        if data[name_end + 1:name_end + 1 + len(DATA_BEGIN)] != DATA_BEGIN:
+            raise DvpError("dvp-bad-section", name_end + 1)
+        body_at = name_end + 1 + len(DATA_BEGIN)
+        body_end = data.find(DATA_END, body_at)
+        if body_end < 0:
+            raise DvpError("dvp-truncated", len(data), what=name)
+        names.append(name)
+        bodies.setdefault(name, (body_at, data[body_at:body_end]))
+        at = data.find(SECTION_START, body_end)
+    return names, bodies
+
+
+def _comments(body: bytes, offset: int) -> dict[str, str]:
+    """`DEVICE$&text` lines -> {device: text}."""
+    found: dict[str, str] = {}
+    at = offset
+    for raw in body.split(b"\n"):
+        if raw:
+            text = raw.decode(ENCODING)
+            device, split, comment = text.partition(COMMENT_SPLIT)
+            if not split or not device.isalnum():
+                raise DvpError("dvp-bad-comment", at)
+            found[device.upper()] = comment
+        at += len(raw) + 1
+    return found
+
+
+def read_dvp(data: bytes) -> DvpProject:
+    """The project `data` holds; raises DvpError (code, byte offset) for a file that is not a
+    `.dvp` project, is cut short or does not read as one."""
+    if not is_dvp(data):
+        raise DvpError("dvp-not-dvp", 0)
+    if len(data) < PROGRAM_START:
+        raise DvpError("dvp-truncated", len(data), what="header")
+    version = data[VERSION] | data[VERSION + 1] << 8
+    stream = _keystream(data, version)
+    if stream is None:
+        raise DvpError("dvp-version", VERSION, version=version)
+    first = data.find(FIRST_SECTION, PROGRAM_START)
+    if first < 0:
+        raise DvpError("dvp-truncated", len(data), what="Initial Value")
+    stop = first - SETTINGS_SIZE
+    if stop <= PROGRAM_START or (stop - PROGRAM_START) % 2:
+        raise DvpError("dvp-bad-layout", max(first - SETTINGS_SIZE, 0))
+    words = _words(data[PROGRAM_START:stop], stream)
+    title = data[TITLE:TITLE_END].split(b"\0")[0].decode(ENCODING).strip()
+    project = DvpProject(title, data[MODEL] | data[MODEL + 1] << 8, version, len(words))
+    project.instructions = _program(words, PROGRAM_START)
+    names, bodies = _sections(data, first)
+    project.sections = names
+    if COMMENTS in bodies:
+        project.comments = _comments(bodies[COMMENTS][1], bodies[COMMENTS][0])
+    project.warnings += [
+        Diagnostic("dvp-unknown-code", {"offset": PROGRAM_START + 2 * each.step,
+                                        "word": each.mnemonic[1:], "step": each.step},
+                   line=1, column=1, severity=Severity.WARNING)
+        for each in project.instructions if not each.known]
+    if not project.instructions:
+        project.warnings.append(Diagnostic("dvp-no-program", {}, line=1, column=1,
+                                           severity=Severity.WARNING))
+    return project
+
+
+def read_or_diagnostic(data: bytes) -> tuple[DvpProject | None, Diagnostic | None]:
+    """read_dvp, with its error as a diagnostic instead of an exception."""
+    try:
+        return read_dvp(data), None
+    except DvpError as error:
+        return None, error.diagnostic()
