@@ -266,6 +266,48 @@ MESSAGES: dict[str, str] = {
     "dvp-no-logic": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} without a logic result before it (start with LD)"),
     "dvp-pointer-twice": QT_TRANSLATE_NOOP("Diagnostic", "this pointer P number is used twice"),
+    # WPLSoft .dvp projects (docs/dialects.md, ".dvp projects"): byte offsets in the file
+    "dvp-not-dvp": QT_TRANSLATE_NOOP(
+        "Diagnostic", "not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00"),
+    "dvp-truncated": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .dvp file is cut short at byte {offset}: its {what} is missing"),
+    "dvp-version": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset}: .dvp format version {version} is not one LadderWorks"
+        " reads (214, 215 and 216 are)"),
+    "dvp-bad-layout": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset}: the program memory of this .dvp project is not where"
+        " WPLSoft puts it: the file is damaged"),
+    "dvp-unknown-code": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): instruction code {word} is not known to"
+        " LadderWorks: kept as ?{word} with its operands"),
+    "dvp-unknown-device": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): the word {word} names no device LadderWorks"
+        " knows: the file is damaged or uses a device not decoded yet"),
+    "dvp-bad-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): the operand word {word} is neither a device"
+        " nor a constant: the file is damaged"),
+    "dvp-operand-count": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): the operand words after {word} do not fit"
+        " the instruction: the file is damaged"),
+    "dvp-stray-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): the operand word {word} follows no"
+        " instruction: the file is damaged"),
+    "dvp-no-end": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset}: the program does not end with END: the file is damaged"),
+    "dvp-after-end": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): instructions after END: the file is"
+        " damaged"),
+    "dvp-bad-section": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset}: a text section of the .dvp project is damaged"),
+    "dvp-bad-comment": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset}: a device comment line is not DEVICE$&text"),
+    "dvp-no-program": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the project holds no compiled instruction list (an uncompiled ladder is"
+        " kept in a part of the file LadderWorks does not read): compile it in WPLSoft and"
+        " save it again"),
+    "dvp-save-refused": QT_TRANSLATE_NOOP(
+        "Diagnostic", "LadderWorks does not write .dvp projects (the format is only partly"
+        " known): save the program as a Delta instruction list (.il) instead"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),

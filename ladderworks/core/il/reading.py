@@ -1,7 +1,8 @@
 """Which reader reads a file: a dialect's (recognised from the content, or named) or the PMC's.
 
 `parse_bytes`, `parse_file` and `parse_for_check` here sniff the text (core/dialects) and hand
-it to the dialect's reader, else to the PMC parser (il/parser.py). `dialect` names a reader and
+it to the dialect's reader, else to the PMC parser (il/parser.py); a WPLSoft `.dvp` project
+(binary, recognised by its first bytes) goes to core/dialects/delta/dvp_program.py. `dialect` names a reader and
 skips the sniffing (`--dialect NAME` on the command line); "pmc" forces the PMC parser.
 """
 
@@ -49,8 +50,24 @@ def read_dialect(data: bytes, dialect: dialects.Dialect) -> ParseResult:
     return ParseResult(program, every, form.encoding)
 
 
+def _binary(data: bytes, dialect: str | None) -> ParseResult | None:
+    """The program of a binary project file (a WPLSoft `.dvp`), or None for text."""
+    from ladderworks.core.dialects.delta import NAME as DELTA
+    from ladderworks.core.dialects.delta.dvp_file import is_dvp
+
+    if not is_dvp(data) or dialect not in (None, DELTA):
+        return None
+    from ladderworks.core.dialects.delta.dvp_program import parse_dvp
+
+    with collector_paused(promote=True):
+        return parse_dvp(data)
+
+
 def parse_bytes(data: bytes, dialect: str | None = None) -> ParseResult:
     """Parse file contents in whichever dialect they are written (or `dialect`)."""
+    binary = _binary(data, dialect)
+    if binary is not None:
+        return binary
     found = choose(data, dialect)
     return parser.parse_bytes(data) if found is None else read_dialect(data, found)
 
@@ -65,6 +82,9 @@ def parse_for_check(path: str | Path, dialect: str | None = None) -> ParseResult
     """parser.parse_for_check, or a dialect's reader for a file of another dialect."""
     with open(path, "rb") as file:
         data = file.read()
+    binary = _binary(data, dialect)
+    if binary is not None:
+        return binary
     found = choose(data, dialect)
     return parser.parse_for_check(path) if found is None else read_dialect(data, found)
 
