@@ -270,7 +270,8 @@ MESSAGES: dict[str, str] = {
     "dvp-not-dvp": QT_TRANSLATE_NOOP(
         "Diagnostic", "not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00"),
     "dvp-truncated": QT_TRANSLATE_NOOP(
-        "Diagnostic", "the .dvp file is cut short at byte {offset}: its {what} is missing"),
+        "Diagnostic", "the .dvp file is cut short at byte {offset}: it does not end with the line"
+        " <PrjectEnd> WPLSoft writes last"),
     "dvp-version": QT_TRANSLATE_NOOP(
         "Diagnostic", "byte {offset}: .dvp format version {version} is not one LadderWorks"
         " reads (214, 215 and 216 are)"),

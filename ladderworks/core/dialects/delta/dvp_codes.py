@@ -193,9 +193,11 @@ def _basic(name: str, layout: tuple[str, ...], words: list[int], start: int) -> 
     texts: list[str] = []
     place = 0
     for kind in layout:
+        if place + _SIZES[kind] > len(words):
+            raise DvpCodeError("dvp-operand-count", start - 1, _at(words, 0))
         if kind in (TIMER, COUNTER):
             want = {TIMER: 0x01, COUNTER: 0x03}[kind]
-            if place >= len(words) or words[place] >> 8 != want:
+            if words[place] >> 8 != want:
                 raise DvpCodeError("dvp-bad-operand", start + place, _at(words, place))
             texts.append(("T" if kind == TIMER else "C") + str(words[place] & 0xFF))
             place += 1
@@ -214,6 +216,9 @@ def _basic(name: str, layout: tuple[str, ...], words: list[int], start: int) -> 
     if place != len(words):
         raise DvpCodeError("dvp-operand-count", start, _at(words, 0))
     return tuple(texts)
+
+
+_SIZES = {TIMER: 1, COUNTER: 1, "value": 2, "value32": 4, DEVICE: 2, NEST: 2}
 
 
 def _at(words: list[int], place: int) -> int:

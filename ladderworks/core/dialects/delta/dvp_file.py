@@ -10,6 +10,9 @@ Output Comment, Symbol Table, Device Comment Range) with binary blocks between t
 
 from __future__ import annotations
 
+import re
+import sys
+from array import array
 from dataclasses import dataclass, field
 
 from ladderworks.core.diagnostics import Diagnostic, Severity
@@ -31,8 +34,11 @@ FIRST_SECTION = SECTION_START + b"Initial Value\n"
 DATA_BEGIN, DATA_END = b"<TypeEnd>\n<DataBegin>\n", b"<DataEnd>"
 COMMENTS = "Device Comment"
 COMMENT_SPLIT = "$&"
-ENCODING = "cp1252"  # WPLSoft writes the Windows ANSI code page; cp1252 reads every byte
+ENCODING = "cp1254"  # WPLSoft writes the PC's ANSI code page: Turkish Windows' by default
+BIG5 = "cp950"  # WPLSoft's own default comments carry Big5 punctuation (A1xx-A3xx)
+_BIG5_PUNCTUATION = re.compile(rb"(?:[\x00-\x7f]|[\xa1-\xa3][\x40-\x7e\xa1-\xfe])*")
 MOST_SECTIONS = 64
+PROJECT_END = b"<PrjectEnd>"  # sic: the last line of every project WPLSoft writes
 
 
 class DvpError(ValueError):
@@ -86,21 +92,43 @@ def _keystream(data: bytes, version: int) -> bytes | None:
     return None
 
 
-def _words(area: bytes, stream: bytes) -> list[int]:
-    """The program memory's words, unscrambled."""
-    plain = bytes(b ^ stream[i & 3] for i, b in enumerate(area))
-    return [plain[i] | plain[i + 1] << 8 for i in range(0, len(plain) - 1, 2)]
+def text_of(raw: bytes) -> str:
+    """A comment or title: ASCII, Big5 where only Big5 punctuation is not ASCII (WPLSoft's
+    default comments), else the ANSI code page (a byte it lacks becomes U+FFFD)."""
+    if raw.isascii():
+        return raw.decode("ascii")
+    if _BIG5_PUNCTUATION.fullmatch(raw):
+        return raw.decode(BIG5, errors="replace")
+    return raw.decode(ENCODING, errors="replace")
 
 
-def _program(words: list[int], offset: int) -> list[DvpInstruction]:
+def _words(area: bytes, stream: bytes) -> array[int]:
+    """The program memory's words, unscrambled (an XOR of whole integers: fast)."""
+    size = len(area)
+    key = (stream * (size // 4 + 1))[:size]
+    plain = (int.from_bytes(area, "little") ^ int.from_bytes(key, "little")).to_bytes(
+        size, "little")
+    words = array("H", plain[:size - size % 2])
+    if sys.byteorder != "little":
+        words.byteswap()
+    return words
+
+
+_FILLER = NOP.to_bytes(2, "little")
+
+
+def _program(words: array[int], offset: int) -> list[DvpInstruction]:
     """The instructions up to END; what follows END must be the NOP filler."""
+    data = words.tobytes() if sys.byteorder == "little" else b""
     used = len(words)
+    if data:  # the NOP filler cut off at C speed (rstrip may take one byte of a word too many)
+        used = min(used, (len(data.rstrip(_FILLER)) + 1) // 2)
     while used and words[used - 1] == NOP:
         used -= 1
     if not used:
         return []
     try:
-        found = decode_words(words[:used])
+        found = decode_words(list(words[:used]))
     except DvpCodeError as error:
         raise DvpError(error.code, offset + 2 * error.index, word=f"{error.word:04X}",
                        step=error.index) from None
@@ -124,13 +152,13 @@ def _sections(data: bytes, start: int) -> tuple[list[str], dict[str, tuple[int, 
         name_end = data.find(b"\n", name_at, name_at + 256)
         if name_end < 0:
             raise DvpError("dvp-bad-section", at)
-        name = data[name_at:name_end].decode(ENCODING)
+        name = text_of(data[name_at:name_end])
         if data[name_end + 1:name_end + 1 + len(DATA_BEGIN)] != DATA_BEGIN:
             raise DvpError("dvp-bad-section", name_end + 1)
         body_at = name_end + 1 + len(DATA_BEGIN)
         body_end = data.find(DATA_END, body_at)
         if body_end < 0:
-            raise DvpError("dvp-truncated", len(data), what=name)
+            raise DvpError("dvp-bad-section", at)
         names.append(name)
         bodies.setdefault(name, (body_at, data[body_at:body_end]))
         at = data.find(SECTION_START, body_end)
@@ -143,7 +171,7 @@ def _comments(body: bytes, offset: int) -> dict[str, str]:
     at = offset
     for raw in body.split(b"\n"):
         if raw:
-            text = raw.decode(ENCODING)
+            text = text_of(raw)
             device, split, comment = text.partition(COMMENT_SPLIT)
             if not split or not device.isalnum():
                 raise DvpError("dvp-bad-comment", at)
@@ -157,20 +185,22 @@ def read_dvp(data: bytes) -> DvpProject:
     `.dvp` project, is cut short or does not read as one."""
     if not is_dvp(data):
         raise DvpError("dvp-not-dvp", 0)
+    if not data.endswith((PROJECT_END + b"\n", PROJECT_END + b"\r\n")):
+        raise DvpError("dvp-truncated", len(data))
     if len(data) < PROGRAM_START:
-        raise DvpError("dvp-truncated", len(data), what="header")
+        raise DvpError("dvp-bad-layout", len(data))
     version = data[VERSION] | data[VERSION + 1] << 8
     stream = _keystream(data, version)
     if stream is None:
         raise DvpError("dvp-version", VERSION, version=version)
     first = data.find(FIRST_SECTION, PROGRAM_START)
     if first < 0:
-        raise DvpError("dvp-truncated", len(data), what="Initial Value")
+        raise DvpError("dvp-bad-layout", PROGRAM_START)
     stop = first - SETTINGS_SIZE
     if stop <= PROGRAM_START or (stop - PROGRAM_START) % 2:
         raise DvpError("dvp-bad-layout", max(first - SETTINGS_SIZE, 0))
     words = _words(data[PROGRAM_START:stop], stream)
-    title = data[TITLE:TITLE_END].split(b"\0")[0].decode(ENCODING).strip()
+    title = text_of(data[TITLE:TITLE_END].split(b"\0")[0]).strip()
     project = DvpProject(title, data[MODEL] | data[MODEL + 1] << 8, version, len(words))
     project.instructions = _program(words, PROGRAM_START)
     names, bodies = _sections(data, first)
