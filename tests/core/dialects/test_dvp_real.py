@@ -1,0 +1,191 @@
+"""The `.dvp` reader on the real WPLSoft projects in ../shared/real-programs/delta (read there,
+never copied): all decode, the machine's project matches its CSV export, the training programs
+hold what their names say and run."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+from functools import cache
+
+import pytest
+
+from ladderworks.cli import main
+from ladderworks.core.compiler import compile
+from ladderworks.core.dialects.delta import DEVICES
+from ladderworks.core.dialects.delta.dvp_file import DvpProject, read_dvp, read_or_diagnostic
+from ladderworks.core.il.reading import parse_bytes
+from ladderworks.core.plc.engine import ScanEngine
+from tests.core.dialects.conftest import get, put
+from tests.real_programs import real_programs_dir
+
+MACHINE = "METALURGICA_c91257f_atual_no_programa.dvp"
+EXPORT = "METALURGICA_c91257f_proejto_clp.csv"
+
+
+def _names() -> list[str]:
+    return sorted(p.name for p in (real_programs_dir() / "delta").glob("*.dvp"))
+
+
+@cache
+def _data(name: str) -> bytes:
+    return (real_programs_dir() / "delta" / name).read_bytes()
+
+
+@cache
+def _project(name: str) -> DvpProject:
+    return read_dvp(_data(name))
+
+
+def _training(name: str) -> list[str]:
+    return [each.text() for each in _project(f"NIRMALKUMAR_{name}.dvp").instructions]
+
+
+def test_all_55_projects_decode_without_an_error() -> None:
+    names = _names()
+    assert len(names) == 55  # 54 training projects and the machine's
+    instructions = comments = 0
+    empty, unknown = [], []
+    for name in names:
+        project, diagnostic = read_or_diagnostic(_data(name))
+        assert diagnostic is None, (name, diagnostic and diagnostic.message())
+        assert project is not None
+        instructions += len(project.instructions)
+        comments += len(project.comments)
+        if not project.instructions:
+            empty.append(name.removeprefix("NIRMALKUMAR_"))
+        unknown += [each.mnemonic for each in project.instructions if not each.known]
+        assert all(w.code in ("dvp-no-program", "dvp-unknown-code") for w in project.warnings)
+    assert (instructions, comments) == (874, 73983)
+    # saved without a compiled instruction list (their ladder is in a part not decoded)
+    assert empty == ["Dvp1.dvp", "Dvp3.dvp", "contactcmp2.dvp", "counter1.dvp",
+                     "doublezcp.dvp", "setreset.dvp", "zonecmp.dvp"]
+    assert unknown == ["?821C", "?821C"]  # timer1, timer2: one code not identified
+
+
+def _csv() -> list[tuple[int, str]]:
+    rows = []
+    for line in _data(EXPORT).decode("ascii").splitlines():
+        step, *fields = line.split(",")
+        rows.append((int(step), " ".join(fields)))
+    return rows
+
+
+def test_the_machine_project_is_its_csv_export_up_to_step_825() -> None:
+    project = _project(MACHINE)
+    decoded = [(each.step, each.text()) for each in project.instructions]
+    exported = _csv()
+    assert len(exported) == 373 and len(decoded) == 360
+    # the same 336 instructions at the same steps up to FROM K0 K30 D50 K1 at step 825,
+    # except two constants the machine's copy has changed (K40 -> K100, K5 -> K20)
+    head = [row for row in exported if row[0] <= 825]
+    assert len(head) == 336
+    differ = [(a, b) for a, b in zip(head, decoded[:336], strict=True) if a != b]
+    assert differ == [((11, "MOV K40 D580"), (11, "MOV K100 D580")),
+                      ((17, "MOV K5 D582"), (17, "MOV K20 D582"))]
+    # after it the two copies differ: the project's END is at step 907, the export's at 922
+    assert decoded[336:338] == [(834, "LD> D50 K0"), (839, "TO K0 K1 H0 K1")]
+    assert (decoded[-1], exported[-1]) == ((907, "END"), (922, "END"))
+    assert project.title == "torno_" and project.comments == {}
+
+
+@pytest.mark.parametrize(("name", "holds"), [
+    ("timer", ["LD X0", "TMR T0 K5", "LD T0", "OUT Y0", "LD X1", "RST T0", "END"]),
+    ("counter", ["LDP X0", "CNT C0 K10", "LD C0", "OUT Y0", "END"]),
+    ("counter3clock", ["LD M1013", "CNT C0 K10", "LD C0", "OUT Y0", "END"]),
+    ("set_reset1", ["LD X0", "OUT Y0", "LD X1", "SET Y0", "LD X2", "RST Y0", "LD X3",
+                    "SET Y1", "LD X4", "RST Y1", "END"]),
+    ("jump", ["LD X0", "OUT Y0", "LD X1", "CJ P0", "LD X2", "OUT Y2", "LD X3", "OUT Y3",
+              "P0", "LD X4", "OUT Y4", "LD X5", "OUT Y5", "END"]),
+    ("mc_mcr", ["LD X0", "MC N0", "LD X1", "OUT Y0", "LD X2", "OUT Y1", "LD X3", "OUT Y2",
+                "MCR N0", "END"]),
+    ("inv", ["LD X0", "INV", "OUT Y0", "LDI X1", "INV", "OUT Y1", "END"]),
+    ("np", ["LD X0", "NP", "OUT M0", "LD M0", "OR Y0", "OUT Y0", "END"]),
+    ("pn", ["LDI X0", "PN", "OUT M0", "LD M0", "OR Y0", "OUT Y0", "END"]),
+    ("bcdbin", ["LD X0", "BCD D0 D1", "LD X1", "BIN D2 D3", "END"]),
+    ("division", ["LD X1", "DIV D5 D6 D7", "LD= D8 K0", "OUT Y0", "LD X1", "DIV D9 D10 D11",
+                  "LD= D12 K0", "OUT Y1", "END"]),
+    ("rising_edge_outside", ["LD X0", "PLS Y0", "LD X1", "PLF Y1", "LDP X2", "OR M0",
+                             "OUT M0", "LD X3", "PLS M1", "LD M1", "OR M2", "OUT M2", "END"]),
+    ("contacttypeboolean", ["LD& K0 K1", "OUT Y0", "LD| K2 K3", "OUT Y1", "LD^ K3 K4",
+                            "OUT Y2", "DLD& D0 D2", "OUT Y3", "LD& D4 D5", "OUT Y4", "END"]),
+])
+def test_a_training_program_holds_what_its_name_says(name: str, holds: list[str]) -> None:
+    assert _training(name) == holds
+
+
+def test_the_other_training_programs_use_the_instructions_they_are_named_for() -> None:
+    uses = {"compare": {"CMP", "DMOVR", "DECMP"}, "float": {"DMOVR", "DEADD"},
+            "maths": {"ADD", "SUB", "MUL", "DIV"}, "mathsdouble": {"DADD"},
+            "increment": {"INC", "DEC", "LDP"}, "booleangates": {"WAND", "WOR", "WXOR", "NEG"},
+            "callsubroutine": {"CALL", "FEND", "SRET", "P0", "P1"}, "pid": {"PID", "MOV"},
+            "analog": {"FROM", "TO"}, "analoginput": {"FROM", "SCLP"}, "task7": {"ZRST", "MPS"},
+            "contactcomp": {"LD>", "LD=", "LD<", "FLD=", "FLD>", "FLD<"},
+            "cntrightleft": {"CNT", "RST"}, "kep": {"TMR"}, "memory": {"OR", "ANI"}}
+    for name, mnemonics in uses.items():
+        found = {text.split()[0] for text in _training(name)}
+        assert mnemonics <= found, (name, found)
+
+
+def _engine(name: str) -> ScanEngine:
+    result = parse_bytes(_data(f"NIRMALKUMAR_{name}.dvp"))
+    assert result.ok, [d.message() for d in result.diagnostics if d.is_error]
+    return ScanEngine(compile(result.program), period_ms=10)
+
+
+def test_the_timer_project_runs() -> None:
+    plc = _engine("timer")
+    put(plc, "X0", 1)
+    plc.run_scans(45)
+    assert get(plc, "Y0") == 0
+    plc.run_scans(10)  # K5: 0.5 s
+    assert get(plc, "Y0") == 1
+    put(plc, "X0", 0)
+    put(plc, "X1", 1)
+    plc.run_scans(2)
+    assert (get(plc, "Y0"), get(plc, "T0")) == (0, 0)
+
+
+def test_the_counter_project_counts_rising_edges() -> None:
+    plc = _engine("counter")
+    for _ in range(10):
+        assert get(plc, "Y0") == 0
+        put(plc, "X0", 1)
+        plc.run_scans(2)
+        put(plc, "X0", 0)
+        plc.run_scans(2)
+    assert (get(plc, "C0"), get(plc, "Y0")) == (10, 1)
+
+
+def test_the_subroutine_project_calls_its_subroutines() -> None:
+    plc = _engine("callsubroutine")
+    put(plc, "X3", 1)
+    plc.run_scans(2)
+    assert get(plc, "Y1") == 0  # P0 not called
+    put(plc, "X1", 1)
+    plc.run_scans(2)
+    assert get(plc, "Y1") == 1
+
+
+def test_device_comments_become_the_programs_symbols() -> None:
+    result = parse_bytes(_data("NIRMALKUMAR_pid.dvp"))
+    symbols = result.program.symbols
+    assert symbols is not None
+    assert symbols.lookup(DEVICES.word("D0")[0]).comment == "SP"
+    assert symbols.lookup(DEVICES.word("D11")[0]).comment == "Kp"
+    assert symbols.lookup(DEVICES.bit("M1000")).comment.startswith("Normally open contact")
+    assert _project("NIRMALKUMAR_manualrightleft.dvp").comments["X1"] == "right limit switch"
+
+
+def _cli(*args: str) -> tuple[int, str]:
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        code = main(list(args))
+    return code, out.getvalue()
+
+
+def test_the_cli_checks_and_draws_a_project() -> None:
+    path = str(real_programs_dir() / "delta" / "NIRMALKUMAR_cjj.dvp")
+    assert _cli("check", path)[0] == 0
+    code, text = _cli("ladder", path)
+    assert code == 0 and "CJ" in text and "Y4" in text
