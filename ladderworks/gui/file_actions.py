@@ -11,6 +11,7 @@ from PySide6.QtCore import QCoreApplication, QDateTime, QLocale
 from PySide6.QtWidgets import QMessageBox
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
+from ladderworks.core.dialects.delta.dvp_program import save_refused
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import EncodeError
@@ -215,6 +216,7 @@ class FileActions(_Window):
                 ";;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC)"
                 ";;LADDER-III exports (*.txt *.TXT *.mnc *.MNC)"
                 ";;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL)"
+                ";;WPLSoft projects (*.dvp *.DVP)"
                 ";;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT)"
                 ";;All files (*)"))
         if name:
@@ -286,6 +288,10 @@ class FileActions(_Window):
                 "{0} did not parse and is not overwritten. Fix the errors and use "
                 "Show as ladder, or save under another name.").format(path.name))
             return False
+        refused = save_refused(path, self.document.binary)
+        if refused is not None:  # a .dvp project: LadderWorks writes its text forms only
+            self.warn(translate("MainWindow", "Save"), diagnostic_text(refused))
+            return self.save_as_dialog()
         self._last_save_result = False
         go_on = self._may_write(path)
         if not go_on:
@@ -341,7 +347,13 @@ class FileActions(_Window):
         return True
 
     def save_as_dialog(self) -> bool:
-        """File > Save As."""
+        """File > Save As (a program read from a .dvp project: as a Delta instruction list)."""
+        if self.document.binary and self.path is not None:
+            name = file_dialogs.save_file_name(
+                self, translate("MainWindow", "Save program"), str(self.path.with_suffix(".il")),
+                translate("MainWindow",
+                          "Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)"))
+            return bool(name) and self.save_to(name)
         name = file_dialogs.save_file_name(
             self, translate("MainWindow", "Save program"), str(self.path or "program.LAD"),
             translate("MainWindow", "Ladder programs (*.LAD *.lad);;All files (*)"))
