@@ -1037,161 +1037,236 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="270"/>
+        <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
+        <translation>WPLSoft .dvp projesi değil: 57 01 01 00 baytlarıyla başlamıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
+        <translation>.dvp dosyası {offset}. baytta kesilmiş: WPLSoft&apos;un en sona yazdığı &lt;PrjectEnd&gt; satırıyla bitmiyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
+        <translation>bayt {offset}: .dvp biçim sürümü {version} LadderWorks&apos;ün okuduğu sürümlerden değil (214, 215 ve 216 okunur)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
+        <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
+        <translation>bayt {offset}: bu .dvp projesinin program belleği WPLSoft&apos;un koyduğu yerde değil: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
+        <translation>bayt {offset} (adım {step}): {word} komut kodu LadderWorks tarafından bilinmiyor: operandlarıyla ?{word} olarak korundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
+        <translation>bayt {offset} (adım {step}): {word} sözcüğü LadderWorks&apos;ün bildiği bir cihazı göstermiyor: dosya bozuk ya da henüz çözülmemiş bir cihaz kullanıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
+        <translation>bayt {offset} (adım {step}): {word} operand sözcüğü ne cihaz ne sabit: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
+        <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
+        <translation>bayt {offset} (adım {step}): {word} sonrasındaki operand sözcükleri komuta uymuyor: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
+        <translation>bayt {offset} (adım {step}): {word} operand sözcüğünden önce komut yok: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <source>byte {offset}: the program does not end with END: the file is damaged</source>
+        <translation>bayt {offset}: program END ile bitmiyor: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
+        <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
+        <translation>bayt {offset} (adım {step}): END sonrasında komutlar var: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <source>byte {offset}: a text section of the .dvp project is damaged</source>
+        <translation>bayt {offset}: .dvp projesinin bir metin bölümü bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
+        <translation>bayt {offset}: bir cihaz açıklama satırı CİHAZ$&amp;metin biçiminde değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <source>the project holds no compiled instruction list (an uncompiled ladder is kept in a part of the file LadderWorks does not read): compile it in WPLSoft and save it again</source>
+        <translation>proje derlenmiş bir komut listesi içermiyor (derlenmemiş ladder, dosyanın LadderWorks&apos;ün okumadığı bir bölümünde tutulur): WPLSoft&apos;ta derleyip yeniden kaydedin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
+        <translation>LadderWorks .dvp projesi yazmaz (biçim yalnızca kısmen biliniyor): programı bunun yerine Delta komut listesi (.il) olarak kaydedin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="335"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="347"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="356"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="359"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="361"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="363"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="369"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="371"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="376"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1907,143 +1982,150 @@
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="430"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
         <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="111"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="152"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="170"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="458"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="157"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="157"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="209"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="212"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
+        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projeleri (*.dvp *.DVP);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="293"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="343"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="402"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
+        <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="457"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="474"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="316"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="322"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
-        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Tüm dosyalar (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="321"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="327"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="359"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="367"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="385"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="402"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="386"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="410"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
