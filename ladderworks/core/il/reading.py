@@ -2,8 +2,9 @@
 
 `parse_bytes`, `parse_file` and `parse_for_check` here sniff the text (core/dialects) and hand
 it to the dialect's reader, else to the PMC parser (il/parser.py); a WPLSoft `.dvp` project
-(binary, recognised by its first bytes) goes to core/dialects/delta/dvp_program.py. `dialect` names a reader and
-skips the sniffing (`--dialect NAME` on the command line); "pmc" forces the PMC parser.
+(binary, recognised by its first bytes) goes to core/dialects/delta/dvp_program.py. `dialect`
+names a reader and skips the sniffing (`--dialect NAME` on the command line); "pmc" forces the
+PMC parser.
 """
 
 from __future__ import annotations
