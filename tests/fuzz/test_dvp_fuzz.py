@@ -11,6 +11,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from ladderworks.core.dialects.delta.dvp_codes import END
+from ladderworks.core.dialects.delta.dvp_encode import encode_all
 from ladderworks.core.dialects.delta.dvp_file import PROGRAM_START, read_or_diagnostic
 from ladderworks.core.il.reading import parse_bytes
 from tests.core.dialects.dvp_samples import TIMER_WORDS, make_dvp
@@ -64,6 +65,8 @@ def test_mutated_projects_read_or_give_one_diagnostic(data: st.DataObject) -> No
 def test_random_program_words_read_or_give_one_diagnostic(words: list[int]) -> None:
     project, diagnostic = read_or_diagnostic(make_dvp((*words, END)))
     assert (project is None) != (diagnostic is None)
+    if project is not None:  # what reads, reads losslessly: encoded back to the same words
+        assert encode_all(project.instructions) == [*words, END][:project.steps]
 
 
 @pytest.mark.parametrize("command", COMMANDS)

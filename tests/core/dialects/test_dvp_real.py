@@ -13,7 +13,15 @@ import pytest
 from ladderworks.cli import main
 from ladderworks.core.compiler import compile
 from ladderworks.core.dialects.delta import DEVICES
-from ladderworks.core.dialects.delta.dvp_file import DvpProject, read_dvp, read_or_diagnostic
+from ladderworks.core.dialects.delta.dvp_encode import encode_all
+from ladderworks.core.dialects.delta.dvp_file import (
+    FIRST_SECTION,
+    PROGRAM_START,
+    SETTINGS_SIZE,
+    DvpProject,
+    read_dvp,
+    read_or_diagnostic,
+)
 from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.plc.engine import ScanEngine
 from tests.core.dialects.conftest import get, put
@@ -61,6 +69,25 @@ def test_all_55_projects_decode_without_an_error() -> None:
     assert empty == ["Dvp1.dvp", "Dvp3.dvp", "contactcmp2.dvp", "counter1.dvp",
                      "doublezcp.dvp", "setreset.dvp", "zonecmp.dvp"]
     assert unknown == ["?821C", "?821C"]  # timer1, timer2: one code not identified
+
+
+def test_every_program_memory_is_its_instructions_re_encoded_byte_for_byte() -> None:
+    # the decoding loses nothing: instructions -> words -> scrambled with the project's key
+    for name in _names():
+        data = _data(name)
+        project = _project(name)
+        stop = data.find(FIRST_SECTION) - SETTINGS_SIZE
+        words = encode_all(project.instructions)
+        words += [0x7FFF] * ((stop - PROGRAM_START) // 2 - len(words))
+        plain = b"".join(word.to_bytes(2, "little") for word in words)
+        if project.version == 215:
+            key = data[0x5E:0x62]
+            stream = bytes((key[0], key[1] ^ 0x80, key[2], key[3] ^ 0x80))
+        else:
+            byte = data[0x56 if project.version == 214 else 0x5E]
+            stream = bytes((byte, byte ^ 0x80) * 2)
+        scrambled = bytes(b ^ stream[i % 4] for i, b in enumerate(plain))
+        assert scrambled == data[PROGRAM_START:stop], name
 
 
 def _csv() -> list[tuple[int, str]]:

@@ -8,6 +8,7 @@ projects, or in an API family whose numbering those projects confirm, are in the
 
 from __future__ import annotations
 
+import struct
 from dataclasses import dataclass
 
 OPERAND_LIMIT = 0x1000  # words below this are operand words
@@ -93,6 +94,11 @@ API = _api_table()
 _FLOATING = frozenset(("ECMP", "EZCP", "MOVR", *_API_FLOAT.values()))
 
 
+def floating(name: str) -> bool:
+    """True for an applied instruction (its table name, no D) whose constants are F floats."""
+    return name in _FLOATING or name.startswith("F")
+
+
 class DvpCodeError(ValueError):
     """A word that is not an instruction code or operand the tables know; `index` is its
     place among the program's words, `code` the diagnostic."""
@@ -124,8 +130,8 @@ def device_text(letter: str, number: int) -> str:
 
 
 def _bit_device(value: int, index: int, word: int) -> str:
-    """A bit device from its 12-bit address (device nibble, number byte)."""
-    found = BIT_DEVICES.get(value >> 8 & 0xF)
+    """A bit device from its address (device nibble, number byte)."""
+    found = BIT_DEVICES.get(value >> 8)
     if found is None:
         raise DvpCodeError("dvp-unknown-device", index, word)
     letter, base = found
@@ -140,51 +146,55 @@ def _number(data: bytes) -> int:
     return int.from_bytes(data, "little", signed=True)
 
 
-def _float_text(data: bytes) -> str:
-    """An F constant of 4 bytes, as short as it reads back."""
-    import struct
-
+def _float_text(data: bytes) -> str | None:
+    """An F constant of 4 bytes, as short as it reads back; None when no decimal text does
+    (not a finite number)."""
     value = struct.unpack("<f", data)[0]
-    text = f"{value:.7g}"
-    return text if "e" in text or "." in text or "n" in text else text + ".0"
+    for digits in range(6, 10):  # the shortest text that reads back as the same 4 bytes
+        text = f"{value:.{digits}g}"
+        if "n" not in text and struct.pack("<f", float(text)) == data:
+            return text if "e" in text or "." in text else text + ".0"
+    return None
 
 
 def operand(words: list[int], start: int, floating: bool) -> str:
-    """The text of an applied instruction's operand (2 or 4 words from `start`)."""
+    """The text of an applied instruction's operand (2 or 4 words from `start`); every bit of
+    the words is accounted for (a word WPLSoft would not write is an error)."""
     tag = words[0] >> 8
+    tags = [word >> 8 for word in words[1:]]
     data = bytes(word & 0xFF for word in words)
-    if tag == 0x00:
-        return f"K{_number(data)}"
-    if tag == 0x02:
-        if floating and len(data) == 4:
-            return f"F{_float_text(data)}"
-        return f"H{int.from_bytes(data, 'little'):X}"
-    if tag == 0x04:
+    if tag in (0x00, 0x02) and not any(tags):
+        if tag == 0x00:
+            return f"K{_number(data)}"
+        text = _float_text(data) if floating and len(data) == 4 else None
+        return f"F{text}" if text is not None else f"H{int.from_bytes(data, 'little'):X}"
+    if tag == 0x04 and not any(tags) and not any(data[2:]):
         return _bit_device(data[0] | data[1] << 8, start, words[0])
-    if tag == 0x06:
-        letter = _WORD_DEVICES.get(words[1] >> 8)
+    if tag == 0x06 and not any(tags[1:]) and not any(data[2:]):
+        letter = _WORD_DEVICES.get(tags[0])
         value = data[0] | data[1] << 8
-        if letter is None or value % 2:
-            raise DvpCodeError("dvp-bad-operand", start, words[0])
-        return f"{letter}{value // 2}"
-    if tag == 0x08:
+        if letter is not None and not value % 2:
+            return f"{letter}{value // 2}"
+    if tag == 0x08 and not any(words[1:]):
         return f"P{data[0]}"
     raise DvpCodeError("dvp-bad-operand", start, words[0])
+
+
+_RESET_KINDS = {0x0206: "T", 0x040E: "C"}  # the second word of RST T n, RST C n
 
 
 def _device(words: list[int], start: int) -> str:
     """A basic instruction's device operand (two words: RST, LDP, PLS ...)."""
     tag = words[0] >> 8
-    value = (words[0] & 0xFF) | (words[1] & 0xFF) << 8
-    if tag == 0x04:
-        return _bit_device(value, start, words[0])
-    if tag == 0x06:  # a word: D n as 2n; T n as 0x600 + n, C n as 0xE00 + n
-        kind = words[1] >> 8
-        if kind == 0x06 and not value % 2:
+    if tag == 0x04 and words[1] < 0x100:
+        return _bit_device((words[0] & 0xFF) | words[1] << 8, start, words[0])
+    if tag == 0x06:  # a word: D n as 2n; T n and C n as the number and a fixed word
+        value = (words[0] & 0xFF) | (words[1] & 0xFF) << 8
+        if words[1] >> 8 == 0x06 and not value % 2:
             return f"D{value // 2}"
-        letter = {0x02: "T", 0x04: "C"}.get(kind)
-        if letter is not None and value >> 8 == (0x6 if letter == "T" else 0xE):
-            return f"{letter}{value & 0xFF}"
+        letter = _RESET_KINDS.get(words[1])
+        if letter is not None:
+            return f"{letter}{words[0] & 0xFF}"
     raise DvpCodeError("dvp-bad-operand", start, words[0])
 
 
@@ -209,7 +219,7 @@ def _basic(name: str, layout: tuple[str, ...], words: list[int], start: int) -> 
             texts.append(_device(words[place:place + 2], start + place))
             place += 2
         else:  # NEST: N n, then a word WPLSoft writes 0x0200
-            if words[place] >> 8 != 0x08:
+            if words[place] >> 8 != 0x08 or words[place + 1] != 0x0200:
                 raise DvpCodeError("dvp-bad-operand", start + place, words[place])
             texts.append(f"N{words[place] & 0xFF}")
             place += 2
@@ -241,8 +251,7 @@ def _operands(name: str, code: int, words: list[int], start: int) -> tuple[str, 
     size = 4 if wide else 2
     if len(words) % size:
         raise DvpCodeError("dvp-operand-count", start - 1, code)
-    floating = name in _FLOATING or name.startswith("F")
-    return tuple(operand(words[place:place + size], start + place, floating)
+    return tuple(operand(words[place:place + size], start + place, floating(name))
                  for place in range(0, len(words), size))
 
 

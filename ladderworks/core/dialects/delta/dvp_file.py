@@ -133,7 +133,7 @@ def _program(words: array[int], offset: int) -> list[DvpInstruction]:
         raise DvpError(error.code, offset + 2 * error.index, word=f"{error.word:04X}",
                        step=error.index) from None
     last = found[-1]
-    if last.mnemonic != "END" or words[last.step] != END:
+    if words[last.step] != END:
         raise DvpError("dvp-no-end", offset + 2 * used)
     end = last.step + 1
     if end != used:
