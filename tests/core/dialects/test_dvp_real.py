@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import random
 from functools import cache
 
 import pytest
@@ -88,6 +89,30 @@ def test_every_program_memory_is_its_instructions_re_encoded_byte_for_byte() -> 
             stream = bytes((byte, byte ^ 0x80) * 2)
         scrambled = bytes(b ^ stream[i % 4] for i, b in enumerate(plain))
         assert scrambled == data[PROGRAM_START:stop], name
+
+
+def test_every_truncation_of_the_smallest_project_is_cut_short_at_its_length() -> None:
+    data = _data(MACHINE)  # 95 531 bytes
+    for length in range(len(data)):
+        project, diagnostic = read_or_diagnostic(data[:length])
+        assert project is None and diagnostic is not None
+        assert diagnostic.code == ("dvp-truncated" if length >= 4 else "dvp-not-dvp"), length
+        assert length < 4 or diagnostic.args["offset"] == length
+
+
+def test_byte_flips_in_a_real_project_never_raise() -> None:
+    rng = random.Random(2026)
+    data = _data("NIRMALKUMAR_task8.dvp")
+    used = PROGRAM_START + 2 * _project("NIRMALKUMAR_task8.dvp").steps
+    stop = data.find(FIRST_SECTION)
+    codes: set[str] = set()
+    for turn in range(400):  # the header, the used steps, the rest of the program memory
+        flipped = bytearray(data)
+        flipped[rng.randrange(used if turn % 2 else stop)] ^= 1 << rng.randrange(8)
+        project, diagnostic = read_or_diagnostic(bytes(flipped))
+        assert (project is None) != (diagnostic is None)
+        codes.add(diagnostic.code if diagnostic is not None else "read")
+    assert {"read", "dvp-after-end", "dvp-unknown-device"} <= codes, codes
 
 
 def _csv() -> list[tuple[int, str]]:
