@@ -29,7 +29,7 @@ ALONE = {0x7FF6: "PN", 0x7FF7: "NP", 0x7FF8: "ANB", 0x7FF9: "ORB", 0x7FFA: "MPS"
          0x7FFB: "MRD", 0x7FFC: "MPP", 0x7FFD: "INV", NOP: "NOP", END: "END"}
 
 # basic instructions with operand words, and how their operands are laid out
-TIMER, COUNTER, WIDE, DEVICE, NEST = "timer", "counter", "wide", "device", "nest"
+TIMER, COUNTER, DEVICE, NEST = "timer", "counter", "device", "nest"
 BASIC: dict[int, tuple[str, tuple[str, ...]]] = {
     0x8003: ("TMR", (TIMER, "value")), 0x8005: ("CNT", (COUNTER, "value")),
     0x8006: ("DCNT", (COUNTER, "value32")), 0x8007: ("RST", (DEVICE,)),
@@ -198,7 +198,7 @@ def _device(words: list[int], start: int) -> str:
     raise DvpCodeError("dvp-bad-operand", start, words[0])
 
 
-def _basic(name: str, layout: tuple[str, ...], words: list[int], start: int) -> tuple[str, ...]:
+def _basic(layout: tuple[str, ...], words: list[int], start: int) -> tuple[str, ...]:
     """The operands of a basic instruction with operand words."""
     texts: list[str] = []
     place = 0
@@ -271,7 +271,7 @@ def decode_one(code: int, words: list[int], start: int) -> tuple[str, tuple[str,
         return name, (_bit_device(code & 0xFFF, start - 1, code),)
     basic = BASIC.get(code)
     if basic is not None:
-        return basic[0], _basic(basic[0], basic[1], words, start)
+        return basic[0], _basic(basic[1], words, start)
     if code >> 12 == 0x8:
         return _applied(code, words, start)
     raise DvpCodeError("dvp-unknown-code", start - 1, code)
