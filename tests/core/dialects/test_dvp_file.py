@@ -54,6 +54,15 @@ def test_the_codes_and_operands_of_each_form() -> None:
         "RST C1", "P5", "CJ P5", "DMOVR F12.4 D2", "END"]
 
 
+def test_bit_devices_are_delta_device_addresses() -> None:
+    # S 0x000+n, M0-M1535 0x800+n, M1536.. 0xB000+n (only in an operand), C 0xE00+n
+    words = (0xA000, 0xC3FF, 0xECB0, 0xDDFF, 0x4EC8, 0x8107, 0x0400, 0x00B0,
+             0x8060, 0x0400, 0x0000, 0x0409, 0x0000, END)
+    assert _texts(make_dvp(words)) == [
+        "LD S0", "AND S1023", "OR M1200", "ANI M1535", "OUT C200", "PLS M1536",
+        "ZRST S0 S9", "END"]
+
+
 def test_an_unknown_code_is_kept_with_its_operands_and_a_warning() -> None:
     project = read_dvp(make_dvp((0xA400, 0x821C, 0x0600, 0x0200, 0x000A, 0x0000, END)))
     assert [each.text() for each in project.instructions] == ["LD X0", "?821C T0 K10", "END"]
@@ -107,6 +116,7 @@ def test_damaged_parts_give_one_diagnostic_at_their_byte(change, code, offset) -
     ((0xA400, 0x4500), "dvp-no-end", 2),
     ((0xA400, END, 0xA401), "dvp-after-end", 2),
     ((0xA700, END), "dvp-unknown-device", 0),  # device nibble 7: none known
+    ((0x8107, 0x0400, 0x00BA, END), "dvp-unknown-device", 1),  # past M4095
     ((0x8028, 0x0A64, 0x0000, 0x0688, 0x0604, END), "dvp-bad-operand", 1),
     ((0x8028, 0x0064, 0x0000, 0x0688, END), "dvp-operand-count", 0),
     ((0x8003, 0x0100, END), "dvp-operand-count", 0),  # TMR without its value

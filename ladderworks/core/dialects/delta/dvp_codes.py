@@ -18,9 +18,14 @@ END = 0x800F
 # contacts and coils with the device in the word: high nibble = instruction, next = device
 CONTACTS = {0xA: "LD", 0xB: "LDI", 0xC: "AND", 0xD: "ANI", 0xE: "OR", 0xF: "ORI",
             0x4: "OUT", 0x5: "SET"}
-# the device nibble of a bit device (S is not seen in the projects read: not decoded)
-BIT_DEVICES = {0x4: ("X", 0), 0x5: ("Y", 0), 0x6: ("T", 0), 0x8: ("M", 0), 0x9: ("M", 256),
-               0xA: ("M", 512), 0xB: ("M", 768), 0xE: ("C", 0)}
+# A bit device is its Delta device address (DVP programming manual, "PLC device address"):
+# S 0x000+n, X 0x400+n, Y 0x500+n, T 0x600+n, M0-M1535 0x800+n, C 0xE00+n, M1536-M4095
+# 0xB000+(n-1536). High byte -> (letter, first number); the contact words hold 12 bits only.
+BIT_DEVICES = {0x0: ("S", 0), 0x1: ("S", 256), 0x2: ("S", 512), 0x3: ("S", 768),
+               0x4: ("X", 0), 0x5: ("Y", 0), 0x6: ("T", 0), 0x8: ("M", 0), 0x9: ("M", 256),
+               0xA: ("M", 512), 0xB: ("M", 768), 0xC: ("M", 1024), 0xD: ("M", 1280),
+               0xE: ("C", 0),
+               **{0xB0 + k: ("M", 1536 + 256 * k) for k in range(10)}}
 OCTAL = frozenset("XY")
 LABEL_HIGH = 0x30  # 0x30nn: the pointer P nn
 

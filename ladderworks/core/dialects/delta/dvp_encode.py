@@ -129,7 +129,10 @@ def encode(instruction: DvpInstruction) -> list[int]:
     if name[:1] == "P" and name[1:].isdigit() and not operands:
         return [LABEL_HIGH << 8 | int(name[1:])]
     if name in _CONTACTS and len(operands) == 1:
-        return [_CONTACTS[name] << 12 | _bit_value(operands[0])]
+        value = _bit_value(operands[0])
+        if value >= 0x1000:  # M1536 and up: not in a contact's 12 bits
+            raise DvpEncodeError(operands[0])
+        return [_CONTACTS[name] << 12 | value]
     if name in _BASIC:
         code, layout = _BASIC[name]
         return [code, *_basic_words(layout, operands)]
