@@ -52,3 +52,16 @@ def test_a_damaged_project_shows_its_error_and_is_never_overwritten(
     assert [d.code for d in window.errors.diagnostics()] == ["dvp-truncated"]
     assert not window.save_to(project)
     assert project.read_bytes() == data
+
+
+def test_a_project_with_damaged_words_shows_the_instructions_read_before_them(
+        window: MainWindow, tmp_path: Path) -> None:
+    project = tmp_path / "damaged.dvp"
+    data = make_dvp((0xA400, 0x4500, 0xA401, 0xA700, 0x4501, 0x800F))
+    project.write_bytes(data)
+    assert window.load(project)
+    assert window.model.showing_text
+    assert window.text_view.toPlainText().split() == ["LD", "X0", "OUT", "Y0", "LD", "X1"]
+    assert [(d.code, d.line) for d in window.errors.diagnostics()] == [("dvp-unknown-device", 4)]
+    assert not window.save_to(project)
+    assert project.read_bytes() == data

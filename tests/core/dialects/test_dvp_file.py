@@ -189,6 +189,15 @@ def test_a_damaged_project_is_one_error_and_an_empty_program() -> None:
     assert not result.ok and result.program.networks == []
 
 
+def test_damaged_program_words_show_what_was_read_before_them() -> None:
+    result = parse_bytes(make_dvp((0xA400, 0x4500, 0xA401, 0xA700, 0x4501, END)))
+    assert [(d.code, d.line) for d in result.diagnostics] == [("dvp-unknown-device", 4)]
+    assert result.program.source is not None
+    assert [line.split() for line in result.program.source.lines] == [
+        ["LD", "X0"], ["OUT", "Y0"], ["LD", "X1"]]
+    assert not result.ok
+
+
 def test_saving_over_a_project_is_refused(tmp_path) -> None:
     project = tmp_path / "machine.dvp"
     project.write_bytes(make_dvp())

@@ -113,6 +113,7 @@ class DvpCodeError(ValueError):
         self.code = code
         self.index = index
         self.word = word
+        self.read: list[DvpInstruction] = []  # the instructions before it (decode_words)
 
 
 @dataclass(frozen=True, slots=True)
@@ -282,6 +283,16 @@ def decode_one(code: int, words: list[int], start: int) -> tuple[str, tuple[str,
     raise DvpCodeError("dvp-unknown-code", start - 1, code)
 
 
+def _decoded(code: int, words: list[int], start: int) -> tuple[str, tuple[str, ...], bool]:
+    """decode_one, an unknown applied-instruction code kept as `?CODE` (known False)."""
+    try:
+        return (*decode_one(code, words, start), True)
+    except DvpCodeError as error:
+        if error.code != "dvp-unknown-code" or code >> 12 != 0x8:
+            raise
+        return f"?{code:04X}", _operands("", code, words, start), False
+
+
 def decode_words(words: list[int]) -> list[DvpInstruction]:
     """The instructions of a program's words (up to END; the NOP filler after it is dropped);
     raises DvpCodeError at the first word it cannot read."""
@@ -297,13 +308,10 @@ def decode_words(words: list[int]) -> list[DvpInstruction]:
             stop += 1
         operand_words = words[index + 1:stop]
         try:
-            mnemonic, operands = decode_one(code, operand_words, index + 1)
-            known = True
+            mnemonic, operands, known = _decoded(code, operand_words, index + 1)
         except DvpCodeError as error:
-            if error.code != "dvp-unknown-code" or code >> 12 != 0x8:
-                raise
-            mnemonic, operands, known = f"?{code:04X}", _operands("", code, operand_words,
-                                                                 index + 1), False
+            error.read = found
+            raise
         found.append(DvpInstruction(index, mnemonic, operands, known))
         index = stop
         if code == END:

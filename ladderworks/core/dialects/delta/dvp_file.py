@@ -49,10 +49,12 @@ class DvpError(ValueError):
         self.code = code
         self.offset = offset
         self.args_map = {"offset": offset, **args}
+        self.read: list[DvpInstruction] = []  # the program's instructions before the damage
 
-    def diagnostic(self) -> Diagnostic:
-        """The error as a diagnostic (line 1, the byte offset in the message)."""
-        return Diagnostic(self.code, dict(self.args_map), line=1, column=1)
+    def diagnostic(self, line: int = 1) -> Diagnostic:
+        """The error as a diagnostic (the byte offset in the message; `line`: of the text
+        that shows the instructions read before it)."""
+        return Diagnostic(self.code, dict(self.args_map), line=line, column=1)
 
 
 @dataclass(slots=True)
@@ -130,14 +132,18 @@ def _program(words: array[int], offset: int) -> list[DvpInstruction]:
     try:
         found = decode_words(list(words[:used]))
     except DvpCodeError as error:
-        raise DvpError(error.code, offset + 2 * error.index, word=f"{error.word:04X}",
-                       step=error.index) from None
+        bad_word = DvpError(error.code, offset + 2 * error.index, word=f"{error.word:04X}",
+                            step=error.index)
+        bad_word.read = error.read
+        raise bad_word from None
     last = found[-1]
-    if words[last.step] != END:
-        raise DvpError("dvp-no-end", offset + 2 * used)
     end = last.step + 1
-    if end != used:
-        raise DvpError("dvp-after-end", offset + 2 * end, step=end)
+    damaged = (DvpError("dvp-no-end", offset + 2 * used) if words[last.step] != END
+               else DvpError("dvp-after-end", offset + 2 * end, step=end) if end != used
+               else None)
+    if damaged is not None:
+        damaged.read = found
+        raise damaged
     return found
 
 

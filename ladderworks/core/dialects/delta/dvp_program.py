@@ -1,5 +1,6 @@
 """A `.dvp` project as a Program: its instruction list read by the Delta reader, its comments as
-symbols; and where a program read from one may not be saved (LadderWorks writes no `.dvp`)."""
+symbols (a damaged project: its error, and the instructions read before the damage to show);
+and where a program read from one may not be saved (LadderWorks writes no `.dvp`)."""
 
 from __future__ import annotations
 
@@ -8,7 +9,8 @@ from pathlib import Path
 from ladderworks.core.address import AddressError
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.dialects.delta import DEVICES, NAME
-from ladderworks.core.dialects.delta.dvp_file import DvpProject, is_dvp, read_or_diagnostic
+from ladderworks.core.dialects.delta.dvp_codes import DvpInstruction
+from ladderworks.core.dialects.delta.dvp_file import DvpError, DvpProject, is_dvp, read_dvp
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.program import Program
 from ladderworks.core.symbols import Symbol, SymbolTable
@@ -16,9 +18,9 @@ from ladderworks.core.symbols import Symbol, SymbolTable
 SUFFIX = ".dvp"
 
 
-def instruction_text(project: DvpProject) -> str:
-    """The project's instructions as a Delta instruction list, one a line (`LD X0`)."""
-    return "".join(each.text() + "\n" for each in project.instructions)
+def instruction_text(instructions: list[DvpInstruction]) -> str:
+    """Instructions as a Delta instruction list, one a line (`LD X0`)."""
+    return "".join(each.text() + "\n" for each in instructions)
 
 
 def symbol_table(comments: dict[str, str]) -> SymbolTable:
@@ -41,10 +43,13 @@ def parse_dvp(data: bytes) -> ParseResult:
     byte offset) and nothing else when it cannot be read."""
     from ladderworks.core.il.reading import parse_text
 
-    project, error = read_or_diagnostic(data)
-    if project is None:
-        return ParseResult(Program(dialect=NAME), [error] if error else [])
-    result = parse_text(instruction_text(project), NAME)
+    try:
+        project: DvpProject = read_dvp(data)
+    except DvpError as error:  # shown with the instructions read before the damage, if any
+        shown = parse_text(instruction_text(error.read), NAME) if error.read else None
+        program = shown.program if shown is not None else Program(dialect=NAME)
+        return ParseResult(program, [error.diagnostic(len(error.read) + 1)])
+    result = parse_text(instruction_text(project.instructions), NAME)
     result.program.symbols = symbol_table(project.comments)
     result.diagnostics = [*project.warnings, *result.diagnostics]
     return result
