@@ -8,11 +8,12 @@ from pathlib import Path
 
 from ladderworks.core.address import AddressError
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects.delta import DEVICES, NAME
+from ladderworks.core.dialects.delta import DEVICES, DIALECT, NAME
 from ladderworks.core.dialects.delta.dvp_codes import DvpInstruction
 from ladderworks.core.dialects.delta.dvp_file import DvpError, DvpProject, is_dvp, read_dvp
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.program import Program
+from ladderworks.core.il.textform import TextForm, split_with_ends
 from ladderworks.core.symbols import Symbol, SymbolTable
 
 SUFFIX = ".dvp"
@@ -38,21 +39,25 @@ def symbol_table(comments: dict[str, str]) -> SymbolTable:
     return table
 
 
+def _read_list(instructions: list[DvpInstruction]) -> tuple[Program, list[Diagnostic]]:
+    """The instructions as a Delta instruction list (LF lines), read by the Delta reader."""
+    text = instruction_text(instructions)
+    lines, ends = split_with_ends(text)
+    return DIALECT.read(text, TextForm(), lines, ends)
+
+
 def parse_dvp(data: bytes) -> ParseResult:
     """The Program a `.dvp` project holds, with its diagnostics: the file's own error (with its
     byte offset) and nothing else when it cannot be read."""
-    from ladderworks.core.il.reading import parse_text
-
     try:
         project: DvpProject = read_dvp(data)
     except DvpError as error:  # shown with the instructions read before the damage, if any
-        shown = parse_text(instruction_text(error.read), NAME) if error.read else None
-        program = shown.program if shown is not None else Program(dialect=NAME)
+        program = _read_list(error.read)[0] if error.read else Program(dialect=NAME)
         return ParseResult(program, [error.diagnostic(len(error.read) + 1)])
-    result = parse_text(instruction_text(project.instructions), NAME)
-    result.program.symbols = symbol_table(project.comments)
-    result.diagnostics = [*project.warnings, *result.diagnostics]
-    return result
+    program, diagnostics = _read_list(project.instructions)
+    program.symbols = symbol_table(project.comments)
+    found = sorted(diagnostics, key=lambda d: (d.line, d.column))
+    return ParseResult(program, [*project.warnings, *found])
 
 
 def save_refused(path: str | Path, read_from_dvp: bool = False) -> Diagnostic | None:
