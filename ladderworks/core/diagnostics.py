@@ -303,9 +303,15 @@ MESSAGES: dict[str, str] = {
     "dvp-bad-comment": QT_TRANSLATE_NOOP(
         "Diagnostic", "byte {offset}: a device comment line is not DEVICE$&text"),
     "dvp-no-program": QT_TRANSLATE_NOOP(
-        "Diagnostic", "the project holds no compiled instruction list (an uncompiled ladder is"
-        " kept in a part of the file LadderWorks does not read): compile it in WPLSoft and"
-        " save it again"),
+        "Diagnostic", "the project holds no program: no compiled instruction list and an empty"
+        " ladder drawing"),
+    "dvp-from-drawing": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the project was saved without compiling: its program is read from its"
+        " ladder drawing"),
+    "dvp-drawing-unread": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the project holds no compiled instruction list, and its ladder drawing"
+        " has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact"
+        " ...): compile it in WPLSoft and save it again"),
     "dvp-save-refused": QT_TRANSLATE_NOOP(
         "Diagnostic", "LadderWorks does not write .dvp projects (the format is only partly"
         " known): save the program as a Delta instruction list (.il) instead"),

@@ -17,10 +17,26 @@ def _section(name: str, body: bytes = b"") -> bytes:
             + b"<DataEnd>\n")
 
 
+def cell(kind: int, device: int = 0, number: int = 0, flags: int = 0) -> bytes:
+    """One 5-byte cell of the ladder drawing."""
+    return bytes((kind, device)) + number.to_bytes(2, "little") + bytes((flags,))
+
+
+LINE = cell(0x52)
+
+
+def row(*cells: bytes) -> bytes:
+    """A drawing row of 12 cells: the given ones, lines before the coil or box (else before the
+    last cell) to fill it."""
+    place = next((k for k, c in enumerate(cells) if c[0] in (0x32, 0x42)), len(cells) - 1)
+    return b"".join(cells[:place]) + LINE * (12 - len(cells)) + b"".join(cells[place:])
+
+
 def make_dvp(words: tuple[int, ...] = TIMER_WORDS, comments: bytes = b"X0$&start\n",
              version: int = 215, key: bytes = b"\x3c\x91\x5a\x07", title: bytes = b"sample",
-             capacity: int = CAPACITY) -> bytes:
-    """A project holding `words` (the NOP filler after them) and the comment lines."""
+             capacity: int = CAPACITY, drawing: bytes = b"") -> bytes:
+    """A project holding `words` (the NOP filler after them), the ladder `drawing` (rows of
+    cells) and the comment lines."""
     header = bytearray(0x100)
     header[0:4] = MAGIC
     header[0x0E:0x0E + len(title)] = title
@@ -35,7 +51,8 @@ def make_dvp(words: tuple[int, ...] = TIMER_WORDS, comments: bytes = b"X0$&start
     plain = b"".join(w.to_bytes(2, "little") for w in words)
     plain += b"\xff\x7f" * (capacity - len(words))
     program = bytes(b ^ stream[i % 4] for i, b in enumerate(plain))
-    sections = (_section("Initial Value") + b"\x01" + bytes(15)
+    sections = (_section("Initial Value") + b"\x01" + bytes(257)
+                + len(drawing).to_bytes(4, "little") + b"\x00" + drawing + bytes(64)
                 + _section("Device Comment", comments) + _section("Output Comment")
                 + _section("Symbol Table") + _section("Device Comment Range", b"Group=0\n"))
     return (bytes(header) + program + bytes(SETTINGS_SIZE) + sections

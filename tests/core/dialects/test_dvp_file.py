@@ -18,7 +18,7 @@ from ladderworks.core.dialects.delta.dvp_file import (
 )
 from ladderworks.core.dialects.delta.dvp_program import parse_dvp, save_refused
 from ladderworks.core.il.reading import parse_bytes
-from tests.core.dialects.dvp_samples import make_dvp
+from tests.core.dialects.dvp_samples import cell, make_dvp, row
 
 TIMER = ["LD X0", "TMR T0 K5", "LD T0", "OUT Y0", "LD X1", "RST T0", "END"]
 
@@ -85,6 +85,35 @@ def test_an_empty_program_reads_with_a_warning() -> None:
     project = read_dvp(make_dvp(()))
     assert project.instructions == []
     assert [w.code for w in project.warnings] == ["dvp-no-program"]
+
+
+X, Y, M, D, K = 0x09, 0x0A, 0x05, 0x02, 0x04
+
+
+def test_an_uncompiled_project_is_read_from_its_ladder_drawing() -> None:
+    drawing = (row(cell(0x12, X, 0), cell(0x22, M, 1000), cell(0x32, Y, 0))
+               + row(cell(0xE2, 0, 0x0A), cell(0x80, D, 0), cell(0x80, K, 7), cell(0x32, Y, 1))
+               + row(cell(0x12, X, 0o12), cell(0x42, 0, 0x0039, 0x10), cell(0x80, K, 0x84D0),
+                     cell(0x90, 0, 0), cell(0x80, D, 2), cell(0x90, 0, 0), cell(0x80, D, 4),
+                     cell(0x90, 0, 0))
+               + row(cell(0x12, X, 1), cell(0x42, 0, 0xD000), cell(0x80, Y, 2))
+               + row(cell(0x42, 0, 0x000F, 0x01)))
+    project = read_dvp(make_dvp((), drawing=drawing))
+    assert [(each.step, each.text()) for each in project.instructions] == [
+        (0, "LD X0"), (1, "ANI M1000"), (2, "OUT Y0"), (3, "LD>= D0 K7"), (8, "OUT Y1"),
+        (9, "LD X12"), (10, "DADD K34000 D2 D4"), (23, "LD X1"), (24, "SET Y2"), (25, "END")]
+    assert project.drawn and [w.code for w in project.warnings] == ["dvp-from-drawing"]
+
+
+def test_a_drawing_with_a_branch_is_not_guessed() -> None:
+    drawing = (row(cell(0x12, X, 0), cell(0x54, 0x10), cell(0x32, Y, 0))
+               + row(cell(0x00), cell(0x59), cell(0x32, Y, 1)))
+    data = make_dvp((), drawing=drawing)
+    project = read_dvp(data)
+    assert project.instructions == []
+    (warning,) = project.warnings
+    assert warning.code == "dvp-drawing-unread"
+    assert data[warning.args["offset"]] == 0x54
 
 
 @pytest.mark.parametrize(("change", "code", "offset"), [
@@ -161,7 +190,8 @@ def test_random_byte_flips_never_raise() -> None:
 READER_CODES = ("dvp-not-dvp", "dvp-truncated", "dvp-version", "dvp-bad-layout",
                 "dvp-unknown-code", "dvp-unknown-device", "dvp-bad-operand", "dvp-operand-count",
                 "dvp-stray-operand", "dvp-no-end", "dvp-after-end", "dvp-bad-section",
-                "dvp-bad-comment", "dvp-no-program", "dvp-save-refused")
+                "dvp-bad-comment", "dvp-no-program", "dvp-save-refused", "dvp-from-drawing",
+                "dvp-drawing-unread")
 
 
 def test_every_dvp_message_reads_with_the_arguments_the_reader_gives() -> None:

@@ -14,8 +14,10 @@ import pytest
 from ladderworks.cli import main
 from ladderworks.core.compiler import compile
 from ladderworks.core.dialects.delta import DEVICES
+from ladderworks.core.dialects.delta.dvp_drawing import DrawingError, drawing_program
 from ladderworks.core.dialects.delta.dvp_encode import encode_all
 from ladderworks.core.dialects.delta.dvp_file import (
+    DATA_END,
     FIRST_SECTION,
     PROGRAM_START,
     SETTINGS_SIZE,
@@ -54,22 +56,68 @@ def test_all_55_projects_decode_without_an_error() -> None:
     names = _names()
     assert len(names) == 55  # 54 training projects and the machine's
     instructions = comments = 0
-    empty, unknown = [], []
+    empty, drawn, unknown = [], [], []
     for name in names:
         project, diagnostic = read_or_diagnostic(_data(name))
         assert diagnostic is None, (name, diagnostic and diagnostic.message())
         assert project is not None
         instructions += len(project.instructions)
         comments += len(project.comments)
+        short = name.removeprefix("NIRMALKUMAR_")
+        if project.drawn:
+            drawn.append(short)
         if not project.instructions:
-            empty.append(name.removeprefix("NIRMALKUMAR_"))
+            empty.append(short)
         unknown += [each.mnemonic for each in project.instructions if not each.known]
-        assert all(w.code in ("dvp-no-program", "dvp-unknown-code") for w in project.warnings)
-    assert (instructions, comments) == (874, 73983)
-    # saved without a compiled instruction list (their ladder is in a part not decoded)
-    assert empty == ["Dvp1.dvp", "Dvp3.dvp", "contactcmp2.dvp", "counter1.dvp",
-                     "doublezcp.dvp", "setreset.dvp", "zonecmp.dvp"]
+        assert all(w.code in ("dvp-no-program", "dvp-unknown-code", "dvp-from-drawing")
+                   for w in project.warnings)
+    assert (instructions, comments) == (919, 73983)
+    # saved without a compiled instruction list: read from their ladder drawing
+    assert drawn == ["Dvp1.dvp", "Dvp3.dvp", "contactcmp2.dvp", "counter1.dvp",
+                     "doublezcp.dvp", "zonecmp.dvp"]
+    assert empty == ["setreset.dvp"]  # neither a program nor a drawing
     assert unknown == ["?821C", "?821C"]  # timer1, timer2: one code not identified
+
+
+def _drawn(name: str) -> list[tuple[int, str]] | None:
+    data = _data(name)
+    end = data.find(DATA_END, data.find(FIRST_SECTION)) + len(DATA_END) + 1
+    try:
+        return [(each.step, each.text()) for each in drawing_program(data, end)]
+    except DrawingError:
+        return None
+
+
+def test_a_series_drawing_is_exactly_the_compiled_program() -> None:
+    # every compiled project whose drawing has no branch: the same instructions, same steps
+    same, unread = [], 0
+    for name in _names():
+        project = _project(name)
+        if project.drawn or not project.instructions:
+            continue
+        drawn = _drawn(name)
+        if drawn is None:
+            unread += 1
+            continue
+        assert drawn == [(each.step, each.text()) for each in project.instructions], name
+        same.append(name.removeprefix("NIRMALKUMAR_").removesuffix(".dvp"))
+    assert len(same) == 17 and unread == 31
+    assert {"timer", "maths", "mathsdouble", "contactcomp", "division", "set_reset1"} <= set(same)
+
+
+@pytest.mark.parametrize(("name", "holds"), [
+    ("Dvp1", ["LD M0", "ANI M1", "OUT Y0", "END"]),
+    ("zonecmp", ["LD X0", "ZCP D0 D1 D2 M0", "LD M0", "OUT Y0", "LD M1", "OUT Y1", "LD M2",
+                 "OUT Y2", "END"]),
+    ("contactcmp2", ["LD>= D0 D1", "OUT Y0", "LD<= D2 D3", "OUT Y1", "FLD<= D4 D6", "OUT Y2",
+                     "FLD>= D8 D10", "OUT Y3", "END"]),
+    ("counter1", ["LD X0", "CNT C0 K5", "LD X1", "RST C0", "LD X2", "CNT C1 K5", "LD X3",
+                  "CNT C2 K5", "LD X4", "ZRST C0 C2"]),  # drawn without END
+])
+def test_an_uncompiled_project_opens_from_its_drawing(name: str, holds: list[str]) -> None:
+    project = _project(f"NIRMALKUMAR_{name}.dvp")
+    assert project.drawn and [each.text() for each in project.instructions] == holds
+    assert [w.code for w in project.warnings] == ["dvp-from-drawing"]
 
 
 def test_every_program_memory_is_its_instructions_re_encoded_byte_for_byte() -> None:
@@ -78,7 +126,7 @@ def test_every_program_memory_is_its_instructions_re_encoded_byte_for_byte() -> 
         data = _data(name)
         project = _project(name)
         stop = data.find(FIRST_SECTION) - SETTINGS_SIZE
-        words = encode_all(project.instructions)
+        words = [] if project.drawn else encode_all(project.instructions)
         words += [0x7FFF] * ((stop - PROGRAM_START) // 2 - len(words))
         plain = b"".join(word.to_bytes(2, "little") for word in words)
         if project.version == 215:

@@ -23,6 +23,7 @@ from ladderworks.core.dialects.delta.dvp_codes import (
     DvpInstruction,
     decode_words,
 )
+from ladderworks.core.dialects.delta.dvp_drawing import DrawingError, drawing_program
 
 MAGIC = b"\x57\x01\x01\x00"
 PROGRAM_START = 0x100
@@ -30,7 +31,8 @@ SETTINGS_SIZE = 0x48  # the block between the program memory and the first text 
 MODEL, VERSION, TITLE, TITLE_END = 0x4A, 0x4C, 0x0E, 0x22
 KEY_OLD, KEY = 0x56, 0x5E  # where the key of each format version is
 SECTION_START = b"<TypeBegin>\nFunction="
-FIRST_SECTION = SECTION_START + b"Initial Value\n"
+FIRST_NAME = "Initial Value"
+FIRST_SECTION = SECTION_START + FIRST_NAME.encode() + b"\n"
 DATA_BEGIN, DATA_END = b"<TypeEnd>\n<DataBegin>\n", b"<DataEnd>"
 COMMENTS = "Device Comment"
 COMMENT_SPLIT = "$&"
@@ -69,6 +71,7 @@ class DvpProject:
     comments: dict[str, str] = field(default_factory=dict)  # device text -> comment
     sections: list[str] = field(default_factory=list)  # the text sections' names, in order
     warnings: list[Diagnostic] = field(default_factory=list)
+    drawn: bool = False  # the instructions come from the ladder drawing (not compiled)
 
     @property
     def steps(self) -> int:
@@ -219,9 +222,25 @@ def read_dvp(data: bytes) -> DvpProject:
                    line=1, column=1, severity=Severity.WARNING)
         for each in project.instructions if not each.known]
     if not project.instructions:
-        project.warnings.append(Diagnostic("dvp-no-program", {}, line=1, column=1,
-                                           severity=Severity.WARNING))
+        _from_drawing(project, data, bodies)
     return project
+
+
+def _from_drawing(project: DvpProject, data: bytes,
+                  bodies: dict[str, tuple[int, bytes]]) -> None:
+    """The program of a project saved without compiling, from its ladder drawing, with a
+    warning that says so (or that it could not be read)."""
+    body_at, body = bodies.get(FIRST_NAME, (0, b""))
+    code = "dvp-no-program"
+    args: dict[str, object] = {}
+    try:
+        project.instructions = drawing_program(data, body_at + len(body) + len(DATA_END) + 1)
+    except DrawingError as error:
+        code, args = "dvp-drawing-unread", {"offset": error.offset}
+    if project.instructions:
+        code = "dvp-from-drawing"
+        project.drawn = True
+    project.warnings.append(Diagnostic(code, args, line=1, column=1, severity=Severity.WARNING))
 
 
 def read_or_diagnostic(data: bytes) -> tuple[DvpProject | None, Diagnostic | None]:
