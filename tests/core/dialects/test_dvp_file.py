@@ -105,6 +105,28 @@ def test_an_uncompiled_project_is_read_from_its_ladder_drawing() -> None:
     assert project.drawn and [w.code for w in project.warnings] == ["dvp-from-drawing"]
 
 
+def test_edge_contacts_inv_and_float_constants_in_a_drawing() -> None:
+    drawing = (row(cell(0xB2, X, 0), cell(0xC2, M, 3), cell(0xD2, 0), cell(0x32, Y, 0))
+               + row(cell(0x12, X, 1), cell(0x42, 0, 0x00F1, 0x10), cell(0x80, 0x03, 0x6666),
+                     cell(0x90, 0, 0x4146, 0x10), cell(0x80, D, 2), cell(0x90, 0, 0)))
+    assert [each.text() for each in read_dvp(make_dvp((), drawing=drawing)).instructions] == [
+        "LDP X0", "ANDF M3", "INV", "OUT Y0", "LD X1", "DMOVR F12.4 D2"]
+
+
+@pytest.mark.parametrize("cells", [
+    (cell(0x12, X, 0), cell(0x54, 0x10), cell(0x32, Y, 0)),  # a branch down
+    (cell(0x12, X, 1), cell(0x42, 0, 0x0010), cell(0x80, 0x0C, 0)),  # CJ P0: P is not drawn
+    (cell(0x42, 0, 0x001C),),  # FEND: the subroutines' pointers are not drawn
+])
+def test_a_drawing_the_reader_cannot_take_whole_is_not_used(cells: tuple[bytes, ...]) -> None:
+    data = make_dvp((), drawing=row(*cells))
+    project = read_dvp(data)
+    assert project.instructions == []
+    (warning,) = project.warnings
+    assert warning.code == "dvp-drawing-unread"
+    assert data[warning.args["offset"]] in (0x54, 0x80, 0x42)
+
+
 def test_a_drawing_with_a_branch_is_not_guessed() -> None:
     drawing = (row(cell(0x12, X, 0), cell(0x54, 0x10), cell(0x32, Y, 0))
                + row(cell(0x00), cell(0x59), cell(0x32, Y, 1)))

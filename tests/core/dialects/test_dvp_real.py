@@ -90,7 +90,7 @@ def _drawn(name: str) -> list[tuple[int, str]] | None:
 
 def test_a_series_drawing_is_exactly_the_compiled_program() -> None:
     # every compiled project whose drawing has no branch: the same instructions, same steps
-    same, unread = [], 0
+    same, differ, unread = [], [], 0
     for name in _names():
         project = _project(name)
         if project.drawn or not project.instructions:
@@ -99,10 +99,16 @@ def test_a_series_drawing_is_exactly_the_compiled_program() -> None:
         if drawn is None:
             unread += 1
             continue
-        assert drawn == [(each.step, each.text()) for each in project.instructions], name
-        same.append(name.removeprefix("NIRMALKUMAR_").removesuffix(".dvp"))
-    assert len(same) == 17 and unread == 31
-    assert {"timer", "maths", "mathsdouble", "contactcomp", "division", "set_reset1"} <= set(same)
+        short = name.removeprefix("NIRMALKUMAR_").removesuffix(".dvp")
+        compiled = [(each.step, each.text()) for each in project.instructions]
+        if drawn != compiled:  # rising_edge: its drawing has lost the END row
+            assert drawn == compiled[:-1] and compiled[-1][1] == "END", name
+            differ.append(short)
+            continue
+        same.append(short)
+    assert (len(same), differ, unread) == (25, ["rising_edge"], 22)
+    assert {"timer", "maths", "mathsdouble", "contactcomp", "division", "set_reset1", "inv",
+            "counter", "compare", "float", "mc_mcr"} <= set(same)
 
 
 @pytest.mark.parametrize(("name", "holds"), [

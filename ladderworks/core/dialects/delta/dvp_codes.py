@@ -152,7 +152,7 @@ def _number(data: bytes) -> int:
     return int.from_bytes(data, "little", signed=True)
 
 
-def _float_text(data: bytes) -> str | None:
+def float_text(data: bytes) -> str | None:
     """An F constant of 4 bytes, as short as it reads back; None when no decimal text does
     (not a finite number)."""
     value = struct.unpack("<f", data)[0]
@@ -172,7 +172,7 @@ def operand(words: list[int], start: int, floating: bool) -> str:
     if tag in (0x00, 0x02) and not any(tags):
         if tag == 0x00:
             return f"K{_number(data)}"
-        text = _float_text(data) if floating and len(data) == 4 else None
+        text = float_text(data) if floating and len(data) == 4 else None
         return f"F{text}" if text is not None else f"H{int.from_bytes(data, 'little'):X}"
     if tag == 0x04 and not any(tags) and not any(data[2:]):
         return _bit_device(data[0] | data[1] << 8, start, words[0])

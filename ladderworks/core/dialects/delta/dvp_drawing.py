@@ -3,13 +3,20 @@ compiled instruction list (saved in WPLSoft without compiling), rungs in series 
 
 The drawing (docs/dialects.md, ".dvp projects"): after the Initial Value section, 258 bytes on,
 a 32-bit byte count, then rows of 12 five-byte cells (type, device type, 16-bit number, flags):
-`12`/`22` a contact open/closed, `32` a coil, `42` a box (its code), `E2` a comparison contact
-(its place in the family), `80` an operand (`90` its high 16 bits), `52` a line. A cell of any
-other type (branches, edge contacts ...) is not read: the drawing is then not used."""
+`12`/`22`/`B2`/`C2` a contact (open, closed, rising, falling), `D2` INV/PN/NP, `32` a coil,
+`42` a box (its code), `E2` a comparison contact (its place in the family), `80` an operand
+(`90` its high 16 bits), `52` a line. A cell of any other type (branches ...) or a pointer is
+not read: the drawing is then not used."""
 
 from __future__ import annotations
 
-from ladderworks.core.dialects.delta.dvp_codes import API, BASIC, DvpInstruction, device_text
+from ladderworks.core.dialects.delta.dvp_codes import (
+    API,
+    BASIC,
+    DvpInstruction,
+    device_text,
+    float_text,
+)
 from ladderworks.core.dialects.delta.dvp_encode import DvpEncodeError, encode
 
 DRAWING_AT = 258  # from the end of the Initial Value section's <DataEnd> line
@@ -18,10 +25,17 @@ ROW = 12
 MOST_CELLS = 100_000
 CONTACT, CLOSED, COIL, BOX, COMPARE, OPERAND, HIGH, LINE = (
     0x12, 0x22, 0x32, 0x42, 0xE2, 0x80, 0x90, 0x52)
+RISING, FALLING, LOGIC = 0xB2, 0xC2, 0xD2  # edge contacts; INV, PN, NP (by the device byte)
+_CONTACTS = {CONTACT: ("LD", "AND"), CLOSED: ("LDI", "ANI"), RISING: ("LDP", "ANDP"),
+             FALLING: ("LDF", "ANDF")}
+_LOGIC = {0: "INV", 1: "PN", 2: "NP"}
 WIDE_FLAG = 0x10  # a 32-bit (D) form
 SET_BOX = 0xD000
 DEVICES = {0x09: "X", 0x0A: "Y", 0x05: "M", 0x07: "T", 0x01: "C", 0x02: "D"}
-CONSTANT = 0x04  # a K constant
+CONSTANT, FLOAT, NEST = 0x04, 0x03, 0x0D  # K; F (with its high half); MC's N
+# the pointers P n are not in the grid (a table after it, not decoded): a drawing with a jump,
+# a call or a subroutine (operand type 0x0C P; FEND, SRET, IRET) is not read
+_PROGRAM_FLOW = frozenset(("FEND", "SRET", "IRET"))
 # comparison contacts by their place: 2k (+1 in the 32-bit form) for =, >, <, <>, <=, >=, &,
 # |, ^; 0x16 + k for the floating-point FLD=, FLD> ... FLD>=
 _COMPARE = ("=", ">", "<", "<>", "<=", ">=", "&", "|", "^")
@@ -51,6 +65,13 @@ def _device(cell: bytes, offset: int) -> str:
 
 def _operand(cell: bytes, high: bytes | None, offset: int) -> str:
     """An operand cell (and its high half) as text."""
+    if cell[1] == NEST and high is None:
+        return f"N{_number(cell)}"
+    if cell[1] == FLOAT and high is not None:
+        text = float_text(cell[2:4] + high[2:4])
+        if text is None:
+            raise DrawingError(offset)
+        return f"F{text}"
     if cell[1] != CONSTANT:
         if high is not None and any(high[2:4]):
             raise DrawingError(offset)
@@ -111,15 +132,19 @@ def _row(row: list[bytes], at: int) -> list[tuple[str, tuple[str, ...]]]:
         kind = cell[0]
         if kind == LINE:
             place += 1
-        elif kind in (CONTACT, CLOSED):
-            name = ("LD" if first else "AND") if kind == CONTACT else ("LDI" if first else "ANI")
-            found.append((name, (_device(cell, offset),)))
+        elif kind in _CONTACTS:
+            found.append((_CONTACTS[kind][not first], (_device(cell, offset),)))
             first, place = False, place + 1
+        elif kind == LOGIC and cell[1] in _LOGIC and not any(cell[2:]):
+            found.append((_LOGIC[cell[1]], ()))
+            place += 1
         elif kind == COIL:
             found.append(("OUT", (_device(cell, offset),)))
             place += 1
         elif kind in (BOX, COMPARE):
             name = _box(cell, offset) if kind == BOX else _compare(cell, first, offset)
+            if name in _PROGRAM_FLOW:
+                raise DrawingError(offset)
             operands, place = _operands(row, place + 1, at)
             found.append((name, operands))
             first = first and kind == BOX
