@@ -1,0 +1,191 @@
+"""WinProladder's project file (`.pdw`, header `Fatek WinProladder, File Format 1`): its records,
+the program image they hold (XOR-masked) and the element comments (docs/dialects.md, ".pdw
+projects" says what was learned from which material)."""
+
+from __future__ import annotations
+
+import struct
+from collections import Counter
+from dataclasses import dataclass, field
+
+MAGIC = b"Fatek WinProladder, File Format 1"
+FIRST_RECORD = 0x100  # the records follow a 256-byte header (magic, FB-PLC, model …)
+MODEL_AT = 0xA0  # the PLC model, NUL-terminated, in the header
+END_TAG = 0xFFFF
+PROJECT_TAG = 0x1006  # project name and model
+UNIT_TAG = 0x1001  # a program unit: its first byte in the image, its name
+COMMENT_TAG = 0x1003  # an element comment: device and text
+PROGRAM_TAG = 0x182A  # the program image (the PLC's program memory), masked
+MASKED_TAGS = (0x182A, 0x182B)  # the program image and the PLC's comment memory, masked
+SUMMED_TAGS = (PROJECT_TAG, UNIT_TAG, COMMENT_TAG)  # records whose checksum is known
+KEY_PERIOD = 1280  # the mask repeats every 1280 bytes from each masked record's first byte
+ERASED = 0xFF  # erased program memory
+COMMENT_ENCODING = "cp1250"  # WinProladder writes comments in the Windows code page (cp1250 here)
+RECORD_HEAD = 4  # tag and length, 16-bit little-endian each; the checksum follows the payload
+RECORD_TAIL = 2
+
+
+class PdwError(Exception):
+    """A .pdw that cannot be read: the diagnostic code, its byte offset and arguments."""
+
+    def __init__(self, code: str, offset: int, **args: object) -> None:
+        self.code = code
+        self.offset = offset
+        self.args_map: dict[str, object] = {"offset": offset, **args}
+        super().__init__(f"{code} at byte {offset}")
+
+
+@dataclass(frozen=True, slots=True)
+class Record:
+    """One record: its tag, where it starts in the file, its payload."""
+
+    tag: int
+    offset: int
+    payload: bytes
+
+    @property
+    def payload_offset(self) -> int:
+        """The file offset of the payload's first byte."""
+        return self.offset + RECORD_HEAD
+
+
+@dataclass(slots=True)
+class PdwProject:
+    """What a .pdw holds that LadderWorks reads: model, units, program image, comments."""
+
+    model: str
+    name: str
+    image: bytes  # the program record unmasked
+    image_offset: int  # its first byte in the file
+    units: list[tuple[str, int]] = field(default_factory=list)  # name, first byte in the image
+    comments: dict[str, str] = field(default_factory=dict)  # device (`M300`) -> text
+
+
+def _text_bytes(tag: int, payload: bytes) -> bytes:
+    """The text parts of a summed record (what its checksum adds as signed chars)."""
+    if tag == UNIT_TAG:
+        return payload[6:]
+    if tag == PROJECT_TAG:
+        return payload[8:]
+    texts, at = [], 0
+    while at + 2 <= len(payload):  # COMMENT_TAG: length-prefixed strings
+        size = struct.unpack_from("<H", payload, at)[0]
+        texts.append(payload[at + 2:at + 2 + size])
+        at += 2 + size
+    return b"".join(texts)
+
+
+def checksum(tag: int, payload: bytes) -> int:
+    """A record's checksum: its bytes summed, the text bytes as signed chars, 16 bits."""
+    high = sum(1 for byte in _text_bytes(tag, payload) if byte > 0x7F)
+    return (sum(payload) - 256 * high) & 0xFFFF
+
+
+def records(data: bytes) -> list[Record]:
+    """The records after the header up to the end record; PdwError when the file is cut, a
+    record runs past its end or a known record's checksum does not match."""
+    if not data.startswith(MAGIC):
+        raise PdwError("pdw-header", 0)
+    if len(data) < FIRST_RECORD:
+        raise PdwError("pdw-truncated", len(data))
+    found: list[Record] = []
+    at = FIRST_RECORD
+    while True:
+        if at + RECORD_HEAD > len(data):
+            raise PdwError("pdw-truncated", at)
+        tag, size = struct.unpack_from("<HH", data, at)
+        if tag == END_TAG:
+            return found
+        end = at + RECORD_HEAD + size
+        if end + RECORD_TAIL > len(data):
+            raise PdwError("pdw-truncated", at)
+        payload = data[at + RECORD_HEAD:end]
+        if tag in SUMMED_TAGS:
+            stored = struct.unpack_from("<H", data, end)[0]
+            if stored != checksum(tag, payload):
+                raise PdwError("pdw-checksum", at)
+        found.append(Record(tag, at, payload))
+        at = end + RECORD_TAIL
+
+
+def mask_key(masked: list[Record]) -> bytes:
+    """The mask: the most frequent 1280-byte block of the masked records (erased memory, 0xFF
+    under the mask) XOR 0xFF. PdwError when no block repeats (nothing erased to learn it from)."""
+    blocks: Counter[bytes] = Counter()
+    for record in masked:
+        payload = record.payload
+        for start in range(0, len(payload) - KEY_PERIOD + 1, KEY_PERIOD):
+            blocks[payload[start:start + KEY_PERIOD]] += 1
+    if not blocks or blocks.most_common(1)[0][1] < 2:
+        raise PdwError("pdw-key", masked[0].offset if masked else FIRST_RECORD)
+    block = blocks.most_common(1)[0][0]
+    return bytes(byte ^ ERASED for byte in block)
+
+
+def unmask(payload: bytes, key: bytes) -> bytes:
+    """A masked record's payload XOR the mask repeated from its first byte."""
+    repeats = -(-len(payload) // len(key))
+    stream = (key * repeats)[:len(payload)]
+    return (int.from_bytes(payload, "little") ^ int.from_bytes(stream, "little")).to_bytes(
+        len(payload), "little")
+
+
+def _text(raw: bytes) -> str:
+    """A NUL-terminated header string."""
+    return raw.split(b"\0", 1)[0].decode("latin-1")
+
+
+def _strings(payload: bytes, at: int, count: int, offset: int) -> tuple[list[bytes], int]:
+    """`count` length-prefixed (16-bit) strings from `payload[at:]`; PdwError past its end."""
+    out: list[bytes] = []
+    for _ in range(count):
+        if at + 2 > len(payload):
+            raise PdwError("pdw-record", offset)
+        size = struct.unpack_from("<H", payload, at)[0]
+        at += 2
+        if at + size > len(payload):
+            raise PdwError("pdw-record", offset)
+        out.append(payload[at:at + size])
+        at += size
+    return out, at
+
+
+def _unit(record: Record) -> tuple[str, int]:
+    """A unit record: its name and first byte in the image (u16 start, u16 name length, two
+    zero bytes, the name)."""
+    payload = record.payload
+    if len(payload) < 6:
+        raise PdwError("pdw-record", record.offset)
+    start, size = struct.unpack_from("<HH", payload, 0)
+    if 6 + size > len(payload):
+        raise PdwError("pdw-record", record.offset)
+    return payload[6:6 + size].decode("latin-1"), start
+
+
+def _comment(record: Record) -> tuple[str, str]:
+    """A comment record: the device as written (`M300`) and the comment's text."""
+    (device, text), _end = _strings(record.payload, 0, 2, record.offset)
+    return device.decode("latin-1").strip().upper(), text.decode(COMMENT_ENCODING, "replace")
+
+
+def read_project(data: bytes) -> PdwProject:
+    """The project a .pdw holds; PdwError (code, byte offset) when it cannot be read."""
+    found = records(data)
+    programs = [record for record in found if record.tag == PROGRAM_TAG]
+    if not programs:
+        raise PdwError("pdw-no-program", len(data))
+    program = programs[0]
+    key = mask_key([record for record in found if record.tag in MASKED_TAGS])
+    project = PdwProject(model=_text(data[MODEL_AT:MODEL_AT + 16]), name="",
+                         image=unmask(program.payload, key),
+                         image_offset=program.payload_offset)
+    for record in found:
+        if record.tag == PROJECT_TAG and len(record.payload) >= 8:
+            size = struct.unpack_from("<H", record.payload, 2)[0]
+            project.name = record.payload[8:8 + size].decode("latin-1")
+        elif record.tag == UNIT_TAG:
+            project.units.append(_unit(record))
+        elif record.tag == COMMENT_TAG:
+            device, text = _comment(record)
+            project.comments[device] = text
+    return project
