@@ -7,6 +7,7 @@ inferred); a code not listed stops the decoding with its byte offset (PdwError).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from ladderworks.core.dialects.fatek.pdw_records import PdwError
@@ -95,7 +96,7 @@ class Step:
 class Decoder:
     """Decodes a unit's words; `timer_base(n)` gives timer n's base as printed (`.01`)."""
 
-    def __init__(self, words: list[int], offset: int, timer_base: object) -> None:
+    def __init__(self, words: list[int], offset: int, timer_base: Callable[[int], str]) -> None:
         self.words = words
         self.offset = offset  # the file offset of words[0]
         self.timer_base = timer_base
@@ -186,7 +187,7 @@ class Decoder:
         preset, timer = values
         if not timer.startswith("T"):
             raise PdwError("pdw-operand", self.where(start + 2), word=timer)
-        base = self.timer_base(int(timer[1:]))  # type: ignore[operator]
+        base = self.timer_base(int(timer[1:]))
         return f"{timer} {base} {preset}"
 
     def compare(self, word: int, start: int) -> tuple[str, list[tuple[str, str]]]:

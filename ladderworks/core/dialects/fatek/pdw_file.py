@@ -4,7 +4,9 @@ and its element comments (docs/dialects.md, ".pdw projects")."""
 from __future__ import annotations
 
 import struct
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from ladderworks.core.dialects.fatek.pdw_code import Decoder, Step
 from ladderworks.core.dialects.fatek.pdw_records import MAGIC, PdwError, PdwProject, read_project
@@ -18,6 +20,7 @@ TIMER_COUNTS_AT = 0x1DA  # how many 0.01 s timers, then 0.1 s timers (the rest 1
 TIMER_BASES = (".01", ".1", "1")  # as the listing prints them (.01 seen; .1 and 1 assumed)
 UNIT_LETTERS = ("M", "S")  # the step suffix of the main unit and the subroutine unit
 HEADER = "Printed Item: Mnemonic - {unit}"
+SUFFIX = ".pdw"
 OPERAND_INDENT = " " * 7
 
 
@@ -43,6 +46,17 @@ def is_pdw(data: bytes) -> bool:
     return data.startswith(MAGIC)
 
 
+def is_pdw_path(path: Path) -> bool:
+    """True for a file named `.pdw` or one that starts with the .pdw header (never written)."""
+    if path.suffix.lower() == SUFFIX:
+        return True
+    try:
+        with open(path, "rb") as file:
+            return is_pdw(file.read(len(MAGIC)))
+    except OSError:
+        return False
+
+
 def _code(project: PdwProject) -> list[int]:
     """The code's words after checking the image's mark, length and checksum."""
     image, base = project.image, project.image_offset
@@ -58,7 +72,7 @@ def _code(project: PdwProject) -> list[int]:
     return list(struct.unpack(f">{count}H", code))
 
 
-def _timer_bases(image: bytes) -> object:
+def _timer_bases(image: bytes) -> Callable[[int], str]:
     """Timer n's base as printed, from the project's timer allocation."""
     fast, mid = struct.unpack_from("<HH", image, TIMER_COUNTS_AT)
     if fast + mid > 256:
