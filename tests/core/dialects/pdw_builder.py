@@ -43,7 +43,9 @@ def image(words: list[int], fast: int = 50, mid: int = 100) -> bytes:
 
 def masked(payload: bytes, key: bytes) -> bytes:
     """`payload` XOR `key` repeated from its first byte."""
-    return bytes(byte ^ key[index % len(key)] for index, byte in enumerate(payload))
+    stream = (key * (len(payload) // len(key) + 1))[:len(payload)]
+    return (int.from_bytes(payload, "little") ^ int.from_bytes(stream, "little")).to_bytes(
+        len(payload), "little")
 
 
 def build(words: list[int], comments: dict[str, bytes] | None = None, *, seed: int = 7,

@@ -23,6 +23,7 @@ ERASED = 0xFF  # erased program memory
 COMMENT_ENCODING = "cp1250"  # WinProladder writes comments in the Windows code page (cp1250 here)
 RECORD_HEAD = 4  # tag and length, 16-bit little-endian each; the checksum follows the payload
 RECORD_TAIL = 2
+_HEAD = struct.Struct("<HH").unpack_from
 
 
 class PdwError(Exception):
@@ -61,6 +62,9 @@ class PdwProject:
     comments: dict[str, str] = field(default_factory=dict)  # device (`M300`) -> text
 
 
+_HIGH = bytes(range(0x80, 0x100))
+
+
 def _text_bytes(tag: int, payload: bytes) -> bytes:
     """The text parts of a summed record (what its checksum adds as signed chars)."""
     if tag == UNIT_TAG:
@@ -77,8 +81,26 @@ def _text_bytes(tag: int, payload: bytes) -> bytes:
 
 def checksum(tag: int, payload: bytes) -> int:
     """A record's checksum: its bytes summed, the text bytes as signed chars, 16 bits."""
-    high = sum(1 for byte in _text_bytes(tag, payload) if byte > 0x7F)
+    text = _text_bytes(tag, payload)
+    high = len(text) - len(text.translate(None, _HIGH))  # bytes 0x80-0xFF
     return (sum(payload) - 256 * high) & 0xFFFF
+
+
+def _chain(data: bytes) -> list[tuple[int, int, int]]:
+    """Each record's tag, offset and payload size up to the end record; PdwError when the file
+    ends first (nothing read but the heads: a cut file is found before any payload is read)."""
+    chain: list[tuple[int, int, int]] = []
+    at = FIRST_RECORD
+    while True:
+        if at + RECORD_HEAD > len(data):
+            raise PdwError("pdw-truncated", at)
+        tag, size = _HEAD(data, at)
+        if tag == END_TAG:
+            return chain
+        if at + RECORD_HEAD + size + RECORD_TAIL > len(data):
+            raise PdwError("pdw-truncated", at)
+        chain.append((tag, at, size))
+        at += RECORD_HEAD + size + RECORD_TAIL
 
 
 def records(data: bytes) -> list[Record]:
@@ -89,23 +111,14 @@ def records(data: bytes) -> list[Record]:
     if len(data) < FIRST_RECORD:
         raise PdwError("pdw-truncated", len(data))
     found: list[Record] = []
-    at = FIRST_RECORD
-    while True:
-        if at + RECORD_HEAD > len(data):
-            raise PdwError("pdw-truncated", at)
-        tag, size = struct.unpack_from("<HH", data, at)
-        if tag == END_TAG:
-            return found
+    for tag, at, size in _chain(data):
         end = at + RECORD_HEAD + size
-        if end + RECORD_TAIL > len(data):
-            raise PdwError("pdw-truncated", at)
         payload = data[at + RECORD_HEAD:end]
-        if tag in SUMMED_TAGS:
-            stored = struct.unpack_from("<H", data, end)[0]
-            if stored != checksum(tag, payload):
-                raise PdwError("pdw-checksum", at)
+        if tag in SUMMED_TAGS and struct.unpack_from("<H", data, end)[0] != checksum(tag,
+                                                                                   payload):
+            raise PdwError("pdw-checksum", at)
         found.append(Record(tag, at, payload))
-        at = end + RECORD_TAIL
+    return found
 
 
 def mask_key(masked: list[Record]) -> bytes:
