@@ -12,11 +12,22 @@ from dataclasses import dataclass
 
 from ladderworks.core.dialects.fatek.pdw_records import PdwError
 
-# A basic instruction: the top 4 bits the operation, the low 12 the bit device
-BASIC: dict[int, tuple[str, bool]] = {
-    0x4: ("ORG", False), 0x5: ("ORG", True), 0x6: ("LD", False), 0x7: ("LD", True),
-    0x8: ("AND", False), 0x9: ("AND", True), 0xA: ("OR", False), 0xB: ("OR", True),
-    0xC: ("OUT", False), 0xD: ("OUT", True),  # 0xD (OUT NOT) inferred
+
+@dataclass(frozen=True, slots=True)
+class Basic:
+    """A basic instruction (the top 4 bits of its word; the low 12 its bit device)."""
+
+    name: str
+    negated: bool = False
+    coil: bool = False  # OUT: a coil, no edge, no drawn line
+    tr: bool = False  # LD and OUT take a TR point (LD TR n, OUT TR n); LD also an FO
+
+
+BASIC: dict[int, Basic] = {
+    0x4: Basic("ORG"), 0x5: Basic("ORG", True), 0x6: Basic("LD", tr=True),
+    0x7: Basic("LD", True, tr=True), 0x8: Basic("AND"), 0x9: Basic("AND", True),
+    0xA: Basic("OR"), 0xB: Basic("OR", True), 0xC: Basic("OUT", coil=True, tr=True),
+    0xD: Basic("OUT", True, coil=True),  # 0xD (OUT NOT) inferred
 }
 EDGE = 0xE000  # before a contact: TU; before its NOT form: TD
 # Bit devices by 12-bit address: (first address, last address, device letters, first number)
@@ -147,22 +158,23 @@ class Decoder:
 
     def basic(self, word: int, edge: str, start: int) -> str:
         """A contact or coil: `ORG NOT X0`, `AND TU M310`, `OUT TR 0`, `AND SHORT`, `FO 1`."""
-        name, negated = BASIC[word >> 12]
+        basic = BASIC[word >> 12]
+        name, negated = basic.name, basic.negated
         address = word & 0xFFF
-        if address in LINE_BITS and name != "OUT" and not edge:
+        if address in LINE_BITS and not basic.coil and not edge:
             return f"{name} {'OPEN' if negated else 'SHORT'}"
-        if address in FO_BITS and name == "LD" and not negated and not edge:
+        if address in FO_BITS and basic.tr and not basic.coil and not negated and not edge:
             return f"FO {address - FO_BITS[0]}"
         device = bit_device(address)
         if device is None:
             raise PdwError("pdw-operand", self.where(start), word=f"{word:04X}")
         letters, number = device
         if letters == "TR":
-            if name not in ("LD", "OUT") or negated or edge:
+            if not basic.tr or negated or edge:
                 raise PdwError("pdw-code", self.where(start), word=f"{word:04X}")
             return f"{name} TR {number}"
         if edge:
-            if name == "OUT":
+            if basic.coil:
                 raise PdwError("pdw-code", self.where(start), word=f"{word:04X}")
             return f"{name} {'TD' if negated else 'TU'} {letters}{number}"
         return f"{name}{' NOT' if negated else ''} {letters}{number}"
