@@ -138,3 +138,11 @@ def test_the_listing_is_what_the_reader_reads_back() -> None:
     text = read_pdw(data).text
     assert text.endswith("00001M SET( ) S3\r\n")
     assert struct.unpack_from("<H", data, 0x100)[0] == 0x1006
+
+
+def test_a_program_whose_code_repeats_more_than_the_erased_blocks_still_unmasks() -> None:
+    words = [0x4000, 0xC100] * 6592  # 20 identical code blocks, 11 erased ones
+    result = read_pdw(build(words))
+    assert result.error is None
+    assert len(result.units[0][1]) == len(words)
+    assert result.lines[-1] == f"{len(words) - 1:05d}M OUT Y0"

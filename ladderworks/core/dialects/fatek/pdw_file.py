@@ -9,11 +9,16 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ladderworks.core.dialects.fatek.pdw_code import Decoder, Step
-from ladderworks.core.dialects.fatek.pdw_records import MAGIC, PdwError, PdwProject, read_project
+from ladderworks.core.dialects.fatek.pdw_records import (
+    MAGIC,
+    MARK,
+    MARK_AT,
+    PdwError,
+    PdwProject,
+    read_project,
+)
 
 CODE_START = 0x200  # the program's first word in the image
-MARK_AT = 0x1FC  # 55 AA (then 00 FF) before the code
-MARK = b"\x55\xaa"
 COUNT_AT = 0x106  # the code's length in words (16-bit little-endian)
 CHECKSUM_AT = 0xCA  # the code's 16-bit little-endian words summed, minus one
 TIMER_COUNTS_AT = 0x1DA  # how many 0.01 s timers, then 0.1 s timers (the rest 1 s)

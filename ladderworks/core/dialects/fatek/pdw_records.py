@@ -20,6 +20,9 @@ MASKED_TAGS = (0x182A, 0x182B)  # the program image and the PLC's comment memory
 SUMMED_TAGS = (PROJECT_TAG, UNIT_TAG, COMMENT_TAG)  # records whose checksum is known
 KEY_PERIOD = 1280  # the mask repeats every 1280 bytes from each masked record's first byte
 ERASED = 0xFF  # erased program memory
+MAX_KEYS = 8  # the repeated blocks tried as the mask
+MARK_AT = 0x1FC  # the program image's 55 AA (then 00 FF) before the code
+MARK = b"\x55\xaa"
 COMMENT_ENCODING = "cp1250"  # WinProladder writes comments in the Windows code page (cp1250 here)
 RECORD_HEAD = 4  # tag and length, 16-bit little-endian each; the checksum follows the payload
 RECORD_TAIL = 2
@@ -121,18 +124,30 @@ def records(data: bytes) -> list[Record]:
     return found
 
 
-def mask_key(masked: list[Record]) -> bytes:
-    """The mask: the most frequent 1280-byte block of the masked records (erased memory, 0xFF
-    under the mask) XOR 0xFF. PdwError when no block repeats (nothing erased to learn it from)."""
+def mask_keys(masked: list[Record]) -> list[bytes]:
+    """The masks the masked records may have, likeliest first: each 1280-byte block found more
+    than once (erased memory, 0xFF under the mask) XOR 0xFF, the most frequent first. PdwError
+    when no block repeats (nothing erased to learn the mask from)."""
     blocks: Counter[bytes] = Counter()
     for record in masked:
         payload = record.payload
         for start in range(0, len(payload) - KEY_PERIOD + 1, KEY_PERIOD):
             blocks[payload[start:start + KEY_PERIOD]] += 1
-    if not blocks or blocks.most_common(1)[0][1] < 2:
+    keys = [bytes(byte ^ ERASED for byte in block)
+            for block, count in blocks.most_common() if count > 1]
+    if not keys:
         raise PdwError("pdw-key", masked[0].offset if masked else FIRST_RECORD)
-    block = blocks.most_common(1)[0][0]
-    return bytes(byte ^ ERASED for byte in block)
+    return keys
+
+
+def _unmasked_image(program: Record, keys: list[bytes]) -> bytes:
+    """The program image under the first mask that shows its `55 AA` mark (else the likeliest's:
+    the caller reports the missing mark)."""
+    for key in keys[:MAX_KEYS]:
+        image = unmask(program.payload, key)
+        if image[MARK_AT:MARK_AT + len(MARK)] == MARK:
+            return image
+    return unmask(program.payload, keys[0])
 
 
 def unmask(payload: bytes, key: bytes) -> bytes:
@@ -188,9 +203,9 @@ def read_project(data: bytes) -> PdwProject:
     if not programs:
         raise PdwError("pdw-no-program", len(data))
     program = programs[0]
-    key = mask_key([record for record in found if record.tag in MASKED_TAGS])
+    keys = mask_keys([record for record in found if record.tag in MASKED_TAGS])
     project = PdwProject(model=_text(data[MODEL_AT:MODEL_AT + 16]), name="",
-                         image=unmask(program.payload, key),
+                         image=_unmasked_image(program, keys),
                          image_offset=program.payload_offset)
     for record in found:
         if record.tag == PROJECT_TAG and len(record.payload) >= 8:
