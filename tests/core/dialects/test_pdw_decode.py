@@ -90,6 +90,9 @@ def test_a_timer_prints_its_base_from_the_projects_allocation() -> None:
     ([0x4000, 0xF496, 0x0A01], 2, "pdw-operand"),  # an odd word operand
     ([0x4000, 0xF496, 0x4A00], 2, "pdw-operand"),  # past R4167
     ([0x4000, 0xFC82], 2, "pdw-cut"),  # the code ends inside SET
+    ([0x4000, 0xFC7F], 1, "pdw-code"),  # a comparison form never seen (not ANDF's bits)
+    ([0x4000, 0xF47F, 0x0027], 1, "pdw-code"),  # a comparison past FUN 175
+    ([0x4000, 0xF47F, 0x0021], 3, "pdw-cut"),  # ANDF without its operands
 ])
 def test_what_is_not_decoded_stops_the_listing_there(words: list[int], index: int,
                                                      code: str) -> None:

@@ -205,8 +205,10 @@ class Decoder:
     def compare(self, word: int, start: int) -> tuple[str, list[tuple[str, str]]]:
         """`ANDF 171_.>` with its Sa and Sb lines."""
         kind = COMPARE_OPS.get(word & ~(CONST_FLAGS[0] | CONST_FLAGS[1]))
+        if kind is None:
+            raise PdwError("pdw-code", self.where(start), word=f"{word:04X}")
         index = self.take() - COMPARE_INDEX
-        if kind is None or not 0 <= index < len(COMPARE_NAMES):
+        if not 0 <= index < len(COMPARE_NAMES):
             raise PdwError("pdw-code", self.where(start), word=f"{word:04X}")
         kinds = [CONST if word & flag else WORD for flag in CONST_FLAGS]
         values = [self.operand(k, start) for k in kinds]
