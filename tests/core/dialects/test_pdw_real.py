@@ -1,11 +1,13 @@
 """The real WinProladder project (../shared/real-programs/fatek/VERTINO_SKO-Program.pdw) read,
 checked against facts taken by hand from its PDF printout (VERTINO_SKO-Program.pdf: the ladder
-pages' network numbers and first steps, the mnemonic pages, the cross reference) and against
-the same machine's comment export. The whole mnemonic was compared line by line with the PDF's
-text (pdftotext -layout, spaces ignored): equal, 157 steps, 176 lines (docs/dialects.md)."""
+pages' network numbers and first steps, chosen networks of the mnemonic pages, the whole cross
+reference by step: every device of every step) and against the same machine's comment export.
+The whole mnemonic was compared line by line with the PDF's text (pdftotext -layout, spaces
+ignored): equal, 157 steps, 176 lines (docs/dialects.md)."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -35,6 +37,38 @@ NETWORKS = {
          "00126M LD TR 0", "00127M RST( ) S11"],
     32: ["00156M ORG OPEN"],
 }
+
+
+# The printout's cross reference by step ("Contact[No]"): each device's steps by use — a
+# contact (NO, NC, TU, TD), a coil, or a function's parameter (SET/RST, FUN operands, a timer's
+# preset) — and "Function[No]": each box's steps. Every device the program names is here.
+NO, NC, TU, TD, COIL, PARAM = "-||-", "-|/|-", "-|U|-", "-|D|-", "--()", "F_Pa"
+CROSS_REFERENCE: dict[str, dict[str, list[int]]] = {
+    "X0": {NO: [12, 25, 35, 38, 57], NC: [0, 17, 29, 85, 137]}, "X1": {TD: [115]},
+    "X3": {NO: [50, 53]}, "Y1": {COIL: [112]}, "Y4": {COIL: [48]},
+    "T10": {NO: [132], PARAM: [73]}, "T30": {NO: [54]},
+    "S1": {NO: [56], PARAM: [4, 28, 32]}, "S2": {NO: [30, 37, 60], NC: [26], PARAM: [5, 15, 20]},
+    "S3": {NO: [2, 18, 31, 33, 84, 138], NC: [13, 27], PARAM: [1, 36, 82, 100, 154]},
+    "S10": {NO: [83], NC: [61], PARAM: [6, 21, 59, 69, 101, 106]},
+    "S11": {NO: [107, 113, 118, 120], NC: [62], TU: [67], PARAM: [7, 22, 66, 105, 127]},
+    "S12": {NO: [108, 128, 131], NC: [63], PARAM: [8, 23, 70, 125, 135]},
+    "S13": {NO: [136], NC: [64], PARAM: [9, 24, 71, 134, 152]},
+    "M300": {TU: [11]}, "M301": {NO: [16]}, "M302": {NO: [34]}, "M305": {TU: [75]},
+    "M310": {TU: [58]}, "M400": {NO: [40, 43, 49, 52, 129], COIL: [39]},
+    "M401": {NO: [109], COIL: [42]}, "M403": {NC: [41, 45], COIL: [55]},
+    "M410": {NO: [111, 114], COIL: [110]}, "M420": {NO: [116]}, "M421": {NO: [47]},
+    "M431": {NC: [76], COIL: [144]}, "M432": {TU: [149], COIL: [148]},
+    "M433": {NO: [153], COIL: [146]}, "M460": {NC: [77], COIL: [91]},
+    "M461": {NO: [102], TU: [96], COIL: [95]}, "M462": {NO: [98], COIL: [93]},
+    "M468": {NO: [81], COIL: [80]}, "M470": {NO: [14, 65], PARAM: [104]}, "M1924": {NO: [74]},
+    "C0": {PARAM: [10, 72, 117, 119, 122]}, "R6": {PARAM: [121, 122]}, "R7": {PARAM: [130]},
+    "R8": {PARAM: [51]}, "R100": {PARAM: [119]}, "R1200": {PARAM: [78]},
+    "R1300": {PARAM: [89]}, "R1400": {PARAM: [142]}, "R1500": {PARAM: [89]},
+    "R1501": {PARAM: [97]}, "R1510": {PARAM: [142]}, "R1511": {PARAM: [151]},
+}
+FUNCTIONS = {"T10": [130], "T30": [51], "08_.MOV": [97, 119, 151], "15_.(+1)": [117],
+             "140.HSPSO": [89, 142], "141.MPARA": [78], "171_.>": [121], "174_.>=": [122]}
+_DEVICE = re.compile(r"^[XYMSTCRD]\d+$")
 
 
 def project() -> Path:
@@ -94,3 +128,41 @@ def test_the_project_opens_as_a_fatek_program_with_its_symbols() -> None:
     assert program.symbols is not None
     entry = program.symbols.lookup(bit_address(Device("X", 0)))
     assert entry is not None and entry.symbol == "SAFETY_STATUS"
+
+
+def _uses(listing: list[list[str]]) -> tuple[dict[str, dict[str, list[int]]],
+                                             dict[str, list[int]]]:
+    """The decoded listing's cross reference, as the printout's is made (see CROSS_REFERENCE)."""
+    uses: dict[str, dict[str, list[int]]] = {}
+    boxes: dict[str, list[int]] = {}
+    step = 0
+
+    def use(device: str, kind: str) -> None:
+        if _DEVICE.match(device):
+            uses.setdefault(device, {}).setdefault(kind, []).append(step)
+
+    for line in (line for net in listing for line in net):
+        words = line.split()
+        if words[0][:1].isdigit():
+            step, name, rest = int(words[0][:5]), words[1], words[2:]
+            if name in ("ORG", "LD", "AND", "OR"):
+                kind = {"NOT": NC, "TU": TU, "TD": TD}.get(rest[0], NO)
+                use(rest[-1], kind)
+            elif name == "OUT":
+                use(rest[-1], COIL)
+            elif name in ("SET(", "RST("):
+                use(rest[-1], PARAM)
+            elif name in ("FUN", "ANDF"):
+                boxes.setdefault("".join(rest), []).append(step)  # `08_.MOV`, `171_.>`
+            elif _DEVICE.match(name):  # a timer line: `T30 .01 R8`
+                boxes.setdefault(name, []).append(step)
+                use(rest[-1], PARAM)
+        else:  # an operand line of the box at `step`
+            use(words[-1], PARAM)
+    return uses, boxes
+
+
+def test_every_device_is_used_where_the_printouts_cross_reference_says(listing) -> None:
+    uses, boxes = _uses(listing)
+    assert uses == CROSS_REFERENCE
+    assert boxes == FUNCTIONS
