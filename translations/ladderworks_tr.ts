@@ -952,331 +952,386 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
+        <translation>WinProladder projesi değil: &apos;Fatek WinProladder, File Format 1&apos; başlığı yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
+        <translation>.pdw dosyası eksik: {offset}. bayttaki kaydı dosyanın sonunu aşıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
+        <translation>.pdw dosyası bozuk: {offset}. bayttaki kaydın sağlama toplamı tutmuyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
+        <translation>.pdw dosyası bozuk: {offset}. bayttaki kayıt hatalı biçimde</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <source>the .pdw file holds no program (checked up to byte {offset})</source>
+        <translation>.pdw dosyasında program yok ({offset}. bayta kadar bakıldı)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
+        <translation>{offset}. bayttaki programın maskesi kaldırılamıyor: maskenin çıkarılabileceği silinmiş bir bellek bloğu yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
+        <translation>.pdw dosyası bozuk: program görüntüsü {offset}. baytta hatalı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
+        <translation>.pdw dosyası bozuk: programın kodu sağlama toplamıyla uyuşmuyor ({offset}. bayt)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
+        <translation>{offset}. bayttaki {word} komut kodunu LadderWorks henüz çözemiyor: program o noktaya kadar okundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
+        <translation>{offset}. bayttaki {word} operand kodu LadderWorks&apos;ün henüz çözebildiği bir cihaz değil: program o noktaya kadar okundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <source>the program ends inside an instruction at byte {offset}</source>
+        <translation>program {offset}. baytta bir komutun ortasında bitiyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; bir aygıt değil ({letters} harflerinden biri ve bir numara kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} sekizli (oktal) numaralanır (0 ile 7 arası rakamlar)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; aralık dışında ({first} ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; bir bit aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; bir kelime (word) aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; bu tabloda listelenmez ({letters} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: bir aygıt ya da en çok {most} aygıtlık bir İLK-SON aralığı verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>WPLSoft .dvp projesi değil: 57 01 01 00 baytlarıyla başlamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>.dvp dosyası {offset}. baytta kesilmiş: WPLSoft&apos;un en sona yazdığı &lt;PrjectEnd&gt; satırıyla bitmiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>bayt {offset}: .dvp biçim sürümü {version} LadderWorks&apos;ün okuduğu sürümlerden değil (214, 215 ve 216 okunur)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>bayt {offset}: bu .dvp projesinin program belleği WPLSoft&apos;un koyduğu yerde değil: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>bayt {offset} (adım {step}): {word} komut kodu LadderWorks tarafından bilinmiyor: operandlarıyla ?{word} olarak korundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>bayt {offset} (adım {step}): {word} sözcüğü LadderWorks&apos;ün bildiği bir cihazı göstermiyor: dosya bozuk ya da henüz çözülmemiş bir cihaz kullanıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğü ne cihaz ne sabit: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} sonrasındaki operand sözcükleri komuta uymuyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğünden önce komut yok: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>bayt {offset}: program END ile bitmiyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): END sonrasında komutlar var: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>bayt {offset}: .dvp projesinin bir metin bölümü bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>bayt {offset}: bir cihaz açıklama satırı CİHAZ$&amp;metin biçiminde değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>projede program yok: derlenmiş komut listesi yok ve ladder çizimi boş</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>proje derlenmeden kaydedilmiş: programı ladder çiziminden okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>proje derlenmiş bir komut listesi içermiyor ve ladder çiziminde LadderWorks&apos;ün henüz okumadığı bir hücre var (bayt {offset}: bir kol, bir kenar kontağı ...): WPLSoft&apos;ta derleyip yeniden kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks .dvp projesi yazmaz (biçim yalnızca kısmen biliniyor): programı bunun yerine Delta komut listesi (.il) olarak kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="356"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="357"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="359"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="361"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="341"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="376"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="351"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="353"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="354"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="385"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="356"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="389"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="396"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="369"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="400"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="371"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="381"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="412"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="413"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1992,150 +2047,162 @@
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="456"/>
         <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="111"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="112"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="123"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="152"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="170"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="152"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="170"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="458"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="153"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="171"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="472"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="157"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="158"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="157"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="158"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="212"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
-        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projeleri (*.dvp *.DVP);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Tüm dosyalar (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="293"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="343"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="294"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="302"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="352"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="402"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="294"/>
+        <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
+        <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="416"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
-        <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
-        <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
+        <location filename="../ladderworks/gui/file_actions.py" line="363"/>
+        <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
+        <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="457"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="474"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="488"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="322"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="327"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="213"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
+        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projeleri (*.dvp *.DVP);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projeleri (*.pdw *.PDW);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="362"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="367"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="359"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
+        <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
+        <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="367"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="381"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="382"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="385"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="402"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="406"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="416"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="386"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="400"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="410"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
