@@ -31,6 +31,7 @@ from ladderworks.gui.dock_tabs import WholeDockTitles
 from ladderworks.gui.docks import cross_reference
 from ladderworks.gui.docks.plc_docks import build_plc_docks
 from ladderworks.gui.document import bad_bytes_shown
+from ladderworks.gui.forces_on_load import forces_on_load
 from ladderworks.gui.editor.interactions import BY_TOOL
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.editor.name_menu import NameDisplayMenu
@@ -75,6 +76,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.failed_path: Path | None = None  # a file that did not parse: never overwritten
         self.last_warning = ""
         self.program_info = Program()  # the program as opened: title, sections, symbols
+        self.program_serial = 0  # counts the programs shown (an untitled one's identity)
         self.setWindowIcon(icon("ladderworks"))
 
         self.model = LadderModel(self)  # the networks, the undo stack, ladder or text
@@ -284,6 +286,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
     def program_shown(self, program: Program) -> None:
         """A program is now shown: its symbols and messages go to the docks."""
         self.program_info = program
+        self.program_serial += 1  # an untitled drawing is another program than the last
         # the cell under the cursor of the program now shown, not the last one's
         shown = self.editor.networks and not self.model.showing_text
         self.cell_label.setText(self.editor.describe_cell(*self.editor.cursor_cell) if shown
@@ -420,7 +423,12 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         if running and questions.reload_running(self) != "reload":
             return translate("MainWindow", "Compile finished: {0} bytes (not loaded: the PLC "
                              "runs the previous program)").format(len(binary))
-        problems = session.load(binary, program)
+        origin = (program.dialect, str(self.path) if self.path else f"untitled {self.program_serial}")
+        forces = forces_on_load(self, session, origin)
+        if forces is None:
+            return translate("MainWindow", "Compile finished: {0} bytes (not loaded: the PLC "
+                             "keeps the program it has)").format(len(binary))
+        problems = session.load(binary, program, origin=origin, keep_forces=forces == "keep")
         if problems:
             self.errors.set_diagnostics(problems)
             self.errors.show()

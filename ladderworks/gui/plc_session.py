@@ -65,16 +65,24 @@ class PlcSession(QObject):
         self._timer.setInterval(publish_ms)
         self._timer.timeout.connect(self.publish)
         self.symbols: SymbolTable | None = None
+        # (dialect, file) of the program loaded: a load from elsewhere asks about the forces
+        self.loaded_origin: tuple[str, str] | None = None
 
     # -- the program ---------------------------------------------------------------------
 
-    def load(self, binary: bytes, program: Program | None = None) -> list[Diagnostic]:
+    def load(self, binary: bytes, program: Program | None = None, *,
+             origin: tuple[str, str] | None = None, keep_forces: bool = True
+             ) -> list[Diagnostic]:
         """Load a compiled binary (the PLC stops first); the diagnostics if it is refused.
-        `program` is the source it was compiled from (views use its comments), if known."""
+        `program` is the source it was compiled from (views use its comments), if known;
+        `origin` its (dialect, file); `keep_forces` False releases the old program's forces."""
         was_running = self.run.running
         problems = self.run.load(binary, program)
         if problems:
             return problems
+        self.loaded_origin = origin
+        if not keep_forces:
+            self.run.release_all()
         if was_running:
             self._stopped()
         assert self.run.binary is not None

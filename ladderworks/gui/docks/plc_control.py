@@ -27,6 +27,7 @@ from ladderworks.gui import file_dialogs
 from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
+from ladderworks.gui.forces_on_load import forces_on_load
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
 from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.locale_numbers import decimal
@@ -312,8 +313,15 @@ class PlcControlDock(Retranslating, QDockWidget):
         self._timer.stop()
         self.editor.set_converted(self.editor.blockCount())
         assert self.result is not None and self.result.binary is not None
-        problems = self.session.load(self.result.binary, self._program)
-        if problems:
+        assert self._program is not None
+        origin = (self._program.dialect, str(self.path) if self.path else "control screen")
+        forces = forces_on_load(self, self.session, origin)
+        problems = [] if forces is None else self.session.load(
+            self.result.binary, self._program, origin=origin, keep_forces=forces == "keep")
+        if forces is None:
+            self.message.setText(translate("PlcControl", "Not loaded: the PLC keeps the "
+                                           "program it has"))
+        elif problems:
             self.message.setText(diagnostic_text(problems[0]))
         else:
             self.loaded_name = self.path.name if self.path else translate(
