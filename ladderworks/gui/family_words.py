@@ -11,9 +11,9 @@ translate = QCoreApplication.translate
 
 # (cross reference field, time chart field) examples of each family: "" is the PMC's
 _EXAMPLES = {
-    "": ("X21.7, R100, ESKIP", "R1.4 R1.7 D10:2"),
-    "delta": ("X0, M100, T0, D10", "X0 Y0 T0 D10"),
-    "fatek": ("X0, M100, T0, R10", "X0 Y0 T0 R10"),
+    "": ("X21.7, R100, ESKIP", "R1.4 R1.7 D10:2", "R200"),
+    "delta": ("X0, M100, T0, D10", "X0 Y0 T0 D10", "M200"),
+    "fatek": ("X0, M100, T0, R10", "X0 Y0 T0 R10", "M200"),
 }
 
 
@@ -25,6 +25,11 @@ def _family(dialect: str | None) -> str:
 def xref_example(dialect: str | None) -> str:
     """The cross reference field's placeholder: `e.g. X0, M100, T0, D10` for Delta."""
     return translate("FamilyWords", "e.g. {0}").format(_EXAMPLES[_family(dialect)][0])
+
+
+def replace_example(dialect: str | None) -> str:
+    """Find and replace's `Replace with` placeholder example: `e.g. R200`."""
+    return translate("FamilyWords", "e.g. {0}").format(_EXAMPLES[_family(dialect)][2])
 
 
 def chart_example(dialect: str | None) -> str:

@@ -31,7 +31,6 @@ from ladderworks.gui.dock_tabs import WholeDockTitles
 from ladderworks.gui.docks import cross_reference
 from ladderworks.gui.docks.plc_docks import build_plc_docks
 from ladderworks.gui.document import bad_bytes_shown
-from ladderworks.gui.forces_on_load import forces_on_load
 from ladderworks.gui.editor.interactions import BY_TOOL
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.editor.name_menu import NameDisplayMenu
@@ -41,6 +40,7 @@ from ladderworks.gui.elided_label import ElidedLabel
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
 from ladderworks.gui.find_replace import FindReplaceDialog
+from ladderworks.gui.forces_on_load import forces_on_load
 from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.locale_numbers import percent
 from ladderworks.gui.palette import ToolPalette
@@ -293,6 +293,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
                                 else "")
         self.signals_dock.set_symbols(program.symbols)
         self.plc_docks.session.set_symbols(program.symbols)
+        self.plc_docks.session.set_console_dialect(program.dialect)  # the docks' examples
         self.plc_docks.ascii_output.use_program(self.path)  # a Fatek program's ASCII files
         self.program_opened.emit(program)
 
@@ -423,7 +424,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         if running and questions.reload_running(self) != "reload":
             return translate("MainWindow", "Compile finished: {0} bytes (not loaded: the PLC "
                              "runs the previous program)").format(len(binary))
-        origin = (program.dialect, str(self.path) if self.path else f"untitled {self.program_serial}")
+        name = str(self.path) if self.path else f"untitled {self.program_serial}"
+        origin = (program.dialect, name)
         forces = forces_on_load(self, session, origin)
         if forces is None:
             return translate("MainWindow", "Compile finished: {0} bytes (not loaded: the PLC "

@@ -54,6 +54,7 @@ class PlcSession(QObject):
     alarms_changed = Signal(list)
     parameters_changed = Signal(object)  # the PmcParameters now
     symbols_changed = Signal(object)  # the open program's SymbolTable, or None
+    family_changed = Signal(str)  # the dialect whose words the docks show (`family`)
 
     def __init__(self, parent: QObject | None = None, *, realtime: bool = True,
                  period_ms: int = DEFAULT_PERIOD_MS, publish_ms: int = PUBLISH_MS,
@@ -67,6 +68,7 @@ class PlcSession(QObject):
         self.symbols: SymbolTable | None = None
         # (dialect, file) of the program loaded: a load from elsewhere asks about the forces
         self.loaded_origin: tuple[str, str] | None = None
+        self.console_dialect = "seed"  # the dialect of the program the console shows
 
     # -- the program ---------------------------------------------------------------------
 
@@ -88,9 +90,21 @@ class PlcSession(QObject):
         assert self.run.binary is not None
         self.run.prepare()  # the scan process builds it while the user looks (START waits less)
         self.program_loaded.emit(self.run.binary)
+        self.family_changed.emit(self.family)
         self.forces_changed.emit(self.run.forces())
         self.publish()
         return []
+
+    @property
+    def family(self) -> str:
+        """The dialect whose devices the docks' examples and texts name: the PLC's program's
+        once one is loaded, else the one the console shows."""
+        return self.run.program_dialect if self.run.binary is not None else self.console_dialect
+
+    def set_console_dialect(self, dialect: str) -> None:
+        """The console shows a program of `dialect` (File › Open, New)."""
+        self.console_dialect = dialect
+        self.family_changed.emit(self.family)
 
     def load_program(self, program: Program) -> CompileResult:
         """Compile a program and load it when it compiles (with this adapter's signals)."""

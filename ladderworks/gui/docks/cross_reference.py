@@ -38,9 +38,9 @@ from ladderworks.core.symbols import SymbolTable, resolve
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
 from ladderworks.gui.console_menus import ConsoleMenus
 from ladderworks.gui.diagnostic_texts import diagnostic_text
-from ladderworks.gui.family_words import xref_example
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.family_words import xref_example
 from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.symbol_text import name_and_text

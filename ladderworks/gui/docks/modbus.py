@@ -35,6 +35,7 @@ from ladderworks.core.modbus.server import (
     parse_endpoint,
 )
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.family_words import family_title
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.retranslate import Retranslating
 
@@ -107,6 +108,7 @@ class ModbusDock(Retranslating, QDockWidget):
         self._timer.timeout.connect(self.show_figures)
         self.written.connect(self._publish_if_idle)
         session.program_loaded.connect(self._program_loaded)
+        session.family_changed.connect(lambda _family: self.retranslate())
         self.retranslate()
 
     @property
@@ -119,7 +121,8 @@ class ModbusDock(Retranslating, QDockWidget):
         self.setWindowTitle(translate("ModbusDock", "Modbus server"))
         self.address_label.setText(translate("ModbusDock", "&Address (host:port):"))
         self.map_label.setText(translate("ModbusDock", "&Map file (CSV):"))
-        self.map_file.setPlaceholderText(translate("ModbusDock", "the dialect's own map"))
+        self.map_file.setPlaceholderText(translate("ModbusDock", "the {0} map").format(
+            family_title(self.session.family)))
         self.map_choose.setText(translate("ModbusDock", "Choose…"))
         self.map_default.setText(translate("ModbusDock", "Dialect's map"))
         self.map_default.setToolTip(translate("ModbusDock", "Serve the program's dialect's"
@@ -197,8 +200,9 @@ class ModbusDock(Retranslating, QDockWidget):
         path = self.served_file if self.running else self.map_file.text().strip()
         if path:
             return translate("ModbusDock", "the file {0}").format(path)
-        return translate("ModbusDock", "the {0} dialect's own map").format(
-            program_dialect(self.session.run))
+        return translate("ModbusDock", "the {0} map").format(family_title(
+            program_dialect(self.session.run) if self.session.run.binary is not None
+            else self.session.family))
 
     def stop_server(self) -> None:
         """Close the clients' connections and stop listening."""

@@ -27,8 +27,8 @@ from ladderworks.gui import file_dialogs
 from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
-from ladderworks.gui.forces_on_load import forces_on_load
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
+from ladderworks.gui.forces_on_load import forces_on_load
 from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.locale_numbers import decimal
 from ladderworks.gui.os_errors import os_error_text
