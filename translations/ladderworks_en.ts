@@ -3103,7 +3103,7 @@
         <translation>{0}-bit up</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="216"/>
         <source>{0} on: {1} ms a count</source>
         <translation>{0} on: {1} ms a count</translation>
     </message>
@@ -3129,10 +3129,30 @@
         <translation>Address (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="63"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="41"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="282"/>
         <source>INSERT</source>
         <translation>INSERT</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="130"/>
+        <source>&amp;Add:</source>
+        <translation>&amp;Add:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="131"/>
+        <source>devices, e.g. D500, T5, D0-D9</source>
+        <translation>devices, e.g. D500, T5, D0-D9</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="132"/>
+        <source>Add</source>
+        <translation>Add</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="133"/>
+        <source>Any timer, counter or register of the PLC, used by the program or not; a value is typed in its cell as 100, K100 or H64</source>
+        <translation>Any timer, counter or register of the PLC, used by the program or not; a value is typed in its cell as 100, K100 or H64</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="179"/>
@@ -3140,62 +3160,67 @@
         <translation>TMRB: the preset is fixed in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="316"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="257"/>
+        <source>&apos;{0}&apos; is not a device of these tables (use {1}); watch a bit in the bit display</source>
+        <translation>&apos;{0}&apos; is not a device of these tables (use {1}); watch a bit in the bit display</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="285"/>
         <source>DELETE</source>
         <translation>DELETE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
         <source>PLC tables</source>
         <translation>PLC tables</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="323"/>
         <source>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</source>
         <translation>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="330"/>
         <source>Timers (TMR)</source>
         <translation>Timers (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="331"/>
         <source>Counters (CTR)</source>
         <translation>Counters (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
         <source>Data table (D)</source>
         <translation>Data table (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="333"/>
         <source>Keep relays (K)</source>
         <translation>Keep relays (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="334"/>
         <source>Timers (T)</source>
         <translation>Timers (T)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="366"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="335"/>
         <source>Counters (C)</source>
         <translation>Counters (C)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="367"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="336"/>
         <source>Registers ({0})</source>
         <translation>Registers ({0})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="377"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="347"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="350"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</translation>
     </message>

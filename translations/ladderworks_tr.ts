@@ -3103,7 +3103,7 @@
         <translation>{0} bit yukarı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="216"/>
         <source>{0} on: {1} ms a count</source>
         <translation>{0} açıkken: sayım başına {1} ms</translation>
     </message>
@@ -3129,10 +3129,30 @@
         <translation>Adres (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="63"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="41"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="282"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="130"/>
+        <source>&amp;Add:</source>
+        <translation>&amp;Ekle:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="131"/>
+        <source>devices, e.g. D500, T5, D0-D9</source>
+        <translation>aygıtlar, örn. D500, T5, D0-D9</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="132"/>
+        <source>Add</source>
+        <translation>Ekle</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="133"/>
+        <source>Any timer, counter or register of the PLC, used by the program or not; a value is typed in its cell as 100, K100 or H64</source>
+        <translation>PLC&apos;nin herhangi bir zamanlayıcısı, sayıcısı veya yazmacı, programda kullanılsın ya da kullanılmasın; değer hücresine 100, K100 veya H64 olarak yazılır</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="179"/>
@@ -3140,62 +3160,67 @@
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="316"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="257"/>
+        <source>&apos;{0}&apos; is not a device of these tables (use {1}); watch a bit in the bit display</source>
+        <translation>&apos;{0}&apos; bu tabloların bir aygıtı değil ({1} kullanın); bir biti bit gösteriminde izleyin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="285"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="323"/>
         <source>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</source>
         <translation>{0} programının PMC parametre tabloları yoktur: zamanlayıcı ve sayıcı ayar değerleri komutlarında yazılıdır. T, C ve D aygıtlarını bit gösteriminde ve zaman kartında izleyin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="330"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="331"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="333"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="334"/>
         <source>Timers (T)</source>
         <translation>Zamanlayıcı (T)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="366"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="335"/>
         <source>Counters (C)</source>
         <translation>Sayıcı (C)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="367"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="336"/>
         <source>Registers ({0})</source>
         <translation>Register ({0})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="377"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="347"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="350"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
