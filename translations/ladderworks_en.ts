@@ -1388,12 +1388,22 @@
 <context>
     <name>FitWidth</name>
     <message>
-        <location filename="../ladderworks/gui/editor/zoom.py" line="60"/>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="74"/>
+        <source>Fit width: the ladder is too narrow ({0} px) for its networks even at {1} %: close or narrow a dock, or widen the window</source>
+        <translation>Fit width: the ladder is too narrow ({0} px) for its networks even at {1} %: close or narrow a dock, or widen the window</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="78"/>
+        <source>Fit width: every network fits, at {0} % (small: close or narrow a dock to read it larger)</source>
+        <translation>Fit width: every network fits, at {0} % (small: close or narrow a dock to read it larger)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="81"/>
         <source>Fit width: every network fits the window&apos;s width</source>
         <translation>Fit width: every network fits the window&apos;s width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/zoom.py" line="61"/>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="82"/>
         <source>Fit width: {0} of {1} networks fit the window&apos;s width; the {2} wider ones scroll sideways</source>
         <translation>Fit width: {0} of {1} networks fit the window&apos;s width; the {2} wider ones scroll sideways</translation>
     </message>
@@ -1907,29 +1917,29 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="201"/>
+        <location filename="../ladderworks/gui/main_window.py" line="202"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="425"/>
+        <location filename="../ladderworks/gui/main_window.py" line="428"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="437"/>
+        <location filename="../ladderworks/gui/main_window.py" line="440"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="444"/>
+        <location filename="../ladderworks/gui/main_window.py" line="447"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="430"/>
-        <location filename="../ladderworks/gui/main_window.py" line="272"/>
-        <location filename="../ladderworks/gui/main_window.py" line="439"/>
+        <location filename="../ladderworks/gui/main_window.py" line="275"/>
+        <location filename="../ladderworks/gui/main_window.py" line="442"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -2068,37 +2078,37 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="398"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="411"/>
+        <location filename="../ladderworks/gui/main_window.py" line="414"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="431"/>
+        <location filename="../ladderworks/gui/main_window.py" line="434"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="481"/>
+        <location filename="../ladderworks/gui/main_window.py" line="484"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="484"/>
+        <location filename="../ladderworks/gui/main_window.py" line="487"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="516"/>
+        <location filename="../ladderworks/gui/main_window.py" line="519"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="517"/>
+        <location filename="../ladderworks/gui/main_window.py" line="520"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2116,123 +2126,123 @@
 <context>
     <name>ModbusDock</name>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
         <source>Modbus server</source>
         <translation>Modbus server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
         <source>&amp;Address (host:port):</source>
         <translation>&amp;Address (host:port):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
         <source>&amp;Map file (CSV):</source>
         <translation>&amp;Map file (CSV):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="204"/>
         <source>the {0} map</source>
         <translation>the {0} map</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
         <source>Choose…</source>
         <translation>Choose…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
         <source>Dialect&apos;s map</source>
         <translation>Dialect&apos;s map</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="129"/>
         <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
         <translation>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="131"/>
         <source>Clients connected:</source>
         <translation>Clients connected:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="132"/>
         <source>Requests a second:</source>
         <translation>Requests a second:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="148"/>
         <source>Type the address as host:port, e.g. {0}.</source>
         <translation>Type the address as host:port, e.g. {0}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="161"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
         <source>Cannot listen on {0}: {1}</source>
         <translation>Cannot listen on {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="175"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
         <source>Modbus map file</source>
         <translation>Modbus map file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="177"/>
         <source>Modbus maps (*.csv);;All files (*)</source>
         <translation>Modbus maps (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
         <source>Cannot read the map {0}: {1}</source>
         <translation>Cannot read the map {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="193"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="195"/>
         <source>The map {0} is not served:</source>
         <translation>The map {0} is not served:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="202"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="203"/>
         <source>the file {0}</source>
         <translation>the file {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
         <source>Stop server</source>
         <translation>Stop server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
         <source>Start server</source>
         <translation>Start server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
         <source>Map served:</source>
         <translation>Map served:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="232"/>
         <source>Map to serve:</source>
         <translation>Map to serve:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="236"/>
         <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
         <translation>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="240"/>
         <source>Other computers on the network can read and write this PLC.</source>
         <translation>Other computers on the network can read and write this PLC.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="245"/>
         <source>Stopped. An HMI on this computer connects to {0} once started.</source>
         <translation>Stopped. An HMI on this computer connects to {0} once started.</translation>
     </message>

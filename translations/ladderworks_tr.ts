@@ -1388,12 +1388,22 @@
 <context>
     <name>FitWidth</name>
     <message>
-        <location filename="../ladderworks/gui/editor/zoom.py" line="60"/>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="74"/>
+        <source>Fit width: the ladder is too narrow ({0} px) for its networks even at {1} %: close or narrow a dock, or widen the window</source>
+        <translation>Genişliğe sığdır: ladder alanı devreleri için %{1} ölçekte bile çok dar ({0} piksel): bir paneli kapatın ya da daraltın veya pencereyi genişletin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="78"/>
+        <source>Fit width: every network fits, at {0} % (small: close or narrow a dock to read it larger)</source>
+        <translation>Genişliğe sığdır: her devre sığıyor, %{0} ölçekte (küçük: daha büyük okumak için bir paneli kapatın ya da daraltın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="81"/>
         <source>Fit width: every network fits the window&apos;s width</source>
         <translation>Genişliğe sığdır: her devre pencerenin genişliğine sığıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/zoom.py" line="61"/>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="82"/>
         <source>Fit width: {0} of {1} networks fit the window&apos;s width; the {2} wider ones scroll sideways</source>
         <translation>Genişliğe sığdır: {1} devreden {0} tanesi pencerenin genişliğine sığıyor; daha geniş {2} devre yana kaydırılır</translation>
     </message>
@@ -1907,29 +1917,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="201"/>
+        <location filename="../ladderworks/gui/main_window.py" line="202"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="425"/>
+        <location filename="../ladderworks/gui/main_window.py" line="428"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="437"/>
+        <location filename="../ladderworks/gui/main_window.py" line="440"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="444"/>
+        <location filename="../ladderworks/gui/main_window.py" line="447"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="430"/>
-        <location filename="../ladderworks/gui/main_window.py" line="272"/>
-        <location filename="../ladderworks/gui/main_window.py" line="439"/>
+        <location filename="../ladderworks/gui/main_window.py" line="275"/>
+        <location filename="../ladderworks/gui/main_window.py" line="442"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -2068,37 +2078,37 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="398"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="411"/>
+        <location filename="../ladderworks/gui/main_window.py" line="414"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="431"/>
+        <location filename="../ladderworks/gui/main_window.py" line="434"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
         <translation>Derleme bitti: {0} bayt (yüklenmedi: PLC mevcut programını tutuyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="481"/>
+        <location filename="../ladderworks/gui/main_window.py" line="484"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="484"/>
+        <location filename="../ladderworks/gui/main_window.py" line="487"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="516"/>
+        <location filename="../ladderworks/gui/main_window.py" line="519"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="517"/>
+        <location filename="../ladderworks/gui/main_window.py" line="520"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2116,123 +2126,123 @@
 <context>
     <name>ModbusDock</name>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
         <source>Modbus server</source>
         <translation>Modbus sunucusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
         <source>&amp;Address (host:port):</source>
         <translation>&amp;Adres (sunucu:port):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
         <source>&amp;Map file (CSV):</source>
         <translation>&amp;Harita dosyası (CSV):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="204"/>
         <source>the {0} map</source>
         <translation>{0} haritası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
         <source>Choose…</source>
         <translation>Seç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
         <source>Dialect&apos;s map</source>
         <translation>Lehçenin haritası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="129"/>
         <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
         <translation>Programın lehçesinin kendi haritasını sun (docs/modbus.md)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="130"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="131"/>
         <source>Clients connected:</source>
         <translation>Bağlı istemciler:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="132"/>
         <source>Requests a second:</source>
         <translation>Saniyedeki istek:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="147"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="148"/>
         <source>Type the address as host:port, e.g. {0}.</source>
         <translation>Adresi sunucu:port olarak yazın, ör. {0}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="161"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
         <source>Cannot listen on {0}: {1}</source>
         <translation>{0} dinlenemiyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="175"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
         <source>Modbus map file</source>
         <translation>Modbus harita dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="177"/>
         <source>Modbus maps (*.csv);;All files (*)</source>
         <translation>Modbus haritaları (*.csv);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
         <source>Cannot read the map {0}: {1}</source>
         <translation>{0} haritası okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="192"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="193"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="195"/>
         <source>The map {0} is not served:</source>
         <translation>{0} haritası sunulmuyor:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="202"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="203"/>
         <source>the file {0}</source>
         <translation>{0} dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
         <source>Stop server</source>
         <translation>Sunucuyu durdur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
         <source>Start server</source>
         <translation>Sunucuyu başlat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
         <source>Map served:</source>
         <translation>Sunulan harita:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="232"/>
         <source>Map to serve:</source>
         <translation>Sunulacak harita:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="236"/>
         <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
         <translation>{0}:{1} dinleniyor (Modbus/TCP, her birim no), harita: {2}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="239"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="240"/>
         <source>Other computers on the network can read and write this PLC.</source>
         <translation>Ağdaki başka bilgisayarlar bu PLC&apos;yi okuyup yazabilir.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="245"/>
         <source>Stopped. An HMI on this computer connects to {0} once started.</source>
         <translation>Durduruldu. Başlatıldığında bu bilgisayardaki bir HMI {0} adresine bağlanır.</translation>
     </message>

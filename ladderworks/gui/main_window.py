@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, Qt, QTimer, Signal
 from PySide6.QtGui import QAction, QCloseEvent, QShowEvent
 from PySide6.QtWidgets import (
     QApplication,
@@ -48,6 +48,7 @@ from ladderworks.gui.parameter_document import ParameterDocument
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.print_actions import PrintActions
 from ladderworks.gui.retranslate import Retranslating
+from ladderworks.gui.screen_fit import rebalance_docks
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.signal_list import SignalListDock
 from ladderworks.gui.text_view import ProgramTextView
@@ -199,6 +200,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.zoom_label.setText(percent(self.editor.zoom() * 100))
         # fit width says what it fitted: "9,812 of 10,000 networks fit…" (issue 31)
         self.zoom_label.setToolTip(self.fit_width.describe() or translate("MainWindow", "Zoom"))
+        if self._status_text == self.fit_width.describe and self.statusBar().currentMessage():
+            self.show_message(self.fit_width.describe)  # refitted (a dock opened): said anew
 
     # -- language ------------------------------------------------------------------------
 
@@ -532,6 +535,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
                 if bottom:
                     low = max(100, min(170, self.height() // 5))
                     self.resizeDocks(bottom, [low] * len(bottom), Qt.Orientation.Vertical)
+            else:  # a layout saved on a larger screen: the ladder gets its room back
+                QTimer.singleShot(0, lambda: rebalance_docks(self, self.editor.viewport()))
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Ask about unsaved changes; remember the window layout."""

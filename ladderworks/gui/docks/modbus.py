@@ -65,11 +65,12 @@ class ModbusDock(Retranslating, QDockWidget):
         self.address_label.setBuddy(self.address)
         form.addRow(self.address_label, self.address)
         self.map_label = QLabel(body)
-        map_row = QHBoxLayout()
         self.map_file = QLineEdit(body)  # empty: the dialect's own map
         self.map_file.setObjectName("modbusMapFile")
         self.map_label.setBuddy(self.map_file)
-        map_row.addWidget(self.map_file, 1)
+        form.addRow(self.map_label, self.map_file)  # the whole row: its placeholder reads whole
+        map_row = QHBoxLayout()
+        map_row.addStretch(1)
         self.map_choose = QPushButton(body)
         self.map_choose.setObjectName("modbusMapChoose")
         self.map_choose.clicked.connect(self.choose_map)
@@ -78,7 +79,7 @@ class ModbusDock(Retranslating, QDockWidget):
         self.map_default.setObjectName("modbusMapDefault")
         self.map_default.clicked.connect(self.map_file.clear)
         map_row.addWidget(self.map_default)
-        form.addRow(self.map_label, map_row)
+        form.addRow("", map_row)  # the buttons under the field
         self.served_label = QLabel(body)
         self.served = QLabel(body)
         self.served.setObjectName("modbusServedMap")

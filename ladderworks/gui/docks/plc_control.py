@@ -106,7 +106,7 @@ class PlcControlDock(Retranslating, QDockWidget):
             self.toolbar.add_action(action)
             self.control_actions[name] = action
         layout.addWidget(self.toolbar)
-        self.setMinimumWidth(440)
+        self.setMinimumWidth(340)  # its buttons wrap: a 1024-px screen keeps ~500 px of ladder
         state = QHBoxLayout()
         self.indicator = QLabel(body)
         self.indicator.setObjectName("plcRunIndicator")
