@@ -1394,8 +1394,8 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/zoom.py" line="78"/>
-        <source>Fit width: every network fits, at {0} % (small: close or narrow a dock to read it larger)</source>
-        <translation>Fit width: every network fits, at {0} % (small: close or narrow a dock to read it larger)</translation>
+        <source>Fit width: every network fits at {0} % (a dock closed reads larger)</source>
+        <translation>Fit width: every network fits at {0} % (a dock closed reads larger)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/zoom.py" line="81"/>

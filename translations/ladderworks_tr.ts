@@ -1394,8 +1394,8 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/zoom.py" line="78"/>
-        <source>Fit width: every network fits, at {0} % (small: close or narrow a dock to read it larger)</source>
-        <translation>Genişliğe sığdır: her devre sığıyor, %{0} ölçekte (küçük: daha büyük okumak için bir paneli kapatın ya da daraltın)</translation>
+        <source>Fit width: every network fits at {0} % (a dock closed reads larger)</source>
+        <translation>Genişliğe sığdır: her devre %{0} ölçekte sığıyor (bir panel kapatılınca büyür)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/zoom.py" line="81"/>

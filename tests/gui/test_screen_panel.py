@@ -36,7 +36,7 @@ def test_fit_width_beside_the_plc_docks_shows_the_coils(window: MainWindow,
     for network in range(len(view.networks) - 1):  # every rail, so every coil, in view
         assert 0 < rail_x(window, network) <= view.viewport().width()
     assert "0 of" not in window.zoom_label.toolTip()
-    assert window.zoom_label.toolTip().startswith("Fit width: every network fits, at ")
+    assert window.zoom_label.toolTip().startswith("Fit width: every network fits at ")
     window.actions_by_name["action_new"].trigger()  # an empty program fits: no "0 of 1"
     assert "of 1 networks" not in window.zoom_label.toolTip()
 

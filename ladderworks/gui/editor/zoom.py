@@ -75,8 +75,8 @@ class FitWidth(QObject):
                              "networks even at {1} %: close or narrow a dock, or widen the "
                              "window").format(self._room(), zoom)
         if fitted >= total and self._editor.zoom() < READABLE - 1e-3:
-            return translate("FitWidth", "Fit width: every network fits, at {0} % (small: close "
-                             "or narrow a dock to read it larger)").format(zoom)
+            return translate("FitWidth", "Fit width: every network fits at {0} % (a dock "
+                             "closed reads larger)").format(zoom)
         if fitted >= total:
             return translate("FitWidth", "Fit width: every network fits the window's width")
         return translate("FitWidth", "Fit width: {0} of {1} networks fit the window's width; "
