@@ -24,8 +24,8 @@ class WholeDockTitles(QObject):
         window.installEventFilter(self)
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        """A tab bar polished (made, or after a style change) gets whole titles; one resized
-        or given other titles is checked for room."""
+        """A tab bar polished (made, or after a style change) gets whole titles; one shown,
+        the window resized or its language changed, the groups are checked for room."""
         kind = event.type()
         if kind == QEvent.Type.ChildPolished and isinstance(event, QChildEvent):
             child = event.child()
@@ -33,8 +33,11 @@ class WholeDockTitles(QObject):
                 child.setElideMode(Qt.TextElideMode.ElideNone)
                 child.setUsesScrollButtons(True)
                 child.installEventFilter(self)
-        elif isinstance(watched, QTabBar) and kind in (QEvent.Type.Resize, QEvent.Type.Show,
-                                                       QEvent.Type.LayoutRequest):
+        elif (isinstance(watched, QTabBar) and kind == QEvent.Type.Show) or (
+                watched is self.window and kind in (QEvent.Type.LanguageChange,
+                                                    QEvent.Type.Resize)):
+            # a group shown, other titles, another window size; not a splitter the user
+            # drags (the group then stays as narrow as dragged)
             self._check_soon()
         return False
 

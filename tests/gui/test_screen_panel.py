@@ -68,16 +68,20 @@ def test_a_layout_saved_on_a_large_screen_leaves_the_ladder_its_room(
 
 def test_turkish_tabs_placeholders_and_an_error_at_the_coil_stay_whole(
         window: MainWindow, qtbot: QtBot, drawer: Drawer) -> None:
-    window.set_language("tr")
-    on_the_panel(window, qtbot)
-    window.actions_by_name["action_dock_modbus"].trigger()
-    modbus = window.plc_docks.modbus
-    qtbot.waitUntil(modbus.isVisible)
+    window.set_language("tr")  # the longer "Ana takım çantası" and "Sinyaller"
+    window.resize(QSize(1100, 640))
+    palette = window.tool_palette
+    window.resizeDocks([palette], [150], Qt.Orientation.Horizontal)  # as narrow as it goes
     qtbot.wait(20)
+    on_the_panel(window, qtbot)  # maximised on the panel
     bars = [bar for bar in window.findChildren(QTabBar) if bar.parent() is window
             and bar.isVisible() and "Sinyaller" in [bar.tabText(k) for k in range(bar.count())]]
     assert bars
     qtbot.waitUntil(lambda: bars[0].sizeHint().width() <= bars[0].width())  # no arrows
+    window.actions_by_name["action_dock_modbus"].trigger()
+    modbus = window.plc_docks.modbus
+    qtbot.waitUntil(modbus.isVisible)
+    qtbot.wait(20)
     field = modbus.map_file
     placeholder = field.placeholderText()
     assert field.fontMetrics().horizontalAdvance(placeholder) < field.width() - 8, placeholder
