@@ -24,8 +24,8 @@ class WholeDockTitles(QObject):
         window.installEventFilter(self)
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        """A tab bar polished (made, or after a style change) gets whole titles; one shown,
-        the window resized or its language changed, the groups are checked for room."""
+        """A tab bar polished (made, or after a style change) gets whole titles; one shown or
+        the window resized, the groups are checked for room."""
         kind = event.type()
         if kind == QEvent.Type.ChildPolished and isinstance(event, QChildEvent):
             child = event.child()
@@ -34,12 +34,15 @@ class WholeDockTitles(QObject):
                 child.setUsesScrollButtons(True)
                 child.installEventFilter(self)
         elif (isinstance(watched, QTabBar) and kind == QEvent.Type.Show) or (
-                watched is self.window and kind in (QEvent.Type.LanguageChange,
-                                                    QEvent.Type.Resize)):
-            # a group shown, other titles, another window size; not a splitter the user
-            # drags (the group then stays as narrow as dragged)
+                watched is self.window and kind == QEvent.Type.Resize):
+            # a group shown, another window size (other titles: the window's retranslate);
+            # not a splitter the user drags (the group then stays as narrow as dragged)
             self._check_soon()
         return False
+
+    def check_soon(self) -> None:
+        """Check the groups once the events waiting now are done (a resize laid out)."""
+        self._check_soon()
 
     def _check_soon(self) -> None:
         if not self._pending:
@@ -54,7 +57,7 @@ class WholeDockTitles(QObject):
             if bar.parent() is not window or not bar.isVisible() or bar.count() < 2:
                 continue
             need = bar.sizeHint().width()
-            if need <= bar.width() or need > window.width() // MOST:
+            if need > window.width() // MOST:
                 continue
             titles = {bar.tabText(index) for index in range(bar.count())}
             docks = [dock for dock in window.findChildren(QDockWidget)

@@ -207,6 +207,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
 
     def retranslate(self) -> None:
         """Set every text in the current UI language (the docks set their own)."""
+        self.dock_titles.check_soon()  # longer titles: a side group widens for its tabs
         self.menus.retranslate()
         self.plc_docks.retranslate()
         self.printing.retranslate()

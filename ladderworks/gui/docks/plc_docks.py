@@ -9,6 +9,7 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow, QToolButton
 
 from ladderworks.core.il import Program
 from ladderworks.gui.console_menus import ConsoleMenus
+from ladderworks.gui.dock_tabs import WholeDockTitles
 from ladderworks.gui.docks.alarms import AlarmDock
 from ladderworks.gui.docks.ascii_output import AsciiOutputDock
 from ladderworks.gui.docks.bit_display import BitDisplayDock
@@ -99,8 +100,12 @@ def _narrow_the_tools(window: QMainWindow) -> None:
     widest = max((button.sizeHint().width() for button in palette.findChildren(QToolButton)),
                  default=0)
     if widest and palette.width() > widest + TOOLS_MARGIN:
-        QTimer.singleShot(0, lambda: window.resizeDocks([palette], [widest + TOOLS_MARGIN],
-                                                        Qt.Orientation.Horizontal))
+        def narrow() -> None:
+            window.resizeDocks([palette], [widest + TOOLS_MARGIN], Qt.Orientation.Horizontal)
+            for titles in window.findChildren(WholeDockTitles):  # its tabs stay whole
+                titles.check_soon()
+
+        QTimer.singleShot(0, narrow)
 
 
 def _raise_when_shown(window: QMainWindow, dock: QDockWidget) -> None:
