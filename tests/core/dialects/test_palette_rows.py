@@ -29,10 +29,14 @@ def test_delta_offers_structure_and_one_contact_per_operation() -> None:
     contacts = contact_rows("delta")
     assert [spec.name for spec in contacts] == [
         "DVP.LDP", "DVP.LDF", "DVP.LD=", "DVP.LD>", "DVP.LD<", "DVP.LD<>", "DVP.LD<=",
-        "DVP.LD>="]  # the READ form: coding picks AND=/OR=/LD= .STK by the place
+        "DVP.LD>=", "DVP.DLD=", "DVP.DLD>", "DVP.DLD<", "DVP.DLD<>", "DVP.DLD<=",
+        "DVP.DLD>="]  # the READ form: coding picks AND=/OR=/LD= .STK by the place; 32-bit apart
     equal = lookup("DVP.LD=")
     assert equal is not None
     assert [s.text_name for s in same_operation(equal)] == ["LD=", "AND=", "OR="]
+    wide = lookup("DVP.DAND=")
+    assert wide is not None
+    assert [s.text_name for s in same_operation(wide)] == ["DLD=", "DAND=", "DOR="]
     assert [key for key, _rows in palette_groups("delta")] == [
         "delta", "delta.structure", "delta.contacts"]
     assert palette_groups("seed") == ()

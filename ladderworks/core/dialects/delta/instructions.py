@@ -254,6 +254,9 @@ _add("MCR", "alone", (NEST,), _row("MCR", _sub(), "Master control reset", "ANA K
                                     flow=Flow.COMMON_END))
 SPELLINGS["END"] = Spelling("alone", "END")  # the table's own END (end of program)
 
+# the 32-bit forms, blocks, logic, floating point, modules: their rows join the lists here
+from ladderworks.core.dialects.delta import rows_extra  # noqa: E402
+
 ROWS: tuple[InstructionSpec, ...] = tuple(ROWS_LIST)
 
 # Delta instructions the simulator does not run: a "not simulated" error at their line.
@@ -279,3 +282,5 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "dvp_data": (*(f"DVP.{name}{pulse}" for name in _DATA for pulse in ("", "P")),
                  "DVP.PLS", "DVP.PLF"),
 }
+FAMILIES.update(rows_extra.FAMILIES)
+NOT_SIMULATED = NOT_SIMULATED - SPELLINGS.keys()  # those rows_extra simulates

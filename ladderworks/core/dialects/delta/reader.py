@@ -16,6 +16,7 @@ from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.dialects.delta import DEVICES, NAME, WIDE_COUNTERS
 from ladderworks.core.dialects.delta import instructions as rows
+from ladderworks.core.dialects.delta import rows_extra as extra
 from ladderworks.core.il.program import (
     FileSource,
     Instruction,
@@ -35,12 +36,17 @@ _NEST = re.compile(r"^[Nn](\d)$")
 
 _BIT_LETTERS = {rows.BIT_IN: "XYMSTC", rows.BIT_OUT: "YMS"}
 _WORD_LETTERS = {rows.WORD_IN: "TCD", rows.WORD_OUT: "TCD", rows.TIMER: "T",
-                 rows.COUNTER: "C", rows.WIDE_COUNTER: "C", rows.RESET: "TCD"}
+                 rows.COUNTER: "C", rows.WIDE_COUNTER: "C", rows.RESET: "TCD",
+                 extra.VALUE32: "TCD", extra.WORD_OUT32: "TCD"}
+_VALUES = (rows.WORD_IN, extra.VALUE32, extra.MODULE)  # the kinds a K/H constant may be
+_EITHER = {extra.DEVICE_OUT: "YMS", extra.DEVICE_IN: "XYMS"}  # a bit device, or T, C, D
 _EXPECTED = {  # the spellings an operand of each kind may have, for the message
     rows.BIT_IN: "X, Y, M, S, T, C", rows.BIT_OUT: "Y, M, S", rows.WORD_IN: "K, H, T, C, D",
     rows.WORD_OUT: "T, C, D", rows.TIMER: "T0-T255", rows.COUNTER: "C0-C199",
     rows.WIDE_COUNTER: "C200-C255", rows.RESET: "T, C, D", rows.LABEL: "P0-P255",
-    rows.PROGRAM: "P0-P255", rows.NEST: "N0-N7",
+    rows.PROGRAM: "P0-P255", rows.NEST: "N0-N7", extra.VALUE32: "K, H, T, C, D",
+    extra.WORD_OUT32: "T, C, D", extra.DEVICE_OUT: "Y, M, S, T, C, D",
+    extra.DEVICE_IN: "X, Y, M, S, T, C, D", extra.MODULE: "K0-K7",
 }
 
 
@@ -164,7 +170,8 @@ class _Reader:
         elif role == "block":
             rung.depth = max(rung.depth - 1, 0)
         rung.pushed = max(rung.pushed + (spec.pushes if spec.stack else 0), 0)
-        rung.output = role == "output"
+        if role != "filler":  # NOP leaves the rung as it was
+            rung.output = role == "output"
         if role == "alone":
             self.close(index + 1)
 
@@ -204,10 +211,16 @@ class _Reader:
         try:
             if kind not in (rows.LABEL, rows.PROGRAM, rows.NEST) and \
                     _CONSTANT.match(text) is None:
-                if upper[:1] in "KH" and kind == rows.WORD_IN:
+                if upper[:1] in "KH" and kind in _VALUES:
                     self.error("dialect-constant", line, column, text=text)
                     return None
                 DEVICES.split(text)  # an unknown device, an 8 in octal, out of range: say so
+            if kind in _EITHER and _CONSTANT.match(text) is None:
+                if upper[:1] in _EITHER[kind]:
+                    return DEVICES.bit(text)
+                if upper[:1] in "TCD":
+                    return DEVICES.word(text)[0]
+                return self.kind_error(name, index, kind, text, line, column)
             if kind in _BIT_LETTERS:
                 if upper[:1] not in _BIT_LETTERS[kind] or (_CONSTANT.match(text) and \
                         upper[:1] in "KH"):
@@ -225,9 +238,9 @@ class _Reader:
                 return int(found.group(1))
             constant = _CONSTANT.match(text)
             if constant is not None:
-                if kind != rows.WORD_IN:
+                if kind not in _VALUES or (kind == extra.MODULE and upper[:1] != "K"):
                     return self.kind_error(name, index, kind, text, line, column)
-                return self.constant(constant, text, line, column)
+                return self.constant(constant, text, line, column, kind == extra.VALUE32)
             if upper[:1] not in _WORD_LETTERS.get(kind, ""):
                 return self.kind_error(name, index, kind, text, line, column)
             address, _width = DEVICES.word(text)
@@ -240,8 +253,9 @@ class _Reader:
             self.error(exc.code, line, column, **exc.args_map)
             return None
 
-    def constant(self, found: re.Match[str], text: str, line: int, column: int) -> int | None:
-        """A K (decimal) or H (hex) constant."""
+    def constant(self, found: re.Match[str], text: str, line: int, column: int,
+                 wide: bool = False) -> int | None:
+        """A K (decimal) or H (hex) constant (`wide`: of a 32-bit operand)."""
         letter, digits = found.group(1).upper(), found.group(2)
         try:
             value = int(digits, 16 if letter == "H" else 10)
@@ -250,7 +264,7 @@ class _Reader:
             return None
         if letter == "H" and value > 0xFFFF:
             return value - (1 << 32) if value >= 1 << 31 else value
-        if letter == "H" and value >= 0x8000:
+        if letter == "H" and value >= 0x8000 and not wide:
             return value - 0x10000
         return value
 

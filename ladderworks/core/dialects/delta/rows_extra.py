@@ -1,0 +1,231 @@
+"""Delta DVP rows beyond the first set: the 32-bit D forms, word and bit blocks, logic,
+conversion, floating point, special modules and pulse output, each with its pulse form.
+
+Imported by `instructions.py` after its helpers are defined: each row joins its ROWS and
+SPELLINGS. `ACTIONS` says what each row does (read by the implementations in
+`plc/functions/delta_*.py`, which register by it); `FAMILIES` which module runs it. The
+manual's API number of each is in docs/dialects.md ("Every DVP instruction").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from ladderworks.core.dialects.delta.instructions import (
+    BIT_IN,
+    BIT_OUT,
+    COMPARISONS,
+    INT16,
+    INT32,
+    STK,
+    WORD_IN,
+    WORD_OUT,
+    _add,
+    _bit,
+    _param,
+    _row,
+    _value,
+    _word,
+)
+from ladderworks.core.instructions import Combine, Operation, Param, ParamAccess, ParamKind
+
+# How the reader reads the new operand kinds (reader.py).
+VALUE32 = "value32"  # a K/H constant (32-bit) or a word device pair: T, C, D
+WORD_OUT32 = "word-out32"  # a word device pair the program writes: T, C, D
+DEVICE_OUT = "device-out"  # a bit device Y, M, S or a word device T, C, D (ZRST, DECO's D)
+DEVICE_IN = "device-in"  # a bit device X, Y, M, S or a word device T, C, D (ENCO's S)
+MODULE = "module"  # a K constant: a special module's number (FROM/TO)
+
+_RW = ParamAccess.READ_WRITE
+_next = 10_000 + 1200  # these rows' SUB numbers: 11201 on (instructions.py's reach 11030)
+
+ACTIONS: dict[str, str] = {}  # row name -> what it does (the implementations' key)
+FAMILIES: dict[str, tuple[str, ...]] = {}
+
+
+def _sub() -> int:
+    global _next
+    _next += 1
+    return _next
+
+
+def _v(name: str, wide: bool) -> Param:
+    return _value(name, *(INT32 if wide else INT16), width=4 if wide else 2)
+
+
+def _w(name: str, wide: bool, access: ParamAccess = ParamAccess.WRITE) -> Param:
+    return _word(name, 4 if wide else 2, access)
+
+
+def _any(name: str, access: ParamAccess = ParamAccess.WRITE) -> Param:
+    return _param(name, ParamKind.RAW, INT16[0], INT16[1], 2, access)
+
+
+def _n(name: str, lo: int, hi: int) -> Param:
+    return _value(name, lo, hi)
+
+
+def _box(family: str, action: str, mnemonic: str, title: str, title_tr: str,
+         kinds: tuple[str, ...], params: tuple[Param, ...], *, pulse_form: bool = True,
+         role: str = "output", inputs: tuple[str, ...] = ("ACT",)) -> None:
+    """Add `mnemonic` (and its pulse form `mnemonic`P) run by `family` as `action`."""
+    forms = [("", False)] + ([("P", True)] if pulse_form else [])
+    for suffix, pulse in forms:
+        name = mnemonic + suffix
+        row = _row(name, _sub(), title + (", on the rising edge" if pulse else ""),
+                   title_tr + (" (DARBE)" if pulse else ""), params=params, pulse=pulse,
+                   inputs=inputs)
+        _add(name, role, kinds, row)
+        ACTIONS[row.name] = action
+        FAMILIES[family] = (*FAMILIES.get(family, ()), row.name)
+
+
+def _both(family: str, action: str, mnemonic: str, title: str, title_tr: str,
+          kinds: tuple[str, ...], make: Callable[[bool], tuple[Param, ...]], *,
+          pulse_form: bool = True) -> None:
+    """A 16-bit instruction and its 32-bit D form: `make(wide)` gives the params."""
+    _box(family, action, mnemonic, title, title_tr, kinds, make(False), pulse_form=pulse_form)
+    wide = tuple({WORD_IN: VALUE32, WORD_OUT: WORD_OUT32}.get(kind, kind) for kind in kinds)
+    _box(family, action + "32", "D" + mnemonic, title + " (32-bit)", title_tr + " (32 BİT)",
+         wide, make(True), pulse_form=pulse_form)
+
+
+# -- 32-bit data: DMOV ... DZCP (the 16-bit forms are instructions.py's) ----------------------
+_W32 = "delta_words32"
+_box(_W32, "move", "DMOV", "Move (32-bit)", "TAŞI (32 BİT)", (VALUE32, WORD_OUT32),
+     (_v("source", True), _w("output", True)))
+_box(_W32, "add", "DADD", "Addition (32-bit)", "TOPLAMA (32 BİT)",
+     (VALUE32, VALUE32, WORD_OUT32), (_v("s1", True), _v("s2", True), _w("output", True)))
+_box(_W32, "subtract", "DSUB", "Subtraction (32-bit)", "ÇIKARTMA (32 BİT)",
+     (VALUE32, VALUE32, WORD_OUT32), (_v("s1", True), _v("s2", True), _w("output", True)))
+_box(_W32, "multiply", "DMUL", "Multiplication (32-bit, 64-bit result)", "ÇARPMA (32 BİT)",
+     (VALUE32, VALUE32, WORD_OUT32), (_v("s1", True), _v("s2", True), _word("output", 8)))
+_box(_W32, "divide", "DDIV", "Division (32-bit: quotient, remainder)", "BÖLME (32 BİT)",
+     (VALUE32, VALUE32, WORD_OUT32), (_v("s1", True), _v("s2", True), _word("output", 8)))
+_box(_W32, "increment", "DINC", "Increment (32-bit)", "ARTTIR (32 BİT)", (WORD_OUT32,),
+     (_w("output", True, _RW),))
+_box(_W32, "decrement", "DDEC", "Decrement (32-bit)", "AZALT (32 BİT)", (WORD_OUT32,),
+     (_w("output", True, _RW),))
+_box(_W32, "compare", "DCMP", "Compare (32-bit)", "KARŞILAŞTIRMA (32 BİT)",
+     (VALUE32, VALUE32, BIT_OUT), (_v("s1", True), _v("s2", True), _bit("output")))
+_box(_W32, "zone", "DZCP", "Zone compare (32-bit)", "BÖLGE KARŞILAŞTIRMA (32 BİT)",
+     (VALUE32, VALUE32, VALUE32, BIT_OUT),
+     (_v("low", True), _v("high", True), _v("input", True), _bit("output")))
+
+# -- 32-bit comparison contacts DLD= ... DOR>= (run by dvp_contacts, 32-bit by their width) ----
+_OPERANDS32 = (_v("s1", True), _v("s2", True))
+for _op in COMPARISONS:
+    _test = Operation(_op)
+    for _start in ("LD", "AND", "OR"):
+        _name = f"D{_start}{_op}"
+        _place = {"LD": "", "AND": " in series", "OR": " in parallel"}[_start]
+        _place_tr = {"LD": "", "AND": " (SERİ)", "OR": " (PARALEL)"}[_start]
+        _title = f"Compare {_op} contact{_place} (32-bit)"
+        _title_tr = f"KARŞILAŞTIRMA KONTAĞI {_op}{_place_tr} (32 BİT)"
+        if _start == "LD":
+            _add(_name, "load", (VALUE32, VALUE32),
+                 _row(_name, _sub(), _title, _title_tr, inputs=(), params=_OPERANDS32,
+                      combine=Combine.READ, w1=True, operation=_test),
+                 _row(_name, _sub(), _title, _title_tr, suffix=STK, inputs=(),
+                      params=_OPERANDS32, combine=Combine.READ, pushes=1, w1=True,
+                      operation=_test))
+        else:
+            _add(_name, "contact", (VALUE32, VALUE32),
+                 _row(_name, _sub(), _title, _title_tr, params=_OPERANDS32,
+                      combine=Combine.AND if _start == "AND" else Combine.OR, w1=True,
+                      operation=_test))
+
+# -- blocks of words and bits (delta_blocks) --------------------------------------------------
+_BL = "delta_blocks"
+_box(_BL, "zone-reset", "ZRST", "Zone reset", "BÖLGE SIFIRLA", (DEVICE_OUT, DEVICE_OUT),
+     (_any("first"), _any("last")))
+_box(_BL, "nothing", "NOP", "No operation", "İŞLEM YOK", (), (), pulse_form=False,
+     role="filler", inputs=())
+_box(_BL, "block-move", "BMOV", "Block move", "BLOK TAŞI", (WORD_IN, WORD_OUT, WORD_IN),
+     (_v("source", False), _w("output", False), _n("count", 1, 512)))
+_both(_BL, "fill", "FMOV", "Fill move", "DOLDUR", (WORD_IN, WORD_OUT, WORD_IN),
+      lambda wide: (_v("source", wide), _w("output", wide), _n("count", 1, 512)))
+_both(_BL, "exchange", "XCH", "Exchange", "DEĞİŞTİR", (WORD_OUT, WORD_OUT),
+      lambda wide: (_w("d1", wide, _RW), _w("d2", wide, _RW)))
+_box(_BL, "shift-right", "SFTR", "Bit shift right", "BİT KAYDIR SAĞA",
+     (BIT_IN, BIT_OUT, WORD_IN, WORD_IN),
+     (_bit("source", ParamAccess.READ), _bit("output", _RW), _n("bits", 1, 1024),
+      _n("shift", 1, 1024)))
+_box(_BL, "shift-left", "SFTL", "Bit shift left", "BİT KAYDIR SOLA",
+     (BIT_IN, BIT_OUT, WORD_IN, WORD_IN),
+     (_bit("source", ParamAccess.READ), _bit("output", _RW), _n("bits", 1, 1024),
+      _n("shift", 1, 1024)))
+_box(_BL, "decode", "DECO", "Decode", "ÇÖZ", (WORD_IN, DEVICE_OUT, WORD_IN),
+     (_v("source", False), _any("output"), _n("bits", 1, 8)))
+_box(_BL, "encode", "ENCO", "Encode", "KODLA", (DEVICE_IN, WORD_OUT, WORD_IN),
+     (_any("source", ParamAccess.READ), _w("output", False), _n("bits", 1, 8)))
+_box(_BL, "alternate", "ALT", "Alternate (flip-flop)", "DEĞİŞTİR (FLİP-FLOP)", (BIT_OUT,),
+     (_bit("output", _RW),))
+_both(_BL, "sum", "SUM", "Number of on bits", "AÇIK BİT SAYISI", (WORD_IN, WORD_OUT),
+      lambda wide: (_v("source", wide), _w("output", wide)))
+
+# -- word logic and conversion (delta_logic) --------------------------------------------------
+_LG = "delta_logic"
+for _mnemonic, _action, _title, _title_tr in (
+        ("WAND", "and", "Logical AND", "MANTIKSAL VE"),
+        ("WOR", "or", "Logical OR", "MANTIKSAL VEYA"),
+        ("WXOR", "xor", "Logical exclusive OR", "MANTIKSAL ÖZEL VEYA")):
+    _box(_LG, _action, _mnemonic, _title, _title_tr, (WORD_IN, WORD_IN, WORD_OUT),
+         (_v("s1", False), _v("s2", False), _w("output", False)))
+    _box(_LG, _action + "32", "D" + _mnemonic[1:], _title + " (32-bit)", _title_tr + " (32 BİT)",
+         (VALUE32, VALUE32, WORD_OUT32), (_v("s1", True), _v("s2", True), _w("output", True)))
+_both(_LG, "negate", "NEG", "Two's complement (negation)", "İŞARET DEĞİŞTİR", (WORD_OUT,),
+      lambda wide: (_w("output", wide, _RW),))
+_both(_LG, "rotate-right", "ROR", "Rotate right", "SAĞA DÖNDÜR", (WORD_OUT, WORD_IN),
+      lambda wide: (_w("output", wide, _RW), _n("bits", 1, 32 if wide else 16)))
+_both(_LG, "rotate-left", "ROL", "Rotate left", "SOLA DÖNDÜR", (WORD_OUT, WORD_IN),
+      lambda wide: (_w("output", wide, _RW), _n("bits", 1, 32 if wide else 16)))
+_both(_LG, "to-bcd", "BCD", "Binary to BCD", "BINARY'DEN BCD'YE", (WORD_IN, WORD_OUT),
+      lambda wide: (_v("source", wide), _w("output", wide)))
+_both(_LG, "to-binary", "BIN", "BCD to binary", "BCD'DEN BINARY'YE", (WORD_IN, WORD_OUT),
+      lambda wide: (_v("source", wide), _w("output", wide)))
+
+# -- floating point (delta_float): binary floating point in a D pair, low word first ----------
+_FL = "delta_float"
+_both(_FL, "float", "FLT", "Integer to floating point", "TAMSAYIDAN KAYAN NOKTAYA",
+      (WORD_IN, WORD_OUT32), lambda wide: (_v("source", wide), _w("output", True)))
+_box(_FL, "integer", "INT", "Floating point to integer", "KAYAN NOKTADAN TAMSAYIYA",
+     (VALUE32, WORD_OUT), (_v("source", True), _w("output", False)))
+_box(_FL, "integer32", "DINT", "Floating point to integer (32-bit)",
+     "KAYAN NOKTADAN TAMSAYIYA (32 BİT)", (VALUE32, WORD_OUT32),
+     (_v("source", True), _w("output", True)))
+_box(_FL, "fmove", "DEMOV", "Floating point move", "KAYAN NOKTA TAŞI", (VALUE32, WORD_OUT32),
+     (_v("source", True), _w("output", True)))
+for _mnemonic, _action, _title, _title_tr in (
+        ("DEADD", "fadd", "Floating point addition", "KAYAN NOKTA TOPLAMA"),
+        ("DESUB", "fsubtract", "Floating point subtraction", "KAYAN NOKTA ÇIKARTMA"),
+        ("DEMUL", "fmultiply", "Floating point multiplication", "KAYAN NOKTA ÇARPMA"),
+        ("DEDIV", "fdivide", "Floating point division", "KAYAN NOKTA BÖLME")):
+    _box(_FL, _action, _mnemonic, _title, _title_tr, (VALUE32, VALUE32, WORD_OUT32),
+         (_v("s1", True), _v("s2", True), _w("output", True)))
+_box(_FL, "fcompare", "DECMP", "Floating point compare", "KAYAN NOKTA KARŞILAŞTIRMA",
+     (VALUE32, VALUE32, BIT_OUT), (_v("s1", True), _v("s2", True), _bit("output")))
+_box(_FL, "fzone", "DEZCP", "Floating point zone compare", "KAYAN NOKTA BÖLGE KARŞILAŞTIRMA",
+     (VALUE32, VALUE32, VALUE32, BIT_OUT),
+     (_v("low", True), _v("high", True), _v("input", True), _bit("output")))
+
+# -- special modules and pulse output (delta_modules) -----------------------------------------
+_MD = "delta_modules"
+_both(_MD, "from", "FROM", "Read a special module's registers", "ÖZEL MODÜLDEN OKU",
+      (MODULE, WORD_IN, WORD_OUT, WORD_IN),
+      lambda wide: (_n("module", 0, 7), _v("register", False), _w("output", wide),
+                    _n("count", 1, 100)))
+_both(_MD, "to", "TO", "Write a special module's registers", "ÖZEL MODÜLE YAZ",
+      (MODULE, WORD_IN, WORD_IN, WORD_IN),
+      lambda wide: (_n("module", 0, 7), _v("register", False), _v("source", wide),
+                    _n("count", 1, 100)))
+_both(_MD, "pulses", "PLSY", "Pulse output (pulses counted)", "DARBE ÇIKIŞI",
+      (WORD_IN, WORD_IN, BIT_OUT),
+      lambda wide: (_value("frequency", 0, 200_000 if wide else 32767, 4 if wide else 2),
+                    _value("count", 0, INT32[1] if wide else 32767, 4 if wide else 2),
+                    _bit("output")),
+      pulse_form=False)
+
+# BIT_IN is the source of SFTR/SFTL; kept here so the reader's table names every kind used.
+KINDS_USED = (BIT_IN, BIT_OUT, WORD_IN, WORD_OUT, VALUE32, WORD_OUT32, DEVICE_OUT, DEVICE_IN,
+              MODULE)
