@@ -283,4 +283,5 @@ FAMILIES: dict[str, tuple[str, ...]] = {
                  "DVP.PLS", "DVP.PLF"),
 }
 FAMILIES.update(rows_extra.FAMILIES)
-NOT_SIMULATED = NOT_SIMULATED - SPELLINGS.keys()  # those rows_extra simulates
+# with the rest of the manual's list; less those rows_extra simulates
+NOT_SIMULATED = (NOT_SIMULATED | rows_extra.MORE_NOT_SIMULATED) - SPELLINGS.keys()
