@@ -168,3 +168,52 @@ def test_stateful_blocks_skip_exactly(monitored: bool) -> None:
         "LD X0\nALTP M0\nLD X1\nSFTLP X2 M10 K16 K1\nLD X3\nZRSTP M10 M13\nLD X4\n"
         "BMOVP D0 D10 K4\nXCHP D0 D1\nLD M0\nOUT Y0\nEND\n", 1500, monitored)
     assert skipped > 0
+
+
+SEQUENCE = ("LD M1002\nSET S0\nSTL S0\nOUT Y0\nLD X0\nSET S20\nSTL S20\nOUT Y1\nTMR T0 K5\n"
+            "LD T0\nSET S21\nSTL S21\nOUT Y2\nLD X1\nOUT S0\nRET\nLD X2\nOUT Y3\nEND\n")
+
+
+@MODES
+def test_step_ladder_moves_from_step_to_step(monitored: bool) -> None:
+    plc = engine(SEQUENCE, monitored=monitored)
+
+    def state() -> tuple[int, ...]:
+        return tuple(get(plc, d) for d in ("S0", "S20", "S21", "Y0", "Y1", "Y2", "T0"))
+
+    plc.scan()
+    assert state() == (1, 0, 0, 1, 0, 0, 0)
+    put(plc, "X0", 1)
+    plc.scan()  # S0 moves to S20: S0 off at once, its Y0 off from the next scan
+    assert state()[:3] == (0, 1, 0) and get(plc, "Y1") == 1
+    put(plc, "X0", 0)
+    plc.scan()
+    assert state() == (0, 1, 0, 0, 1, 0, 0)
+    plc.run_scans(60)  # T0 (0.5 s) moves on to S21; T0 of the step left is reset
+    assert state() == (0, 0, 1, 0, 0, 1, 0)
+    put(plc, "X1", 1)
+    plc.run_scans(2)  # OUT S0 goes back to the first step
+    assert state() == (1, 0, 0, 1, 0, 0, 0)
+    put(plc, "X2", 1)
+    plc.scan()
+    assert get(plc, "Y3") == 1  # after RET: an ordinary rung
+
+
+def test_step_ladder_saves_as_written() -> None:
+    from ladderworks.core.dialects.delta.printer import network_lines
+
+    lines = [line for network in delta(SEQUENCE).networks
+             for line in network_lines(network, False)]
+    assert [line.replace("\t", " ") for line in lines] == SEQUENCE.strip().split("\n")
+
+
+def test_stl_needs_an_s_device() -> None:
+    from ladderworks.core.il.reading import parse_bytes
+
+    result = parse_bytes(b"STL M0\nRET\nEND\n", "delta")
+    assert [(d.code, d.line) for d in result.diagnostics] == [("dialect-operand", 1)]
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+def test_step_ladder_skips_exactly(monitored: bool) -> None:
+    assert same_when_skipping(SEQUENCE, 1500, monitored) > 0

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import DEVICES
+from ladderworks.core.dialects.delta.rows_extra import STEP_MOVE_ROWS, STEP_NEXT_ROW, STEP_ROW
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, LabelRef, Network, ProgramRef
 from ladderworks.core.instructions import Combine, Flow, InstructionSpec, Kind, ParamKind, Write
@@ -52,6 +53,11 @@ def instruction_lines(instruction: Instruction) -> list[str]:
         return [f"{name}{operand}{comment}"]
     if spec.flow in (Flow.LABEL, Flow.SUBPROGRAM):
         return [" ".join(operand_text(p) for p in instruction.params) + comment]
+    if spec.name == STEP_NEXT_ROW.name:  # the step before ends: its STL line says so
+        return []
+    if spec.name == STEP_ROW.name or spec.name in STEP_MOVE_ROWS.values():  # STL Sn, SET Sm
+        step = instruction.params[-1 if spec.name == STEP_ROW.name else 0]
+        return [f"{spec.text_name}\t{operand_text(step)}{comment}"]
     return ["\t".join([spec.text_name, *params_text(spec, instruction.params)]) + comment]
 
 
@@ -75,9 +81,23 @@ def instruction_text(instruction: Instruction) -> str:
 def network_lines(network: Network, first: bool) -> list[str]:
     """A network's lines: its comment lines (`; text`), then its instructions."""
     out = [f"; {text}" for text in network.comments]
-    for instruction in network.instructions:
+    instructions = network.instructions
+    for index, instruction in enumerate(instructions):
+        if _step_read(instructions, index):
+            continue
         out.extend(instruction_lines(instruction))
     return out
+
+
+def _step_read(instructions: list[Instruction], index: int) -> bool:
+    """True for the LD Sn the reader put before and after a STL Sn (its line says it)."""
+    here = instructions[index]
+    for other in (index - 1, index + 1):
+        if 0 <= other < len(instructions) and instructions[other].name == STEP_ROW.name \
+                and instructions[other].params[-1] == here.operand \
+                and here.spec.kind is Kind.BASIC and here.spec.combine is Combine.READ:
+            return True
+    return False
 
 
 def spelling() -> Spelling:

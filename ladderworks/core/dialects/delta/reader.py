@@ -12,9 +12,9 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from ladderworks.core.address import Address, AddressError
+from ladderworks.core.address import Address, AddressError, Area
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects.delta import DEVICES, NAME, WIDE_COUNTERS
+from ladderworks.core.dialects.delta import DEVICES, NAME, S_BITS, WIDE_COUNTERS
 from ladderworks.core.dialects.delta import instructions as rows
 from ladderworks.core.dialects.delta import rows_extra as extra
 from ladderworks.core.il.program import (
@@ -46,7 +46,7 @@ _EXPECTED = {  # the spellings an operand of each kind may have, for the message
     rows.WIDE_COUNTER: "C200-C255", rows.RESET: "T, C, D", rows.LABEL: "P0-P255",
     rows.PROGRAM: "P0-P255", rows.NEST: "N0-N7", extra.VALUE32: "K, H, T, C, D",
     extra.WORD_OUT32: "T, C, D", extra.DEVICE_OUT: "Y, M, S, T, C, D",
-    extra.DEVICE_IN: "X, Y, M, S, T, C, D", extra.MODULE: "K0-K7",
+    extra.DEVICE_IN: "X, Y, M, S, T, C, D", extra.MODULE: "K0-K7", extra.STEP: "S0-S1023",
 }
 
 
@@ -85,6 +85,7 @@ class _Reader:
         self.diagnostics: list[Diagnostic] = []
         self.rung = _Rung(0)
         self.after_fend = False
+        self.step: Address | None = None  # the S of the step ladder's step being read (STL)
         self.pending: list[str] = []  # comment lines not yet given to a network
 
     def error(self, code: str, line: int, column: int, **args: object) -> None:
@@ -145,6 +146,9 @@ class _Reader:
             else:
                 self.error("unknown-instruction", number, column, name=mnemonic)
             return
+        if spelling.role == "step":
+            self.step_line(index, number, column, words, comment)
+            return
         rung = self.rung
         role = spelling.role
         if role == "alone" or (role == "load" and rung.output and rung.pushed == 0):
@@ -161,9 +165,16 @@ class _Reader:
             kinds = spelling.operands
         if mnemonic == "FEND":
             self.after_fend = True
+        if spec_row_is_return(row_name):
+            self.step = None
+        if self.step is not None and mnemonic in extra.STEP_MOVE_ROWS and operands \
+                and operands[0][:1].upper() == "S":  # a step's SET/OUT Sm: moves on to Sm
+            row_name = extra.STEP_MOVE_ROWS[mnemonic]
         spec = lookup(row_name)
         assert spec is not None, row_name
         instruction = self.build(spec, mnemonic, kinds, operands, number, column, comment)
+        if spec.name in extra.STEP_MOVE_ROWS.values() and instruction.params:
+            instruction = instruction._replace(params=(*instruction.params, self.step))
         self.add(index, instruction)
         if role == "load":
             rung.depth += 1
@@ -174,6 +185,35 @@ class _Reader:
             rung.output = role == "output"
         if role == "alone":
             self.close(index + 1)
+
+    def step_line(self, index: int, number: int, column: int, words: list[str],
+                  comment: str) -> None:
+        """STL Sn: a network of its own (the step before ends), read as LD Sn, the step's
+        COMMON range gated by it, LD Sn again (an output may follow at once)."""
+        self.close(index)
+        if len(words) != 2:
+            self.error("param-count", number, column, name="STL", expected=1,
+                       found=len(words) - 1)
+            return
+        at = self.lines[index].find(words[1], column - 1) + 1 or column
+        step = self.operand("STL", 1, rows.BIT_OUT, words[1], number, at)
+        if not isinstance(step, Address):
+            return
+        if step.byte < S_BITS or step.area is not Area.R:  # an S device only
+            self.kind_error("STL", 1, extra.STEP, words[1], number, at)
+            return
+        read = lookup("RD")
+        assert read is not None
+        if self.step is not None:
+            self.add(index, Instruction(extra.STEP_NEXT_ROW.name, None, (), "", (), number,
+                                        column))
+        self.add(index, Instruction(read.name, step, (), "", (), number, column))
+        self.add(index, Instruction(extra.STEP_ROW.name, None, (0, step), comment, (), number,
+                                    column))
+        self.add(index, Instruction(read.name, step, (), "", (), number, column))
+        self.step = step
+        self.rung.depth = 1
+        self.rung.output = True  # an LD after it starts the step's first rung
 
     def build(self, spec: InstructionSpec, mnemonic: str, kinds: tuple[str, ...],
               operands: list[str], number: int, column: int, comment: str) -> Instruction:
@@ -274,6 +314,11 @@ class _Reader:
         self.error("dialect-operand", line, column, name=name, index=index,
                    expected=_EXPECTED[kind], text=text)
         return None
+
+
+def spec_row_is_return(row_name: str) -> bool:
+    """True for the row that ends the step ladder (RET)."""
+    return row_name == extra.RETURN_ROW.name
 
 
 def read(text: str, form: TextForm, lines: list[str],

@@ -17,9 +17,12 @@ from ladderworks.core.dialects.delta.instructions import (
     COMPARISONS,
     INT16,
     INT32,
+    ROWS_LIST,
+    SPELLINGS,
     STK,
     WORD_IN,
     WORD_OUT,
+    Spelling,
     _add,
     _bit,
     _param,
@@ -27,7 +30,14 @@ from ladderworks.core.dialects.delta.instructions import (
     _value,
     _word,
 )
-from ladderworks.core.instructions import Combine, Operation, Param, ParamAccess, ParamKind
+from ladderworks.core.instructions import (
+    Combine,
+    Flow,
+    Operation,
+    Param,
+    ParamAccess,
+    ParamKind,
+)
 
 # How the reader reads the new operand kinds (reader.py).
 VALUE32 = "value32"  # a K/H constant (32-bit) or a word device pair: T, C, D
@@ -35,6 +45,7 @@ WORD_OUT32 = "word-out32"  # a word device pair the program writes: T, C, D
 DEVICE_OUT = "device-out"  # a bit device Y, M, S or a word device T, C, D (ZRST, DECO's D)
 DEVICE_IN = "device-in"  # a bit device X, Y, M, S or a word device T, C, D (ENCO's S)
 MODULE = "module"  # a K constant: a special module's number (FROM/TO)
+STEP = "step"  # an S device: a step of the step ladder (STL)
 
 _RW = ParamAccess.READ_WRITE
 _next = 10_000 + 1200  # these rows' SUB numbers: 11201 on (instructions.py's reach 11030)
@@ -228,6 +239,28 @@ _both(_MD, "pulses", "PLSY", "Pulse output (pulses counted)", "DARBE ÇIKIŞI",
                     _bit("output")),
       pulse_form=False)
 
+# -- step ladder: STL Sn ... RET (the reader reads STL as LD Sn, a COMMON range gated by it, LD Sn
+# again; a range ends at the next STL or RET; SET/OUT of an S device in a step moves on) -------
+STEP_ROW = _row("STL", _sub(), "Step ladder: step start", "ADIM BAŞLANGICI",
+                params=(_param("coils", ParamKind.NUMBER, 0, 0), _bit("step", ParamAccess.READ)),
+                flow=Flow.COMMON, gates_boxes=True)
+STEP_NEXT_ROW = _row("STL", _sub(), "Step ladder: end of the step before", "ADIM SONU",
+                     suffix=".END", inputs=(), flow=Flow.COMMON_END)
+RETURN_ROW = _row("RET", _sub(), "Step ladder: return", "ADIM DÖNÜŞÜ", inputs=(),
+                  flow=Flow.COMMON_END)
+_add("RET", "alone", (), RETURN_ROW)
+ROWS_LIST.extend((STEP_ROW, STEP_NEXT_ROW))
+SPELLINGS["STL"] = Spelling("step", STEP_ROW.name, "", (BIT_OUT,))
+STEP_MOVES = {"SET": "step-set", "OUT": "step-out"}  # a step's SET/OUT of an S device
+STEP_MOVE_ROWS: dict[str, str] = {}
+for _mnemonic, _action in STEP_MOVES.items():
+    _moving = _row(_mnemonic, _sub(), "Step ladder: move to a step", "ADIMA GEÇ",
+                   suffix=".STEP", params=(_bit("step"), _bit("from", _RW)))
+    ROWS_LIST.append(_moving)
+    STEP_MOVE_ROWS[_mnemonic] = _moving.name
+    ACTIONS[_moving.name] = _action
+    FAMILIES[_BL] = (*FAMILIES[_BL], _moving.name)
+
 # Mnemonics of the manual's instruction list not simulated (docs/dialects.md says why): a
 # "not simulated" diagnostic rather than "unknown" (with those instructions.py lists).
 MORE_NOT_SIMULATED: frozenset[str] = frozenset(
@@ -245,7 +278,7 @@ MORE_NOT_SIMULATED: frozenset[str] = frozenset(
         "MTR", "HSCS", "HSCR", "HSZ", "SPD", "PWM", "PLSR", "IST", "TKY", "HKY", "DSW", "SEGD",
         "SEGL", "ARWS", "ASC", "PR", "RS", "PRUN", "DRVI", "DRVA", "ZRN")
     for d in ("", "D") for p in ("", "P")) | frozenset((
-        "FOR", "NEXT", "STL", "RET", "EI", "DI", "IRET", "CJP", "CALLP", "BOUT", "BSET", "BRST",
+        "FOR", "NEXT", "EI", "DI", "IRET", "CJP", "CALLP", "BOUT", "BSET", "BRST",
         "BLD", "BLDI", "BAND", "BANI", "BOR", "BORI",
         *(f"{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^")),
         *(f"D{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^")),

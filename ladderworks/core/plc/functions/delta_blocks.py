@@ -9,7 +9,8 @@ from S..S+n2-1. DECO S D n: the low n bits of S pick one of 2^n bits from D (a w
 the word, the others 0; n <= 4) to turn on, the others off. ENCO S D n: the number of the
 highest bit on among S's 2^n bits (a word S: its low 2^n bits) into D; none on: operation
 error, D kept. ALT D flips bit D at each execution (ALTP at each rising edge). SUM S D: the
-number of bits on in S into D, M1020 when none. NOP does nothing and passes its input on.
+number of bits on in S into D, M1020 when none. NOP (and WDT) do nothing and pass their input
+on. In a step ladder's step, SET Sm / OUT Sm moves on: Sm on and the step's own S off.
 docs/dialects.md.
 """
 
@@ -193,11 +194,18 @@ def _sum32(memory: Memory, params: tuple) -> None:
     memory.set_bit(M1020, count == 0)
 
 
+def _move_step(memory: Memory, params: tuple) -> None:
+    step, source = params
+    memory.set_bit(step, True)
+    if step != source:
+        memory.set_bit(source, False)
+
+
 register(__name__, {
     "zone-reset": _zone_reset, "block-move": _block_move, "fill": _fill, "fill32": _fill32,
     "exchange": _exchange, "exchange32": _exchange32, "shift-right": _shift_right,
     "shift-left": _shift_left, "decode": _decode, "encode": _encode, "alternate": _alternate,
-    "sum": _sum, "sum32": _sum32})
+    "sum": _sum, "sum32": _sum32, "step-set": _move_step, "step-out": _move_step})
 
 
 def _nothing(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
