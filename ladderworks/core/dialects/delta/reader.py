@@ -173,7 +173,8 @@ class _Reader:
         spec = lookup(row_name)
         assert spec is not None, row_name
         instruction = self.build(spec, mnemonic, kinds, operands, number, column, comment)
-        if spec.name in extra.STEP_MOVE_ROWS.values() and instruction.params:
+        if spec.name in extra.STEP_MOVE_ROWS.values() and instruction.params \
+                and self.step is not None:
             instruction = instruction._replace(params=(*instruction.params, self.step))
         self.add(index, instruction)
         if role == "load":
