@@ -266,6 +266,8 @@ MESSAGES: dict[str, str] = {
     "dvp-no-logic": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} without a logic result before it (start with LD)"),
     "dvp-pointer-twice": QT_TRANSLATE_NOOP("Diagnostic", "this pointer P number is used twice"),
+    "dvp-next-without-for": QT_TRANSLATE_NOOP("Diagnostic", "NEXT without a FOR before it"),
+    "dvp-for-without-next": QT_TRANSLATE_NOOP("Diagnostic", "FOR without its NEXT"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),

@@ -49,8 +49,8 @@ def _offered(spec: InstructionSpec, found: dialects.Dialect) -> bool:
     lines read as the row) and the row is simulated (`cnc` rows are kept, not run)."""
     if spec.cnc:
         return False
-    if spec.flow in (Flow.LABEL, Flow.SUBPROGRAM):  # a pointer line is its operand alone
-        return True
+    if spec.flow in (Flow.LABEL, Flow.SUBPROGRAM) and len(spec.params) == 1:
+        return True  # a pointer line is its operand alone (not Delta's FOR: a label and more)
     _params, problems = check_params(spec, [], found.name)
     return not any(problem.code.endswith("unknown-instruction") for problem in problems)
 

@@ -217,3 +217,37 @@ def test_stl_needs_an_s_device() -> None:
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
 def test_step_ladder_skips_exactly(monitored: bool) -> None:
     assert same_when_skipping(SEQUENCE, 1500, monitored) > 0
+
+
+LOOPS = ("LD X0\nMOV K0 D0\nFOR K3\nFOR D10\nLD M1000\nINC D0\nNEXT\nLD M1000\nINC D1\nNEXT\n"
+         "LD X0\nOUT Y0\nEND\n")
+
+
+@MODES
+def test_for_next_repeats_in_one_scan_and_nests(monitored: bool) -> None:
+    plc = engine(LOOPS, monitored=monitored)
+    put(plc, "D10", 4)
+    put(plc, "X0", 1)
+    plc.scan()
+    assert (get(plc, "D0"), get(plc, "D1"), get(plc, "Y0")) == (12, 3, 1)
+    put(plc, "X0", 0)
+    put(plc, "D10", 1)
+    plc.scan()
+    assert (get(plc, "D0"), get(plc, "D1")) == (15, 6)
+
+
+def test_for_next_save_as_written_and_pair_up() -> None:
+    from ladderworks.core.dialects.delta.printer import network_lines
+    from ladderworks.core.il.reading import parse_bytes
+
+    lines = [line for network in delta(LOOPS).networks for line in network_lines(network, False)]
+    assert [line.replace("\t", " ") for line in lines] == LOOPS.strip().split("\n")
+    result = parse_bytes(b"NEXT\nFOR K2\nLD X0\nOUT Y0\nEND\n", "delta")
+    assert [(d.code, d.line) for d in result.diagnostics] == [
+        ("dvp-next-without-for", 1), ("dvp-for-without-next", 2)]
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+def test_loops_skip_exactly(monitored: bool) -> None:
+    same_when_skipping("FOR K2\nLD X0\nINCP D20\nALTP M0\nNEXT\nLD M0\nOUT Y0\nEND\n", 800,
+                       monitored)

@@ -4,7 +4,14 @@ from __future__ import annotations
 
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import DEVICES
-from ladderworks.core.dialects.delta.rows_extra import STEP_MOVE_ROWS, STEP_NEXT_ROW, STEP_ROW
+from ladderworks.core.dialects.delta.rows_extra import (
+    LOOP_BACK_ROW,
+    LOOP_ROW,
+    LOOP_TEST_ROW,
+    STEP_MOVE_ROWS,
+    STEP_NEXT_ROW,
+    STEP_ROW,
+)
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, LabelRef, Network, ProgramRef
 from ladderworks.core.instructions import Combine, Flow, InstructionSpec, Kind, ParamKind, Write
@@ -51,9 +58,13 @@ def instruction_lines(instruction: Instruction) -> list[str]:
         if spec.write is Write.OUT and spec.negated:
             return ["INV", f"OUT{operand}{comment}", "INV"]
         return [f"{name}{operand}{comment}"]
+    if spec.name == LOOP_ROW.name:  # FOR n (its label is the reader's)
+        return [f"{spec.text_name}\t{operand_text(instruction.params[-1])}{comment}"]
+    if spec.name == LOOP_TEST_ROW.name:
+        return [spec.text_name + comment]
     if spec.flow in (Flow.LABEL, Flow.SUBPROGRAM):
         return [" ".join(operand_text(p) for p in instruction.params) + comment]
-    if spec.name == STEP_NEXT_ROW.name:  # the step before ends: its STL line says so
+    if spec.name in (STEP_NEXT_ROW.name, LOOP_BACK_ROW.name):  # written by STL, NEXT
         return []
     if spec.name == STEP_ROW.name or spec.name in STEP_MOVE_ROWS.values():  # STL Sn, SET Sm
         step = instruction.params[-1 if spec.name == STEP_ROW.name else 0]

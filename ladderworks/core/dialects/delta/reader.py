@@ -86,6 +86,8 @@ class _Reader:
         self.rung = _Rung(0)
         self.after_fend = False
         self.step: Address | None = None  # the S of the step ladder's step being read (STL)
+        self.loops: list[tuple[LabelRef, ParamValue, int, int]] = []  # FORs open: label, count
+        self.loop_count = 0  # FOR lines read
         self.pending: list[str] = []  # comment lines not yet given to a network
 
     def error(self, code: str, line: int, column: int, **args: object) -> None:
@@ -126,6 +128,8 @@ class _Reader:
             self.line(index, number, column, words, comment)
             last = index + 1
         self.close(last)
+        for _label, _count, number, column in self.loops:
+            self.error("dvp-for-without-next", number, column)
         return self.networks, last
 
     def line(self, index: int, number: int, column: int, words: list[str], comment: str) -> None:
@@ -148,6 +152,9 @@ class _Reader:
             return
         if spelling.role == "step":
             self.step_line(index, number, column, words, comment)
+            return
+        if spelling.role == "loop":
+            self.loop_line(index, number, column, words, comment)
             return
         rung = self.rung
         role = spelling.role
@@ -215,6 +222,36 @@ class _Reader:
         self.step = step
         self.rung.depth = 1
         self.rung.output = True  # an LD after it starts the step's first rung
+
+    def loop_line(self, index: int, number: int, column: int, words: list[str],
+                  comment: str) -> None:
+        """FOR n / NEXT: each a network of its own (docs/dialects.md)."""
+        self.close(index)
+        looping = words[0].upper() == "FOR"
+        if len(words) != (2 if looping else 1):
+            self.error("param-count", number, column, name=words[0].upper(),
+                       expected=1 if looping else 0, found=len(words) - 1)
+            return
+        if looping:
+            at = self.lines[index].find(words[1], column - 1) + 1 or column
+            count = self.operand("FOR", 1, rows.WORD_IN, words[1], number, at)
+            if count is None:
+                return
+            label = LabelRef(extra.LOOP_LABELS + self.loop_count)
+            self.loop_count += 1
+            self.loops.append((label, count, number, column))
+            self.add(index, Instruction(extra.LOOP_ROW.name, None, (label, count), comment, (),
+                                        number, column))
+        elif not self.loops:
+            self.error("dvp-next-without-for", number, column)
+            return
+        else:
+            label, count, _line, _column = self.loops.pop()
+            self.add(index, Instruction(extra.LOOP_TEST_ROW.name, None, (count,), comment, (),
+                                        number, column))
+            self.add(index, Instruction(extra.LOOP_BACK_ROW.name, None, (label,), "", (),
+                                        number, column))
+        self.close(index + 1)
 
     def build(self, spec: InstructionSpec, mnemonic: str, kinds: tuple[str, ...],
               operands: list[str], number: int, column: int, comment: str) -> Instruction:

@@ -261,6 +261,22 @@ for _mnemonic, _action in STEP_MOVES.items():
     ACTIONS[_moving.name] = _action
     FAMILIES[_BL] = (*FAMILIES[_BL], _moving.name)
 
+# -- FOR n ... NEXT: FOR is a label (a number no P uses) that keeps its count for the text; NEXT
+# is read as a box that counts the runs (on while another run is due) and a jump back to it -----
+LOOP_LABELS = 100_000  # the labels of FOR lines: 100000 + their number in the program
+_LOOP_LABEL = _param("label", ParamKind.LABEL, LOOP_LABELS, 2**31 - 1)
+LOOP_ROW = _row("FOR", _sub(), "Repeat (start)", "TEKRARLA (BAŞLANGIÇ)", inputs=(),
+                params=(_LOOP_LABEL, _n("count", 1, 32767)), flow=Flow.LABEL)
+LOOP_TEST_ROW = _row("NEXT", _sub(), "Repeat (end): count the runs", "TEKRARLA (SON)",
+                     inputs=(), params=(_n("count", 1, 32767),), w1=True)
+LOOP_BACK_ROW = _row("NEXT", _sub(), "Repeat (end): back to FOR", "TEKRARLA (GERİ DÖN)",
+                     suffix=".JUMP", params=(_LOOP_LABEL,), flow=Flow.LABEL_JUMP)
+ROWS_LIST.extend((LOOP_ROW, LOOP_TEST_ROW, LOOP_BACK_ROW))
+SPELLINGS["FOR"] = Spelling("loop", LOOP_ROW.name, "", (WORD_IN,))
+SPELLINGS["NEXT"] = Spelling("loop", LOOP_TEST_ROW.name)
+ACTIONS[LOOP_TEST_ROW.name] = "loop-next"
+FAMILIES[_BL] = (*FAMILIES[_BL], LOOP_TEST_ROW.name)
+
 # Mnemonics of the manual's instruction list not simulated (docs/dialects.md says why): a
 # "not simulated" diagnostic rather than "unknown" (with those instructions.py lists).
 MORE_NOT_SIMULATED: frozenset[str] = frozenset(
@@ -278,7 +294,7 @@ MORE_NOT_SIMULATED: frozenset[str] = frozenset(
         "MTR", "HSCS", "HSCR", "HSZ", "SPD", "PWM", "PLSR", "IST", "TKY", "HKY", "DSW", "SEGD",
         "SEGL", "ARWS", "ASC", "PR", "RS", "PRUN", "DRVI", "DRVA", "ZRN")
     for d in ("", "D") for p in ("", "P")) | frozenset((
-        "FOR", "NEXT", "EI", "DI", "IRET", "CJP", "CALLP", "BOUT", "BSET", "BRST",
+        "EI", "DI", "IRET", "CJP", "CALLP", "BOUT", "BSET", "BRST",
         "BLD", "BLDI", "BAND", "BANI", "BOR", "BORI",
         *(f"{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^")),
         *(f"D{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^")),

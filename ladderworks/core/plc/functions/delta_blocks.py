@@ -213,6 +213,17 @@ def _nothing(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params
     return bool(inputs[-1]) if inputs else False
 
 
+def _loop_next(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple
+               ) -> bool:
+    """NEXT of FOR n: on while another run of the loop is due (its count read at the first)."""
+    left = state.get("left", 0)
+    left = (value(ctx.memory, params[0]) if left <= 0 else left) - 1
+    state["left"] = max(left, 0)
+    return left > 0
+
+
 for _name in FAMILIES["delta_blocks"]:
     if ACTIONS[_name] == "nothing":
         function(_name)(_nothing)
+    elif ACTIONS[_name] == "loop-next":
+        function(_name)(_loop_next)
