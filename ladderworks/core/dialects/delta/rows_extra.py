@@ -198,6 +198,44 @@ _both(_LG, "to-bcd", "BCD", "Binary to BCD", "BINARY'DEN BCD'YE", (WORD_IN, WORD
 _both(_LG, "to-binary", "BIN", "BCD to binary", "BCD'DEN BINARY'YE", (WORD_IN, WORD_OUT),
       lambda wide: (_v("source", wide), _w("output", wide)))
 
+# -- more word arithmetic (delta_math) and word shifts, FIFO (delta_words) ------------------------
+_MA = "delta_math"
+_both(_MA, "complement", "CML", "Complement (NOT)", "TÜMLEYEN", (WORD_IN, WORD_OUT),
+      lambda wide: (_v("source", wide), _w("output", wide)))
+_both(_MA, "carry-right", "RCR", "Rotate right through the carry", "ELDE İLE SAĞA DÖNDÜR",
+      (WORD_OUT, WORD_IN),
+      lambda wide: (_w("output", wide, _RW), _n("bits", 1, 32 if wide else 16)))
+_both(_MA, "carry-left", "RCL", "Rotate left through the carry", "ELDE İLE SOLA DÖNDÜR",
+      (WORD_OUT, WORD_IN),
+      lambda wide: (_w("output", wide, _RW), _n("bits", 1, 32 if wide else 16)))
+_both(_MA, "bit-on", "BON", "Check a bit", "BİT KONTROL", (WORD_IN, BIT_OUT, WORD_IN),
+      lambda wide: (_v("source", wide), _bit("output"), _n("bit", 0, 31 if wide else 15)))
+_both(_MA, "mean", "MEAN", "Mean of words", "ORTALAMA", (WORD_IN, WORD_OUT, WORD_IN),
+      lambda wide: (_v("source", wide), _w("output", wide), _n("count", 1, 64)))
+_both(_MA, "root", "SQR", "Square root", "KAREKÖK", (WORD_IN, WORD_OUT),
+      lambda wide: (_v("source", wide), _w("output", wide)))
+_both(_MA, "absolute", "ABS", "Absolute value", "MUTLAK DEĞER", (WORD_OUT,),
+      lambda wide: (_w("output", wide, _RW),))
+_both(_MA, "swap", "SWAP", "Swap the bytes", "BAYT DEĞİŞTİR", (WORD_OUT,),
+      lambda wide: (_w("output", wide, _RW),))
+_both(_MA, "to-gray", "GRY", "Binary to Gray code", "BINARY'DEN GRAY KODUNA", (WORD_IN, WORD_OUT),
+      lambda wide: (_v("source", wide), _w("output", wide)))
+_both(_MA, "from-gray", "GBIN", "Gray code to binary", "GRAY KODUNDAN BINARY'YE",
+      (WORD_IN, WORD_OUT), lambda wide: (_v("source", wide), _w("output", wide)))
+_WO = "delta_words"
+for _mnemonic, _action, _title, _title_tr in (
+        ("WSFR", "word-right", "Word shift right", "KELİME KAYDIR SAĞA"),
+        ("WSFL", "word-left", "Word shift left", "KELİME KAYDIR SOLA")):
+    _box(_WO, _action, _mnemonic, _title, _title_tr, (WORD_IN, WORD_OUT, WORD_IN, WORD_IN),
+         (_v("source", False), _w("output", False, _RW), _n("words", 1, 512),
+          _n("shift", 1, 512)))
+_box(_WO, "fifo-write", "SFWR", "Shift register write (FIFO)", "KAYDIRMALI YAZ (FIFO)",
+     (WORD_IN, WORD_OUT, WORD_IN), (_v("source", False), _w("output", False, _RW),
+                                    _n("count", 2, 512)))
+_box(_WO, "fifo-read", "SFRD", "Shift register read (FIFO)", "KAYDIRMALI OKU (FIFO)",
+     (WORD_OUT, WORD_OUT, WORD_IN), (_w("source", False, _RW), _w("output", False),
+                                     _n("count", 2, 512)))
+
 # -- floating point (delta_float): binary floating point in a D pair, low word first ----------
 _FL = "delta_float"
 _both(_FL, "float", "FLT", "Integer to floating point", "TAMSAYIDAN KAYAN NOKTAYA",
@@ -281,14 +319,13 @@ FAMILIES[_BL] = (*FAMILIES[_BL], LOOP_TEST_ROW.name)
 # "not simulated" diagnostic rather than "unknown" (with those instructions.py lists).
 MORE_NOT_SIMULATED: frozenset[str] = frozenset(
     f"{d}{name}{p}" for name in (
-        "SMOV", "CML", "RCR", "RCL", "WSFR", "WSFL", "SFWR", "SFRD", "BON", "MEAN", "ANS", "ANR",
-        "SQR", "SER", "ABSD", "INCD", "TTMR", "STMR", "RAMP", "DTM", "SORT", "ASCI", "HEX",
-        "CCD", "VRRD", "VRSC", "ABS", "PID", "MODRD", "MODWR", "MODRW", "FWD", "REV", "RDST",
+        "SMOV", "ANS", "ANR", "SER", "ABSD", "INCD", "TTMR", "STMR", "RAMP", "DTM", "SORT", "ASCI",
+        "HEX", "CCD", "VRRD", "VRSC", "PID", "MODRD", "MODWR", "MODRW", "FWD", "REV", "RDST",
         "RSTEF", "LRC", "CRC", "SWRD", "RAD", "DEG", "EBCD", "EBIN", "EXP", "LN", "LOG", "ESQR",
         "POW", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SINH", "COSH", "TANH", "DELAY",
-        "GPWM", "FTC", "CVM", "SWAP", "MEMR", "MEMW", "PWD", "RTMU", "RTMD", "RAND", "ABSR",
-        "PLSV", "TCMP", "TZCP", "TADD", "TSUB", "TRD", "TWR", "MVM", "HOUR", "GRY", "GBIN",
-        "ADDR", "SUBR", "MULR", "DIVR", "MMOV", "GPS", "SPA", "WSUM", "MAND", "MOR", "MXOR",
+        "GPWM", "FTC", "CVM", "MEMR", "MEMW", "PWD", "RTMU", "RTMD", "RAND", "ABSR",
+        "PLSV", "TCMP", "TZCP", "TADD", "TSUB", "TRD", "TWR", "MVM", "HOUR", "ADDR", "SUBR",
+        "MULR", "DIVR", "MMOV", "GPS", "SPA", "WSUM", "MAND", "MOR", "MXOR",
         "MXNR", "MINV", "MCMP", "MBRD", "MBWR", "MBC", "PPMR", "PPMA", "CIMR", "CIMA", "PTPO",
         "HST", "CLLM", "VSPO", "ICF", "SCAL", "SCLP", "CMPT", "ASDRW", "CSFO", "REF", "REFF",
         "MTR", "HSCS", "HSCR", "HSZ", "SPD", "PWM", "PLSR", "IST", "TKY", "HKY", "DSW", "SEGD",

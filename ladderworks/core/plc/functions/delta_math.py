@@ -1,0 +1,155 @@
+"""Delta DVP word arithmetic beyond the four operations: CML, RCR/RCL, BON, MEAN, SQR, ABS,
+SWAP, GRY/GBIN, each with its 32-bit D form and pulse forms.
+
+CML S D: D = NOT S. RCR/RCL D n: D and the carry M1022 rotated together by n bits (17 or 33
+bits). BON S D n: bit D = bit n of S. MEAN S D n: the mean of the n words (pairs) from S,
+toward zero. SQR S D: the integer square root; S < 0: operation error, D kept; M1020 when 0.
+ABS D: D = |D| (-32768 stays). SWAP D: its high and low bytes exchanged (DSWAP: in each word).
+GRY S D: S as Gray code; GBIN S D: Gray code S as binary; S < 0: operation error, D kept.
+docs/dialects.md.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from math import isqrt
+
+from ladderworks.core.address import Address
+from ladderworks.core.plc.functions.delta_blocks import word_after
+from ladderworks.core.plc.functions.delta_words32 import (
+    Action,
+    operation_error,
+    register,
+    store32,
+    toward_zero,
+    value32,
+)
+from ladderworks.core.plc.functions.dvp_data import M1020, M1022, value
+from ladderworks.core.plc.memory import Memory
+
+Wide = Callable[[Memory, tuple, bool], None]  # an action of both widths (`wide`: 32-bit)
+
+
+def _reader(wide: bool) -> Callable[[Memory, object], int]:
+    return value32 if wide else value
+
+
+def _store(memory: Memory, output: Address, number: int, wide: bool) -> None:
+    if wide:
+        store32(memory, output, number)
+    else:
+        memory.write(output, number, 2)
+
+
+def _complement(memory: Memory, params: tuple, wide: bool) -> None:
+    source, output = params
+    _store(memory, output, ~_reader(wide)(memory, source), wide)
+
+
+def _carry_rotate(memory: Memory, params: tuple, wide: bool, right: bool) -> None:
+    output, count = params
+    bits = 32 if wide else 16
+    n = value(memory, count)
+    if not 1 <= n <= bits:
+        operation_error(memory)
+        return
+    word = _reader(wide)(memory, output) & ((1 << bits) - 1)
+    carry = memory.bit(M1022)
+    for _ in range(n):
+        if right:
+            word, carry = word >> 1 | carry << (bits - 1), word & 1
+        else:
+            word, carry = (word << 1 | carry) & ((1 << bits) - 1), word >> (bits - 1) & 1
+    _store(memory, output, word, wide)
+    memory.set_bit(M1022, bool(carry))
+
+
+def _bit_on(memory: Memory, params: tuple, wide: bool) -> None:
+    source, output, which = params
+    n = value(memory, which)
+    if not 0 <= n < (32 if wide else 16):
+        operation_error(memory)
+        return
+    memory.set_bit(output, bool(_reader(wide)(memory, source) >> n & 1))
+
+
+def _mean(memory: Memory, params: tuple, wide: bool) -> None:
+    source, output, count = params
+    n = value(memory, count)
+    if not 1 <= n <= 64:
+        operation_error(memory)
+        return
+    if isinstance(source, int):
+        numbers = [source] * n
+    else:
+        places = [word_after(source, k * (2 if wide else 1)) for k in range(n)]
+        numbers = [_reader(wide)(memory, place) for place in places if place is not None]
+    if numbers:
+        _store(memory, output, toward_zero(sum(numbers), len(numbers)), wide)
+
+
+def _root(memory: Memory, params: tuple, wide: bool) -> None:
+    source, output = params
+    number = _reader(wide)(memory, source)
+    if number < 0:
+        operation_error(memory)
+        return
+    result = isqrt(number)
+    _store(memory, output, result, wide)
+    memory.set_bit(M1020, result == 0)
+
+
+def _absolute(memory: Memory, params: tuple, wide: bool) -> None:
+    (output,) = params
+    _store(memory, output, abs(_reader(wide)(memory, output)), wide)
+
+
+def _swap(memory: Memory, params: tuple, wide: bool) -> None:
+    (output,) = params
+    raw = _reader(wide)(memory, output)
+    swapped = ((raw & 0x00FF_00FF) << 8) | ((raw >> 8) & 0x00FF_00FF)
+    _store(memory, output, swapped, wide)
+
+
+def _gray(memory: Memory, params: tuple, wide: bool, encode: bool) -> None:
+    source, output = params
+    number = _reader(wide)(memory, source)
+    if number < 0:
+        operation_error(memory)
+        return
+    if encode:
+        result = number ^ (number >> 1)
+    else:
+        result, shift = number, number >> 1
+        while shift:
+            result ^= shift
+            shift >>= 1
+    _store(memory, output, result, wide)
+
+
+def _forms(action: Wide) -> tuple[Action, Action]:
+    def narrow(memory: Memory, params: tuple) -> None:
+        action(memory, params, False)
+
+    def wide(memory: Memory, params: tuple) -> None:
+        action(memory, params, True)
+
+    narrow.__name__ = wide.__name__ = action.__name__
+    return narrow, wide
+
+
+def _actions() -> dict[str, Action]:
+    found: dict[str, Action] = {}
+    pairs: tuple[tuple[str, Wide], ...] = (
+        ("complement", _complement), ("bit-on", _bit_on), ("mean", _mean), ("root", _root),
+        ("absolute", _absolute), ("swap", _swap),
+        ("carry-right", lambda m, p, w: _carry_rotate(m, p, w, True)),
+        ("carry-left", lambda m, p, w: _carry_rotate(m, p, w, False)),
+        ("to-gray", lambda m, p, w: _gray(m, p, w, True)),
+        ("from-gray", lambda m, p, w: _gray(m, p, w, False)))
+    for key, action in pairs:
+        found[key], found[key + "32"] = _forms(action)
+    return found
+
+
+register(__name__, _actions())
