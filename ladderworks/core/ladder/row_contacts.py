@@ -41,9 +41,10 @@ _FOUND: dict[tuple[str, Operation, Combine, int, object], InstructionSpec] = {}
 
 
 def operand_width(spec: InstructionSpec) -> object:
-    """The width of a contact row's last operand: a 32-bit comparison (Delta DLD=) is coded
-    with the 32-bit rows, a 16-bit one with the 16-bit rows."""
-    return spec.params[-1].width if spec.params else 0
+    """The width and name of a contact row's last operand: a 32-bit comparison (Delta DLD=) is
+    coded with the 32-bit rows, a 16-bit one with the 16-bit rows, a floating-point one (FLD=,
+    operands f1, f2) with the floating-point rows."""
+    return (spec.params[-1].width, spec.params[-1].name) if spec.params else 0
 
 
 def _rows(dialect: str, operation: Operation, combine: Combine, pushes: int, width: object

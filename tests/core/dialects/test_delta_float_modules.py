@@ -140,3 +140,48 @@ def test_plsy_skips_exactly_and_wakes_at_each_pulse() -> None:
 def test_modules_and_floats_skip_exactly(monitored: bool) -> None:
     same_when_skipping("LD X0\nPLSY D0 K20 Y0\nLD X1\nFROMP K0 K0 D10 K2\nTO K0 K5 D1 K1\n"
                        "LD X2\nDEADDP D2 K1 D2\nEND\n", 1500, monitored)
+
+
+@MODES
+def test_float_functions_and_degrees(monitored: bool) -> None:
+    plc = engine("LD X0\nDESQR K16 D0\nDLN K1 D2\nDEXP K0 D4\nDLOG K10 K1000 D6\nDPOW K2 K10 D8\n"
+                 "DSIN D20 D10\nDRAD K180 D12\nDDEG D12 D14\nDLN K0 D16\nEND\n",
+                 monitored=monitored)
+    put(plc, "D20:4", single(30.0))
+    put(plc, "D16:4", 5)
+    put(plc, "M1018", 1)  # degrees
+    put(plc, "X0", 1)
+    plc.scan()
+    assert [real(get(plc, f"D{k}:4")) for k in (0, 2, 4, 8)] == [4.0, 0.0, 1.0, 1024.0]
+    assert abs(real(get(plc, "D6:4")) - 3.0) < 1e-6
+    assert abs(real(get(plc, "D10:4")) - 0.5) < 1e-6
+    assert abs(real(get(plc, "D12:4")) - 3.14159265) < 1e-6
+    assert abs(real(get(plc, "D14:4")) - 180.0) < 1e-4
+    assert get(plc, "D16:4") == 5 and get(plc, "M1067") == 1  # ln 0: kept
+
+
+@MODES
+@pytest.mark.parametrize(("op", "test"), [
+    ("=", lambda a, b: a == b), (">", lambda a, b: a > b), ("<", lambda a, b: a < b),
+    ("<>", lambda a, b: a != b), ("<=", lambda a, b: a <= b), (">=", lambda a, b: a >= b)])
+def test_floating_point_contacts(monitored: bool, op: str, test) -> None:
+    plc = engine(f"FLD{op} D0 D2\nOUT Y0\nLD X0\nFAND{op} D0 K-2\nOUT Y1\nLD X0\n"
+                 f"FOR{op} D2 K3\nOUT Y2\nEND\n", monitored=monitored)
+    for a, b, x0 in [(-2.5, -2.0, 1), (1.5, 1.5, 0), (3.0, -1e10, 1), (-2.0, 3.0, 1)]:
+        put(plc, "D0:4", single(a))
+        put(plc, "D2:4", single(b))
+        put(plc, "X0", x0)
+        plc.scan()
+        assert get(plc, "Y0") == int(test(a, b))
+        assert get(plc, "Y1") == int(x0 and test(a, -2.0))
+        assert get(plc, "Y2") == int(x0 or test(b, 3.0))
+
+
+def test_a_drawn_float_contact_codes_as_a_float_contact() -> None:
+    from ladderworks.core.instructions import Combine
+    from ladderworks.core.ladder.row_contacts import row_for
+
+    for start, wide in (("DVP.FLD=", "DVP.FAND="), ("DVP.DLD=", "DVP.DAND="),
+                        ("DVP.LD=", "DVP.AND=")):
+        found = row_for(start, Combine.AND, False)
+        assert found is not None and found.name == wide

@@ -31,7 +31,8 @@ def test_delta_offers_structure_and_one_contact_per_operation() -> None:
     assert [spec.name for spec in contacts] == [
         "DVP.LDP", "DVP.LDF", "DVP.LD=", "DVP.LD>", "DVP.LD<", "DVP.LD<>", "DVP.LD<=",
         "DVP.LD>=", "DVP.DLD=", "DVP.DLD>", "DVP.DLD<", "DVP.DLD<>", "DVP.DLD<=",
-        "DVP.DLD>="]  # the READ form: coding picks AND=/OR=/LD= .STK by the place; 32-bit apart
+        "DVP.DLD>=", "DVP.FLD=", "DVP.FLD>", "DVP.FLD<", "DVP.FLD<>", "DVP.FLD<=",
+        "DVP.FLD>="]  # the READ form: coding picks AND=/OR=/LD= .STK by the place; 32-bit apart
     equal = lookup("DVP.LD=")
     assert equal is not None
     assert [s.text_name for s in same_operation(equal)] == ["LD=", "AND=", "OR="]

@@ -275,8 +275,9 @@ NOT_SIMULATED: frozenset[str] = frozenset((
 
 # The functions each module of plc/functions implements for Delta (plc/families.py reads it).
 FAMILIES: dict[str, tuple[str, ...]] = {
-    "dvp_contacts": tuple(row.name for row in ROWS
-                          if row.combine is not Combine.NONE and row.kind is Kind.FUNCTION),
+    "dvp_contacts": tuple(row.name for row in ROWS  # (FLD= ...: delta_float's, by ACTIONS)
+                          if row.combine is not Combine.NONE and row.kind is Kind.FUNCTION
+                          and row.name not in rows_extra.ACTIONS),
     "dvp_timers": ("DVP.TMR",),
     "dvp_counters": ("DVP.CNT", "DVP.DCNT", "DVP.RST.WORD"),
     "dvp_data": (*(f"DVP.{name}{pulse}" for name in _DATA for pulse in ("", "P")),

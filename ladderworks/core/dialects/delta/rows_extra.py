@@ -33,6 +33,7 @@ from ladderworks.core.dialects.delta.instructions import (
 from ladderworks.core.instructions import (
     Combine,
     Flow,
+    InstructionSpec,
     Operation,
     Param,
     ParamAccess,
@@ -260,6 +261,53 @@ _box(_FL, "fzone", "DEZCP", "Floating point zone compare", "KAYAN NOKTA BÖLGE K
      (VALUE32, VALUE32, VALUE32, BIT_OUT),
      (_v("low", True), _v("high", True), _v("input", True), _bit("output")))
 
+for _mnemonic, _action, _title, _title_tr in (
+        ("DRAD", "radians", "Degrees to radians", "DERECEDEN RADYANA"),
+        ("DDEG", "degrees", "Radians to degrees", "RADYANDAN DERECEYE"),
+        ("DEXP", "exp", "Exponential", "ÜSTEL"),
+        ("DLN", "ln", "Natural logarithm", "DOĞAL LOGARİTMA"),
+        ("DESQR", "sqrt", "Floating point square root", "KAYAN NOKTA KAREKÖK"),
+        ("DSIN", "sin", "Sine", "SİNÜS"), ("DCOS", "cos", "Cosine", "KOSİNÜS"),
+        ("DTAN", "tan", "Tangent", "TANJANT"), ("DASIN", "asin", "Arc sine", "ARK SİNÜS"),
+        ("DACOS", "acos", "Arc cosine", "ARK KOSİNÜS"),
+        ("DATAN", "atan", "Arc tangent", "ARK TANJANT"),
+        ("DSINH", "sinh", "Hyperbolic sine", "HİPERBOLİK SİNÜS"),
+        ("DCOSH", "cosh", "Hyperbolic cosine", "HİPERBOLİK KOSİNÜS"),
+        ("DTANH", "tanh", "Hyperbolic tangent", "HİPERBOLİK TANJANT")):
+    _box(_FL, _action, _mnemonic, _title, _title_tr, (VALUE32, WORD_OUT32),
+         (_v("source", True), _w("output", True)))
+_box(_FL, "log", "DLOG", "Logarithm", "LOGARİTMA", (VALUE32, VALUE32, WORD_OUT32),
+     (_v("base", True), _v("source", True), _w("output", True)))
+_box(_FL, "power", "DPOW", "Power", "ÜS ALMA", (VALUE32, VALUE32, WORD_OUT32),
+     (_v("base", True), _v("exponent", True), _w("output", True)))
+# floating-point contacts FLD= ... FOR>= (API 275-292): run by delta_float (ACTIONS), drawn as
+# the comparisons; their operands are named f1, f2 so coding keeps them apart from DLD=
+_FLOATS = (_v("f1", True), _v("f2", True))
+for _op in COMPARISONS:
+    _test = Operation(_op)
+    for _start in ("LD", "AND", "OR"):
+        _name = f"F{_start}{_op}"
+        _place = {"LD": "", "AND": " in series", "OR": " in parallel"}[_start]
+        _place_tr = {"LD": "", "AND": " (SERİ)", "OR": " (PARALEL)"}[_start]
+        _title = f"Compare {_op} contact{_place} (floating point)"
+        _title_tr = f"KARŞILAŞTIRMA KONTAĞI {_op}{_place_tr} (KAYAN NOKTA)"
+        _made: tuple[InstructionSpec, ...]
+        if _start == "LD":
+            _made = (_row(_name, _sub(), _title, _title_tr, inputs=(), params=_FLOATS,
+                          combine=Combine.READ, w1=True, operation=_test),
+                     _row(_name, _sub(), _title, _title_tr, suffix=STK, inputs=(),
+                          params=_FLOATS, combine=Combine.READ, pushes=1, w1=True,
+                          operation=_test))
+            _add(_name, "load", (VALUE32, VALUE32), *_made)
+        else:
+            _made = (_row(_name, _sub(), _title, _title_tr, params=_FLOATS,
+                          combine=Combine.AND if _start == "AND" else Combine.OR, w1=True,
+                          operation=_test),)
+            _add(_name, "contact", (VALUE32, VALUE32), *_made)
+        for _contact in _made:
+            ACTIONS[_contact.name] = "fcontact"
+            FAMILIES[_FL] = (*FAMILIES[_FL], _contact.name)
+
 # -- special modules and pulse output (delta_modules) -----------------------------------------
 _MD = "delta_modules"
 _both(_MD, "from", "FROM", "Read a special module's registers", "ÖZEL MODÜLDEN OKU",
@@ -334,8 +382,7 @@ MORE_NOT_SIMULATED: frozenset[str] = frozenset(
         "EI", "DI", "IRET", "CJP", "CALLP", "BOUT", "BSET", "BRST",
         "BLD", "BLDI", "BAND", "BANI", "BOR", "BORI",
         *(f"{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^")),
-        *(f"D{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^")),
-        *(f"F{start}{op}" for start in ("LD", "AND", "OR") for op in COMPARISONS)))
+        *(f"D{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^"))))
 
 # BIT_IN is the source of SFTR/SFTL; kept here so the reader's table names every kind used.
 KINDS_USED = (BIT_IN, BIT_OUT, WORD_IN, WORD_OUT, VALUE32, WORD_OUT32, DEVICE_OUT, DEVICE_IN,

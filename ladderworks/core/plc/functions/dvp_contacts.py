@@ -14,6 +14,7 @@ import operator
 from collections.abc import Callable
 
 from ladderworks.core.dialects.delta.instructions import FAMILIES, ROWS
+from ladderworks.core.dialects.delta.rows_extra import ACTIONS
 from ladderworks.core.instructions import Combine, Operation
 from ladderworks.core.plc.functions import FunctionContext, function
 from ladderworks.core.plc.functions.delta_words32 import value32
@@ -58,7 +59,7 @@ def _edge(combine: Combine, falling: bool) -> Impl:
 
 
 for _row in ROWS:  # each contact row by its fields: how it joins, what it tests
-    if _row.name in FAMILIES["dvp_contacts"]:
+    if _row.name in FAMILIES["dvp_contacts"] and _row.name not in ACTIONS:  # (FLD=: floats)
         test = _TESTS.get(_row.operation)
         function(_row.name)(_compare(_row.combine, test, _row.params[0].width == 4)
                             if test is not None
