@@ -251,3 +251,20 @@ def test_for_next_save_as_written_and_pair_up() -> None:
 def test_loops_skip_exactly(monitored: bool) -> None:
     same_when_skipping("FOR K2\nLD X0\nINCP D20\nALTP M0\nNEXT\nLD M0\nOUT Y0\nEND\n", 800,
                        monitored)
+
+
+def test_a_step_starting_with_ld_has_no_dangling_read() -> None:
+    from ladderworks.core.compiler import compile_program
+    from ladderworks.core.il.reading import parse_bytes
+
+    text = "LD M1002\nSET S0\nSTL S0\nLD X0\nOUT Y0\nLD X1\nSET S1\nSTL S1\nOUT Y1\nRET\nEND\n"
+    result = parse_bytes(text.encode(), "delta")
+    compiled = compile_program(result.program)
+    assert [d.code for d in (*result.diagnostics, *compiled.diagnostics)] == []
+    plc = engine(text)
+    put(plc, "X0", 1)
+    plc.scan()
+    assert (get(plc, "Y0"), get(plc, "Y1")) == (1, 0)
+    put(plc, "X1", 1)
+    plc.run_scans(2)
+    assert (get(plc, "Y0"), get(plc, "Y1"), get(plc, "S0")) == (0, 1, 0)

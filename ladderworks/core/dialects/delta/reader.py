@@ -86,6 +86,7 @@ class _Reader:
         self.rung = _Rung(0)
         self.after_fend = False
         self.step: Address | None = None  # the S of the step ladder's step being read (STL)
+        self.step_read: Address | None = None  # the S of a STL line just read
         self.loops: list[tuple[LabelRef, ParamValue, int, int]] = []  # FORs open: label, count
         self.loop_count = 0  # FOR lines read
         self.pending: list[str] = []  # comment lines not yet given to a network
@@ -156,6 +157,9 @@ class _Reader:
         if spelling.role == "loop":
             self.loop_line(index, number, column, words, comment)
             return
+        if spelling.role in ("output", "contact", "filler"):
+            self.after_step(index, number, column)
+        self.step_read = None
         rung = self.rung
         role = spelling.role
         if role == "alone" or (role == "load" and rung.output and rung.pushed == 0):
@@ -218,10 +222,18 @@ class _Reader:
         self.add(index, Instruction(read.name, step, (), "", (), number, column))
         self.add(index, Instruction(extra.STEP_ROW.name, None, (0, step), comment, (), number,
                                     column))
-        self.add(index, Instruction(read.name, step, (), "", (), number, column))
-        self.step = step
-        self.rung.depth = 1
+        self.step = self.step_read = step
         self.rung.output = True  # an LD after it starts the step's first rung
+
+    def after_step(self, index: int, number: int, column: int) -> None:
+        """An output or contact right after STL Sn reads Sn (STL is its LD)."""
+        step, self.step_read = self.step_read, None
+        if step is not None and self.rung.instructions \
+                and self.rung.instructions[-1].name == extra.STEP_ROW.name:
+            read = lookup("RD")
+            assert read is not None
+            self.add(index, Instruction(read.name, step, (), "", (), number, column))
+            self.rung.depth = 1
 
     def loop_line(self, index: int, number: int, column: int, words: list[str],
                   comment: str) -> None:

@@ -27,7 +27,7 @@ from ladderworks.core.plc.functions.delta_words32 import (
     value32,
     width32,
 )
-from ladderworks.core.plc.functions.dvp_data import M1020, bit_after, value
+from ladderworks.core.plc.functions.dvp_data import M1020, value
 from ladderworks.core.plc.memory import Memory
 
 
@@ -42,6 +42,16 @@ def word_after(address: Address, count: int) -> Address | None:
         return DEVICES.word(device.spell(number + count))[0]
     except AddressError:  # past the last device of its letter
         return None
+
+
+def bit_range(address: Address, count: int) -> list[Address] | None:
+    """The `count` bit devices from bit device `address` (M10, M11 ...; X7, X10 ...), or None
+    when they run past the last of its letter."""
+    found = DEVICES.device_of(address)
+    if found is None or count < 0 or found[1] + count - 1 > found[0].last:
+        return None
+    device, number = found
+    return [device.bit_address(number + k) for k in range(count)]
 
 
 def _words(address: Address, count: int, step: int = 1) -> list[Address]:
@@ -127,11 +137,15 @@ def _shift(memory: Memory, params: tuple, right: bool) -> None:
     if not 0 < n2 <= n1:
         operation_error(memory)
         return
-    old = [memory.bit(bit_after(output, k)) for k in range(n1)]
-    new = [memory.bit(bit_after(source, k)) for k in range(n2)]
+    targets, sources = bit_range(output, n1), bit_range(source, n2)
+    if targets is None or sources is None:
+        operation_error(memory)
+        return
+    old = [memory.bit(place) for place in targets]
+    new = [memory.bit(place) for place in sources]
     shifted = old[n2:] + new if right else new + old[:n1 - n2]
-    for k, on in enumerate(shifted):
-        memory.set_bit(bit_after(output, k), on)
+    for place, on in zip(targets, shifted, strict=True):
+        memory.set_bit(place, on)
 
 
 def _shift_right(memory: Memory, params: tuple) -> None:
@@ -153,8 +167,12 @@ def _decode(memory: Memory, params: tuple) -> None:
     if word:
         memory.write(output, 1 << which, 2)
         return
-    for k in range(1 << n):
-        memory.set_bit(bit_after(output, k), k == which)
+    places = bit_range(output, 1 << n)
+    if places is None:
+        operation_error(memory)
+        return
+    for k, place in enumerate(places):
+        memory.set_bit(place, k == which)
 
 
 def _encode(memory: Memory, params: tuple) -> None:
@@ -167,7 +185,11 @@ def _encode(memory: Memory, params: tuple) -> None:
     if word:
         states = [memory.read(source, 2) >> k & 1 for k in range(1 << n)]
     else:
-        states = [memory.bit(bit_after(source, k)) for k in range(1 << n)]
+        places = bit_range(source, 1 << n)
+        if places is None:
+            operation_error(memory)
+            return
+        states = [memory.bit(place) for place in places]
     on = [k for k, state in enumerate(states) if state]
     if not on:
         operation_error(memory)

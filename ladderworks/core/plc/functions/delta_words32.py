@@ -16,7 +16,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import DEVICES
 from ladderworks.core.dialects.delta.rows_extra import ACTIONS, FAMILIES
 from ladderworks.core.instructions import lookup
-from ladderworks.core.plc.functions import FunctionContext, function
+from ladderworks.core.plc.functions import FunctionContext, fits, function
 from ladderworks.core.plc.functions.dvp_data import (
     M1020,
     M1021,
@@ -52,8 +52,13 @@ def value32(memory: Memory, operand: object) -> int:
 
 
 def store32(memory: Memory, output: Address, number: int) -> None:
-    """Write `number` to a 32-bit operand (a C0-C199 counter gets its low 16 bits)."""
-    memory.write(output, number, width32(output))
+    """Write `number` to a 32-bit operand (a C0-C199 counter gets its low 16 bits); a pair
+    past the end of its area (D4999 reached by a block's step) is an operation error."""
+    width = width32(output)
+    if not fits(memory, output, width):
+        operation_error(memory)
+        return
+    memory.write(output, number, width)
 
 
 def operation_error(memory: Memory) -> None:
