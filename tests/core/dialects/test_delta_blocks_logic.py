@@ -268,3 +268,25 @@ def test_a_step_starting_with_ld_has_no_dangling_read() -> None:
     put(plc, "X1", 1)
     plc.run_scans(2)
     assert (get(plc, "Y0"), get(plc, "Y1"), get(plc, "S0")) == (0, 1, 0)
+
+
+PULSED = ("LD X0\nCJP P1\nLD M1000\nINC D0\nP1\nLD X1\nCALLP P2\nFEND\nP2\nLD M1000\nINC D1\n"
+          "SRET\nEND\n")
+
+
+@MODES
+def test_cjp_callp_act_on_the_rising_edge_only(monitored: bool) -> None:
+    plc = engine(PULSED, monitored=monitored)
+    put(plc, "X0", 1)
+    put(plc, "X1", 1)
+    plc.run_scans(3)
+    assert (get(plc, "D0"), get(plc, "D1")) == (2, 1)  # jumped over once, called once
+    from ladderworks.core.dialects.delta.printer import network_lines
+
+    lines = [line for network in delta(PULSED).networks for line in network_lines(network, False)]
+    assert [line.replace("\t", " ") for line in lines] == PULSED.strip().split("\n")
+
+
+@pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
+def test_cjp_callp_skip_exactly(monitored: bool) -> None:
+    same_when_skipping(PULSED, 800, monitored)

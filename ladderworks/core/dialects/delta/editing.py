@@ -7,6 +7,7 @@ from ladderworks.core.dialects.delta.rows_extra import (
     LOOP_BACK_ROW,
     LOOP_ROW,
     LOOP_TEST_ROW,
+    PULSED,
     STEP_MOVE_ROWS,
     STEP_NEXT_ROW,
     STEP_ROW,
@@ -16,7 +17,7 @@ from ladderworks.core.instructions import BY_NAME, Flow, InstructionSpec, Kind
 # The step ladder's rows the reader makes of STL and of a step's SET/OUT Sm: placed from the
 # palette they would not read back as themselves (a STL is read with its LD Sn).
 NOT_PLACED = frozenset((STEP_ROW.name, STEP_NEXT_ROW.name, *STEP_MOVE_ROWS.values(),
-                        LOOP_ROW.name, LOOP_TEST_ROW.name, LOOP_BACK_ROW.name))
+                        LOOP_ROW.name, LOOP_TEST_ROW.name, LOOP_BACK_ROW.name, *PULSED))
 
 
 def _main_end() -> str:

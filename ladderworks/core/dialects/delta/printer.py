@@ -8,6 +8,7 @@ from ladderworks.core.dialects.delta.rows_extra import (
     LOOP_BACK_ROW,
     LOOP_ROW,
     LOOP_TEST_ROW,
+    PULSED,
     STEP_MOVE_ROWS,
     STEP_NEXT_ROW,
     STEP_ROW,
@@ -94,7 +95,8 @@ def network_lines(network: Network, first: bool) -> list[str]:
     out = [f"; {text}" for text in network.comments]
     instructions = network.instructions
     for index, instruction in enumerate(instructions):
-        if _step_read(instructions, index):
+        if _step_read(instructions, index) or (
+                index > 0 and instructions[index - 1].name in PULSED):  # CJP's CJ
             continue
         out.extend(instruction_lines(instruction))
     return out

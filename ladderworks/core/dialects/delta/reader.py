@@ -188,6 +188,10 @@ class _Reader:
                 and self.step is not None:
             instruction = instruction._replace(params=(*instruction.params, self.step))
         self.add(index, instruction)
+        if spec.name in extra.PULSED and instruction.params:  # CJP/CALLP: then the CJ/CALL
+            gated = rows.SPELLINGS[extra.PULSED[spec.name]].row
+            self.add(index, Instruction(gated, None, instruction.params, "", (), number,
+                                        column))
         if role == "load":
             rung.depth += 1
         elif role == "block":

@@ -17,6 +17,8 @@ from ladderworks.core.dialects.delta.instructions import (
     COMPARISONS,
     INT16,
     INT32,
+    LABEL,
+    PROGRAM,
     ROWS_LIST,
     SPELLINGS,
     STK,
@@ -363,6 +365,21 @@ SPELLINGS["NEXT"] = Spelling("loop", LOOP_TEST_ROW.name)
 ACTIONS[LOOP_TEST_ROW.name] = "loop-next"
 FAMILIES[_BL] = (*FAMILIES[_BL], LOOP_TEST_ROW.name)
 
+# -- CJP Pn / CALLP Pn: read as a rising-edge box (that keeps the pointer for the text) and the
+# CJ / CALL it gates --------------------------------------------------------------------------
+PULSED: dict[str, str] = {}  # the edge row's name -> the mnemonic of the jump or call it gates
+for _mnemonic, _target, _kind, _title, _title_tr in (
+        ("CJP", "CJ", ParamKind.LABEL, "Conditional jump, on the rising edge",
+         "KOŞULLU ATLAMA (DARBE)"),
+        ("CALLP", "CALL", ParamKind.PROGRAM, "Call subroutine, on the rising edge",
+         "ALT PROGRAM ÇAĞRISI (DARBE)")):
+    _edge = _row(_mnemonic, _sub(), _title, _title_tr, params=(_param("pointer", _kind, 0, 255),),
+                 w1=True, pulse=True)
+    _add(_mnemonic, "output", (LABEL if _kind is ParamKind.LABEL else PROGRAM,), _edge)
+    PULSED[_edge.name] = _target
+    ACTIONS[_edge.name] = "edge"
+    FAMILIES[_BL] = (*FAMILIES[_BL], _edge.name)
+
 # Mnemonics of the manual's instruction list not simulated (docs/dialects.md says why): a
 # "not simulated" diagnostic rather than "unknown" (with those instructions.py lists).
 MORE_NOT_SIMULATED: frozenset[str] = frozenset(
@@ -379,7 +396,7 @@ MORE_NOT_SIMULATED: frozenset[str] = frozenset(
         "MTR", "HSCS", "HSCR", "HSZ", "SPD", "PWM", "PLSR", "IST", "TKY", "HKY", "DSW", "SEGD",
         "SEGL", "ARWS", "ASC", "PR", "RS", "PRUN", "DRVI", "DRVA", "ZRN")
     for d in ("", "D") for p in ("", "P")) | frozenset((
-        "EI", "DI", "IRET", "CJP", "CALLP", "BOUT", "BSET", "BRST",
+        "EI", "DI", "IRET", "BOUT", "BSET", "BRST",
         "BLD", "BLDI", "BAND", "BANI", "BOR", "BORI",
         *(f"{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^")),
         *(f"D{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^"))))

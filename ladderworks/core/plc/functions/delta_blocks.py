@@ -27,7 +27,7 @@ from ladderworks.core.plc.functions.delta_words32 import (
     value32,
     width32,
 )
-from ladderworks.core.plc.functions.dvp_data import M1020, value
+from ladderworks.core.plc.functions.dvp_data import M1020, rising, value
 from ladderworks.core.plc.memory import Memory
 
 
@@ -235,6 +235,11 @@ def _nothing(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params
     return bool(inputs[-1]) if inputs else False
 
 
+def _edge(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
+    """CJP/CALLP's edge: on in the execution its input went on (the CJ/CALL after it reads it)."""
+    return rising(state, bool(inputs[-1]))
+
+
 def _loop_next(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple
                ) -> bool:
     """NEXT of FOR n: on while another run of the loop is due (its count read at the first)."""
@@ -249,3 +254,5 @@ for _name in FAMILIES["delta_blocks"]:
         function(_name)(_nothing)
     elif ACTIONS[_name] == "loop-next":
         function(_name)(_loop_next)
+    elif ACTIONS[_name] == "edge":
+        function(_name)(_edge)
