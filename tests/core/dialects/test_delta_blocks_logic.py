@@ -281,6 +281,10 @@ def test_cjp_callp_act_on_the_rising_edge_only(monitored: bool) -> None:
     put(plc, "X1", 1)
     plc.run_scans(3)
     assert (get(plc, "D0"), get(plc, "D1")) == (2, 1)  # jumped over once, called once
+    after = engine("LD X1\nCJP P2\nOUT Y1\nP2\nEND\n", monitored=monitored)
+    put(after, "X1", 1)
+    after.run_scans(2)
+    assert get(after, "Y1") == 1  # the rung goes on after CJP when it does not jump
     from ladderworks.core.dialects.delta.printer import network_lines
 
     lines = [line for network in delta(PULSED).networks for line in network_lines(network, False)]

@@ -78,6 +78,10 @@ def params_text(spec: InstructionSpec, values: tuple[object, ...]) -> list[str]:
     params = list(values)
     if spec.flow is Flow.COMMON:
         params = params[1:]
+    if spec.name in STEP_MOVE_ROWS.values():  # SET Sm (the step it leaves is the reader's)
+        params = params[:1]
+    if spec.name == LOOP_ROW.name:  # FOR n (its label is the reader's)
+        params = params[1:]
     texts = []
     for param, value in zip(spec.params[-len(params):] if params else (), params, strict=False):
         texts.append(f"N{value}" if param.kind is ParamKind.NUMBER and param.name == "nest"
@@ -95,11 +99,19 @@ def network_lines(network: Network, first: bool) -> list[str]:
     out = [f"; {text}" for text in network.comments]
     instructions = network.instructions
     for index, instruction in enumerate(instructions):
-        if _step_read(instructions, index) or (
-                index > 0 and instructions[index - 1].name in PULSED):  # CJP's CJ
+        if _step_read(instructions, index) or _pulse_part(instructions, index):
             continue
         out.extend(instruction_lines(instruction))
     return out
+
+
+def _pulse_part(instructions: list[Instruction], index: int) -> bool:
+    """True for the MPS, CJ/CALL and MPP the reader put around a CJP/CALLP (its line says it)."""
+    for offset in (-1, 1, 2):
+        at = index - offset
+        if 0 <= at < len(instructions) and instructions[at].name in PULSED:
+            return True
+    return False
 
 
 def _step_read(instructions: list[Instruction], index: int) -> bool:

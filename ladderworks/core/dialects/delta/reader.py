@@ -187,11 +187,10 @@ class _Reader:
         if spec.name in extra.STEP_MOVE_ROWS.values() and instruction.params \
                 and self.step is not None:
             instruction = instruction._replace(params=(*instruction.params, self.step))
-        self.add(index, instruction)
-        if spec.name in extra.PULSED and instruction.params:  # CJP/CALLP: then the CJ/CALL
-            gated = rows.SPELLINGS[extra.PULSED[spec.name]].row
-            self.add(index, Instruction(gated, None, instruction.params, "", (), number,
-                                        column))
+        if spec.name in extra.PULSED and instruction.params:
+            self.pulsed(index, instruction)
+        else:
+            self.add(index, instruction)
         if role == "load":
             rung.depth += 1
         elif role == "block":
@@ -201,6 +200,17 @@ class _Reader:
             rung.output = role == "output"
         if role == "alone":
             self.close(index + 1)
+
+    def pulsed(self, index: int, edge: Instruction) -> None:
+        """CJP/CALLP Pn: MPS, the edge box, the CJ/CALL it gates, MPP (the rung's value goes on
+        to what follows, as after any output)."""
+        line, column = edge.line, edge.column
+        push, pop = rows.SPELLINGS["MPS"].row, rows.SPELLINGS["MPP"].row
+        gated = rows.SPELLINGS[extra.PULSED[edge.name]].row
+        self.add(index, Instruction(push, None, (), "", (), line, column))
+        self.add(index, edge)
+        self.add(index, Instruction(gated, None, edge.params, "", (), line, column))
+        self.add(index, Instruction(pop, None, (), "", (), line, column))
 
     def step_line(self, index: int, number: int, column: int, words: list[str],
                   comment: str) -> None:
