@@ -185,3 +185,12 @@ def test_a_drawn_float_contact_codes_as_a_float_contact() -> None:
                         ("DVP.LD=", "DVP.AND=")):
         found = row_for(start, Combine.AND, False)
         assert found is not None and found.name == wide
+
+
+def test_module_registers_are_listed_in_the_register_table() -> None:
+    from ladderworks.core.dialects.delta.tables import TABLES
+    from ladderworks.core.dialects.device_tables import Table, device_range
+
+    assert "CR" in TABLES.registers
+    assert device_range(Table.REGISTERS, TABLES, DEVICES, "CR110-CR112") == [
+        ("CR", 110), ("CR", 111), ("CR", 112)]
