@@ -101,3 +101,34 @@ def test_fifo_write_then_read(monitored: bool) -> None:
 def test_fifo_and_rotations_skip_exactly(monitored: bool) -> None:
     assert same_when_skipping("LD X0\nSFWRP D0 D10 K5\nLD X1\nSFRDP D10 D20 K5\nLD X2\n"
                               "RCLP D1 K1\nLD X3\nMEAN D10 D30 K5\nEND\n", 1500, monitored) > 0
+
+
+@MODES
+def test_smov_moves_bcd_digits(monitored: bool) -> None:
+    plc = engine("LD X0\nSMOV D0 K4 K2 D1 K3\nSMOV D2 K1 K1 D3 K4\nSMOV K10000 K1 K1 D4 K1\n"
+                 "END\n", monitored=monitored)
+    put(plc, "D0", 1234)
+    put(plc, "D1", 5678)
+    put(plc, "D2", 9)
+    put(plc, "D3", 0)
+    put(plc, "D4", 7)
+    put(plc, "X0", 1)
+    plc.scan()
+    assert get(plc, "D1") == 5128  # digits 4, 3 of 1234 (1, 2) to digits 3, 2 of 5678
+    assert get(plc, "D3") == 9000
+    assert get(plc, "D4") == 7 and get(plc, "M1067") == 1  # 10000 is not 4 digits
+
+
+@MODES
+def test_bit_of_a_word_out_set_reset(monitored: bool) -> None:
+    plc = engine("LD X0\nBOUT D0 K3\nLD X1\nBSET D1 K15\nDBSET D2 K20\nLD X2\nBRST D1 K0\n"
+                 "END\n", monitored=monitored)
+    put(plc, "D1", 1)
+    put(plc, "X0", 1)
+    put(plc, "X1", 1)
+    plc.scan()
+    assert (get(plc, "D0"), get(plc, "D1") & 0xFFFF, get(plc, "D2:4")) == (8, 0x8001, 1 << 20)
+    put(plc, "X0", 0)
+    put(plc, "X2", 1)
+    plc.scan()
+    assert (get(plc, "D0"), get(plc, "D1") & 0xFFFF) == (0, 0x8000)

@@ -225,6 +225,17 @@ _both(_MA, "to-gray", "GRY", "Binary to Gray code", "BINARY'DEN GRAY KODUNA", (W
       lambda wide: (_v("source", wide), _w("output", wide)))
 _both(_MA, "from-gray", "GBIN", "Gray code to binary", "GRAY KODUNDAN BINARY'YE",
       (WORD_IN, WORD_OUT), lambda wide: (_v("source", wide), _w("output", wide)))
+_box(_MA, "digit-move", "SMOV", "Digit move (BCD digits)", "BASAMAK TAŞI",
+     (WORD_IN, WORD_IN, WORD_IN, WORD_OUT, WORD_IN),
+     (_v("source", False), _n("from", 1, 4), _n("digits", 1, 4), _w("output", False, _RW),
+      _n("to", 1, 4)))
+for _mnemonic, _action, _title, _title_tr in (
+        ("BOUT", "bit-out", "Output a bit of a word", "KELİME BİTİ ÇIKIŞI"),
+        ("BSET", "bit-set", "Set a bit of a word", "KELİME BİTİ SET"),
+        ("BRST", "bit-reset", "Reset a bit of a word", "KELİME BİTİ RESET")):
+    _both(_MA, _action, _mnemonic, _title, _title_tr, (WORD_OUT, WORD_IN),
+          lambda wide: (_w("output", wide, _RW), _n("bit", 0, 31 if wide else 15)),
+          pulse_form=False)
 _WO = "delta_words"
 for _mnemonic, _action, _title, _title_tr in (
         ("WSFR", "word-right", "Word shift right", "KELİME KAYDIR SAĞA"),
@@ -384,7 +395,7 @@ for _mnemonic, _target, _kind, _title, _title_tr in (
 # "not simulated" diagnostic rather than "unknown" (with those instructions.py lists).
 MORE_NOT_SIMULATED: frozenset[str] = frozenset(
     f"{d}{name}{p}" for name in (
-        "SMOV", "ANS", "ANR", "SER", "ABSD", "INCD", "TTMR", "STMR", "RAMP", "DTM", "SORT", "ASCI",
+        "ANS", "ANR", "SER", "ABSD", "INCD", "TTMR", "STMR", "RAMP", "DTM", "SORT", "ASCI",
         "HEX", "CCD", "VRRD", "VRSC", "PID", "MODRD", "MODWR", "MODRW", "FWD", "REV", "RDST",
         "RSTEF", "LRC", "CRC", "SWRD", "RAD", "DEG", "EBCD", "EBIN", "EXP", "LN", "LOG", "ESQR",
         "POW", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SINH", "COSH", "TANH", "DELAY",
@@ -396,8 +407,7 @@ MORE_NOT_SIMULATED: frozenset[str] = frozenset(
         "MTR", "HSCS", "HSCR", "HSZ", "SPD", "PWM", "PLSR", "IST", "TKY", "HKY", "DSW", "SEGD",
         "SEGL", "ARWS", "ASC", "PR", "RS", "PRUN", "DRVI", "DRVA", "ZRN")
     for d in ("", "D") for p in ("", "P")) | frozenset((
-        "EI", "DI", "IRET", "BOUT", "BSET", "BRST",
-        "BLD", "BLDI", "BAND", "BANI", "BOR", "BORI",
+        "EI", "DI", "IRET", "BLD", "BLDI", "BAND", "BANI", "BOR", "BORI",
         *(f"{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^")),
         *(f"D{start}{op}" for start in ("LD", "AND", "OR") for op in ("&", "|", "^"))))
 

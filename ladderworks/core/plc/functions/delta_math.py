@@ -6,6 +6,9 @@ bits). BON S D n: bit D = bit n of S. MEAN S D n: the mean of the n words (pairs
 toward zero. SQR S D: the integer square root; S < 0: operation error, D kept; M1020 when 0.
 ABS D: D = |D| (-32768 stays). SWAP D: its high and low bytes exchanged (DSWAP: in each word).
 GRY S D: S as Gray code; GBIN S D: Gray code S as binary; S < 0: operation error, D kept.
+SMOV S m1 m2 D n: S and D as 4 BCD digits; the m2 digits of S from digit m1 down go to D from
+digit n down, D's other digits kept (a value above 9999: operation error). BOUT D n: bit n of
+D follows the input; BSET / BRST D n set / reset it while the input is on.
 docs/dialects.md.
 """
 
@@ -15,6 +18,9 @@ from collections.abc import Callable
 from math import isqrt
 
 from ladderworks.core.address import Address
+from ladderworks.core.dialects.delta.rows_extra import ACTIONS, FAMILIES
+from ladderworks.core.plc.bcd import bcd_to_int, int_to_bcd
+from ladderworks.core.plc.functions import FunctionContext, function
 from ladderworks.core.plc.functions.delta_blocks import word_after
 from ladderworks.core.plc.functions.delta_words32 import (
     Action,
@@ -24,7 +30,7 @@ from ladderworks.core.plc.functions.delta_words32 import (
     toward_zero,
     value32,
 )
-from ladderworks.core.plc.functions.dvp_data import M1020, M1022, value
+from ladderworks.core.plc.functions.dvp_data import M1020, M1022, Impl, value
 from ladderworks.core.plc.memory import Memory
 
 Wide = Callable[[Memory, tuple, bool], None]  # an action of both widths (`wide`: 32-bit)
@@ -127,6 +133,41 @@ def _gray(memory: Memory, params: tuple, wide: bool, encode: bool) -> None:
     _store(memory, output, result, wide)
 
 
+def _digit_move(memory: Memory, params: tuple) -> None:
+    source, first, digits, output, to = params
+    m1, m2, n = value(memory, first), value(memory, digits), value(memory, to)
+    moved, kept = int_to_bcd(value(memory, source), 4), int_to_bcd(value(memory, output), 4)
+    if moved is None or kept is None or not (1 <= m2 <= m1 <= 4 and m2 <= n <= 4):
+        operation_error(memory)
+        return
+    for k in range(m2):
+        digit = moved >> 4 * (m1 - 1 - k) & 0xF
+        place = 4 * (n - 1 - k)
+        kept = kept & ~(0xF << place) | digit << place
+    memory.write(output, bcd_to_int(kept, 4) or 0, 2)
+
+
+def _bit_change(memory: Memory, params: tuple, wide: bool, on: bool) -> None:
+    output, which = params
+    n = value(memory, which)
+    if not 0 <= n < (32 if wide else 16):
+        operation_error(memory)
+        return
+    word = _reader(wide)(memory, output)
+    _store(memory, output, word | 1 << n if on else word & ~(1 << n), wide)
+
+
+def bit_out(wide: bool) -> Impl:
+    """BOUT D n: bit n of D follows the input, on or off (as OUT); passes its input on."""
+    def run(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
+        act = bool(inputs[-1])
+        _bit_change(ctx.memory, params, wide, act)
+        return act
+
+    run.__module__ = __name__
+    return run
+
+
 def _forms(action: Wide) -> tuple[Action, Action]:
     def narrow(memory: Memory, params: tuple) -> None:
         action(memory, params, False)
@@ -146,10 +187,16 @@ def _actions() -> dict[str, Action]:
         ("carry-right", lambda m, p, w: _carry_rotate(m, p, w, True)),
         ("carry-left", lambda m, p, w: _carry_rotate(m, p, w, False)),
         ("to-gray", lambda m, p, w: _gray(m, p, w, True)),
-        ("from-gray", lambda m, p, w: _gray(m, p, w, False)))
+        ("from-gray", lambda m, p, w: _gray(m, p, w, False)),
+        ("bit-set", lambda m, p, w: _bit_change(m, p, w, True)),
+        ("bit-reset", lambda m, p, w: _bit_change(m, p, w, False)))
     for key, action in pairs:
         found[key], found[key + "32"] = _forms(action)
+    found["digit-move"] = _digit_move
     return found
 
 
 register(__name__, _actions())
+for _name in FAMILIES["delta_math"]:
+    if ACTIONS[_name].startswith("bit-out"):
+        function(_name)(bit_out(ACTIONS[_name].endswith("32")))
