@@ -16,9 +16,12 @@ docs/dialects.md.
 
 from __future__ import annotations
 
+from functools import cache, lru_cache
+
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.dialects.delta import DEVICES
 from ladderworks.core.dialects.delta.rows_extra import ACTIONS, FAMILIES
+from ladderworks.core.dialects.devices import Device
 from ladderworks.core.plc.functions import FunctionContext, function
 from ladderworks.core.plc.functions.delta_words32 import (
     operation_error,
@@ -31,10 +34,11 @@ from ladderworks.core.plc.functions.dvp_data import M1020, rising, value
 from ladderworks.core.plc.memory import Memory
 
 
+@lru_cache(maxsize=1 << 16)  # (operands and counts come from the program's values)
 def word_after(address: Address, count: int) -> Address | None:
     """The word device `count` places after word device `address` (D4999 + 1 is D5000), or
     None when there is none."""
-    found = DEVICES.device_of(address)
+    found = device_at(address)
     if found is None:
         return None
     device, number = found
@@ -44,17 +48,25 @@ def word_after(address: Address, count: int) -> Address | None:
         return None
 
 
-def bit_range(address: Address, count: int) -> list[Address] | None:
+@lru_cache(maxsize=1 << 12)
+def bit_range(address: Address, count: int) -> tuple[Address, ...] | None:
     """The `count` bit devices from bit device `address` (M10, M11 ...; X7, X10 ...), or None
     when they run past the last of its letter."""
     found = DEVICES.device_of(address)
     if found is None or count < 0 or found[1] + count - 1 > found[0].last:
         return None
     device, number = found
-    return [device.bit_address(number + k) for k in range(count)]
+    return tuple(device.bit_address(number + k) for k in range(count))
 
 
-def _words(address: Address, count: int, step: int = 1) -> list[Address]:
+@cache
+def device_at(address: Address) -> tuple[Device, int] | None:
+    """The device and number at `address` (DeviceMap.device_of, kept: the map never changes)."""
+    return DEVICES.device_of(address)
+
+
+@lru_cache(maxsize=1 << 12)
+def _words(address: Address, count: int, step: int = 1) -> tuple[Address, ...]:
     """`count` word devices from `address` (every `step`-th), as far as they exist."""
     places = []
     for k in range(count):
@@ -62,11 +74,11 @@ def _words(address: Address, count: int, step: int = 1) -> list[Address]:
         if place is None:
             break
         places.append(place)
-    return places
+    return tuple(places)
 
 
 def _reset_word(memory: Memory, address: Address) -> None:
-    found = DEVICES.device_of(address)
+    found = device_at(address)
     if found is None:
         return
     device, number = found
@@ -78,14 +90,14 @@ def _reset_word(memory: Memory, address: Address) -> None:
 def _zone_reset(memory: Memory, params: tuple) -> None:
     first, last = params
     if first.bit is not None:
-        one, two = DEVICES.device_of(first), DEVICES.device_of(last)
+        one, two = device_at(first), device_at(last)
         if one is None or two is None or one[0].letter != two[0].letter:
             operation_error(memory)
             return
-        for k in range(max(two[1] - one[1], 0) + 1):
-            memory.set_bit(one[0].bit_address(one[1] + k), False)
+        for place in bit_range(first, max(two[1] - one[1], 0) + 1) or ():
+            memory.set_bit(place, False)
         return
-    one, two = DEVICES.device_of(first), DEVICES.device_of(last)
+    one, two = device_at(first), device_at(last)
     if one is None or two is None or one[0].letter != two[0].letter or last.bit is not None:
         operation_error(memory)
         return

@@ -11,6 +11,7 @@ zero); a division by zero writes nothing and sets M1067/M1068. docs/dialects.md.
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import cache
 
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import DEVICES
@@ -35,6 +36,7 @@ Action = Callable[[Memory, tuple], None]
 LOW32, HIGH32 = -(2**31), 2**31 - 1
 
 
+@cache
 def width32(address: Address) -> int:
     """The bytes a 32-bit operand at `address` has: 4, or 2 for a C0-C199 counter."""
     found = DEVICES.device_of(address)
