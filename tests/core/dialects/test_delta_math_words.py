@@ -132,3 +132,21 @@ def test_bit_of_a_word_out_set_reset(monitored: bool) -> None:
     put(plc, "X2", 1)
     plc.scan()
     assert (get(plc, "D0"), get(plc, "D1") & 0xFFFF) == (0, 0x8000)
+
+
+@MODES
+def test_scal_and_sclp_scale(monitored: bool) -> None:
+    plc = engine("LD X0\nSCAL D0 K500 K-10 D1\nSCLP D2 D10 D3\nDSCLP D20 D30 D40\n"
+                 "SCAL K32767 K2000 K0 D4\nEND\n", monitored=monitored)
+    put(plc, "D0", 101)
+    put(plc, "D2", 2000)  # a 0-4000 input scaled to 0-1000
+    for k, number in enumerate((4000, 0, 1000, 0)):
+        put(plc, f"D{10 + k}", number)
+    put(plc, "D20:4", 50000)  # 0-100000 to -500..500
+    for k, number in enumerate((100000, 0, 500, -500)):
+        put(plc, f"D{30 + 2 * k}:4", number)
+    put(plc, "D4", 3)
+    put(plc, "X0", 1)
+    plc.scan()
+    assert (get(plc, "D1"), get(plc, "D3"), get(plc, "D40:4")) == (40, 500, 0)  # 50.5 - 10
+    assert get(plc, "D4") == 3 and get(plc, "M1067") == 1  # 65534 is out of range

@@ -236,6 +236,13 @@ for _mnemonic, _action, _title, _title_tr in (
     _both(_MA, _action, _mnemonic, _title, _title_tr, (WORD_OUT, WORD_IN),
           lambda wide: (_w("output", wide, _RW), _n("bit", 0, 31 if wide else 15)),
           pulse_form=False)
+_box(_MA, "scale", "SCAL", "Scale (slope in thousandths, offset)", "ÖLÇEKLE",
+     (WORD_IN, WORD_IN, WORD_IN, WORD_OUT),
+     (_v("source", False), _v("slope", False), _v("offset", False), _w("output", False)))
+_both(_MA, "scale-table", "SCLP", "Scale by a parameter table", "TABLO İLE ÖLÇEKLE",
+      (WORD_IN, WORD_OUT, WORD_OUT),
+      lambda wide: (_v("source", wide), _w("table", wide, ParamAccess.READ),
+                    _w("output", wide)))
 _WO = "delta_words"
 for _mnemonic, _action, _title, _title_tr in (
         ("WSFR", "word-right", "Word shift right", "KELİME KAYDIR SAĞA"),
@@ -403,7 +410,7 @@ MORE_NOT_SIMULATED: frozenset[str] = frozenset(
         "PLSV", "TCMP", "TZCP", "TADD", "TSUB", "TRD", "TWR", "MVM", "HOUR", "ADDR", "SUBR",
         "MULR", "DIVR", "MMOV", "GPS", "SPA", "WSUM", "MAND", "MOR", "MXOR",
         "MXNR", "MINV", "MCMP", "MBRD", "MBWR", "MBC", "PPMR", "PPMA", "CIMR", "CIMA", "PTPO",
-        "HST", "CLLM", "VSPO", "ICF", "SCAL", "SCLP", "CMPT", "ASDRW", "CSFO", "REF", "REFF",
+        "HST", "CLLM", "VSPO", "ICF", "CMPT", "ASDRW", "CSFO", "REF", "REFF",
         "MTR", "HSCS", "HSCR", "HSZ", "SPD", "PWM", "PLSR", "IST", "TKY", "HKY", "DSW", "SEGD",
         "SEGL", "ARWS", "ASC", "PR", "RS", "PRUN", "DRVI", "DRVA", "ZRN")
     for d in ("", "D") for p in ("", "P")) | frozenset((

@@ -8,7 +8,10 @@ ABS D: D = |D| (-32768 stays). SWAP D: its high and low bytes exchanged (DSWAP: 
 GRY S D: S as Gray code; GBIN S D: Gray code S as binary; S < 0: operation error, D kept.
 SMOV S m1 m2 D n: S and D as 4 BCD digits; the m2 digits of S from digit m1 down go to D from
 digit n down, D's other digits kept (a value above 9999: operation error). BOUT D n: bit n of
-D follows the input; BSET / BRST D n set / reset it while the input is on.
+D follows the input; BSET / BRST D n set / reset it while the input is on. SCAL S1 S2 S3 D:
+D = S1 x S2 / 1000 + S3 (toward zero). SCLP S T D: D = (S - T+1) x (T+2 - T+3) / (T - T+1)
++ T+3, the table T: source maximum, source minimum, result maximum, result minimum (toward
+zero; integers: M1162's floating-point mode not modelled). Out of range: operation error.
 docs/dialects.md.
 """
 
@@ -147,6 +150,36 @@ def _digit_move(memory: Memory, params: tuple) -> None:
     memory.write(output, bcd_to_int(kept, 4) or 0, 2)
 
 
+def _scale(memory: Memory, params: tuple) -> None:
+    source, slope, offset, output = params
+    exact = toward_zero(value(memory, source) * value(memory, slope), 1000) \
+        + value(memory, offset)
+    if not -32768 <= exact <= 32767:
+        operation_error(memory)
+        return
+    memory.write(output, exact, 2)
+
+
+def _scale_table(memory: Memory, params: tuple, wide: bool) -> None:
+    source, table, output = params
+    step = 2 if wide else 1
+    places = [word_after(table, k * step) for k in range(4)]
+    if any(place is None for place in places):
+        operation_error(memory)
+        return
+    read = _reader(wide)
+    top, bottom, high, low = (read(memory, place) for place in places)
+    if top == bottom:
+        operation_error(memory)
+        return
+    exact = toward_zero((read(memory, source) - bottom) * (high - low), top - bottom) + low
+    lo, hi = (-(2**31), 2**31 - 1) if wide else (-32768, 32767)
+    if not lo <= exact <= hi:
+        operation_error(memory)
+        return
+    _store(memory, output, exact, wide)
+
+
 def _bit_change(memory: Memory, params: tuple, wide: bool, on: bool) -> None:
     output, which = params
     n = value(memory, which)
@@ -189,10 +222,12 @@ def _actions() -> dict[str, Action]:
         ("to-gray", lambda m, p, w: _gray(m, p, w, True)),
         ("from-gray", lambda m, p, w: _gray(m, p, w, False)),
         ("bit-set", lambda m, p, w: _bit_change(m, p, w, True)),
-        ("bit-reset", lambda m, p, w: _bit_change(m, p, w, False)))
+        ("bit-reset", lambda m, p, w: _bit_change(m, p, w, False)),
+        ("scale-table", _scale_table))
     for key, action in pairs:
         found[key], found[key + "32"] = _forms(action)
     found["digit-move"] = _digit_move
+    found["scale"] = _scale
     return found
 
 
