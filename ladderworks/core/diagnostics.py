@@ -267,6 +267,10 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "{name} without a logic result before it (start with LD)"),
     "dvp-pointer-twice": QT_TRANSLATE_NOOP("Diagnostic", "this pointer P number is used twice"),
     "dvp-next-without-for": QT_TRANSLATE_NOOP("Diagnostic", "NEXT without a FOR before it"),
+    "dvp-range-open": QT_TRANSLATE_NOOP(
+        "Diagnostic", "MC or STL without its MCR or RET after it"),
+    "dvp-range-end-alone": QT_TRANSLATE_NOOP(
+        "Diagnostic", "MCR or RET without its MC or STL before it"),
     "dvp-for-without-next": QT_TRANSLATE_NOOP("Diagnostic", "FOR without its NEXT"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(

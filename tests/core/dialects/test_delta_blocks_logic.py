@@ -294,3 +294,15 @@ def test_cjp_callp_act_on_the_rising_edge_only(monitored: bool) -> None:
 @pytest.mark.parametrize("monitored", [False, True], ids=["fast", "monitored"])
 def test_cjp_callp_skip_exactly(monitored: bool) -> None:
     same_when_skipping(PULSED, 800, monitored)
+
+
+def test_stl_without_ret_and_ret_alone_say_so_in_delta_words() -> None:
+    from ladderworks.core.compiler import compile_program
+    from ladderworks.core.il.reading import parse_bytes
+
+    for text, code in (("STL S0\nOUT Y0\nEND\n", "dvp-range-open"),
+                       ("LD X0\nOUT Y0\nRET\nEND\n", "dvp-range-end-alone")):
+        result = parse_bytes(text.encode())  # STL alone makes the text Delta's
+        assert result.program.dialect == "delta"
+        codes = [d.code for d in compile_program(result.program).diagnostics]
+        assert code in codes, codes

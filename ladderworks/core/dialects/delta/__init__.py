@@ -78,4 +78,5 @@ DIALECT = Dialect(
     codes={"sp-without-spe": "dvp-missing-sret", "spe-without-sp": "dvp-sret-alone",
            "outside-subprogram": "dvp-outside-subroutine", "label-missing": "dvp-pointer-missing",
            "call-missing": "dvp-call-missing", "no-logic": "dvp-no-logic",
-           "sp-twice": "dvp-pointer-twice", "label-twice": "dvp-pointer-twice"})
+           "sp-twice": "dvp-pointer-twice", "label-twice": "dvp-pointer-twice",
+           "com-without-come": "dvp-range-open", "come-without-com": "dvp-range-end-alone"})
