@@ -346,6 +346,12 @@ MESSAGES: dict[str, str] = {
     "dvp-save-refused": QT_TRANSLATE_NOOP(
         "Diagnostic", "LadderWorks does not write .dvp projects (the format is only partly"
         " known): save the program as a Delta instruction list (.il) instead"),
+    "dvp-next-without-for": QT_TRANSLATE_NOOP("Diagnostic", "NEXT without a FOR before it"),
+    "dvp-range-open": QT_TRANSLATE_NOOP(
+        "Diagnostic", "MC or STL without its MCR or RET after it"),
+    "dvp-range-end-alone": QT_TRANSLATE_NOOP(
+        "Diagnostic", "MCR or RET without its MC or STL before it"),
+    "dvp-for-without-next": QT_TRANSLATE_NOOP("Diagnostic", "FOR without its NEXT"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),

@@ -43,7 +43,7 @@ def test_delta_timer_counter_and_register(qtbot: QtBot, window: MainWindow) -> N
     assert tables.device_tabs.isVisibleTo(tables) and not tables.tabs.isVisibleTo(tables)
     assert not tables.dialect_note.isVisibleTo(tables)
     assert tables.device_tabs.tabText(0) == "Timers (T)"
-    assert tables.device_tabs.tabText(2) == "Registers (D)"
+    assert tables.device_tabs.tabText(2) == "Registers (D, CR)"  # CR: modules' registers
     assert tables.cell_texts(TIMERS) == [["T0", "100 ms", "K10", "0", "OFF"]]
     session.set_bit(parse_target("X0", "delta")[0], 1)
     session.step(500)

@@ -18,7 +18,7 @@ from ladderworks.core.instructions import (
     Param,
     lookup,
 )
-from ladderworks.core.ladder.row_contacts import contact_combine
+from ladderworks.core.ladder.row_contacts import contact_combine, operand_width
 
 # Parameters a dialect's text does not write as operands of their own: Fatek's FO relay byte
 # (`fo`), function number (`fun`) and the T/C `kind` of RST written with its number (`T5`),
@@ -49,8 +49,8 @@ def _offered(spec: InstructionSpec, found: dialects.Dialect) -> bool:
     lines read as the row) and the row is simulated (`cnc` rows are kept, not run)."""
     if spec.cnc:
         return False
-    if spec.flow in (Flow.LABEL, Flow.SUBPROGRAM):  # a pointer line is its operand alone
-        return True
+    if spec.flow in (Flow.LABEL, Flow.SUBPROGRAM) and len(spec.params) == 1:
+        return True  # a pointer line is its operand alone (not Delta's FOR: a label and more)
     _params, problems = check_params(spec, [], found.name)
     return not any(problem.code.endswith("unknown-instruction") for problem in problems)
 
@@ -101,10 +101,11 @@ def contact_rows(dialect: str | None) -> tuple[InstructionSpec, ...]:
     for spec in _rows(found.name):
         if not is_contact(spec) or not _offered(spec, found):
             continue
-        known = chosen.get(spec.operation)
+        key = (spec.operation, operand_width(spec))  # Delta's DLD= apart from LD=
+        known = chosen.get(key)
         if known is None or (spec.combine is Combine.READ and not spec.pushes
                              and known.combine is not Combine.READ):
-            chosen[spec.operation] = spec
+            chosen[key] = spec
     return tuple(chosen.values())
 
 
@@ -122,7 +123,8 @@ def same_operation(spec: InstructionSpec) -> tuple[InstructionSpec, ...]:
     table's order, one per spelling: what a contact offered as `spec` may be written as."""
     spelled: dict[str, InstructionSpec] = {}
     for row in _rows(spec.dialect):
-        if is_contact(row) and row.operation is spec.operation:
+        if is_contact(row) and row.operation is spec.operation \
+                and operand_width(row) == operand_width(spec):
             spelled.setdefault(row.text_name, row)
     return tuple(spelled.values())
 

@@ -91,7 +91,8 @@ def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None,
         lines.append(network.label + ":")
     if network.listing is not None:
         lines.append("  (kept as instruction list: it has no ladder picture)")
-        lines.extend("    " + spell.instruction(ins) for ins in network.listing)
+        texts = (spell.instruction(ins) for ins in network.listing)
+        lines.extend("    " + text for text in texts if text)  # (a row its line writes: none)
         return lines
     width = _x(network.columns + 1) + 1
     covered: dict[tuple[int, int], bool] = {}

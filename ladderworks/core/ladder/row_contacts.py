@@ -37,17 +37,24 @@ def contact_combine(spec: InstructionSpec) -> Combine | None:
     return None
 
 
-_FOUND: dict[tuple[str, Operation, Combine, int], InstructionSpec] = {}
+_FOUND: dict[tuple[str, Operation, Combine, int, object], InstructionSpec] = {}
 
 
-def _rows(dialect: str, operation: Operation, combine: Combine, pushes: int
+def operand_width(spec: InstructionSpec) -> object:
+    """The width and name of a contact row's last operand: a 32-bit comparison (Delta DLD=) is
+    coded with the 32-bit rows, a 16-bit one with the 16-bit rows, a floating-point one (FLD=,
+    operands f1, f2) with the floating-point rows."""
+    return (spec.params[-1].width, spec.params[-1].name) if spec.params else 0
+
+
+def _rows(dialect: str, operation: Operation, combine: Combine, pushes: int, width: object
           ) -> InstructionSpec | None:
-    key = (dialect, operation, combine, pushes)
+    key = (dialect, operation, combine, pushes, width)
     if key not in _FOUND:  # only hits are kept: a dialect registered later is still found
         for spec in list(BY_NAME.values()):
             if (spec.kind is Kind.FUNCTION and spec.dialect == dialect
                     and spec.operation is operation and contact_combine(spec) is combine
-                    and spec.pushes == pushes):
+                    and spec.pushes == pushes and operand_width(spec) == width):
                 _FOUND[key] = spec
                 break
         else:
@@ -64,7 +71,7 @@ def row_for(function: str, combine: Combine, push: bool) -> InstructionSpec | No
         return None
     if spec.combine is Combine.NONE:  # the one-input form joins only in series
         return spec if combine is Combine.AND and not push else None
-    return _rows(spec.dialect, spec.operation, combine, 1 if push else 0)
+    return _rows(spec.dialect, spec.operation, combine, 1 if push else 0, operand_width(spec))
 
 
 def mark(function: str) -> str:

@@ -43,8 +43,8 @@ def _diagnostics(text: str) -> list[tuple[int, int, str]]:
     ("LD X0\nMRD\nOUT Y0\nEND\n", (2, 1, "stack-underflow")),
     # instructions
     ("LD X0\nFOO Y0\nEND\n", (2, 1, "unknown-instruction")),
-    ("LD X0\nDMOV K1 D0\nEND\n", (2, 1, "dialect-not-simulated")),
-    ("LD X0\n  0003  SFTR X0 M0 K16 K4\nEND\n", (2, 9, "dialect-not-simulated")),
+    ("LD X0\nPID D0 D1 D2 D3\nEND\n", (2, 1, "dialect-not-simulated")),
+    ("LD X0\n  0003  SORT D0 K4 K2 D10 K1\nEND\n", (2, 9, "dialect-not-simulated")),
 ])
 def test_one_diagnostic_at_its_line(text: str, expected: tuple[int, int, str]) -> None:
     assert _diagnostics(text) == [expected]

@@ -25,14 +25,20 @@ def test_delta_offers_boxes_not_contacts_nor_structure() -> None:
 
 def test_delta_offers_structure_and_one_contact_per_operation() -> None:
     assert [spec.name for spec in structure_rows("delta")] == [
-        "DVP.CJ", "DVP.CALL", "DVP.SRET", "DVP.FEND", "DVP.P", "DVP.P.SUB", "DVP.MC", "DVP.MCR"]
+        "DVP.CJ", "DVP.CALL", "DVP.SRET", "DVP.FEND", "DVP.P", "DVP.P.SUB", "DVP.MC", "DVP.MCR",
+        "DVP.RET"]  # not STL: read with its LD Sn
     contacts = contact_rows("delta")
     assert [spec.name for spec in contacts] == [
         "DVP.LDP", "DVP.LDF", "DVP.LD=", "DVP.LD>", "DVP.LD<", "DVP.LD<>", "DVP.LD<=",
-        "DVP.LD>="]  # the READ form: coding picks AND=/OR=/LD= .STK by the place
+        "DVP.LD>=", "DVP.DLD=", "DVP.DLD>", "DVP.DLD<", "DVP.DLD<>", "DVP.DLD<=",
+        "DVP.DLD>=", "DVP.FLD=", "DVP.FLD>", "DVP.FLD<", "DVP.FLD<>", "DVP.FLD<=",
+        "DVP.FLD>="]  # the READ form: coding picks AND=/OR=/LD= .STK by the place; 32-bit apart
     equal = lookup("DVP.LD=")
     assert equal is not None
     assert [s.text_name for s in same_operation(equal)] == ["LD=", "AND=", "OR="]
+    wide = lookup("DVP.DAND=")
+    assert wide is not None
+    assert [s.text_name for s in same_operation(wide)] == ["DLD=", "DAND=", "DOR="]
     assert [key for key, _rows in palette_groups("delta")] == [
         "delta", "delta.structure", "delta.contacts"]
     assert palette_groups("seed") == ()

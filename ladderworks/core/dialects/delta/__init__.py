@@ -29,7 +29,11 @@ C = Device("C", 0, 255, "counter", bits=(Area.C, C_BITS), words=(Area.C, 0), str
            wide_from=WIDE_COUNTERS)
 D = Device("D", 0, 4999, "data register", words=(Area.D, 0))
 D_HIGH = Device("D", 5000, 9999, "data register", words=(Area.E, 0))  # area D holds 5000 words
-DEVICES = DeviceMap((X, Y, M, S, T, C, D, D_HIGH))
+# A special module's control registers (FROM/TO): module m's CR#n is CR(100m + n), m 0-7,
+# n 0-99, in area G (unused by Delta): shown and written as registers (docs/dialects.md) [LW]
+CR = Device("CR", 0, 799, "special module register", words=(Area.G, 0))
+MODULE_REGISTERS = 100  # CRs a module has a place for
+DEVICES = DeviceMap((X, Y, M, S, T, C, D, D_HIGH, CR))
 
 
 def relay(number: int) -> Address:
@@ -74,4 +78,5 @@ DIALECT = Dialect(
     codes={"sp-without-spe": "dvp-missing-sret", "spe-without-sp": "dvp-sret-alone",
            "outside-subprogram": "dvp-outside-subroutine", "label-missing": "dvp-pointer-missing",
            "call-missing": "dvp-call-missing", "no-logic": "dvp-no-logic",
-           "sp-twice": "dvp-pointer-twice", "label-twice": "dvp-pointer-twice"})
+           "sp-twice": "dvp-pointer-twice", "label-twice": "dvp-pointer-twice",
+           "com-without-come": "dvp-range-open", "come-without-com": "dvp-range-end-alone"})

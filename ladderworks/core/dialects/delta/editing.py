@@ -3,7 +3,21 @@
 from __future__ import annotations
 
 from ladderworks.core.dialects.delta.printer import mnemonic_of
+from ladderworks.core.dialects.delta.rows_extra import (
+    LOOP_BACK_ROW,
+    LOOP_ROW,
+    LOOP_TEST_ROW,
+    PULSED,
+    STEP_MOVE_ROWS,
+    STEP_NEXT_ROW,
+    STEP_ROW,
+)
 from ladderworks.core.instructions import BY_NAME, Flow, InstructionSpec, Kind
+
+# The step ladder's rows the reader makes of STL and of a step's SET/OUT Sm: placed from the
+# palette they would not read back as themselves (a STL is read with its LD Sn).
+NOT_PLACED = frozenset((STEP_ROW.name, STEP_NEXT_ROW.name, *STEP_MOVE_ROWS.values(),
+                        LOOP_ROW.name, LOOP_TEST_ROW.name, LOOP_BACK_ROW.name, *PULSED))
 
 
 def _main_end() -> str:
@@ -18,6 +32,8 @@ def probe_lines(spec: InstructionSpec, texts: list[str]) -> list[str]:
     """`spec`'s line with the typed operands: after `LD X0` when it has inputs, alone when not
     (a pointer is its operand alone, `P1`; a subroutine's pointer after FEND)."""
     operands = [text.strip() for text in texts if text.strip()]
+    if spec.name in NOT_PLACED:  # read only as part of a step ladder: not placed alone
+        return [spec.name]
     if spec.flow in (Flow.LABEL, Flow.SUBPROGRAM):
         line = " ".join(operands) or mnemonic_of(spec)
         return [_main_end(), line] if spec.flow is Flow.SUBPROGRAM else [line]

@@ -4,6 +4,15 @@ from __future__ import annotations
 
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import DEVICES
+from ladderworks.core.dialects.delta.rows_extra import (
+    LOOP_BACK_ROW,
+    LOOP_ROW,
+    LOOP_TEST_ROW,
+    PULSED,
+    STEP_MOVE_ROWS,
+    STEP_NEXT_ROW,
+    STEP_ROW,
+)
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, LabelRef, Network, ProgramRef
 from ladderworks.core.instructions import Combine, Flow, InstructionSpec, Kind, ParamKind, Write
@@ -50,8 +59,17 @@ def instruction_lines(instruction: Instruction) -> list[str]:
         if spec.write is Write.OUT and spec.negated:
             return ["INV", f"OUT{operand}{comment}", "INV"]
         return [f"{name}{operand}{comment}"]
+    if spec.name == LOOP_ROW.name:  # FOR n (its label is the reader's)
+        return [f"{spec.text_name}\t{operand_text(instruction.params[-1])}{comment}"]
+    if spec.name == LOOP_TEST_ROW.name:
+        return [spec.text_name + comment]
     if spec.flow in (Flow.LABEL, Flow.SUBPROGRAM):
         return [" ".join(operand_text(p) for p in instruction.params) + comment]
+    if spec.name in (STEP_NEXT_ROW.name, LOOP_BACK_ROW.name):  # written by STL, NEXT
+        return []
+    if spec.name == STEP_ROW.name or spec.name in STEP_MOVE_ROWS.values():  # STL Sn, SET Sm
+        step = instruction.params[-1 if spec.name == STEP_ROW.name else 0]
+        return [f"{spec.text_name}\t{operand_text(step)}{comment}"]
     return ["\t".join([spec.text_name, *params_text(spec, instruction.params)]) + comment]
 
 
@@ -59,6 +77,10 @@ def params_text(spec: InstructionSpec, values: tuple[object, ...]) -> list[str]:
     """A functional instruction's operands as Delta writes them (MC's `coils` 0 left out)."""
     params = list(values)
     if spec.flow is Flow.COMMON:
+        params = params[1:]
+    if spec.name in STEP_MOVE_ROWS.values():  # SET Sm (the step it leaves is the reader's)
+        params = params[:1]
+    if spec.name == LOOP_ROW.name:  # FOR n (its label is the reader's)
         params = params[1:]
     texts = []
     for param, value in zip(spec.params[-len(params):] if params else (), params, strict=False):
@@ -75,9 +97,32 @@ def instruction_text(instruction: Instruction) -> str:
 def network_lines(network: Network, first: bool) -> list[str]:
     """A network's lines: its comment lines (`; text`), then its instructions."""
     out = [f"; {text}" for text in network.comments]
-    for instruction in network.instructions:
+    instructions = network.instructions
+    for index, instruction in enumerate(instructions):
+        if _step_read(instructions, index) or _pulse_part(instructions, index):
+            continue
         out.extend(instruction_lines(instruction))
     return out
+
+
+def _pulse_part(instructions: list[Instruction], index: int) -> bool:
+    """True for the MPS, CJ/CALL and MPP the reader put around a CJP/CALLP (its line says it)."""
+    for offset in (-1, 1, 2):
+        at = index - offset
+        if 0 <= at < len(instructions) and instructions[at].name in PULSED:
+            return True
+    return False
+
+
+def _step_read(instructions: list[Instruction], index: int) -> bool:
+    """True for the LD Sn the reader put before and after a STL Sn (its line says it)."""
+    here = instructions[index]
+    for other in (index - 1, index + 1):
+        if 0 <= other < len(instructions) and instructions[other].name == STEP_ROW.name \
+                and instructions[other].params[-1] == here.operand \
+                and here.spec.kind is Kind.BASIC and here.spec.combine is Combine.READ:
+            return True
+    return False
 
 
 def spelling() -> Spelling:

@@ -12,10 +12,11 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from ladderworks.core.address import Address, AddressError
+from ladderworks.core.address import Address, AddressError, Area
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects.delta import DEVICES, NAME, WIDE_COUNTERS
+from ladderworks.core.dialects.delta import DEVICES, NAME, S_BITS, WIDE_COUNTERS
 from ladderworks.core.dialects.delta import instructions as rows
+from ladderworks.core.dialects.delta import rows_extra as extra
 from ladderworks.core.il.program import (
     FileSource,
     Instruction,
@@ -35,12 +36,17 @@ _NEST = re.compile(r"^[Nn](\d)$")
 
 _BIT_LETTERS = {rows.BIT_IN: "XYMSTC", rows.BIT_OUT: "YMS"}
 _WORD_LETTERS = {rows.WORD_IN: "TCD", rows.WORD_OUT: "TCD", rows.TIMER: "T",
-                 rows.COUNTER: "C", rows.WIDE_COUNTER: "C", rows.RESET: "TCD"}
+                 rows.COUNTER: "C", rows.WIDE_COUNTER: "C", rows.RESET: "TCD",
+                 extra.VALUE32: "TCD", extra.WORD_OUT32: "TCD"}
+_VALUES = (rows.WORD_IN, extra.VALUE32, extra.MODULE)  # the kinds a K/H constant may be
+_EITHER = {extra.DEVICE_OUT: "YMS", extra.DEVICE_IN: "XYMS"}  # a bit device, or T, C, D
 _EXPECTED = {  # the spellings an operand of each kind may have, for the message
     rows.BIT_IN: "X, Y, M, S, T, C", rows.BIT_OUT: "Y, M, S", rows.WORD_IN: "K, H, T, C, D",
     rows.WORD_OUT: "T, C, D", rows.TIMER: "T0-T255", rows.COUNTER: "C0-C199",
     rows.WIDE_COUNTER: "C200-C255", rows.RESET: "T, C, D", rows.LABEL: "P0-P255",
-    rows.PROGRAM: "P0-P255", rows.NEST: "N0-N7",
+    rows.PROGRAM: "P0-P255", rows.NEST: "N0-N7", extra.VALUE32: "K, H, T, C, D",
+    extra.WORD_OUT32: "T, C, D", extra.DEVICE_OUT: "Y, M, S, T, C, D",
+    extra.DEVICE_IN: "X, Y, M, S, T, C, D", extra.MODULE: "K0-K7", extra.STEP: "S0-S1023",
 }
 
 
@@ -79,6 +85,10 @@ class _Reader:
         self.diagnostics: list[Diagnostic] = []
         self.rung = _Rung(0)
         self.after_fend = False
+        self.step: Address | None = None  # the S of the step ladder's step being read (STL)
+        self.step_read: Address | None = None  # the S of a STL line just read
+        self.loops: list[tuple[LabelRef, ParamValue, int, int]] = []  # FORs open: label, count
+        self.loop_count = 0  # FOR lines read
         self.pending: list[str] = []  # comment lines not yet given to a network
 
     def error(self, code: str, line: int, column: int, **args: object) -> None:
@@ -119,6 +129,8 @@ class _Reader:
             self.line(index, number, column, words, comment)
             last = index + 1
         self.close(last)
+        for _label, _count, number, column in self.loops:
+            self.error("dvp-for-without-next", number, column)
         return self.networks, last
 
     def line(self, index: int, number: int, column: int, words: list[str], comment: str) -> None:
@@ -139,6 +151,15 @@ class _Reader:
             else:
                 self.error("unknown-instruction", number, column, name=mnemonic)
             return
+        if spelling.role == "step":
+            self.step_line(index, number, column, words, comment)
+            return
+        if spelling.role == "loop":
+            self.loop_line(index, number, column, words, comment)
+            return
+        if spelling.role in ("output", "contact", "filler"):
+            self.after_step(index, number, column)
+        self.step_read = None
         rung = self.rung
         role = spelling.role
         if role == "alone" or (role == "load" and rung.output and rung.pushed == 0):
@@ -155,18 +176,108 @@ class _Reader:
             kinds = spelling.operands
         if mnemonic == "FEND":
             self.after_fend = True
+        if spec_row_is_return(row_name):
+            self.step = None
+        if self.step is not None and mnemonic in extra.STEP_MOVE_ROWS and operands \
+                and operands[0][:1].upper() == "S":  # a step's SET/OUT Sm: moves on to Sm
+            row_name = extra.STEP_MOVE_ROWS[mnemonic]
         spec = lookup(row_name)
         assert spec is not None, row_name
         instruction = self.build(spec, mnemonic, kinds, operands, number, column, comment)
-        self.add(index, instruction)
+        if spec.name in extra.STEP_MOVE_ROWS.values() and instruction.params \
+                and self.step is not None:
+            instruction = instruction._replace(params=(*instruction.params, self.step))
+        if spec.name in extra.PULSED and instruction.params:
+            self.pulsed(index, instruction)
+        else:
+            self.add(index, instruction)
         if role == "load":
             rung.depth += 1
         elif role == "block":
             rung.depth = max(rung.depth - 1, 0)
         rung.pushed = max(rung.pushed + (spec.pushes if spec.stack else 0), 0)
-        rung.output = role == "output"
+        if role != "filler":  # NOP leaves the rung as it was
+            rung.output = role == "output"
         if role == "alone":
             self.close(index + 1)
+
+    def pulsed(self, index: int, edge: Instruction) -> None:
+        """CJP/CALLP Pn: MPS, the edge box, the CJ/CALL it gates, MPP (the rung's value goes on
+        to what follows, as after any output)."""
+        line, column = edge.line, edge.column
+        push, pop = rows.SPELLINGS["MPS"].row, rows.SPELLINGS["MPP"].row
+        gated = rows.SPELLINGS[extra.PULSED[edge.name]].row
+        self.add(index, Instruction(push, None, (), "", (), line, column))
+        self.add(index, edge)
+        self.add(index, Instruction(gated, None, edge.params, "", (), line, column))
+        self.add(index, Instruction(pop, None, (), "", (), line, column))
+
+    def step_line(self, index: int, number: int, column: int, words: list[str],
+                  comment: str) -> None:
+        """STL Sn: a network of its own (the step before ends), read as LD Sn, the step's
+        COMMON range gated by it, LD Sn again (an output may follow at once)."""
+        self.close(index)
+        if len(words) != 2:
+            self.error("param-count", number, column, name="STL", expected=1,
+                       found=len(words) - 1)
+            return
+        at = self.lines[index].find(words[1], column - 1) + 1 or column
+        step = self.operand("STL", 1, rows.BIT_OUT, words[1], number, at)
+        if not isinstance(step, Address):
+            return
+        if step.byte < S_BITS or step.area is not Area.R:  # an S device only
+            self.kind_error("STL", 1, extra.STEP, words[1], number, at)
+            return
+        read = lookup("RD")
+        assert read is not None
+        if self.step is not None:
+            self.add(index, Instruction(extra.STEP_NEXT_ROW.name, None, (), "", (), number,
+                                        column))
+        self.add(index, Instruction(read.name, step, (), "", (), number, column))
+        self.add(index, Instruction(extra.STEP_ROW.name, None, (0, step), comment, (), number,
+                                    column))
+        self.step = self.step_read = step
+        self.rung.output = True  # an LD after it starts the step's first rung
+
+    def after_step(self, index: int, number: int, column: int) -> None:
+        """An output or contact right after STL Sn reads Sn (STL is its LD)."""
+        step, self.step_read = self.step_read, None
+        if step is not None and self.rung.instructions \
+                and self.rung.instructions[-1].name == extra.STEP_ROW.name:
+            read = lookup("RD")
+            assert read is not None
+            self.add(index, Instruction(read.name, step, (), "", (), number, column))
+            self.rung.depth = 1
+
+    def loop_line(self, index: int, number: int, column: int, words: list[str],
+                  comment: str) -> None:
+        """FOR n / NEXT: each a network of its own (docs/dialects.md)."""
+        self.close(index)
+        looping = words[0].upper() == "FOR"
+        if len(words) != (2 if looping else 1):
+            self.error("param-count", number, column, name=words[0].upper(),
+                       expected=1 if looping else 0, found=len(words) - 1)
+            return
+        if looping:
+            at = self.lines[index].find(words[1], column - 1) + 1 or column
+            count = self.operand("FOR", 1, rows.WORD_IN, words[1], number, at)
+            if count is None:
+                return
+            label = LabelRef(extra.LOOP_LABELS + self.loop_count)
+            self.loop_count += 1
+            self.loops.append((label, count, number, column))
+            self.add(index, Instruction(extra.LOOP_ROW.name, None, (label, count), comment, (),
+                                        number, column))
+        elif not self.loops:
+            self.error("dvp-next-without-for", number, column)
+            return
+        else:
+            label, count, _line, _column = self.loops.pop()
+            self.add(index, Instruction(extra.LOOP_TEST_ROW.name, None, (count,), comment, (),
+                                        number, column))
+            self.add(index, Instruction(extra.LOOP_BACK_ROW.name, None, (label,), "", (),
+                                        number, column))
+        self.close(index + 1)
 
     def build(self, spec: InstructionSpec, mnemonic: str, kinds: tuple[str, ...],
               operands: list[str], number: int, column: int, comment: str) -> Instruction:
@@ -204,10 +315,16 @@ class _Reader:
         try:
             if kind not in (rows.LABEL, rows.PROGRAM, rows.NEST) and \
                     _CONSTANT.match(text) is None:
-                if upper[:1] in "KH" and kind == rows.WORD_IN:
+                if upper[:1] in "KH" and kind in _VALUES:
                     self.error("dialect-constant", line, column, text=text)
                     return None
                 DEVICES.split(text)  # an unknown device, an 8 in octal, out of range: say so
+            if kind in _EITHER and _CONSTANT.match(text) is None:
+                if upper[:1] in _EITHER[kind]:
+                    return DEVICES.bit(text)
+                if upper[:1] in "TCD":
+                    return DEVICES.word(text)[0]
+                return self.kind_error(name, index, kind, text, line, column)
             if kind in _BIT_LETTERS:
                 if upper[:1] not in _BIT_LETTERS[kind] or (_CONSTANT.match(text) and \
                         upper[:1] in "KH"):
@@ -225,9 +342,9 @@ class _Reader:
                 return int(found.group(1))
             constant = _CONSTANT.match(text)
             if constant is not None:
-                if kind != rows.WORD_IN:
+                if kind not in _VALUES or (kind == extra.MODULE and upper[:1] != "K"):
                     return self.kind_error(name, index, kind, text, line, column)
-                return self.constant(constant, text, line, column)
+                return self.constant(constant, text, line, column, kind == extra.VALUE32)
             if upper[:1] not in _WORD_LETTERS.get(kind, ""):
                 return self.kind_error(name, index, kind, text, line, column)
             address, _width = DEVICES.word(text)
@@ -240,8 +357,9 @@ class _Reader:
             self.error(exc.code, line, column, **exc.args_map)
             return None
 
-    def constant(self, found: re.Match[str], text: str, line: int, column: int) -> int | None:
-        """A K (decimal) or H (hex) constant."""
+    def constant(self, found: re.Match[str], text: str, line: int, column: int,
+                 wide: bool = False) -> int | None:
+        """A K (decimal) or H (hex) constant (`wide`: of a 32-bit operand)."""
         letter, digits = found.group(1).upper(), found.group(2)
         try:
             value = int(digits, 16 if letter == "H" else 10)
@@ -250,7 +368,7 @@ class _Reader:
             return None
         if letter == "H" and value > 0xFFFF:
             return value - (1 << 32) if value >= 1 << 31 else value
-        if letter == "H" and value >= 0x8000:
+        if letter == "H" and value >= 0x8000 and not wide:
             return value - 0x10000
         return value
 
@@ -260,6 +378,11 @@ class _Reader:
         self.error("dialect-operand", line, column, name=name, index=index,
                    expected=_EXPECTED[kind], text=text)
         return None
+
+
+def spec_row_is_return(row_name: str) -> bool:
+    """True for the row that ends the step ladder (RET)."""
+    return row_name == extra.RETURN_ROW.name
 
 
 def read(text: str, form: TextForm, lines: list[str],

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+from ladderworks.core.dialects.delta.instructions import NOT_SIMULATED, SPELLINGS
 from ladderworks.core.il.textform import split_lines
 
 # a Delta line: optional step number, a mnemonic, operands joined to their numbers (X0, K10)
@@ -18,6 +19,8 @@ _DELTA_ONLY = frozenset(("LDI", "ANI", "ORI", "ANB", "ORB", "MPS", "MRD", "MPP",
                          "ORP", "ORF", "PLS", "PLF", "INV"))
 _COMMON = frozenset(("LD", "AND", "OR", "OUT", "SET", "RST", "END", "CALL", "MOV", "ADD", "SUB",
                      "MUL", "DIV", "INC", "DEC", "CMP", "ZCP"))
+# every other mnemonic the Delta reader knows or names (DMOV, ZRST, FROM, STL ...): Delta's too
+_KNOWN = frozenset(SPELLINGS) | NOT_SIMULATED
 SAMPLE_LINES = 400
 
 
@@ -47,6 +50,9 @@ def score(text: str) -> int:
             matched += 1
             if name == "LD" and operands and operands[0][:1].upper() in "XYMSTC":
                 distinctive = True
+        elif name in _KNOWN:
+            matched += 1
+            distinctive = distinctive or name == "STL"  # the step ladder: Delta's alone
         if total >= SAMPLE_LINES:
             break
     if not total or not distinctive:

@@ -27,5 +27,5 @@ def base_now(number: int, areas: Areas) -> int:
 TABLES = DeviceTables(
     timers={"DVP.TMR": Use(0, 1)},
     counters={"DVP.CNT": Use(0, 1), "DVP.DCNT": Use(0, 1, up_down=True)},
-    timer_base=base_now, registers=("D",), constant="K{0}",
+    timer_base=base_now, registers=("D", "CR"), constant="K{0}",
     switched_bases={n: ("M1028", 10) for n in range(FAST_FIRST, FAST_LAST + 1)})

@@ -14,8 +14,10 @@ import operator
 from collections.abc import Callable
 
 from ladderworks.core.dialects.delta.instructions import FAMILIES, ROWS
+from ladderworks.core.dialects.delta.rows_extra import ACTIONS
 from ladderworks.core.instructions import Combine, Operation
 from ladderworks.core.plc.functions import FunctionContext, function
+from ladderworks.core.plc.functions.delta_words32 import value32
 from ladderworks.core.plc.functions.dvp_data import Impl, value
 
 # A comparison contact's test, by its row's `operation`.
@@ -35,10 +37,12 @@ def _joined(combine: Combine, contact: bool, inputs: tuple[bool, ...]) -> bool:
     return bool(inputs[-1]) or contact
 
 
-def _compare(combine: Combine, test: Callable[[int, int], bool]) -> Impl:
+def _compare(combine: Combine, test: Callable[[int, int], bool], wide: bool) -> Impl:
+    read = value32 if wide else value  # DLD= ...: 32-bit operands (device pairs)
+
     def run(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
         s1, s2 = params
-        return _joined(combine, test(value(ctx.memory, s1), value(ctx.memory, s2)), inputs)
+        return _joined(combine, test(read(ctx.memory, s1), read(ctx.memory, s2)), inputs)
 
     return run
 
@@ -55,7 +59,8 @@ def _edge(combine: Combine, falling: bool) -> Impl:
 
 
 for _row in ROWS:  # each contact row by its fields: how it joins, what it tests
-    if _row.name in FAMILIES["dvp_contacts"]:
+    if _row.name in FAMILIES["dvp_contacts"] and _row.name not in ACTIONS:  # (FLD=: floats)
         test = _TESTS.get(_row.operation)
-        function(_row.name)(_compare(_row.combine, test) if test is not None
+        function(_row.name)(_compare(_row.combine, test, _row.params[0].width == 4)
+                            if test is not None
                             else _edge(_row.combine, _row.operation is Operation.FALLING))

@@ -11,6 +11,7 @@ nothing and sets M1067/M1068 (operation error). docs/dialects.md.
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import cache
 
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import DEVICES, relay
@@ -25,10 +26,16 @@ M1067, M1068 = relay(1067), relay(1068)  # operation error, and it latched
 Impl = Callable[[FunctionContext, dict, tuple[bool, ...], tuple], bool]
 
 
+@cache
+def width_of(address: Address) -> int:
+    """The byte width of the word device at `address` (kept: the device map never changes)."""
+    return DEVICES.width_at(address)
+
+
 def value(memory: Memory, operand: object) -> int:
     """A source operand's value: a constant, or a word device (32-bit for C200..C255)."""
     if isinstance(operand, Address):
-        return memory.read(operand, DEVICES.width_at(operand), signed=True)
+        return memory.read(operand, width_of(operand), signed=True)
     assert isinstance(operand, int)
     return operand
 
