@@ -11,6 +11,7 @@ from ladderworks.core.dialects.fatek.branches import (
     ALWAYS_OFF,
     ALWAYS_ON,
     EDGE_DEVICES,
+    MAX_TR,
     BranchError,
     Lowered,
     StackLowering,
@@ -29,7 +30,13 @@ from ladderworks.core.dialects.fatek.devices import (
     word_address,
 )
 from ladderworks.core.dialects.fatek.listing import Record
-from ladderworks.core.dialects.fatek.rows import BY_FUN, NOT_SIMULATED, ROWS, operand_label
+from ladderworks.core.dialects.fatek.rows import (
+    BY_FUN,
+    NOT_SIMULATED,
+    ROWS,
+    UNKNOWN_FUN,
+    operand_label,
+)
 from ladderworks.core.il.program import Instruction, ParamValue
 from ladderworks.core.instructions import InstructionSpec, ParamKind
 
@@ -47,6 +54,10 @@ class ProgramLowering(StackLowering):
         self.warnings = warnings
         self.fo: Address | None = None  # the last box's FO byte in this network
         self.fresh_box = False  # the last record was a box with W1 (its FO0 is ST0)
+        self.following: Record | None = None  # the record after the one being lowered
+        self.used_tr: set[int] = set()  # the TR points the network's own records name
+        self.pass_on: Record | None = None  # the box whose EN the next coil takes (no output)
+        self.kept_tr = 0  # the TR point holding that EN
 
     def emit_box(self, record: Record, spec: InstructionSpec, params: tuple[ParamValue, ...],
                  comment: str = "") -> None:
@@ -169,19 +180,50 @@ class ProgramLowering(StackLowering):
                                         record.line, record.column, Severity.WARNING))
 
     def function(self, record: Record) -> None:
-        """FUN n with its operand lines."""
+        """FUN n with its operand lines; a FUN the table has no row for is kept as the
+        not-simulated box FBS.FUN (drawn, saved, run as nothing: its FO stay 0)."""
         spec = BY_FUN.get(record.fun or -1)
-        if spec is None or spec.inputs == ("IN",):
+        if spec is not None and spec.inputs == ("IN",):
             raise refused(record, "fatek-unknown-fun", number=record.fun)
-        self.inputs(record, len(spec.inputs))
+        if spec is None:
+            spec = ROW_OF_NAME[UNKNOWN_FUN]
+            count = max(1, self.depth)  # every block before it is one of its inputs
+        else:
+            count = len(spec.inputs)
+        self.inputs(record, count)
         fo = self.next_fo() if any(p.name == "fo" for p in spec.params) else None
+        kept = self.keep_en(record, spec)
         if spec.name in NOT_SIMULATED:
             self.not_simulated(record)
-            lines = ", ".join(f"{o.label}: {o.text}".strip() for o in record.operands)
-            self.emit_box(record, spec, (record.fun or 0, fo or ALWAYS_OFF), lines)
+            self.emit_box(record, spec, (record.fun or 0, fo or ALWAYS_OFF), kept_text(record))
         else:
             self.emit_box(record, spec, self.box_params(record, spec, fo))
         self.after_box(spec, fo)
+        if kept is not None:
+            self.pass_on = kept
+
+    def keep_en(self, record: Record, spec: InstructionSpec) -> Record | None:
+        """A box with no output followed by a coil: WinProladder wires the coil to the box's
+        EN. The EN is kept in a TR point the network does not use (`OUT TR n` before the box),
+        and the coil reads it (`LD TR n` after): the record of the box, or None."""
+        if spec.w1 or self.depth != 1 or not _takes_result(self.following):
+            return None
+        free = [n for n in range(MAX_TR - 1, -1, -1)
+                if n not in self.tr_points and n not in self.used_tr]
+        if not free:
+            return None
+        self.tr_points.add(free[0])
+        self.emit(record, "WRT", bit_address(Device("TR", free[0])))
+        self.kept_tr = free[0]
+        return record
+
+    def coil_after_box(self, record: Record) -> None:
+        """The coil or box after a box with no output: a new engine network from the kept EN."""
+        self.pass_on = None
+        self.new_part()
+        self.emit(record, "RD", bit_address(Device("TR", self.kept_tr)))
+        self.depth = 1
+        self.after_output = False
 
     def timer_or_counter(self, record: Record) -> None:
         """TMR Tn [base] PV / CTR Cn PV (PV on the line or on an operand line `PV: …`)."""
@@ -222,8 +264,10 @@ class ProgramLowering(StackLowering):
             device = bit_device(record, ("T", "C"))
             spec = ROW_OF_NAME["FBS.RST"]
             self.inputs(record, 1)
+            kept = self.keep_en(record, spec)
             self.emit_box(record, spec, (0 if device.kind == "T" else 1, device.number))
             self.after_box(spec, None)
+            self.pass_on = kept
             return
         record.mnemonic = "OUTR"
         try:
@@ -250,6 +294,16 @@ class ProgramLowering(StackLowering):
         kind = record.mnemonic
         if kind in ("OUT", "OUTS", "OUTR") and record.modifier != "TR":
             self.fresh_box = False
+        if self.pass_on is not None and _takes_result(record):
+            self.coil_after_box(record)
+        self.pass_on = None
+        if kind == "SET":
+            record.mnemonic = "OUTS"
+            try:
+                self.coil(record)
+            finally:
+                record.mnemonic = "SET"
+            return
         if self.take(record):
             return
         if kind in ("ORG", "LD", "AND", "OR") and record.modifier in ("TU", "TD"):
@@ -266,6 +320,23 @@ class ProgramLowering(StackLowering):
             self.function_output(record)
         elif kind != "END":
             raise refused(record, "fatek-unknown-instruction", name=kind)
+
+
+def _takes_result(record: Record | None) -> bool:
+    """Whether a record takes the result before it: a coil (OUT, OUTS, OUTR, SET, RST) or a
+    box (FUN, TMR, CTR); not a TR point, a contact or FO."""
+    if record is None or record.modifier == "TR":
+        return False
+    return record.mnemonic in ("OUT", "OUTS", "OUTR", "SET", "RST", "FUN", "TMR", "CTR")
+
+
+def kept_text(record: Record) -> str:
+    """A not-simulated box's operand lines as its comment (`Ps: 1, SR: R1200`); an unknown
+    FUN's name as written goes first (`XYZ| S: R0`)."""
+    lines = ", ".join(f"{o.label}: {o.text}".strip() for o in record.operands)
+    if BY_FUN.get(record.fun or -1) is None:
+        return f"{record.fun_name}|{lines}"
+    return lines
 
 
 def _name(record: Record) -> str:
@@ -299,10 +370,13 @@ def lower_program(records: list[Record]) -> tuple[list[Lowered], list[Diagnostic
     for network in split_networks(records):
         warnings: list[Diagnostic] = []
         lowering = ProgramLowering(boxes, warnings)
+        lowering.used_tr = {int(r.operand[2:]) for r in network
+                            if r.modifier == "TR" and r.operand[2:].isdigit()}
         try:
-            for record in network:
+            for index, record in enumerate(network):
                 if record.mnemonic == "END":
                     break
+                lowering.following = network[index + 1] if index + 1 < len(network) else None
                 lowering.take_record(record)
             if lowering.depth > 1:
                 last = network[-1]

@@ -6,7 +6,8 @@ from __future__ import annotations
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.fatek.branches import ALWAYS_OFF, ALWAYS_ON
 from ladderworks.core.dialects.fatek.devices import FO_AREA, device_at, word_device_at
-from ladderworks.core.dialects.fatek.rows import SUB_BASE, operand_label
+from ladderworks.core.dialects.fatek.printed import PrintedStyle, printed_lines
+from ladderworks.core.dialects.fatek.rows import SUB_BASE, UNKNOWN_FUN, operand_label
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, Network
 from ladderworks.core.instructions import Combine, InstructionSpec, Kind, Write
@@ -57,6 +58,15 @@ def _is_fo(address: Address | None) -> bool:
         and address.bit is not None and address.byte < 9000
 
 
+def unknown_parts(ins: Instruction) -> tuple[str, str]:
+    """A box's name and kept operand lines: an unknown FUN keeps its name as written before
+    `|` in its comment (lowering.kept_text)."""
+    if ins.spec.name == UNKNOWN_FUN and "|" in ins.comment:
+        name, _, kept = ins.comment.partition("|")
+        return name, kept
+    return ins.spec.text_name, ins.comment
+
+
 def _box_lines(ins: Instruction) -> list[str]:
     """A box's step line and its operand lines."""
     spec = ins.spec
@@ -67,14 +77,15 @@ def _box_lines(ins: Instruction) -> list[str]:
         return [_line("CTR", f"C{values['counter']}  {device_text(values['preset'])}")]
     if spec.name == "FBS.RST":
         return [_line("RST", f"{'T' if values['kind'] == 0 else 'C'}{values['number']}")]
-    fun = (spec.sub or SUB_BASE) - SUB_BASE
+    fun = values["fun"] if "fun" in values else (spec.sub or SUB_BASE) - SUB_BASE
     mode = values.get("mode", 0)
     forms = ("D" if isinstance(mode, int) and mode & 2 else "") + (
         "P" if isinstance(mode, int) and mode & 1 else "")
-    head = _line(f"FUN {fun}{forms}", spec.text_name)
+    name, kept = unknown_parts(ins)
+    head = _line(f"FUN {fun}{forms}", name)
     lines = [head]
     if spec.cnc:  # not simulated: its operand lines were kept as the comment
-        lines.extend(f"    {text.strip()}" for text in ins.comment.split(", ") if text.strip())
+        lines.extend(f"    {text.strip()}" for text in kept.split(", ") if text.strip())
         return lines
     for param in spec.params:
         if param.name in ("mode", "fo", "fun"):
@@ -151,15 +162,18 @@ def _contact_box(ins: Instruction, mnemonic: str) -> list[str]:
             f"    Sa: {device_text(values['Sa'])}", f"    Sb: {device_text(values['Sb'])}"]
 
 
-def network_lines(network: Network, first: bool) -> list[str]:
+def network_lines(network: Network, first: bool, style: PrintedStyle | None = None
+                  ) -> list[str]:
     """A network's lines (a network that goes on from the one before, after `LD TR n` or
-    `FO n`, starts with that line)."""
+    `FO n`, starts with that line); in WinProladder's printed form when its file is."""
     out: list[str] = []
     index = 0
     instructions = network.instructions
     while index < len(instructions):
         lines, index = instruction_lines(instructions, index, index == 0)
         out.extend(lines)
+    if style is not None:
+        return printed_lines(out, style, network.line)
     return out
 
 
@@ -195,7 +209,10 @@ def instruction_text(instruction: Instruction) -> str:
         operand = "" if instruction.operand is None else " " + device_text(instruction.operand)
         return (name + operand).strip()
     if spec.cnc:
-        return f"{name} {instruction.comment}".strip()
+        fun_name, kept = unknown_parts(instruction)
+        if spec.name == UNKNOWN_FUN:
+            name = f"FUN {instruction.params[0]} {fun_name}".strip()
+        return f"{name} {kept}".strip()
     texts = params_text(spec, instruction.params)
     labels = [operand_label(p.name) for p in spec.params
               if p.name not in _HIDDEN]

@@ -107,16 +107,24 @@ ROWS: tuple[InstructionSpec, ...] = (
       for fun, name, symbol in ((170, "FBS.EQ", "(=)"), (171, "FBS.GT", "(>)"),
                                 (172, "FBS.LT", "(<)"), (173, "FBS.NE", "(<>)"),
                                 (174, "FBS.GE", "(>=)"), (175, "FBS.LE", "(<=)"))),
-    # drawn and kept, not simulated (a warning at their line; FO stay 0)
+    # drawn and kept, not simulated (a warning at their line; FO stay 0). Inputs as
+    # WinProladder's printout draws them: HSPSO EN, PAU, ABT (outputs ACT, ERR, DN = FO0-FO2)
     *(_row(name, SUB_BASE + fun, mnemonic, title, title_tr, params=(_number("fun", 0, 999), FO),
-           cnc=True)
-      for fun, name, mnemonic, title, title_tr in (
-          (140, "FBS.HSPSO", "HSPSO", "High-speed pulse output", "YÜKSEK HIZLI DARBE ÇIKIŞI"),
-          (141, "FBS.MPARA", "MPARA", "Positioning parameters", "KONUMLAMA PARAMETRELERİ"),
-          (142, "FBS.PSOFF", "PSOFF", "Stop the pulse output", "DARBE ÇIKIŞINI DURDUR"),
-          (143, "FBS.PSCNV", "PSCNV", "Pulse position to a value", "DARBE KONUMUNU DEĞERE ÇEVİR"),
-          (176, "FBS.176", "FUN 176", "FUN 176", "FUN 176"))),
+           cnc=True, inputs=inputs)
+      for fun, name, mnemonic, title, title_tr, inputs in (
+          (140, "FBS.HSPSO", "HSPSO", "High-speed pulse output", "YÜKSEK HIZLI DARBE ÇIKIŞI",
+           ("EN", "PAU", "ABT")),
+          (141, "FBS.MPARA", "MPARA", "Positioning parameters", "KONUMLAMA PARAMETRELERİ",
+           ("EN",)),
+          (142, "FBS.PSOFF", "PSOFF", "Stop the pulse output", "DARBE ÇIKIŞINI DURDUR", ("EN",)),
+          (143, "FBS.PSCNV", "PSCNV", "Pulse position to a value", "DARBE KONUMUNU DEĞERE ÇEVİR",
+           ("EN",)),
+          (176, "FBS.176", "FUN 176", "FUN 176", "FUN 176", ("EN",)))),
+    # any other FUN n a program holds: kept, drawn as a box with up to 4 inputs, run as nothing
+    _row("FBS.FUN", OTHER + 5, "FUN", "Function not simulated", "BENZETİLMEYEN FONKSİYON",
+         inputs=("EN", "IN2", "IN3", "IN4"), params=(_number("fun", 0, 999), FO), cnc=True),
 )
+UNKNOWN_FUN = "FBS.FUN"  # the row of a FUN the table has no row for
 
 BY_FUN: dict[int, InstructionSpec] = {
     spec.sub - SUB_BASE: spec for spec in ROWS if spec.sub is not None and spec.sub < OTHER}
@@ -127,6 +135,7 @@ COMPARISON_FUNS = range(170, 176)
 FAMILIES: dict[str, tuple[str, ...]] = {
     "fatek_data": ("FBS.MOV", "FBS.ADD", "FBS.SUB", "FBS.MUL", "FBS.DIV", "FBS.INC", "FBS.DEC",
                    "FBS.CMP", "FBS.EQ", "FBS.GT", "FBS.LT", "FBS.NE", "FBS.GE", "FBS.LE"),
-    "fatek_io": ("FBS.ASCWR", "FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176"),
+    "fatek_io": ("FBS.ASCWR", "FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176",
+                 "FBS.FUN"),
     "fatek_timing": ("FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.TU", "FBS.TD"),
 }
