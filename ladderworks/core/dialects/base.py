@@ -80,7 +80,7 @@ class Dialect:
     def network_lines(self, network: Network, first: bool, style: object = None) -> list[str]:
         """A new or changed network as this dialect's text (Save, format), in `style` (what
         `style_of` found in its file) when it has one."""
-        printer: Callable[..., list[str]] = _function(self.printer)
+        printer: Callable[..., list[str]] = _function(self.printer)  # type: ignore[assignment]
         return printer(network, first) if style is None else printer(network, first, style)
 
     def style_of(self, lines: list[str]) -> object:

@@ -3,6 +3,7 @@ comparison contacts, timers, counters, RST, FUN boxes and their FO outputs."""
 
 from __future__ import annotations
 
+import itertools
 import re
 
 from ladderworks.core.address import Address
@@ -37,6 +38,7 @@ from ladderworks.core.dialects.fatek.rows import (
     UNKNOWN_FUN,
     operand_label,
 )
+from ladderworks.core.dialects.fatek.tr_inputs import block_start, drop_unread, pushed_copy
 from ladderworks.core.il.program import Instruction, ParamValue
 from ladderworks.core.instructions import InstructionSpec, ParamKind
 
@@ -55,9 +57,49 @@ class ProgramLowering(StackLowering):
         self.fo: Address | None = None  # the last box's FO byte in this network
         self.fresh_box = False  # the last record was a box with W1 (its FO0 is ST0)
         self.following: Record | None = None  # the record after the one being lowered
+        self.ahead: list[Record] = []  # the records of its network
+        self.index = 0  # the one being lowered
         self.used_tr: set[int] = set()  # the TR points the network's own records name
         self.pass_on: Record | None = None  # the box whose EN the next coil takes (no output)
         self.kept_tr = 0  # the TR point holding that EN
+        self.chain_start = 0  # where the outputs on the current result began (this part)
+        self.saved: dict[int, tuple[Lowered, list[Instruction]]] = {}  # TR n: part, block
+        self.copied: dict[Address, int] = {}  # the TR points read as copies of their block
+
+    def save_tr(self, record: Record) -> None:
+        """OUT TR n, remembering the block it saved (copied where it is read as an input)."""
+        super().save_tr(record)
+        instructions = self.current.instructions[:-1]
+        start = block_start(instructions)
+        number = self.tr_number(record)
+        self.saved.pop(number, None)
+        if start is not None:
+            self.saved[number] = (self.current, instructions[start:])
+
+    def load_tr(self, record: Record) -> None:
+        """LD TR n: the saved block copied when it is pushed as one more value (a box's input,
+        or a block ANDLD / ORLD joins), else the point read."""
+        number = self.tr_number(record) if number_ok(record) else -1
+        saved = self.saved.get(number)
+        if saved is None or self.after_output or not self.depth or \
+                saved[0] is not self.current or not self.box_input_next():
+            super().load_tr(record)
+            return
+        self.current.instructions.extend(pushed_copy(saved[1], record.line, record.column))
+        self.current.records.extend([record] * len(saved[1]))
+        self.copied[bit_address(Device("TR", number))] = number
+        self.depth += 1
+        self.after_output = False
+
+    def box_input_next(self) -> bool:
+        """Whether the value pushed now stays apart until a box takes it as an input (no
+        ANDLD / ORLD or output joins it first)."""
+        for record in itertools.islice(self.ahead, self.index + 1, None):
+            if record.mnemonic in ("FUN", "TMR", "CTR"):
+                return True
+            if record.mnemonic not in ("AND", "OR", "ANDF", "ORF") or record.modifier == "TR":
+                return False
+        return False
 
     def emit_box(self, record: Record, spec: InstructionSpec, params: tuple[ParamValue, ...],
                  comment: str = "") -> None:
@@ -82,6 +124,7 @@ class ProgramLowering(StackLowering):
         """After a box: its W1 (FO0) is the result, an output was made."""
         self.depth = 1 if spec.w1 else 0
         self.after_output = True
+        self.chain_start = len(self.current.instructions)
         self.fo = fo
         self.fresh_box = spec.w1
 
@@ -204,18 +247,47 @@ class ProgramLowering(StackLowering):
 
     def keep_en(self, record: Record, spec: InstructionSpec) -> Record | None:
         """A box with no output followed by a coil: WinProladder wires the coil to the box's
-        EN. The EN is kept in a TR point the network does not use (`OUT TR n` before the box),
-        and the coil reads it (`LD TR n` after): the record of the box, or None."""
+        EN. The EN is kept in a TR point the network does not use (`OUT TR n` before the box);
+        the box and the coil each start an engine network from it (`LD TR n`): the record of
+        the box, or None."""
         if spec.w1 or self.depth != 1 or not _takes_result(self.following):
             return None
+        free = self.free_tr()
+        if free is None:
+            return None
+        address = bit_address(Device("TR", free))
+        self.emit(record, "WRT", address)
+        self.new_part()  # the box drawn on a rung of its own, from the point
+        self.emit(record, "RD", address)
+        self.kept_tr = free
+        return record
+
+    def free_tr(self) -> int | None:
+        """A TR point the network does not use, taken (the highest first), None if none."""
         free = [n for n in range(MAX_TR - 1, -1, -1)
                 if n not in self.tr_points and n not in self.used_tr]
         if not free:
             return None
         self.tr_points.add(free[0])
-        self.emit(record, "WRT", bit_address(Device("TR", free[0])))
-        self.kept_tr = free[0]
-        return record
+        return free[0]
+
+    def box_after_coils(self, record: Record) -> None:
+        """A box after coils on the same result (`RST( ) S1` … `RST( ) C0`): WinProladder draws
+        them in parallel. The result is kept in a free TR point before the first coil, and the
+        box starts a new engine network from it (each drawn as a rung)."""
+        if self.depth != 1:
+            return
+        free = self.free_tr()
+        if free is None:
+            return
+        part = self.current
+        at = min(self.chain_start, len(part.instructions))
+        first = part.records[at] if at < len(part.records) else record
+        part.instructions.insert(at, Instruction("WRT", bit_address(Device("TR", free)),
+                                                 line=first.line, column=first.column))
+        part.records.insert(at, first)
+        self.kept_tr = free
+        self.coil_after_box(record)
 
     def coil_after_box(self, record: Record) -> None:
         """The coil or box after a box with no output: a new engine network from the kept EN."""
@@ -294,8 +366,12 @@ class ProgramLowering(StackLowering):
         kind = record.mnemonic
         if kind in ("OUT", "OUTS", "OUTR") and record.modifier != "TR":
             self.fresh_box = False
+        if not self.after_output:
+            self.chain_start = len(self.current.instructions)
         if self.pass_on is not None and _takes_result(record):
             self.coil_after_box(record)
+        elif self.after_output and _is_box(record):
+            self.box_after_coils(record)
         self.pass_on = None
         if kind == "SET":
             record.mnemonic = "OUTS"
@@ -320,6 +396,19 @@ class ProgramLowering(StackLowering):
             self.function_output(record)
         elif kind != "END":
             raise refused(record, "fatek-unknown-instruction", name=kind)
+
+
+def number_ok(record: Record) -> bool:
+    """Whether a TR record's number is written as digits (its range checked later)."""
+    return record.operand[2:].isdigit()
+
+
+def _is_box(record: Record) -> bool:
+    """Whether a record is a box that takes the result (FUN, TMR, CTR, RST of T/C)."""
+    if record.mnemonic in ("FUN", "TMR", "CTR"):
+        return True
+    operand = record.operand.upper()
+    return record.mnemonic == "RST" and operand[:1] in ("T", "C") and not operand.startswith("TR")
 
 
 def _takes_result(record: Record | None) -> bool:
@@ -377,12 +466,14 @@ def lower_program(records: list[Record]) -> tuple[list[Lowered], list[Diagnostic
                 if record.mnemonic == "END":
                     break
                 lowering.following = network[index + 1] if index + 1 < len(network) else None
+                lowering.ahead, lowering.index = network, index
                 lowering.take_record(record)
             if lowering.depth > 1:
                 last = network[-1]
                 raise refused(last, "fatek-open-block", name=_name(last), count=lowering.depth - 1)
         except BranchError as error:
             diagnostics.append(error.diagnostic)
+        drop_unread(lowering.parts, lowering.copied)
         diagnostics.extend(warnings)
         boxes = lowering.boxes
         parts.extend(part for part in lowering.parts if part.instructions)
