@@ -70,6 +70,9 @@ class Dialect:
     # "module:function": (the file's lines) -> the style the printer writes a changed network in
     # (the file's own form); "" when the dialect has one form
     style: str = ""
+    # "module:function": (program's path, program) -> None: files beside a program read with it
+    # (Fatek's comment export as its symbols)
+    companions: str = ""
 
     def read(self, text: str, form: TextForm, lines: list[str],
              ends: list[str]) -> tuple[Program, list[Diagnostic]]:

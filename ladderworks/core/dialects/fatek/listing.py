@@ -76,8 +76,9 @@ _ANNOTATION = "←"  # the seed's margin notes (002:376-402)
 
 
 def _strip_note(text: str) -> str:
-    """The instruction without a margin note (`LD TR 0 ← 2. sıradan başlar`) or a `;` comment."""
-    for mark in (_ANNOTATION, ";"):
+    """The instruction without a margin note (`LD TR 0 ← 2. sıradan başlar`) or a `;` / `#`
+    comment."""
+    for mark in (_ANNOTATION, ";", "#"):
         if mark in text:
             text = text[:text.index(mark)]
     return text.strip()

@@ -65,10 +65,12 @@ class ProgramLowering(StackLowering):
         self.chain_start = 0  # where the outputs on the current result began (this part)
         self.saved: dict[int, tuple[Lowered, list[Instruction]]] = {}  # TR n: part, block
         self.copied: dict[Address, int] = {}  # the TR points read as copies of their block
+        self.saving = self.just_saved = -1  # the TR point this / the last record set
 
     def save_tr(self, record: Record) -> None:
         """OUT TR n, remembering the block it saved (copied where it is read as an input)."""
         super().save_tr(record)
+        self.saving = self.tr_number(record)
         instructions = self.current.instructions[:-1]
         start = block_start(instructions)
         number = self.tr_number(record)
@@ -80,6 +82,13 @@ class ProgramLowering(StackLowering):
         """LD TR n: the saved block copied when it is pushed as one more value (a box's input,
         or a block ANDLD / ORLD joins), else the point read."""
         number = self.tr_number(record) if number_ok(record) else -1
+        if number == self.just_saved and self.depth == 1:
+            # `OUT TR n` then `LD TR n` (WinProladder never prints an empty branch): the rung
+            # goes on from the point, as the lowering of a box's kept EN writes it
+            self.new_part()
+            self.emit(record, "RD", bit_address(Device("TR", number)))
+            self.after_output = False
+            return
         saved = self.saved.get(number)
         if saved is None or self.after_output or not self.depth or \
                 saved[0] is not self.current or not self.box_input_next():
@@ -145,7 +154,7 @@ class ProgramLowering(StackLowering):
         """A contact made of a box with one input IN: IN AND the box's condition."""
         kind = record.mnemonic.rstrip("F") if record.mnemonic.endswith("F") else record.mnemonic
         if kind == "ORG" or (kind == "LD" and (not self.depth or self.after_output)):
-            if kind == "LD" and self.depth:
+            if kind == "LD" and self.after_output and self.current.instructions:
                 self.new_part()
             self.emit(record, "RD", ALWAYS_ON)
             self.depth = 1
@@ -366,6 +375,7 @@ class ProgramLowering(StackLowering):
         kind = record.mnemonic
         if kind in ("OUT", "OUTS", "OUTR") and record.modifier != "TR":
             self.fresh_box = False
+        self.just_saved, self.saving = self.saving, -1  # the TR point the record before set
         if not self.after_output:
             self.chain_start = len(self.current.instructions)
         if self.pass_on is not None and _takes_result(record):
