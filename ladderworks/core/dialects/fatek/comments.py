@@ -102,7 +102,7 @@ def read_comments(data: bytes) -> tuple[SymbolTable | None, list[Diagnostic]]:
     text, _encoding, diagnostics = decode(data)
     if any(d.is_error for d in diagnostics):
         return None, diagnostics
-    lines = text.splitlines()
+    lines = [line.removesuffix("\r") for line in text.split("\n")]  # the file's own lines
     head = tuple(part.strip().upper() for part in lines[0].split("\t")) if lines else ()
     if head[:2] != HEADER[:2]:
         return None, [*diagnostics, Diagnostic("fatek-comment-header", {}, 1, 1)]
