@@ -97,6 +97,10 @@ ROWS: tuple[InstructionSpec, ...] = (
          params=(MODE, _register("output", ParamAccess.READ_WRITE), FO)),
     _row("FBS.CMP", SUB_BASE + 17, "CMP", "Compare", "KARŞILAŞTIR",
          params=(MODE, _value("Sa"), _value("Sb"), FO)),
+    _row("FBS.BCD", SUB_BASE + 20, "BCD", "Binary to BCD", "İKİLİDEN BCD'YE",
+         params=(MODE, _value("S"), _register("output"), FO)),
+    _row("FBS.BIN", SUB_BASE + 21, "BIN", "BCD to binary", "BCD'DEN İKİLİYE",
+         params=(MODE, _value("S"), _register("output"), FO)),
     _row("FBS.ASCWR", SUB_BASE + 94, "ASCWR", "ASCII write", "ASCII YAZ",
          inputs=("EN", "PAU", "ABT"),
          params=(_number("MD", 0, 255), _register("S", ParamAccess.READ),
@@ -137,5 +141,6 @@ FAMILIES: dict[str, tuple[str, ...]] = {
                    "FBS.CMP", "FBS.EQ", "FBS.GT", "FBS.LT", "FBS.NE", "FBS.GE", "FBS.LE"),
     "fatek_io": ("FBS.ASCWR", "FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176",
                  "FBS.FUN"),
+    "fatek_convert": ("FBS.BCD", "FBS.BIN"),
     "fatek_timing": ("FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.TU", "FBS.TD"),
 }
