@@ -200,6 +200,16 @@ def params_text(spec: InstructionSpec, values: tuple) -> list[str]:
     return texts
 
 
+def labelled_params_text(spec: InstructionSpec, values: tuple) -> list[str]:
+    """A FUN box's operands as the drawing shows them, labelled as WinProladder draws them
+    (`S:C0`, `D:R100`, `Sa:R6`: one word each); a timer's, counter's or RST's bare (`T10`)."""
+    texts = params_text(spec, values)
+    if not (spec.sub or 0) < SUB_BASE + 1000 or spec.inputs == ("IN",):
+        return texts  # TMR, CTR, RST (21000 …); a contact's operands above and below it
+    labels = [operand_label(p.name) for p in spec.params if p.name not in _HIDDEN]
+    return [f"{label.strip()}:{text}" for label, text in zip(labels, texts, strict=False)]
+
+
 def instruction_text(instruction: Instruction) -> str:
     """One instruction on one line, as a listing in the console shows it: `ORG X0`,
     `FUN 11 (+) Sa: R0 Sb: 7 D: R1`."""
@@ -232,4 +242,5 @@ def spelling() -> Spelling:
             return "SHORT" if address == ALWAYS_ON else "OPEN"
         return DIALECT.format_address(address)
 
-    return Spelling(DIALECT.name, address_text, params_text, instruction_text, mnemonic_of)
+    return Spelling(DIALECT.name, address_text, labelled_params_text, instruction_text,
+                    mnemonic_of)
