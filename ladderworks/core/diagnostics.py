@@ -234,6 +234,8 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "'{text}' is not the time base of {name} ({base})"),
     "fatek-fo": QT_TRANSLATE_NOOP(
         "Diagnostic", "FO {text}: no function output here (FO0-FO7 after a box)"),
+    "fatek-long-number": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}…' is too long to be a Fatek number: the line is not read"),
     "fatek-comment-header": QT_TRANSLATE_NOOP(
         "Diagnostic",
         "not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION"

@@ -44,8 +44,8 @@ def test_fatek_offers_fun_boxes_rst_and_edge_contacts() -> None:
                      "FBS.SUB", "FBS.MUL", "FBS.DIV", "FBS.INC", "FBS.DEC", "FBS.CMP",
                      "FBS.BCD", "FBS.BIN", "FBS.ASCWR"]  # not FUN 140-143/176, nor an
     # unknown FUN's box (FBS.FUN): kept, not simulated
-    assert [spec.name for spec in contact_rows("fatek")] == [
-        "FBS.TU", "FBS.TD", "FBS.EQ", "FBS.GT", "FBS.LT", "FBS.NE", "FBS.GE", "FBS.LE"]
+    assert [spec.name for spec in contact_rows("fatek")] == [  # the rows that start a rung
+        f"FBS.{name}.ORG" for name in ("TU", "TD", "EQ", "GT", "LT", "NE", "GE", "LE")]
     assert structure_rows("fatek") == ()
     spec = lookup("FBS.TMR")
     assert spec is not None

@@ -114,8 +114,8 @@ def read_comments(data: bytes) -> tuple[SymbolTable | None, list[Diagnostic]]:
         name, _, description = rest.partition("\t")
         address = _address(ref.strip())
         if address is None:
-            diagnostics.append(Diagnostic("fatek-comment-ref", {"text": ref.strip()}, number, 1,
-                                          Severity.WARNING))
+            diagnostics.append(Diagnostic("fatek-comment-ref", {"text": ref.strip()[:24]},
+                                          number, 1, Severity.WARNING))
             continue
         comments = (description.strip(),) if description.strip() else ()
         table.add(address, Symbol(name.strip(), comments))
@@ -124,6 +124,8 @@ def read_comments(data: bytes) -> tuple[SymbolTable | None, list[Diagnostic]]:
 
 def _address(ref: str) -> Address | None:
     """The engine address a REF names: a bit device's bit, a register's first byte."""
+    if len(ref) > 12:  # no device is spelled so long (and int() refuses 4300+ digits)
+        return None
     for bit in (True, False):
         try:
             device = parse_device(ref, bit=bit)

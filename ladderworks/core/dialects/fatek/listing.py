@@ -72,6 +72,7 @@ _TIMER_RE = re.compile(r"^([TC])\s*(\d+)\s+(?:(\d*\.\d+)S?\s+)?(\S+)$", re.I)
 _FO_RE = re.compile(r"^FO\s*(\d+)$", re.I)
 _DEVICE_SPLIT_RE = re.compile(r"^([A-Za-z]{1,3})\s+(\d+)$")
 _RST_RE = re.compile(r"^(RST|SET)\s*\(\s*([A-Za-z]*\s*\d*)\s*\)", re.I)
+_LONG_NUMBER_RE = re.compile(r"\d{16,}")
 _ANNOTATION = "←"  # the seed's margin notes (002:376-402)
 
 
@@ -191,6 +192,11 @@ def read_listing(lines: list[str], first_line: int = 1) -> tuple[Listing, list[D
                 other_item = mnemonic_pages and item.group(1).lower() != "mnemonic"
             continue
         if other_item:
+            continue
+        long = _LONG_NUMBER_RE.search(raw)
+        if long is not None:  # no Fatek number has so many digits (and int() refuses 4300+)
+            diagnostics.append(Diagnostic("fatek-long-number", {"text": long.group(0)[:12]},
+                                          line, long.start() + 1))
             continue
         operand = _OPERAND_RE.match(text)
         if operand is not None and not _STEP_RE.match(text):

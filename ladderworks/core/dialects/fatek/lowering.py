@@ -33,6 +33,7 @@ from ladderworks.core.dialects.fatek.devices import (
 from ladderworks.core.dialects.fatek.listing import Record
 from ladderworks.core.dialects.fatek.rows import (
     BY_FUN,
+    FORMS,
     NOT_SIMULATED,
     ROWS,
     UNKNOWN_FUN,
@@ -151,28 +152,22 @@ class ProgramLowering(StackLowering):
 
     def contact_box(self, record: Record, spec: InstructionSpec,
                     params: tuple[ParamValue, ...]) -> None:
-        """A contact made of a box with one input IN: IN AND the box's condition."""
+        """An edge or comparison contact in its place: starting the rung or a block (its READ
+        row, `FBS.TU.ORG` / `.LD`), in series (the row itself: IN AND it), in parallel (`.OR`)."""
         kind = record.mnemonic.rstrip("F") if record.mnemonic.endswith("F") else record.mnemonic
+        forms = FORMS[spec.name]
         if kind == "ORG" or (kind == "LD" and (not self.depth or self.after_output)):
             if kind == "LD" and self.after_output and self.current.instructions:
                 self.new_part()
-            self.emit(record, "RD", ALWAYS_ON)
+            self.emit_box(record, forms["ORG"], params)
             self.depth = 1
-            self.emit_box(record, spec, params)
         elif kind == "LD":
-            self.emit(record, "RD.STK", ALWAYS_ON)
+            self.emit_box(record, forms["LD"], params)
             self.depth += 1
-            self.emit_box(record, spec, params)
-        elif kind == "AND":
-            if not self.depth:
-                raise refused(record, "fatek-no-input", name=record.mnemonic)
-            self.emit_box(record, spec, params)
         else:
             if not self.depth:
                 raise refused(record, "fatek-no-input", name=record.mnemonic)
-            self.emit(record, "RD.STK", ALWAYS_ON)
-            self.emit_box(record, spec, params)
-            self.emit(record, "OR.STK")
+            self.emit_box(record, spec if kind == "AND" else forms["OR"], params)
         self.after_output = False
         self.fresh_box = False
 

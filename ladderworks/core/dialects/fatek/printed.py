@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 from ladderworks.core.dialects.fatek.devices import timer_base_ms
 from ladderworks.core.dialects.fatek.rows import BY_FUN
 
-_STEP_RE = re.compile(r"^\s*(\d{3,})([A-Za-z])\s+\S")
+_STEP_RE = re.compile(r"^\s*(\d{3,9})([A-Za-z])\s+\S")
 _PRINTED_RE = re.compile(r"(SET|RST)\(\s*\)|FUN\s*\d+\s*[D_]?[P_]?\.|^\s*\d+[A-Za-z]?\s+[TC]\d+\s",
                          re.I)
 _FUN_RE = re.compile(r"^FUN (\d+)(D?)(P?)\s+(.*)$")

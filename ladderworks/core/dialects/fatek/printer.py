@@ -7,7 +7,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.dialects.fatek.branches import ALWAYS_OFF, ALWAYS_ON
 from ladderworks.core.dialects.fatek.devices import FO_AREA, device_at, word_device_at
 from ladderworks.core.dialects.fatek.printed import PrintedStyle, printed_lines
-from ladderworks.core.dialects.fatek.rows import SUB_BASE, UNKNOWN_FUN, operand_label
+from ladderworks.core.dialects.fatek.rows import SERIES_OF, SUB_BASE, UNKNOWN_FUN, operand_label
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, Network
 from ladderworks.core.instructions import Combine, InstructionSpec, Kind, Write
@@ -141,6 +141,12 @@ def instruction_lines(instructions: list[Instruction], index: int, first: bool
         mnemonic = "AND" if spec.combine is Combine.AND else "OR"
         return [_line(mnemonic + (" NOT" if spec.negated else ""),
                       device_text(operand))], index + 1
+    if spec.combine is not Combine.NONE:  # an edge or comparison contact in its place
+        if spec.combine is Combine.OR:
+            mnemonic = "OR"
+        else:
+            mnemonic = "ORG" if spec.pushes == 0 and first else "LD"
+        return _contact_box(ins, mnemonic), index + 1
     if spec.inputs == ("IN",):  # an edge or comparison contact in series (AND)
         return _contact_box(ins, "AND"), index + 1
     lines = _box_lines(ins)
@@ -151,11 +157,12 @@ def instruction_lines(instructions: list[Instruction], index: int, first: bool
 
 def _contact_box(ins: Instruction, mnemonic: str) -> list[str]:
     """An edge contact (`ORG TU X2`) or a comparison contact (`ANDF 170 (=)` + Sa, Sb)."""
-    name = ins.spec.name
+    series = SERIES_OF.get(ins.spec.name, ins.spec)
+    name = series.name
     if name in _CONTACT_BOXES:
         return [_line(f"{mnemonic} {_CONTACT_BOXES[name]}", device_text(ins.params[0]))]
     values = ins.param_map()
-    fun = (ins.spec.sub or SUB_BASE) - SUB_BASE
+    fun = (series.sub or SUB_BASE) - SUB_BASE
     mode = values.get("mode", 0)
     forms = "D" if isinstance(mode, int) and mode & 2 else ""
     return [_line(f"{mnemonic}F {fun}{forms}", ins.spec.text_name),

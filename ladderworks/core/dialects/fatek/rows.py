@@ -6,6 +6,7 @@ from __future__ import annotations
 from ladderworks.core.instruction_fields import Operation
 from ladderworks.core.instructions import (
     FUNCTION_OPCODE,
+    Combine,
     InstructionSpec,
     Kind,
     Param,
@@ -130,6 +131,37 @@ ROWS: tuple[InstructionSpec, ...] = (
 )
 UNKNOWN_FUN = "FBS.FUN"  # the row of a FUN the table has no row for
 
+# The edge and comparison contacts in their other places (issue 38): `ORG TU X2` / `ORGF 170`
+# starting a rung (READ), `LD TU` / `LDF` pushing a block (READ, push), `OR TU` / `ORF` in
+# parallel (OR). The series rows above are the AND place. Named `FBS.TU.ORG`, `.LD`, `.OR`.
+PLACES = (("ORG", Combine.READ, 0), ("LD", Combine.READ, 1), ("OR", Combine.OR, 0))
+
+
+def _placed(series: InstructionSpec, index: int, place: str, combine: Combine,
+            pushes: int) -> InstructionSpec:
+    return InstructionSpec(
+        f"{series.name}.{place}", Kind.FUNCTION, OTHER + 10 + index,
+        inputs=("IN",) if combine is Combine.OR else (), params=series.params, w1=True,
+        title=series.title, title_tr=series.title_tr, opcode=FUNCTION_OPCODE,
+        mnemonic=series.mnemonic, source="fatek", dialect="fatek", operation=series.operation,
+        combine=combine, pushes=pushes)
+
+
+_SERIES = tuple(spec for spec in ROWS if spec.inputs == ("IN",))
+PLACED: tuple[InstructionSpec, ...] = tuple(
+    _placed(series, 3 * k + j, place, combine, pushes)
+    for k, series in enumerate(_SERIES)
+    for j, (place, combine, pushes) in enumerate(PLACES))
+ROWS = (*ROWS, *PLACED)
+# a series contact row's row for a place: FORMS["FBS.TU"]["ORG"]
+FORMS: dict[str, dict[str, InstructionSpec]] = {
+    series.name: {place: spec for spec in PLACED
+                  for place in (spec.name.rsplit(".", 1)[1],)
+                  if spec.name.rsplit(".", 1)[0] == series.name}
+    for series in _SERIES}
+SERIES_OF: dict[str, InstructionSpec] = {  # a placed row's series row (its FUN number, spelling)
+    spec.name: series for series in _SERIES for spec in FORMS[series.name].values()}
+
 BY_FUN: dict[int, InstructionSpec] = {
     spec.sub - SUB_BASE: spec for spec in ROWS if spec.sub is not None and spec.sub < OTHER}
 NOT_SIMULATED: frozenset[str] = frozenset(spec.name for spec in ROWS if spec.cnc)
@@ -142,5 +174,6 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "fatek_io": ("FBS.ASCWR", "FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176",
                  "FBS.FUN"),
     "fatek_convert": ("FBS.BCD", "FBS.BIN"),
+    "fatek_contacts": tuple(spec.name for spec in PLACED),
     "fatek_timing": ("FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.TU", "FBS.TD"),
 }

@@ -72,6 +72,13 @@ def test_not_an_export_and_bad_references() -> None:
     assert [(d.code, d.line, d.is_error) for d in diagnostics] == [("fatek-comment-ref", 2, False)]
 
 
+def test_a_reference_of_thousands_of_digits_is_skipped_at_its_line() -> None:
+    table, diagnostics = read_comments(b"REF\tCOMMENT\tDESCRIPTION\nX" + b"9" * 5000 + b"\tx\t\n")
+    assert table is not None and len(table) == 0
+    assert [(d.code, d.line, len(str(d.args["text"]))) for d in diagnostics] == [
+        ("fatek-comment-ref", 2, 24)]
+
+
 def test_an_export_beside_the_program_becomes_its_symbols(tmp_path: Path) -> None:
     program = tmp_path / "capping.lst"
     program.write_bytes((EXAMPLES / "capping_printed.lst").read_bytes())

@@ -191,3 +191,10 @@ def test_a_printout_cut_in_a_fun_box_is_an_error_at_its_line() -> None:
     result = parse_bytes(cut.encode(), "fatek")
     assert [(d.code, d.line) for d in result.diagnostics] == [("fatek-missing-operand", 4)]
     assert "D" in result.diagnostics[0].message()
+
+
+def test_a_number_of_thousands_of_digits_is_an_error_at_its_line() -> None:
+    """Found by tests/fuzz/test_fatek_printed_fuzz.py: int() refuses 4300+ digits."""
+    result = parse_bytes(printed("ORG X0", "OUT Y" + "9" * 5000).encode(), "fatek")
+    assert [(d.code, d.line, d.column) for d in result.diagnostics] == [
+        ("fatek-long-number", 4, 13)]
