@@ -175,6 +175,7 @@ def read_listing(lines: list[str], first_line: int = 1) -> tuple[Listing, list[D
     records: list[Record] = []
     headers: list[int] = []
     diagnostics: list[Diagnostic] = []
+    pending: list[_Pending] = []  # step lines waiting for their operand's line
     mnemonic_pages = any((m := _ITEM_RE.match(raw)) is not None
                          and m.group(1).lower() == "mnemonic" for raw in lines)
     other_item = False  # under a printed item that is not the mnemonic (ladder, comments …)
@@ -197,6 +198,10 @@ def read_listing(lines: list[str], first_line: int = 1) -> tuple[Listing, list[D
         if long is not None:  # no Fatek number has so many digits (and int() refuses 4300+)
             diagnostics.append(Diagnostic("fatek-long-number", {"text": long.group(0)[:12]},
                                           line, long.start() + 1))
+            continue
+        if pending and _STEP_RE.match(raw) is None and _OPERAND_RE.match(text) is None and \
+                pending[0].complete(text, records):
+            pending.pop(0)  # the oldest step waiting takes the line (pdftotext's order)
             continue
         operand = _OPERAND_RE.match(text)
         if operand is not None and not _STEP_RE.match(text):
@@ -222,11 +227,45 @@ def read_listing(lines: list[str], first_line: int = 1) -> tuple[Listing, list[D
             records[-1].operand = _device(text.split())
             continue
         record, problem = _step_record(text, line, step, unit, _column(raw, text))
+        if step is not None and text.strip().upper() == "FO":  # its number on a later line
+            record, problem = Record(line, "FO", step=step, unit=unit,
+                                     column=_column(raw, text)), None
         if problem is not None:
             diagnostics.append(problem)
         if record is not None:
+            if step is not None and _incomplete(record):
+                pending.append(_Pending(len(records), text, record))
             records.append(record)
     return Listing(records, headers), diagnostics
+
+
+@dataclass(slots=True)
+class _Pending:
+    """A step line whose operand `pdftotext` (without -layout) put on a later line:
+    `00001M SET( )`, a blank line, `S3`; `00079M FO`, `0`. Steps waiting so take the next
+    such lines in their order (pdftotext may print two steps before their operands)."""
+
+    index: int  # of its record
+    text: str  # its instruction part as printed
+    record: Record
+
+    def complete(self, rest: str, records: list[Record]) -> bool:
+        """Read the step with `rest` as its operand: True when that makes a whole record."""
+        old = self.record
+        record, problem = _step_record(f"{self.text} {rest}", old.line, old.step, old.unit,
+                                       old.column)
+        if record is None or problem is not None or _incomplete(record):
+            return False
+        records[self.index] = record
+        return True
+
+
+def _incomplete(record: Record) -> bool:
+    """A step that names no operand where it needs one: a contact or coil without its device,
+    a TR point without its number, `FO` without its number."""
+    if record.modifier == "TR":
+        return record.operand in ("TR", "")
+    return record.mnemonic in (*CONTACTS, *COILS, "SET", "RST", "FO") and not record.operand
 
 
 def _continues(last: Record, text: str) -> bool:

@@ -198,3 +198,32 @@ def test_a_number_of_thousands_of_digits_is_an_error_at_its_line() -> None:
     result = parse_bytes(printed("ORG X0", "OUT Y" + "9" * 5000).encode(), "fatek")
     assert [(d.code, d.line, d.column) for d in result.diagnostics] == [
         ("fatek-long-number", 4, 13)]
+
+
+def _split(text: str) -> str:
+    """The printout as `pdftotext` without -layout gives it: a step's operand on a later line
+    after a blank one (`00001M SET( )`, ``, `S1`)."""
+    out = []
+    for line in text.split("\n"):
+        head, _, operand = line.partition("   ")
+        word = head[7:].strip()
+        if line[:5].isdigit() and operand.strip() and word in ("ORG", "LD", "AND", "OR", "OUT",
+                                                                 "SET( )", "RST( )", "FO"):
+            out += [head.rstrip(), "", operand.strip(), ""]
+        else:
+            out.append(line)
+    return "\n".join(out)
+
+
+def test_the_text_pdftotext_gives_without_layout_reads_as_the_printout() -> None:
+    text = EXAMPLE.read_text(encoding="utf-8")
+    split = _split(text)
+    assert split != text and "\n00001M SET( )\n\nS1\n" in split
+    assert [n.instructions for n in fatek(split).networks] == [
+        n.instructions for n in fatek(text).networks]
+    # two steps before their operands, as pdftotext printed the real printout's step 125
+    both = printed("ORG X0", "OUT TR 0", "AND SHORT", "SET( )", "LD") + "S12\n\nTR 0\n"
+    both += "00005M RST( )   S11\n"
+    assert [n.instructions for n in fatek(both).networks] == [n.instructions for n in fatek(
+        printed("ORG X0", "OUT TR 0", "AND SHORT", "SET( )   S12", "LD      TR 0",
+                "RST( )   S11")).networks]
