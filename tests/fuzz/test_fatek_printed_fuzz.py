@@ -1,6 +1,6 @@
 """Fuzzing the Fatek readers added for WinProladder's printouts: generated printed-form listings
 and the printed example mutated (cut in a FUN box, bytes changed) end in exit 0 or 1 through every
-CLI command, never a traceback; a comment export's bytes never raise (core test beside it)."""
+CLI command, never a traceback; a mutated comment export gives symbols or diagnostics."""
 
 from __future__ import annotations
 
@@ -10,6 +10,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from ladderworks.core.dialects.fatek.comments import read_comments
 from ladderworks.paths import EXAMPLES
 from tests.fuzz.test_cli_fuzz import COMMANDS, _mutate, run_cli
 from tests.hypothesis_profiles import examples
@@ -55,3 +56,18 @@ def test_mutated_printout(command: str, data: st.DataObject, tmp_path: Path) -> 
 @pytest.mark.parametrize("cut", range(1, PRINTED.count(b"\n")))
 def test_the_printout_cut_after_every_line_reads_or_says_where(cut: int, tmp_path: Path) -> None:
     _clean("check", b"\n".join(PRINTED.split(b"\n")[:cut]) + b"\n", tmp_path)
+
+
+_EXPORT = ("REF\tCOMMENT\tDESCRIPTION\r\nX0\tStart\t\r\nM10\tPołożenie\tżółw\r\n"
+           "R100\tLicznik\t\r\n").encode("cp1250")
+
+
+@_SETTINGS
+@given(data=st.data())
+def test_mutated_comment_exports(data: st.DataObject) -> None:
+    """A comment export, mutated: symbols or diagnostics at its lines, never an exception."""
+    mutated = _mutate(_EXPORT, data.draw)
+    table, diagnostics = read_comments(mutated)
+    lines = mutated.count(b"\n") + 1
+    assert all(1 <= d.line <= lines and d.message() for d in diagnostics)
+    assert table is not None or any(d.is_error for d in diagnostics)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -100,3 +101,16 @@ def test_random_bytes_never_raise(data: bytes, with_header: bool) -> None:
     for diagnostic in diagnostics:
         assert 1 <= diagnostic.line <= lines and diagnostic.message()
     assert table is not None or any(d.is_error for d in diagnostics)
+
+
+def test_the_ladder_names_the_devices_in_fatek_spelling(tmp_path: Path,
+                                                        capsys: pytest.CaptureFixture[str]) -> None:
+    from ladderworks.cli import main
+
+    program = tmp_path / "capping.lst"
+    program.write_bytes((EXAMPLES / "capping_printed.lst").read_bytes())
+    (tmp_path / "capping_comment.txt").write_bytes(
+        "REF\tCOMMENT\tDESCRIPTION\nS1\tPołożenie\t\nX0\tStart\t\n".encode("cp1250"))
+    assert main(["ladder", str(program)]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert "   X0 Start" in out and "   S1 Położenie" in out
