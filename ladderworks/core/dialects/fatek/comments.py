@@ -32,6 +32,16 @@ _WORD_RE = re.compile(r"\w+")
 COMPANIONS = ("{stem}_comment.txt", "{stem}.comment.txt", "comment.txt", "export/comment.txt")
 
 
+# The letters each code page's languages write (a decoded letter among them counts once more):
+# what tells Polish in cp1250 from Turkish in cp1254, whose bytes both decode as letters
+_NATIVE = {
+    "cp1250": "ąćęłńóśźżáčďéěíňřšťúůýžäĺľôŕöüőűăâîşţđ",  # Polish, Czech, Slovak, Hungarian …
+    "cp1254": "çğıiöşüâîû",  # Turkish
+    "cp1252": "àâäæçèéêëîïôœùûüÿßñáíóúãõåøý",  # French, German, Spanish, Nordic …
+    "cp1257": "ąčęėįšųūžāēģīķļņōŗöäüõ",  # Baltic
+}
+
+
 def _script(char: str) -> str:
     """The script of a letter from its Unicode name (LATIN, CYRILLIC, GREEK …)."""
     return unicodedata.name(char, "?").split(" ")[0]
@@ -75,7 +85,9 @@ def decode(data: bytes) -> tuple[str, str, list[Diagnostic]]:
         except UnicodeDecodeError as error:
             first_bad = min(first_bad, error.start)
             continue
-        scored.append((plausibility(text), name, text))
+        native = _NATIVE.get(name, "")
+        bonus = sum(1 for char in text.lower() if ord(char) >= 128 and char in native)
+        scored.append((plausibility(text) + bonus, name, text))
     if not scored:
         return "", "", [_bad_byte(data, first_bad)]
     best = max(score for score, _, _ in scored)
