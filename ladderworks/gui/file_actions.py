@@ -369,7 +369,7 @@ class FileActions(_Window):
     def import_symbols_dialog(self) -> None:
         """File > Import symbols: a WinProladder comment export as the program's symbols."""
         from ladderworks.gui.symbol_import import import_symbols_dialog
-        import_symbols_dialog(self)  # type: ignore[arg-type]
+        import_symbols_dialog(self, self)  # type: ignore[arg-type]
 
     def export_mod_dialog(self) -> None:
         """File > Export .MOD."""

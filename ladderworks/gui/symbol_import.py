@@ -4,7 +4,7 @@ beside addresses in the ladder, the docks and the cross reference)."""
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 from PySide6.QtCore import QCoreApplication
 
@@ -15,22 +15,39 @@ from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.os_errors import os_error_text
 
 if TYPE_CHECKING:
-    from ladderworks.gui.main_window import MainWindow
+    from PySide6.QtWidgets import QAbstractScrollArea, QWidget
+
+    from ladderworks.gui.document import ProgramDocument
+    from ladderworks.gui.editor.ladder_model import LadderModel
 
 translate = QCoreApplication.translate
 
 
-def import_symbols_dialog(window: MainWindow) -> None:
-    """Ask for a comment export and import it."""
+class Host(Protocol):
+    """What the import needs of the main window (File glue)."""
+
+    document: ProgramDocument
+    model: LadderModel
+    editor: QAbstractScrollArea
+
+    @property
+    def path(self) -> Path | None: ...
+    def warn(self, title: str, text: str) -> None: ...
+    def show_message(self, text: str) -> None: ...
+    def program_shown(self, program: Program) -> None: ...
+
+
+def import_symbols_dialog(window: Host, parent: QWidget) -> None:
+    """Ask for a comment export (a dialog over `parent`, the window) and import it."""
     start = str(window.path.parent) if window.path is not None else ""
     name = file_dialogs.open_file_name(
-        window, translate("MainWindow", "Import symbols"), start,
+        parent, translate("MainWindow", "Import symbols"), start,
         translate("MainWindow", "WinProladder comment exports (*.txt);;All files (*)"))
     if name:
         import_symbols(window, name)
 
 
-def import_symbols(window: MainWindow, path: str | Path) -> bool:
+def import_symbols(window: Host, path: str | Path) -> bool:
     """Read `path` as the shown program's symbols; a file that does not read (its first error
     at its line) changes nothing."""
     path = Path(path)
