@@ -232,12 +232,9 @@ class ProgramLowering(StackLowering):
         spec = BY_FUN.get(record.fun or -1)
         if spec is not None and spec.inputs == ("IN",):
             raise refused(record, "fatek-unknown-fun", number=record.fun)
-        if spec is None:
+        if spec is None:  # every block before it is one of its inputs (up to four)
             spec = ROW_OF_NAME[UNKNOWN_FUN]
-            count = max(1, self.depth)  # every block before it is one of its inputs
-        else:
-            count = len(spec.inputs)
-        self.inputs(record, count)
+        self.inputs(record, len(spec.inputs))
         fo = self.next_fo() if any(p.name == "fo" for p in spec.params) else None
         kept = self.keep_en(record, spec)
         if spec.name in NOT_SIMULATED:
@@ -426,10 +423,11 @@ def _takes_result(record: Record | None) -> bool:
 
 def kept_text(record: Record) -> str:
     """A not-simulated box's operand lines as its comment (`Ps: 1, SR: R1200`); an unknown
-    FUN's name as written goes first (`XYZ| S: R0`)."""
+    FUN's number, forms and name as written go first (`FUN 60DP XYZ: S: R0`)."""
     lines = ", ".join(f"{o.label}: {o.text}".strip() for o in record.operands)
     if BY_FUN.get(record.fun or -1) is None:
-        return f"{record.fun_name}|{lines}"
+        forms = ("D" if record.double else "") + ("P" if record.pulse else "")
+        return f"{f'FUN {record.fun}{forms} {record.fun_name}'.rstrip()}: {lines}"
     return lines
 
 

@@ -34,8 +34,8 @@ class PrintedStyle:
         nearest one above."""
         if line in self.steps:
             return self.steps[line]
-        above = [n for n in self.steps if n < line]
-        return self.steps[max(above)] + 1 if above else 0
+        above = [n for n in self.steps if n < line] if line > 0 else list(self.steps)
+        return self.steps[max(above)] + 1 if above else 0  # a new network: after the last
 
 
 def style_of(lines: list[str]) -> PrintedStyle | None:

@@ -3,6 +3,8 @@ instruction a line, a FUN box's operands on their own lines (docs/dialects.md, F
 
 from __future__ import annotations
 
+import re
+
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.fatek.branches import ALWAYS_OFF, ALWAYS_ON
 from ladderworks.core.dialects.fatek.devices import FO_AREA, device_at, word_device_at
@@ -58,13 +60,16 @@ def _is_fo(address: Address | None) -> bool:
         and address.bit is not None and address.byte < 9000
 
 
-def unknown_parts(ins: Instruction) -> tuple[str, str]:
-    """A box's name and kept operand lines: an unknown FUN keeps its name as written before
-    `|` in its comment (lowering.kept_text)."""
-    if ins.spec.name == UNKNOWN_FUN and "|" in ins.comment:
-        name, _, kept = ins.comment.partition("|")
-        return name, kept
-    return ins.spec.text_name, ins.comment
+_UNKNOWN_RE = re.compile(r"^FUN \d+([DP]*)(?: (.*?))?: (.*)$", re.S)
+
+
+def unknown_parts(ins: Instruction) -> tuple[str, str, str]:
+    """A box's name, forms (`DP`) and kept operand lines: an unknown FUN's comment says them as
+    written, `FUN 60DP XYZ: S: R0, D: R1` (lowering.kept_text), shown so on its box."""
+    found = _UNKNOWN_RE.match(ins.comment) if ins.spec.name == UNKNOWN_FUN else None
+    if found is not None:
+        return found.group(2) or "", found.group(1), found.group(3)
+    return ins.spec.text_name, "", ins.comment
 
 
 def _box_lines(ins: Instruction) -> list[str]:
@@ -81,8 +86,8 @@ def _box_lines(ins: Instruction) -> list[str]:
     mode = values.get("mode", 0)
     forms = ("D" if isinstance(mode, int) and mode & 2 else "") + (
         "P" if isinstance(mode, int) and mode & 1 else "")
-    name, kept = unknown_parts(ins)
-    head = _line(f"FUN {fun}{forms}", name)
+    name, kept_forms, kept = unknown_parts(ins)
+    head = _line(f"FUN {fun}{forms or kept_forms}", name)
     lines = [head]
     if spec.cnc:  # not simulated: its operand lines were kept as the comment
         lines.extend(f"    {text.strip()}" for text in kept.split(", ") if text.strip())
@@ -226,9 +231,9 @@ def instruction_text(instruction: Instruction) -> str:
         operand = "" if instruction.operand is None else " " + device_text(instruction.operand)
         return (name + operand).strip()
     if spec.cnc:
-        fun_name, kept = unknown_parts(instruction)
+        fun_name, forms, kept = unknown_parts(instruction)
         if spec.name == UNKNOWN_FUN:
-            name = f"FUN {instruction.params[0]} {fun_name}".strip()
+            name = f"FUN {instruction.params[0]}{forms} {fun_name}".strip()
         return f"{name} {kept}".strip()
     texts = params_text(spec, instruction.params)
     labels = [operand_label(p.name) for p in spec.params

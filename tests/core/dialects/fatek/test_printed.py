@@ -227,3 +227,26 @@ def test_the_text_pdftotext_gives_without_layout_reads_as_the_printout() -> None
     assert [n.instructions for n in fatek(both).networks] == [n.instructions for n in fatek(
         printed("ORG X0", "OUT TR 0", "AND SHORT", "SET( )   S12", "LD      TR 0",
                 "RST( )   S11")).networks]
+
+
+def test_an_unknown_fun_opens_draws_runs_as_nothing_and_prints_back() -> None:
+    """Issue 37: nothing a real program holds stops it from opening (FUN 60 is not simulated)."""
+    text = printed("ORG      X0", "FUN 60 DP.XYZ", "       S : R0", "       D : R1",
+                   "FO       0", "OUT      Y0", "ORG      X1", "OUT      Y1")
+    result = parse_bytes(text.encode(), "fatek")
+    assert [(d.code, d.line, d.is_error) for d in result.diagnostics] == [
+        ("fatek-not-simulated", 4, False)]
+    program = result.program
+    box = next(i for i in program.networks[0].instructions if i.spec.cnc)
+    assert box.name == "FBS.FUN" and box.comment == "FUN 60DP XYZ: S: R0, D: R1"
+    assert layout_network(list(program.networks[0].instructions)).listing is None
+    plc = ScanEngine(compile(program))
+    put(plc, "X0", 1)
+    put(plc, "X1", 1)
+    plc.scan()
+    assert (get(plc, "Y0"), get(plc, "Y1")) == (0, 1)  # FO 0 stays 0; the rest runs
+    lines = network_lines(program.networks[0], True)
+    assert "FUN 60DP XYZ" in lines and "    S: R0" in lines
+    again = fatek(HEAD + "\n".join(lines) + "\n")
+    assert again.networks[0].instructions == program.networks[0].instructions
+    assert encode_program(program) == text.encode()
