@@ -1,17 +1,19 @@
-"""WinProladder's comment export (`REF<TAB>COMMENT<TAB>DESCRIPTION`, a Windows code page) as a
-program's symbols: the comment is the symbol, the description its comment (docs/dialects.md)."""
+"""WinProladder's element comments as a Fatek program's symbols: its comment export
+(`REF<TAB>COMMENT<TAB>DESCRIPTION`, a Windows code page; the description is the symbol's
+comment) and a `.pdw` project's comments (device -> text) (docs/dialects.md)."""
 
 from __future__ import annotations
 
 import codecs
 import re
 import unicodedata
+from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.dialects.fatek.devices import (
+    BIT_RANGES,
     DeviceError,
     bit_address,
     parse_device,
@@ -26,7 +28,6 @@ HEADER = ("REF", "COMMENT", "DESCRIPTION")
 # The Windows code pages tried, in the order a tie is decided (WinProladder writes the
 # system's ANSI code page; the real export is cp1250)
 CODE_PAGES = ("cp1250", "cp1254", "cp1252", "cp1257", "cp1251", "cp1253", "cp1255", "cp1256")
-_BIT_KINDS = frozenset(("X", "Y", "M", "S", "T", "C"))
 _WORD_RE = re.compile(r"\w+")
 # the files beside a program read as its comment export (WinProladder's default name first)
 COMPANIONS = ("{stem}_comment.txt", "{stem}.comment.txt", "comment.txt", "export/comment.txt")
@@ -124,30 +125,41 @@ def read_comments(data: bytes) -> tuple[SymbolTable | None, list[Diagnostic]]:
             continue
         ref, _, rest = line.partition("\t")
         name, _, description = rest.partition("\t")
-        address = _address(ref.strip())
-        if address is None:
+        comments = (description.strip(),) if description.strip() else ()
+        if not _add(table, ref.strip(), Symbol(name.strip(), comments)):
             diagnostics.append(Diagnostic("fatek-comment-ref", {"text": ref.strip()[:24]},
                                           number, 1, Severity.WARNING))
-            continue
-        comments = (description.strip(),) if description.strip() else ()
-        table.add(address, Symbol(name.strip(), comments))
     return table, diagnostics
 
 
-def _address(ref: str) -> Address | None:
-    """The engine address a REF names: a bit device's bit, a register's first byte."""
+def _add(table: SymbolTable, ref: str, symbol: Symbol) -> bool:
+    """Put `symbol` on the device `ref` names: a bit device's bit, a register's first byte, a
+    timer's or counter's both (its contact and its value); False when `ref` names none."""
     if len(ref) > 12:  # no device is spelled so long (and int() refuses 4300+ digits)
-        return None
+        return False
+    added = False
     for bit in (True, False):
         try:
             device = parse_device(ref, bit=bit)
         except DeviceError:
             continue
-        if bit and device.kind in _BIT_KINDS:
-            return bit_address(device)
-        if not bit:
-            return word_address(device)[0]
-    return None
+        if bit and device.kind in BIT_RANGES:
+            table.add(bit_address(device), symbol)
+            added = True
+        elif not bit:
+            table.add(word_address(device)[0], symbol)
+            added = True
+    return added
+
+
+def comment_symbols(comments: Mapping[str, str]) -> SymbolTable:
+    """The symbol table of `comments` (`M300` -> `START`, a `.pdw` project's element comments):
+    blank texts and spellings that are not Fatek devices are left out."""
+    table = SymbolTable()
+    for device_text, text in comments.items():
+        if text.strip():
+            _add(table, device_text, Symbol(text.strip()))
+    return table
 
 
 def read_comment_file(path: Path) -> tuple[SymbolTable | None, list[Diagnostic]]:

@@ -25,7 +25,8 @@ def test_the_real_export_reads_as_cp1250_symbols() -> None:
     path = real_programs_dir() / "fatek" / "VERTINO_export_comment.txt"
     assert decode(path.read_bytes())[1] == "cp1250"
     table, diagnostics = read_comment_file(path)
-    assert diagnostics == [] and table is not None and len(table) == 112
+    # 112 devices; a timer's or counter's name is on its contact and its value (8 T, 2 C)
+    assert diagnostics == [] and table is not None and len(table) == 122
     assert table.lookup(DEVICES.bit("M80")).symbol == "Żądanie HOME"  # type: ignore[union-attr]
     assert table.lookup(DEVICES.bit("X0")).symbol == "SAFETY_STATUS"  # type: ignore[union-attr]
 
