@@ -1,5 +1,6 @@
-"""File › Import symbols: a WinProladder comment export names a Fatek program's addresses; the
-export beside the program is read with it; one that does not read changes nothing."""
+"""A WinProladder printout in the IDE: File › Import symbols (a comment export names its
+addresses; the export beside the program is read with it; one that does not read changes
+nothing), and a rung added saved in the printout's own form."""
 
 from __future__ import annotations
 
@@ -45,3 +46,27 @@ def test_the_export_beside_the_program_is_read_with_it(window: MainWindow,
     assert window.load(path)
     assert window.model.symbols is not None
     assert window.model.symbols.lookup(DEVICES.bit("Y3")).symbol == "Reject"  # type: ignore
+
+
+def test_a_rung_added_to_a_printout_is_saved_in_the_printed_form(window: MainWindow,
+                                                                  tmp_path: Path) -> None:
+    """WinProladder's printed form kept on Save: the old lines byte for byte, the new rung
+    with step numbers after the last and `SET( )` as the printout writes it."""
+    from ladderworks.core.instructions import Write
+    from ladderworks.core.ladder.model import Coil, Contact, LadderNetwork, Wire
+
+    path = tmp_path / "capping.lst"
+    original = EXAMPLE.read_bytes()
+    path.write_bytes(original)
+    assert window.load(path)
+    rung = LadderNetwork()
+    rung.cells[(0, 0)] = Contact(DEVICES.bit("X7"))
+    for col in range(1, rung.columns):
+        rung.cells[(0, col)] = Wire()
+    rung.cells[(0, rung.columns)] = Coil(DEVICES.bit("S9"), write=Write.SET)
+    end = len(window.model.networks) - 1  # before the empty rung at the end
+    window.model.insert_network(end, rung)
+    assert window.save_to(path)
+    saved = path.read_text(encoding="utf-8").splitlines()
+    assert path.read_bytes().startswith(original)
+    assert saved[-2:] == ["00054M ORG      X7", "00055M SET( )   S9"]
