@@ -68,7 +68,7 @@ _FUN_RE = re.compile(r"^FUN\s*(\d+)\s*(?:([D_]?)([P_]?)\.|(D?)\s*(P?)\s*\.?)\s*(
 _CMP_RE = re.compile(r"^(ORG|LD|AND|OR)F\s+(?:FUN\s*)?(\d+)\s*(?:([D_]?)([P_]?)\.|(D?)\s*(P?)"
                      r"\s*\.?)\s*(.*)$", re.I)
 # WinProladder's printed timer and counter lines: `T10 .01 R7` (base, preset), `C5 10`
-_TIMER_RE = re.compile(r"^([TC])\s*(\d+)\s+(?:(\d*\.\d+)S?\s+)?(\S+)$", re.I)
+_TIMER_RE = re.compile(r"^([TC])\s*(\d+)\s+(?:(\d*\.\d+|\d+)S?\s+)?(\S+)$", re.I)
 _FO_RE = re.compile(r"^FO\s*(\d+)$", re.I)
 _DEVICE_SPLIT_RE = re.compile(r"^([A-Za-z]{1,3})\s+(\d+)$")
 _RST_RE = re.compile(r"^(RST|SET)\s*\(\s*([A-Za-z]*\s*\d*)\s*\)", re.I)

@@ -250,3 +250,15 @@ def test_an_unknown_fun_opens_draws_runs_as_nothing_and_prints_back() -> None:
     again = fatek(HEAD + "\n".join(lines) + "\n")
     assert again.networks[0].instructions == program.networks[0].instructions
     assert encode_program(program) == text.encode()
+
+
+def test_the_timer_line_of_each_base() -> None:
+    program = fatek(printed("ORG X0", "T10 .01 5", "ORG X0", "T60 .1 R3", "ORG X0", "T200 1 7"))
+    presets = [i.params[:2] for n in program.networks for i in n.instructions
+               if i.name == "FBS.TMR"]
+    assert [p[0] for p in presets] == [10, 60, 200] and presets[0][1] == 5
+    style = style_of(printed("ORG X0", "SET( )   S1").split("\n"))
+    assert style is not None
+    lines = [line for n in program.networks for line in network_lines(n, True, style)]
+    assert [line[7:] for line in lines if "T" in line[7:9]] == [
+        "T10 .01 5", "T60 .1 R3", "T200 1 7"]
