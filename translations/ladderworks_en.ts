@@ -947,411 +947,436 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <source>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</source>
+        <translation>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
+        <source>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</source>
+        <translation>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <source>&apos;{text}&apos; is not a Fatek device: the line is skipped</source>
+        <translation>&apos;{text}&apos; is not a Fatek device: the line is skipped</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <source>the comments were read in code page {chosen}; they read as {others} too: check the names</source>
+        <translation>the comments were read in code page {chosen}; they read as {others} too: check the names</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <source>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</source>
+        <translation>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
         <translation>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
         <translation>the .pdw file is cut short: its record at byte {offset} runs past the end</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
         <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
         <translation>the .pdw file is damaged: the record at byte {offset} fails its checksum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
         <translation>the .pdw file is damaged: the record at byte {offset} is malformed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
         <source>the .pdw file holds no program (checked up to byte {offset})</source>
         <translation>the .pdw file holds no program (checked up to byte {offset})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
         <translation>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
         <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
         <translation>the .pdw file is damaged: its program image is wrong at byte {offset}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
         <translation>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
         <translation>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
         <translation>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>the program ends inside an instruction at byte {offset}</source>
         <translation>the program ends inside an instruction at byte {offset}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; is not a device (use {letters} with a number)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; is out of range ({first} to {last})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; is not a bit device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; is not a word device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; is not listed in this table (use {letters})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; is not a K or H constant</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name} is a {dialect} instruction the simulator does not run</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>subroutine without its SRET (before the next pointer or END)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>no pointer P{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>no subroutine P{program} after FEND for this CALL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} without a logic result before it (start with LD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
         <source>this pointer P number is used twice</source>
         <translation>this pointer P number is used twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>byte {offset}: the program does not end with END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>byte {offset} (step {step}): instructions after END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>byte {offset}: a text section of the .dvp project is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>byte {offset}: a device comment line is not DEVICE$&amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>the project holds no program: no compiled instruction list and an empty ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>the project was saved without compiling: its program is read from its ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
         <source>NEXT without a FOR before it</source>
         <translation>NEXT without a FOR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MC or STL without its MCR or RET after it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>MCR or RET without its MC or STL before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="354"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>FOR without its NEXT</source>
         <translation>FOR without its NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="356"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="363"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="381"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="383"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="371"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>a second PROGRAM line (the one on line {first} counts)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="376"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>the program &apos;{path}&apos; cannot be loaded: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="394"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="388"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="409"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="415"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="420"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="422"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{count} addresses from {start} run past Modbus address 65535</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="424"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="426"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} cannot be written over Modbus: the access must be r</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="412"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="428"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} are bits: a width is for registers only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="430"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="416"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end} overlap the row on line {other}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
         <source>the map has no row</source>
         <translation>the map has no row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="435"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
@@ -1885,149 +1910,154 @@
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;properties...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
+        <source>Import s&amp;ymbols...</source>
+        <translation>Import s&amp;ymbols...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="90"/>
         <location filename="../ladderworks/gui/undo_texts.py" line="13"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="91"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="93"/>
         <location filename="../ladderworks/gui/undo_texts.py" line="14"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="94"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="96"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="96"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="101"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="103"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="104"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="106"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="106"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="109"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="111"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="111"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="114"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="117"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
         <source>&amp;Find...</source>
         <translation>&amp;Find...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="123"/>
         <source>R&amp;eplace...</source>
         <translation>R&amp;eplace...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="123"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="127"/>
         <source>Find pre&amp;vious</source>
         <translation>Find pre&amp;vious</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="127"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="129"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="133"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
         <source>Fit &amp;width</source>
         <translation>Fit &amp;width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="138"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="144"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="144"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="146"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="152"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="154"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="154"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="156"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
@@ -2097,7 +2127,7 @@
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="456"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
         <location filename="../ladderworks/gui/main_window.py" line="276"/>
         <location filename="../ladderworks/gui/main_window.py" line="443"/>
         <source>Untitled</source>
@@ -2127,7 +2157,8 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="153"/>
         <location filename="../ladderworks/gui/file_actions.py" line="171"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="472"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="477"/>
+        <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
@@ -2172,13 +2203,13 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="348"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="416"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="353"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
@@ -2188,12 +2219,12 @@
         <translation>Fatek WinProladder listings (*.lst *.LST);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="488"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
@@ -2240,19 +2271,19 @@
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="416"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="404"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="400"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="405"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
@@ -2300,6 +2331,22 @@
         <location filename="../ladderworks/gui/undo_texts.py" line="16"/>
         <source>&amp;Redo {0}</source>
         <translation>&amp;Redo {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/symbol_import.py" line="44"/>
+        <location filename="../ladderworks/gui/symbol_import.py" line="54"/>
+        <source>Import symbols</source>
+        <translation>Import symbols</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/symbol_import.py" line="45"/>
+        <source>WinProladder comment exports (*.txt);;All files (*)</source>
+        <translation>WinProladder comment exports (*.txt);;All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/symbol_import.py" line="74"/>
+        <source>{0} symbols imported from {1}</source>
+        <translation>{0} symbols imported from {1}</translation>
     </message>
 </context>
 <context>

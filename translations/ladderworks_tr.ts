@@ -947,411 +947,436 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <source>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</source>
+        <translation>&apos;{text}…&apos; bir Fatek sayısı olamayacak kadar uzun: satır okunmadı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
+        <source>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</source>
+        <translation>WinProladder yorum dışa aktarımı değil: ilk satırı REF, COMMENT, DESCRIPTION olmalı (sekmeyle ayrılmış)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <source>&apos;{text}&apos; is not a Fatek device: the line is skipped</source>
+        <translation>&apos;{text}&apos; bir Fatek cihazı değil: satır atlandı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <source>the comments were read in code page {chosen}; they read as {others} too: check the names</source>
+        <translation>yorumlar {chosen} kod sayfasında okundu; {others} olarak da okunabiliyor: adları denetleyin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <source>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</source>
+        <translation>{offset}. bayt (0x{byte}) denenen hiçbir Windows kod sayfasında karakter değil: yorumlar okunmadı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII dosyaları: &apos;{text}&apos;, [R1000] gibi bir bölüm başlığı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
         <translation>WinProladder projesi değil: &apos;Fatek WinProladder, File Format 1&apos; başlığı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
         <translation>.pdw dosyası eksik: {offset}. bayttaki kaydı dosyanın sonunu aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
         <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
         <translation>.pdw dosyası bozuk: {offset}. bayttaki kaydın sağlama toplamı tutmuyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
         <translation>.pdw dosyası bozuk: {offset}. bayttaki kayıt hatalı biçimde</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
         <source>the .pdw file holds no program (checked up to byte {offset})</source>
         <translation>.pdw dosyasında program yok ({offset}. bayta kadar bakıldı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
         <translation>{offset}. bayttaki programın maskesi kaldırılamıyor: maskenin çıkarılabileceği silinmiş bir bellek bloğu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
         <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
         <translation>.pdw dosyası bozuk: program görüntüsü {offset}. baytta hatalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
         <translation>.pdw dosyası bozuk: programın kodu sağlama toplamıyla uyuşmuyor ({offset}. bayt)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
         <translation>{offset}. bayttaki {word} komut kodunu LadderWorks henüz çözemiyor: program o noktaya kadar okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
         <translation>{offset}. bayttaki {word} operand kodu LadderWorks&apos;ün henüz çözebildiği bir cihaz değil: program o noktaya kadar okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>the program ends inside an instruction at byte {offset}</source>
         <translation>program {offset}. baytta bir komutun ortasında bitiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; bir aygıt değil ({letters} harflerinden biri ve bir numara kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} sekizli (oktal) numaralanır (0 ile 7 arası rakamlar)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; aralık dışında ({first} ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; bir bit aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; bir kelime (word) aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; bu tabloda listelenmez ({letters} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: bir aygıt ya da en çok {most} aygıtlık bir İLK-SON aralığı verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>WPLSoft .dvp projesi değil: 57 01 01 00 baytlarıyla başlamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>.dvp dosyası {offset}. baytta kesilmiş: WPLSoft&apos;un en sona yazdığı &lt;PrjectEnd&gt; satırıyla bitmiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>bayt {offset}: .dvp biçim sürümü {version} LadderWorks&apos;ün okuduğu sürümlerden değil (214, 215 ve 216 okunur)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>bayt {offset}: bu .dvp projesinin program belleği WPLSoft&apos;un koyduğu yerde değil: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>bayt {offset} (adım {step}): {word} komut kodu LadderWorks tarafından bilinmiyor: operandlarıyla ?{word} olarak korundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>bayt {offset} (adım {step}): {word} sözcüğü LadderWorks&apos;ün bildiği bir cihazı göstermiyor: dosya bozuk ya da henüz çözülmemiş bir cihaz kullanıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğü ne cihaz ne sabit: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} sonrasındaki operand sözcükleri komuta uymuyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğünden önce komut yok: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>bayt {offset}: program END ile bitmiyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): END sonrasında komutlar var: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>bayt {offset}: .dvp projesinin bir metin bölümü bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>bayt {offset}: bir cihaz açıklama satırı CİHAZ$&amp;metin biçiminde değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>projede program yok: derlenmiş komut listesi yok ve ladder çizimi boş</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>proje derlenmeden kaydedilmiş: programı ladder çiziminden okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>proje derlenmiş bir komut listesi içermiyor ve ladder çiziminde LadderWorks&apos;ün henüz okumadığı bir hücre var (bayt {offset}: bir kol, bir kenar kontağı ...): WPLSoft&apos;ta derleyip yeniden kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks .dvp projesi yazmaz (biçim yalnızca kısmen biliniyor): programı bunun yerine Delta komut listesi (.il) olarak kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
         <source>NEXT without a FOR before it</source>
         <translation>Öncesinde FOR olmayan NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MCR veya RET&apos;i olmayan MC veya STL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>Öncesinde MC veya STL olmayan MCR veya RET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="354"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>FOR without its NEXT</source>
         <translation>NEXT&apos;i olmayan FOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="356"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="363"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="381"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="383"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="371"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="376"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="394"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="388"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="409"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="415"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="420"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="422"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="424"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="426"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="412"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="428"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="430"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="416"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="435"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1885,149 +1910,154 @@
         <translation>.MOD &amp;dışa aktar...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
         <source>Clear the list</source>
         <translation>Listeyi temizle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;özellikleri...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
+        <source>Import s&amp;ymbols...</source>
+        <translation>S&amp;embolleri içe aktar...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
         <source>&amp;Quit</source>
         <translation>Çı&amp;kış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="90"/>
         <location filename="../ladderworks/gui/undo_texts.py" line="13"/>
         <source>&amp;Undo</source>
         <translation>&amp;Geri al</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="91"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="93"/>
         <location filename="../ladderworks/gui/undo_texts.py" line="14"/>
         <source>&amp;Redo</source>
         <translation>&amp;Yinele</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="94"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="96"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="96"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
         <source>&amp;Copy</source>
         <translation>K&amp;opyala</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
         <source>&amp;Paste</source>
         <translation>&amp;Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="101"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="103"/>
         <source>&amp;Delete</source>
         <translation>&amp;Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="104"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="106"/>
         <source>&amp;Edit element</source>
         <translation>Elemanı &amp;düzenle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="106"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
         <source>NOT (invert)</source>
         <translation>DEĞİL (ters çevir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="109"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="111"/>
         <source>OR (add parallel)</source>
         <translation>VEYA (paralel ekle)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="111"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
         <source>Insert row before</source>
         <translation>Önceye satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="114"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
         <source>Insert row after</source>
         <translation>Sonraya satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="117"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
         <source>&amp;Find...</source>
         <translation>&amp;Bul...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="123"/>
         <source>R&amp;eplace...</source>
         <translation>&amp;Değiştir...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="123"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
         <source>Find &amp;next</source>
         <translation>&amp;Sonrakini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="125"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="127"/>
         <source>Find pre&amp;vious</source>
         <translation>&amp;Öncekini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="127"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="129"/>
         <source>Zoom &amp;in</source>
         <translation>&amp;Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
         <source>Zoom &amp;out</source>
         <translation>&amp;Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="133"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal boyut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
         <source>Fit &amp;width</source>
         <translation>&amp;Genişliğe sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="138"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
         <source>Show as &amp;ladder</source>
         <translation>&amp;Ladder olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
         <source>Show as &amp;text</source>
         <translation>&amp;Metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="144"/>
         <source>C&amp;heck</source>
         <translation>&amp;Kontrol et</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="144"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="146"/>
         <source>&amp;Compile</source>
         <translation>&amp;Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="152"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="154"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="154"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="156"/>
         <source>&amp;About LadderWorks</source>
         <translation>LadderWorks &amp;hakkında</translation>
     </message>
@@ -2097,7 +2127,7 @@
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="456"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
         <location filename="../ladderworks/gui/main_window.py" line="276"/>
         <location filename="../ladderworks/gui/main_window.py" line="443"/>
         <source>Untitled</source>
@@ -2127,7 +2157,8 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="153"/>
         <location filename="../ladderworks/gui/file_actions.py" line="171"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="472"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="477"/>
+        <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
@@ -2172,13 +2203,13 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="348"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="416"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="353"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
@@ -2188,12 +2219,12 @@
         <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="488"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
@@ -2240,19 +2271,19 @@
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="416"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="404"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="400"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="405"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
@@ -2300,6 +2331,22 @@
         <location filename="../ladderworks/gui/undo_texts.py" line="16"/>
         <source>&amp;Redo {0}</source>
         <translation>&amp;Yinele: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/symbol_import.py" line="44"/>
+        <location filename="../ladderworks/gui/symbol_import.py" line="54"/>
+        <source>Import symbols</source>
+        <translation>Sembolleri içe aktar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/symbol_import.py" line="45"/>
+        <source>WinProladder comment exports (*.txt);;All files (*)</source>
+        <translation>WinProladder yorum dışa aktarımları (*.txt);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/symbol_import.py" line="74"/>
+        <source>{0} symbols imported from {1}</source>
+        <translation>{1} dosyasından {0} sembol içe aktarıldı</translation>
     </message>
 </context>
 <context>

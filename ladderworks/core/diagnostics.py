@@ -234,6 +234,22 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "'{text}' is not the time base of {name} ({base})"),
     "fatek-fo": QT_TRANSLATE_NOOP(
         "Diagnostic", "FO {text}: no function output here (FO0-FO7 after a box)"),
+    "fatek-long-number": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}…' is too long to be a Fatek number: the line is not read"),
+    "fatek-comment-header": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION"
+        " (tab-separated)"),
+    "fatek-comment-ref": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not a Fatek device: the line is skipped"),
+    "fatek-comment-codepage": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "the comments were read in code page {chosen}; they read as {others} too: check the"
+        " names"),
+    "fatek-comment-bytes": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments"
+        " are not read"),
     "fatek-ascii-section": QT_TRANSLATE_NOOP(
         "Diagnostic", "ASCII files: '{text}' is not a section header such as [R1000]"),
     # WinProladder projects (.pdw; docs/dialects.md, ".pdw projects"): byte offsets in the file

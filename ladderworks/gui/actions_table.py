@@ -79,6 +79,8 @@ ACTIONS: tuple[ActionSpec, ...] = (
       "import_mod_dialog", menu="menu_file", group=2),
     A("action_export_mod", QT_TRANSLATE_NOOP("MainWindow", "&Export .MOD..."),
       "export_mod_dialog", menu="menu_file", group=2),
+    A("action_import_symbols", QT_TRANSLATE_NOOP("MainWindow", "Import s&ymbols..."),
+      "import_symbols_dialog", menu="menu_file", group=2),
     A("action_program_properties", QT_TRANSLATE_NOOP("MainWindow", "Program &properties..."),
       "show_program_properties", menu="menu_file", group=3),
     A("action_quit", QT_TRANSLATE_NOOP("MainWindow", "&Quit"),

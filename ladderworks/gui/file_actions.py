@@ -392,6 +392,11 @@ class FileActions(_Window):
         self.update_title()
         return True
 
+    def import_symbols_dialog(self) -> None:
+        """File > Import symbols: a WinProladder comment export as the program's symbols."""
+        from ladderworks.gui.symbol_import import import_symbols_dialog
+        import_symbols_dialog(self, self)  # type: ignore[arg-type]
+
     def export_mod_dialog(self) -> None:
         """File > Export .MOD."""
         base = self.path.with_suffix(".MOD") if self.path else Path("program.MOD")

@@ -16,7 +16,7 @@ from ladderworks.core.address import Address
 from ladderworks.core.dialects import parse_target
 from ladderworks.core.il.reading import parse_file
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
-from ladderworks.core.ladder.row_contacts import ALWAYS_ON
+from ladderworks.core.ladder.row_contacts import mark
 from ladderworks.gui.main_window import MainWindow
 
 
@@ -232,14 +232,13 @@ def test_fatek_boxes_and_contacts_placed_run_and_save(qtbot: QtBot, window: Main
     model.insert_network(end + 2, _rung("fatek", "X12", None))
     _place(qtbot, window, end + 2, (0, 1), "FBS.RST", ["C0"])
     model.insert_network(end + 3, _rung("fatek", "X13", "Y20", first=2))
-    _place(qtbot, window, end + 3, (0, 1), "FBS.TU", ["X14"])
+    _place(qtbot, window, end + 3, (0, 1), "FBS.TU.ORG", ["X14"])  # the palette's TU entry
     contact = model.networks[end + 3].cells[(0, 1)]
-    assert isinstance(contact, Contact) and contact.function == "FBS.TU"
+    assert isinstance(contact, Contact) and mark(contact.function) == "↑"
     model.insert_network(end + 4, _rung("fatek", None, "Y21"))
-    _place(qtbot, window, end + 4, (0, 0), "FBS.TD", ["X15"])  # on the rail: after SHORT
-    short, falling = (model.networks[end + 4].cells[(0, c)] for c in (0, 1))
-    assert isinstance(short, Contact) and short.address == ALWAYS_ON
-    assert isinstance(falling, Contact) and falling.function == "FBS.TD"
+    _place(qtbot, window, end + 4, (0, 0), "FBS.TD.ORG", ["X15"])  # on the rail: no SHORT
+    falling = model.networks[end + 4].cells[(0, 0)]
+    assert isinstance(falling, Contact) and mark(falling.function) == "↓"
     fo_bytes = [dict(zip((p.name for p in c.spec.params), c.params, strict=False)).get("fo")
                 for n in model.networks for c in n.cells.values() if isinstance(c, FunctionBox)]
     fo_bytes = [fo for fo in fo_bytes if fo is not None]
@@ -291,7 +290,7 @@ def test_fatek_boxes_and_contacts_placed_run_and_save(qtbot: QtBot, window: Main
     result = parse_file(copy)
     assert result.ok, result.diagnostics
     found = {i.name: i for i in result.program.instructions()}
-    assert {"FBS.ADD", "FBS.INC", "FBS.RST", "FBS.TU", "FBS.TD"} <= set(found)
+    assert {"FBS.ADD", "FBS.INC", "FBS.RST", "FBS.TU", "FBS.TD.ORG"} <= set(found)
     assert found["FBS.INC"].param_map()["mode"] == 1
     assert window.load(copy)  # re-opened and drawn
 

@@ -358,6 +358,8 @@ class _Checker:
         """A coil's write: refused in an input area, a warning when the address has a coil."""
         # keyed by the fields: a tuple hashes in C, Address's dataclass hash is Python code
         key = (address.area, address.byte, address.bit)
+        if self.rules is not None and self.rules.local_bits and self.rules.is_local(address):
+            return  # a bit each network uses afresh (Fatek's TR points)
         before = self.coils.get(key)
         if before is None:  # an address in self.coils was found writable before
             problem = _write_problem(name, address, self.spell)

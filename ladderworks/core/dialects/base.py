@@ -64,6 +64,15 @@ class Dialect:
     # "module:function": (row, params, the program's other boxes as (row, params)) -> the
     # params of a box placed in the editor (Fatek: an FO byte no other box has)
     placed: str = ""
+    # (area, first byte, last byte): bits each network uses afresh (Fatek's TR points); their
+    # coils in several networks are not "written twice"
+    local_bits: tuple[tuple[Area, int, int], ...] = ()
+    # "module:function": (the file's lines) -> the style the printer writes a changed network in
+    # (the file's own form); "" when the dialect has one form
+    style: str = ""
+    # "module:function": (program's path, program) -> None: files beside a program read with it
+    # (Fatek's comment export as its symbols)
+    companions: str = ""
 
     def read(self, text: str, form: TextForm, lines: list[str],
              ends: list[str]) -> tuple[Program, list[Diagnostic]]:
@@ -71,10 +80,20 @@ class Dialect:
         reader: Reader = _function(self.reader)  # type: ignore[assignment]
         return reader(text, form, lines, ends)
 
-    def network_lines(self, network: Network, first: bool) -> list[str]:
-        """A new or changed network as this dialect's text (Save, format)."""
-        printer: NetworkPrinter = _function(self.printer)  # type: ignore[assignment]
-        return printer(network, first)
+    def network_lines(self, network: Network, first: bool, style: object = None) -> list[str]:
+        """A new or changed network as this dialect's text (Save, format), in `style` (what
+        `style_of` found in its file) when it has one."""
+        printer: Callable[..., list[str]] = _function(self.printer)  # type: ignore[assignment]
+        return printer(network, first) if style is None else printer(network, first, style)
+
+    def style_of(self, lines: list[str]) -> object:
+        """The form a file's lines are written in, for its changed networks (None: the one)."""
+        return _function(self.style)(lines) if self.style else None
+
+    def is_local(self, address: Address) -> bool:
+        """Whether a bit is one each network uses afresh (`local_bits`)."""
+        return any(address.area is area and first <= address.byte <= last
+                   for area, first, last in self.local_bits)
 
     def instruction_name(self, spec: InstructionSpec) -> str:
         """A row's name as this dialect writes it (`LD` for RD, `TMR` for DVP.TMR)."""

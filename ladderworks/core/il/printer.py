@@ -116,11 +116,11 @@ def print_program(program: Program) -> str:
 
 
 def _fresh_network(network: Network, fanuc: bool, first: bool,
-                   dialect: Dialect | None = None) -> list[str]:
+                   dialect: Dialect | None = None, style: object = None) -> list[str]:
     """A new or changed network in the program's own style (LADDER-III, one-line, or its
-    dialect's: Delta)."""
+    dialect's: Delta; `style`: the form its file is written in)."""
     if dialect is not None:
-        return dialect.network_lines(network, first)
+        return dialect.network_lines(network, first, style)
     if fanuc:
         out = _comment_lines(network.comments, ";")
         if network.label:
@@ -171,6 +171,7 @@ def print_faithful(program: Program) -> str:
     lines, ends, newline = source.lines, source.ends, source.form.newline
     fanuc = program.dialect == FANUC
     other = dialects.of(program)
+    style = other.style_of(lines) if other is not None else None
     out: list[str] = []
 
     def verbatim(start: int, stop: int) -> None:
@@ -198,9 +199,9 @@ def print_faithful(program: Program) -> str:
                 unused.remove(i)
                 verbatim(source.spans[i][0], source.heads[i])
                 body = Network(network.instructions)
-                fresh(_fresh_network(body, fanuc, True, other))
+                fresh(_fresh_network(body, fanuc, True, other, style))
             else:
-                fresh(_fresh_network(network, fanuc, j == 0, other))
+                fresh(_fresh_network(network, fanuc, j == 0, other, style))
             last_fresh = True
     if tuple(program.trailer) == source.trailer:
         verbatim(*source.trailer_span)

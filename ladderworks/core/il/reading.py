@@ -10,6 +10,7 @@ core/dialects/delta/dvp_program.py unless another dialect is named.
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ladderworks.core import dialects
@@ -21,7 +22,7 @@ from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.textform import TextForm, decode_lines, dominant_newline, split_with_ends
 
 if TYPE_CHECKING:
-    from pathlib import Path
+    from ladderworks.core.il.program import Program
 
 PMC = "pmc"  # `--dialect pmc`: the PMC parser, whatever the text looks like
 
@@ -89,7 +90,16 @@ def parse_bytes(data: bytes, dialect: str | None = None) -> ParseResult:
 def parse_file(path: str | Path, dialect: str | None = None) -> ParseResult:
     """Parse a program file in whichever dialect it is written (or `dialect`)."""
     with open(path, "rb") as file:
-        return parse_bytes(file.read(), dialect)
+        result = parse_bytes(file.read(), dialect)
+    attach_companions(path, result.program)
+    return result
+
+
+def attach_companions(path: str | Path, program: Program) -> None:
+    """The files a dialect reads beside a program (Fatek's comment export: its symbols)."""
+    found = dialects.of(program)
+    if found is not None and found.companions:
+        found.function(found.companions)(Path(path), program)
 
 
 def parse_for_check(path: str | Path, dialect: str | None = None) -> ParseResult:

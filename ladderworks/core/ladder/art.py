@@ -66,7 +66,8 @@ def _box_rows(box: FunctionBox, spell: Spelling) -> list[tuple[str, str]]:
     return rows
 
 
-def _symbol_notes(network: LadderNetwork, symbols: SymbolTable | None) -> list[str]:
+def _symbol_notes(network: LadderNetwork, symbols: SymbolTable | None,
+                  spell: Spelling | None = None) -> list[str]:
     """`   X21.7 ESKIP` for each element whose address has a program symbol."""
     if symbols is None or not len(symbols):
         return []
@@ -74,7 +75,8 @@ def _symbol_notes(network: LadderNetwork, symbols: SymbolTable | None) -> list[s
     for _cell, element in network.elements():
         if isinstance(element, Contact | Coil) and element.address is not None:
             name = symbols.symbol(element.address)
-            note = f"   {element.address} {name}"
+            shown = spell.address(element.address) if spell is not None else element.address
+            note = f"   {shown} {name}"  # in the program's spelling (Fatek's `S3`)
             if name and note not in seen:
                 seen.append(note)
     return seen
@@ -136,7 +138,7 @@ def draw_network(network: LadderNetwork, symbols: SymbolTable | None = None,
         notes.extend(f"   ({r},{c}) {name}: // {text}" for text in element.lead)
         if element.comment:
             notes.append(f"   ({r},{c}) {name}  {element.comment}")
-    return lines + notes + _symbol_notes(network, symbols)
+    return lines + notes + _symbol_notes(network, symbols, spell)
 
 
 def draw_document(doc: LadderDocument) -> str:

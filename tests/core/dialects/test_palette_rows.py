@@ -48,9 +48,10 @@ def test_fatek_offers_fun_boxes_rst_and_edge_contacts() -> None:
     names = [spec.name for spec in palette_rows("fatek")]
     assert names == ["FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.MOV", "FBS.ADD",
                      "FBS.SUB", "FBS.MUL", "FBS.DIV", "FBS.INC", "FBS.DEC", "FBS.CMP",
-                     "FBS.ASCWR"]  # not FUN 140-143/176: kept, not simulated
-    assert [spec.name for spec in contact_rows("fatek")] == [
-        "FBS.TU", "FBS.TD", "FBS.EQ", "FBS.GT", "FBS.LT", "FBS.NE", "FBS.GE", "FBS.LE"]
+                     "FBS.BCD", "FBS.BIN", "FBS.ASCWR"]  # not FUN 140-143/176, nor an
+    # unknown FUN's box (FBS.FUN): kept, not simulated
+    assert [spec.name for spec in contact_rows("fatek")] == [  # the rows that start a rung
+        f"FBS.{name}.ORG" for name in ("TU", "TD", "EQ", "GT", "LT", "NE", "GE", "LE")]
     assert structure_rows("fatek") == ()
     spec = lookup("FBS.TMR")
     assert spec is not None

@@ -3,6 +3,7 @@ laid out (not kept as lists), coded back to the same instructions, saved byte fo
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -16,8 +17,9 @@ from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
 from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.ladder.logic import stack_depth
-from ladderworks.core.ladder.model import WIRE, Contact, FunctionBox, LadderNetwork
-from ladderworks.core.ladder.row_contacts import contact_combine, mark
+from ladderworks.core.ladder.model import Contact, FunctionBox, LadderNetwork
+from ladderworks.core.ladder.row_contacts import ALWAYS_ON, contact_combine, mark
+from tests.core.dialects.fatek.test_programs import fatek as fatek_program
 
 from .conftest import delta
 
@@ -77,17 +79,20 @@ def test_fatek_conveyor_counter_is_ladder() -> None:
     assert mark(edge.function) == "↑"
 
 
-def test_a_fatek_edge_contact_on_the_rail_is_reported_at_its_cell() -> None:
-    program = parse_file(ROOT / "fatek" / "conveyor.lst").program
-    net = next(n for n in program_to_ladder(program).networks if _row_contacts(n))
-    (cell,) = [c for c, e in net.cells.items() if isinstance(e, Contact) and e.function]
-    moved = net.copy()
-    moved.source = None
-    moved.cells[(cell[0], 0)] = moved.cells.pop(cell)  # over the SHORT contact on the rail
-    moved.cells[cell] = WIRE
-    code, diags = network_to_instructions(moved, dialect="fatek")
-    assert code is None and [d.code for d in diags] == ["contact-place"]
-    assert diags[0].cell == (cell[0], 0)
+def test_a_fatek_edge_contact_starts_the_rung_without_a_short_contact() -> None:
+    """`ORG TU X2` is drawn as one contact on the rail (its READ row, issue 38), `OR TU` as a
+    contact in parallel; both code back to the same instructions."""
+    program = fatek_program("ORG TU X2\nOR TU X3\nAND X4\nOUT Y0\n"
+                            "ORG X0\nLD TD X1\nORF 170 (=)\n Sa: R0\n Sb: 5\nANDLD\nOUT Y1\n")
+    for network in program.networks:
+        net = layout_network(list(network.instructions))
+        assert net.listing is None
+        assert not [e for e in net.cells.values()
+                    if isinstance(e, Contact) and e.address == ALWAYS_ON]  # no SHORT drawn
+        again = replace(net, source=None)
+        assert network_to_instructions(again, dialect="fatek")[0] == list(network.instructions)
+    first = layout_network(list(program.networks[0].instructions))
+    assert [mark(c.function) for c in _row_contacts(first)] == ["↑", "↑"]
 
 
 def test_edits_on_a_row_contact() -> None:

@@ -40,4 +40,7 @@ DIALECT = Dialect(
     tables="ladderworks.core.dialects.fatek.tables:TABLES", families=FAMILIES,
     probe="ladderworks.core.dialects.fatek.editing:probe_lines",
     operand_texts="ladderworks.core.dialects.fatek.editing:operand_texts",
-    placed="ladderworks.core.dialects.fatek.editing:placed_params")
+    placed="ladderworks.core.dialects.fatek.editing:placed_params",
+    local_bits=((Area.R, 440, 444),),  # TR0-TR39 (devices.py)
+    style="ladderworks.core.dialects.fatek.printed:style_of",
+    companions="ladderworks.core.dialects.fatek.comments:attach_companions")

@@ -121,7 +121,7 @@ class StackLowering:
             self.emit(record, "RD" + negated, address)
             self.depth = 1
         elif kind == "LD":
-            if self.after_output and self.depth:
+            if self.after_output and self.current.instructions:
                 self.new_part()
                 self.emit(record, "RD" + negated, address)
                 self.depth = 1
@@ -165,7 +165,7 @@ class StackLowering:
             raise refused(record, "fatek-tr-unset", number=number)
         record_address = bit_address(Device("TR", number))
         if self.after_output or not self.depth:
-            if self.depth:
+            if self.after_output and self.current.instructions:
                 self.new_part()
             self.emit(record, "RD", record_address)
             self.depth = 1

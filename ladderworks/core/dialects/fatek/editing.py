@@ -7,7 +7,7 @@ from collections.abc import Iterable
 
 from ladderworks.core.dialects.fatek.devices import FO_BOXES, fo_address
 from ladderworks.core.dialects.fatek.printer import params_text
-from ladderworks.core.dialects.fatek.rows import OTHER, SUB_BASE, operand_label
+from ladderworks.core.dialects.fatek.rows import OTHER, SERIES_OF, SUB_BASE, operand_label
 from ladderworks.core.il.program import ParamValue
 from ladderworks.core.instructions import InstructionSpec, Operation
 
@@ -50,17 +50,30 @@ def probe_lines(spec: InstructionSpec, texts: list[str]) -> list[str]:
         values = values[1:]
     sub = spec.sub or 0
     fun = sub - SUB_BASE
-    if spec.operation in _EDGES:
-        return ["ORG X0", " ".join(["AND", spec.text_name, *values])]
-    if spec.inputs == ("IN",):  # a comparison contact
-        operands = [f"    {label}: {value}" for label, value in zip(_labels(spec), values,
-                                                                     strict=False)]
-        return ["ORG X0", f"ANDF {fun}{forms} {spec.text_name}", *operands]
+    series = SERIES_OF.get(spec.name)
+    if series is not None or spec.inputs == ("IN",):  # an edge or comparison contact
+        return _contact_lines(spec, series or spec, forms, values)
     if SUB_BASE <= sub < OTHER:
         operands = [f"    {label}: {value}" for label, value in zip(_labels(spec), values,
                                                                      strict=False) if value]
         return ["ORG X0", f"FUN {fun}{forms} {spec.text_name}", *operands]
     return ["ORG X0", " ".join([spec.text_name, *(v for v in values if v)])]
+
+
+def _contact_lines(spec: InstructionSpec, series: InstructionSpec, forms: str,
+                   values: list[str]) -> list[str]:
+    """A contact's lines in its place: `ORG TU X1` alone; `LD …` as a block joined by ANDLD;
+    `AND …` / `OR …` after `ORG X0`."""
+    place = spec.name.rsplit(".", 1)[1] if spec is not series else "AND"
+    if series.operation in _EDGES:
+        lines = [" ".join([place, series.text_name, *values])]
+    else:
+        fun = (series.sub or 0) - SUB_BASE
+        lines = [f"{place}F {fun}{forms} {series.text_name}",
+                 *(f"    {label}: {value}" for label, value in zip(_labels(series), values,
+                                                                    strict=False))]
+    head = [] if place == "ORG" else ["ORG X0"]
+    return [*head, *lines, *(["ANDLD"] if place == "LD" else [])]
 
 
 FO = "fo"  # a box's FO byte parameter (core/dialects/fatek/rows.py)

@@ -3,6 +3,7 @@ comparison contacts, timers, counters, RST, FUN boxes and their FO outputs."""
 
 from __future__ import annotations
 
+import itertools
 import re
 
 from ladderworks.core.address import Address
@@ -11,6 +12,7 @@ from ladderworks.core.dialects.fatek.branches import (
     ALWAYS_OFF,
     ALWAYS_ON,
     EDGE_DEVICES,
+    MAX_TR,
     BranchError,
     Lowered,
     StackLowering,
@@ -29,7 +31,15 @@ from ladderworks.core.dialects.fatek.devices import (
     word_address,
 )
 from ladderworks.core.dialects.fatek.listing import Record
-from ladderworks.core.dialects.fatek.rows import BY_FUN, NOT_SIMULATED, ROWS, operand_label
+from ladderworks.core.dialects.fatek.rows import (
+    BY_FUN,
+    FORMS,
+    NOT_SIMULATED,
+    ROWS,
+    UNKNOWN_FUN,
+    operand_label,
+)
+from ladderworks.core.dialects.fatek.tr_inputs import block_start, drop_unread, pushed_copy
 from ladderworks.core.il.program import Instruction, ParamValue
 from ladderworks.core.instructions import InstructionSpec, ParamKind
 
@@ -47,6 +57,59 @@ class ProgramLowering(StackLowering):
         self.warnings = warnings
         self.fo: Address | None = None  # the last box's FO byte in this network
         self.fresh_box = False  # the last record was a box with W1 (its FO0 is ST0)
+        self.following: Record | None = None  # the record after the one being lowered
+        self.ahead: list[Record] = []  # the records of its network
+        self.index = 0  # the one being lowered
+        self.used_tr: set[int] = set()  # the TR points the network's own records name
+        self.pass_on: Record | None = None  # the box whose EN the next coil takes (no output)
+        self.kept_tr = 0  # the TR point holding that EN
+        self.chain_start = 0  # where the outputs on the current result began (this part)
+        self.saved: dict[int, tuple[Lowered, list[Instruction]]] = {}  # TR n: part, block
+        self.copied: dict[Address, int] = {}  # the TR points read as copies of their block
+        self.saving = self.just_saved = -1  # the TR point this / the last record set
+
+    def save_tr(self, record: Record) -> None:
+        """OUT TR n, remembering the block it saved (copied where it is read as an input)."""
+        super().save_tr(record)
+        self.saving = self.tr_number(record)
+        instructions = self.current.instructions[:-1]
+        start = block_start(instructions)
+        number = self.tr_number(record)
+        self.saved.pop(number, None)
+        if start is not None:
+            self.saved[number] = (self.current, instructions[start:])
+
+    def load_tr(self, record: Record) -> None:
+        """LD TR n: the saved block copied when it is pushed as one more value (a box's input,
+        or a block ANDLD / ORLD joins), else the point read."""
+        number = self.tr_number(record) if number_ok(record) else -1
+        if number == self.just_saved and self.depth == 1:
+            # `OUT TR n` then `LD TR n` (WinProladder never prints an empty branch): the rung
+            # goes on from the point, as the lowering of a box's kept EN writes it
+            self.new_part()
+            self.emit(record, "RD", bit_address(Device("TR", number)))
+            self.after_output = False
+            return
+        saved = self.saved.get(number)
+        if saved is None or self.after_output or not self.depth or \
+                saved[0] is not self.current or not self.box_input_next():
+            super().load_tr(record)
+            return
+        self.current.instructions.extend(pushed_copy(saved[1], record.line, record.column))
+        self.current.records.extend([record] * len(saved[1]))
+        self.copied[bit_address(Device("TR", number))] = number
+        self.depth += 1
+        self.after_output = False
+
+    def box_input_next(self) -> bool:
+        """Whether the value pushed now stays apart until a box takes it as an input (no
+        ANDLD / ORLD or output joins it first)."""
+        for record in itertools.islice(self.ahead, self.index + 1, None):
+            if record.mnemonic in ("FUN", "TMR", "CTR"):
+                return True
+            if record.mnemonic not in ("AND", "OR", "ANDF", "ORF") or record.modifier == "TR":
+                return False
+        return False
 
     def emit_box(self, record: Record, spec: InstructionSpec, params: tuple[ParamValue, ...],
                  comment: str = "") -> None:
@@ -71,6 +134,7 @@ class ProgramLowering(StackLowering):
         """After a box: its W1 (FO0) is the result, an output was made."""
         self.depth = 1 if spec.w1 else 0
         self.after_output = True
+        self.chain_start = len(self.current.instructions)
         self.fo = fo
         self.fresh_box = spec.w1
 
@@ -88,28 +152,22 @@ class ProgramLowering(StackLowering):
 
     def contact_box(self, record: Record, spec: InstructionSpec,
                     params: tuple[ParamValue, ...]) -> None:
-        """A contact made of a box with one input IN: IN AND the box's condition."""
+        """An edge or comparison contact in its place: starting the rung or a block (its READ
+        row, `FBS.TU.ORG` / `.LD`), in series (the row itself: IN AND it), in parallel (`.OR`)."""
         kind = record.mnemonic.rstrip("F") if record.mnemonic.endswith("F") else record.mnemonic
+        forms = FORMS[spec.name]
         if kind == "ORG" or (kind == "LD" and (not self.depth or self.after_output)):
-            if kind == "LD" and self.depth:
+            if kind == "LD" and self.after_output and self.current.instructions:
                 self.new_part()
-            self.emit(record, "RD", ALWAYS_ON)
+            self.emit_box(record, forms["ORG"], params)
             self.depth = 1
-            self.emit_box(record, spec, params)
         elif kind == "LD":
-            self.emit(record, "RD.STK", ALWAYS_ON)
+            self.emit_box(record, forms["LD"], params)
             self.depth += 1
-            self.emit_box(record, spec, params)
-        elif kind == "AND":
-            if not self.depth:
-                raise refused(record, "fatek-no-input", name=record.mnemonic)
-            self.emit_box(record, spec, params)
         else:
             if not self.depth:
                 raise refused(record, "fatek-no-input", name=record.mnemonic)
-            self.emit(record, "RD.STK", ALWAYS_ON)
-            self.emit_box(record, spec, params)
-            self.emit(record, "OR.STK")
+            self.emit_box(record, spec if kind == "AND" else forms["OR"], params)
         self.after_output = False
         self.fresh_box = False
 
@@ -169,19 +227,76 @@ class ProgramLowering(StackLowering):
                                         record.line, record.column, Severity.WARNING))
 
     def function(self, record: Record) -> None:
-        """FUN n with its operand lines."""
+        """FUN n with its operand lines; a FUN the table has no row for is kept as the
+        not-simulated box FBS.FUN (drawn, saved, run as nothing: its FO stay 0)."""
         spec = BY_FUN.get(record.fun or -1)
-        if spec is None or spec.inputs == ("IN",):
+        if spec is not None and spec.inputs == ("IN",):
             raise refused(record, "fatek-unknown-fun", number=record.fun)
+        if spec is None:  # every block before it is one of its inputs (up to four)
+            spec = ROW_OF_NAME[UNKNOWN_FUN]
         self.inputs(record, len(spec.inputs))
         fo = self.next_fo() if any(p.name == "fo" for p in spec.params) else None
+        kept = self.keep_en(record, spec)
         if spec.name in NOT_SIMULATED:
             self.not_simulated(record)
-            lines = ", ".join(f"{o.label}: {o.text}".strip() for o in record.operands)
-            self.emit_box(record, spec, (record.fun or 0, fo or ALWAYS_OFF), lines)
+            self.emit_box(record, spec, (record.fun or 0, fo or ALWAYS_OFF), kept_text(record))
         else:
             self.emit_box(record, spec, self.box_params(record, spec, fo))
         self.after_box(spec, fo)
+        if kept is not None:
+            self.pass_on = kept
+
+    def keep_en(self, record: Record, spec: InstructionSpec) -> Record | None:
+        """A box with no output followed by a coil: WinProladder wires the coil to the box's
+        EN. The EN is kept in a TR point the network does not use (`OUT TR n` before the box);
+        the box and the coil each start an engine network from it (`LD TR n`): the record of
+        the box, or None."""
+        if spec.w1 or self.depth != 1 or not _takes_result(self.following):
+            return None
+        free = self.free_tr()
+        if free is None:
+            return None
+        address = bit_address(Device("TR", free))
+        self.emit(record, "WRT", address)
+        self.new_part()  # the box drawn on a rung of its own, from the point
+        self.emit(record, "RD", address)
+        self.kept_tr = free
+        return record
+
+    def free_tr(self) -> int | None:
+        """A TR point the network does not use, taken (the highest first), None if none."""
+        free = [n for n in range(MAX_TR - 1, -1, -1)
+                if n not in self.tr_points and n not in self.used_tr]
+        if not free:
+            return None
+        self.tr_points.add(free[0])
+        return free[0]
+
+    def box_after_coils(self, record: Record) -> None:
+        """A box after coils on the same result (`RST( ) S1` … `RST( ) C0`): WinProladder draws
+        them in parallel. The result is kept in a free TR point before the first coil, and the
+        box starts a new engine network from it (each drawn as a rung)."""
+        if self.depth != 1:
+            return
+        free = self.free_tr()
+        if free is None:
+            return
+        part = self.current
+        at = min(self.chain_start, len(part.instructions))
+        first = part.records[at] if at < len(part.records) else record
+        part.instructions.insert(at, Instruction("WRT", bit_address(Device("TR", free)),
+                                                 line=first.line, column=first.column))
+        part.records.insert(at, first)
+        self.kept_tr = free
+        self.coil_after_box(record)
+
+    def coil_after_box(self, record: Record) -> None:
+        """The coil or box after a box with no output: a new engine network from the kept EN."""
+        self.pass_on = None
+        self.new_part()
+        self.emit(record, "RD", bit_address(Device("TR", self.kept_tr)))
+        self.depth = 1
+        self.after_output = False
 
     def timer_or_counter(self, record: Record) -> None:
         """TMR Tn [base] PV / CTR Cn PV (PV on the line or on an operand line `PV: …`)."""
@@ -226,8 +341,10 @@ class ProgramLowering(StackLowering):
             device = bit_device(record, ("T", "C"))
             spec = ROW_OF_NAME["FBS.RST"]
             self.inputs(record, 1)
+            kept = self.keep_en(record, spec)
             self.emit_box(record, spec, (0 if device.kind == "T" else 1, device.number))
             self.after_box(spec, None)
+            self.pass_on = kept
             return
         record.mnemonic = "OUTR"
         try:
@@ -254,6 +371,21 @@ class ProgramLowering(StackLowering):
         kind = record.mnemonic
         if kind in ("OUT", "OUTS", "OUTR") and record.modifier != "TR":
             self.fresh_box = False
+        self.just_saved, self.saving = self.saving, -1  # the TR point the record before set
+        if not self.after_output:
+            self.chain_start = len(self.current.instructions)
+        if self.pass_on is not None and _takes_result(record):
+            self.coil_after_box(record)
+        elif self.after_output and _is_box(record):
+            self.box_after_coils(record)
+        self.pass_on = None
+        if kind == "SET":
+            record.mnemonic = "OUTS"
+            try:
+                self.coil(record)
+            finally:
+                record.mnemonic = "SET"
+            return
         if self.take(record):
             return
         if kind in ("ORG", "LD", "AND", "OR") and record.modifier in ("TU", "TD"):
@@ -270,6 +402,37 @@ class ProgramLowering(StackLowering):
             self.function_output(record)
         elif kind != "END":
             raise refused(record, "fatek-unknown-instruction", name=kind)
+
+
+def number_ok(record: Record) -> bool:
+    """Whether a TR record's number is written as digits (its range checked later)."""
+    return record.operand[2:].isdigit()
+
+
+def _is_box(record: Record) -> bool:
+    """Whether a record is a box that takes the result (FUN, TMR, CTR, RST of T/C)."""
+    if record.mnemonic in ("FUN", "TMR", "CTR"):
+        return True
+    operand = record.operand.upper()
+    return record.mnemonic == "RST" and operand[:1] in ("T", "C") and not operand.startswith("TR")
+
+
+def _takes_result(record: Record | None) -> bool:
+    """Whether a record takes the result before it: a coil (OUT, OUTS, OUTR, SET, RST) or a
+    box (FUN, TMR, CTR); not a TR point, a contact or FO."""
+    if record is None or record.modifier == "TR":
+        return False
+    return record.mnemonic in ("OUT", "OUTS", "OUTR", "SET", "RST", "FUN", "TMR", "CTR")
+
+
+def kept_text(record: Record) -> str:
+    """A not-simulated box's operand lines as its comment (`Ps: 1, SR: R1200`); an unknown
+    FUN's number, forms and name as written go first (`FUN 60DP XYZ: S: R0`)."""
+    lines = ", ".join(f"{o.label}: {o.text}".strip() for o in record.operands)
+    if BY_FUN.get(record.fun or -1) is None:
+        forms = ("D" if record.double else "") + ("P" if record.pulse else "")
+        return f"{f'FUN {record.fun}{forms} {record.fun_name}'.rstrip()}: {lines}"
+    return lines
 
 
 def _name(record: Record) -> str:
@@ -303,16 +466,21 @@ def lower_program(records: list[Record]) -> tuple[list[Lowered], list[Diagnostic
     for network in split_networks(records):
         warnings: list[Diagnostic] = []
         lowering = ProgramLowering(boxes, warnings)
+        lowering.used_tr = {int(r.operand[2:]) for r in network
+                            if r.modifier == "TR" and r.operand[2:].isdigit()}
         try:
-            for record in network:
+            for index, record in enumerate(network):
                 if record.mnemonic == "END":
                     break
+                lowering.following = network[index + 1] if index + 1 < len(network) else None
+                lowering.ahead, lowering.index = network, index
                 lowering.take_record(record)
             if lowering.depth > 1:
                 last = network[-1]
                 raise refused(last, "fatek-open-block", name=_name(last), count=lowering.depth - 1)
         except BranchError as error:
             diagnostics.append(error.diagnostic)
+        drop_unread(lowering.parts, lowering.copied)
         diagnostics.extend(warnings)
         boxes = lowering.boxes
         parts.extend(part for part in lowering.parts if part.instructions)

@@ -3,10 +3,13 @@ instruction a line, a FUN box's operands on their own lines (docs/dialects.md, F
 
 from __future__ import annotations
 
+import re
+
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.fatek.branches import ALWAYS_OFF, ALWAYS_ON
 from ladderworks.core.dialects.fatek.devices import FO_AREA, device_at, word_device_at
-from ladderworks.core.dialects.fatek.rows import SUB_BASE, operand_label
+from ladderworks.core.dialects.fatek.printed import PrintedStyle, printed_lines
+from ladderworks.core.dialects.fatek.rows import SERIES_OF, SUB_BASE, UNKNOWN_FUN, operand_label
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, Network
 from ladderworks.core.instructions import Combine, InstructionSpec, Kind, Write
@@ -57,6 +60,18 @@ def _is_fo(address: Address | None) -> bool:
         and address.bit is not None and address.byte < 9000
 
 
+_UNKNOWN_RE = re.compile(r"^FUN \d+([DP]*)(?: (.*?))?: (.*)$", re.S)
+
+
+def unknown_parts(ins: Instruction) -> tuple[str, str, str]:
+    """A box's name, forms (`DP`) and kept operand lines: an unknown FUN's comment says them as
+    written, `FUN 60DP XYZ: S: R0, D: R1` (lowering.kept_text), shown so on its box."""
+    found = _UNKNOWN_RE.match(ins.comment) if ins.spec.name == UNKNOWN_FUN else None
+    if found is not None:
+        return found.group(2) or "", found.group(1), found.group(3)
+    return ins.spec.text_name, "", ins.comment
+
+
 def _box_lines(ins: Instruction) -> list[str]:
     """A box's step line and its operand lines."""
     spec = ins.spec
@@ -67,14 +82,15 @@ def _box_lines(ins: Instruction) -> list[str]:
         return [_line("CTR", f"C{values['counter']}  {device_text(values['preset'])}")]
     if spec.name == "FBS.RST":
         return [_line("RST", f"{'T' if values['kind'] == 0 else 'C'}{values['number']}")]
-    fun = (spec.sub or SUB_BASE) - SUB_BASE
+    fun = values["fun"] if "fun" in values else (spec.sub or SUB_BASE) - SUB_BASE
     mode = values.get("mode", 0)
     forms = ("D" if isinstance(mode, int) and mode & 2 else "") + (
         "P" if isinstance(mode, int) and mode & 1 else "")
-    head = _line(f"FUN {fun}{forms}", spec.text_name)
+    name, kept_forms, kept = unknown_parts(ins)
+    head = _line(f"FUN {fun}{forms or kept_forms}", name)
     lines = [head]
     if spec.cnc:  # not simulated: its operand lines were kept as the comment
-        lines.extend(f"    {text.strip()}" for text in ins.comment.split(", ") if text.strip())
+        lines.extend(f"    {text.strip()}" for text in kept.split(", ") if text.strip())
         return lines
     for param in spec.params:
         if param.name in ("mode", "fo", "fun"):
@@ -130,6 +146,12 @@ def instruction_lines(instructions: list[Instruction], index: int, first: bool
         mnemonic = "AND" if spec.combine is Combine.AND else "OR"
         return [_line(mnemonic + (" NOT" if spec.negated else ""),
                       device_text(operand))], index + 1
+    if spec.combine is not Combine.NONE:  # an edge or comparison contact in its place
+        if spec.combine is Combine.OR:
+            mnemonic = "OR"
+        else:
+            mnemonic = "ORG" if spec.pushes == 0 and first else "LD"
+        return _contact_box(ins, mnemonic), index + 1
     if spec.inputs == ("IN",):  # an edge or comparison contact in series (AND)
         return _contact_box(ins, "AND"), index + 1
     lines = _box_lines(ins)
@@ -140,26 +162,30 @@ def instruction_lines(instructions: list[Instruction], index: int, first: bool
 
 def _contact_box(ins: Instruction, mnemonic: str) -> list[str]:
     """An edge contact (`ORG TU X2`) or a comparison contact (`ANDF 170 (=)` + Sa, Sb)."""
-    name = ins.spec.name
+    series = SERIES_OF.get(ins.spec.name, ins.spec)
+    name = series.name
     if name in _CONTACT_BOXES:
         return [_line(f"{mnemonic} {_CONTACT_BOXES[name]}", device_text(ins.params[0]))]
     values = ins.param_map()
-    fun = (ins.spec.sub or SUB_BASE) - SUB_BASE
+    fun = (series.sub or SUB_BASE) - SUB_BASE
     mode = values.get("mode", 0)
     forms = "D" if isinstance(mode, int) and mode & 2 else ""
     return [_line(f"{mnemonic}F {fun}{forms}", ins.spec.text_name),
             f"    Sa: {device_text(values['Sa'])}", f"    Sb: {device_text(values['Sb'])}"]
 
 
-def network_lines(network: Network, first: bool) -> list[str]:
+def network_lines(network: Network, first: bool, style: PrintedStyle | None = None
+                  ) -> list[str]:
     """A network's lines (a network that goes on from the one before, after `LD TR n` or
-    `FO n`, starts with that line)."""
+    `FO n`, starts with that line); in WinProladder's printed form when its file is."""
     out: list[str] = []
     index = 0
     instructions = network.instructions
     while index < len(instructions):
         lines, index = instruction_lines(instructions, index, index == 0)
         out.extend(lines)
+    if style is not None:
+        return printed_lines(out, style, network.line)
     return out
 
 
@@ -186,6 +212,16 @@ def params_text(spec: InstructionSpec, values: tuple) -> list[str]:
     return texts
 
 
+def labelled_params_text(spec: InstructionSpec, values: tuple) -> list[str]:
+    """A FUN box's operands as the drawing shows them, labelled as WinProladder draws them
+    (`S:C0`, `D:R100`, `Sa:R6`: one word each); a timer's, counter's or RST's bare (`T10`)."""
+    texts = params_text(spec, values)
+    if not (spec.sub or 0) < SUB_BASE + 1000 or spec.inputs == ("IN",):
+        return texts  # TMR, CTR, RST (21000 …); a contact's operands above and below it
+    labels = [operand_label(p.name) for p in spec.params if p.name not in _HIDDEN]
+    return [f"{label.strip()}:{text}" for label, text in zip(labels, texts, strict=False)]
+
+
 def instruction_text(instruction: Instruction) -> str:
     """One instruction on one line, as a listing in the console shows it: `ORG X0`,
     `FUN 11 (+) Sa: R0 Sb: 7 D: R1`."""
@@ -195,7 +231,10 @@ def instruction_text(instruction: Instruction) -> str:
         operand = "" if instruction.operand is None else " " + device_text(instruction.operand)
         return (name + operand).strip()
     if spec.cnc:
-        return f"{name} {instruction.comment}".strip()
+        fun_name, forms, kept = unknown_parts(instruction)
+        if spec.name == UNKNOWN_FUN:
+            name = f"FUN {instruction.params[0]}{forms} {fun_name}".strip()
+        return f"{name} {kept}".strip()
     texts = params_text(spec, instruction.params)
     labels = [operand_label(p.name) for p in spec.params
               if p.name not in _HIDDEN]
@@ -215,4 +254,5 @@ def spelling() -> Spelling:
             return "SHORT" if address == ALWAYS_ON else "OPEN"
         return DIALECT.format_address(address)
 
-    return Spelling(DIALECT.name, address_text, params_text, instruction_text, mnemonic_of)
+    return Spelling(DIALECT.name, address_text, labelled_params_text, instruction_text,
+                    mnemonic_of)

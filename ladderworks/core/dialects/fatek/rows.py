@@ -6,6 +6,7 @@ from __future__ import annotations
 from ladderworks.core.instruction_fields import Operation
 from ladderworks.core.instructions import (
     FUNCTION_OPCODE,
+    Combine,
     InstructionSpec,
     Kind,
     Param,
@@ -97,6 +98,10 @@ ROWS: tuple[InstructionSpec, ...] = (
          params=(MODE, _register("output", ParamAccess.READ_WRITE), FO)),
     _row("FBS.CMP", SUB_BASE + 17, "CMP", "Compare", "KARŞILAŞTIR",
          params=(MODE, _value("Sa"), _value("Sb"), FO)),
+    _row("FBS.BCD", SUB_BASE + 20, "BCD", "Binary to BCD", "İKİLİDEN BCD'YE",
+         params=(MODE, _value("S"), _register("output"), FO)),
+    _row("FBS.BIN", SUB_BASE + 21, "BIN", "BCD to binary", "BCD'DEN İKİLİYE",
+         params=(MODE, _value("S"), _register("output"), FO)),
     _row("FBS.ASCWR", SUB_BASE + 94, "ASCWR", "ASCII write", "ASCII YAZ",
          inputs=("EN", "PAU", "ABT"),
          params=(_number("MD", 0, 255), _register("S", ParamAccess.READ),
@@ -107,16 +112,55 @@ ROWS: tuple[InstructionSpec, ...] = (
       for fun, name, symbol in ((170, "FBS.EQ", "(=)"), (171, "FBS.GT", "(>)"),
                                 (172, "FBS.LT", "(<)"), (173, "FBS.NE", "(<>)"),
                                 (174, "FBS.GE", "(>=)"), (175, "FBS.LE", "(<=)"))),
-    # drawn and kept, not simulated (a warning at their line; FO stay 0)
+    # drawn and kept, not simulated (a warning at their line; FO stay 0). Inputs as
+    # WinProladder's printout draws them: HSPSO EN, PAU, ABT (outputs ACT, ERR, DN = FO0-FO2)
     *(_row(name, SUB_BASE + fun, mnemonic, title, title_tr, params=(_number("fun", 0, 999), FO),
-           cnc=True)
-      for fun, name, mnemonic, title, title_tr in (
-          (140, "FBS.HSPSO", "HSPSO", "High-speed pulse output", "YÜKSEK HIZLI DARBE ÇIKIŞI"),
-          (141, "FBS.MPARA", "MPARA", "Positioning parameters", "KONUMLAMA PARAMETRELERİ"),
-          (142, "FBS.PSOFF", "PSOFF", "Stop the pulse output", "DARBE ÇIKIŞINI DURDUR"),
-          (143, "FBS.PSCNV", "PSCNV", "Pulse position to a value", "DARBE KONUMUNU DEĞERE ÇEVİR"),
-          (176, "FBS.176", "FUN 176", "FUN 176", "FUN 176"))),
+           cnc=True, inputs=inputs)
+      for fun, name, mnemonic, title, title_tr, inputs in (
+          (140, "FBS.HSPSO", "HSPSO", "High-speed pulse output", "YÜKSEK HIZLI DARBE ÇIKIŞI",
+           ("EN", "PAU", "ABT")),
+          (141, "FBS.MPARA", "MPARA", "Positioning parameters", "KONUMLAMA PARAMETRELERİ",
+           ("EN",)),
+          (142, "FBS.PSOFF", "PSOFF", "Stop the pulse output", "DARBE ÇIKIŞINI DURDUR", ("EN",)),
+          (143, "FBS.PSCNV", "PSCNV", "Pulse position to a value", "DARBE KONUMUNU DEĞERE ÇEVİR",
+           ("EN",)),
+          (176, "FBS.176", "FUN 176", "FUN 176", "FUN 176", ("EN",)))),
+    # any other FUN n a program holds: kept, drawn as a box with up to 4 inputs, run as nothing
+    _row("FBS.FUN", OTHER + 5, "FUN", "Function not simulated", "BENZETİLMEYEN FONKSİYON",
+         inputs=("EN", "IN2", "IN3", "IN4"), params=(_number("fun", 0, 999), FO), cnc=True),
 )
+UNKNOWN_FUN = "FBS.FUN"  # the row of a FUN the table has no row for
+
+# The edge and comparison contacts in their other places (issue 38): `ORG TU X2` / `ORGF 170`
+# starting a rung (READ), `LD TU` / `LDF` pushing a block (READ, push), `OR TU` / `ORF` in
+# parallel (OR). The series rows above are the AND place. Named `FBS.TU.ORG`, `.LD`, `.OR`.
+PLACES = (("ORG", Combine.READ, 0), ("LD", Combine.READ, 1), ("OR", Combine.OR, 0))
+
+
+def _placed(series: InstructionSpec, index: int, place: str, combine: Combine,
+            pushes: int) -> InstructionSpec:
+    return InstructionSpec(
+        f"{series.name}.{place}", Kind.FUNCTION, OTHER + 10 + index,
+        inputs=("IN",) if combine is Combine.OR else (), params=series.params, w1=True,
+        title=series.title, title_tr=series.title_tr, opcode=FUNCTION_OPCODE,
+        mnemonic=series.mnemonic, source="fatek", dialect="fatek", operation=series.operation,
+        combine=combine, pushes=pushes)
+
+
+_SERIES = tuple(spec for spec in ROWS if spec.inputs == ("IN",))
+PLACED: tuple[InstructionSpec, ...] = tuple(
+    _placed(series, 3 * k + j, place, combine, pushes)
+    for k, series in enumerate(_SERIES)
+    for j, (place, combine, pushes) in enumerate(PLACES))
+ROWS = (*ROWS, *PLACED)
+# a series contact row's row for a place: FORMS["FBS.TU"]["ORG"]
+FORMS: dict[str, dict[str, InstructionSpec]] = {
+    series.name: {place: spec for spec in PLACED
+                  for place in (spec.name.rsplit(".", 1)[1],)
+                  if spec.name.rsplit(".", 1)[0] == series.name}
+    for series in _SERIES}
+SERIES_OF: dict[str, InstructionSpec] = {  # a placed row's series row (its FUN number, spelling)
+    spec.name: series for series in _SERIES for spec in FORMS[series.name].values()}
 
 BY_FUN: dict[int, InstructionSpec] = {
     spec.sub - SUB_BASE: spec for spec in ROWS if spec.sub is not None and spec.sub < OTHER}
@@ -127,6 +171,9 @@ COMPARISON_FUNS = range(170, 176)
 FAMILIES: dict[str, tuple[str, ...]] = {
     "fatek_data": ("FBS.MOV", "FBS.ADD", "FBS.SUB", "FBS.MUL", "FBS.DIV", "FBS.INC", "FBS.DEC",
                    "FBS.CMP", "FBS.EQ", "FBS.GT", "FBS.LT", "FBS.NE", "FBS.GE", "FBS.LE"),
-    "fatek_io": ("FBS.ASCWR", "FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176"),
+    "fatek_io": ("FBS.ASCWR", "FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176",
+                 "FBS.FUN"),
+    "fatek_convert": ("FBS.BCD", "FBS.BIN"),
+    "fatek_contacts": tuple(spec.name for spec in PLACED),
     "fatek_timing": ("FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.TU", "FBS.TD"),
 }

@@ -67,5 +67,5 @@ def fatek_not_simulated(ctx: FunctionContext, state: dict, inputs: tuple[bool, .
     return False
 
 
-for _name in ("FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176"):
+for _name in ("FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176", "FBS.FUN"):
     function(_name)(fatek_not_simulated)

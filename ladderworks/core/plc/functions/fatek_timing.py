@@ -185,7 +185,7 @@ def fatek_reset(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
     return bool(inputs[0])
 
 
-def _edge(ctx: FunctionContext, state: dict, device: Address, rising: bool) -> bool:
+def edge(ctx: FunctionContext, state: dict, device: Address, rising: bool) -> bool:
     """The device changed (0 -> 1 or 1 -> 0) since this contact last ran (0 at the load)."""
     now = bool(ctx.memory.bit(device))
     before = state.get("before", False)
@@ -197,11 +197,11 @@ def _edge(ctx: FunctionContext, state: dict, device: Address, rising: bool) -> b
 def fatek_rising_contact(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                          params: tuple) -> bool:
     """TU contact: on for one scan after its device turns on (002:80), in series with IN."""
-    return _edge(ctx, state, params[0], True) and bool(inputs[0])
+    return edge(ctx, state, params[0], True) and bool(inputs[0])
 
 
 @function("FBS.TD")
 def fatek_falling_contact(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                           params: tuple) -> bool:
     """TD contact: on for one scan after its device turns off (002:80), in series with IN."""
-    return _edge(ctx, state, params[0], False) and bool(inputs[0])
+    return edge(ctx, state, params[0], False) and bool(inputs[0])

@@ -40,7 +40,8 @@ def test_check_reports_file_line_col(tmp_path: Path, capsys: pytest.CaptureFixtu
     out = capsys.readouterr().out.splitlines()
     assert [line.split(": ")[0] for line in out] == [
         f"{path}:2:9", f"{path}:4:9", f"{path}:6:9"]
-    assert "fatek-output-on-rail" in out[0] and "fatek-unknown-fun" in out[1]
+    # an unknown FUN opens (a box run as nothing), with a warning at its line
+    assert "fatek-output-on-rail" in out[0] and "fatek-not-simulated" in out[1]
     assert "fatek-missing-operand" in out[2]
 
 

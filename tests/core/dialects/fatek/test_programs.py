@@ -157,7 +157,8 @@ def test_production_report_prints_the_seed_report() -> None:
     ("ORG X0\nOUT Y0\nOUT Y1\n", "", 0, True),
     ("ORG X0\nOUT Y0\n   0  OUT Y1\n", "", 0, True),
     ("ORG X0\nAND X1\nOUT Y0\nOUT Y2\n\nOUT Y3\n", "", 0, True),
-    ("ORG X0\nOUT Y0\nOUT Y1\nFUN 999 XYZ\n  D : R0\n", "fatek-unknown-fun", 4, True),
+    ("ORG X0\nOUT Y0\nOUT Y1\nFUN 999 XYZ\n  D : R0\n", "fatek-not-simulated", 4, False),
+    ("ORG X0\nANDF 999 XYZ\n  Sa: R0\n  Sb: R1\nOUT Y0\n", "fatek-unknown-fun", 2, True),
     ("ORG X0\nFUN 11 (+)\n  Sa: R0\n  Sb: R1\nOUT Y0\n", "fatek-missing-operand", 2, True),
     ("ORG X0\nFUN 8 MOV\n  S : R0\n  D : 5\n", "fatek-operand", 4, True),
     ("ORG X0\nFUN 8 MOV\n  S : R0\n  D : R1\n  D : R2\n", "fatek-extra-operand", 5, True),
@@ -202,7 +203,8 @@ def test_boxes_are_drawn_and_the_not_simulated_keep_their_operand_lines() -> Non
                     "ORG X1\nFUN 8 MOV\n  S : 5\n  D : R3\n")
     hspso, mov = (layout_network(n.instructions) for n in program.networks)
     assert hspso.listing is None and mov.listing is None
-    assert program.networks[0].instructions[1].comment == "Ps: 0, SR: R0, WR: R100, : C1"
+    box = next(i for i in program.networks[0].instructions if i.spec.cnc)
+    assert box.comment == "Ps: 0, SR: R0, WR: R100, : C1"
     plc = ScanEngine(compile(program))
     put(plc, "X0", 1)
     put(plc, "X1", 1)
