@@ -237,6 +237,9 @@ MESSAGES: dict[str, str] = {
     "fatek-ascii-section": QT_TRANSLATE_NOOP(
         "Diagnostic", "ASCII files: '{text}' is not a section header such as [R1000]"),
     # dialects (docs/dialects.md): devices and operands of a Delta or Fatek program
+    "typed-other-row": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' cannot be the device of {name} here: with it the line reads as "
+        "{other} (place {other} from the palette)"),
     "device-unknown": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' is not a device (use {letters} with a number)"),
     "device-octal": QT_TRANSLATE_NOOP(

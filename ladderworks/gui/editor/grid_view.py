@@ -10,10 +10,12 @@ from PySide6.QtWidgets import QGraphicsRectItem, QGraphicsScene, QGraphicsView, 
 
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects import parse_bit
 from ladderworks.core.dialects.spelling import spelling
+from ladderworks.core.dialects.typed_bits import read_bit
 from ladderworks.core.il import Program
-from ladderworks.core.ladder import LadderNetwork, Selection, Wire
+from ladderworks.core.instructions import lookup
+from ladderworks.core.ladder import Coil, Contact, LadderNetwork, Selection, Wire
+from ladderworks.core.ladder.logic import coil_spec
 from ladderworks.core.symbols import resolve
 from ladderworks.gui.editor.centre import centre_on
 from ladderworks.gui.editor.geometry import (
@@ -195,26 +197,20 @@ class GridView(QGraphicsView):
         """True when an element of `network` has a comment to show (its rows are taller)."""
         return shows_comment(network, self.comments)
 
-    def resolve_address(self, text: str) -> str:
-        """The address a typed text names: itself, or the address of a program symbol (a Delta
-        program's device, `X17`: its address, `X1.7`)."""
-        try:
-            if spelling(self.model.dialect).dialect:
-                return str(parse_bit(text, self.model.dialect))
-            return str(resolve(text, self.model.symbols))
-        except AddressError:
-            return text
-
-    def typed_address_problem(self, text: str) -> Diagnostic | None:
-        """Why a bit typed in a Delta program is none of its devices (`X8`); None if it is one
-        (or the program is the PMC's: its own checks say why)."""
-        if not spelling(self.model.dialect).dialect:
-            return None
-        try:
-            parse_bit(text, self.model.dialect)
-        except AddressError as error:
-            return error.diagnostic
-        return None
+    def typed_bit(self, text: str, element: Contact | Coil) -> str | Address | Diagnostic:
+        """The device typed on a contact or coil. A dialect program's reader reads it as the
+        element's line (`LD T0`: T0's contact; `OUT X0`: its refusal, a Diagnostic); a PMC
+        program's text is itself or the address of a program symbol (the edit checks it)."""
+        dialect = self.model.dialect
+        if not spelling(dialect).dialect:
+            try:
+                return str(resolve(text, self.model.symbols))
+            except AddressError:
+                return text
+        spec = coil_spec(element) if isinstance(element, Coil) else lookup(
+            "RD.NOT" if element.negated else "RD")
+        assert spec is not None
+        return read_bit(spec, text, str(dialect))
 
     def spell_address(self, address: Address) -> str:
         """An address as the program writes it (`X17` in a Delta program)."""

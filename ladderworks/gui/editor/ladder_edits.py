@@ -79,10 +79,11 @@ class LadderEdits:
 
     # -- one operation each, at a cell -----------------------------------------------------
 
-    def set_address(self, index: int, row: int, col: int, text: str,
+    def set_address(self, index: int, row: int, col: int, text: str | Address,
                     comment: str | None = None) -> bool:
         """The address of a contact or coil, and its new `comment` (None: kept): one step."""
         dialect = self.grid.model.dialect  # its map: a seed program's is the seed's
+        shown = self.grid.spell_address(text) if isinstance(text, Address) else text
 
         def address_and_comment(network: LadderNetwork) -> None:
             core.set_address(network, row, col, text, dialect)
@@ -90,7 +91,7 @@ class LadderEdits:
                 core.set_comment(network, row, col, comment)
 
         return self.run_edit(index, address_and_comment,
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), text))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), shown))
 
     def set_comments(self, index: int, lines: list[str]) -> bool:
         """A network's comment lines."""
@@ -252,7 +253,7 @@ class LadderEdits:
         if found is None or not isinstance(found[1], Contact | Coil):
             return False
         (r, c), _element = found
-        return self.set_address(index, r, c, str(address))
+        return self.set_address(index, r, c, address)
 
     def delete_at_cursor(self) -> None:
         """DEL: delete the selection or the element at the cursor."""
