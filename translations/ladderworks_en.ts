@@ -627,576 +627,581 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <source>END ends the program and stays its last network: draw new networks above it</source>
+        <translation>END ends the program and stays its last network: draw new networks above it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
         <source>a line must be horizontal or vertical</source>
         <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="127"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} and {replacement}: replace a bit with a bit, a byte with a byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} would be replaced with itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also in network {other})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="158"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="160"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="172"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII format: the text opened by {quote} is never closed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII format: a repeat count must be 1 to 999, found {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII format: text after END: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII format: END is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; is not a Fatek instruction</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="207"/>
         <source>{name} needs a device</source>
         <translation>{name} needs a device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; is not a Fatek device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} cannot take &apos;{text}&apos; (use {kinds})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; is out of range ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} with nothing before it: a network starts with ORG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} needs two blocks: start the second one with LD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} is set twice in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
         <source>a network has at most {limit} TR points</source>
         <translation>a network has at most {limit} TR points</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>LD TR{number} before OUT TR{number} in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} on the left rail: put ORG SHORT before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="221"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="223"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number} is not a Fatek function LadderWorks knows</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="225"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: the operand line {param} is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="227"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} takes no more operands, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} is kept and drawn but not simulated: its outputs stay 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos; is not the time base of {name} ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: no function output here (FO0-FO7 after a box)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
         <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
         <translation>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; is not a device (use {letters} with a number)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; is out of range ({first} to {last})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; is not a bit device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; is not a word device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; is not listed in this table (use {letters})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="255"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; is not a K or H constant</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name} is a {dialect} instruction the simulator does not run</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>subroutine without its SRET (before the next pointer or END)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>no pointer P{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>no subroutine P{program} after FEND for this CALL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} without a logic result before it (start with LD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
         <source>this pointer P number is used twice</source>
         <translation>this pointer P number is used twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>a second PROGRAM line (the one on line {first} counts)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>the program &apos;{path}&apos; cannot be loaded: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{count} addresses from {start} run past Modbus address 65535</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} cannot be written over Modbus: the access must be r</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} are bits: a width is for registers only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end} overlap the row on line {other}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="335"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>the map has no row</source>
         <translation>the map has no row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
@@ -1561,7 +1566,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="104"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
@@ -1571,32 +1576,32 @@
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="37"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="127"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="141"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="39"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="152"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="166"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="156"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="170"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -1606,28 +1611,28 @@
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="132"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="48"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="49"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="53"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="54"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="99"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="94"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="108"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
@@ -1637,17 +1642,17 @@
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="298"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="312"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="310"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="324"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="320"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="337"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>

@@ -627,576 +627,581 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <source>END ends the program and stays its last network: draw new networks above it</source>
+        <translation>END programı bitirir ve son ağ olarak kalır: yeni ağları onun üstüne çizin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
         <source>a line must be horizontal or vertical</source>
         <translation>çizgi yatay veya dikey olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="127"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>panoda ladder elemanı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; programın bir adresi veya sembolü değil: değiştirmek için bir adres veya sembol yazın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} ve {replacement}: bit ile bit, bayt ile bayt değiştirilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} kendisiyle değiştirilmiş olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>JMP without a matching JMPE</source>
         <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
         <source>JMPE without a JMP before it</source>
         <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>COM without a matching COME</source>
         <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>COME without a COM before it</source>
         <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>coil {address} is written more than once</source>
         <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {line}. satırda)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {other}. devrede)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>JMP veya COM aralığı içinde LBL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde LBL L{label} yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>L{label} etiketi bu program biriminde iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="158"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC yalnızca bir alt program içinde kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>subprogram P{program} does not exist</source>
         <translation>P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="160"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>burada P{program} çağrısı bir alt programın kendini çağırmasına yol açıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>P{program} üzerinden çağrılar {limit} alt programdan daha derine iniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>SP without a matching SPE</source>
         <translation>eşleşen SPE olmadan SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>SPE without an SP before it</source>
         <translation>önünde SP olmayan SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>P{program} alt programı iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>ilk SP&apos;den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="172"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} {level}. seviyeyi bitiremez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>instruction after END, the end of the program</source>
         <translation>program sonu END&apos;den sonra komut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>L{label} etiketine geri atlama bir taramada {limit} kereden fazla tekrarlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII biçimi: {quote} ile açılan metin hiç kapatılmamış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII biçimi: tekrar sayısı 1 ile 999 arasında olmalı, bulunan {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII biçimi: &apos;{text}&apos; bir öğe değil (&apos;metin&apos;, MX, onaltılık kodlar, &quot;w.dRn&quot;, / ya da \ bekleniyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII biçimi: &quot;{text}&quot; bir değişken değil (örneğin &quot;8.2R0&quot; ya da &quot;4R10H&quot; bekleniyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII biçimi: END&apos;den sonra metin: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII biçimi: END eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; bir Fatek komutu değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>önünde FUN, TMR ya da CTR olmayan bir operand satırı: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="207"/>
         <source>{name} needs a device</source>
         <translation>{name} bir eleman (cihaz) adresi ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; bir Fatek elemanı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} &apos;{text}&apos; alamaz ({kinds} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; aralık dışında ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} önünde bir şey yok: ağ ORG ile başlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} iki blok ister: ikincisini LD ile başlatın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} bu ağda iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
         <source>a network has at most {limit} TR points</source>
         <translation>bir ağda en fazla {limit} TR noktası olabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>bu ağda OUT TR{number} komutundan önce LD TR{number}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} başlangıç hattında: önüne ORG SHORT koyun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="221"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: LD ile başlayan {count} blok birleştirilmemiş (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="223"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number}, LadderWorks&apos;ün bildiği bir Fatek fonksiyonu değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="225"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: {param} operand satırı eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="227"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} başka operand almaz, bulunan &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos;, {param} operandı olamaz (bir kaydedici ya da sabit olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} korunur ve çizilir ama simüle edilmez: çıkışları 0 kalır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos;, {name} zaman tabanı değil ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: burada fonksiyon çıkışı yok (bir kutudan sonra FO0-FO7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII dosyaları: &apos;{text}&apos;, [R1000] gibi bir bölüm başlığı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
         <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
         <translation>&apos;{text}&apos; burada {name} komutunun aygıtı olamaz: onunla satır {other} olarak okunur ({other} komutunu paletten yerleştirin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; bir aygıt değil ({letters} harflerinden biri ve bir numara kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} sekizli (oktal) numaralanır (0 ile 7 arası rakamlar)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; aralık dışında ({first} ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; bir bit aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; bir kelime (word) aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; bu tabloda listelenmez ({letters} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="255"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: bir aygıt ya da en çok {most} aygıtlık bir İLK-SON aralığı verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="335"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1561,7 +1566,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="104"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -1571,32 +1576,32 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="37"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="127"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="141"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="39"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="152"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="166"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="156"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="170"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -1606,28 +1611,28 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="132"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="48"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="49"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="53"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="54"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="99"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="94"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="108"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -1637,17 +1642,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="298"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="312"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="310"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="324"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="320"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="337"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>

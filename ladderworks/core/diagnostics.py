@@ -120,6 +120,9 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "an edge or comparison contact has no normally closed form"),
     "edit-no-element": QT_TRANSLATE_NOOP(
         "Diagnostic", "there is no suitable element at cell ({row}, {col})"),
+    "edit-end-kept": QT_TRANSLATE_NOOP(
+        "Diagnostic", "END ends the program and stays its last network: draw new networks "
+        "above it"),
     "edit-line": QT_TRANSLATE_NOOP("Diagnostic", "a line must be horizontal or vertical"),
     "grid-text": QT_TRANSLATE_NOOP("Diagnostic", "the clipboard does not hold ladder elements"),
     # find and replace

@@ -167,7 +167,7 @@ class GridView(QGraphicsView):
     def _make_item(self, index: int) -> NetworkItem:
         item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
         item.spelling = spelling(self.model.dialect)  # a Delta program: Delta's spelling
-        item.is_new = index == len(self.networks) - 1 and self.networks[index].is_empty()
+        item.is_new = index == self.model.blank_index() and self.networks[index].is_empty()
         item.setPos(0, self.layout_.tops[index])
         self._scene.addItem(item)
         return item
@@ -217,10 +217,10 @@ class GridView(QGraphicsView):
         return spelling(self.model.dialect).address(address)
 
     def _renumber(self, start: int) -> None:
-        last = len(self.network_items) - 1
+        blank = self.model.blank_index()
         for index, item in self.network_items.made(start):
             item.number = index + 1
-            item.is_new = index == last and self.networks[index].is_empty()
+            item.is_new = index == blank and self.networks[index].is_empty()
             item.update()
 
     def _relayout(self, start: int) -> None:
@@ -252,15 +252,13 @@ class GridView(QGraphicsView):
                 item.error_cells = set()
                 item.update()
         for diagnostic in diagnostics:
-            if (
-                diagnostic.network is not None
-                and diagnostic.cell is not None
-                and 0 <= diagnostic.network < len(self.network_items)
-            ):
-                item = self.network_items[diagnostic.network]
+            if diagnostic.network is None or diagnostic.cell is None:
+                continue
+            index = self.model.editor_network(diagnostic.network)
+            if 0 <= index < len(self.network_items):
+                item = self.network_items[index]
                 item.error_cells.add(diagnostic.cell)
                 item.update()
-
 
     # -- cursor, overlays, positions ----------------------------------------------------------
 
@@ -328,10 +326,13 @@ class GridView(QGraphicsView):
         """Jump to a diagnostic's network and cell."""
         if diagnostic.network is not None and diagnostic.network >= len(self.networks) - 1:
             self.finish_loading()
-        if diagnostic.network is None or not 0 <= diagnostic.network < len(self.networks):
+        if diagnostic.network is None:
+            return
+        index = self.model.editor_network(diagnostic.network)
+        if not 0 <= index < len(self.networks):
             return
         row, col = diagnostic.cell if diagnostic.cell is not None else (0, 0)
-        self.jump_to(diagnostic.network, row, col)
+        self.jump_to(index, row, col)
         self.setFocus()
 
     def tooltip_at(self, index: int, row: int, col: int) -> str:
