@@ -627,581 +627,591 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <source>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</source>
+        <translation>programın {count} sembolünün (%@2) o ailenin dosyalarında yeri yok: program kendi ailesinde kalır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <source>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</source>
+        <translation>{step}. komutun ({name}) o ailede karşılığı yok: program kendi ailesinde kalır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
         <source>END ends the program and stays its last network: draw new networks above it</source>
         <translation>END programı bitirir ve son ağ olarak kalır: yeni ağları onun üstüne çizin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>a line must be horizontal or vertical</source>
         <translation>çizgi yatay veya dikey olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="127"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>panoda ladder elemanı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; programın bir adresi veya sembolü değil: değiştirmek için bir adres veya sembol yazın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} ve {replacement}: bit ile bit, bayt ile bayt değiştirilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} kendisiyle değiştirilmiş olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="136"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>JMP without a matching JMPE</source>
         <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
         <source>JMPE without a JMP before it</source>
         <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>COM without a matching COME</source>
         <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>COME without a COM before it</source>
         <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>coil {address} is written more than once</source>
         <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="151"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {line}. satırda)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {other}. devrede)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>JMP veya COM aralığı içinde LBL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde LBL L{label} yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>L{label} etiketi bu program biriminde iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="161"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC yalnızca bir alt program içinde kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>subprogram P{program} does not exist</source>
         <translation>P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>burada P{program} çağrısı bir alt programın kendini çağırmasına yol açıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>P{program} üzerinden çağrılar {limit} alt programdan daha derine iniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>SP without a matching SPE</source>
         <translation>eşleşen SPE olmadan SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>SPE without an SP before it</source>
         <translation>önünde SP olmayan SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>P{program} alt programı iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>ilk SP&apos;den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="172"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} {level}. seviyeyi bitiremez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
         <source>instruction after END, the end of the program</source>
         <translation>program sonu END&apos;den sonra komut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>L{label} etiketine geri atlama bir taramada {limit} kereden fazla tekrarlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="177"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="181"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII biçimi: {quote} ile açılan metin hiç kapatılmamış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII biçimi: tekrar sayısı 1 ile 999 arasında olmalı, bulunan {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="193"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII biçimi: &apos;{text}&apos; bir öğe değil (&apos;metin&apos;, MX, onaltılık kodlar, &quot;w.dRn&quot;, / ya da \ bekleniyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII biçimi: &quot;{text}&quot; bir değişken değil (örneğin &quot;8.2R0&quot; ya da &quot;4R10H&quot; bekleniyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII biçimi: END&apos;den sonra metin: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII biçimi: END eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; bir Fatek komutu değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>önünde FUN, TMR ya da CTR olmayan bir operand satırı: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="207"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
         <source>{name} needs a device</source>
         <translation>{name} bir eleman (cihaz) adresi ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; bir Fatek elemanı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} &apos;{text}&apos; alamaz ({kinds} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; aralık dışında ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="212"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} önünde bir şey yok: ağ ORG ile başlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} iki blok ister: ikincisini LD ile başlatın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="216"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} bu ağda iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>a network has at most {limit} TR points</source>
         <translation>bir ağda en fazla {limit} TR noktası olabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>bu ağda OUT TR{number} komutundan önce LD TR{number}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} başlangıç hattında: önüne ORG SHORT koyun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: LD ile başlayan {count} blok birleştirilmemiş (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number}, LadderWorks&apos;ün bildiği bir Fatek fonksiyonu değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: {param} operand satırı eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} başka operand almaz, bulunan &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos;, {param} operandı olamaz (bir kaydedici ya da sabit olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} korunur ve çizilir ama simüle edilmez: çıkışları 0 kalır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos;, {name} zaman tabanı değil ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: burada fonksiyon çıkışı yok (bir kutudan sonra FO0-FO7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII dosyaları: &apos;{text}&apos;, [R1000] gibi bir bölüm başlığı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
         <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
         <translation>&apos;{text}&apos; burada {name} komutunun aygıtı olamaz: onunla satır {other} olarak okunur ({other} komutunu paletten yerleştirin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; bir aygıt değil ({letters} harflerinden biri ve bir numara kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} sekizli (oktal) numaralanır (0 ile 7 arası rakamlar)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; aralık dışında ({first} ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; bir bit aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; bir kelime (word) aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; bu tabloda listelenmez ({letters} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="255"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: bir aygıt ya da en çok {most} aygıtlık bir İLK-SON aralığı verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1675,11 +1685,6 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="70"/>
-        <source>&amp;New</source>
-        <translation>&amp;Yeni</translation>
-    </message>
-    <message>
         <location filename="../ladderworks/gui/actions_table.py" line="72"/>
         <source>&amp;Open...</source>
         <translation>&amp;Aç...</translation>
@@ -1713,6 +1718,11 @@
         <location filename="../ladderworks/gui/actions_table.py" line="82"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;özellikleri...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="70"/>
+        <source>&amp;New...</source>
+        <translation>&amp;Yeni...</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="84"/>
@@ -1897,193 +1907,203 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="199"/>
+        <location filename="../ladderworks/gui/main_window.py" line="200"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="421"/>
+        <location filename="../ladderworks/gui/main_window.py" line="425"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="427"/>
+        <location filename="../ladderworks/gui/main_window.py" line="431"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="434"/>
+        <location filename="../ladderworks/gui/main_window.py" line="438"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="430"/>
-        <location filename="../ladderworks/gui/main_window.py" line="270"/>
-        <location filename="../ladderworks/gui/main_window.py" line="429"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="482"/>
+        <location filename="../ladderworks/gui/main_window.py" line="271"/>
+        <location filename="../ladderworks/gui/main_window.py" line="433"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="130"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="131"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="175"/>
+        <source>PLC family</source>
+        <translation>PLC ailesi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="177"/>
+        <source>The program has errors: fix them first (see the error list)</source>
+        <translation>Programda hatalar var: önce onları düzeltin (hata listesine bakın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="183"/>
+        <source>The program cannot become a {0} program: {1}</source>
+        <translation>Program bir {0} programı olamaz: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="220"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="221"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="498"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="208"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="208"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="253"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="209"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="261"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="385"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="385"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="497"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="514"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="316"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="263"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
         <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="321"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
-        <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
-        <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="450"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="391"/>
+        <location filename="../ladderworks/gui/main_window.py" line="395"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="407"/>
+        <location filename="../ladderworks/gui/main_window.py" line="411"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="471"/>
+        <location filename="../ladderworks/gui/main_window.py" line="475"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="474"/>
+        <location filename="../ladderworks/gui/main_window.py" line="478"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="506"/>
+        <location filename="../ladderworks/gui/main_window.py" line="510"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="507"/>
+        <location filename="../ladderworks/gui/main_window.py" line="511"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2096,6 +2116,26 @@
         <location filename="../ladderworks/gui/undo_texts.py" line="16"/>
         <source>&amp;Redo {0}</source>
         <translation>&amp;Yinele: {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="53"/>
+        <source>All files (*)</source>
+        <translation>Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="56"/>
+        <source>Delta DVP instruction lists (*.txt *.TXT)</source>
+        <translation>Delta DVP komut listeleri (*.txt *.TXT)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="59"/>
+        <source>Fatek WinProladder listings (*.lst *.LST)</source>
+        <translation>Fatek WinProladder listeleri (*.lst *.LST)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="61"/>
+        <source>Ladder programs (*.LAD *.lad)</source>
+        <translation>Ladder programları (*.LAD *.lad)</translation>
     </message>
 </context>
 <context>
@@ -2247,6 +2287,29 @@
         <location filename="../ladderworks/gui/editor/name_menu.py" line="69"/>
         <source>Element &amp;names</source>
         <translation>Eleman &amp;adları</translation>
+    </message>
+</context>
+<context>
+    <name>NewProgram</name>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="71"/>
+        <source>New program</source>
+        <translation>Yeni program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="82"/>
+        <source>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</source>
+        <translation>Programın yazıldığı PLC: komutları, aygıtları (X0, T0, D10 ya da X2.1, R100) ve dosya biçimi.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="85"/>
+        <source>PLC family</source>
+        <translation>PLC ailesi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="86"/>
+        <source>Model</source>
+        <translation>Model</translation>
     </message>
 </context>
 <context>
@@ -3362,7 +3425,7 @@
     <message>
         <location filename="../ladderworks/gui/program_properties.py" line="85"/>
         <location filename="../ladderworks/gui/program_properties.py" line="144"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="180"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="183"/>
         <source>PMC model</source>
         <translation>PMC modeli</translation>
     </message>
@@ -3407,104 +3470,104 @@
         <translation>Mesajlar (%@4)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="174"/>
-        <source>The PMC the program is written for: its address map and the ranges of its instructions. Kept in the file as a comment line the seed&apos;s tools skip.</source>
-        <translation>Programın yazıldığı PMC: adres haritası ve komutlarının aralıkları. Dosyada, seed araçlarının atladığı bir yorum satırı olarak saklanır.</translation>
+        <location filename="../ladderworks/gui/program_properties.py" line="177"/>
+        <source>The PLC the program is written for: its address map and the ranges of its instructions. A model of another PLC family is taken when every instruction reads back the same in that family&apos;s text.</source>
+        <translation>Programın yazıldığı PLC: adres haritası ve komutlarının aralıkları. Başka bir PLC ailesinin modeli, her komut o ailenin metninde aynı okunduğunda alınır.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="190"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="194"/>
         <source>Program properties</source>
         <translation>Program özellikleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="199"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="203"/>
         <source>General</source>
         <translation>Genel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="200"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
         <source>Property</source>
         <translation>Özellik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="201"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="205"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="203"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
         <source>Title (%@1)</source>
         <translation>Başlık (%@1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
         <location filename="../ladderworks/gui/program_properties.py" line="208"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
         <source>Item</source>
         <translation>Öğe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
         <source>Meaning</source>
         <translation>Anlamı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="205"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="209"/>
         <source>Text</source>
         <translation>Metin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
         <source>System parameters (%@0)</source>
         <translation>Sistem parametreleri (%@0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="210"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="214"/>
         <source>I/O modules (%@5)</source>
         <translation>G/Ç modülleri (%@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
         <source>Group</source>
         <translation>Grup</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="216"/>
         <source>Base</source>
         <translation>Taban</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="216"/>
         <source>Slot</source>
         <translation>Yuva</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="213"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
         <source>Module</source>
         <translation>Modül</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="216"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="220"/>
         <source>Sections</source>
         <translation>Bölümler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="221"/>
         <source>Header</source>
         <translation>Başlık satırı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="221"/>
         <source>Lines</source>
         <translation>Satırlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="222"/>
         <source>First line</source>
         <translation>İlk satır</translation>
     </message>

@@ -120,6 +120,12 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "an edge or comparison contact has no normally closed form"),
     "edit-no-element": QT_TRANSLATE_NOOP(
         "Diagnostic", "there is no suitable element at cell ({row}, {col})"),
+    "family-symbols": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the program's {count} symbols (%@2) have no place in that family's "
+        "files: the program keeps its family"),
+    "family-differs": QT_TRANSLATE_NOOP(
+        "Diagnostic", "instruction {step} ({name}) has no counterpart in that family: the "
+        "program keeps its family"),
     "edit-end-kept": QT_TRANSLATE_NOOP(
         "Diagnostic", "END ends the program and stays its last network: draw new networks "
         "above it"),
