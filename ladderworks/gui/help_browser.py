@@ -19,16 +19,18 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core import dialects
 from ladderworks.core.il.textform import split_lines
 from ladderworks.core.instructions import ALL, InstructionSpec, lookup
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.screen_fit import fit_to_screen, keep_on_screen
 from ladderworks.gui.translation import instruction_title, ui_is_turkish
-from ladderworks.paths import help_page
+from ladderworks.paths import help_pages
 
 translate = QCoreApplication.translate
+STK = ".STK"  # a row that pushes: its entry is its plain form's (RD.STK is RD's own)
 
-_ANCHOR = re.compile(r'\s*<a id="([^"]+)"></a>\s*$')
+_ANCHOR = re.compile(r'\s*<a id="([^"]+)"></a>')  # one or more at a heading's end
 # where a rule comes from ([seed], [pmc; X22], [choice]): for the docs' readers, not the user
 _SOURCE_MARK = re.compile(r"\s*\[(?:seed|pmc|choice)(?:;[^\]]*)?\]")
 
@@ -40,28 +42,44 @@ def without_source_marks(text: str) -> str:
 
 @lru_cache(maxsize=2)
 def reference_sections(language: str = "en") -> dict[str, str]:
-    """The markdown of each instruction's entry in the reference of `language`, by help key."""
+    """The markdown of each instruction's entry in the reference of `language` (the PMC's
+    page and each dialect's), by help key; a heading with several anchors serves each."""
     sections: dict[str, str] = {}
-    key: str | None = None
+    keys: list[str] = []
     lines: list[str] = []
-    path = help_page(language)
-    text = path.read_text("utf-8") if path.exists() else ""
-    for line in split_lines(text):
-        heading = line.startswith(("## ", "### "))
-        if heading and key is not None:
+
+    def close() -> None:
+        for key in keys:
             sections[key] = "\n".join(lines).strip() + "\n"
-            key = None
-        if heading:
-            match = _ANCHOR.search(line)
-            if match:
-                key = match.group(1)
-                lines = [without_source_marks(_ANCHOR.sub("", line)).replace("### ", "## ", 1)]
-            continue
-        if key is not None:
-            lines.append(without_source_marks(line))
-    if key is not None:
-        sections[key] = "\n".join(lines).strip() + "\n"
+
+    for path in help_pages(language):
+        text = path.read_text("utf-8") if path.exists() else ""
+        for line in split_lines(text):
+            heading = line.startswith(("## ", "### "))
+            if heading:
+                close()
+                keys = _ANCHOR.findall(line)
+                lines = [without_source_marks(_ANCHOR.sub("", line)).rstrip().replace(
+                    "### ", "## ", 1)]
+                continue
+            if keys:
+                lines.append(without_source_marks(line))
+        close()
+        keys = []
     return sections
+
+
+def listed_rows() -> list[tuple[InstructionSpec, str]]:
+    """Every instruction the help lists, with its entry's text: the PMC's, then each
+    dialect's rows as the dialect writes them (`CNT (Delta DVP)`; a row that pushes, `.STK`,
+    is its plain form's entry)."""
+    rows = [(spec, f"{spec.name} — {instruction_title(spec)}") for spec in ALL]
+    for dialect in dialects.every():
+        for spec in dialect.rows:
+            if not spec.name.endswith(STK):
+                name = dialect.instruction_name(spec)
+                rows.append((spec, f"{name} ({dialect.title}) — {instruction_title(spec)}"))
+    return rows
 
 
 class InstructionHelp(Retranslating, QDialog):
@@ -97,8 +115,7 @@ class InstructionHelp(Retranslating, QDialog):
 
     def _fill(self) -> None:
         self.list.clear()
-        for spec in ALL:
-            text = f"{spec.name} — {instruction_title(spec)}"
+        for spec, text in listed_rows():
             item = QListWidgetItem(text)
             item.setToolTip(text)
             item.setData(Qt.ItemDataRole.UserRole, spec.name)
@@ -114,17 +131,17 @@ class InstructionHelp(Retranslating, QDialog):
         keep_on_screen(self)
 
     def show_instruction(self, name: str) -> bool:
-        """Select and show the entry of instruction `name`; False if there is none."""
-        spec = lookup(name)
-        if spec is None:
-            return False
+        """Select and show the entry of instruction `name` (a dialect's pushing form, `.STK`:
+        its plain form's); False if there is none."""
         self.filter.clear()
-        for row in range(self.list.count()):
-            item = self.list.item(row)
-            if item.data(Qt.ItemDataRole.UserRole) == spec.name:
-                self.list.setCurrentItem(item)
-                self._show(spec)
-                return True
+        for wanted in (name, name[: -len(STK)] if name.endswith(STK) else name):
+            spec = lookup(wanted)
+            for row in range(self.list.count()):
+                item = self.list.item(row)
+                if spec is not None and item.data(Qt.ItemDataRole.UserRole) == spec.name:
+                    self.list.setCurrentItem(item)
+                    self._show(spec)
+                    return True
         return False
 
     def shown_name(self) -> str | None:
