@@ -1558,17 +1558,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="146"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="163"/>
         <source>No reference entry for this instruction.</source>
         <translation>No reference entry for this instruction.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="158"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="175"/>
         <source>Instruction reference</source>
         <translation>Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="159"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="176"/>
         <source>Search, e.g. TMR</source>
         <translation>Search, e.g. TMR</translation>
     </message>
@@ -3967,77 +3967,82 @@
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="525"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="518"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="532"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="526"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="527"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>e.g. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="528"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="535"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="530"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="537"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="531"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="532"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="540"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="535"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="537"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="549"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="552"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="547"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="554"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>

@@ -202,12 +202,12 @@
     <message>
         <location filename="../ladderworks/gui/docks/bit_display.py" line="352"/>
         <source>Byte</source>
-        <translation>Byte</translation>
+        <translation>Bayt</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/bit_display.py" line="353"/>
         <source>Hex</source>
-        <translation>Hex</translation>
+        <translation>Onaltılık</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/bit_display.py" line="354"/>
@@ -583,7 +583,7 @@
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="105"/>
         <source>this edge or comparison contact has no form for this place in the dialect (put it in series after another contact)</source>
-        <translation>bu kenar ya da karşılaştırma kontağının lehçede bu yer için bir biçimi yok (onu başka bir kontaktan sonra seri koyun)</translation>
+        <translation>bu kenar ya da karşılaştırma kontağının bu PLC ailesinde bu yer için bir biçimi yok (onu başka bir kontaktan sonra seri koyun)</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="108"/>
@@ -1558,17 +1558,17 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="146"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="163"/>
         <source>No reference entry for this instruction.</source>
         <translation>Bu komut için başvuru kaydı yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="158"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="175"/>
         <source>Instruction reference</source>
         <translation>Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="159"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="176"/>
         <source>Search, e.g. TMR</source>
         <translation>Ara, örn. TMR</translation>
     </message>
@@ -1834,7 +1834,7 @@
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="138"/>
         <source>Show as &amp;ladder</source>
-        <translation>&amp;Ladder olarak göster</translation>
+        <translation>&amp;Merdiven diyagramı olarak göster</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="140"/>
@@ -2006,7 +2006,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="336"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
-        <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
+        <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="385"/>
@@ -2158,7 +2158,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
         <source>the dialect&apos;s own map</source>
-        <translation>lehçenin kendi haritası</translation>
+        <translation>PLC ailesinin kendi haritası</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
@@ -2168,12 +2168,12 @@
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
         <source>Dialect&apos;s map</source>
-        <translation>Lehçenin haritası</translation>
+        <translation>PLC ailesinin haritası</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
         <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
-        <translation>Programın lehçesinin kendi haritasını sun (docs/modbus.md)</translation>
+        <translation>Programın PLC ailesinin kendi haritasını sun (docs/modbus.md)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
@@ -2228,7 +2228,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="200"/>
         <source>the {0} dialect&apos;s own map</source>
-        <translation>{0} lehçesinin kendi haritası</translation>
+        <translation>{0} PLC ailesinin kendi haritası</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="221"/>
@@ -2911,7 +2911,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="62"/>
         <source>On-line mode</source>
-        <translation>On-line mod</translation>
+        <translation>Çevrim içi mod</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="63"/>
@@ -2946,7 +2946,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="91"/>
         <source>On-line needs a compiled program in the PLC</source>
-        <translation>On-line mod için PLC&apos;de derlenmiş bir program gerekir</translation>
+        <translation>Çevrim içi mod için PLC&apos;de derlenmiş bir program gerekir</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="96"/>
@@ -2957,7 +2957,7 @@
         <location filename="../ladderworks/gui/docks/online.py" line="105"/>
         <location filename="../ladderworks/gui/docks/online.py" line="153"/>
         <source>On-line: the drawing shows the running PLC</source>
-        <translation>On-line: çizim çalışan PLC&apos;yi gösteriyor</translation>
+        <translation>Çevrim içi: çizim çalışan PLC&apos;yi gösteriyor</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="123"/>
@@ -3082,7 +3082,7 @@
         <location filename="../ladderworks/gui/docks/table_specs.py" line="252"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="257"/>
         <source>Bytes</source>
-        <translation>Byte</translation>
+        <translation>Bayt</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/device_specs.py" line="116"/>
@@ -3112,7 +3112,7 @@
         <location filename="../ladderworks/gui/docks/table_specs.py" line="253"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="309"/>
         <source>Hex</source>
-        <translation>Hex</translation>
+        <translation>Onaltılık</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/device_specs.py" line="129"/>
@@ -3229,7 +3229,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="367"/>
         <source>Registers ({0})</source>
-        <translation>Register ({0})</translation>
+        <translation>Yazmaçlar ({0})</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="377"/>
@@ -3967,77 +3967,82 @@
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="525"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="518"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="532"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="526"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="527"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
         <source>e.g. R1.4 R1.7 D10:2</source>
         <translation>örn. R1.4 R1.7 D10:2</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="528"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="535"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="530"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="537"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="531"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="532"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="540"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="535"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="537"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="549"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="552"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="547"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="554"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>
