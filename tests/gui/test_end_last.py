@@ -75,3 +75,20 @@ def test_end_is_not_deleted_and_is_in_the_palette(window: MainWindow, drawer: Dr
     assert not window.model.is_modified()
     combo = window.tool_palette.functions
     assert "END" in [combo.itemText(i).split()[0] for i in range(combo.count())]
+
+
+def test_a_fatek_listing_keeps_its_end_after_a_network_drawn_at_the_end(
+        window: MainWindow, drawer: Drawer, tmp_path: Path) -> None:
+    copy = tmp_path / "c.lst"
+    copy.write_bytes((paths.EXAMPLES / "fatek" / "conveyor.lst").read_bytes())
+    assert window.load(copy)
+    editor = window.editor
+    blank = len(editor.networks) - 1  # a listing's END is not a network: written after all
+    coil = editor.networks[blank].coil_column
+    drawer.element(blank, 0, 0, "I", "X20")
+    drawer.element(blank, 0, coil, "O", "Y20")
+    drawer.line(blank, (0, 1), (0, coil))
+    assert window.save_to(copy)
+    words = copy.read_text(encoding="utf-8").split()
+    assert words[-1] == "END" and words.index("Y20") < len(words) - 1
+    assert parse_file(copy).ok
