@@ -2118,22 +2118,22 @@
         <translation>&amp;Redo {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="53"/>
+        <location filename="../ladderworks/gui/new_program.py" line="44"/>
         <source>All files (*)</source>
         <translation>All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="56"/>
+        <location filename="../ladderworks/gui/new_program.py" line="47"/>
         <source>Delta DVP instruction lists (*.txt *.TXT)</source>
         <translation>Delta DVP instruction lists (*.txt *.TXT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="59"/>
+        <location filename="../ladderworks/gui/new_program.py" line="50"/>
         <source>Fatek WinProladder listings (*.lst *.LST)</source>
         <translation>Fatek WinProladder listings (*.lst *.LST)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="61"/>
+        <location filename="../ladderworks/gui/new_program.py" line="52"/>
         <source>Ladder programs (*.LAD *.lad)</source>
         <translation>Ladder programs (*.LAD *.lad)</translation>
     </message>
@@ -2292,22 +2292,22 @@
 <context>
     <name>NewProgram</name>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="71"/>
+        <location filename="../ladderworks/gui/new_program.py" line="62"/>
         <source>New program</source>
         <translation>New program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="82"/>
+        <location filename="../ladderworks/gui/new_program.py" line="73"/>
         <source>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</source>
         <translation>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="85"/>
+        <location filename="../ladderworks/gui/new_program.py" line="76"/>
         <source>PLC family</source>
         <translation>PLC family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="86"/>
+        <location filename="../ladderworks/gui/new_program.py" line="77"/>
         <source>Model</source>
         <translation>Model</translation>
     </message>
@@ -3343,52 +3343,52 @@
 <context>
     <name>ProgramProperties</name>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="48"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="53"/>
         <source>Machine-tool builder</source>
         <translation>Machine-tool builder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="49"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="54"/>
         <source>Machine-tool name</source>
         <translation>Machine-tool name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="50"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="55"/>
         <source>PMC &amp; NC type</source>
         <translation>PMC &amp; NC type</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="51"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="56"/>
         <source>Program number</source>
         <translation>Program number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="52"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
         <source>Edition</source>
         <translation>Edition</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="53"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
         <source>Drawing number</source>
         <translation>Drawing number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="54"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
         <source>Date</source>
         <translation>Date</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="55"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
         <source>Designed by</source>
         <translation>Designed by</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="56"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="61"/>
         <source>ROM written by</source>
         <translation>ROM written by</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="62"/>
         <source>Remarks</source>
         <translation>Remarks</translation>
     </message>
@@ -3403,171 +3403,171 @@
         <translation>FANUC Series 30i-A PMC (memory-B)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
         <source>yes</source>
         <translation>yes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
         <source>no</source>
         <translation>no</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="83"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="88"/>
         <source>File</source>
         <translation>File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="84"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="89"/>
         <source>(not saved)</source>
         <translation>(not saved)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="144"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="183"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="90"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="186"/>
         <source>PMC model</source>
         <translation>PMC model</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="86"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="91"/>
         <source>Encoding</source>
         <translation>Encoding</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="87"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="92"/>
         <source>Byte order mark</source>
         <translation>Byte order mark</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="88"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="93"/>
         <source>Line ends</source>
         <translation>Line ends</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="89"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="94"/>
         <source>Framed in %@A … %@E</source>
         <translation>Framed in %@A … %@E</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="90"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="95"/>
         <source>Networks</source>
         <translation>Networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="91"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="96"/>
         <source>Steps</source>
         <translation>Steps</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="93"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="98"/>
         <source>Symbols (%@2)</source>
         <translation>Symbols (%@2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="95"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="100"/>
         <source>Messages (%@4)</source>
         <translation>Messages (%@4)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="177"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="180"/>
         <source>The PLC the program is written for: its address map and the ranges of its instructions. A model of another PLC family is taken when every instruction reads back the same in that family&apos;s text.</source>
         <translation>The PLC the program is written for: its address map and the ranges of its instructions. A model of another PLC family is taken when every instruction reads back the same in that family&apos;s text.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="194"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="197"/>
         <source>Program properties</source>
         <translation>Program properties</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="203"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="206"/>
         <source>General</source>
         <translation>General</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
         <source>Property</source>
         <translation>Property</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="205"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="210"/>
         <source>Title (%@1)</source>
         <translation>Title (%@1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
         <source>Item</source>
         <translation>Item</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
         <source>Meaning</source>
         <translation>Meaning</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="209"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
         <source>Text</source>
         <translation>Text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="214"/>
         <source>System parameters (%@0)</source>
         <translation>System parameters (%@0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="214"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
         <source>I/O modules (%@5)</source>
         <translation>I/O modules (%@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
         <source>Group</source>
         <translation>Group</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="216"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="219"/>
         <source>Base</source>
         <translation>Base</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="216"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="219"/>
         <source>Slot</source>
         <translation>Slot</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="220"/>
         <source>Module</source>
         <translation>Module</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="220"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="223"/>
         <source>Sections</source>
         <translation>Sections</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="221"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="224"/>
         <source>Header</source>
         <translation>Header</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="221"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="224"/>
         <source>Lines</source>
         <translation>Lines</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="222"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="225"/>
         <source>First line</source>
         <translation>First line</translation>
     </message>

@@ -2118,22 +2118,22 @@
         <translation>&amp;Yinele: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="53"/>
+        <location filename="../ladderworks/gui/new_program.py" line="44"/>
         <source>All files (*)</source>
         <translation>Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="56"/>
+        <location filename="../ladderworks/gui/new_program.py" line="47"/>
         <source>Delta DVP instruction lists (*.txt *.TXT)</source>
         <translation>Delta DVP komut listeleri (*.txt *.TXT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="59"/>
+        <location filename="../ladderworks/gui/new_program.py" line="50"/>
         <source>Fatek WinProladder listings (*.lst *.LST)</source>
         <translation>Fatek WinProladder listeleri (*.lst *.LST)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="61"/>
+        <location filename="../ladderworks/gui/new_program.py" line="52"/>
         <source>Ladder programs (*.LAD *.lad)</source>
         <translation>Ladder programları (*.LAD *.lad)</translation>
     </message>
@@ -2292,22 +2292,22 @@
 <context>
     <name>NewProgram</name>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="71"/>
+        <location filename="../ladderworks/gui/new_program.py" line="62"/>
         <source>New program</source>
         <translation>Yeni program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="82"/>
+        <location filename="../ladderworks/gui/new_program.py" line="73"/>
         <source>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</source>
         <translation>Programın yazıldığı PLC: komutları, aygıtları (X0, T0, D10 ya da X2.1, R100) ve dosya biçimi.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="85"/>
+        <location filename="../ladderworks/gui/new_program.py" line="76"/>
         <source>PLC family</source>
         <translation>PLC ailesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="86"/>
+        <location filename="../ladderworks/gui/new_program.py" line="77"/>
         <source>Model</source>
         <translation>Model</translation>
     </message>
@@ -3343,52 +3343,52 @@
 <context>
     <name>ProgramProperties</name>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="48"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="53"/>
         <source>Machine-tool builder</source>
         <translation>Takım tezgâhı üreticisi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="49"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="54"/>
         <source>Machine-tool name</source>
         <translation>Takım tezgâhı adı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="50"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="55"/>
         <source>PMC &amp; NC type</source>
         <translation>PMC ve NC tipi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="51"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="56"/>
         <source>Program number</source>
         <translation>Program numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="52"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
         <source>Edition</source>
         <translation>Sürüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="53"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
         <source>Drawing number</source>
         <translation>Çizim numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="54"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
         <source>Date</source>
         <translation>Tarih</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="55"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
         <source>Designed by</source>
         <translation>Tasarlayan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="56"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="61"/>
         <source>ROM written by</source>
         <translation>ROM&apos;a yazan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="62"/>
         <source>Remarks</source>
         <translation>Notlar</translation>
     </message>
@@ -3403,171 +3403,171 @@
         <translation>FANUC Series 30i-A PMC (bellek-B)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
         <source>yes</source>
         <translation>evet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
         <source>no</source>
         <translation>hayır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="83"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="88"/>
         <source>File</source>
         <translation>Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="84"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="89"/>
         <source>(not saved)</source>
         <translation>(kaydedilmedi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="144"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="183"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="90"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="186"/>
         <source>PMC model</source>
         <translation>PMC modeli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="86"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="91"/>
         <source>Encoding</source>
         <translation>Kodlama</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="87"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="92"/>
         <source>Byte order mark</source>
         <translation>Bayt sırası işareti (BOM)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="88"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="93"/>
         <source>Line ends</source>
         <translation>Satır sonları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="89"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="94"/>
         <source>Framed in %@A … %@E</source>
         <translation>%@A … %@E çerçeveli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="90"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="95"/>
         <source>Networks</source>
         <translation>Devreler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="91"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="96"/>
         <source>Steps</source>
         <translation>Adımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="93"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="98"/>
         <source>Symbols (%@2)</source>
         <translation>Semboller (%@2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="95"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="100"/>
         <source>Messages (%@4)</source>
         <translation>Mesajlar (%@4)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="177"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="180"/>
         <source>The PLC the program is written for: its address map and the ranges of its instructions. A model of another PLC family is taken when every instruction reads back the same in that family&apos;s text.</source>
         <translation>Programın yazıldığı PLC: adres haritası ve komutlarının aralıkları. Başka bir PLC ailesinin modeli, her komut o ailenin metninde aynı okunduğunda alınır.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="194"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="197"/>
         <source>Program properties</source>
         <translation>Program özellikleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="203"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="206"/>
         <source>General</source>
         <translation>Genel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
         <source>Property</source>
         <translation>Özellik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="205"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="210"/>
         <source>Title (%@1)</source>
         <translation>Başlık (%@1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
         <source>Item</source>
         <translation>Öğe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
         <source>Meaning</source>
         <translation>Anlamı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="209"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
         <source>Text</source>
         <translation>Metin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="214"/>
         <source>System parameters (%@0)</source>
         <translation>Sistem parametreleri (%@0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="214"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
         <source>I/O modules (%@5)</source>
         <translation>G/Ç modülleri (%@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
         <source>Group</source>
         <translation>Grup</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="216"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="219"/>
         <source>Base</source>
         <translation>Taban</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="216"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="219"/>
         <source>Slot</source>
         <translation>Yuva</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="220"/>
         <source>Module</source>
         <translation>Modül</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="220"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="223"/>
         <source>Sections</source>
         <translation>Bölümler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="221"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="224"/>
         <source>Header</source>
         <translation>Başlık satırı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="221"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="224"/>
         <source>Lines</source>
         <translation>Satırlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="222"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="225"/>
         <source>First line</source>
         <translation>İlk satır</translation>
     </message>

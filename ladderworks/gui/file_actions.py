@@ -31,12 +31,12 @@ from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.files import ReadOnlyFile, atomic_write_bytes, is_read_only
 from ladderworks.gui.new_program import (
     NewProgramDialog,
-    model_title,
     remember_model,
     remembered_model,
     save_filters,
 )
 from ladderworks.gui.os_errors import os_error_text
+from ladderworks.gui.program_properties import model_title
 from ladderworks.gui.recovery import Autosaver, RecoveredCopy, RecoveryStore, Snapshot
 
 if TYPE_CHECKING:

@@ -12,6 +12,7 @@ from ladderworks.core import dialects
 from ladderworks.core.families import Family, families
 from ladderworks.core.il.program import SEED
 from ladderworks.core.models import MODELS, model_of
+from ladderworks.gui.program_properties import model_title
 from ladderworks.gui.settings import Settings
 from ladderworks.gui.translation import ui_is_turkish
 
@@ -30,16 +31,6 @@ def remember_model(settings: Settings, key: str) -> None:
     """Remember the model of a program made by File › New."""
     settings.store.setValue(_MODEL_KEY, key)
     settings.store.sync()
-
-
-def model_title(key: str) -> str:
-    """A model's title in the UI language (a dialect's own title for its one model)."""
-    from ladderworks.gui.program_properties import model_title as pmc_title
-
-    found = dialects.get(key)
-    if found is not None:
-        return found.title_tr if ui_is_turkish() else found.title
-    return pmc_title(key)
 
 
 def family_title(family: Family) -> str:

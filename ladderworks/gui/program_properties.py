@@ -38,9 +38,14 @@ MODEL_TITLES: dict[str, str] = {
 
 
 def model_title(key: str) -> str:
-    """A model's title in the UI language."""
+    """A model's title in the UI language (a dialect's own title for its one model)."""
     title = MODEL_TITLES.get(key)
-    return translate("ProgramProperties", title) if title else model_of(key).title
+    if title:
+        return translate("ProgramProperties", title)
+    found = dialects.get(key)
+    if found is not None:
+        return found.title_tr if ui_is_turkish() else found.title
+    return model_of(key).title
 
 
 # The `%@1` title items, in the order of the PMC title screen (FANUC-PMC.md §2).
@@ -164,14 +169,12 @@ class ProgramPropertiesDialog(Retranslating, QDialog):
     def _fill_models(self) -> None:
         """Every family's models (another family's is taken when the program's instructions
         read back the same there); an unknown model is shown read-only."""
-        from ladderworks.gui.new_program import model_title as any_title
-
         combo = self.model_combo
         combo.clear()
         current = self.program.dialect
         models = list(MODELS.values()) if current in MODELS else []
         for model in models or [model_of(current)]:
-            combo.addItem(any_title(model.key), model.key)
+            combo.addItem(model_title(model.key), model.key)
         combo.setCurrentIndex(max(combo.findData(current), 0))
         combo.setEnabled(self.choose_model is not None and len(models) > 1)
         combo.setToolTip(translate(

@@ -80,14 +80,10 @@ def palette_rows(dialect: str | None) -> tuple[InstructionSpec, ...]:
 def _program_end(found: dialects.Dialect) -> tuple[InstructionSpec, ...]:
     """The table's END row when the dialect's text has it as an instruction of its own
     (Delta's END; a Fatek listing's END is written by its printer, after every network)."""
-    from ladderworks.core.il.reading import parse_text
+    from ladderworks.core.families import program_end
 
-    for spec in list(BY_NAME.values()):
-        if spec.flow is Flow.PROGRAM_END and not spec.dialect:
-            result = parse_text(found.instruction_name(spec) + "\n", found.name)
-            if any(i.name == spec.name for i in result.program.instructions()):
-                return (spec,)
-    return ()
+    end = program_end(found.name)
+    return () if end is None else (end,)
 
 
 @cache
