@@ -70,9 +70,11 @@ class NewProgramDialog(QDialog):
             self.family_combo.addItem(family_title(family), family.key)
         self.family_combo.currentIndexChanged.connect(self._fill_models)
         form = QFormLayout(self)
-        form.addRow(QLabel(translate(
+        about = QLabel(translate(
             "NewProgram", "The PLC the program is written for: its instructions, its "
-            "devices (X0, T0, D10 or X2.1, R100) and its file form."), self))
+            "devices (X0, T0, D10 or X2.1, R100) and its file form."), self)
+        about.setWordWrap(True)  # the dialog as wide as its lists, on a small screen too
+        form.addRow(about)
         form.addRow(translate("NewProgram", "PLC family"), self.family_combo)
         form.addRow(translate("NewProgram", "Model"), self.model_combo)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok

@@ -46,6 +46,8 @@ def test_a_network_drawn_at_the_end_goes_before_end(window: MainWindow, drawer: 
     last = editor.networks[-1]
     assert _is_end(last)
     assert editor.network_items[len(editor.networks) - 2].is_new
+    end_item = editor.network_items[len(editor.networks) - 1]
+    assert end_item.number == len(editor.networks) - 1  # END counted as the program counts it
     qtbot = drawer.qtbot
     qtbot.keyClick(window, Qt.Key.Key_F9)
     assert not [d for d in window.errors.diagnostics() if d.is_error]  # no after-end

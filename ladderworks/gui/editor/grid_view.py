@@ -165,7 +165,8 @@ class GridView(QGraphicsView):
         self.drawing_changed.emit()
 
     def _make_item(self, index: int) -> NetworkItem:
-        item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
+        item = LabelledNetworkItem(self.networks[index], self.network_number(index),
+                                   self.describe_address)
         item.spelling = spelling(self.model.dialect)  # a Delta program: Delta's spelling
         item.is_new = index == self.model.blank_index() and self.networks[index].is_empty()
         item.setPos(0, self.layout_.tops[index])
@@ -216,10 +217,16 @@ class GridView(QGraphicsView):
         """An address as the program writes it (`X17` in a Delta program)."""
         return spelling(self.model.dialect).address(address)
 
+    def network_number(self, index: int) -> int:
+        """The number network `index` is shown with: the program's END after the blank
+        network is numbered as the program counts it (the blank's own tag is `+`)."""
+        blank = self.model.blank_index()
+        return index if index > blank else index + 1
+
     def _renumber(self, start: int) -> None:
         blank = self.model.blank_index()
         for index, item in self.network_items.made(start):
-            item.number = index + 1
+            item.number = self.network_number(index)
             item.is_new = index == blank and self.networks[index].is_empty()
             item.update()
 
