@@ -70,3 +70,16 @@ def test_a_ladder_iii_section_without_its_header_opens_as_ladder(
     window.model.mark_modified()
     assert window.save_to(path)
     assert path.read_text(encoding="utf-8") == text  # as it was: no `%@3` added
+
+
+def test_a_real_ladder_iii_fragment_opens_as_it_is(window: MainWindow) -> None:
+    from ladderworks.core.il.parser import parse_bytes
+    from tests.real_programs import real_bytes, real_programs_dir
+
+    path = real_programs_dir() / "FANUC_X22_FRAG_LEVEL1.txt"
+    assert window.load(path)
+    assert not window.model.showing_text
+    assert not [d for d in window.errors.diagnostics() if d.is_error]
+    wrapped = parse_bytes(real_bytes("FANUC_X22_FRAG_LEVEL1")).program  # as the tests wrap it
+    assert len(window.model.ladder_document().networks) == len(wrapped.networks)
+    assert not window.is_modified()
