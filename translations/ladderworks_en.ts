@@ -1927,7 +1927,7 @@
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="482"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="475"/>
         <location filename="../ladderworks/gui/main_window.py" line="271"/>
         <location filename="../ladderworks/gui/main_window.py" line="433"/>
         <source>Untitled</source>
@@ -1949,131 +1949,131 @@
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="175"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="177"/>
         <source>PLC family</source>
         <translation>PLC family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="177"/>
+        <location filename="../ladderworks/gui/new_program.py" line="61"/>
         <source>The program has errors: fix them first (see the error list)</source>
         <translation>The program has errors: fix them first (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="183"/>
+        <location filename="../ladderworks/gui/new_program.py" line="65"/>
         <source>The program cannot become a {0} program: {1}</source>
         <translation>The program cannot become a {0} program: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="220"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="195"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="213"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="221"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="498"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="196"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="214"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="208"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="208"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="253"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="246"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="261"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="254"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="385"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="329"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="378"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="382"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="329"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="385"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="378"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="383"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="497"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="490"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="514"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="507"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="361"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="263"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="256"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
         <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="366"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="400"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="401"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="419"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="450"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
@@ -2118,22 +2118,22 @@
         <translation>&amp;Redo {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="44"/>
+        <location filename="../ladderworks/gui/new_program.py" line="46"/>
         <source>All files (*)</source>
         <translation>All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="47"/>
+        <location filename="../ladderworks/gui/new_program.py" line="49"/>
         <source>Delta DVP instruction lists (*.txt *.TXT)</source>
         <translation>Delta DVP instruction lists (*.txt *.TXT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="50"/>
+        <location filename="../ladderworks/gui/new_program.py" line="52"/>
         <source>Fatek WinProladder listings (*.lst *.LST)</source>
         <translation>Fatek WinProladder listings (*.lst *.LST)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="52"/>
+        <location filename="../ladderworks/gui/new_program.py" line="54"/>
         <source>Ladder programs (*.LAD *.lad)</source>
         <translation>Ladder programs (*.LAD *.lad)</translation>
     </message>
@@ -2292,22 +2292,22 @@
 <context>
     <name>NewProgram</name>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="62"/>
+        <location filename="../ladderworks/gui/new_program.py" line="77"/>
         <source>New program</source>
         <translation>New program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="73"/>
+        <location filename="../ladderworks/gui/new_program.py" line="88"/>
         <source>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</source>
         <translation>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="76"/>
+        <location filename="../ladderworks/gui/new_program.py" line="93"/>
         <source>PLC family</source>
         <translation>PLC family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="77"/>
+        <location filename="../ladderworks/gui/new_program.py" line="94"/>
         <source>Model</source>
         <translation>Model</translation>
     </message>

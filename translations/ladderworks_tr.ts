@@ -1927,7 +1927,7 @@
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="482"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="475"/>
         <location filename="../ladderworks/gui/main_window.py" line="271"/>
         <location filename="../ladderworks/gui/main_window.py" line="433"/>
         <source>Untitled</source>
@@ -1949,131 +1949,131 @@
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="175"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="177"/>
         <source>PLC family</source>
         <translation>PLC ailesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="177"/>
+        <location filename="../ladderworks/gui/new_program.py" line="61"/>
         <source>The program has errors: fix them first (see the error list)</source>
         <translation>Programda hatalar var: önce onları düzeltin (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="183"/>
+        <location filename="../ladderworks/gui/new_program.py" line="65"/>
         <source>The program cannot become a {0} program: {1}</source>
         <translation>Program bir {0} programı olamaz: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="220"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="195"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="213"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="221"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="498"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="196"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="214"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="208"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="208"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="253"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="246"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="261"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="254"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="385"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="389"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="329"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="378"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="382"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="329"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="385"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="378"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="383"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="497"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="490"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="514"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="507"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="361"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="263"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="256"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
         <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="366"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="400"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="401"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="442"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="419"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="450"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
@@ -2118,22 +2118,22 @@
         <translation>&amp;Yinele: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="44"/>
+        <location filename="../ladderworks/gui/new_program.py" line="46"/>
         <source>All files (*)</source>
         <translation>Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="47"/>
+        <location filename="../ladderworks/gui/new_program.py" line="49"/>
         <source>Delta DVP instruction lists (*.txt *.TXT)</source>
         <translation>Delta DVP komut listeleri (*.txt *.TXT)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="50"/>
+        <location filename="../ladderworks/gui/new_program.py" line="52"/>
         <source>Fatek WinProladder listings (*.lst *.LST)</source>
         <translation>Fatek WinProladder listeleri (*.lst *.LST)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="52"/>
+        <location filename="../ladderworks/gui/new_program.py" line="54"/>
         <source>Ladder programs (*.LAD *.lad)</source>
         <translation>Ladder programları (*.LAD *.lad)</translation>
     </message>
@@ -2292,22 +2292,22 @@
 <context>
     <name>NewProgram</name>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="62"/>
+        <location filename="../ladderworks/gui/new_program.py" line="77"/>
         <source>New program</source>
         <translation>Yeni program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="73"/>
+        <location filename="../ladderworks/gui/new_program.py" line="88"/>
         <source>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</source>
         <translation>Programın yazıldığı PLC: komutları, aygıtları (X0, T0, D10 ya da X2.1, R100) ve dosya biçimi.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="76"/>
+        <location filename="../ladderworks/gui/new_program.py" line="93"/>
         <source>PLC family</source>
         <translation>PLC ailesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="77"/>
+        <location filename="../ladderworks/gui/new_program.py" line="94"/>
         <source>Model</source>
         <translation>Model</translation>
     </message>

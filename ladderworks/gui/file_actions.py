@@ -11,7 +11,7 @@ from PySide6.QtCore import QCoreApplication, QDateTime, QLocale, Qt
 from PySide6.QtWidgets import QMessageBox
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
-from ladderworks.core.families import change_family, new_program
+from ladderworks.core.families import new_program
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import EncodeError
@@ -31,12 +31,12 @@ from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.files import ReadOnlyFile, atomic_write_bytes, is_read_only
 from ladderworks.gui.new_program import (
     NewProgramDialog,
+    family_change,
     remember_model,
     remembered_model,
     save_filters,
 )
 from ladderworks.gui.os_errors import os_error_text
-from ladderworks.gui.program_properties import model_title
 from ladderworks.gui.recovery import Autosaver, RecoveredCopy, RecoveryStore, Snapshot
 
 if TYPE_CHECKING:
@@ -172,17 +172,10 @@ class FileActions(_Window):
         family, untitled (Save As gives it a file of that family), when its instructions read
         back the same there; else a warning says why and nothing changes."""
         program, diagnostics = self.model.program()
-        title = translate("MainWindow", "PLC family")
-        if program is None:
-            self.warn(title, translate("MainWindow", "The program has errors: fix them first "
-                                       "(see the error list)"))
+        moved = family_change(program, key)
+        if isinstance(moved, str):
+            self.warn(translate("MainWindow", "PLC family"), moved)
             self.errors.set_diagnostics(diagnostics)
-            return False
-        moved = change_family(program, key)
-        if isinstance(moved, Diagnostic):
-            self.warn(title, translate(
-                "MainWindow", "The program cannot become a {0} program: {1}").format(
-                    model_title(key), diagnostic_text(moved)))
             return False
         self.document.reset()
         self.model.set_program(moved)

@@ -9,9 +9,11 @@ from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QComboBox, QDialog, QDialogButtonBox, QFormLayout, QLabel, QWidget
 
 from ladderworks.core import dialects
-from ladderworks.core.families import Family, families
-from ladderworks.core.il.program import SEED
+from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.families import Family, change_family, families
+from ladderworks.core.il.program import SEED, Program
 from ladderworks.core.models import MODELS, model_of
+from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.program_properties import model_title
 from ladderworks.gui.settings import Settings
 from ladderworks.gui.translation import ui_is_turkish
@@ -50,6 +52,19 @@ def save_filters(dialect: str) -> tuple[str, str]:
         return (translate("MainWindow", "Fatek WinProladder listings (*.lst *.LST)") + ";;"
                 + every, "program.lst")
     return translate("MainWindow", "Ladder programs (*.LAD *.lad)") + ";;" + every, "program.LAD"
+
+
+def family_change(program: Program | None, key: str) -> Program | str:
+    """The drawn `program` (None: it has errors) as a program of model `key` of another
+    family, or the translated reason it stays as it is."""
+    if program is None:
+        return translate("MainWindow", "The program has errors: fix them first "
+                         "(see the error list)")
+    moved = change_family(program, key)
+    if isinstance(moved, Diagnostic):
+        return translate("MainWindow", "The program cannot become a {0} program: {1}").format(
+            model_title(key), diagnostic_text(moved))
+    return moved
 
 
 class NewProgramDialog(QDialog):
