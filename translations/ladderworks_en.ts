@@ -1558,17 +1558,22 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="163"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="98"/>
+        <source>Contacts, coils and blocks</source>
+        <translation>Contacts, coils and blocks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/help_browser.py" line="202"/>
         <source>No reference entry for this instruction.</source>
         <translation>No reference entry for this instruction.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="175"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="214"/>
         <source>Instruction reference</source>
         <translation>Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="176"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="215"/>
         <source>Search, e.g. TMR</source>
         <translation>Search, e.g. TMR</translation>
     </message>
@@ -2098,12 +2103,12 @@
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="510"/>
+        <location filename="../ladderworks/gui/main_window.py" line="511"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="511"/>
+        <location filename="../ladderworks/gui/main_window.py" line="512"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>

@@ -498,7 +498,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Help > Instruction reference (F1): `name`'s entry, or the element at the cursor's."""
         if self.help_window is None:
             self.help_window = InstructionHelp(self)
-        self.help_window.show_instruction(name or self.instruction_at_cursor())
+        self.help_window.show_instruction(name or self.instruction_at_cursor(),
+                                          self.model.dialect)  # a Delta LD: Delta's entry
         self.help_window.show()
         self.help_window.raise_()
         return self.help_window

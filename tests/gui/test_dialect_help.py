@@ -23,7 +23,7 @@ from ladderworks.gui.translation import UiLanguage
 def test_every_dialect_row_has_an_entry(language: str) -> None:
     sections = reference_sections(language)
     keys = {spec.help_key for d in dialects.every() for spec in d.rows
-            if not spec.name.endswith(".STK")}
+            if not spec.name.endswith(".STK")} | {f"instr-{d.name}-basic" for d in dialects.every()}
     assert keys - set(sections) == set()
     assert "<a id=" not in sections["instr-dvp-tmr"]
     assert sections["instr-dvp-tmr"].startswith("## TMR")
@@ -50,13 +50,18 @@ def test_f1_on_a_delta_timer_and_search_of_cnt(qtbot: QtBot, window: MainWindow,
     assert help_window.shown_name() == "DVP.TMR"
     assert "TMR — 16-bit timer" in help_window.browser.toPlainText()
     assert "T64–T126" in help_window.browser.toPlainText()
-    for text, first in (("CNT", "CNT (Delta DVP)"), ("ASCWR", "FUN 94 ASCWR (Fatek FBs)")):
+    window.editor.cursor_cell = (1, 0, 0)  # LD T0: a Delta contact, Delta's own entry
+    qtbot.keyClick(window.editor, Qt.Key.Key_F1)
+    assert help_window.shown_key() == "instr-delta-basic"
+    assert "ANB / ORB" in help_window.browser.toPlainText()
+    for text, first in (("CNT", "CNT (Delta DVP)"), ("ASCWR", "FUN 94 ASCWR (Fatek FBs)"),
+                        ("ANB", "LD, LDI, OUT…"), ("ORLD", "ORG, ORG NOT, OUT…")):
         help_window.filter.setText(text)
         shown = [help_window.list.item(i) for i in range(help_window.list.count())
                  if not help_window.list.item(i).isHidden()]
         assert shown and shown[0].text().startswith(first), text
         help_window.list.setCurrentItem(shown[0])
-        assert first.split(" (")[0].split()[-1] in help_window.browser.toPlainText()
+        assert text in help_window.browser.toPlainText()
     UiLanguage().apply("tr")
     try:
         window.show_instruction_help("DVP.CNT")
