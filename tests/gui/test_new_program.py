@@ -53,6 +53,11 @@ def test_file_new_of_a_delta_program_then_a_fatek_one(
     contact = editor.networks[0].cells[(0, 0)]
     assert isinstance(contact, Contact) and contact.address == parse_target("T0", "delta",
                                                                             "bit")[0]
+    session = window.plc_docks.session
+    session.run.realtime = False
+    qtbot.keyClick(window, Qt.Key.Key_F9)  # compiled into the PLC as a Delta program
+    assert session.run.engine is not None and session.run.program_dialect == "delta"
+    assert not [d for d in window.errors.diagnostics() if d.is_error]
     seen: list[str] = []
     target = tmp_path / "first.txt"
 
