@@ -398,7 +398,7 @@
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="30"/>
         <source>&apos;{text}&apos;: byte number out of range for area {area} ({ranges})</source>
-        <translation>&apos;{text}&apos;: {area} alanı için byte numarası sınır dışı ({ranges})</translation>
+        <translation>&apos;{text}&apos;: {area} alanı için bayt numarası sınır dışı ({ranges})</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="32"/>
@@ -413,7 +413,7 @@
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="35"/>
         <source>&apos;{text}&apos;: a byte address is needed here, without a bit</source>
-        <translation>&apos;{text}&apos;: burada bitsiz bir byte adresi gerekir</translation>
+        <translation>&apos;{text}&apos;: burada bitsiz bir bayt adresi gerekir</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="37"/>
@@ -1148,7 +1148,7 @@
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="318"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
-        <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
+        <translation>{value} bayt: bir değer 1, 2 veya 4 bayt olur</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="319"/>
@@ -1476,17 +1476,17 @@
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
         <source>byte address ({0} bytes)</source>
-        <translation>byte adresi ({0} byte)</translation>
+        <translation>bayt adresi ({0} bayt)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
         <source>byte address</source>
-        <translation>byte adresi</translation>
+        <translation>bayt adresi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="60"/>
         <source>constant or byte address</source>
-        <translation>sabit veya byte adresi</translation>
+        <translation>sabit veya bayt adresi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="62"/>
@@ -1919,7 +1919,7 @@
     <message>
         <location filename="../ladderworks/gui/main_window.py" line="425"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
-        <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
+        <translation>Derleme bitti: {0} bayt (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/main_window.py" line="431"/>
@@ -1929,7 +1929,7 @@
     <message>
         <location filename="../ladderworks/gui/main_window.py" line="438"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
-        <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
+        <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="475"/>
@@ -2749,7 +2749,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="323"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
-        <translation>Derleme bitti — {0} devre, {1} byte</translation>
+        <translation>Derleme bitti — {0} devre, {1} bayt</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="326"/>
