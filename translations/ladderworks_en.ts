@@ -2302,17 +2302,22 @@
         <translation>New program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="88"/>
+        <location filename="../ladderworks/gui/new_program.py" line="84"/>
+        <source>A family&apos;s models differ in their ranges; the Delta DVP series (ES2, EX2, SS2, SA2, SX2, SE) and the Fatek FBs series share one device map here (docs/dialects.md).</source>
+        <translation>A family&apos;s models differ in their ranges; the Delta DVP series (ES2, EX2, SS2, SA2, SX2, SE) and the Fatek FBs series share one device map here (docs/dialects.md).</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="92"/>
         <source>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</source>
         <translation>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="93"/>
+        <location filename="../ladderworks/gui/new_program.py" line="97"/>
         <source>PLC family</source>
         <translation>PLC family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="94"/>
+        <location filename="../ladderworks/gui/new_program.py" line="98"/>
         <source>Model</source>
         <translation>Model</translation>
     </message>

@@ -2302,17 +2302,22 @@
         <translation>Yeni program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="88"/>
+        <location filename="../ladderworks/gui/new_program.py" line="84"/>
+        <source>A family&apos;s models differ in their ranges; the Delta DVP series (ES2, EX2, SS2, SA2, SX2, SE) and the Fatek FBs series share one device map here (docs/dialects.md).</source>
+        <translation>Bir ailenin modelleri aralıklarında ayrılır; Delta DVP serisi (ES2, EX2, SS2, SA2, SX2, SE) ve Fatek FBs serisi burada tek bir aygıt haritasını paylaşır (docs/dialects.md).</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="92"/>
         <source>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</source>
         <translation>Programın yazıldığı PLC: komutları, aygıtları (X0, T0, D10 ya da X2.1, R100) ve dosya biçimi.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="93"/>
+        <location filename="../ladderworks/gui/new_program.py" line="97"/>
         <source>PLC family</source>
         <translation>PLC ailesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="94"/>
+        <location filename="../ladderworks/gui/new_program.py" line="98"/>
         <source>Model</source>
         <translation>Model</translation>
     </message>

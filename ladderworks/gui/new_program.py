@@ -81,6 +81,10 @@ class NewProgramDialog(QDialog):
         self.family_combo.setObjectName("new_family")
         self.model_combo = QComboBox(self)
         self.model_combo.setObjectName("new_model")
+        self.model_combo.setToolTip(translate(
+            "NewProgram", "A family's models differ in their ranges; the Delta DVP series "
+            "(ES2, EX2, SS2, SA2, SX2, SE) and the Fatek FBs series share one device map here "
+            "(docs/dialects.md)."))
         for family in self.families:
             self.family_combo.addItem(family_title(family), family.key)
         self.family_combo.currentIndexChanged.connect(self._fill_models)
