@@ -4,107 +4,112 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="125"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="162"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
         <source>Alarm message file</source>
         <translation>Alarm message file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="166"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm files (*.dat);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="173"/>
+        <source>A {0} program has no alarm messages (the alarm file is for PMC programs)</source>
+        <translation>A {0} program has no alarm messages (the alarm file is for PMC programs)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="180"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>The program&apos;s messages (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="183"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm file... uses an AlarmMsg.dat instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="178"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="187"/>
         <source>No alarm file</source>
         <translation>No alarm file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="180"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="189"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} messages</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="193"/>
         <source>{0} lines with problems</source>
         <translation>{0} lines with problems</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="200"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="209"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="218"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(no message {0} in the alarm file)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="252"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>The bit is 0 again: RESET clears this alarm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="255"/>
         <source>Seen at {0}</source>
         <translation>Seen at {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="298"/>
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="299"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="301"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Clear the alarms whose bit is 0 (the reset key)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="294"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="303"/>
         <source>Alarm file...</source>
         <translation>Alarm file...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="297"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="306"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="298"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="307"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="308"/>
         <source>PLC time</source>
         <translation>PLC time</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="309"/>
         <source>Clock</source>
         <translation>Clock</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="310"/>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -223,137 +228,132 @@
 <context>
     <name>CrossReference</name>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
         <source>Contact</source>
         <translation>Contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
         <source>NOT contact</source>
         <translation>NOT contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
         <source>Coil</source>
         <translation>Coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="69"/>
         <source>NOT coil</source>
         <translation>NOT coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="70"/>
         <source>SET coil</source>
         <translation>SET coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="71"/>
         <source>RST coil</source>
         <translation>RST coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="83"/>
         <source>Read</source>
         <translation>Read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="80"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="85"/>
         <source>Write</source>
         <translation>Write</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="86"/>
         <source>Read and write</source>
         <translation>Read and write</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="87"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="92"/>
         <source>Level {0}</source>
         <translation>Level {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="130"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="130"/>
         <source>Symbol</source>
         <translation>Symbol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="131"/>
         <source>Network</source>
         <translation>Network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="131"/>
         <source>Label</source>
         <translation>Label</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="132"/>
         <source>Program part</source>
         <translation>Program part</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
         <source>Element</source>
         <translation>Element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
         <source>Access</source>
         <translation>Access</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="129"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="134"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="251"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="258"/>
         <source>All addresses — uses: {0}</source>
         <translation>All addresses — uses: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="270"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="282"/>
         <source>{0} is not used in the program</source>
         <translation>{0} is not used in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="277"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="285"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — uses: {1} (read: {2}, written: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="297"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="305"/>
         <source>Cross reference</source>
         <translation>Cross reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="303"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="311"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Address or symbol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="304"/>
-        <source>e.g. X21.7, R100, ESKIP</source>
-        <translation>e.g. X21.7, R100, ESKIP</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="308"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Cross &amp;reference of this address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="309"/>
         <source>List every place the program reads and writes the address</source>
         <translation>List every place the program reads and writes the address</translation>
     </message>
@@ -967,251 +967,391 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
+        <translation>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
+        <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
+        <translation>the .pdw file is cut short: its record at byte {offset} runs past the end</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
+        <translation>the .pdw file is damaged: the record at byte {offset} fails its checksum</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="255"/>
+        <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
+        <translation>the .pdw file is damaged: the record at byte {offset} is malformed</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <source>the .pdw file holds no program (checked up to byte {offset})</source>
+        <translation>the .pdw file holds no program (checked up to byte {offset})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
+        <translation>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
+        <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
+        <translation>the .pdw file is damaged: its program image is wrong at byte {offset}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
+        <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
+        <translation>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
+        <translation>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
+        <translation>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <source>the program ends inside an instruction at byte {offset}</source>
+        <translation>the program ends inside an instruction at byte {offset}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
         <translation>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; is not a device (use {letters} with a number)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; is out of range ({first} to {last})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; is not a bit device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; is not a word device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; is not listed in this table (use {letters})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; is not a K or H constant</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name} is a {dialect} instruction the simulator does not run</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>subroutine without its SRET (before the next pointer or END)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>no pointer P{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>no subroutine P{program} after FEND for this CALL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} without a logic result before it (start with LD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
         <source>this pointer P number is used twice</source>
         <translation>this pointer P number is used twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
+        <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
+        <translation>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
+        <translation>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
+        <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
+        <translation>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
+        <translation>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
+        <translation>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
+        <translation>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
+        <translation>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
+        <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
+        <translation>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
+        <translation>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
+        <source>byte {offset}: the program does not end with END: the file is damaged</source>
+        <translation>byte {offset}: the program does not end with END: the file is damaged</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="341"/>
+        <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
+        <translation>byte {offset} (step {step}): instructions after END: the file is damaged</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <source>byte {offset}: a text section of the .dvp project is damaged</source>
+        <translation>byte {offset}: a text section of the .dvp project is damaged</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
+        <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
+        <translation>byte {offset}: a device comment line is not DEVICE$&amp;text</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
+        <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
+        <translation>the project holds no program: no compiled instruction list and an empty ladder drawing</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="351"/>
+        <source>the project was saved without compiling: its program is read from its ladder drawing</source>
+        <translation>the project was saved without compiling: its program is read from its ladder drawing</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="354"/>
+        <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
+        <translation>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
+        <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
+        <translation>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="369"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="371"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="376"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>a second PROGRAM line (the one on line {first} counts)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>the program &apos;{path}&apos; cannot be loaded: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="388"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="394"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="396"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="401"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="405"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="412"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{count} addresses from {start} run past Modbus address 65535</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="416"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} cannot be written over Modbus: the access must be r</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} are bits: a width is for registers only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="420"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="422"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end} overlap the row on line {other}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="424"/>
         <source>the map has no row</source>
         <translation>the map has no row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="425"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
@@ -1275,112 +1415,132 @@
     </message>
 </context>
 <context>
+    <name>FamilyWords</name>
+    <message>
+        <location filename="../ladderworks/gui/family_words.py" line="27"/>
+        <location filename="../ladderworks/gui/family_words.py" line="32"/>
+        <location filename="../ladderworks/gui/family_words.py" line="37"/>
+        <source>e.g. {0}</source>
+        <translation>e.g. {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/family_words.py" line="43"/>
+        <source>Type the devices to watch, e.g. {0}</source>
+        <translation>Type the devices to watch, e.g. {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/family_words.py" line="53"/>
+        <source>FANUC PMC</source>
+        <translation>FANUC PMC</translation>
+    </message>
+</context>
+<context>
     <name>FindReplace</name>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="192"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="203"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="278"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="194"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="205"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="280"/>
         <source>Not found</source>
         <translation>Not found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="222"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="224"/>
         <source>network {0}</source>
         <translation>network {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="228"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="230"/>
         <source>{0} of {1}: {2}, {3}</source>
         <translation>{0} of {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="261"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="263"/>
         <source>Replace {0} with {1}</source>
         <translation>Replace {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="267"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="269"/>
         <source>Replaced; no more found</source>
         <translation>Replaced; no more found</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="283"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="285"/>
         <source>Replace all {0} with {1}</source>
         <translation>Replace all {0} with {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="285"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="287"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{0} replaced in {1} networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="293"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="296"/>
+        <source>Address, symbol or words, {0}</source>
+        <translation>Address, symbol or words, {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
+        <source>Address or symbol, {0}</source>
+        <translation>Address or symbol, {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
         <source>Find and replace</source>
         <translation>Find and replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="174"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="294"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="176"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
         <source>Find:</source>
         <translation>Find:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="224"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="226"/>
         <source>{0} ({1})</source>
         <translation>{0} ({1})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="227"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="229"/>
         <source>network comment</source>
         <translation>network comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="295"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="305"/>
         <source>Replace with:</source>
         <translation>Replace with:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="297"/>
-        <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
-        <translation>Address, symbol or words, e.g. X21.7, R100, ESKIP</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="299"/>
-        <source>Address or symbol, e.g. R200</source>
-        <translation>Address or symbol, e.g. R200</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="300"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="307"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="301"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="308"/>
         <source>Find &amp;previous</source>
         <translation>Find &amp;previous</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="302"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="309"/>
         <source>&amp;Replace</source>
         <translation>&amp;Replace</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="310"/>
         <source>Replace &amp;all</source>
         <translation>Replace &amp;all</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="311"/>
         <source>Close</source>
         <translation>Close</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="305"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="312"/>
         <source>Also in comments and signal descriptions</source>
         <translation>Also in comments and signal descriptions</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="306"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="313"/>
         <source>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</source>
         <translation>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</translation>
     </message>
@@ -1388,12 +1548,22 @@
 <context>
     <name>FitWidth</name>
     <message>
-        <location filename="../ladderworks/gui/editor/zoom.py" line="60"/>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="74"/>
+        <source>Fit width: the ladder is too narrow ({0} px) for its networks even at {1} %: close or narrow a dock, or widen the window</source>
+        <translation>Fit width: the ladder is too narrow ({0} px) for its networks even at {1} %: close or narrow a dock, or widen the window</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="78"/>
+        <source>Fit width: every network fits at {0} % (a dock closed reads larger)</source>
+        <translation>Fit width: every network fits at {0} % (a dock closed reads larger)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="81"/>
         <source>Fit width: every network fits the window&apos;s width</source>
         <translation>Fit width: every network fits the window&apos;s width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/zoom.py" line="61"/>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="82"/>
         <source>Fit width: {0} of {1} networks fit the window&apos;s width; the {2} wider ones scroll sideways</source>
         <translation>Fit width: {0} of {1} networks fit the window&apos;s width; the {2} wider ones scroll sideways</translation>
     </message>
@@ -1454,103 +1624,103 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
         <source>one of {0}</source>
         <translation>one of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
         <source>{0} to {1}</source>
         <translation>{0} to {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="61"/>
         <source>a device of this PLC</source>
         <translation>a device of this PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="63"/>
         <source>a constant or a device of this PLC</source>
         <translation>a constant or a device of this PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="66"/>
         <source>byte address ({0} bytes)</source>
         <translation>byte address ({0} bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="68"/>
         <source>byte address</source>
         <translation>byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="60"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
         <source>constant or byte address</source>
         <translation>constant or byte address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="62"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="72"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>up to 4 binary digits, e.g. 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
-        <location filename="../ladderworks/gui/function_dialog.py" line="64"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="52"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="74"/>
         <source>P{0} to P{1}</source>
         <translation>P{0} to P{1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
         <source>empty, P (on the rising edge), D (32-bit) or DP</source>
         <translation>empty, P (on the rising edge), D (32-bit) or DP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="67"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="77"/>
         <source>L{0} to L{1}</source>
         <translation>L{0} to L{1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="80"/>
         <source>constant or address, kept as written</source>
         <translation>constant or address, kept as written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="72"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="82"/>
         <source>values separated by spaces</source>
         <translation>values separated by spaces</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="181"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="191"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: fill in the parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="184"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="194"/>
         <source>This instruction has no parameters.</source>
         <translation>This instruction has no parameters.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="186"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="196"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Comment (shown with the box, written after // in the file):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="189"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="199"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="190"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="200"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="191"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="201"/>
         <source>Allowed</source>
         <translation>Allowed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="225"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="235"/>
         <source>The parameters are not valid</source>
         <translation>The parameters are not valid</translation>
     </message>
@@ -1912,203 +2082,217 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="200"/>
+        <location filename="../ladderworks/gui/main_window.py" line="203"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="425"/>
+        <location filename="../ladderworks/gui/main_window.py" line="433"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="431"/>
+        <location filename="../ladderworks/gui/main_window.py" line="445"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="438"/>
+        <location filename="../ladderworks/gui/main_window.py" line="452"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="475"/>
-        <location filename="../ladderworks/gui/main_window.py" line="271"/>
-        <location filename="../ladderworks/gui/main_window.py" line="433"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="501"/>
+        <location filename="../ladderworks/gui/main_window.py" line="277"/>
+        <location filename="../ladderworks/gui/main_window.py" line="447"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="130"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="132"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
         <source>{0} was changed by another program</source>
         <translation>{0} was changed by another program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="131"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="133"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="177"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="179"/>
         <source>PLC family</source>
         <translation>PLC family</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="61"/>
-        <source>The program has errors: fix them first (see the error list)</source>
-        <translation>The program has errors: fix them first (see the error list)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/new_program.py" line="65"/>
-        <source>The program cannot become a {0} program: {1}</source>
-        <translation>The program cannot become a {0} program: {1}</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="195"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="213"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="197"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="215"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="196"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="214"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="198"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="216"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="517"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="246"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="248"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="254"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="256"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="329"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="378"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="382"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="329"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="378"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
+        <translation>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="383"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="466"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="490"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
+        <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
+        <translation>Fatek WinProladder listings (*.lst *.LST);;All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="516"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="507"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="533"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="361"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="376"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="256"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
-        <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</translation>
+        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
+        <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="366"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="381"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="412"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="400"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="413"/>
+        <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
+        <translation>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="401"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="465"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="419"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="469"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="403"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="411"/>
+        <location filename="../ladderworks/gui/main_window.py" line="419"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="475"/>
+        <location filename="../ladderworks/gui/main_window.py" line="439"/>
+        <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
+        <translation>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="489"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="478"/>
+        <location filename="../ladderworks/gui/main_window.py" line="492"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="511"/>
+        <location filename="../ladderworks/gui/main_window.py" line="525"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="512"/>
+        <location filename="../ladderworks/gui/main_window.py" line="526"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2142,131 +2326,137 @@
         <source>Ladder programs (*.LAD *.lad)</source>
         <translation>Ladder programs (*.LAD *.lad)</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="61"/>
+        <source>The program has errors: fix them first (see the error list)</source>
+        <translation>The program has errors: fix them first (see the error list)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="65"/>
+        <source>The program cannot become a {0} program: {1}</source>
+        <translation>The program cannot become a {0} program: {1}</translation>
+    </message>
 </context>
 <context>
     <name>ModbusDock</name>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
         <source>Modbus server</source>
         <translation>Modbus server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="120"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
         <source>&amp;Address (host:port):</source>
         <translation>&amp;Address (host:port):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
         <source>&amp;Map file (CSV):</source>
         <translation>&amp;Map file (CSV):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
-        <source>the dialect&apos;s own map</source>
-        <translation>the dialect&apos;s own map</translation>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="204"/>
+        <source>the {0} map</source>
+        <translation>the {0} map</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
         <source>Choose…</source>
         <translation>Choose…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
         <source>Dialect&apos;s map</source>
         <translation>Dialect&apos;s map</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="129"/>
         <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
         <translation>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="131"/>
         <source>Clients connected:</source>
         <translation>Clients connected:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="132"/>
         <source>Requests a second:</source>
         <translation>Requests a second:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="148"/>
         <source>Type the address as host:port, e.g. {0}.</source>
         <translation>Type the address as host:port, e.g. {0}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
         <source>Cannot listen on {0}: {1}</source>
         <translation>Cannot listen on {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="172"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
         <source>Modbus map file</source>
         <translation>Modbus map file</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="173"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="177"/>
         <source>Modbus maps (*.csv);;All files (*)</source>
         <translation>Modbus maps (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
         <source>Cannot read the map {0}: {1}</source>
         <translation>Cannot read the map {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="193"/>
         <source>line {0}: {1}</source>
         <translation>line {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="195"/>
         <source>The map {0} is not served:</source>
         <translation>The map {0} is not served:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="199"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="203"/>
         <source>the file {0}</source>
         <translation>the file {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="200"/>
-        <source>the {0} dialect&apos;s own map</source>
-        <translation>the {0} dialect&apos;s own map</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
         <source>Stop server</source>
         <translation>Stop server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="222"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
         <source>Start server</source>
         <translation>Start server</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
         <source>Map served:</source>
         <translation>Map served:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="232"/>
         <source>Map to serve:</source>
         <translation>Map to serve:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="236"/>
         <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
         <translation>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="240"/>
         <source>Other computers on the network can read and write this PLC.</source>
         <translation>Other computers on the network can read and write this PLC.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="240"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="245"/>
         <source>Stopped. An HMI on this computer connects to {0} once started.</source>
         <translation>Stopped. An HMI on this computer connects to {0} once started.</translation>
     </message>
@@ -2661,148 +2851,153 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC CONTROL SCREEN</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
         <source>Open .MOD…</source>
         <translation>Open .MOD…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
         <source>Show the console&apos;s program as text</source>
         <translation>Show the console&apos;s program as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
         <source>Compile</source>
         <translation>Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="336"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="344"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="165"/>
         <source>Shows the console&apos;s program here as mnemonic text, to read or change before Compile on this screen. F9 (PLC › Compile) loads the console&apos;s program into the PLC directly.</source>
         <translation>Shows the console&apos;s program here as mnemonic text, to read or change before Compile on this screen. F9 (PLC › Compile) loads the console&apos;s program into the PLC directly.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="195"/>
         <source>Program loaded from the console</source>
         <translation>Program loaded from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
         <source>In the PLC: {0}</source>
         <translation>In the PLC: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="224"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="225"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="230"/>
         <source>Opened {0}</source>
         <translation>Opened {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
         <source>Open mnemonic program</source>
         <translation>Open mnemonic program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="237"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="245"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>The console&apos;s program cannot be coded: see the error list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="249"/>
         <source>Program taken from the console</source>
         <translation>Program taken from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="284"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Compile failed: {0} error(s). {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="295"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="296"/>
         <source>Converting…</source>
         <translation>Converting…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="319"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="322"/>
+        <source>Not loaded: the PLC keeps the program it has</source>
+        <translation>Not loaded: the PLC keeps the program it has</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
         <source>the program on this screen</source>
         <translation>the program on this screen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="331"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Compile finished — {0} networks, {1} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="326"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="334"/>
         <source>({0} warning(s))</source>
         <translation>({0} warning(s))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="337"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="345"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="352"/>
         <source>Compile a program first</source>
         <translation>Compile a program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="368"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="376"/>
         <source>scans in a process of their own</source>
         <translation>scans in a process of their own</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="370"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="378"/>
         <source>scans in the IDE&apos;s process</source>
         <translation>scans in the IDE&apos;s process</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="372"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="380"/>
         <source>scan process: {0}</source>
         <translation>scan process: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="377"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="385"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="388"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="383"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="391"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="394"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>
@@ -2871,7 +3066,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="387"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="154"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
@@ -2919,73 +3114,78 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
         <source>On-line mode</source>
         <translation>On-line mode</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
         <source>Make passive (disable)</source>
         <translation>Make passive (disable)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
         <source>Make active again</source>
         <translation>Make active again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
         <source>Force to 1</source>
         <translation>Force to 1</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
         <source>Force to 0</source>
         <translation>Force to 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="68"/>
         <source>Release the force</source>
         <translation>Release the force</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="86"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="87"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="92"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>On-line needs a compiled program in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="96"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="97"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>The drawing is not the program in the PLC: compile it in the PLC control screen first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="105"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="106"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="163"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>On-line: the drawing shows the running PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="124"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: the drawing was changed; it is no longer the program the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="176"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="133"/>
+        <source>Off-line: another program is shown; it is not the program the PLC runs</source>
+        <translation>Off-line: another program is shown; it is not the program the PLC runs</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/online.py" line="186"/>
         <source>Select a contact, coil or function first</source>
         <translation>Select a contact, coil or function first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="180"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="190"/>
         <source>This element has no op in the PLC program</source>
         <translation>This element has no op in the PLC program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="213"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Select a contact or coil to force its signal</translation>
     </message>
@@ -3155,7 +3355,7 @@
         <translation>{0}-bit up</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="216"/>
         <source>{0} on: {1} ms a count</source>
         <translation>{0} on: {1} ms a count</translation>
     </message>
@@ -3181,10 +3381,30 @@
         <translation>Address (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="63"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="41"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="282"/>
         <source>INSERT</source>
         <translation>INSERT</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="130"/>
+        <source>&amp;Add:</source>
+        <translation>&amp;Add:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="131"/>
+        <source>devices, e.g. D500, T5, D0-D9</source>
+        <translation>devices, e.g. D500, T5, D0-D9</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="132"/>
+        <source>Add</source>
+        <translation>Add</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="133"/>
+        <source>Any timer, counter or register of the PLC, used by the program or not; a value is typed in its cell as 100, K100 or H64</source>
+        <translation>Any timer, counter or register of the PLC, used by the program or not; a value is typed in its cell as 100, K100 or H64</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="179"/>
@@ -3192,62 +3412,67 @@
         <translation>TMRB: the preset is fixed in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="316"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="257"/>
+        <source>&apos;{0}&apos; is not a device of these tables (use {1}); watch a bit in the bit display</source>
+        <translation>&apos;{0}&apos; is not a device of these tables (use {1}); watch a bit in the bit display</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="285"/>
         <source>DELETE</source>
         <translation>DELETE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
         <source>PLC tables</source>
         <translation>PLC tables</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="323"/>
         <source>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</source>
         <translation>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="330"/>
         <source>Timers (TMR)</source>
         <translation>Timers (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="331"/>
         <source>Counters (CTR)</source>
         <translation>Counters (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
         <source>Data table (D)</source>
         <translation>Data table (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="333"/>
         <source>Keep relays (K)</source>
         <translation>Keep relays (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="334"/>
         <source>Timers (T)</source>
         <translation>Timers (T)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="366"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="335"/>
         <source>Counters (C)</source>
         <translation>Counters (C)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="367"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="336"/>
         <source>Registers ({0})</source>
         <translation>Registers ({0})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="377"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="347"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="350"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</translation>
     </message>
@@ -3713,6 +3938,26 @@
         <source>Reload now</source>
         <translation>Reload now</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="97"/>
+        <source>Forced signals</source>
+        <translation>Forced signals</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="97"/>
+        <source>{0} signal(s) are forced in the PLC for the program it has now. Another program is being loaded: keep these signals forced, or release them?</source>
+        <translation>{0} signal(s) are forced in the PLC for the program it has now. Another program is being loaded: keep these signals forced, or release them?</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="101"/>
+        <source>Release the forces</source>
+        <translation>Release the forces</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="102"/>
+        <source>Keep them forced</source>
+        <translation>Keep them forced</translation>
+    </message>
 </context>
 <context>
     <name>Recovery</name>
@@ -3907,152 +4152,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="180"/>
+        <location filename="../ladderworks/gui/family_words.py" line="45"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="202"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Load (compile) a PLC program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
         <source>Sampling every {0} ms</source>
         <translation>Sampling every {0} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="226"/>
         <source>Stopped: {0} samples</source>
         <translation>Stopped: {0} samples</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="238"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="239"/>
         <source>New program loaded; sampling goes on</source>
         <translation>New program loaded; sampling goes on</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="425"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="426"/>
         <source>Cursor {0} ms:</source>
         <translation>Cursor {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="444"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="445"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="453"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="87"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="451"/>
         <source>Cannot write {0}</source>
         <translation>Cannot write {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="459"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
         <source>Export time chart as CSV</source>
         <translation>Export time chart as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="461"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="462"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="132"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="141"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV files (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="470"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
         <source>Export time chart as PNG</source>
         <translation>Export time chart as PNG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="473"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="518"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="519"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="532"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
-        <source>e.g. R1.4 R1.7 D10:2</source>
-        <translation>e.g. R1.4 R1.7 D10:2</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="535"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="537"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="540"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="540"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="549"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="550"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="552"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="553"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="554"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="555"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>

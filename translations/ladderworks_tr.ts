@@ -4,107 +4,112 @@
 <context>
     <name>AlarmPanel</name>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="125"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="162"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
         <source>Alarm message file</source>
         <translation>Alarm mesaj dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="166"/>
         <source>Alarm files (*.dat);;All files (*)</source>
         <translation>Alarm dosyaları (*.dat);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="171"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="173"/>
+        <source>A {0} program has no alarm messages (the alarm file is for PMC programs)</source>
+        <translation>{0} programının alarm mesajları yoktur (alarm dosyası PMC programları içindir)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="180"/>
         <source>The program&apos;s messages (%@4): {0}</source>
         <translation>Programın mesajları (%@4): {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="174"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="183"/>
         <source>Alarm file... uses an AlarmMsg.dat instead</source>
         <translation>Alarm dosyası... bunun yerine bir AlarmMsg.dat kullanır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="178"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="187"/>
         <source>No alarm file</source>
         <translation>Alarm dosyası yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="180"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="189"/>
         <source>{0}: {1} messages</source>
         <translation>{0}: {1} mesaj</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="184"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="193"/>
         <source>{0} lines with problems</source>
         <translation>{0} satırda sorun var</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="200"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="209"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="218"/>
         <source>(no message {0} in the alarm file)</source>
         <translation>(alarm dosyasında {0} numaralı mesaj yok)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="243"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="252"/>
         <source>The bit is 0 again: RESET clears this alarm</source>
         <translation>Bit yeniden 0: RESET bu alarmı siler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="246"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="255"/>
         <source>Seen at {0}</source>
         <translation>Görüldüğü saat: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="298"/>
         <source>Alarms</source>
         <translation>ALARMLAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="290"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="299"/>
         <source>RESET</source>
         <translation>RESET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="292"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="301"/>
         <source>Clear the alarms whose bit is 0 (the reset key)</source>
         <translation>Biti 0 olan alarmları sil (reset tuşu)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="294"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="303"/>
         <source>Alarm file...</source>
         <translation>Alarm dosyası...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="297"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="306"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="298"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="307"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="308"/>
         <source>PLC time</source>
         <translation>PLC zamanı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="309"/>
         <source>Clock</source>
         <translation>Saat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/alarms.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/alarms.py" line="310"/>
         <source>Message</source>
         <translation>Mesaj</translation>
     </message>
@@ -223,137 +228,132 @@
 <context>
     <name>CrossReference</name>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
         <source>Contact</source>
         <translation>Kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
         <source>NOT contact</source>
         <translation>DEĞİL kontak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
         <source>Coil</source>
         <translation>Çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="69"/>
         <source>NOT coil</source>
         <translation>DEĞİL çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="67"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="70"/>
         <source>SET coil</source>
         <translation>SET çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="71"/>
         <source>RST coil</source>
         <translation>RST çıkış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="78"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="83"/>
         <source>Read</source>
         <translation>Okuma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="80"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="85"/>
         <source>Write</source>
         <translation>Yazma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="81"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="86"/>
         <source>Read and write</source>
         <translation>Okuma ve yazma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="87"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="92"/>
         <source>Level {0}</source>
         <translation>{0}. seviye</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="130"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="130"/>
         <source>Symbol</source>
         <translation>Sembol</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="131"/>
         <source>Network</source>
         <translation>Devre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="126"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="131"/>
         <source>Label</source>
         <translation>Etiket</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="132"/>
         <source>Program part</source>
         <translation>Program bölümü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
         <source>Element</source>
         <translation>Eleman</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="133"/>
         <source>Access</source>
         <translation>Erişim</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="129"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="134"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="251"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="258"/>
         <source>All addresses — uses: {0}</source>
         <translation>Tüm adresler — kullanım: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="263"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="270"/>
         <source>&apos;{0}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{0}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="274"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="282"/>
         <source>{0} is not used in the program</source>
         <translation>{0} programda kullanılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="277"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="285"/>
         <source>{0} — uses: {1} (read: {2}, written: {3})</source>
         <translation>{0} — kullanım: {1} (okuma: {2}, yazma: {3})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="297"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="305"/>
         <source>Cross reference</source>
         <translation>Çapraz referans</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="303"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="311"/>
         <source>&amp;Address or symbol:</source>
         <translation>&amp;Adres veya sembol:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="304"/>
-        <source>e.g. X21.7, R100, ESKIP</source>
-        <translation>örn. X21.7, R100, ESKIP</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="300"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="308"/>
         <source>Cross &amp;reference of this address</source>
         <translation>Bu adresin çapraz &amp;referansı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/cross_reference.py" line="301"/>
+        <location filename="../ladderworks/gui/docks/cross_reference.py" line="309"/>
         <source>List every place the program reads and writes the address</source>
         <translation>Programın adresi okuduğu ve yazdığı her yeri listeler</translation>
     </message>
@@ -967,251 +967,391 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
+        <translation>WinProladder projesi değil: &apos;Fatek WinProladder, File Format 1&apos; başlığı yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
+        <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
+        <translation>.pdw dosyası eksik: {offset}. bayttaki kaydı dosyanın sonunu aşıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
+        <translation>.pdw dosyası bozuk: {offset}. bayttaki kaydın sağlama toplamı tutmuyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="255"/>
+        <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
+        <translation>.pdw dosyası bozuk: {offset}. bayttaki kayıt hatalı biçimde</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <source>the .pdw file holds no program (checked up to byte {offset})</source>
+        <translation>.pdw dosyasında program yok ({offset}. bayta kadar bakıldı)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
+        <translation>{offset}. bayttaki programın maskesi kaldırılamıyor: maskenin çıkarılabileceği silinmiş bir bellek bloğu yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
+        <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
+        <translation>.pdw dosyası bozuk: program görüntüsü {offset}. baytta hatalı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
+        <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
+        <translation>.pdw dosyası bozuk: programın kodu sağlama toplamıyla uyuşmuyor ({offset}. bayt)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
+        <translation>{offset}. bayttaki {word} komut kodunu LadderWorks henüz çözemiyor: program o noktaya kadar okundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
+        <translation>{offset}. bayttaki {word} operand kodu LadderWorks&apos;ün henüz çözebildiği bir cihaz değil: program o noktaya kadar okundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <source>the program ends inside an instruction at byte {offset}</source>
+        <translation>program {offset}. baytta bir komutun ortasında bitiyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
         <translation>&apos;{text}&apos; burada {name} komutunun aygıtı olamaz: onunla satır {other} olarak okunur ({other} komutunu paletten yerleştirin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; bir aygıt değil ({letters} harflerinden biri ve bir numara kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} sekizli (oktal) numaralanır (0 ile 7 arası rakamlar)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; aralık dışında ({first} ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="257"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; bir bit aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; bir kelime (word) aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="259"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; bu tabloda listelenmez ({letters} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: bir aygıt ya da en çok {most} aygıtlık bir İLK-SON aralığı verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="263"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="274"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
+        <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
+        <translation>WPLSoft .dvp projesi değil: 57 01 01 00 baytlarıyla başlamıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
+        <translation>.dvp dosyası {offset}. baytta kesilmiş: WPLSoft&apos;un en sona yazdığı &lt;PrjectEnd&gt; satırıyla bitmiyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
+        <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
+        <translation>bayt {offset}: .dvp biçim sürümü {version} LadderWorks&apos;ün okuduğu sürümlerden değil (214, 215 ve 216 okunur)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
+        <translation>bayt {offset}: bu .dvp projesinin program belleği WPLSoft&apos;un koyduğu yerde değil: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
+        <translation>bayt {offset} (adım {step}): {word} komut kodu LadderWorks tarafından bilinmiyor: operandlarıyla ?{word} olarak korundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
+        <translation>bayt {offset} (adım {step}): {word} sözcüğü LadderWorks&apos;ün bildiği bir cihazı göstermiyor: dosya bozuk ya da henüz çözülmemiş bir cihaz kullanıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
+        <translation>bayt {offset} (adım {step}): {word} operand sözcüğü ne cihaz ne sabit: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
+        <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
+        <translation>bayt {offset} (adım {step}): {word} sonrasındaki operand sözcükleri komuta uymuyor: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
+        <translation>bayt {offset} (adım {step}): {word} operand sözcüğünden önce komut yok: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
+        <source>byte {offset}: the program does not end with END: the file is damaged</source>
+        <translation>bayt {offset}: program END ile bitmiyor: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="341"/>
+        <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
+        <translation>bayt {offset} (adım {step}): END sonrasında komutlar var: dosya bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <source>byte {offset}: a text section of the .dvp project is damaged</source>
+        <translation>bayt {offset}: .dvp projesinin bir metin bölümü bozuk</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
+        <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
+        <translation>bayt {offset}: bir cihaz açıklama satırı CİHAZ$&amp;metin biçiminde değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
+        <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
+        <translation>projede program yok: derlenmiş komut listesi yok ve ladder çizimi boş</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="351"/>
+        <source>the project was saved without compiling: its program is read from its ladder drawing</source>
+        <translation>proje derlenmeden kaydedilmiş: programı ladder çiziminden okundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="354"/>
+        <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
+        <translation>proje derlenmiş bir komut listesi içermiyor ve ladder çiziminde LadderWorks&apos;ün henüz okumadığı bir hücre var (bayt {offset}: bir kol, bir kenar kontağı ...): WPLSoft&apos;ta derleyip yeniden kaydedin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
+        <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
+        <translation>LadderWorks .dvp projesi yazmaz (biçim yalnızca kısmen biliniyor): programı bunun yerine Delta komut listesi (.il) olarak kaydedin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="369"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="371"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="376"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="297"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="388"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="394"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="396"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bayt: bir değer 1, 2 veya 4 bayt olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="401"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="405"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="412"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="416"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="420"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="422"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="424"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="425"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1275,112 +1415,132 @@
     </message>
 </context>
 <context>
+    <name>FamilyWords</name>
+    <message>
+        <location filename="../ladderworks/gui/family_words.py" line="27"/>
+        <location filename="../ladderworks/gui/family_words.py" line="32"/>
+        <location filename="../ladderworks/gui/family_words.py" line="37"/>
+        <source>e.g. {0}</source>
+        <translation>örn. {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/family_words.py" line="43"/>
+        <source>Type the devices to watch, e.g. {0}</source>
+        <translation>İzlenecek aygıtları yazın, örn. {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/family_words.py" line="53"/>
+        <source>FANUC PMC</source>
+        <translation>FANUC PMC</translation>
+    </message>
+</context>
+<context>
     <name>FindReplace</name>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="192"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="203"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="278"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="194"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="205"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="280"/>
         <source>Not found</source>
         <translation>Bulunamadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="222"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="224"/>
         <source>network {0}</source>
         <translation>devre {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="228"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="230"/>
         <source>{0} of {1}: {2}, {3}</source>
         <translation>{0} / {1}: {2}, {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="261"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="263"/>
         <source>Replace {0} with {1}</source>
         <translation>{0} yerine {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="267"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="269"/>
         <source>Replaced; no more found</source>
         <translation>Değiştirildi; başka bulunamadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="283"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="285"/>
         <source>Replace all {0} with {1}</source>
         <translation>Tüm {0} yerine {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="285"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="287"/>
         <source>{0} replaced in {1} networks</source>
         <translation>{1} devrede {0} yer değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="293"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="296"/>
+        <source>Address, symbol or words, {0}</source>
+        <translation>Adres, sembol veya sözcükler, {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="298"/>
+        <source>Address or symbol, {0}</source>
+        <translation>Adres veya sembol, {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
         <source>Find and replace</source>
         <translation>Bul ve değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="174"/>
-        <location filename="../ladderworks/gui/find_replace.py" line="294"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="176"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
         <source>Find:</source>
         <translation>Bul:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="224"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="226"/>
         <source>{0} ({1})</source>
         <translation>{0} ({1})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="227"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="229"/>
         <source>network comment</source>
         <translation>devre yorumu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="295"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="305"/>
         <source>Replace with:</source>
         <translation>Yerine:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="297"/>
-        <source>Address, symbol or words, e.g. X21.7, R100, ESKIP</source>
-        <translation>Adres, sembol veya sözcükler, örn. X21.7, R100, ESKIP</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="299"/>
-        <source>Address or symbol, e.g. R200</source>
-        <translation>Adres veya sembol, örn. R200</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="300"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="307"/>
         <source>Find &amp;next</source>
         <translation>&amp;Sonrakini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="301"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="308"/>
         <source>Find &amp;previous</source>
         <translation>Ö&amp;ncekini bul</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="302"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="309"/>
         <source>&amp;Replace</source>
         <translation>&amp;Değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="303"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="310"/>
         <source>Replace &amp;all</source>
         <translation>&amp;Tümünü değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="304"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="311"/>
         <source>Close</source>
         <translation>Kapat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="305"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="312"/>
         <source>Also in comments and signal descriptions</source>
         <translation>Yorumlarda ve sinyal açıklamalarında da ara</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/find_replace.py" line="306"/>
+        <location filename="../ladderworks/gui/find_replace.py" line="313"/>
         <source>Find the words in the elements&apos; comments, the program&apos;s comments of its addresses, the manual&apos;s signal descriptions and the network comments</source>
         <translation>Kelimeleri elemanların yorumlarında, programın adres yorumlarında, kılavuzun sinyal açıklamalarında ve devre yorumlarında ara</translation>
     </message>
@@ -1388,12 +1548,22 @@
 <context>
     <name>FitWidth</name>
     <message>
-        <location filename="../ladderworks/gui/editor/zoom.py" line="60"/>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="74"/>
+        <source>Fit width: the ladder is too narrow ({0} px) for its networks even at {1} %: close or narrow a dock, or widen the window</source>
+        <translation>Genişliğe sığdır: ladder alanı devreleri için %{1} ölçekte bile çok dar ({0} piksel): bir paneli kapatın ya da daraltın veya pencereyi genişletin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="78"/>
+        <source>Fit width: every network fits at {0} % (a dock closed reads larger)</source>
+        <translation>Genişliğe sığdır: her devre %{0} ölçekte sığıyor (bir panel kapatılınca büyür)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="81"/>
         <source>Fit width: every network fits the window&apos;s width</source>
         <translation>Genişliğe sığdır: her devre pencerenin genişliğine sığıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/zoom.py" line="61"/>
+        <location filename="../ladderworks/gui/editor/zoom.py" line="82"/>
         <source>Fit width: {0} of {1} networks fit the window&apos;s width; the {2} wider ones scroll sideways</source>
         <translation>Genişliğe sığdır: {1} devreden {0} tanesi pencerenin genişliğine sığıyor; daha geniş {2} devre yana kaydırılır</translation>
     </message>
@@ -1454,103 +1624,103 @@
 <context>
     <name>FunctionDialog</name>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="46"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
         <source>one of {0}</source>
         <translation>şunlardan biri: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="48"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
         <source>{0} to {1}</source>
         <translation>{0} ile {1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="51"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="61"/>
         <source>a device of this PLC</source>
         <translation>bu PLC&apos;nin bir aygıtı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="53"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="63"/>
         <source>a constant or a device of this PLC</source>
         <translation>bir sabit ya da bu PLC&apos;nin bir aygıtı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="56"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="66"/>
         <source>byte address ({0} bytes)</source>
         <translation>bayt adresi ({0} bayt)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="58"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="68"/>
         <source>byte address</source>
         <translation>bayt adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="60"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
         <source>constant or byte address</source>
         <translation>sabit veya bayt adresi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="62"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="72"/>
         <source>up to 4 binary digits, e.g. 1111</source>
         <translation>en çok 4 ikili hane, örneğin 1111</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="42"/>
-        <location filename="../ladderworks/gui/function_dialog.py" line="64"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="52"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="74"/>
         <source>P{0} to P{1}</source>
         <translation>P{0} ile P{1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="39"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="49"/>
         <source>empty, P (on the rising edge), D (32-bit) or DP</source>
         <translation>boş, P (yükselen kenarda), D (32 bit) ya da DP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="67"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="77"/>
         <source>L{0} to L{1}</source>
         <translation>L{0} ile L{1} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="80"/>
         <source>constant or address, kept as written</source>
         <translation>sabit veya adres, yazıldığı gibi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="72"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="82"/>
         <source>values separated by spaces</source>
         <translation>boşlukla ayrılmış değerler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="181"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="191"/>
         <source>{0} — {1}: fill in the parameters</source>
         <translation>{0} — {1}: parametreleri girin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="184"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="194"/>
         <source>This instruction has no parameters.</source>
         <translation>Bu komutun parametresi yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="186"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="196"/>
         <source>Comment (shown with the box, written after // in the file):</source>
         <translation>Yorum (kutuyla gösterilir, dosyada // ardından yazılır):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="189"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="199"/>
         <source>Parameter</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="190"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="200"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="191"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="201"/>
         <source>Allowed</source>
         <translation>İzin verilen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/function_dialog.py" line="225"/>
+        <location filename="../ladderworks/gui/function_dialog.py" line="235"/>
         <source>The parameters are not valid</source>
         <translation>Parametreler geçersiz</translation>
     </message>
@@ -1912,203 +2082,217 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="200"/>
+        <location filename="../ladderworks/gui/main_window.py" line="203"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="425"/>
+        <location filename="../ladderworks/gui/main_window.py" line="433"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} bayt (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="431"/>
+        <location filename="../ladderworks/gui/main_window.py" line="445"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="438"/>
+        <location filename="../ladderworks/gui/main_window.py" line="452"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="475"/>
-        <location filename="../ladderworks/gui/main_window.py" line="271"/>
-        <location filename="../ladderworks/gui/main_window.py" line="433"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="501"/>
+        <location filename="../ladderworks/gui/main_window.py" line="277"/>
+        <location filename="../ladderworks/gui/main_window.py" line="447"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="130"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="132"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="131"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="133"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="177"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="179"/>
         <source>PLC family</source>
         <translation>PLC ailesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/new_program.py" line="61"/>
-        <source>The program has errors: fix them first (see the error list)</source>
-        <translation>Programda hatalar var: önce onları düzeltin (hata listesine bakın)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/new_program.py" line="65"/>
-        <source>The program cannot become a {0} program: {1}</source>
-        <translation>Program bir {0} programı olamaz: {1}</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="195"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="213"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="197"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="215"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="196"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="214"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="198"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="216"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="517"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="246"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="248"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="254"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="256"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="329"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="378"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="382"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="329"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="378"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
+        <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="383"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="466"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="490"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
+        <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
+        <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="516"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="507"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="533"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="361"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="376"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="256"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
-        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Tüm dosyalar (*)</translation>
+        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
+        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projeleri (*.dvp *.DVP);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projeleri (*.pdw *.PDW);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="366"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="381"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="412"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="400"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="413"/>
+        <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
+        <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="401"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="465"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="419"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="469"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="395"/>
+        <location filename="../ladderworks/gui/main_window.py" line="403"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="411"/>
+        <location filename="../ladderworks/gui/main_window.py" line="419"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="475"/>
+        <location filename="../ladderworks/gui/main_window.py" line="439"/>
+        <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
+        <translation>Derleme bitti: {0} bayt (yüklenmedi: PLC mevcut programını tutuyor)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/main_window.py" line="489"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="478"/>
+        <location filename="../ladderworks/gui/main_window.py" line="492"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="511"/>
+        <location filename="../ladderworks/gui/main_window.py" line="525"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="512"/>
+        <location filename="../ladderworks/gui/main_window.py" line="526"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2142,131 +2326,137 @@
         <source>Ladder programs (*.LAD *.lad)</source>
         <translation>Ladder programları (*.LAD *.lad)</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="61"/>
+        <source>The program has errors: fix them first (see the error list)</source>
+        <translation>Programda hatalar var: önce onları düzeltin (hata listesine bakın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="65"/>
+        <source>The program cannot become a {0} program: {1}</source>
+        <translation>Program bir {0} programı olamaz: {1}</translation>
+    </message>
 </context>
 <context>
     <name>ModbusDock</name>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="119"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
         <source>Modbus server</source>
         <translation>Modbus sunucusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="120"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
         <source>&amp;Address (host:port):</source>
         <translation>&amp;Adres (sunucu:port):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="121"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
         <source>&amp;Map file (CSV):</source>
         <translation>&amp;Harita dosyası (CSV):</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="122"/>
-        <source>the dialect&apos;s own map</source>
-        <translation>PLC ailesinin kendi haritası</translation>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="204"/>
+        <source>the {0} map</source>
+        <translation>{0} haritası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
         <source>Choose…</source>
         <translation>Seç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
         <source>Dialect&apos;s map</source>
         <translation>PLC ailesinin haritası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="125"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="129"/>
         <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
         <translation>Programın PLC ailesinin kendi haritasını sun (docs/modbus.md)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="127"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="131"/>
         <source>Clients connected:</source>
         <translation>Bağlı istemciler:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="132"/>
         <source>Requests a second:</source>
         <translation>Saniyedeki istek:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="148"/>
         <source>Type the address as host:port, e.g. {0}.</source>
         <translation>Adresi sunucu:port olarak yazın, ör. {0}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="162"/>
         <source>Cannot listen on {0}: {1}</source>
         <translation>{0} dinlenemiyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="172"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="176"/>
         <source>Modbus map file</source>
         <translation>Modbus harita dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="173"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="177"/>
         <source>Modbus maps (*.csv);;All files (*)</source>
         <translation>Modbus haritaları (*.csv);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="190"/>
         <source>Cannot read the map {0}: {1}</source>
         <translation>{0} haritası okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="189"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="193"/>
         <source>line {0}: {1}</source>
         <translation>satır {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="191"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="195"/>
         <source>The map {0} is not served:</source>
         <translation>{0} haritası sunulmuyor:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="199"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="203"/>
         <source>the file {0}</source>
         <translation>{0} dosyası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="200"/>
-        <source>the {0} dialect&apos;s own map</source>
-        <translation>{0} PLC ailesinin kendi haritası</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="221"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
         <source>Stop server</source>
         <translation>Sunucuyu durdur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="222"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
         <source>Start server</source>
         <translation>Sunucuyu başlat</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="226"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
         <source>Map served:</source>
         <translation>Sunulan harita:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="227"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="232"/>
         <source>Map to serve:</source>
         <translation>Sunulacak harita:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="231"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="236"/>
         <source>Listening on {0}:{1} (Modbus/TCP, any unit id), map: {2}.</source>
         <translation>{0}:{1} dinleniyor (Modbus/TCP, her birim no), harita: {2}.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="240"/>
         <source>Other computers on the network can read and write this PLC.</source>
         <translation>Ağdaki başka bilgisayarlar bu PLC&apos;yi okuyup yazabilir.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/modbus.py" line="240"/>
+        <location filename="../ladderworks/gui/docks/modbus.py" line="245"/>
         <source>Stopped. An HMI on this computer connects to {0} once started.</source>
         <translation>Durduruldu. Başlatıldığında bu bilgisayardaki bir HMI {0} adresine bağlanır.</translation>
     </message>
@@ -2661,148 +2851,153 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="151"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC KONTROL EKRANI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
         <source>Open .MOD…</source>
         <translation>.MOD aç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
         <source>Show the console&apos;s program as text</source>
         <translation>Konsolun programını metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="156"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
         <source>Compile</source>
         <translation>Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="336"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="344"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="158"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="164"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="165"/>
         <source>Shows the console&apos;s program here as mnemonic text, to read or change before Compile on this screen. F9 (PLC › Compile) loads the console&apos;s program into the PLC directly.</source>
         <translation>Konsolun programını burada mnemonic metin olarak gösterir; bu ekranda Derle&apos;den önce okumak veya değiştirmek için. F9 (PLC › Derle) konsolun programını doğrudan PLC&apos;ye yükler.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="194"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="195"/>
         <source>Program loaded from the console</source>
         <translation>Program konsoldan yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="214"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
         <source>In the PLC: {0}</source>
         <translation>PLC&apos;deki program: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="224"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="225"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="229"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="230"/>
         <source>Opened {0}</source>
         <translation>{0} açıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="235"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
         <source>Open mnemonic program</source>
         <translation>Mnemonik program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="237"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod *.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="244"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="245"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>Konsoldaki program kodlanamıyor: hata listesine bakın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="248"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="249"/>
         <source>Program taken from the console</source>
         <translation>Program konsoldan alındı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="283"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="284"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Derleme başarısız: {0} hata. {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="295"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="296"/>
         <source>Converting…</source>
         <translation>Çevriliyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="319"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="322"/>
+        <source>Not loaded: the PLC keeps the program it has</source>
+        <translation>Yüklenmedi: PLC mevcut programını tutuyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
         <source>the program on this screen</source>
         <translation>bu ekrandaki program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="323"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="331"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Derleme bitti — {0} devre, {1} bayt</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="326"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="334"/>
         <source>({0} warning(s))</source>
         <translation>({0} uyarı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="337"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="345"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} sinyal zorlanmış veya eleman pasif. PLC bunlarla başlatılsın mı?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="352"/>
         <source>Compile a program first</source>
         <translation>Önce bir program derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="368"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="376"/>
         <source>scans in a process of their own</source>
         <translation>taramalar kendi süreçlerinde</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="370"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="378"/>
         <source>scans in the IDE&apos;s process</source>
         <translation>taramalar IDE&apos;nin sürecinde</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="372"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="380"/>
         <source>scan process: {0}</source>
         <translation>tarama süreci: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="377"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="385"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="388"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="383"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="391"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="394"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>
@@ -2871,7 +3066,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="387"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="144"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="154"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
@@ -2919,73 +3114,78 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="62"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
         <source>On-line mode</source>
         <translation>Çevrim içi mod</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
         <source>Make passive (disable)</source>
         <translation>Pasif hale getir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
         <source>Make active again</source>
         <translation>Tekrar aktif yap</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="68"/>
         <source>Release the force</source>
         <translation>Zorlamayı bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="86"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="87"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="91"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="92"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>Çevrim içi mod için PLC&apos;de derlenmiş bir program gerekir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="96"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="97"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>Çizim PLC&apos;deki program değil: önce PLC kontrol ekranında derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="105"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="153"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="106"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="163"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>Çevrim içi: çizim çalışan PLC&apos;yi gösteriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="123"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="124"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: çizim değişti; artık PLC&apos;nin çalıştırdığı program değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="176"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="133"/>
+        <source>Off-line: another program is shown; it is not the program the PLC runs</source>
+        <translation>Off-line: başka bir program gösteriliyor; PLC&apos;nin çalıştırdığı program değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/online.py" line="186"/>
         <source>Select a contact, coil or function first</source>
         <translation>Önce bir kontak, çıkış veya fonksiyon seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="180"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="190"/>
         <source>This element has no op in the PLC program</source>
         <translation>Bu elemanın PLC programında karşılığı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="203"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="213"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Sinyalini zorlamak için bir kontak veya çıkış seçin</translation>
     </message>
@@ -3155,7 +3355,7 @@
         <translation>{0} bit yukarı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/device_specs.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/device_specs.py" line="216"/>
         <source>{0} on: {1} ms a count</source>
         <translation>{0} açıkken: sayım başına {1} ms</translation>
     </message>
@@ -3181,10 +3381,30 @@
         <translation>Adres (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="63"/>
-        <location filename="../ladderworks/gui/docks/tables.py" line="313"/>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="41"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="282"/>
         <source>INSERT</source>
         <translation>EKLE (INSERT)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="130"/>
+        <source>&amp;Add:</source>
+        <translation>&amp;Ekle:</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="131"/>
+        <source>devices, e.g. D500, T5, D0-D9</source>
+        <translation>aygıtlar, örn. D500, T5, D0-D9</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="132"/>
+        <source>Add</source>
+        <translation>Ekle</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/table_forms.py" line="133"/>
+        <source>Any timer, counter or register of the PLC, used by the program or not; a value is typed in its cell as 100, K100 or H64</source>
+        <translation>PLC&apos;nin herhangi bir zamanlayıcısı, sayıcısı veya yazmacı, programda kullanılsın ya da kullanılmasın; değer hücresine 100, K100 veya H64 olarak yazılır</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="179"/>
@@ -3192,62 +3412,67 @@
         <translation>TMRB: ayar değeri programda sabittir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="316"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="257"/>
+        <source>&apos;{0}&apos; is not a device of these tables (use {1}); watch a bit in the bit display</source>
+        <translation>&apos;{0}&apos; bu tabloların bir aygıtı değil ({1} kullanın); bir biti bit gösteriminde izleyin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/tables.py" line="285"/>
         <source>DELETE</source>
         <translation>SİL (DELETE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="351"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="320"/>
         <source>PLC tables</source>
         <translation>PLC TABLOLARI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="354"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="323"/>
         <source>A {0} program has no PMC parameter tables: its timer and counter presets are written in its instructions. Watch its T, C and D devices in the bit display and the time chart.</source>
         <translation>{0} programının PMC parametre tabloları yoktur: zamanlayıcı ve sayıcı ayar değerleri komutlarında yazılıdır. T, C ve D aygıtlarını bit gösteriminde ve zaman kartında izleyin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="361"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="330"/>
         <source>Timers (TMR)</source>
         <translation>Zamanlayıcı (TMR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="331"/>
         <source>Counters (CTR)</source>
         <translation>Sayıcı (CTR)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="363"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="332"/>
         <source>Data table (D)</source>
         <translation>Veri (D)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="333"/>
         <source>Keep relays (K)</source>
         <translation>Tutma rölesi (K)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="365"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="334"/>
         <source>Timers (T)</source>
         <translation>Zamanlayıcı (T)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="366"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="335"/>
         <source>Counters (C)</source>
         <translation>Sayıcı (C)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="367"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="336"/>
         <source>Registers ({0})</source>
         <translation>Yazmaçlar ({0})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="377"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="347"/>
         <source>Presets up to {0} ms; timers 1-8 count in 48 ms ticks, 9-100 and TMRB in 8 ms</source>
         <translation>Ayar değeri en çok {0} ms; 1-8 zamanlayıcıları 48 ms, 9-100 ve TMRB 8 ms adımla sayar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/tables.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/tables.py" line="350"/>
         <source>Presets in ticks (up to {0}); the precision code sets the tick: 0 default (48 ms for 1-8, else 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 s, 5 = 1 min</source>
         <translation>Ayar değerleri tık cinsinden (en çok {0}); hassasiyet kodu tıkı belirler: 0 varsayılan (1-8 için 48 ms, diğerleri 8 ms), 1 = 1 ms, 2 = 10 ms, 3 = 100 ms, 4 = 1 sn, 5 = 1 dk</translation>
     </message>
@@ -3713,6 +3938,26 @@
         <source>Reload now</source>
         <translation>Şimdi yeniden yükle</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="97"/>
+        <source>Forced signals</source>
+        <translation>Zorlanmış sinyaller</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="97"/>
+        <source>{0} signal(s) are forced in the PLC for the program it has now. Another program is being loaded: keep these signals forced, or release them?</source>
+        <translation>PLC&apos;de şu anki programı için {0} sinyal zorlanmış. Başka bir program yükleniyor: bu sinyaller zorlanmış kalsın mı, yoksa bırakılsın mı?</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="101"/>
+        <source>Release the forces</source>
+        <translation>Zorlamaları bırak</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/questions.py" line="102"/>
+        <source>Keep them forced</source>
+        <translation>Zorlanmış kalsın</translation>
+    </message>
 </context>
 <context>
     <name>Recovery</name>
@@ -3907,152 +4152,147 @@
 <context>
     <name>TimeChart</name>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="180"/>
+        <location filename="../ladderworks/gui/family_words.py" line="45"/>
         <source>Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)</source>
         <translation>İzlenecek bitleri yazın, örn. R1.4 R1.7 (bir değer: D10:2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="201"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="202"/>
         <source>Load (compile) a PLC program first</source>
         <translation>Önce bir PLC programı yükleyin (derleyin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="214"/>
         <source>Sampling every {0} ms</source>
         <translation>Her {0} ms&apos;de örnekleniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="226"/>
         <source>Stopped: {0} samples</source>
         <translation>Durduruldu: {0} örnek</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="238"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="239"/>
         <source>New program loaded; sampling goes on</source>
         <translation>Yeni program yüklendi; örnekleme sürüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="425"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="426"/>
         <source>Cursor {0} ms:</source>
         <translation>İmleç {0} ms:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="440"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="441"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="84"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="444"/>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="452"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="445"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="453"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="87"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="450"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="451"/>
         <source>Cannot write {0}</source>
         <translation>{0} yazılamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="459"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="460"/>
         <source>Export time chart as CSV</source>
         <translation>Zaman kartını CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="461"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="462"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="132"/>
         <location filename="../ladderworks/gui/docks/trace_files.py" line="141"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV dosyaları (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="470"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="471"/>
         <source>Export time chart as PNG</source>
         <translation>Zaman kartını PNG olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="472"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="473"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="518"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="519"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="532"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
-        <source>e.g. R1.4 R1.7 D10:2</source>
-        <translation>örn. R1.4 R1.7 D10:2</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="535"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="537"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="540"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="540"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="549"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="550"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="552"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="553"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="554"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="555"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>

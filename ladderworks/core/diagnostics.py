@@ -245,6 +245,37 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "FO {text}: no function output here (FO0-FO7 after a box)"),
     "fatek-ascii-section": QT_TRANSLATE_NOOP(
         "Diagnostic", "ASCII files: '{text}' is not a section header such as [R1000]"),
+    # WinProladder projects (.pdw; docs/dialects.md, ".pdw projects"): byte offsets in the file
+    "pdw-header": QT_TRANSLATE_NOOP(
+        "Diagnostic", "not a WinProladder project: no 'Fatek WinProladder, File Format 1' header"),
+    "pdw-truncated": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .pdw file is cut short: its record at byte {offset} runs past the end"),
+    "pdw-checksum": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .pdw file is damaged: the record at byte {offset} fails its checksum"),
+    "pdw-record": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .pdw file is damaged: the record at byte {offset} is malformed"),
+    "pdw-no-program": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .pdw file holds no program (checked up to byte {offset})"),
+    "pdw-key": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "the program at byte {offset} cannot be unmasked: it has no erased memory block to"
+        " recover the mask from"),
+    "pdw-image": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .pdw file is damaged: its program image is wrong at byte {offset}"),
+    "pdw-program-checksum": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "the .pdw file is damaged: the program's code does not match its checksum (byte"
+        " {offset})"),
+    "pdw-code": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the"
+        " program is read up to it"),
+    "pdw-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the"
+        " program is read up to it"),
+    "pdw-cut": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the program ends inside an instruction at byte {offset}"),
     # dialects (docs/dialects.md): devices and operands of a Delta or Fatek program
     "typed-other-row": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' cannot be the device of {name} here: with it the line reads as "
@@ -278,6 +309,55 @@ MESSAGES: dict[str, str] = {
     "dvp-no-logic": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} without a logic result before it (start with LD)"),
     "dvp-pointer-twice": QT_TRANSLATE_NOOP("Diagnostic", "this pointer P number is used twice"),
+    # WPLSoft .dvp projects (docs/dialects.md, ".dvp projects"): byte offsets in the file
+    "dvp-not-dvp": QT_TRANSLATE_NOOP(
+        "Diagnostic", "not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00"),
+    "dvp-truncated": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .dvp file is cut short at byte {offset}: it does not end with the line"
+        " <PrjectEnd> WPLSoft writes last"),
+    "dvp-version": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset}: .dvp format version {version} is not one LadderWorks"
+        " reads (214, 215 and 216 are)"),
+    "dvp-bad-layout": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset}: the program memory of this .dvp project is not where"
+        " WPLSoft puts it: the file is damaged"),
+    "dvp-unknown-code": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): instruction code {word} is not known to"
+        " LadderWorks: kept as ?{word} with its operands"),
+    "dvp-unknown-device": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): the word {word} names no device LadderWorks"
+        " knows: the file is damaged or uses a device not decoded yet"),
+    "dvp-bad-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): the operand word {word} is neither a device"
+        " nor a constant: the file is damaged"),
+    "dvp-operand-count": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): the operand words after {word} do not fit"
+        " the instruction: the file is damaged"),
+    "dvp-stray-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): the operand word {word} follows no"
+        " instruction: the file is damaged"),
+    "dvp-no-end": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset}: the program does not end with END: the file is damaged"),
+    "dvp-after-end": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset} (step {step}): instructions after END: the file is"
+        " damaged"),
+    "dvp-bad-section": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset}: a text section of the .dvp project is damaged"),
+    "dvp-bad-comment": QT_TRANSLATE_NOOP(
+        "Diagnostic", "byte {offset}: a device comment line is not DEVICE$&text"),
+    "dvp-no-program": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the project holds no program: no compiled instruction list and an empty"
+        " ladder drawing"),
+    "dvp-from-drawing": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the project was saved without compiling: its program is read from its"
+        " ladder drawing"),
+    "dvp-drawing-unread": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the project holds no compiled instruction list, and its ladder drawing"
+        " has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact"
+        " ...): compile it in WPLSoft and save it again"),
+    "dvp-save-refused": QT_TRANSLATE_NOOP(
+        "Diagnostic", "LadderWorks does not write .dvp projects (the format is only partly"
+        " known): save the program as a Delta instruction list (.il) instead"),
     # scenario files (docs/scenarios.md)
     "scenario-header": QT_TRANSLATE_NOOP(
         "Diagnostic", "the first line must be 'PMC SIGNAL DATA'"),

@@ -14,6 +14,7 @@ from collections.abc import Iterable, Iterator, Sequence
 from enum import StrEnum
 from typing import NamedTuple
 
+from ladderworks.core import dialects
 from ladderworks.core.address import Address, Area, byte_in_range
 from ladderworks.core.collector import collector_paused
 from ladderworks.core.il.program import FANUC, Program
@@ -213,8 +214,9 @@ def _first_level(specs: Iterable[InstructionSpec | None]) -> int:
 class CrossReference:
     """The uses of every address of a program, indexed by byte."""
 
-    def __init__(self, uses: list[Use]) -> None:
+    def __init__(self, uses: list[Use], dialect: str = "") -> None:
         self.uses = uses  # in program order
+        self.dialect = dialect  # a Delta/Fatek T0 is one device: its contact and its value
         self._sorted: list[Use] | None = None
         self._by_byte: dict[tuple[Area, int], list[int]] = {}
         index = self._by_byte
@@ -236,7 +238,16 @@ class CrossReference:
 
     def uses_of(self, address: Address) -> list[Use]:
         """The uses of `address`: of a bit, its own uses and the byte uses covering its byte;
-        of a byte, every use covering it and the uses of its bits (network order)."""
+        of a byte, every use covering it and the uses of its bits (network order). A device of
+        the dialect with a bit and a value (Delta's, Fatek's T0, C0) is one device: the uses of
+        either are the uses of both (`AND T0` reads T0's bit, `TMR T0` writes its value)."""
+        twin = device_twin(address, self.dialect)
+        found = self._uses_at(address)
+        if twin is not None:
+            found += [use for use in self._uses_at(twin) if use not in found]
+        return sorted(found, key=_place)
+
+    def _uses_at(self, address: Address) -> list[Use]:
         found = self._by_byte.get((address.area, address.byte), [])
         uses = self.uses
         if address.bit is None:
@@ -244,7 +255,7 @@ class CrossReference:
         else:
             picked = [uses[k] for k in found
                       if uses[k].address.bit is None or uses[k].address.bit == address.bit]
-        return sorted(picked, key=_place)
+        return picked
 
     def addresses(self) -> list[Address]:
         """Every address as written in the program, in address order."""
@@ -260,13 +271,25 @@ class CrossReference:
     def from_program(cls, program: Program) -> CrossReference:
         """The cross reference of a parsed program (no cells: the lines are known)."""
         with collector_paused():
-            return cls(_collect(list(_program_items(program)), program.dialect))
+            return cls(_collect(list(_program_items(program)), program.dialect),
+                       program.dialect)
 
     @classmethod
     def from_ladder(cls, networks: Sequence[LadderNetwork], dialect: str) -> CrossReference:
         """The cross reference of the console's networks, with the cell of every element."""
         with collector_paused():
-            return cls(_collect(list(_ladder_items(networks)), dialect))
+            return cls(_collect(list(_ladder_items(networks)), dialect), dialect)
+
+
+def device_twin(address: Address, dialect: str) -> Address | None:
+    """The other address of the dialect's device at `address` when it has both a bit and a
+    value (Delta T0's contact at T1000.0, its value at T0), else None."""
+    found = dialects.get(dialect)
+    device = found.devices.device_of(address) if found is not None else None
+    if device is None or device[0].bits is None or device[0].words is None:
+        return None
+    kind, number = device
+    return kind.word_address(number) if address.bit is not None else kind.bit_address(number)
 
 
 _Item = tuple[InstructionSpec, Sequence[object], Address | None, tuple[int, int] | None, str,

@@ -11,6 +11,7 @@ from PySide6.QtCore import QFileSystemWatcher, QObject, Signal
 from PySide6.QtGui import QTextDocument
 
 from ladderworks.core.collector import release_frozen
+from ladderworks.core.dialects.delta.dvp_file import is_dvp
 from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.printer import encode_program, print_faithful
@@ -105,6 +106,7 @@ class ProgramDocument(QObject):
         self.path: Path | None = None
         self.form = TextForm()
         self.origin: Program | None = None
+        self.binary = False  # read from a WPLSoft .dvp project: never written back over it
         self.disk: DiskState | None = None
         self.watcher = QFileSystemWatcher(self)
         self.watcher.fileChanged.connect(self._on_file_changed)
@@ -152,6 +154,7 @@ class ProgramDocument(QObject):
         self.form = TextForm()
         self.origin = None
         self.disk = None
+        self.binary = False
         self._watch(None)
 
     def read(self, path: Path) -> tuple[ParseResult, bytes]:
@@ -166,6 +169,7 @@ class ProgramDocument(QObject):
         self.path = path
         self.form = result.program.form
         self.origin = result.program
+        self.binary = is_dvp(data)
         self.disk = DiskState.of(path, data)
         self._watch(path)
         return result, data
@@ -221,6 +225,7 @@ class ProgramDocument(QObject):
         """Write atomically (ReadOnlyFile, OSError); `path` becomes the document's file."""
         atomic_write_bytes(path, data)
         self.path = path
+        self.binary = False  # now the text form's file
         self.disk = DiskState.of(path, data)
         self._watch(path)
 

@@ -30,6 +30,7 @@ from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.network_item import network_tag
 from ladderworks.gui.editor.step_name import NamedCommand, StepName
 from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.family_words import replace_example, xref_example
 from ladderworks.gui.find_texts import TextHit, find_in_texts
 from ladderworks.gui.retranslate import Retranslating
 
@@ -78,6 +79,7 @@ class FindReplaceDialog(Retranslating, QDialog):
         self.find_text.setClearButtonEnabled(True)
         self.replace_text = QLineEdit(self)
         self.replace_text.setObjectName("replace_text")
+        editor.model.document_reset.connect(self._family_texts)  # another program's family
         self.replace_text.setClearButtonEnabled(True)
         self.message = QLabel(self)
         self.message.setObjectName("find_message")
@@ -288,15 +290,20 @@ class FindReplaceDialog(Retranslating, QDialog):
 
     # -- language ------------------------------------------------------------------------
 
+    def _family_texts(self) -> None:
+        """The fields' examples in the devices of the program's family."""
+        dialect = self.editor.model.dialect
+        self.find_text.setPlaceholderText(translate(
+            "FindReplace", "Address, symbol or words, {0}").format(xref_example(dialect)))
+        self.replace_text.setPlaceholderText(translate(
+            "FindReplace", "Address or symbol, {0}").format(replace_example(dialect)))
+
     def retranslate(self) -> None:
         """Set the texts in the current UI language."""
         self.setWindowTitle(translate("FindReplace", "Find and replace"))
         self._find_label.setText(translate("FindReplace", "Find:"))
         self._replace_label.setText(translate("FindReplace", "Replace with:"))
-        self.find_text.setPlaceholderText(
-            translate("FindReplace", "Address, symbol or words, e.g. X21.7, R100, ESKIP"))
-        self.replace_text.setPlaceholderText(
-            translate("FindReplace", "Address or symbol, e.g. R200"))
+        self._family_texts()
         self.find_next_button.setText(translate("FindReplace", "Find &next"))
         self.find_previous_button.setText(translate("FindReplace", "Find &previous"))
         self.replace_button.setText(translate("FindReplace", "&Replace"))

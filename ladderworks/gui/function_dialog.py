@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
 from ladderworks.core import dialects
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.dialects.functions import check_params, operand_params, operand_texts
+from ladderworks.core.dialects.operand_ranges import operand_ranges
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.il import Instruction
 from ladderworks.core.il.printer import print_instruction
@@ -32,9 +33,18 @@ from ladderworks.gui.translation import instruction_label, instruction_title, pa
 FORMS = "mode"  # a Fatek row's forms, typed as P, D or DP (core/dialects/fatek/editing.py)
 
 
-def allowed_text(param: Param, dialect: str = "seed") -> str:
-    """What may be typed for `param` in a program of `dialect`, from the instruction table."""
+def allowed_text(param: Param, dialect: str = "seed", spec: InstructionSpec | None = None
+                 ) -> str:
+    """What may be typed for `param` in a program of `dialect`, from the instruction table (a
+    dialect row's operand: the ranges its reader takes, `T0–T255`)."""
     dialect_program = dialects.get(dialect) is not None
+    if dialect_program and spec is not None and spec.dialect == dialect \
+            and param.name != FORMS:
+        params = operand_params(spec)
+        ranges = operand_ranges(spec.name, dialect)
+        if param in params and params.index(param) < len(ranges) \
+                and ranges[params.index(param)]:
+            return ", ".join(ranges[params.index(param)])
     if dialect_program and param.kind is ParamKind.NUMBER and param.name == FORMS:
         return QCoreApplication.translate(
             "FunctionDialog", "empty, P (on the rising edge), D (32-bit) or DP")
@@ -192,7 +202,7 @@ class FunctionDialog(Retranslating, QDialog):
         ])
         for row, param in enumerate(self._params):
             self._cell(row, 0).setText(param_label(param.name))
-            self._cell(row, 2).setText(allowed_text(param, self.dialect))
+            self._cell(row, 2).setText(allowed_text(param, self.dialect, self.spec))
 
     def show_help(self) -> InstructionHelp:
         """The Help button: this instruction's reference entry, beside the dialog."""

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, Qt, QTimer, Signal
 from PySide6.QtGui import QAction, QCloseEvent, QShowEvent
 from PySide6.QtWidgets import (
     QApplication,
@@ -41,6 +41,7 @@ from ladderworks.gui.elided_label import ElidedLabel
 from ladderworks.gui.error_list import ErrorListDock
 from ladderworks.gui.file_actions import FileActions
 from ladderworks.gui.find_replace import FindReplaceDialog
+from ladderworks.gui.forces_on_load import forces_on_load
 from ladderworks.gui.help_browser import InstructionHelp
 from ladderworks.gui.locale_numbers import percent
 from ladderworks.gui.palette import ToolPalette
@@ -48,6 +49,7 @@ from ladderworks.gui.parameter_document import ParameterDocument
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.print_actions import PrintActions
 from ladderworks.gui.retranslate import Retranslating
+from ladderworks.gui.screen_fit import rebalance_docks
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.signal_list import SignalListDock
 from ladderworks.gui.text_view import ProgramTextView
@@ -76,6 +78,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.failed_path: Path | None = None  # a file that did not parse: never overwritten
         self.last_warning = ""
         self.program_info = Program()  # the program as opened: title, sections, symbols
+        self.program_serial = 0  # counts the programs shown (an untitled one's identity)
         self.setWindowIcon(icon("ladderworks"))
 
         self.model = LadderModel(self)  # the networks, the undo stack, ladder or text
@@ -198,11 +201,14 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.zoom_label.setText(percent(self.editor.zoom() * 100))
         # fit width says what it fitted: "9,812 of 10,000 networks fit…" (issue 31)
         self.zoom_label.setToolTip(self.fit_width.describe() or translate("MainWindow", "Zoom"))
+        if self._status_text == self.fit_width.describe and self.statusBar().currentMessage():
+            self.show_message(self.fit_width.describe)  # refitted (a dock opened): said anew
 
     # -- language ------------------------------------------------------------------------
 
     def retranslate(self) -> None:
         """Set every text in the current UI language (the docks set their own)."""
+        self.dock_titles.check_soon()  # longer titles: a side group widens for its tabs
         self.menus.retranslate()
         self.plc_docks.retranslate()
         self.printing.retranslate()
@@ -285,12 +291,14 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
     def program_shown(self, program: Program) -> None:
         """A program is now shown: its symbols and messages go to the docks."""
         self.program_info = program
+        self.program_serial += 1  # an untitled drawing is another program than the last
         # the cell under the cursor of the program now shown, not the last one's
         shown = self.editor.networks and not self.model.showing_text
         self.cell_label.setText(self.editor.describe_cell(*self.editor.cursor_cell) if shown
                                 else "")
         self.signals_dock.set_symbols(program.symbols)
         self.plc_docks.session.set_symbols(program.symbols)
+        self.plc_docks.session.set_console_dialect(program.dialect)  # the docks' examples
         self.plc_docks.ascii_output.use_program(self.path)  # a Fatek program's ASCII files
         self.program_opened.emit(program)
 
@@ -424,7 +432,13 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         if running and questions.reload_running(self) != "reload":
             return translate("MainWindow", "Compile finished: {0} bytes (not loaded: the PLC "
                              "runs the previous program)").format(len(binary))
-        problems = session.load(binary, program)
+        name = str(self.path) if self.path else f"untitled {self.program_serial}"
+        origin = (program.dialect, name)
+        forces = forces_on_load(self, session, origin)
+        if forces is None:
+            return translate("MainWindow", "Compile finished: {0} bytes (not loaded: the PLC "
+                             "keeps the program it has)").format(len(binary))
+        problems = session.load(binary, program, origin=origin, keep_forces=forces == "keep")
         if problems:
             self.errors.set_diagnostics(problems)
             self.errors.show()
@@ -527,6 +541,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
                 if bottom:
                     low = max(100, min(170, self.height() // 5))
                     self.resizeDocks(bottom, [low] * len(bottom), Qt.Orientation.Vertical)
+            else:  # a layout saved on a larger screen: the ladder gets its room back
+                QTimer.singleShot(0, lambda: rebalance_docks(self, self.editor.viewport()))
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Ask about unsaved changes; remember the window layout."""

@@ -54,6 +54,7 @@ class PlcSession(QObject):
     alarms_changed = Signal(list)
     parameters_changed = Signal(object)  # the PmcParameters now
     symbols_changed = Signal(object)  # the open program's SymbolTable, or None
+    family_changed = Signal(str)  # the dialect whose words the docks show (`family`)
 
     def __init__(self, parent: QObject | None = None, *, realtime: bool = True,
                  period_ms: int = DEFAULT_PERIOD_MS, publish_ms: int = PUBLISH_MS,
@@ -65,24 +66,45 @@ class PlcSession(QObject):
         self._timer.setInterval(publish_ms)
         self._timer.timeout.connect(self.publish)
         self.symbols: SymbolTable | None = None
+        # (dialect, file) of the program loaded: a load from elsewhere asks about the forces
+        self.loaded_origin: tuple[str, str] | None = None
+        self.console_dialect = "seed"  # the dialect of the program the console shows
 
     # -- the program ---------------------------------------------------------------------
 
-    def load(self, binary: bytes, program: Program | None = None) -> list[Diagnostic]:
+    def load(self, binary: bytes, program: Program | None = None, *,
+             origin: tuple[str, str] | None = None, keep_forces: bool = True
+             ) -> list[Diagnostic]:
         """Load a compiled binary (the PLC stops first); the diagnostics if it is refused.
-        `program` is the source it was compiled from (views use its comments), if known."""
+        `program` is the source it was compiled from (views use its comments), if known;
+        `origin` its (dialect, file); `keep_forces` False releases the old program's forces."""
         was_running = self.run.running
         problems = self.run.load(binary, program)
         if problems:
             return problems
+        self.loaded_origin = origin
+        if not keep_forces:
+            self.run.release_all()
         if was_running:
             self._stopped()
         assert self.run.binary is not None
         self.run.prepare()  # the scan process builds it while the user looks (START waits less)
         self.program_loaded.emit(self.run.binary)
+        self.family_changed.emit(self.family)
         self.forces_changed.emit(self.run.forces())
         self.publish()
         return []
+
+    @property
+    def family(self) -> str:
+        """The dialect whose devices the docks' examples and texts name: the PLC's program's
+        once one is loaded, else the one the console shows."""
+        return self.run.program_dialect if self.run.binary is not None else self.console_dialect
+
+    def set_console_dialect(self, dialect: str) -> None:
+        """The console shows a program of `dialect` (File › Open, New)."""
+        self.console_dialect = dialect
+        self.family_changed.emit(self.family)
 
     def load_program(self, program: Program) -> CompileResult:
         """Compile a program and load it when it compiles (with this adapter's signals)."""

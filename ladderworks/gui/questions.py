@@ -89,3 +89,14 @@ def reload_running(parent: QWidget | None) -> str | None:
         "The PLC is running. Load the new program now? It is loaded between two scans and "
         "the PLC runs on with it; forces stay."), [
         ("reload", translate("Questions", "Reload now"), Role.AcceptRole), _cancel()])
+
+
+def forces_on_load(parent: QWidget | None, count: int) -> str | None:
+    """Another program goes into the PLC while signals are forced: 'keep', 'release' or
+    cancel."""
+    return ask(parent, translate("Questions", "Forced signals"), translate(
+        "Questions",
+        "{0} signal(s) are forced in the PLC for the program it has now. Another program is "
+        "being loaded: keep these signals forced, or release them?").format(count), [
+        ("release", translate("Questions", "Release the forces"), Role.AcceptRole),
+        ("keep", translate("Questions", "Keep them forced"), Role.AcceptRole), _cancel()])

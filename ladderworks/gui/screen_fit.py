@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QByteArray, QDataStream, QPoint, QRect, QSize, Qt
 from PySide6.QtGui import QGuiApplication
-from PySide6.QtWidgets import QWidget
+from PySide6.QtWidgets import QDockWidget, QMainWindow, QWidget
 
 SHARE = 0.9  # of the screen's free area: room for the title bar and the panel's task bar
 
@@ -65,3 +65,31 @@ def place_main_window(window: QWidget, saved: QByteArray | None, room: QRect) ->
     if room.width() <= SMALL.width() or room.height() <= SMALL.height():
         window.setWindowState(Qt.WindowState.WindowMaximized)
     return False
+
+
+LADDER_SHARE = 0.45  # a restored layout leaving the ladder less than this of the window is
+SMALL_DOCK_SHARE = 3  # rebalanced: bottom docks a third of the height, side docks a third
+
+
+def rebalance_docks(window: QMainWindow, ladder: QWidget) -> bool:
+    """A dock layout restored from a larger screen (1920×1080 at 1024×600 left the ladder
+    190 px tall): bottom docks back to a third of the window's height, right-hand ones to a
+    third of its width, when the ladder has less than LADDER_SHARE of either. True if done."""
+    docks = [dock for dock in window.findChildren(QDockWidget)
+             if dock.isVisible() and not dock.isFloating()]
+    done = False
+    if ladder.height() < window.height() * LADDER_SHARE:
+        bottom = [dock for dock in docks
+                  if window.dockWidgetArea(dock) == Qt.DockWidgetArea.BottomDockWidgetArea]
+        if bottom:
+            low = window.height() // SMALL_DOCK_SHARE
+            window.resizeDocks(bottom, [low] * len(bottom), Qt.Orientation.Vertical)
+            done = True
+    if ladder.width() < window.width() * LADDER_SHARE:
+        right = [dock for dock in docks
+                 if window.dockWidgetArea(dock) == Qt.DockWidgetArea.RightDockWidgetArea]
+        if right:
+            narrow = window.width() // SMALL_DOCK_SHARE
+            window.resizeDocks(right, [narrow] * len(right), Qt.Orientation.Horizontal)
+            done = True
+    return done

@@ -47,7 +47,7 @@ def test_function_dialog_checks_delta_operands(qtbot: QtBot) -> None:
     dialog = FunctionDialog(spec, dialect="delta")
     qtbot.addWidget(dialog)
     assert dialog.windowTitle().startswith("MOV — ")
-    assert dialog.table.item(1, 2).text() == "a device of this PLC"
+    assert dialog.table.item(1, 2).text() == "T0–T255, C0–C255, D0–D9999"
     dialog.set_value("source", "K5")
     dialog.set_value("output", "X0")  # an input: not a place to write
     dialog.accept()

@@ -93,7 +93,7 @@ def test_a_map_file_is_served_and_said(tmp_path: Path, window: MainWindow) -> No
     session, dock = docks.session, docks.modbus
     assert session.load(spindle_binary()) == []
     session.start()
-    assert dock.served.text() == "the seed dialect's own map"
+    assert dock.served.text() == "the FANUC PMC map"
     assert dock.served_label.text() == "Map to serve:"
     own = tmp_path / "hmi.csv"
     own.write_text("table,start,count,plc address,access\nholding,7,1,G30,r\n"
@@ -118,7 +118,7 @@ def test_a_map_file_is_served_and_said(tmp_path: Path, window: MainWindow) -> No
     dock.map_default.click()  # back to the dialect's map
     assert dock.map_file.text() == ""
     assert dock.start_server() and dock.server is not None
-    assert dock.served.text() == "the seed dialect's own map"
+    assert dock.served.text() == "the FANUC PMC map"
     assert dock.server.bridge.map.name == "pmc"
     dock.stop_server()
 
@@ -163,7 +163,7 @@ def test_another_dialect_s_program_switches_or_stops_the_map(tmp_path: Path,
     fatek = parse_file(EXAMPLES / "fatek" / "conveyor.lst").program
     assert session.load_program(fatek).binary is not None
     assert dock.running and dock.server.bridge.map.name == "fatek"
-    assert dock.served.text() == "the fatek dialect's own map"
+    assert dock.served.text() == "the Fatek FBs map"
     dock.stop_server()
     own = tmp_path / "hmi.csv"
     own.write_text("coils,0,8,X2.0,rw\n", encoding="utf-8")  # a PMC address

@@ -29,6 +29,8 @@ def test_fit_width_keeps_the_rail_in_view_with_a_dock_open(window: MainWindow,
     diagnostic.show()
     window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, diagnostic)
     qtbot.waitUntil(lambda: diagnostic.isVisible() and diagnostic.width() > 50)
+    window.resizeDocks([diagnostic], [560], Qt.Orientation.Horizontal)  # a wide PLC dock
+    qtbot.waitUntil(lambda: diagnostic.width() >= 500)
     view = window.editor
     view.zoom_reset()
     assert _rail_x(window) > view.viewport().width()  # at 100 % the rail is out of view

@@ -2,7 +2,10 @@
 
 `parse_bytes`, `parse_file` and `parse_for_check` here sniff the text (core/dialects) and hand
 it to the dialect's reader, else to the PMC parser (il/parser.py). `dialect` names a reader and
-skips the sniffing (`--dialect NAME` on the command line); "pmc" forces the PMC parser.
+skips the sniffing (`--dialect NAME` on the command line); "pmc" forces the PMC parser. A
+WinProladder project (`.pdw`, recognised by its header) is read by the Fatek dialect's
+`pdw_reader` whatever is named; a WPLSoft project (`.dvp`, recognised by its first bytes) by
+core/dialects/delta/dvp_program.py unless another dialect is named.
 """
 
 from __future__ import annotations
@@ -12,6 +15,7 @@ from typing import TYPE_CHECKING
 from ladderworks.core import dialects
 from ladderworks.core.collector import collector_paused
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects.fatek.pdw_file import is_pdw
 from ladderworks.core.il import parser
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.textform import TextForm, decode_lines, dominant_newline, split_with_ends
@@ -49,8 +53,35 @@ def read_dialect(data: bytes, dialect: dialects.Dialect) -> ParseResult:
     return ParseResult(program, every, form.encoding)
 
 
+def _binary(data: bytes, dialect: str | None) -> ParseResult | None:
+    """The program of a binary project file (a WPLSoft `.dvp`), or None for text."""
+    from ladderworks.core.dialects.delta import NAME as DELTA
+    from ladderworks.core.dialects.delta.dvp_file import is_dvp
+
+    if not is_dvp(data) or dialect not in (None, DELTA):
+        return None
+    from ladderworks.core.dialects.delta.dvp_program import parse_dvp
+
+    with collector_paused(promote=True):
+        return parse_dvp(data)
+
+
+def read_pdw(data: bytes) -> ParseResult:
+    """A WinProladder project's program (core/dialects/fatek/pdw_reader.py)."""
+    from ladderworks.core.dialects.fatek import pdw_reader
+    with collector_paused(promote=True):
+        program, diagnostics = pdw_reader.read(data)
+    return ParseResult(program, sorted(diagnostics, key=lambda d: (d.line, d.column)),
+                       program.form.encoding)
+
+
 def parse_bytes(data: bytes, dialect: str | None = None) -> ParseResult:
     """Parse file contents in whichever dialect they are written (or `dialect`)."""
+    if is_pdw(data):
+        return read_pdw(data)
+    binary = _binary(data, dialect)
+    if binary is not None:
+        return binary
     found = choose(data, dialect)
     return parser.parse_bytes(data) if found is None else read_dialect(data, found)
 
@@ -65,6 +96,11 @@ def parse_for_check(path: str | Path, dialect: str | None = None) -> ParseResult
     """parser.parse_for_check, or a dialect's reader for a file of another dialect."""
     with open(path, "rb") as file:
         data = file.read()
+    if is_pdw(data):
+        return read_pdw(data)
+    binary = _binary(data, dialect)
+    if binary is not None:
+        return binary
     found = choose(data, dialect)
     return parser.parse_for_check(path) if found is None else read_dialect(data, found)
 

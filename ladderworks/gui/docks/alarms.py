@@ -24,6 +24,7 @@ from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il.program import Program
 from ladderworks.gui import file_dialogs
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.family_words import family_title, is_pmc
 from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.plc_session import PlcSession
@@ -107,6 +108,7 @@ class AlarmDock(Retranslating, QDockWidget):
         # the texts are the program's in the PLC: they change when another is loaded into it,
         # never when the console opens or starts one (File › New / Open)
         session.program_loaded.connect(self._on_program_loaded)
+        session.family_changed.connect(lambda _family: self._show_file())
         if not session.run.alarm_table.messages and DEFAULT_ALARM_FILE.exists():
             self.load_file(DEFAULT_ALARM_FILE)
         self.retranslate()
@@ -167,6 +169,13 @@ class AlarmDock(Retranslating, QDockWidget):
             self.load_file(path)
 
     def _show_file(self) -> None:
+        if not is_pmc(self.session.family):  # a Delta/Fatek program: no A area, no messages
+            self.file_label.setText(translate(
+                "AlarmPanel", "A {0} program has no alarm messages (the alarm file is for "
+                "PMC programs)").format(family_title(self.session.family)))
+            self.file_label.setStyleSheet("")
+            self.file_label.setToolTip("")
+            return
         if self.program_messages:
             self.file_label.setText(translate(
                 "AlarmPanel", "The program's messages (%@4): {0}").format(self.program_messages))

@@ -56,9 +56,10 @@ def program_matches(program: Program, binary: BinaryProgram) -> bool:
 
 
 def stack_dialect(binary: BinaryProgram) -> str:
-    """The dialect a drawing is read in to match the binary: a registered dialect's own (its
-    MPS/MRD/MPP branches code in it), "seed" for the PMC's (as before)."""
-    return binary.dialect if binary.dialect not in ("seed", "fanuc") else "seed"
+    """The dialect a drawing is read in to match the binary, the one it was compiled in: a
+    registered dialect's own (its MPS/MRD/MPP branches code in it), "fanuc" for a LADDER-III
+    program (its 30i map: G1010 is in range there, not in the seed's), else "seed"."""
+    return binary.dialect or "seed"
 
 
 def standard_cells(network: LadderNetwork, dialect: str = "seed"

@@ -31,7 +31,8 @@ from PySide6.QtWidgets import (
 
 from ladderworks.core import dialects
 from ladderworks.core.address import Address, AddressError, looks_like_address
-from ladderworks.core.dialects.spelling import spelling
+from ladderworks.core.dialects.spelling import Spelling, spelling
+from ladderworks.core.instructions import spec_for
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork
 from ladderworks.core.symbols import SymbolTable, resolve
 from ladderworks.core.xref import Access, CrossReference, Use, UseKind
@@ -39,6 +40,7 @@ from ladderworks.gui.console_menus import ConsoleMenus
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.ladder_model import LadderModel
 from ladderworks.gui.editor.view import LadderEditor
+from ladderworks.gui.family_words import xref_example
 from ladderworks.gui.header_fit import fit_headers
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.symbol_text import name_and_text
@@ -57,8 +59,9 @@ class ProgramSource:
     dialect: Callable[[], str]
 
 
-def kind_text(use: Use) -> str:
-    """The element in the UI language: `NOT contact`, `MOVW output`, `TMR preset`."""
+def kind_text(use: Use, spelled: Spelling | None = None) -> str:
+    """The element in the UI language: `NOT contact`, `MOVW output`, `TMR preset` (the
+    instruction as the program's dialect names it: a Delta `TMR timer`, not `DVP.TMR`)."""
     texts = {
         UseKind.CONTACT: lambda: translate("CrossReference", "Contact"),
         UseKind.CONTACT_NOT: lambda: translate("CrossReference", "NOT contact"),
@@ -69,7 +72,9 @@ def kind_text(use: Use) -> str:
     }
     if use.kind in texts:
         return texts[use.kind]()
-    return f"{use.instruction} {use.parameter}"
+    spec = spec_for(use.instruction) if spelled is not None else None
+    name = spelled.name(spec) if spelled is not None and spec is not None else use.instruction
+    return f"{name} {use.parameter}"
 
 
 def access_text(access: Access) -> str:
@@ -153,7 +158,7 @@ class CrossReferenceModel(QAbstractTableModel):
         if column == 4:
             return unit_text(use.unit, self.symbols)
         if column == 5:
-            return kind_text(use)
+            return kind_text(use, self.spelled)
         return access_text(use.access)
 
 
@@ -218,6 +223,7 @@ class CrossReferenceDock(Retranslating, QDockWidget):
         """The program changed: the index is built anew when next needed."""
         self._xref = None
         self._stale_view = True
+        self.query.setPlaceholderText(xref_example(self.source.dialect()))  # another family
         if self.isVisible():
             self._refresh_timer.start()
 
@@ -245,6 +251,7 @@ class CrossReferenceDock(Retranslating, QDockWidget):
         text = self.query.text().strip()
         symbols = self.source.symbols()
         self.model.spelled = spelling(self.source.dialect())
+        self.query.setPlaceholderText(xref_example(self.source.dialect()))
         if not text:
             xref = self.cross_reference()
             self.model.show(xref.sorted_uses(), symbols)
@@ -270,12 +277,13 @@ class CrossReferenceDock(Retranslating, QDockWidget):
         self._fit_columns()
 
     def _summary_text(self, address: Address, uses: list[Use]) -> str:
+        written = self.model.spelled.address(address)  # a Delta T0, not T1000.0
         if not uses:
-            return translate("CrossReference", "{0} is not used in the program").format(address)
+            return translate("CrossReference", "{0} is not used in the program").format(written)
         reads = sum(1 for u in uses if u.access is not Access.WRITE)
         writes = sum(1 for u in uses if u.access is not Access.READ)
         return translate("CrossReference", "{0} — uses: {1} (read: {2}, written: {3})").format(
-            address, len(uses), reads, writes)
+            written, len(uses), reads, writes)
 
     def _fit_columns(self) -> None:
         """Columns as wide as their title and the rows measured (a huge list: the first
@@ -301,7 +309,7 @@ class CrossReferenceDock(Retranslating, QDockWidget):
             self.at_cursor_action.setStatusTip(translate(
                 "CrossReference", "List every place the program reads and writes the address"))
         self.field_label.setText(translate("CrossReference", "&Address or symbol:"))
-        self.query.setPlaceholderText(translate("CrossReference", "e.g. X21.7, R100, ESKIP"))
+        self.query.setPlaceholderText(xref_example(self.source.dialect()))
         self.model.headerDataChanged.emit(Qt.Orientation.Horizontal, 0,
                                           CrossReferenceModel.COLUMNS - 1)
         if self.model.uses:

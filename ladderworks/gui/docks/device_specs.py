@@ -177,9 +177,12 @@ class DeviceSpec(TableSpec):
         if self.table is Table.REGISTERS and column == 2:
             value = hex_value(text, row.width)
         else:
-            spelled = text.strip()
-            value = (hex_value(spelled[1:], row.width) if spelled.upper().startswith("H")
-                     else data_value(spelled, row.width))
+            spelled = text.strip()  # as WPLSoft: K100 (decimal), H1F (hex), or 100
+            if spelled.upper().startswith("H"):
+                value = hex_value(spelled[1:], row.width)
+            else:
+                value = data_value(spelled[1:] if spelled.upper().startswith("K") else spelled,
+                                   row.width)
         session.write(row.address, value, row.width)
 
     def insert(self, session: PlcSession, texts: list[str]) -> None:

@@ -269,7 +269,7 @@ class DiagnosticDock(Retranslating, QDockWidget):
         self.zoom_in_button.clicked.connect(lambda: self.view.zoom_by(1))
         self._show_zoom(self.view.zoom())
         self.setWidget(body)
-        self.setMinimumWidth(440)  # as the control screen: its tab group leaves the ladder room
+        self.setMinimumWidth(340)  # as the control screen: its tab group leaves the ladder room
         self.hits: list[tuple[int, Cell]] = []
         self.hit_index = -1
         self._monitoring = False

@@ -35,6 +35,7 @@ from ladderworks.core.modbus.server import (
     parse_endpoint,
 )
 from ladderworks.gui.diagnostic_texts import diagnostic_text
+from ladderworks.gui.family_words import family_title
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.retranslate import Retranslating
 
@@ -64,11 +65,12 @@ class ModbusDock(Retranslating, QDockWidget):
         self.address_label.setBuddy(self.address)
         form.addRow(self.address_label, self.address)
         self.map_label = QLabel(body)
-        map_row = QHBoxLayout()
         self.map_file = QLineEdit(body)  # empty: the dialect's own map
         self.map_file.setObjectName("modbusMapFile")
         self.map_label.setBuddy(self.map_file)
-        map_row.addWidget(self.map_file, 1)
+        form.addRow(self.map_label, self.map_file)  # the whole row: its placeholder reads whole
+        map_row = QHBoxLayout()
+        map_row.addStretch(1)
         self.map_choose = QPushButton(body)
         self.map_choose.setObjectName("modbusMapChoose")
         self.map_choose.clicked.connect(self.choose_map)
@@ -77,7 +79,7 @@ class ModbusDock(Retranslating, QDockWidget):
         self.map_default.setObjectName("modbusMapDefault")
         self.map_default.clicked.connect(self.map_file.clear)
         map_row.addWidget(self.map_default)
-        form.addRow(self.map_label, map_row)
+        form.addRow("", map_row)  # the buttons under the field
         self.served_label = QLabel(body)
         self.served = QLabel(body)
         self.served.setObjectName("modbusServedMap")
@@ -107,6 +109,7 @@ class ModbusDock(Retranslating, QDockWidget):
         self._timer.timeout.connect(self.show_figures)
         self.written.connect(self._publish_if_idle)
         session.program_loaded.connect(self._program_loaded)
+        session.family_changed.connect(lambda _family: self.retranslate())
         self.retranslate()
 
     @property
@@ -119,7 +122,8 @@ class ModbusDock(Retranslating, QDockWidget):
         self.setWindowTitle(translate("ModbusDock", "Modbus server"))
         self.address_label.setText(translate("ModbusDock", "&Address (host:port):"))
         self.map_label.setText(translate("ModbusDock", "&Map file (CSV):"))
-        self.map_file.setPlaceholderText(translate("ModbusDock", "the dialect's own map"))
+        self.map_file.setPlaceholderText(translate("ModbusDock", "the {0} map").format(
+            family_title(self.session.family)))
         self.map_choose.setText(translate("ModbusDock", "Choose…"))
         self.map_default.setText(translate("ModbusDock", "Dialect's map"))
         self.map_default.setToolTip(translate("ModbusDock", "Serve the program's dialect's"
@@ -197,8 +201,9 @@ class ModbusDock(Retranslating, QDockWidget):
         path = self.served_file if self.running else self.map_file.text().strip()
         if path:
             return translate("ModbusDock", "the file {0}").format(path)
-        return translate("ModbusDock", "the {0} dialect's own map").format(
-            program_dialect(self.session.run))
+        return translate("ModbusDock", "the {0} map").format(family_title(
+            program_dialect(self.session.run) if self.session.run.binary is not None
+            else self.session.family))
 
     def stop_server(self) -> None:
         """Close the clients' connections and stop listening."""

@@ -46,6 +46,7 @@ class OnlineMode(QObject):
         editor.context_actions.append(None)
         editor.context_actions.extend(self.actions[n] for n in ACTION_NAMES[1:])
         editor.model.undo_stack.indexChanged.connect(self._edited)
+        editor.model.document_reset.connect(self._another_program)  # open, new: off-line
         self.past: PlcSnapshot | None = None  # time travel: an earlier scan shown instead
         self.gate = SnapshotGate(editor, self._update, session)  # shown, in budget
         session.snapshot_ready.connect(self._on_snapshot)
@@ -122,6 +123,15 @@ class OnlineMode(QObject):
             self.set_online(False)
             self._say(translate("PlcOnline", "Off-line: the drawing was changed; it is no "
                                 "longer the program the PLC runs"))
+
+    def _another_program(self) -> None:
+        """Another program is shown (File › Open, New): the last one's power flow, values and
+        force marks leave the drawing with it."""
+        if self.online:
+            self.past = None
+            self.set_online(False)
+            self._say(translate("PlcOnline", "Off-line: another program is shown; it is not "
+                                "the program the PLC runs"))
 
     def _on_program(self, _binary: BinaryProgram) -> None:
         if self.online:

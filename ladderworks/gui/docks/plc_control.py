@@ -28,6 +28,7 @@ from ladderworks.gui.button_flow import ButtonFlow
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks.mnemonic_editor import MnemonicEditor
 from ladderworks.gui.document import bad_bytes_back, bad_bytes_shown
+from ladderworks.gui.forces_on_load import forces_on_load
 from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.locale_numbers import decimal
 from ladderworks.gui.os_errors import os_error_text
@@ -105,7 +106,7 @@ class PlcControlDock(Retranslating, QDockWidget):
             self.toolbar.add_action(action)
             self.control_actions[name] = action
         layout.addWidget(self.toolbar)
-        self.setMinimumWidth(440)
+        self.setMinimumWidth(340)  # its buttons wrap: a 1024-px screen keeps ~500 px of ladder
         state = QHBoxLayout()
         self.indicator = QLabel(body)
         self.indicator.setObjectName("plcRunIndicator")
@@ -312,8 +313,15 @@ class PlcControlDock(Retranslating, QDockWidget):
         self._timer.stop()
         self.editor.set_converted(self.editor.blockCount())
         assert self.result is not None and self.result.binary is not None
-        problems = self.session.load(self.result.binary, self._program)
-        if problems:
+        assert self._program is not None
+        origin = (self._program.dialect, str(self.path) if self.path else "control screen")
+        forces = forces_on_load(self, self.session, origin)
+        problems = [] if forces is None else self.session.load(
+            self.result.binary, self._program, origin=origin, keep_forces=forces == "keep")
+        if forces is None:
+            self.message.setText(translate("PlcControl", "Not loaded: the PLC keeps the "
+                                           "program it has"))
+        elif problems:
             self.message.setText(diagnostic_text(problems[0]))
         else:
             self.loaded_name = self.path.name if self.path else translate(

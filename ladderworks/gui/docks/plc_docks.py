@@ -9,6 +9,7 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow, QToolButton
 
 from ladderworks.core.il import Program
 from ladderworks.gui.console_menus import ConsoleMenus
+from ladderworks.gui.dock_tabs import WholeDockTitles
 from ladderworks.gui.docks.alarms import AlarmDock
 from ladderworks.gui.docks.ascii_output import AsciiOutputDock
 from ladderworks.gui.docks.bit_display import BitDisplayDock
@@ -72,6 +73,8 @@ def _tab(window: QMainWindow, docks: list[QDockWidget]) -> None:
 # joins the bottom PLC docks' tab group when one is opened
 SMALL_HEIGHT = 720
 TOOLS_MARGIN = 28  # px beside the widest tool button: the palette's margins and scroll bar
+RIGHT_SHARE = 45  # % of the window's width a right-hand PLC dock takes at most
+RIGHT_SHARE_SMALL = 33  # on a small screen (the ladder: ~500 of 1024 px, was 381)
 
 
 def _share_the_bottom(window: QMainWindow, dock: QDockWidget) -> None:
@@ -97,15 +100,20 @@ def _narrow_the_tools(window: QMainWindow) -> None:
     widest = max((button.sizeHint().width() for button in palette.findChildren(QToolButton)),
                  default=0)
     if widest and palette.width() > widest + TOOLS_MARGIN:
-        QTimer.singleShot(0, lambda: window.resizeDocks([palette], [widest + TOOLS_MARGIN],
-                                                        Qt.Orientation.Horizontal))
+        def narrow() -> None:
+            window.resizeDocks([palette], [widest + TOOLS_MARGIN], Qt.Orientation.Horizontal)
+            for titles in window.findChildren(WholeDockTitles):  # its tabs stay whole
+                titles.check_soon()
+
+        QTimer.singleShot(0, narrow)
 
 
 def _raise_when_shown(window: QMainWindow, dock: QDockWidget) -> None:
     """Its toggle brings a tabbed dock to the front, not only back into its group, and gives
     it a fair share of the window: a bottom dock at least a third of the height (a large
     screen has room for a readable chart), a right-hand dock at most 45 % of the width (the
-    ladder keeps the rest). A dock's minimum size still wins on a small screen."""
+    ladder keeps the rest; a third on a small screen). A dock's minimum size still wins on a
+    small screen."""
 
     def shown(checked: bool) -> None:
         if not checked:
@@ -117,7 +125,9 @@ def _raise_when_shown(window: QMainWindow, dock: QDockWidget) -> None:
             _narrow_the_tools(window)
         dock.raise_()
         third = window.height() // 3
-        widest = window.width() * 45 // 100
+        small = window.height() <= SMALL_HEIGHT
+        # a small screen's right-hand dock takes a third: the ladder keeps its coils in view
+        widest = window.width() * (RIGHT_SHARE_SMALL if small else RIGHT_SHARE) // 100
         if area == BOTTOM and window.height() <= SMALL_HEIGHT:
             # a third, not more: the ladder keeps the rest (once the tab group is laid out)
             QTimer.singleShot(0, lambda: window.resizeDocks([dock], [third],

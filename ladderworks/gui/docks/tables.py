@@ -9,19 +9,15 @@ PMC parameter: saved with the program (`PROGRAM.LAD.prm`).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+import re
+from collections.abc import Sequence
 
 from PySide6.QtCore import QCoreApplication, QPoint, Qt
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import (
     QAbstractItemView,
-    QComboBox,
-    QDialog,
-    QDialogButtonBox,
     QDockWidget,
-    QFormLayout,
     QLabel,
-    QLineEdit,
     QMenu,
     QTableView,
     QTabWidget,
@@ -35,7 +31,9 @@ from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.docks import snapshot_gate
 from ladderworks.gui.docks.device_specs import DeviceSpec, device_specs
 from ladderworks.gui.docks.snapshot_gate import SnapshotGate
-from ladderworks.gui.docks.table_entries import DATA_WIDTHS, ProgramUse, TableError, TableKind
+from ladderworks.gui.docks.table_cell_error import RetypeDelegate
+from ladderworks.gui.docks.table_entries import ProgramUse, TableError, TableKind
+from ladderworks.gui.docks.table_forms import DeviceAdder, InsertRowDialog
 from ladderworks.gui.docks.table_model import PlcTableModel
 from ladderworks.gui.docks.table_specs import Row, TableSpec, table_specs
 from ladderworks.gui.header_fit import fit_headers
@@ -44,71 +42,6 @@ from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import ui_is_turkish
 
 translate = QCoreApplication.translate
-
-
-class InsertRowDialog(QDialog):
-    """The INSERT form of a table: its fields, validated when OK is pressed."""
-
-    def __init__(
-        self,
-        kind: TableKind,
-        fields: list[str],
-        accept_texts: Callable[[list[str]], str | None],
-        parent: QWidget | None = None,
-    ) -> None:
-        super().__init__(parent)
-        self.setObjectName("plcTablesInsertDialog")
-        self.kind = kind
-        self._accept_texts = accept_texts
-        self.setWindowTitle(translate("PlcTables", "INSERT"))
-        layout = QVBoxLayout(self)
-        form = QFormLayout()
-        self.fields: list[QLineEdit | QComboBox] = []
-        for index, label in enumerate(fields):
-            field: QLineEdit | QComboBox
-            if kind is TableKind.DATA and index == 1:
-                field = QComboBox(self)
-                field.addItems([str(width) for width in DATA_WIDTHS])
-            else:
-                field = QLineEdit(self)
-            field.setObjectName(f"plcTablesField_{index}")
-            form.addRow(label, field)
-            self.fields.append(field)
-        layout.addLayout(form)
-        self.error = QLabel(self)
-        self.error.setObjectName("plcTablesFormError")
-        self.error.setStyleSheet("color:#c00000;")
-        self.error.setWordWrap(True)
-        layout.addWidget(self.error)
-        buttons = QDialogButtonBox(
-            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self
-        )
-        buttons.accepted.connect(self.try_accept)
-        buttons.rejected.connect(self.reject)
-        layout.addWidget(buttons)
-
-    def set_texts(self, texts: Sequence[str]) -> None:
-        """Fill the fields."""
-        for field, text in zip(self.fields, texts, strict=False):
-            if isinstance(field, QComboBox):
-                field.setCurrentText(text)
-            else:
-                field.setText(text)
-
-    def texts(self) -> list[str]:
-        """What the fields hold."""
-        return [
-            field.currentText() if isinstance(field, QComboBox) else field.text()
-            for field in self.fields
-        ]
-
-    def try_accept(self) -> None:
-        """OK: insert the row, or show why not and stay open."""
-        problem = self._accept_texts(self.texts())
-        if problem is None:
-            self.accept()
-        else:
-            self.error.setText(problem)
 
 
 class PlcTablesDock(Retranslating, QDockWidget):
@@ -143,6 +76,10 @@ class PlcTablesDock(Retranslating, QDockWidget):
             self.tables[kind] = self._make_view(kind, model, tabs)
             tabs.addTab(self.tables[kind], "")
         layout.addWidget(self.tabs, 1)
+        self.adder = DeviceAdder(body)  # any device, as WPLSoft's device monitor
+        self.adder.add_requested.connect(self.add_devices)
+        self.adder.hide()
+        layout.addWidget(self.adder)
         layout.addWidget(self.device_tabs, 1)
         self.dialect_note = QLabel(body)  # a dialect program without device tables
         self.dialect_note.setObjectName("plcTablesDialectNote")
@@ -185,6 +122,7 @@ class PlcTablesDock(Retranslating, QDockWidget):
             | QAbstractItemView.EditTrigger.AnyKeyPressed
         )
         table.horizontalHeader().setStretchLastSection(True)
+        table.setItemDelegate(RetypeDelegate(table, lambda: self._reason(model)))
         table.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
         table.customContextMenuRequested.connect(lambda pos: self._context_menu(kind, pos))
         model.modelReset.connect(lambda: self._fit_columns(kind))
@@ -233,6 +171,8 @@ class PlcTablesDock(Retranslating, QDockWidget):
         devices = dialect.device_tables() if dialect is not None else None
         self.tabs.setVisible(dialect is None)  # the tables are PMC parameters
         self.device_tabs.setVisible(devices is not None)  # WPLSoft's / WinProladder's
+        self.adder.setVisible(devices is not None)
+        self.adder.say("")
         self.dialect_note.setVisible(dialect is not None and devices is None)
         self.retranslate()  # the timer columns follow the program's dialect
 
@@ -281,6 +221,11 @@ class PlcTablesDock(Retranslating, QDockWidget):
             return None
         return diagnostic_text(model.last_error.diagnostic) if model.last_error else None
 
+    @staticmethod
+    def _reason(model: PlcTableModel) -> str:
+        """Why the model refused the last value typed, translated ("" when it did not)."""
+        return diagnostic_text(model.last_error.diagnostic) if model.last_error else ""
+
     def _refused(self, error: TableError) -> None:
         self._say(diagnostic_text(error.diagnostic), error=True)
 
@@ -298,6 +243,30 @@ class PlcTablesDock(Retranslating, QDockWidget):
         if error is not None:
             return diagnostic_text(error.diagnostic)
         self._say("")
+        return None
+
+    def add_devices(self, text: str) -> str | None:
+        """Add the devices typed (`D500`, `T5`, `D0-D9`, several with commas) each to the
+        table that holds it, that table shown; the reason (under the field) when refused."""
+        device_kinds = [k for k, spec in self.specs.items() if isinstance(spec, DeviceSpec)]
+        for item in (part for part in re.split(r"[,;\s]+", text.strip()) if part):
+            letter = re.match(r"[A-Za-z]*", item).group(0).upper()  # type: ignore[union-attr]
+            kind = next((k for k in device_kinds if letter in self._letters(k)), None)
+            if kind is None:
+                letters = [ch for k in device_kinds for ch in self._letters(k)]
+                problem = translate("PlcTables", "'{0}' is not a device of these tables (use "
+                                    "{1}); watch a bit in the bit display").format(
+                                        item, ", ".join(dict.fromkeys(letters)))
+                self.adder.say(problem)
+                return problem
+            error = self.models[kind].run("insert", [item, "", "", ""])
+            if error is not None:
+                problem = diagnostic_text(error.diagnostic)
+                self.adder.say(problem)
+                return problem
+            self.device_tabs.setCurrentWidget(self.tables[kind])
+        self.adder.say("")
+        self.adder.field.clear()
         return None
 
     def delete_row(self, kind: TableKind, row: int) -> str | None:
@@ -367,6 +336,7 @@ class PlcTablesDock(Retranslating, QDockWidget):
             TableKind.REGISTERS: translate("PlcTables", "Registers ({0})").format(
                 ", ".join(self._letters(TableKind.REGISTERS)) or "D"),
         }
+        self.adder.retranslate()
         for kind in self.specs:
             tabs = self._tabs_of(kind)
             tabs.setTabText(tabs.indexOf(self.tables[kind]), titles[kind])

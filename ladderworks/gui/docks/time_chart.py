@@ -33,6 +33,7 @@ from ladderworks.gui.docks.bus_lane import BusLane
 from ladderworks.gui.docks.chart_items import YieldingAxis, YieldingCurve, YieldingLocaleAxis
 from ladderworks.gui.docks.snapshot_gate import SnapshotGate, UpdateBudget
 from ladderworks.gui.docks.trace_record import TracedSignal, TraceRecord, parse_traced
+from ladderworks.gui.family_words import chart_example, chart_hint
 from ladderworks.gui.files import atomic_write
 from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.os_errors import os_error_text
@@ -167,6 +168,8 @@ class TimeChartDock(Retranslating, QDockWidget):
         session.snapshot_ready.connect(self._take_samples)
         self.visibilityChanged.connect(lambda _shown: self.gate.flush())
         session.program_loaded.connect(self._on_program_loaded)
+        session.family_changed.connect(lambda _family: self.signals_edit.setPlaceholderText(
+            chart_example(self.session.family)))
         trace_files.add_actions(self)  # LADDER-III export and trace import
         self.retranslate()
         self._update_actions()
@@ -177,9 +180,7 @@ class TimeChartDock(Retranslating, QDockWidget):
         """The lanes typed in the box (None and a message when one is wrong or none is given)."""
         texts = [text for text in _SPLIT.split(self.signals_edit.text().strip()) if text]
         if not texts:
-            self.say(lambda: translate(
-                "TimeChart", "Type the bits to watch, e.g. R1.4 R1.7 (a value: D10:2)"),
-                error=True)
+            self.say(lambda: chart_hint(self.session.family), error=True)
             return None
         signals: list[TracedSignal] = []
         for text in texts:
@@ -531,7 +532,7 @@ class TimeChartDock(Retranslating, QDockWidget):
         """Set the texts in the current UI language."""
         self.setWindowTitle(translate("TimeChart", "PLC time chart"))
         self.signals_label.setText(translate("TimeChart", "Signals:"))
-        self.signals_edit.setPlaceholderText(translate("TimeChart", "e.g. R1.4 R1.7 D10:2"))
+        self.signals_edit.setPlaceholderText(chart_example(self.session.family))
         self.period_label.setText(translate("TimeChart", "Sampling time:"))
         for name, text in (
             ("action_time_chart_start", translate("TimeChart", "START")),

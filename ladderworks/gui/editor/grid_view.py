@@ -130,6 +130,8 @@ class GridView(QGraphicsView):
         self.selection = None
         self.cursor_cell = (0, 0, 0)
         self._update_scene_rect()
+        self.verticalScrollBar().setValue(0)  # another program starts at its top left
+        self.horizontalScrollBar().setValue(0)
         self.place_overlays()
 
     def _on_inserted(self, first: int, count: int) -> None:

@@ -70,7 +70,9 @@ class InlineEdit(QObject):
         editor.ensureVisible(rect, 20, 20)
         top_left = editor.mapFromScene(rect.topLeft())
         width = int(rect.width() * editor.zoom())
-        self.line_edit.setGeometry(top_left.x(), top_left.y(), max(width, 140), 26)
+        width = min(max(width, 140), editor.viewport().width())
+        left = max(min(top_left.x(), editor.viewport().width() - width), 0)  # the coil column
+        self.line_edit.setGeometry(left, top_left.y(), width, 26)  # stays in view by a dock
         self.line_edit.setPlaceholderText(placeholder)
         self.line_edit.setText(text)
         self.line_edit.selectAll()
@@ -108,9 +110,18 @@ class InlineEdit(QObject):
     def _refuse(self, diagnostic: Diagnostic) -> None:
         text = diagnostic_text(diagnostic)
         self.message.setText(text)
+        room = self.editor.viewport().width()
+        self.message.setMinimumWidth(0)
+        self.message.setMaximumWidth(16777215)
+        self.message.setWordWrap(False)
         self.message.adjustSize()
+        if self.message.width() > room:  # a narrow ladder: the text wraps, whole
+            self.message.setWordWrap(True)
+            self.message.setFixedWidth(room)
+            self.message.adjustSize()
         geometry = self.line_edit.geometry()
-        self.message.move(geometry.left(), geometry.bottom() + 2)
+        left = max(min(geometry.left(), room - self.message.width()), 0)  # not under a dock
+        self.message.move(left, geometry.bottom() + 2)
         self.message.show()
         self.message.raise_()
         self.editor.message.emit(text)

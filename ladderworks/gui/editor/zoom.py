@@ -1,18 +1,22 @@
 """Fit width: the zoom that keeps the coil column and the right rail of the networks in view
-(all but a few unusually wide ones, never below a readable zoom), kept on resize."""
+(all but a few unusually wide ones), kept on resize; below a readable zoom it says so."""
 
 from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication, QEvent, QObject, QRectF, Signal
 from PySide6.QtWidgets import QStyle
 
+from ladderworks.core.ladder.model import LadderNetwork
 from ladderworks.gui.editor.geometry import network_width, typical_width
+from ladderworks.gui.editor.grid_view import ZOOM_MIN
+from ladderworks.gui.editor.ladder_model import is_blank
 from ladderworks.gui.editor.view import LadderEditor
 
 translate = QCoreApplication.translate
 
 SHARE_FITTED = 0.95  # of the networks fitted whole: one 1,816-px network does not shrink all
-READABLE = 0.6  # fit width zooms no smaller: addresses stay readable, wider networks scroll
+READABLE = 0.6  # below it addresses are hard to read: fit width still fits, and says so
+SMALLEST = ZOOM_MIN  # fit width zooms no smaller (the zoom range's end): a narrower view scrolls
 NARROWEST = 808.0  # the scene's least width: a small program is not blown up past it
 MARGIN = 12.0  # the scene's margins left and right of a network
 
@@ -45,17 +49,34 @@ class FitWidth(QObject):
         scroll = editor.style().pixelMetric(QStyle.PixelMetric.PM_ScrollBarExtent, None, editor)
         return max(editor.width() - 2 * editor.frameWidth() - scroll - 2, 1)
 
-    def factor(self) -> float:
+    def _drawn(self) -> list[LadderNetwork]:
+        """The networks to fit: the blank one at the end to draw in is none of them."""
+        networks = self._editor.networks
+        return networks[:-1] if networks and is_blank(networks[-1]) else list(networks)
+
+    def needed(self) -> float:
         """The zoom at which the typical network's width fills the view: the widest of 95 % of
-        the networks (all of a small program), no smaller than READABLE."""
-        typical = typical_width(self._editor.networks, SHARE_FITTED) + MARGIN
-        return max(self._room() / max(typical, NARROWEST), READABLE)
+        the networks (all of a small program)."""
+        typical = typical_width(self._drawn(), SHARE_FITTED) + MARGIN
+        return self._room() / max(typical, NARROWEST)
+
+    def factor(self) -> float:
+        """The zoom fit width sets: what the view needs, no smaller than SMALLEST."""
+        return max(self.needed(), SMALLEST)
 
     def describe(self) -> str:
         """What fit width fitted, in the UI language ("" while it is off)."""
         if not self.enabled:
             return ""
         fitted, total = self.fitted
+        zoom = round(100 * self._editor.zoom())
+        if self.needed() < SMALLEST - 1e-3:
+            return translate("FitWidth", "Fit width: the ladder is too narrow ({0} px) for its "
+                             "networks even at {1} %: close or narrow a dock, or widen the "
+                             "window").format(self._room(), zoom)
+        if fitted >= total and self._editor.zoom() < READABLE - 1e-3:
+            return translate("FitWidth", "Fit width: every network fits at {0} % (a dock "
+                             "closed reads larger)").format(zoom)
         if fitted >= total:
             return translate("FitWidth", "Fit width: every network fits the window's width")
         return translate("FitWidth", "Fit width: {0} of {1} networks fit the window's width; "
@@ -68,7 +89,7 @@ class FitWidth(QObject):
         if abs(factor - self._editor.zoom()) > 1e-3:
             self._editor.set_zoom(factor)
         room = self._room() / self._editor.zoom() + 0.5
-        networks = self._editor.networks
+        networks = self._drawn()
         fits = sum(1 for network in networks if network_width(network) + MARGIN <= room)
         self.fitted = (fits, len(networks))
         self.fitted_changed.emit()

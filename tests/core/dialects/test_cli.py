@@ -90,8 +90,8 @@ def test_xref_in_delta_spelling(capsys) -> None:
     capsys.readouterr()
     assert main(["xref", str(EXAMPLES / "counter_reset.txt"), "C0"]) == 0
     rows = capsys.readouterr().out.splitlines()[1:]
-    assert [(row.split()[6], row.split()[-1]) for row in rows] == [
-        ("CNT", "read+write"), ("RST", "write")]
+    assert [(row.split()[6], row.split()[-1]) for row in rows] == [  # LD C0: its contact
+        ("CNT", "read+write"), ("LD", "read"), ("RST", "write")]
 
 
 def test_find_and_replace_take_delta_devices() -> None:

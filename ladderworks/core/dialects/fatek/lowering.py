@@ -188,7 +188,11 @@ class ProgramLowering(StackLowering):
         kind = "T" if record.mnemonic == "TMR" else "C"
         try:
             device = parse_device(record.operand, bit=True)
-        except DeviceError:
+        except DeviceError as error:
+            if (error.code == "fatek-device-range"
+                    and error.text.strip().upper().rstrip("0123456789 ") == kind):
+                raise refused(record, "fatek-device-range", text=error.text,
+                              range=error.detail) from None  # T300: the range, not "use T"
             device = Device("", -1)
         if device.kind != kind:
             raise refused(record, "fatek-device-kind", text=record.operand or "?",
