@@ -16,6 +16,7 @@ CHECKOUT = Path(__file__).resolve().parent.parent
 PACKAGE_DATA: dict[str, str] = {"resources": "resources", "translations": "translations",
                                 "help": "docs"}
 HELP_PAGES: dict[str, str] = {"en": "instructions.md", "tr": "instructions_tr.md"}
+DIALECT_HELP = ("delta", "fatek")  # docs/instructions_<dialect>.md and its _tr.md
 
 
 def data_dir(kind: str) -> Path:
@@ -59,6 +60,19 @@ def translations_dir() -> Path:
 def help_page(language: str) -> Path:
     """The instruction reference in `language` (English when there is none)."""
     return data_dir("help") / HELP_PAGES.get(language, HELP_PAGES["en"])
+
+
+def dialect_help_pages(language: str) -> list[str]:
+    """The file names of the dialects' own instruction pages in `language`."""
+    suffix = "_tr" if language == "tr" else ""
+    return [f"instructions_{name}{suffix}.md" for name in DIALECT_HELP]
+
+
+def help_pages(language: str) -> list[Path]:
+    """The instruction reference in `language` and each dialect's own page beside it."""
+    main = help_page(language)
+    return [main, *(main.parent / name for name in dialect_help_pages(
+        "tr" if main.name == HELP_PAGES["tr"] else "en"))]
 
 
 # The same folders resolved once, for the callers that name them as constants.

@@ -49,7 +49,7 @@ def read_by_code() -> set[str]:
     from ladderworks.core.signals import SIGNAL_FILES
     from ladderworks.gui.editor.interactions import INTERACTIONS
     from ladderworks.gui.settings import LANGUAGES
-    from ladderworks.paths import HELP_PAGES, alarm_file, resources_dir
+    from ladderworks.paths import HELP_PAGES, alarm_file, dialect_help_pages, resources_dir
 
     icons = {interaction.icon_name for interaction in INTERACTIONS}
     for source in (CHECKOUT / PACKAGE).rglob("*.py"):
@@ -60,6 +60,8 @@ def read_by_code() -> set[str]:
     names.update(f"resources/icons/{name}.svg" for name in icons)
     names.update(f"translations/ladderworks_{language}.qm" for language in LANGUAGES)
     names.update(f"help/{page}" for page in HELP_PAGES.values())
+    names.update(f"help/{page}" for language in HELP_PAGES
+                 for page in dialect_help_pages(language))
     return names
 
 

@@ -627,756 +627,776 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <source>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</source>
+        <translation>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <source>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</source>
+        <translation>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <source>END ends the program and stays its last network: draw new networks above it</source>
+        <translation>END ends the program and stays its last network: draw new networks above it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>a line must be horizontal or vertical</source>
         <translation>a line must be horizontal or vertical</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>the clipboard does not hold ladder elements</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} and {replacement}: replace a bit with a bit, a byte with a byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} would be replaced with itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>{name} with nothing pushed on the stack</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} writes to {address}, an input area</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name} writes to {address}, part of the read-only R9000-R9005</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>JMP without a matching JMPE</source>
         <translation>JMP without a matching JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
         <source>JMPE without a JMP before it</source>
         <translation>JMPE without a JMP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>COM without a matching COME</source>
         <translation>COM without a matching COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>COME without a COM before it</source>
         <translation>COME without a COM before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>{name} without a logic result before it (start with RD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>coil {address} is written more than once</source>
         <translation>coil {address} is written more than once</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>logic at the end of the program is not written to any coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>not a LadderWorks binary: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also on line {line})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>coil {address} is written by WRT and by SET/RST (also in network {other})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>LBL inside a JMP or COM range</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>no LBL L{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>label L{label} is defined twice in this program unit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="158"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC is only allowed inside a subprogram</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>subprogram P{program} does not exist</source>
         <translation>subprogram P{program} does not exist</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="160"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>calling P{program} here makes a subprogram call itself</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>calls through P{program} nest deeper than {limit} subprograms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>SP without a matching SPE</source>
         <translation>SP without a matching SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>SPE without an SP before it</source>
         <translation>SPE without an SP before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>subprogram P{program} is defined twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>only subprograms (SP ... SPE) may follow the first SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} cannot end level {level}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
         <source>instruction after END, the end of the program</source>
         <translation>instruction after END, the end of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>a backward jump to L{label} repeated more than {limit} times in one scan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>alarm number {number} is out of range (000 to 799)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>message {number} appears again; the one on line {first} is used</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>message {number} has no text</source>
         <translation>message {number} has no text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} is not implemented in the simulator yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII format: the text opened by {quote} is never closed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII format: a repeat count must be 1 to 999, found {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII format: text after END: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII format: END is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; is not a Fatek instruction</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
         <source>{name} needs a device</source>
         <translation>{name} needs a device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; is not a Fatek device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} cannot take &apos;{text}&apos; (use {kinds})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; is out of range ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} with nothing before it: a network starts with ORG</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} needs two blocks: start the second one with LD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} is set twice in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>a network has at most {limit} TR points</source>
         <translation>a network has at most {limit} TR points</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>LD TR{number} before OUT TR{number} in this network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} on the left rail: put ORG SHORT before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="221"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="223"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number} is not a Fatek function LadderWorks knows</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="225"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: the operand line {param} is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="227"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} takes no more operands, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} is kept and drawn but not simulated: its outputs stay 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos; is not the time base of {name} ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: no function output here (FO0-FO7 after a box)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
         <source>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</source>
         <translation>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
         <source>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</source>
         <translation>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
         <source>&apos;{text}&apos; is not a Fatek device: the line is skipped</source>
         <translation>&apos;{text}&apos; is not a Fatek device: the line is skipped</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
         <source>the comments were read in code page {chosen}; they read as {others} too: check the names</source>
         <translation>the comments were read in code page {chosen}; they read as {others} too: check the names</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</source>
         <translation>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
         <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
         <translation>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
         <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
         <translation>the .pdw file is cut short: its record at byte {offset} runs past the end</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
         <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
         <translation>the .pdw file is damaged: the record at byte {offset} fails its checksum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
         <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
         <translation>the .pdw file is damaged: the record at byte {offset} is malformed</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>the .pdw file holds no program (checked up to byte {offset})</source>
         <translation>the .pdw file holds no program (checked up to byte {offset})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
         <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
         <translation>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
         <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
         <translation>the .pdw file is damaged: its program image is wrong at byte {offset}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
         <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
         <translation>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
         <translation>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
         <translation>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
         <source>the program ends inside an instruction at byte {offset}</source>
         <translation>the program ends inside an instruction at byte {offset}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
+        <translation>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; is not a device (use {letters} with a number)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; is out of range ({first} to {last})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; is not a bit device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; is not a word device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; is not listed in this table (use {letters})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; is not a K or H constant</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name} is a {dialect} instruction the simulator does not run</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>subroutine without its SRET (before the next pointer or END)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>no pointer P{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>no subroutine P{program} after FEND for this CALL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} without a logic result before it (start with LD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
         <source>this pointer P number is used twice</source>
         <translation>this pointer P number is used twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>byte {offset}: the program does not end with END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="357"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>byte {offset} (step {step}): instructions after END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="360"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>byte {offset}: a text section of the .dvp project is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>byte {offset}: a device comment line is not DEVICE$&amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>the project holds no program: no compiled instruction list and an empty ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>the project was saved without compiling: its program is read from its ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
         <source>NEXT without a FOR before it</source>
         <translation>NEXT without a FOR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MC or STL without its MCR or RET after it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>MCR or RET without its MC or STL before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
         <source>FOR without its NEXT</source>
         <translation>FOR without its NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="381"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="383"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="396"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>a second PROGRAM line (the one on line {first} counts)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>the program &apos;{path}&apos; cannot be loaded: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="394"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="416"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="420"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="409"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="423"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="415"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="427"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="430"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="420"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="422"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{count} addresses from {start} run past Modbus address 65535</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="424"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="426"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} cannot be written over Modbus: the access must be r</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="428"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="440"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} are bits: a width is for registers only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="430"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="442"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="444"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end} overlap the row on line {other}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="446"/>
         <source>the map has no row</source>
         <translation>the map has no row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="435"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
@@ -1753,17 +1773,22 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="146"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="98"/>
+        <source>Contacts, coils and blocks</source>
+        <translation>Contacts, coils and blocks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/help_browser.py" line="202"/>
         <source>No reference entry for this instruction.</source>
         <translation>No reference entry for this instruction.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="158"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="214"/>
         <source>Instruction reference</source>
         <translation>Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="159"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="215"/>
         <source>Search, e.g. TMR</source>
         <translation>Search, e.g. TMR</translation>
     </message>
@@ -1771,7 +1796,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="103"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
@@ -1781,32 +1806,32 @@
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="37"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="112"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="127"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="39"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="151"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="166"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="170"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -1816,28 +1841,28 @@
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="132"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="48"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="49"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="53"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="54"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="93"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="108"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
@@ -1847,17 +1872,17 @@
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="297"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="312"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="309"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="324"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="319"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="337"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
@@ -1879,11 +1904,6 @@
 </context>
 <context>
     <name>MainWindow</name>
-    <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="70"/>
-        <source>&amp;New</source>
-        <translation>&amp;New</translation>
-    </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="72"/>
         <source>&amp;Open...</source>
@@ -1918,6 +1938,11 @@
         <location filename="../ladderworks/gui/actions_table.py" line="84"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;properties...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="70"/>
+        <source>&amp;New...</source>
+        <translation>&amp;New...</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="82"/>
@@ -2107,218 +2132,218 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="202"/>
+        <location filename="../ladderworks/gui/main_window.py" line="203"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="429"/>
+        <location filename="../ladderworks/gui/main_window.py" line="433"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="441"/>
+        <location filename="../ladderworks/gui/main_window.py" line="445"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="448"/>
+        <location filename="../ladderworks/gui/main_window.py" line="452"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
-        <location filename="../ladderworks/gui/main_window.py" line="276"/>
-        <location filename="../ladderworks/gui/main_window.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="506"/>
+        <location filename="../ladderworks/gui/main_window.py" line="277"/>
+        <location filename="../ladderworks/gui/main_window.py" line="447"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="132"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="112"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
         <source>{0} was changed by another program</source>
         <translation>{0} was changed by another program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="123"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="133"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="152"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="170"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="179"/>
+        <source>PLC family</source>
+        <translation>PLC family</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="197"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="215"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="153"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="171"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="477"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="198"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="216"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="522"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="158"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="158"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="248"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="256"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="294"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="302"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="352"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="294"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="466"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="363"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listings (*.lst *.LST);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="521"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="538"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="376"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="213"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
         <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="381"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="362"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="367"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="412"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="413"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
-        <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
-        <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="381"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="382"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="404"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="449"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="466"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="470"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="405"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="450"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="474"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="403"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="415"/>
+        <location filename="../ladderworks/gui/main_window.py" line="419"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="435"/>
+        <location filename="../ladderworks/gui/main_window.py" line="439"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="485"/>
+        <location filename="../ladderworks/gui/main_window.py" line="489"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="488"/>
+        <location filename="../ladderworks/gui/main_window.py" line="492"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="520"/>
+        <location filename="../ladderworks/gui/main_window.py" line="525"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="521"/>
+        <location filename="../ladderworks/gui/main_window.py" line="526"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2347,6 +2372,36 @@
         <location filename="../ladderworks/gui/symbol_import.py" line="74"/>
         <source>{0} symbols imported from {1}</source>
         <translation>{0} symbols imported from {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="46"/>
+        <source>All files (*)</source>
+        <translation>All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="49"/>
+        <source>Delta DVP instruction lists (*.txt *.TXT)</source>
+        <translation>Delta DVP instruction lists (*.txt *.TXT)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="52"/>
+        <source>Fatek WinProladder listings (*.lst *.LST)</source>
+        <translation>Fatek WinProladder listings (*.lst *.LST)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="54"/>
+        <source>Ladder programs (*.LAD *.lad)</source>
+        <translation>Ladder programs (*.LAD *.lad)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="61"/>
+        <source>The program has errors: fix them first (see the error list)</source>
+        <translation>The program has errors: fix them first (see the error list)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="65"/>
+        <source>The program cannot become a {0} program: {1}</source>
+        <translation>The program cannot become a {0} program: {1}</translation>
     </message>
 </context>
 <context>
@@ -2494,6 +2549,34 @@
         <location filename="../ladderworks/gui/editor/name_menu.py" line="69"/>
         <source>Element &amp;names</source>
         <translation>Element &amp;names</translation>
+    </message>
+</context>
+<context>
+    <name>NewProgram</name>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="77"/>
+        <source>New program</source>
+        <translation>New program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="84"/>
+        <source>A family&apos;s models differ in their ranges; the Delta DVP series (ES2, EX2, SS2, SA2, SX2, SE) and the Fatek FBs series share one device map here (docs/dialects.md).</source>
+        <translation>A family&apos;s models differ in their ranges; the Delta DVP series (ES2, EX2, SS2, SA2, SX2, SE) and the Fatek FBs series share one device map here (docs/dialects.md).</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="92"/>
+        <source>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</source>
+        <translation>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="97"/>
+        <source>PLC family</source>
+        <translation>PLC family</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="98"/>
+        <source>Model</source>
+        <translation>Model</translation>
     </message>
 </context>
 <context>
@@ -3562,52 +3645,52 @@
 <context>
     <name>ProgramProperties</name>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="48"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="53"/>
         <source>Machine-tool builder</source>
         <translation>Machine-tool builder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="49"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="54"/>
         <source>Machine-tool name</source>
         <translation>Machine-tool name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="50"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="55"/>
         <source>PMC &amp; NC type</source>
         <translation>PMC &amp; NC type</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="51"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="56"/>
         <source>Program number</source>
         <translation>Program number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="52"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
         <source>Edition</source>
         <translation>Edition</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="53"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
         <source>Drawing number</source>
         <translation>Drawing number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="54"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
         <source>Date</source>
         <translation>Date</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="55"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
         <source>Designed by</source>
         <translation>Designed by</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="56"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="61"/>
         <source>ROM written by</source>
         <translation>ROM written by</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="62"/>
         <source>Remarks</source>
         <translation>Remarks</translation>
     </message>
@@ -3622,171 +3705,171 @@
         <translation>FANUC Series 30i-A PMC (memory-B)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
         <source>yes</source>
         <translation>yes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
         <source>no</source>
         <translation>no</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="83"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="88"/>
         <source>File</source>
         <translation>File</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="84"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="89"/>
         <source>(not saved)</source>
         <translation>(not saved)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="144"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="180"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="90"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="186"/>
         <source>PMC model</source>
         <translation>PMC model</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="86"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="91"/>
         <source>Encoding</source>
         <translation>Encoding</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="87"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="92"/>
         <source>Byte order mark</source>
         <translation>Byte order mark</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="88"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="93"/>
         <source>Line ends</source>
         <translation>Line ends</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="89"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="94"/>
         <source>Framed in %@A … %@E</source>
         <translation>Framed in %@A … %@E</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="90"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="95"/>
         <source>Networks</source>
         <translation>Networks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="91"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="96"/>
         <source>Steps</source>
         <translation>Steps</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="93"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="98"/>
         <source>Symbols (%@2)</source>
         <translation>Symbols (%@2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="95"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="100"/>
         <source>Messages (%@4)</source>
         <translation>Messages (%@4)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="174"/>
-        <source>The PMC the program is written for: its address map and the ranges of its instructions. Kept in the file as a comment line the seed&apos;s tools skip.</source>
-        <translation>The PMC the program is written for: its address map and the ranges of its instructions. Kept in the file as a comment line the seed&apos;s tools skip.</translation>
+        <location filename="../ladderworks/gui/program_properties.py" line="180"/>
+        <source>The PLC the program is written for: its address map and the ranges of its instructions. A model of another PLC family is taken when every instruction reads back the same in that family&apos;s text.</source>
+        <translation>The PLC the program is written for: its address map and the ranges of its instructions. A model of another PLC family is taken when every instruction reads back the same in that family&apos;s text.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="190"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="197"/>
         <source>Program properties</source>
         <translation>Program properties</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="199"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="206"/>
         <source>General</source>
         <translation>General</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="200"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
         <source>Property</source>
         <translation>Property</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="201"/>
         <location filename="../ladderworks/gui/program_properties.py" line="208"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
         <source>Value</source>
         <translation>Value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="203"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="210"/>
         <source>Title (%@1)</source>
         <translation>Title (%@1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
         <source>Item</source>
         <translation>Item</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
         <source>Meaning</source>
         <translation>Meaning</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="205"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
         <source>Text</source>
         <translation>Text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="214"/>
         <source>System parameters (%@0)</source>
         <translation>System parameters (%@0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="210"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
         <source>I/O modules (%@5)</source>
         <translation>I/O modules (%@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
         <source>Group</source>
         <translation>Group</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="219"/>
         <source>Base</source>
         <translation>Base</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="219"/>
         <source>Slot</source>
         <translation>Slot</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="213"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="220"/>
         <source>Module</source>
         <translation>Module</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="216"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="223"/>
         <source>Sections</source>
         <translation>Sections</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="224"/>
         <source>Header</source>
         <translation>Header</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="224"/>
         <source>Lines</source>
         <translation>Lines</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="225"/>
         <source>First line</source>
         <translation>First line</translation>
     </message>
@@ -4206,72 +4289,77 @@
         <translation>PNG pictures (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="526"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="519"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
         <source>PLC time chart</source>
         <translation>PLC time chart</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="527"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
         <source>Signals:</source>
         <translation>Signals:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="529"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
         <source>Sampling time:</source>
         <translation>Sampling time:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="531"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="532"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="540"/>
         <source>CLEAR</source>
         <translation>CLEAR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="535"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
         <source>Zoom in</source>
         <translation>Zoom in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
         <source>Zoom out</source>
         <translation>Zoom out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="537"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="550"/>
         <source>Export the samples as CSV</source>
         <translation>Export the samples as CSV</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="546"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="553"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Save the chart as a PNG picture</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="548"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="555"/>
         <source>time (ms)</source>
         <translation>time (ms)</translation>
     </message>

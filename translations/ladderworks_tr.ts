@@ -207,12 +207,12 @@
     <message>
         <location filename="../ladderworks/gui/docks/bit_display.py" line="352"/>
         <source>Byte</source>
-        <translation>Byte</translation>
+        <translation>Bayt</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/bit_display.py" line="353"/>
         <source>Hex</source>
-        <translation>Hex</translation>
+        <translation>Onaltılık</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/bit_display.py" line="354"/>
@@ -398,7 +398,7 @@
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="30"/>
         <source>&apos;{text}&apos;: byte number out of range for area {area} ({ranges})</source>
-        <translation>&apos;{text}&apos;: {area} alanı için byte numarası sınır dışı ({ranges})</translation>
+        <translation>&apos;{text}&apos;: {area} alanı için bayt numarası sınır dışı ({ranges})</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="32"/>
@@ -413,7 +413,7 @@
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="35"/>
         <source>&apos;{text}&apos;: a byte address is needed here, without a bit</source>
-        <translation>&apos;{text}&apos;: burada bitsiz bir byte adresi gerekir</translation>
+        <translation>&apos;{text}&apos;: burada bitsiz bir bayt adresi gerekir</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="37"/>
@@ -583,7 +583,7 @@
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="105"/>
         <source>this edge or comparison contact has no form for this place in the dialect (put it in series after another contact)</source>
-        <translation>bu kenar ya da karşılaştırma kontağının lehçede bu yer için bir biçimi yok (onu başka bir kontaktan sonra seri koyun)</translation>
+        <translation>bu kenar ya da karşılaştırma kontağının bu PLC ailesinde bu yer için bir biçimi yok (onu başka bir kontaktan sonra seri koyun)</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="108"/>
@@ -627,756 +627,776 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="123"/>
+        <source>the program&apos;s {count} symbols (%@2) have no place in that family&apos;s files: the program keeps its family</source>
+        <translation>programın {count} sembolünün (%@2) o ailenin dosyalarında yeri yok: program kendi ailesinde kalır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <source>instruction {step} ({name}) has no counterpart in that family: the program keeps its family</source>
+        <translation>{step}. komutun ({name}) o ailede karşılığı yok: program kendi ailesinde kalır</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <source>END ends the program and stays its last network: draw new networks above it</source>
+        <translation>END programı bitirir ve son ağ olarak kalır: yeni ağları onun üstüne çizin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="132"/>
         <source>a line must be horizontal or vertical</source>
         <translation>çizgi yatay veya dikey olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="124"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
         <source>the clipboard does not hold ladder elements</source>
         <translation>panoda ladder elemanı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="126"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
         <source>&apos;{text}&apos; is not an address or a symbol of the program: type one to replace it</source>
         <translation>&apos;{text}&apos; programın bir adresi veya sembolü değil: değiştirmek için bir adres veya sembol yazın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="129"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
         <source>{found} and {replacement}: replace a bit with a bit, a byte with a byte</source>
         <translation>{found} ve {replacement}: bit ile bit, bayt ile bayt değiştirilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="131"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
         <source>{found} would be replaced with itself</source>
         <translation>{found} kendisiyle değiştirilmiş olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="133"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="142"/>
         <source>{name} with nothing pushed on the stack</source>
         <translation>yığına hiçbir şey itilmeden {name}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="134"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
         <source>{name} writes to {address}, an input area</source>
         <translation>{name} bir giriş alanı olan {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="135"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
         <source>{name} writes to {address}, part of the read-only R9000-R9005</source>
         <translation>{name}, salt okunur R9000-R9005 alanındaki {address} adresine yazıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="137"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
         <source>JMP without a matching JMPE</source>
         <translation>eşi olan JMPE olmadan JMP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="138"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="147"/>
         <source>JMPE without a JMP before it</source>
         <translation>önünde JMP olmadan JMPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="139"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
         <source>COM without a matching COME</source>
         <translation>eşi olan COME olmadan COM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="140"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="149"/>
         <source>COME without a COM before it</source>
         <translation>önünde COM olmadan COME</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="141"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
         <source>{name} without a logic result before it (start with RD)</source>
         <translation>önünde mantık sonucu olmadan {name} (RD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="143"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="152"/>
         <source>coil {address} is written more than once</source>
         <translation>{address} çıkışı birden fazla yazılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="144"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
         <source>logic at the end of the program is not written to any coil</source>
         <translation>programın sonundaki mantık hiçbir çıkışa yazılmıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="146"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="155"/>
         <source>not a LadderWorks binary: {reason}</source>
         <translation>LadderWorks binary dosyası değil: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="148"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="157"/>
         <source>coil {address} is written by WRT and by SET/RST (also on line {line})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {line}. satırda)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="150"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
         <source>coil {address} is written by WRT and by SET/RST (also in network {other})</source>
         <translation>{address} çıkışı hem WRT hem SET/RST ile yazılıyor (ayrıca {other}. devrede)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="153"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
         <source>LBL inside a JMP or COM range</source>
         <translation>JMP veya COM aralığı içinde LBL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="154"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="163"/>
         <source>no LBL L{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde LBL L{label} yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="156"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
         <source>label L{label} is defined twice in this program unit</source>
         <translation>L{label} etiketi bu program biriminde iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="158"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
         <source>JMPC is only allowed inside a subprogram</source>
         <translation>JMPC yalnızca bir alt program içinde kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="159"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="168"/>
         <source>subprogram P{program} does not exist</source>
         <translation>P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="160"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
         <source>calling P{program} here makes a subprogram call itself</source>
         <translation>burada P{program} çağrısı bir alt programın kendini çağırmasına yol açıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="162"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
         <source>calls through P{program} nest deeper than {limit} subprograms</source>
         <translation>P{program} üzerinden çağrılar {limit} alt programdan daha derine iniyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="164"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="173"/>
         <source>SP without a matching SPE</source>
         <translation>eşleşen SPE olmadan SP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="165"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
         <source>SPE without an SP before it</source>
         <translation>önünde SP olmayan SPE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="166"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="175"/>
         <source>subprogram P{program} is defined twice</source>
         <translation>P{program} alt programı iki kez tanımlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="167"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
         <source>only subprograms (SP ... SPE) may follow the first SP</source>
         <translation>ilk SP&apos;den sonra yalnızca alt programlar (SP ... SPE) gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="169"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
         <source>{name} cannot end level {level}</source>
         <translation>{name} {level}. seviyeyi bitiremez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="170"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="179"/>
         <source>instruction after END, the end of the program</source>
         <translation>program sonu END&apos;den sonra komut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="171"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
         <source>a backward jump to L{label} repeated more than {limit} times in one scan</source>
         <translation>L{label} etiketine geri atlama bir taramada {limit} kereden fazla tekrarlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="174"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
         <source>not an alarm message line: &apos;{text}&apos; (expected &apos;NNN text&apos; or &apos;A00.0 text&apos;)</source>
         <translation>alarm mesajı satırı değil: &apos;{text}&apos; (&apos;NNN metin&apos; veya &apos;A00.0 metin&apos; olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="176"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="185"/>
         <source>alarm number {number} is out of range (000 to 799)</source>
         <translation>{number} alarm numarası sınır dışı (000 ile 799 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="178"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="187"/>
         <source>&apos;{text}&apos; is not an alarm bit (A0.0 to A99.7)</source>
         <translation>&apos;{text}&apos; bir alarm biti değil (A0.0 ile A99.7 arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="180"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="189"/>
         <source>message {number} appears again; the one on line {first} is used</source>
         <translation>{number} mesajı tekrar var; {first}. satırdaki kullanılıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="182"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="191"/>
         <source>message {number} has no text</source>
         <translation>{number} mesajının metni yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="183"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="192"/>
         <source>{name} is not implemented in the simulator yet</source>
         <translation>{name} simülatörde henüz yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="186"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="195"/>
         <source>ASCII format: the text opened by {quote} is never closed</source>
         <translation>ASCII biçimi: {quote} ile açılan metin hiç kapatılmamış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="188"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
         <source>ASCII format: a repeat count must be 1 to 999, found {count}</source>
         <translation>ASCII biçimi: tekrar sayısı 1 ile 999 arasında olmalı, bulunan {count}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="190"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
         <source>ASCII format: &apos;{text}&apos; is not an item (expected &apos;text&apos;, MX, hex codes, &quot;w.dRn&quot;, / or \)</source>
         <translation>ASCII biçimi: &apos;{text}&apos; bir öğe değil (&apos;metin&apos;, MX, onaltılık kodlar, &quot;w.dRn&quot;, / ya da \ bekleniyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="194"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="203"/>
         <source>ASCII format: &quot;{text}&quot; is not a variable (expected e.g. &quot;8.2R0&quot; or &quot;4R10H&quot;)</source>
         <translation>ASCII biçimi: &quot;{text}&quot; bir değişken değil (örneğin &quot;8.2R0&quot; ya da &quot;4R10H&quot; bekleniyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="197"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
         <source>ASCII format: text after END: &apos;{text}&apos;</source>
         <translation>ASCII biçimi: END&apos;den sonra metin: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="199"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
         <source>ASCII format: END is missing</source>
         <translation>ASCII biçimi: END eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="200"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
         <source>&apos;{name}&apos; is not a Fatek instruction</source>
         <translation>&apos;{name}&apos; bir Fatek komutu değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="202"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
         <source>an operand line &apos;{text}&apos; without a FUN, TMR or CTR before it</source>
         <translation>önünde FUN, TMR ya da CTR olmayan bir operand satırı: &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="204"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
         <source>{name} needs a device</source>
         <translation>{name} bir eleman (cihaz) adresi ister</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="205"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="214"/>
         <source>&apos;{text}&apos; is not a Fatek device</source>
         <translation>&apos;{text}&apos; bir Fatek elemanı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="206"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
         <source>{name} cannot take &apos;{text}&apos; (use {kinds})</source>
         <translation>{name} &apos;{text}&apos; alamaz ({kinds} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="208"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
         <source>&apos;{text}&apos; is out of range ({range})</source>
         <translation>&apos;{text}&apos; aralık dışında ({range})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="209"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="218"/>
         <source>{name} with nothing before it: a network starts with ORG</source>
         <translation>{name} önünde bir şey yok: ağ ORG ile başlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="211"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="220"/>
         <source>{name} needs two blocks: start the second one with LD</source>
         <translation>{name} iki blok ister: ikincisini LD ile başlatın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="213"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="222"/>
         <source>TR{number} is set twice in this network</source>
         <translation>TR{number} bu ağda iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="215"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="224"/>
         <source>a network has at most {limit} TR points</source>
         <translation>bir ağda en fazla {limit} TR noktası olabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="217"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="226"/>
         <source>LD TR{number} before OUT TR{number} in this network</source>
         <translation>bu ağda OUT TR{number} komutundan önce LD TR{number}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="219"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="228"/>
         <source>{name} on the left rail: put ORG SHORT before it</source>
         <translation>{name} başlangıç hattında: önüne ORG SHORT koyun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="221"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="230"/>
         <source>{name}: {count} block(s) started with LD are not joined (ANDLD/ORLD)</source>
         <translation>{name}: LD ile başlayan {count} blok birleştirilmemiş (ANDLD/ORLD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="223"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="232"/>
         <source>FUN {number} is not a Fatek function LadderWorks knows</source>
         <translation>FUN {number}, LadderWorks&apos;ün bildiği bir Fatek fonksiyonu değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="225"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="234"/>
         <source>{name}: the operand line {param} is missing</source>
         <translation>{name}: {param} operand satırı eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="227"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="236"/>
         <source>{name} takes no more operands, found &apos;{text}&apos;</source>
         <translation>{name} başka operand almaz, bulunan &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="229"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="238"/>
         <source>&apos;{text}&apos; cannot be the operand {param} (a register, or a constant)</source>
         <translation>&apos;{text}&apos;, {param} operandı olamaz (bir kaydedici ya da sabit olmalı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="231"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="240"/>
         <source>{name} is kept and drawn but not simulated: its outputs stay 0</source>
         <translation>{name} korunur ve çizilir ama simüle edilmez: çıkışları 0 kalır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="233"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
         <source>&apos;{text}&apos; is not the time base of {name} ({base})</source>
         <translation>&apos;{text}&apos;, {name} zaman tabanı değil ({base})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="235"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
         <source>FO {text}: no function output here (FO0-FO7 after a box)</source>
         <translation>FO {text}: burada fonksiyon çıkışı yok (bir kutudan sonra FO0-FO7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="237"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
         <source>&apos;{text}…&apos; is too long to be a Fatek number: the line is not read</source>
         <translation>&apos;{text}…&apos; bir Fatek sayısı olamayacak kadar uzun: satır okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="239"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
         <source>not a WinProladder comment export: its first line must be REF, COMMENT, DESCRIPTION (tab-separated)</source>
         <translation>WinProladder yorum dışa aktarımı değil: ilk satırı REF, COMMENT, DESCRIPTION olmalı (sekmeyle ayrılmış)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="243"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="252"/>
         <source>&apos;{text}&apos; is not a Fatek device: the line is skipped</source>
         <translation>&apos;{text}&apos; bir Fatek cihazı değil: satır atlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
         <source>the comments were read in code page {chosen}; they read as {others} too: check the names</source>
         <translation>yorumlar {chosen} kod sayfasında okundu; {others} olarak da okunabiliyor: adları denetleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
         <source>byte {offset} (0x{byte}) is a character in no Windows code page tried: the comments are not read</source>
         <translation>{offset}. bayt (0x{byte}) denenen hiçbir Windows kod sayfasında karakter değil: yorumlar okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
         <source>ASCII files: &apos;{text}&apos; is not a section header such as [R1000]</source>
         <translation>ASCII dosyaları: &apos;{text}&apos;, [R1000] gibi bir bölüm başlığı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
         <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
         <translation>WinProladder projesi değil: &apos;Fatek WinProladder, File Format 1&apos; başlığı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
         <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
         <translation>.pdw dosyası eksik: {offset}. bayttaki kaydı dosyanın sonunu aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
         <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
         <translation>.pdw dosyası bozuk: {offset}. bayttaki kaydın sağlama toplamı tutmuyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="262"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
         <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
         <translation>.pdw dosyası bozuk: {offset}. bayttaki kayıt hatalı biçimde</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>the .pdw file holds no program (checked up to byte {offset})</source>
         <translation>.pdw dosyasında program yok ({offset}. bayta kadar bakıldı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="266"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
         <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
         <translation>{offset}. bayttaki programın maskesi kaldırılamıyor: maskenin çıkarılabileceği silinmiş bir bellek bloğu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="270"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
         <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
         <translation>.pdw dosyası bozuk: program görüntüsü {offset}. baytta hatalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="272"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
         <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
         <translation>.pdw dosyası bozuk: programın kodu sağlama toplamıyla uyuşmuyor ({offset}. bayt)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
         <translation>{offset}. bayttaki {word} komut kodunu LadderWorks henüz çözemiyor: program o noktaya kadar okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
         <translation>{offset}. bayttaki {word} operand kodu LadderWorks&apos;ün henüz çözebildiği bir cihaz değil: program o noktaya kadar okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
         <source>the program ends inside an instruction at byte {offset}</source>
         <translation>program {offset}. baytta bir komutun ortasında bitiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <source>&apos;{text}&apos; cannot be the device of {name} here: with it the line reads as {other} (place {other} from the palette)</source>
+        <translation>&apos;{text}&apos; burada {name} komutunun aygıtı olamaz: onunla satır {other} olarak okunur ({other} komutunu paletten yerleştirin)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; bir aygıt değil ({letters} harflerinden biri ve bir numara kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} sekizli (oktal) numaralanır (0 ile 7 arası rakamlar)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="291"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; aralık dışında ({first} ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; bir bit aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; bir kelime (word) aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="294"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; bu tabloda listelenmez ({letters} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: bir aygıt ya da en çok {most} aygıtlık bir İLK-SON aralığı verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="305"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="309"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>WPLSoft .dvp projesi değil: 57 01 01 00 baytlarıyla başlamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>.dvp dosyası {offset}. baytta kesilmiş: WPLSoft&apos;un en sona yazdığı &lt;PrjectEnd&gt; satırıyla bitmiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="322"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>bayt {offset}: .dvp biçim sürümü {version} LadderWorks&apos;ün okuduğu sürümlerden değil (214, 215 ve 216 okunur)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>bayt {offset}: bu .dvp projesinin program belleği WPLSoft&apos;un koyduğu yerde değil: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>bayt {offset} (adım {step}): {word} komut kodu LadderWorks tarafından bilinmiyor: operandlarıyla ?{word} olarak korundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>bayt {offset} (adım {step}): {word} sözcüğü LadderWorks&apos;ün bildiği bir cihazı göstermiyor: dosya bozuk ya da henüz çözülmemiş bir cihaz kullanıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğü ne cihaz ne sabit: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} sonrasındaki operand sözcükleri komuta uymuyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğünden önce komut yok: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>bayt {offset}: program END ile bitmiyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="357"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): END sonrasında komutlar var: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="360"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>bayt {offset}: .dvp projesinin bir metin bölümü bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="350"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>bayt {offset}: bir cihaz açıklama satırı CİHAZ$&amp;metin biçiminde değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>projede program yok: derlenmiş komut listesi yok ve ladder çizimi boş</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>proje derlenmeden kaydedilmiş: programı ladder çiziminden okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>proje derlenmiş bir komut listesi içermiyor ve ladder çiziminde LadderWorks&apos;ün henüz okumadığı bir hücre var (bayt {offset}: bir kol, bir kenar kontağı ...): WPLSoft&apos;ta derleyip yeniden kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks .dvp projesi yazmaz (biçim yalnızca kısmen biliniyor): programı bunun yerine Delta komut listesi (.il) olarak kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="365"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
         <source>NEXT without a FOR before it</source>
         <translation>Öncesinde FOR olmayan NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MCR veya RET&apos;i olmayan MC veya STL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>Öncesinde MC veya STL olmayan MCR veya RET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
         <source>FOR without its NEXT</source>
         <translation>NEXT&apos;i olmayan FOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="379"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="381"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="383"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="396"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="394"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="416"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="408"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="420"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
-        <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
+        <translation>{value} bayt: bir değer 1, 2 veya 4 bayt olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="409"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="411"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="423"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="415"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="427"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="430"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="420"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="422"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="424"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="426"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="428"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="440"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="430"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="442"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="444"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="446"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="435"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1671,17 +1691,17 @@
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="66"/>
         <source>byte address ({0} bytes)</source>
-        <translation>byte adresi ({0} byte)</translation>
+        <translation>bayt adresi ({0} bayt)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="68"/>
         <source>byte address</source>
-        <translation>byte adresi</translation>
+        <translation>bayt adresi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="70"/>
         <source>constant or byte address</source>
-        <translation>sabit veya byte adresi</translation>
+        <translation>sabit veya bayt adresi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/function_dialog.py" line="72"/>
@@ -1753,17 +1773,22 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="146"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="98"/>
+        <source>Contacts, coils and blocks</source>
+        <translation>Kontaklar, bobinler ve bloklar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/help_browser.py" line="202"/>
         <source>No reference entry for this instruction.</source>
         <translation>Bu komut için başvuru kaydı yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="158"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="214"/>
         <source>Instruction reference</source>
         <translation>Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="159"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="215"/>
         <source>Search, e.g. TMR</source>
         <translation>Ara, örn. TMR</translation>
     </message>
@@ -1771,7 +1796,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="103"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="118"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -1781,32 +1806,32 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="37"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="112"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="127"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="39"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="151"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="166"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="155"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="170"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -1816,28 +1841,28 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="132"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="48"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="49"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="53"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="54"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="98"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="113"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="93"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="108"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -1847,17 +1872,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="297"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="312"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="309"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="324"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="319"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="337"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -1879,11 +1904,6 @@
 </context>
 <context>
     <name>MainWindow</name>
-    <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="70"/>
-        <source>&amp;New</source>
-        <translation>&amp;Yeni</translation>
-    </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="72"/>
         <source>&amp;Open...</source>
@@ -1918,6 +1938,11 @@
         <location filename="../ladderworks/gui/actions_table.py" line="84"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;özellikleri...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="70"/>
+        <source>&amp;New...</source>
+        <translation>&amp;Yeni...</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="82"/>
@@ -2034,7 +2059,7 @@
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="140"/>
         <source>Show as &amp;ladder</source>
-        <translation>&amp;Ladder olarak göster</translation>
+        <translation>&amp;Merdiven diyagramı olarak göster</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/actions_table.py" line="142"/>
@@ -2107,218 +2132,218 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="202"/>
+        <location filename="../ladderworks/gui/main_window.py" line="203"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="429"/>
+        <location filename="../ladderworks/gui/main_window.py" line="433"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
-        <translation>Derleme bitti: {0} byte (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
+        <translation>Derleme bitti: {0} bayt (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="441"/>
+        <location filename="../ladderworks/gui/main_window.py" line="445"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="448"/>
+        <location filename="../ladderworks/gui/main_window.py" line="452"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
-        <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
+        <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="461"/>
-        <location filename="../ladderworks/gui/main_window.py" line="276"/>
-        <location filename="../ladderworks/gui/main_window.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="506"/>
+        <location filename="../ladderworks/gui/main_window.py" line="277"/>
+        <location filename="../ladderworks/gui/main_window.py" line="447"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="132"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="112"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="123"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="133"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="152"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="170"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="179"/>
+        <source>PLC family</source>
+        <translation>PLC ailesi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="197"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="215"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="153"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="171"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="477"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="198"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="216"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="522"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="158"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="158"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="248"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="256"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="294"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="302"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="352"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
-        <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
+        <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="294"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="466"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="363"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="521"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="538"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="331"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="376"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="213"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
         <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
         <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projeleri (*.dvp *.DVP);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projeleri (*.pdw *.PDW);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="336"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="381"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="362"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="367"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="412"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="413"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
-        <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
-        <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="381"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="382"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="404"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="421"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="449"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="466"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="470"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="405"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="450"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="474"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="399"/>
+        <location filename="../ladderworks/gui/main_window.py" line="403"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="415"/>
+        <location filename="../ladderworks/gui/main_window.py" line="419"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="435"/>
+        <location filename="../ladderworks/gui/main_window.py" line="439"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
         <translation>Derleme bitti: {0} bayt (yüklenmedi: PLC mevcut programını tutuyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="485"/>
+        <location filename="../ladderworks/gui/main_window.py" line="489"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="488"/>
+        <location filename="../ladderworks/gui/main_window.py" line="492"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="520"/>
+        <location filename="../ladderworks/gui/main_window.py" line="525"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="521"/>
+        <location filename="../ladderworks/gui/main_window.py" line="526"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -2347,6 +2372,36 @@
         <location filename="../ladderworks/gui/symbol_import.py" line="74"/>
         <source>{0} symbols imported from {1}</source>
         <translation>{1} dosyasından {0} sembol içe aktarıldı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="46"/>
+        <source>All files (*)</source>
+        <translation>Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="49"/>
+        <source>Delta DVP instruction lists (*.txt *.TXT)</source>
+        <translation>Delta DVP komut listeleri (*.txt *.TXT)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="52"/>
+        <source>Fatek WinProladder listings (*.lst *.LST)</source>
+        <translation>Fatek WinProladder listeleri (*.lst *.LST)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="54"/>
+        <source>Ladder programs (*.LAD *.lad)</source>
+        <translation>Ladder programları (*.LAD *.lad)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="61"/>
+        <source>The program has errors: fix them first (see the error list)</source>
+        <translation>Programda hatalar var: önce onları düzeltin (hata listesine bakın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="65"/>
+        <source>The program cannot become a {0} program: {1}</source>
+        <translation>Program bir {0} programı olamaz: {1}</translation>
     </message>
 </context>
 <context>
@@ -2380,12 +2435,12 @@
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
         <source>Dialect&apos;s map</source>
-        <translation>Lehçenin haritası</translation>
+        <translation>PLC ailesinin haritası</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="129"/>
         <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
-        <translation>Programın lehçesinin kendi haritasını sun (docs/modbus.md)</translation>
+        <translation>Programın PLC ailesinin kendi haritasını sun (docs/modbus.md)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="131"/>
@@ -2494,6 +2549,34 @@
         <location filename="../ladderworks/gui/editor/name_menu.py" line="69"/>
         <source>Element &amp;names</source>
         <translation>Eleman &amp;adları</translation>
+    </message>
+</context>
+<context>
+    <name>NewProgram</name>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="77"/>
+        <source>New program</source>
+        <translation>Yeni program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="84"/>
+        <source>A family&apos;s models differ in their ranges; the Delta DVP series (ES2, EX2, SS2, SA2, SX2, SE) and the Fatek FBs series share one device map here (docs/dialects.md).</source>
+        <translation>Bir ailenin modelleri aralıklarında ayrılır; Delta DVP serisi (ES2, EX2, SS2, SA2, SX2, SE) ve Fatek FBs serisi burada tek bir aygıt haritasını paylaşır (docs/dialects.md).</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="92"/>
+        <source>The PLC the program is written for: its instructions, its devices (X0, T0, D10 or X2.1, R100) and its file form.</source>
+        <translation>Programın yazıldığı PLC: komutları, aygıtları (X0, T0, D10 ya da X2.1, R100) ve dosya biçimi.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="97"/>
+        <source>PLC family</source>
+        <translation>PLC ailesi</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/new_program.py" line="98"/>
+        <source>Model</source>
+        <translation>Model</translation>
     </message>
 </context>
 <context>
@@ -2933,7 +3016,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="331"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
-        <translation>Derleme bitti — {0} devre, {1} byte</translation>
+        <translation>Derleme bitti — {0} devre, {1} bayt</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/plc_control.py" line="334"/>
@@ -3100,7 +3183,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="63"/>
         <source>On-line mode</source>
-        <translation>On-line mod</translation>
+        <translation>Çevrim içi mod</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="64"/>
@@ -3135,7 +3218,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="92"/>
         <source>On-line needs a compiled program in the PLC</source>
-        <translation>On-line mod için PLC&apos;de derlenmiş bir program gerekir</translation>
+        <translation>Çevrim içi mod için PLC&apos;de derlenmiş bir program gerekir</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="97"/>
@@ -3146,7 +3229,7 @@
         <location filename="../ladderworks/gui/docks/online.py" line="106"/>
         <location filename="../ladderworks/gui/docks/online.py" line="163"/>
         <source>On-line: the drawing shows the running PLC</source>
-        <translation>On-line: çizim çalışan PLC&apos;yi gösteriyor</translation>
+        <translation>Çevrim içi: çizim çalışan PLC&apos;yi gösteriyor</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/online.py" line="124"/>
@@ -3276,7 +3359,7 @@
         <location filename="../ladderworks/gui/docks/table_specs.py" line="252"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="257"/>
         <source>Bytes</source>
-        <translation>Byte</translation>
+        <translation>Bayt</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/device_specs.py" line="116"/>
@@ -3306,7 +3389,7 @@
         <location filename="../ladderworks/gui/docks/table_specs.py" line="253"/>
         <location filename="../ladderworks/gui/docks/table_specs.py" line="309"/>
         <source>Hex</source>
-        <translation>Hex</translation>
+        <translation>Onaltılık</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/device_specs.py" line="129"/>
@@ -3448,7 +3531,7 @@
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="336"/>
         <source>Registers ({0})</source>
-        <translation>Register ({0})</translation>
+        <translation>Yazmaçlar ({0})</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/tables.py" line="347"/>
@@ -3562,52 +3645,52 @@
 <context>
     <name>ProgramProperties</name>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="48"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="53"/>
         <source>Machine-tool builder</source>
         <translation>Takım tezgâhı üreticisi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="49"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="54"/>
         <source>Machine-tool name</source>
         <translation>Takım tezgâhı adı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="50"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="55"/>
         <source>PMC &amp; NC type</source>
         <translation>PMC ve NC tipi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="51"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="56"/>
         <source>Program number</source>
         <translation>Program numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="52"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
         <source>Edition</source>
         <translation>Sürüm</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="53"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="58"/>
         <source>Drawing number</source>
         <translation>Çizim numarası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="54"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="59"/>
         <source>Date</source>
         <translation>Tarih</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="55"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="60"/>
         <source>Designed by</source>
         <translation>Tasarlayan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="56"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="61"/>
         <source>ROM written by</source>
         <translation>ROM&apos;a yazan</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="57"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="62"/>
         <source>Remarks</source>
         <translation>Notlar</translation>
     </message>
@@ -3622,171 +3705,171 @@
         <translation>FANUC Series 30i-A PMC (bellek-B)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
         <source>yes</source>
         <translation>evet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="80"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
         <source>no</source>
         <translation>hayır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="83"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="88"/>
         <source>File</source>
         <translation>Dosya</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="84"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="89"/>
         <source>(not saved)</source>
         <translation>(kaydedilmedi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="85"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="144"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="180"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="90"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="149"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="186"/>
         <source>PMC model</source>
         <translation>PMC modeli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="86"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="91"/>
         <source>Encoding</source>
         <translation>Kodlama</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="87"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="92"/>
         <source>Byte order mark</source>
         <translation>Bayt sırası işareti (BOM)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="88"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="93"/>
         <source>Line ends</source>
         <translation>Satır sonları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="89"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="94"/>
         <source>Framed in %@A … %@E</source>
         <translation>%@A … %@E çerçeveli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="90"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="95"/>
         <source>Networks</source>
         <translation>Devreler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="91"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="96"/>
         <source>Steps</source>
         <translation>Adımlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="93"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="98"/>
         <source>Symbols (%@2)</source>
         <translation>Semboller (%@2)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="95"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="100"/>
         <source>Messages (%@4)</source>
         <translation>Mesajlar (%@4)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="174"/>
-        <source>The PMC the program is written for: its address map and the ranges of its instructions. Kept in the file as a comment line the seed&apos;s tools skip.</source>
-        <translation>Programın yazıldığı PMC: adres haritası ve komutlarının aralıkları. Dosyada, seed araçlarının atladığı bir yorum satırı olarak saklanır.</translation>
+        <location filename="../ladderworks/gui/program_properties.py" line="180"/>
+        <source>The PLC the program is written for: its address map and the ranges of its instructions. A model of another PLC family is taken when every instruction reads back the same in that family&apos;s text.</source>
+        <translation>Programın yazıldığı PLC: adres haritası ve komutlarının aralıkları. Başka bir PLC ailesinin modeli, her komut o ailenin metninde aynı okunduğunda alınır.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="190"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="197"/>
         <source>Program properties</source>
         <translation>Program özellikleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="199"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="206"/>
         <source>General</source>
         <translation>Genel</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="200"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
         <source>Property</source>
         <translation>Özellik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="201"/>
         <location filename="../ladderworks/gui/program_properties.py" line="208"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
         <source>Value</source>
         <translation>Değer</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="203"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="210"/>
         <source>Title (%@1)</source>
         <translation>Başlık (%@1)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
-        <location filename="../ladderworks/gui/program_properties.py" line="208"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="215"/>
         <source>Item</source>
         <translation>Öğe</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="204"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
         <source>Meaning</source>
         <translation>Anlamı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="205"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
         <source>Text</source>
         <translation>Metin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="207"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="214"/>
         <source>System parameters (%@0)</source>
         <translation>Sistem parametreleri (%@0)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="210"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
         <source>I/O modules (%@5)</source>
         <translation>G/Ç modülleri (%@5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="211"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
         <source>Group</source>
         <translation>Grup</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="219"/>
         <source>Base</source>
         <translation>Taban</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="212"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="219"/>
         <source>Slot</source>
         <translation>Yuva</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="213"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="220"/>
         <source>Module</source>
         <translation>Modül</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="216"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="223"/>
         <source>Sections</source>
         <translation>Bölümler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="224"/>
         <source>Header</source>
         <translation>Başlık satırı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="217"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="224"/>
         <source>Lines</source>
         <translation>Satırlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/program_properties.py" line="218"/>
+        <location filename="../ladderworks/gui/program_properties.py" line="225"/>
         <source>First line</source>
         <translation>İlk satır</translation>
     </message>
@@ -4206,72 +4289,77 @@
         <translation>PNG resimleri (*.png)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="526"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="519"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
         <source>PLC time chart</source>
         <translation>PLC ZAMAN KARTI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="527"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
         <source>Signals:</source>
         <translation>Sinyaller:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="529"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
         <source>Sampling time:</source>
         <translation>ÖRNEKLEME ZAMANI:</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="531"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="532"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="539"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="533"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="540"/>
         <source>CLEAR</source>
         <translation>TEMİZLE</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="534"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="541"/>
         <source>Fit</source>
         <translation>Sığdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="535"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="542"/>
         <source>Zoom in</source>
         <translation>Yakınlaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="536"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
         <source>Zoom out</source>
         <translation>Uzaklaştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="537"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="544"/>
         <source>CSV...</source>
         <translation>CSV...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="538"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="545"/>
         <source>PNG...</source>
         <translation>PNG...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="543"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="550"/>
         <source>Export the samples as CSV</source>
         <translation>Örnekleri CSV olarak dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="546"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="553"/>
         <source>Save the chart as a PNG picture</source>
         <translation>Grafiği PNG resmi olarak kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/time_chart.py" line="548"/>
+        <location filename="../ladderworks/gui/docks/time_chart.py" line="555"/>
         <source>time (ms)</source>
         <translation>zaman (ms)</translation>
     </message>

@@ -120,6 +120,15 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "an edge or comparison contact has no normally closed form"),
     "edit-no-element": QT_TRANSLATE_NOOP(
         "Diagnostic", "there is no suitable element at cell ({row}, {col})"),
+    "family-symbols": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the program's {count} symbols (%@2) have no place in that family's "
+        "files: the program keeps its family"),
+    "family-differs": QT_TRANSLATE_NOOP(
+        "Diagnostic", "instruction {step} ({name}) has no counterpart in that family: the "
+        "program keeps its family"),
+    "edit-end-kept": QT_TRANSLATE_NOOP(
+        "Diagnostic", "END ends the program and stays its last network: draw new networks "
+        "above it"),
     "edit-line": QT_TRANSLATE_NOOP("Diagnostic", "a line must be horizontal or vertical"),
     "grid-text": QT_TRANSLATE_NOOP("Diagnostic", "the clipboard does not hold ladder elements"),
     # find and replace
@@ -284,6 +293,9 @@ MESSAGES: dict[str, str] = {
     "pdw-cut": QT_TRANSLATE_NOOP(
         "Diagnostic", "the program ends inside an instruction at byte {offset}"),
     # dialects (docs/dialects.md): devices and operands of a Delta or Fatek program
+    "typed-other-row": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' cannot be the device of {name} here: with it the line reads as "
+        "{other} (place {other} from the palette)"),
     "device-unknown": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' is not a device (use {letters} with a number)"),
     "device-octal": QT_TRANSLATE_NOOP(

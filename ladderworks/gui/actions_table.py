@@ -67,8 +67,8 @@ TOOLBAR_TITLE = QT_TRANSLATE_NOOP("MainWindow", "Main toolbar")
 
 A = ActionSpec
 ACTIONS: tuple[ActionSpec, ...] = (
-    A("action_new", QT_TRANSLATE_NOOP("MainWindow", "&New"),
-      "new_file", shortcut=Key.New, icon="SP_FileIcon", menu="menu_file", toolbar=0),
+    A("action_new", QT_TRANSLATE_NOOP("MainWindow", "&New..."),
+      "new_program_dialog", shortcut=Key.New, icon="SP_FileIcon", menu="menu_file", toolbar=0),
     A("action_open", QT_TRANSLATE_NOOP("MainWindow", "&Open..."),
       "open_dialog", shortcut=Key.Open, icon="SP_DialogOpenButton", menu="menu_file", toolbar=0),
     A("action_save", QT_TRANSLATE_NOOP("MainWindow", "&Save"),

@@ -7,12 +7,13 @@ from dataclasses import asdict
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QCoreApplication, QDateTime, QLocale
+from PySide6.QtCore import QCoreApplication, QDateTime, QLocale, Qt
 from PySide6.QtWidgets import QMessageBox
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.dialects.delta.dvp_program import save_refused
 from ladderworks.core.dialects.fatek.pdw_file import is_pdw_path
+from ladderworks.core.families import new_program
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import EncodeError
@@ -30,6 +31,13 @@ from ladderworks.gui.document import (
 )
 from ladderworks.gui.editor.ladder_model import LadderModel, Mode
 from ladderworks.gui.files import ReadOnlyFile, atomic_write_bytes, is_read_only
+from ladderworks.gui.new_program import (
+    NewProgramDialog,
+    family_change,
+    remember_model,
+    remembered_model,
+    save_filters,
+)
 from ladderworks.gui.os_errors import os_error_text
 from ladderworks.gui.recovery import Autosaver, RecoveredCopy, RecoveryStore, Snapshot
 
@@ -40,6 +48,7 @@ if TYPE_CHECKING:
     from ladderworks.gui.editor.view import LadderEditor
     from ladderworks.gui.error_list import ErrorListDock
     from ladderworks.gui.parameter_document import ParameterDocument
+    from ladderworks.gui.settings import Settings
     from ladderworks.gui.text_view import ProgramTextView
 
     _Window = QMainWindow
@@ -72,6 +81,7 @@ class FileActions(_Window):
         failed_path: Path | None
         dialect: str
         file_saved: SignalInstance
+        settings: Settings
 
         def warn(self, title: str, text: str) -> None: ...
         def show_message(self, text: str) -> None: ...
@@ -128,20 +138,55 @@ class FileActions(_Window):
 
     # -- opening -------------------------------------------------------------------------
 
-    def new_file(self) -> None:
-        """Start an empty program."""
+    def new_program_dialog(self) -> None:
+        """File › New: ask the PLC family and model (the last one chosen first), then start an
+        empty program of it (after asking to save the changes)."""
+        if not self.maybe_save():
+            return
+        dialog = NewProgramDialog(remembered_model(self.settings), self._new_chosen, self)
+        dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose, True)
+        self.new_dialog = dialog
+        dialog.open()
+
+    def _new_chosen(self, key: str) -> None:
+        remember_model(self.settings, key)
+        self.new_file(key)
+
+    def new_file(self, model: str | None = None) -> None:
+        """Start an empty program of `model` (None: the one File › New chose last); a Delta
+        program holds its END."""
+        key = model if model is not None else remembered_model(self.settings)
         self.document.reset()
         self.failed_path = None
-        self.model.set_program(Program())
-        self.program_shown(Program())
+        self.model.set_program(new_program(key))
+        self.program_shown(new_program(key))
         self.text_view.setPlainText("")
         self.text_view.document().setModified(False)
         self.errors.set_diagnostics([])
         self.model.set_mode(Mode.LADDER)
-        self.dialect = "seed"
+        self.dialect = dialect_of(new_program(key))
         self.parameters.reset()
         self.recovery.remove()
         self.update_title()
+
+    def change_family(self, key: str) -> bool:
+        """Program properties: the drawn program becomes a program of model `key` of another
+        family, untitled (Save As gives it a file of that family), when its instructions read
+        back the same there; else a warning says why and nothing changes."""
+        program, diagnostics = self.model.program()
+        moved = family_change(program, key)
+        if isinstance(moved, str):
+            self.warn(translate("MainWindow", "PLC family"), moved)
+            self.errors.set_diagnostics(diagnostics)
+            return False
+        self.document.reset()
+        self.model.set_program(moved)
+        self.program_shown(moved)
+        self.model.set_mode(Mode.LADDER)
+        self.dialect = dialect_of(moved)
+        self.model.mark_modified()
+        self.update_title()
+        return True
 
     def _open_parameters(self, path: Path) -> None:
         """Read the PMC parameter file beside the program (the defaults when there is none)."""
@@ -368,9 +413,9 @@ class FileActions(_Window):
                 translate("MainWindow",
                           "Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)"))
             return bool(name) and self.save_to(name)
+        filters, default = save_filters(self.model.dialect)
         name = file_dialogs.save_file_name(
-            self, translate("MainWindow", "Save program"), str(self.path or "program.LAD"),
-            translate("MainWindow", "Ladder programs (*.LAD *.lad);;All files (*)"))
+            self, translate("MainWindow", "Save program"), str(self.path or default), filters)
         return bool(name) and self.save_to(name)
 
     def import_mod_dialog(self) -> None:

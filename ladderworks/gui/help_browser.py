@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from typing import NamedTuple
 
 from PySide6.QtCore import QCoreApplication, QSize, Qt
 from PySide6.QtGui import QShowEvent
@@ -19,16 +20,20 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ladderworks.core import dialects
 from ladderworks.core.il.textform import split_lines
-from ladderworks.core.instructions import ALL, InstructionSpec, lookup
+from ladderworks.core.instructions import ALL, BASIC, Kind, lookup
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.screen_fit import fit_to_screen, keep_on_screen
 from ladderworks.gui.translation import instruction_title, ui_is_turkish
-from ladderworks.paths import help_page
+from ladderworks.paths import help_pages
 
 translate = QCoreApplication.translate
+KEY_ROLE = Qt.ItemDataRole.UserRole + 1  # a list item's reference key
+SEARCH_ROLE = Qt.ItemDataRole.UserRole + 2  # what the search looks in (casefolded)
+STK = ".STK"  # a row that pushes: its entry is its plain form's (RD.STK is RD's own)
 
-_ANCHOR = re.compile(r'\s*<a id="([^"]+)"></a>\s*$')
+_ANCHOR = re.compile(r'\s*<a id="([^"]+)"></a>')  # one or more at a heading's end
 # where a rule comes from ([seed], [pmc; X22], [choice]): for the docs' readers, not the user
 _SOURCE_MARK = re.compile(r"\s*\[(?:seed|pmc|choice)(?:;[^\]]*)?\]")
 
@@ -40,28 +45,66 @@ def without_source_marks(text: str) -> str:
 
 @lru_cache(maxsize=2)
 def reference_sections(language: str = "en") -> dict[str, str]:
-    """The markdown of each instruction's entry in the reference of `language`, by help key."""
+    """The markdown of each instruction's entry in the reference of `language` (the PMC's
+    page and each dialect's), by help key; a heading with several anchors serves each."""
     sections: dict[str, str] = {}
-    key: str | None = None
+    keys: list[str] = []
     lines: list[str] = []
-    path = help_page(language)
-    text = path.read_text("utf-8") if path.exists() else ""
-    for line in split_lines(text):
-        heading = line.startswith(("## ", "### "))
-        if heading and key is not None:
+
+    def close() -> None:
+        for key in keys:
             sections[key] = "\n".join(lines).strip() + "\n"
-            key = None
-        if heading:
-            match = _ANCHOR.search(line)
-            if match:
-                key = match.group(1)
-                lines = [without_source_marks(_ANCHOR.sub("", line)).replace("### ", "## ", 1)]
-            continue
-        if key is not None:
-            lines.append(without_source_marks(line))
-    if key is not None:
-        sections[key] = "\n".join(lines).strip() + "\n"
+
+    for path in help_pages(language):
+        text = path.read_text("utf-8") if path.exists() else ""
+        for line in split_lines(text):
+            heading = line.startswith(("## ", "### "))
+            if heading:
+                close()
+                keys = _ANCHOR.findall(line)
+                lines = [without_source_marks(_ANCHOR.sub("", line)).rstrip().replace(
+                    "### ", "## ", 1)]
+                continue
+            if keys:
+                lines.append(without_source_marks(line))
+        close()
+        keys = []
     return sections
+
+
+class Entry(NamedTuple):
+    """One line of the help's list: the instruction it names ("" for a dialect's contacts and
+    coils), the key of its reference entry and its text."""
+
+    name: str
+    key: str
+    text: str
+    also: str = ""  # more names the search finds it by (a dialect's every contact and coil)
+
+
+def basic_key(dialect: str) -> str:
+    """The key of a dialect's entry for its contacts, coils and blocks (the table's rows)."""
+    return f"instr-{dialect}-basic"
+
+
+def listed_rows() -> list[Entry]:
+    """Every instruction the help lists: the PMC's, then each dialect's contacts and coils (one
+    entry, in its spelling: `LD, LDI, … (Delta DVP)`) and its rows as it writes them
+    (`CNT (Delta DVP)`; a row that pushes, `.STK`, is its plain form's entry)."""
+    rows = [Entry(spec.name, spec.help_key, f"{spec.name} — {instruction_title(spec)}")
+            for spec in ALL]
+    for dialect in dialects.every():
+        names = list(dict.fromkeys(dialect.instruction_name(spec) for spec in BASIC))
+        title = translate("InstructionHelp", "Contacts, coils and blocks")
+        rows.append(Entry("", basic_key(dialect.name),  # the list stays narrow: 3 names shown
+                          f"{', '.join(names[:3])}… ({dialect.title}) — {title}",
+                          " ".join(names)))
+        for spec in dialect.rows:
+            if not spec.name.endswith(STK):
+                name = dialect.instruction_name(spec)
+                rows.append(Entry(spec.name, spec.help_key,
+                                  f"{name} ({dialect.title}) — {instruction_title(spec)}"))
+    return rows
 
 
 class InstructionHelp(Retranslating, QDialog):
@@ -97,11 +140,12 @@ class InstructionHelp(Retranslating, QDialog):
 
     def _fill(self) -> None:
         self.list.clear()
-        for spec in ALL:
-            text = f"{spec.name} — {instruction_title(spec)}"
-            item = QListWidgetItem(text)
-            item.setToolTip(text)
-            item.setData(Qt.ItemDataRole.UserRole, spec.name)
+        for entry in listed_rows():
+            item = QListWidgetItem(entry.text)
+            item.setToolTip(entry.text)
+            item.setData(Qt.ItemDataRole.UserRole, entry.name)
+            item.setData(KEY_ROLE, entry.key)
+            item.setData(SEARCH_ROLE, f"{entry.text} {entry.also}".casefold())
             self.list.addItem(item)
         # the longest name whole: the list is as wide as its widest entry
         scroll = self.list.verticalScrollBar().sizeHint().width()
@@ -113,37 +157,49 @@ class InstructionHelp(Retranslating, QDialog):
         super().showEvent(event)
         keep_on_screen(self)
 
-    def show_instruction(self, name: str) -> bool:
-        """Select and show the entry of instruction `name`; False if there is none."""
-        spec = lookup(name)
-        if spec is None:
-            return False
+    def show_instruction(self, name: str, dialect: str | None = None) -> bool:
+        """Select and show the entry of instruction `name` (a dialect's pushing form, `.STK`:
+        its plain form's; a contact or coil of a `dialect` program: that dialect's entry of
+        contacts and coils); False if there is none."""
         self.filter.clear()
+        spec = lookup(name)
+        basic = spec is not None and spec.kind is Kind.BASIC and not spec.dialect
+        if basic and dialects.get(dialect) is not None and \
+                self._select(KEY_ROLE, basic_key(str(dialect))):
+            return True
+        return any(self._select(Qt.ItemDataRole.UserRole, wanted) for wanted in (
+            name, name[: -len(STK)] if name.endswith(STK) else name))
+
+    def _select(self, role: int, value: str) -> bool:
+        """Select and show the first item whose `role` data is `value`."""
         for row in range(self.list.count()):
             item = self.list.item(row)
-            if item.data(Qt.ItemDataRole.UserRole) == spec.name:
+            if value and item.data(role) == value:
                 self.list.setCurrentItem(item)
-                self._show(spec)
+                self._show(item)
                 return True
         return False
 
     def shown_name(self) -> str | None:
-        """The instruction whose entry is shown."""
+        """The instruction whose entry is shown ("" for a dialect's contacts and coils)."""
         item = self.list.currentItem()
         return None if item is None else str(item.data(Qt.ItemDataRole.UserRole))
 
+    def shown_key(self) -> str | None:
+        """The key of the entry shown."""
+        item = self.list.currentItem()
+        return None if item is None else str(item.data(KEY_ROLE))
+
     def _on_current(self, item: QListWidgetItem | None, _previous: object = None) -> None:
         if item is not None:
-            spec = lookup(str(item.data(Qt.ItemDataRole.UserRole)))
-            if spec is not None:
-                self._show(spec)
+            self._show(item)
 
-    def _show(self, spec: InstructionSpec) -> None:
+    def _show(self, item: QListWidgetItem) -> None:
+        key = str(item.data(KEY_ROLE))
         language = "tr" if ui_is_turkish() else "en"
-        section = (reference_sections(language).get(spec.help_key)
-                   or reference_sections("en").get(spec.help_key))
+        section = reference_sections(language).get(key) or reference_sections("en").get(key)
         if section is None:
-            section = "## " + spec.name + "\n\n" + translate(
+            section = "## " + item.text() + "\n\n" + translate(
                 "InstructionHelp", "No reference entry for this instruction.")
         self.browser.setMarkdown(section)
 
@@ -151,13 +207,13 @@ class InstructionHelp(Retranslating, QDialog):
         needle = text.strip().casefold()
         for row in range(self.list.count()):
             item = self.list.item(row)
-            item.setHidden(bool(needle) and needle not in item.text().casefold())
+            item.setHidden(bool(needle) and needle not in str(item.data(SEARCH_ROLE)))
 
     def retranslate(self) -> None:
         """Set the texts in the current language."""
         self.setWindowTitle(translate("InstructionHelp", "Instruction reference"))
         self.filter.setPlaceholderText(translate("InstructionHelp", "Search, e.g. TMR"))
-        shown = self.shown_name()
+        shown = self.shown_key()
         self._fill()
         if shown is not None:
-            self.show_instruction(shown)
+            self._select(KEY_ROLE, shown)

@@ -23,6 +23,7 @@ from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.ladder import Coil, Contact, FunctionBox
 from ladderworks.core.ladder.logic import coil_spec, contact_spec
+from ladderworks.core.models import model_of
 from ladderworks.gui import compile_step, questions
 from ladderworks.gui.actions_table import CAN_REDO, CAN_UNDO, CONTEXT_MENU, LADDER_SHOWN
 from ladderworks.gui.cell_status import CellStatus
@@ -313,8 +314,11 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
 
     def set_pmc_model(self, key: str) -> None:
         """Make `key` the program's PMC model (Program properties): its ranges from now on,
-        kept in the file at the next Save."""
+        kept in the file at the next Save; a model of another family: `change_family`."""
         program = self.program_info
+        if model_of(key).family != model_of(program.dialect).family:
+            self.change_family(key)
+            return
         origin = self.model.document.origin  # the program the ladder was laid out from
         if origin is None:  # a new program: its model is this one's
             self.model.document.origin = origin = program
@@ -508,7 +512,8 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         """Help > Instruction reference (F1): `name`'s entry, or the element at the cursor's."""
         if self.help_window is None:
             self.help_window = InstructionHelp(self)
-        self.help_window.show_instruction(name or self.instruction_at_cursor())
+        self.help_window.show_instruction(name or self.instruction_at_cursor(),
+                                          self.model.dialect)  # a Delta LD: Delta's entry
         self.help_window.show()
         self.help_window.raise_()
         return self.help_window

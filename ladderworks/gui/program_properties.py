@@ -24,7 +24,7 @@ from PySide6.QtWidgets import (
 from ladderworks.core import dialects
 from ladderworks.core.diagnostics import QT_TRANSLATE_NOOP
 from ladderworks.core.il.program import FANUC, SEED, Program
-from ladderworks.core.models import MODELS, model_of, same_family
+from ladderworks.core.models import MODELS, model_of
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.translation import ui_is_turkish
 
@@ -38,9 +38,14 @@ MODEL_TITLES: dict[str, str] = {
 
 
 def model_title(key: str) -> str:
-    """A model's title in the UI language."""
+    """A model's title in the UI language (a dialect's own title for its one model)."""
     title = MODEL_TITLES.get(key)
-    return translate("ProgramProperties", title) if title else model_of(key).title
+    if title:
+        return translate("ProgramProperties", title)
+    found = dialects.get(key)
+    if found is not None:
+        return found.title_tr if ui_is_turkish() else found.title
+    return model_of(key).title
 
 
 # The `%@1` title items, in the order of the PMC title screen (FANUC-PMC.md §2).
@@ -162,19 +167,20 @@ class ProgramPropertiesDialog(Retranslating, QDialog):
         self._fill()
 
     def _fill_models(self) -> None:
-        """The models of the program's family; another family's model is shown read-only."""
+        """Every family's models (another family's is taken when the program's instructions
+        read back the same there); an unknown model is shown read-only."""
         combo = self.model_combo
         combo.clear()
         current = self.program.dialect
-        models = same_family(current) if current in MODELS else []
+        models = list(MODELS.values()) if current in MODELS else []
         for model in models or [model_of(current)]:
             combo.addItem(model_title(model.key), model.key)
         combo.setCurrentIndex(max(combo.findData(current), 0))
         combo.setEnabled(self.choose_model is not None and len(models) > 1)
         combo.setToolTip(translate(
-            "ProgramProperties", "The PMC the program is written for: its address map and "
-            "the ranges of its instructions. Kept in the file as a comment line the seed's "
-            "tools skip."))
+            "ProgramProperties", "The PLC the program is written for: its address map and "
+            "the ranges of its instructions. A model of another PLC family is taken when every "
+            "instruction reads back the same in that family's text."))
         label = self.model_form.labelForField(combo)
         if label is not None:
             label.setProperty("text", translate("ProgramProperties", "PMC model"))
@@ -182,7 +188,8 @@ class ProgramPropertiesDialog(Retranslating, QDialog):
     def _model_chosen(self, index: int) -> None:
         key = self.model_combo.itemData(index)
         if self.choose_model is not None and key and key != self.program.dialect:
-            self.choose_model(key)
+            self.choose_model(key)  # another family: the window shows a new program, or says no
+            self.program = getattr(self.parentWidget(), "program_info", self.program)
             self._fill()
 
     def _fill(self) -> None:

@@ -186,6 +186,19 @@ class TsTranslator(QTranslator):
         return not self._table
 
 
+class KeyNames(QTranslator):
+    """The keys of a shortcut as the keyboard's caps say them (`Ctrl+N`, `Shift+F3`), in
+    every language: Qt's own Turkish would show `Kontrol+N`, `Üst Karakter+S` in the menus."""
+
+    def translate(
+        self, context: str, source: str, disambiguation: str | None = None, n: int = -1
+    ) -> str:
+        return source if context == "QShortcut" else None  # type: ignore[return-value]
+
+    def isEmpty(self) -> bool:
+        return False
+
+
 class UiLanguage:
     """The installed translators; `apply` switches the language (Qt sends LanguageChange)."""
 
@@ -210,6 +223,8 @@ class UiLanguage:
         app_translator = self._app_translator(language)
         if app_translator is not None:
             self._translators.append(app_translator)
+        if language != "en":  # asked first: the key names stay the keyboard's
+            self._translators.append(KeyNames())
         for translator in self._translators:
             app.installTranslator(translator)
         QLocale.setDefault(QLocale(QLocale.Language.Turkish if language == "tr"

@@ -16,6 +16,7 @@ from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.translation import UiLanguage
 from tests.gui.plc_examples import running_session
+from tests.gui.test_new_program import file_new
 from tests.real_programs import real_programs_dir
 
 MOVING = parse_address("F102.0")  # MV1, X axis moving: the example writes A0.0
@@ -128,7 +129,7 @@ def test_the_texts_are_the_loaded_programs_until_another_is_loaded(
     _f9(qtbot, window)
     assert dock.program_messages == 1
     assert dock.session.run.alarm_table.text_for(A0) == "1000 SPINDLE ALARM"
-    window.actions_by_name["action_new"].trigger()  # File › New: the PLC still runs it
+    file_new(qtbot, window, None)  # File › New: the PLC still runs it
     assert dock.session.run.alarm_table.text_for(A0) == "1000 SPINDLE ALARM"
     assert window.load(plain)  # File › Open of a program without messages
     assert dock.session.run.alarm_table.text_for(A0) == "1000 SPINDLE ALARM"
@@ -145,7 +146,7 @@ def test_s41_alarm_keeps_its_programs_text_after_file_new(qtbot: QtBot, window: 
     a05 = parse_address("A0.5")
     table = window.plc_docks.session.run.alarm_table
     assert window.plc_docks.session.run.alarm_table.text_for(a05) == "1999 STUDER OPTIONS NOT SET"
-    window.actions_by_name["action_new"].trigger()
+    file_new(qtbot, window, None)
     assert window.plc_docks.session.run.alarm_table is table
     assert table.text_for(a05) == "1999 STUDER OPTIONS NOT SET"
 

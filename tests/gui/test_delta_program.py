@@ -145,3 +145,21 @@ def test_the_plc_control_screen_compiles_delta_text(window: MainWindow) -> None:
     control.stripe_ms = 0
     result = control.compile()
     assert result.ok and result.binary is not None
+
+
+def test_an_example_scenario_names_its_program_in_the_ide(qtbot: QtBot,
+                                                          window: MainWindow) -> None:
+    """Issue 38 item 10: PLC › Run scenario of a Delta example names its PROGRAM: run on
+    another program, the dock says which program the scenario is for."""
+    assert window.load(paths.EXAMPLES / "delta" / "counter_reset.txt")
+    session = window.plc_docks.session
+    session.run.realtime = False
+    qtbot.keyClick(window, Qt.Key.Key_F9)
+    dock = window.plc_docks.scenario
+    own = dock.run_file(paths.EXAMPLES / "delta" / "counter_reset.scenario.csv")
+    assert own is not None and own.passed
+    assert not own.scenario.diagnostics  # its PROGRAM line names the program in the PLC
+    other = dock.run_file(paths.EXAMPLES / "delta" / "timer_t0.scenario.csv")
+    assert other is not None
+    assert [d.code for d in other.scenario.diagnostics] == ["scenario-other-program"]
+    assert other.scenario.program == "timer_t0.txt"

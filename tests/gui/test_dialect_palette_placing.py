@@ -30,12 +30,9 @@ def _device(text: str, dialect: str) -> Address:
 
 
 def _end(window: MainWindow) -> int:
-    """The index of the network holding END (new networks go before it); a Fatek listing's
-    END is its trailer, not a network: the end of the list."""
-    networks = window.model.networks
-    return next((i for i, n in enumerate(networks)
-                 if any(isinstance(c, FunctionBox) and c.spec.kind.name == "END"
-                        and not c.spec.dialect for c in n.cells.values())), len(networks))
+    """The index of the blank network new networks are drawn in: before a Delta program's END
+    (kept last); a Fatek listing's END is its trailer, not a network: the end of the list."""
+    return window.model.blank_index()
 
 
 def _rung(dialect: str, contact: str | None, coil: str | None, first: int = 1) -> LadderNetwork:

@@ -14,6 +14,7 @@ from ladderworks.gui.docks.power_overlay import PowerOverlay
 from ladderworks.gui.main_window import MainWindow
 from tests.gui.conftest import Answers
 from tests.gui.plc_docks_help import plc_docks
+from tests.gui.test_new_program import file_new
 
 SPINDLE = paths.EXAMPLES / "spindle_override.LAD"
 DELTA_TIMER = paths.EXAMPLES / "delta" / "timer_t0.txt"
@@ -66,7 +67,7 @@ def test_another_program_takes_the_last_ones_power_flow_away(
     assert _online(window)
     window.plc_docks.online.refresh()
     assert _overlays(window)
-    window.actions_by_name["action_new"].trigger()
+    file_new(qtbot, window, None)  # File › New, OK
     assert not window.plc_docks.online.online
     assert not _overlays(window)  # no stray labels nor rails on the empty page
 

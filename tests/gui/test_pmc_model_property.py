@@ -44,8 +44,7 @@ def test_the_model_is_chosen_and_kept_in_the_file(window: MainWindow, qtbot: QtB
     path.write_text(SEED_TEXT, encoding="utf-8")
     assert window.load(path)
     dialog, combo = _dialog(window, qtbot)
-    assert [combo.itemData(i) for i in range(combo.count())] == [
-        m.key for m in MODELS.values() if m.family == MODELS[SEED].family]
+    assert [combo.itemData(i) for i in range(combo.count())] == list(MODELS)  # every family
     assert combo.currentData() == SEED and combo.isEnabled()
     assert combo.itemText(combo.findData(FANUC)) == "FANUC Series 30i-A PMC (memory-B)"
     _choose(combo, FANUC)
@@ -150,12 +149,11 @@ def test_a_model_registered_later_shows_in_the_list(window: MainWindow, qtbot: Q
     dialog.close()
 
 
-def test_a_program_of_another_family_shows_its_model_read_only(
+def test_a_program_of_an_unknown_model_shows_it_read_only(
         window: MainWindow, qtbot: QtBot, monkeypatch: pytest.MonkeyPatch) -> None:
-    import ladderworks.core.dialects  # noqa: F401  (the dialects register their models)
-
-    window.program_info.dialect = "delta"  # the Delta dialect's own model, a family of its own
+    """Every registered family's models are offered (issue 38); an unknown one is shown alone."""
+    window.program_info.dialect = "nosuch"
     dialog, combo = _dialog(window, qtbot)
-    assert [combo.itemText(i) for i in range(combo.count())] == [MODELS["delta"].title]
+    assert [combo.itemText(i) for i in range(combo.count())] == ["nosuch"]
     assert not combo.isEnabled()
     dialog.close()

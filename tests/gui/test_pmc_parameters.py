@@ -15,6 +15,7 @@ from ladderworks.gui.docks.table_entries import TableKind
 from ladderworks.gui.docks.tables import PlcTablesDock
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.paths import CHECKOUT
+from tests.gui.test_new_program import file_new
 from tests.gui.test_plc_tables import type_into_cell
 
 PROGRAM = "%@3\nRD R1.4\nTMR 1\nWRT R1.7\n%\n"
@@ -103,6 +104,6 @@ def test_new_program_has_default_parameters(
     assert not window.is_modified()
     dock = tables_of(window)
     assert ["K5", "00000011", "03h"] in dock.cell_texts(TableKind.KEEP)
-    window.actions_by_name["action_new"].trigger()
+    file_new(qtbot, window, None)
     assert not session.run.parameters and not window.is_modified()
     assert dock.cell_texts(TableKind.KEEP) == []

@@ -15,6 +15,7 @@ from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.settings import Settings
 from ladderworks.gui.translation import UiLanguage
 from tests.gui.conftest import Drawer
+from tests.gui.test_new_program import file_new
 from tests.gui.test_screen_fit_width import rail_x
 from tests.gui.test_small_screen import PANEL, on_the_panel
 
@@ -37,7 +38,7 @@ def test_fit_width_beside_the_plc_docks_shows_the_coils(window: MainWindow,
         assert 0 < rail_x(window, network) <= view.viewport().width()
     assert "0 of" not in window.zoom_label.toolTip()
     assert window.zoom_label.toolTip().startswith("Fit width: every network fits at ")
-    window.actions_by_name["action_new"].trigger()  # an empty program fits: no "0 of 1"
+    file_new(qtbot, window, None)  # File › New, OK  # an empty program fits: no "0 of 1"
     assert "of 1 networks" not in window.zoom_label.toolTip()
 
 

@@ -77,16 +77,26 @@ def palette_rows(dialect: str | None) -> tuple[InstructionSpec, ...]:
                  and not is_contact(spec) and _offered(spec, found))
 
 
+def _program_end(found: dialects.Dialect) -> tuple[InstructionSpec, ...]:
+    """The table's END row when the dialect's text has it as an instruction of its own
+    (Delta's END; a Fatek listing's END is written by its printer, after every network)."""
+    from ladderworks.core.families import program_end
+
+    end = program_end(found.name)
+    return () if end is None else (end,)
+
+
 @cache
 def structure_rows(dialect: str | None) -> tuple[InstructionSpec, ...]:
     """The program-structure rows a program of `dialect` may place (Delta's CJ, CALL, P,
-    SRET, FEND, MC/MCR): its rows with a `flow`, as boxes."""
+    SRET, FEND, MC/MCR, END): its rows with a `flow`, as boxes."""
     found = dialects.get(dialect)
     if found is None:
         return ()
     return tuple(spec for spec in _rows(found.name)
                  if spec.flow is not Flow.NONE and not spec.pushes
-                 and spec.combine is Combine.NONE and _offered(spec, found))
+                 and spec.combine is Combine.NONE and _offered(spec, found)) \
+        + _program_end(found)
 
 
 @cache

@@ -69,7 +69,9 @@ def decode(data: bytes) -> tuple[str, str]:
     return text, form.encoding
 
 
-_CONTROLS = bytes(b for b in range(32) if b not in (9, 10, 12, 13))  # bytes text rarely has
+# bytes text rarely has: not TAB, LF, VT, FF, CR, nor FS/GS/RS, which a comment may hold (they
+# end no line here: core/il/textform.py) — a short program with a few is text all the same
+_CONTROLS = bytes(b for b in range(32) if b not in (9, 10, 11, 12, 13, 28, 29, 30))
 
 
 def _is_binary(data: bytes) -> bool:
@@ -193,12 +195,15 @@ class _FileParser:
     def run(self) -> ParseResult:
         has_any_section = any(_HEADER.match(line) for line in self.lines if "%@" in line)
         if not has_any_section:
-            self.diagnostics.append(Diagnostic("missing-start", {}, 1, 1))
+            missing = Diagnostic("missing-start", {}, 1, 1)
+            self.diagnostics.append(missing)
             stop = len(self.lines)
             if stop and _SECTION_END.match(self.lines[-1]):
                 stop -= 1
             self.source.ladder_stop = stop
             self._parse_ladder(0, stop)
+            if self.labels and self.program.networks:  # a LADDER-III ladder section without
+                self.diagnostics.remove(missing)  # its `%@3`: N00012: labels say what it is
             self._not_a_program()
             return self._result()
         self._split_sections()

@@ -49,4 +49,14 @@ class YieldingAxis(pg.AxisItem):
 
 
 class YieldingLocaleAxis(YieldingAxis, LocaleAxis):
-    """The time axis (the UI language's decimal sign), letting a due scan run first."""
+    """The time axis (the UI language's decimal sign), letting a due scan run first; without
+    its title its last tick carries the `unit` (`900 ms`)."""
+
+    unit = ""  # said after the last tick's number ("" while the axis shows its title)
+
+    def tickStrings(self, values: list[float], scale: float, spacing: float) -> list[str]:
+        """The numbers, the last one followed by the unit when the title is not shown."""
+        strings = super().tickStrings(values, scale, spacing)
+        if self.unit and strings:
+            strings[-1] = f"{strings[-1]} {self.unit}"
+        return strings

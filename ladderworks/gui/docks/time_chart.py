@@ -511,9 +511,16 @@ class TimeChartDock(Retranslating, QDockWidget):
 
     def _fit_axis_title(self) -> None:
         """A chart under SHORT_PLOT px (a 1024×600 screen's third) gives the lanes the
-        axis title's line: the numbers under the axis are milliseconds all the same."""
+        axis title's line: its last tick says the unit instead (`900 ms`)."""
         axis = self.plot.getPlotItem().getAxis("bottom")
-        axis.showLabel(self.plot.height() >= SHORT_PLOT)
+        titled = self.plot.height() >= SHORT_PLOT
+        axis.showLabel(titled)
+        if isinstance(axis, YieldingLocaleAxis):
+            unit = "" if titled else translate("TimeChart", "ms")
+            if unit != axis.unit:
+                axis.unit = unit
+                axis.picture = None  # the tick texts again
+                axis.update()
 
     def _update_actions(self) -> None:
         self.chart_actions["action_time_chart_start"].setEnabled(not self.sampling)

@@ -3,15 +3,16 @@
 from __future__ import annotations
 
 from ladderworks.core.ladder import Edit, LadderNetwork
-from ladderworks.gui.editor.ladder_model import LadderModel, is_blank
+from ladderworks.gui.editor.ladder_model import LadderModel, ends_program, is_blank
 from ladderworks.gui.editor.step_name import NamedCommand, StepName
 
 
 class NetworkEditCommand(NamedCommand):
     """A change to one network: `edit` (from `LadderModel.prepare`) is applied by redo().
 
-    When the change draws into the blank network at the end, a new blank one is appended (and
-    removed again on undo), so there is always room for the next network.
+    When the change draws into the blank network at the end, a new blank one is inserted after
+    it (before it when the drawing is the program's END, which stays last), and removed again on
+    undo, so there is always room for the next network.
     """
 
     def __init__(self, model: LadderModel, index: int, edit: Edit, name: StepName) -> None:
@@ -19,22 +20,24 @@ class NetworkEditCommand(NamedCommand):
         self._model = model
         self._index = index
         self._edit = edit  # redo() applies it and keeps the inverse for undo(), and so on
-        self._appended = False
+        self._appended: int | None = None  # where a new blank network was inserted
 
     def redo(self) -> None:
         """Make the change."""
         model = self._model
+        blank = model.blank_index()
         self._edit = model.apply(self._index, self._edit)
-        last = len(model.networks) - 1
-        self._appended = self._index == last and not is_blank(model.networks[last])
-        if self._appended:
-            model.insert_network(last + 1, LadderNetwork())
+        self._appended = None
+        if self._index == blank and not is_blank(model.networks[blank]):
+            end = ends_program(model.networks[blank]) and blank == len(model.networks) - 1
+            self._appended = blank if end else blank + 1
+            model.insert_network(self._appended, LadderNetwork())
 
     def undo(self) -> None:
         """Take the change back."""
         model = self._model
-        if self._appended:
-            model.remove_network(len(model.networks) - 1)
+        if self._appended is not None:
+            model.remove_network(self._appended)
         self._edit = model.apply(self._index, self._edit)
 
 

@@ -10,10 +10,12 @@ from PySide6.QtWidgets import QGraphicsRectItem, QGraphicsScene, QGraphicsView, 
 
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects import parse_bit
 from ladderworks.core.dialects.spelling import spelling
+from ladderworks.core.dialects.typed_bits import read_bit
 from ladderworks.core.il import Program
-from ladderworks.core.ladder import LadderNetwork, Selection, Wire
+from ladderworks.core.instructions import lookup
+from ladderworks.core.ladder import Coil, Contact, LadderNetwork, Selection, Wire
+from ladderworks.core.ladder.logic import coil_spec
 from ladderworks.core.symbols import resolve
 from ladderworks.gui.editor.centre import centre_on
 from ladderworks.gui.editor.geometry import (
@@ -165,9 +167,10 @@ class GridView(QGraphicsView):
         self.drawing_changed.emit()
 
     def _make_item(self, index: int) -> NetworkItem:
-        item = LabelledNetworkItem(self.networks[index], index + 1, self.describe_address)
+        item = LabelledNetworkItem(self.networks[index], self.network_number(index),
+                                   self.describe_address)
         item.spelling = spelling(self.model.dialect)  # a Delta program: Delta's spelling
-        item.is_new = index == len(self.networks) - 1 and self.networks[index].is_empty()
+        item.is_new = index == self.model.blank_index() and self.networks[index].is_empty()
         item.setPos(0, self.layout_.tops[index])
         self._scene.addItem(item)
         return item
@@ -197,36 +200,36 @@ class GridView(QGraphicsView):
         """True when an element of `network` has a comment to show (its rows are taller)."""
         return shows_comment(network, self.comments)
 
-    def resolve_address(self, text: str) -> str:
-        """The address a typed text names: itself, or the address of a program symbol (a Delta
-        program's device, `X17`: its address, `X1.7`)."""
-        try:
-            if spelling(self.model.dialect).dialect:
-                return str(parse_bit(text, self.model.dialect))
-            return str(resolve(text, self.model.symbols))
-        except AddressError:
-            return text
-
-    def typed_address_problem(self, text: str) -> Diagnostic | None:
-        """Why a bit typed in a Delta program is none of its devices (`X8`); None if it is one
-        (or the program is the PMC's: its own checks say why)."""
-        if not spelling(self.model.dialect).dialect:
-            return None
-        try:
-            parse_bit(text, self.model.dialect)
-        except AddressError as error:
-            return error.diagnostic
-        return None
+    def typed_bit(self, text: str, element: Contact | Coil) -> str | Address | Diagnostic:
+        """The device typed on a contact or coil. A dialect program's reader reads it as the
+        element's line (`LD T0`: T0's contact; `OUT X0`: its refusal, a Diagnostic); a PMC
+        program's text is itself or the address of a program symbol (the edit checks it)."""
+        dialect = self.model.dialect
+        if not spelling(dialect).dialect:
+            try:
+                return str(resolve(text, self.model.symbols))
+            except AddressError:
+                return text
+        spec = coil_spec(element) if isinstance(element, Coil) else lookup(
+            "RD.NOT" if element.negated else "RD")
+        assert spec is not None
+        return read_bit(spec, text, str(dialect))
 
     def spell_address(self, address: Address) -> str:
         """An address as the program writes it (`X17` in a Delta program)."""
         return spelling(self.model.dialect).address(address)
 
+    def network_number(self, index: int) -> int:
+        """The number network `index` is shown with: the program's END after the blank
+        network is numbered as the program counts it (the blank's own tag is `+`)."""
+        blank = self.model.blank_index()
+        return index if index > blank else index + 1
+
     def _renumber(self, start: int) -> None:
-        last = len(self.network_items) - 1
+        blank = self.model.blank_index()
         for index, item in self.network_items.made(start):
-            item.number = index + 1
-            item.is_new = index == last and self.networks[index].is_empty()
+            item.number = self.network_number(index)
+            item.is_new = index == blank and self.networks[index].is_empty()
             item.update()
 
     def _relayout(self, start: int) -> None:
@@ -258,15 +261,13 @@ class GridView(QGraphicsView):
                 item.error_cells = set()
                 item.update()
         for diagnostic in diagnostics:
-            if (
-                diagnostic.network is not None
-                and diagnostic.cell is not None
-                and 0 <= diagnostic.network < len(self.network_items)
-            ):
-                item = self.network_items[diagnostic.network]
+            if diagnostic.network is None or diagnostic.cell is None:
+                continue
+            index = self.model.editor_network(diagnostic.network)
+            if 0 <= index < len(self.network_items):
+                item = self.network_items[index]
                 item.error_cells.add(diagnostic.cell)
                 item.update()
-
 
     # -- cursor, overlays, positions ----------------------------------------------------------
 
@@ -334,10 +335,13 @@ class GridView(QGraphicsView):
         """Jump to a diagnostic's network and cell."""
         if diagnostic.network is not None and diagnostic.network >= len(self.networks) - 1:
             self.finish_loading()
-        if diagnostic.network is None or not 0 <= diagnostic.network < len(self.networks):
+        if diagnostic.network is None:
+            return
+        index = self.model.editor_network(diagnostic.network)
+        if not 0 <= index < len(self.networks):
             return
         row, col = diagnostic.cell if diagnostic.cell is not None else (0, 0)
-        self.jump_to(diagnostic.network, row, col)
+        self.jump_to(index, row, col)
         self.setFocus()
 
     def tooltip_at(self, index: int, row: int, col: int) -> str:

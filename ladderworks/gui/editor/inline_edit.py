@@ -143,21 +143,20 @@ class InlineEdit(QObject):
             self.close()
             return
         editor = self.editor
-        problem = editor.typed_address_problem(address_text)
-        if problem is not None:  # a Delta program: its devices' own message (X8: octal)
-            self._refuse(problem)
-            return
-        address_text = editor.resolve_address(address_text)
-        try:
-            core.edits.to_address(address_text, (row, col), dialect=editor.model.dialect)
-        except EditRefused as refused:
-            self._refuse(refused.diagnostic)
-            return
         found = editor.networks[index].element_at(row, col)
         assert found is not None
         element = found[1]
         assert isinstance(element, Contact | Coil)
-        self.edits.set_address(index, row, col, address_text,
+        typed = editor.typed_bit(address_text, element)
+        if isinstance(typed, Diagnostic):  # a dialect's reader refuses it (`OUT X0`, `X8`)
+            self._refuse(typed)
+            return
+        try:
+            core.edits.to_address(typed, (row, col), dialect=editor.model.dialect)
+        except EditRefused as refused:
+            self._refuse(refused.diagnostic)
+            return
+        self.edits.set_address(index, row, col, typed,
                                comment if comment != element.comment else None)
         self.close()
 

@@ -78,7 +78,7 @@ class GridKeys:
         if key == Qt.Key.Key_End:
             if ctrl:
                 editor.finish_loading()  # a large program: the end is after every network
-                return len(editor.networks) - 1, 0, 0  # the empty network: draw the next
+                return editor.model.blank_index(), 0, 0  # the empty network: draw the next
             return index, row, networks[index].columns  # the coil column
         if key in (Qt.Key.Key_PageUp, Qt.Key.Key_PageDown):
             return self._page(index, row, col, key == Qt.Key.Key_PageDown)

@@ -27,6 +27,7 @@ from ladderworks.core.ladder import (
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.editor.commands import NetworkEditCommand, NetworkListCommand
 from ladderworks.gui.editor.grid_view import GridView
+from ladderworks.gui.editor.ladder_model import ends_program
 from ladderworks.gui.editor.step_name import StepName, editor_step
 from ladderworks.gui.function_dialog import FunctionDialog
 
@@ -53,6 +54,17 @@ def _params_step(spec: InstructionSpec) -> StepName:
     return editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Parameters of {0}"), shown_name(spec))
 
 
+def _keeping_end(operation: Callable[[LadderNetwork], object]
+                 ) -> Callable[[LadderNetwork], object]:
+    """`operation` on the program's last network, END, refused when END would not be left."""
+    def kept(network: LadderNetwork) -> object:
+        result = operation(network)
+        if not ends_program(network):
+            raise EditRefused("edit-end-kept")
+        return result
+    return kept
+
+
 class LadderEdits:
     """Turns a tool use, a menu action or a key into an undo command on the grid's model; a
     refused edit becomes the grid's status message. `open_address` opens the in-place
@@ -69,6 +81,8 @@ class LadderEdits:
         """Make a core edit on network `index` as an undo command named `name`; False (and a
         message) when the core refuses it."""
         model = self.grid.model
+        if index == len(model.networks) - 1 and model.end_is_last():
+            operation = _keeping_end(operation)
         try:
             edit = model.prepare(index, operation)
         except EditRefused as refused:
@@ -79,10 +93,11 @@ class LadderEdits:
 
     # -- one operation each, at a cell -----------------------------------------------------
 
-    def set_address(self, index: int, row: int, col: int, text: str,
+    def set_address(self, index: int, row: int, col: int, text: str | Address,
                     comment: str | None = None) -> bool:
         """The address of a contact or coil, and its new `comment` (None: kept): one step."""
         dialect = self.grid.model.dialect  # its map: a seed program's is the seed's
+        shown = self.grid.spell_address(text) if isinstance(text, Address) else text
 
         def address_and_comment(network: LadderNetwork) -> None:
             core.set_address(network, row, col, text, dialect)
@@ -90,7 +105,7 @@ class LadderEdits:
                 core.set_comment(network, row, col, comment)
 
         return self.run_edit(index, address_and_comment,
-                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), text))
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), shown))
 
     def set_comments(self, index: int, lines: list[str]) -> bool:
         """A network's comment lines."""
@@ -252,7 +267,7 @@ class LadderEdits:
         if found is None or not isinstance(found[1], Contact | Coil):
             return False
         (r, c), _element = found
-        return self.set_address(index, r, c, str(address))
+        return self.set_address(index, r, c, address)
 
     def delete_at_cursor(self) -> None:
         """DEL: delete the selection or the element at the cursor."""
@@ -312,7 +327,10 @@ class LadderEdits:
         """Delete the network at the cursor."""
         grid = self.grid
         index = grid.cursor_cell[0]
-        if index >= len(grid.networks) - 1:
+        if index == len(grid.networks) - 1 and grid.model.end_is_last():
+            self.grid.message.emit(diagnostic_text(EditRefused("edit-end-kept").diagnostics[0]))
+            return
+        if index >= grid.model.blank_index():
             return
         grid.undo_stack.push(NetworkListCommand(
             grid.model, index, None,

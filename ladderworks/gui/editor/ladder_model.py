@@ -10,7 +10,8 @@ from PySide6.QtGui import QUndoStack
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il import Program
-from ladderworks.core.ladder import Edit, LadderDocument, LadderNetwork, convert
+from ladderworks.core.instructions import Flow, lookup
+from ladderworks.core.ladder import Edit, FunctionBox, LadderDocument, LadderNetwork, Wire, convert
 from ladderworks.core.ladder.convert import Kept
 from ladderworks.core.symbols import SymbolTable
 from ladderworks.gui.editor.progressive import ProgressiveLoader
@@ -28,9 +29,19 @@ def is_blank(network: LadderNetwork) -> bool:
     return network.is_empty() and not network.comments
 
 
+def ends_program(network: LadderNetwork) -> bool:
+    """True for a network that is the program's END alone (a box of the `PROGRAM_END` row)."""
+    boxes = [element for _cell, element in network.elements() if not isinstance(element, Wire)]
+    if len(boxes) != 1 or not isinstance(boxes[0], FunctionBox):
+        return False
+    spec = lookup(boxes[0].name)
+    return spec is not None and spec.flow is Flow.PROGRAM_END
+
+
 class LadderModel(QObject):
-    """Owns the networks (always one blank network at the end to draw in); every change
-    is made here and announced, so views only observe. Edits come as undo commands."""
+    """Owns the networks (always one blank network at the end to draw in, before the END of a
+    program that ends with one: END stays last); every change is made here and announced, so
+    views only observe. Edits come as undo commands."""
 
     networks_inserted = Signal(int, int)  # first index, count
     network_removed = Signal(int)
@@ -92,8 +103,28 @@ class LadderModel(QObject):
         self.undo_stack.clear()
         self.document = document
         self.symbols = document.origin.symbols if document.origin is not None else None
-        self.networks = [*document.networks, LadderNetwork()]
+        networks = list(document.networks)
+        at = len(networks) - 1 if networks and ends_program(networks[-1]) else len(networks)
+        networks.insert(at, LadderNetwork())
+        self.networks = networks
         self.document_reset.emit()
+
+    def blank_index(self) -> int:
+        """The index of the blank network new networks are drawn in: the last, or the one
+        before the program's END."""
+        last = len(self.networks) - 1
+        return last - 1 if last > 0 and self.end_is_last() else last
+
+    def editor_network(self, network: int) -> int:
+        """The index here of the program's network `network` (a diagnostic's): the program's
+        END after the blank network is one further."""
+        blank = self.blank_index()
+        return network + 1 if network >= blank and blank < len(self.networks) - 1 else network
+
+    def end_is_last(self) -> bool:
+        """True when the last network is the program's END (kept last: drawn before it)."""
+        return len(self.networks) > 1 and ends_program(self.networks[-1]) \
+            and is_blank(self.networks[-2])
 
     @property
     def loading(self) -> bool:
@@ -106,9 +137,11 @@ class LadderModel(QObject):
 
     def append_networks(self, networks: list[LadderNetwork]) -> None:
         """Add laid-out networks before the blank network at the end (background loading)."""
-        at = len(self.networks) - 1
+        at = self.blank_index()
         self.networks[at:at] = networks
         self.networks_inserted.emit(at, len(networks))
+        if networks and ends_program(networks[-1]) and not self.end_is_last():
+            self.insert_network(len(self.networks), self.remove_network(at + len(networks) - 1))
 
     def _laid_out(self, networks: list[LadderNetwork], trailer: list[str] | None) -> None:
         self.append_networks(networks)
@@ -120,8 +153,8 @@ class LadderModel(QObject):
         self.finish_loading()
         doc = self.document
         nets = list(self.networks)
-        if nets and is_blank(nets[-1]):
-            nets.pop()
+        if nets and is_blank(nets[self.blank_index()]):
+            nets.pop(self.blank_index())
         return LadderDocument(nets, doc.header, doc.trailer, doc.footer, doc.before, doc.after,
                               doc.origin)
 
@@ -197,4 +230,4 @@ class LadderModel(QObject):
         return network
 
 
-__all__ = ["LadderModel", "Mode", "is_blank"]
+__all__ = ["LadderModel", "Mode", "ends_program", "is_blank"]

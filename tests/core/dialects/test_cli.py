@@ -65,6 +65,14 @@ def test_every_example_passes_its_scenario(program: Path, capsys) -> None:
     assert "1 passed, 0 failed" in capsys.readouterr().out
 
 
+def test_the_example_scenarios_run_alone_on_the_program_they_name(capsys) -> None:
+    """`ladderworks-cli test delta/*.scenario.csv fatek/*.scenario.csv`: each names its PROGRAM."""
+    scenarios = sorted(EXAMPLES.glob("*.scenario.csv")) + sorted(
+        EXAMPLES.parent.joinpath("fatek").glob("*.scenario.csv"))
+    assert main(["test", *map(str, scenarios)]) == 0, capsys.readouterr()
+    assert f"{len(scenarios)} passed, 0 failed" in capsys.readouterr().out
+
+
 def test_ladder_art_in_delta_spelling(capsys) -> None:
     assert main(["ladder", str(EXAMPLES / "compare_contacts.txt")]) == 0
     out = capsys.readouterr().out

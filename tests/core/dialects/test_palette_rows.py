@@ -26,7 +26,7 @@ def test_delta_offers_boxes_not_contacts_nor_structure() -> None:
 def test_delta_offers_structure_and_one_contact_per_operation() -> None:
     assert [spec.name for spec in structure_rows("delta")] == [
         "DVP.CJ", "DVP.CALL", "DVP.SRET", "DVP.FEND", "DVP.P", "DVP.P.SUB", "DVP.MC", "DVP.MCR",
-        "DVP.RET"]  # not STL: read with its LD Sn
+        "DVP.RET", "END"]  # not STL: read with its LD Sn; END last
     contacts = contact_rows("delta")
     assert [spec.name for spec in contacts] == [
         "DVP.LDP", "DVP.LDF", "DVP.LD=", "DVP.LD>", "DVP.LD<", "DVP.LD<>", "DVP.LD<=",

@@ -74,6 +74,15 @@ def test_the_example_scenarios_pass_as_plugin_items(pytester: pytest.Pytester) -
     result.assert_outcomes(passed=len(list(EXAMPLES.glob("*.scenario.csv"))))
 
 
+def test_the_delta_and_fatek_example_scenarios_name_their_program(
+        pytester: pytest.Pytester) -> None:
+    """Each dialect example's scenario has its PROGRAM line: the plugin runs them as they are."""
+    for family in ("delta", "fatek"):
+        shutil.copytree(EXAMPLES / family, pytester.path / family)
+    result = pytester.runpytest(*PLUGIN)
+    result.assert_outcomes(passed=len(list(EXAMPLES.glob("*/*.scenario.csv"))))
+
+
 def test_the_project_suite_collects_no_scenario_file() -> None:
     """The plugin is on wherever LadderWorks is installed: the project's own test path holds
     no *.scenario.csv (tests write theirs under tmp_path), so nothing is collected twice or
