@@ -253,6 +253,11 @@ MESSAGES: dict[str, str] = {
     "dialect-constant": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a K or H constant"),
     "dialect-not-simulated": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} is a {dialect} instruction the simulator does not run"),
+    "not-simulated": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} is kept and drawn but not simulated: the scan passes it by"),
+    "dvp-missing-operand": QT_TRANSLATE_NOOP("Diagnostic", "{name}: operand {index} is missing"),
+    "dvp-step-order": QT_TRANSLATE_NOOP(
+        "Diagnostic", "step {step} is not after step {previous}: the step numbers must grow"),
     "dvp-missing-sret": QT_TRANSLATE_NOOP(
         "Diagnostic", "subroutine without its SRET (before the next pointer or END)"),
     "dvp-sret-alone": QT_TRANSLATE_NOOP(

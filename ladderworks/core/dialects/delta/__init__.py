@@ -8,6 +8,7 @@ from __future__ import annotations
 from ladderworks.core.address import Address, Area
 from ladderworks.core.dialects.base import Dialect
 from ladderworks.core.dialects.delta.instructions import FAMILIES, ROWS
+from ladderworks.core.dialects.delta.shown import ROWS as SHOWN_ROWS
 from ladderworks.core.dialects.delta.sniff import score
 from ladderworks.core.dialects.devices import Device, DeviceMap
 
@@ -62,7 +63,7 @@ def relays(areas: dict[Area, bytearray], now_ms: int, first: bool) -> None:
 
 
 DIALECT = Dialect(
-    name=NAME, title="Delta DVP", title_tr="Delta DVP", code=2, devices=DEVICES, rows=ROWS,
+    name=NAME, title="Delta DVP", title_tr="Delta DVP", code=2, devices=DEVICES, rows=ROWS + SHOWN_ROWS,
     sniff=score, reader="ladderworks.core.dialects.delta.reader:read",
     printer="ladderworks.core.dialects.delta.printer:network_lines", relays=relays,
     clocks=CLOCKS,

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.dialects.delta import DEVICES, NAME, WIDE_COUNTERS
+from ladderworks.core.dialects.delta import csv_form, shown
 from ladderworks.core.dialects.delta import instructions as rows
 from ladderworks.core.il.program import (
     FileSource,
@@ -32,6 +33,7 @@ _STEP = re.compile(r"^\d+$")
 _POINTER = re.compile(r"^[Pp](\d+):?$")
 _CONSTANT = re.compile(r"^([KkHh])(-?[0-9A-Fa-f]+)$")
 _NEST = re.compile(r"^[Nn](\d)$")
+_MNEMONIC = re.compile(r"^[A-Z][A-Z0-9]*[=<>&|^]*$")  # what may be kept as a shown instruction
 
 _BIT_LETTERS = {rows.BIT_IN: "XYMSTC", rows.BIT_OUT: "YMS"}
 _WORD_LETTERS = {rows.WORD_IN: "TCD", rows.WORD_OUT: "TCD", rows.TIMER: "T",
@@ -73,6 +75,8 @@ class _Rung:
 class _Reader:
     def __init__(self, lines: list[str]) -> None:
         self.lines = lines
+        self.form = csv_form.detect(lines[:csv_form.SAMPLE * 2])
+        self.step = -1  # the last step number read
         self.networks: list[Network] = []
         self.spans: list[tuple[int, int]] = []
         self.heads: list[int] = []
@@ -105,21 +109,39 @@ class _Reader:
         """Read every line; the networks and the index of the line after the last one."""
         last = 0
         for index, raw in enumerate(self.lines):
-            code, comment, comment_column = _split_comment(raw)
-            words = code.split()
             number = index + 1
-            if not words:
-                if (comment_column and not self.rung.instructions) or comment_column:
-                    self.pending.append(comment)
-                continue
-            column = len(code) - len(code.lstrip()) + 1
-            if len(words) > 1 and _STEP.match(words[0]):
-                column = code.index(words[1], column - 1 + len(words[0])) + 1
-                words = words[1:]
+            if self.form is not None and not self.form.comment(raw):
+                found = csv_form.fields(raw, self.form.separator)
+                words = [text for text, _ in found]
+                column = found[0][1] if found else 1
+                comment = ""
+                if len(found) > 1 and _STEP.match(words[0]):
+                    self.step_number(int(words[0]), number, column)
+                    words, column = words[1:], found[1][1]
+                if not words:
+                    continue
+            else:
+                code, comment, comment_column = _split_comment(raw)
+                words = code.split()
+                if not words:
+                    if comment_column:
+                        self.pending.append(comment)
+                    continue
+                column = len(code) - len(code.lstrip()) + 1
+                if len(words) > 1 and _STEP.match(words[0]):
+                    self.step_number(int(words[0]), number, column)
+                    column = code.index(words[1], column - 1 + len(words[0])) + 1
+                    words = words[1:]
             self.line(index, number, column, words, comment)
             last = index + 1
         self.close(last)
         return self.networks, last
+
+    def step_number(self, step: int, line: int, column: int) -> None:
+        """A line's step number: each after the one before (WPLSoft numbers them so)."""
+        if step <= self.step:
+            self.error("dvp-step-order", line, column, step=step, previous=self.step)
+        self.step = step
 
     def line(self, index: int, number: int, column: int, words: list[str], comment: str) -> None:
         pointer = _POINTER.match(words[0])
@@ -131,15 +153,19 @@ class _Reader:
             self.close(index + 1)
             return
         mnemonic = words[0].upper()
-        spelling = rows.SPELLINGS.get(mnemonic)
-        if spelling is None:  # reported; the line stays in the file (faithful save)
-            if mnemonic in rows.NOT_SIMULATED:
-                self.error("dialect-not-simulated", number, column, name=mnemonic,
-                           dialect="Delta")
-            else:
-                self.error("unknown-instruction", number, column, name=mnemonic)
+        if "" in words:  # an empty field of WPLSoft's export between two others
+            self.error("dvp-missing-operand", number, column, name=mnemonic,
+                       index=words.index(""))
             return
+        spelling = rows.SPELLINGS.get(mnemonic)
         rung = self.rung
+        if spelling is None:  # kept, drawn and saved, not simulated (the checks warn)
+            if not _MNEMONIC.match(mnemonic) or any(" " in text for text in words[1:]):
+                self.error("unknown-instruction", number, column, name=words[0][:20])
+                return
+            spelling = shown.spelling(mnemonic, words[1:], rung.depth > 0)
+            self.shown(index, number, column, spelling, comment)
+            return
         role = spelling.role
         if role == "alone" or (role == "load" and rung.output and rung.pushed == 0):
             self.close(index)
@@ -164,6 +190,21 @@ class _Reader:
         elif role == "block":
             rung.depth = max(rung.depth - 1, 0)
         rung.pushed = max(rung.pushed + (spec.pushes if spec.stack else 0), 0)
+        rung.output = role == "output"
+        if role == "alone":
+            self.close(index + 1)
+
+    def shown(self, index: int, number: int, column: int, spelling: rows.Spelling,
+              comment: str) -> None:
+        """An instruction the simulator does not run, kept with its operands as written."""
+        rung = self.rung
+        role = spelling.role
+        if role == "alone" or (role == "load" and rung.output and rung.pushed == 0):
+            self.close(index)
+            rung = self.rung
+        name = spelling.stk_row if role == "load" and rung.depth > 0 else spelling.row
+        self.add(index, Instruction(name, None, (), comment, (), number, column))
+        rung.depth += role == "load"
         rung.output = role == "output"
         if role == "alone":
             self.close(index + 1)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+from ladderworks.core.dialects.delta import csv_form
 from ladderworks.core.il.textform import split_lines
 
 # a Delta line: optional step number, a mnemonic, operands joined to their numbers (X0, K10)
@@ -28,7 +29,13 @@ def score(text: str) -> int:
         return 0  # a PMC (LadderWorks / LADDER-III) file
     total = matched = 0
     distinctive = False
-    for line in split_lines(text)[:SAMPLE_LINES * 2]:
+    lines = split_lines(text[:65536])[:SAMPLE_LINES * 2]
+    form = csv_form.detect(lines[:csv_form.SAMPLE * 2])
+    if form is not None:  # WPLSoft's export: its fields as an instruction mode line
+        lines = [line if form.comment(line) else
+                 " ".join(field for field, _ in csv_form.fields(line, form.separator))
+                 for line in lines]
+    for line in lines:
         if not line.strip() or _COMMENT.match(line):
             continue
         total += 1
