@@ -78,6 +78,9 @@ class InstructionSpec:
     # False: shown only, an instruction kept, drawn and saved but not run (a warning; the scan
     # passes its input on, a contact never conducts): a dialect's "shown" rows (shown_row)
     simulated: bool = True
+    # a box that is an output, as a coil is: drawn among the coils, its input flows on to the
+    # outputs after it (Delta's applied instructions: `LD X2 / OUT Y1 / MOV K5 D0`)
+    output: bool = False
     operand_texts: tuple[str, ...] = ()  # a shown-only instruction's operands as written
 
     @property

@@ -81,7 +81,9 @@ class Dialect:
         if not self.finish:
             return out
         finish = _function(self.finish)
-        return finish(program, out, fresh, joins)  # type: ignore[no-any-return]
+        lines = finish(program, out, fresh, joins)
+        assert isinstance(lines, list)
+        return lines
 
     def network_lines(self, network: Network, first: bool) -> list[str]:
         """A new or changed network as this dialect's text (Save, format)."""

@@ -14,8 +14,7 @@ from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects.delta import DEVICES, NAME, WIDE_COUNTERS
-from ladderworks.core.dialects.delta import csv_form, shown
+from ladderworks.core.dialects.delta import DEVICES, NAME, WIDE_COUNTERS, csv_form, shown
 from ladderworks.core.dialects.delta import instructions as rows
 from ladderworks.core.il.program import (
     FileSource,
