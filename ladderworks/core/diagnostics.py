@@ -255,6 +255,9 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "{name} is a {dialect} instruction the simulator does not run"),
     "not-simulated": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} is kept and drawn but not simulated: the scan passes it by"),
+    "run-skips": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{count} instructions are not simulated, the scan passes them by "
+        "(line): {names}"),
     "inv-place": QT_TRANSLATE_NOOP(
         "Diagnostic", "INV inverts all the power before it: draw it on a line from the rail "
         "or a branch point, not inside a parallel block"),

@@ -10,6 +10,7 @@ unchanged network is saved from its own lines (il/printer.py's faithful save).
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, AddressError
@@ -313,3 +314,14 @@ def read(text: str, form: TextForm, lines: list[str],
         form, lines, ends, 0, len(lines), [network.key() for network in networks],
         reader.spans, reader.heads, tuple(program.trailer), (last, len(lines)))
     return program, reader.diagnostics
+
+
+def read_instructions(instructions: Iterable[tuple[int | None, str, Sequence[str]]]
+                      ) -> tuple[Program, list[Diagnostic]]:
+    """A program from a list of instructions, each (step or None, mnemonic, operand texts): as
+    WPLSoft exports them (`000012,MPS`), read by `read` (the .dvp reader's entry). A
+    diagnostic's line is the instruction's place in the list (1-based)."""
+    lines = [",".join([*(() if step is None else (f"{step:06d}",)), mnemonic, *operands])
+             for step, mnemonic, operands in instructions]
+    text = "".join(line + "\n" for line in lines)
+    return read(text, TextForm(), lines, ["\n"] * len(lines))
