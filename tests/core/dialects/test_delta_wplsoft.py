@@ -3,6 +3,8 @@ in their own form (separator, line ends, step numbers)."""
 
 from __future__ import annotations
 
+from itertools import pairwise
+
 import pytest
 
 from ladderworks.core.compiler import compile
@@ -107,7 +109,7 @@ def test_wplsofts_step_sizes_match_its_export_of_a_real_program() -> None:
     path = real_programs_dir() / "delta" / "METALURGICA_c91257f_proejto_clp.csv"
     rows = [line.split(",") for line in path.read_text("ascii").splitlines()]
     wrong = [(a[1], int(b[0]) - int(a[0]), csv_form.steps(a[1], len(a) - 2))
-             for a, b in zip(rows, rows[1:], strict=False)
+             for a, b in pairwise(rows)
              if int(b[0]) - int(a[0]) != csv_form.steps(a[1], len(a) - 2)]
     assert wrong == []
 
