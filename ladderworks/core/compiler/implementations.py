@@ -29,8 +29,9 @@ def never_conducts(ctx: object, state: dict, inputs: tuple[bool, ...], params: t
 
 def not_simulated(spec: InstructionSpec) -> FunctionImpl:
     """What a shown-only row (`simulated` False) runs: an OR contact passes its input on (the
-    contact adds nothing), an LD or AND contact never conducts, a box passes its input on."""
-    if spec.combine in (Combine.READ, Combine.AND):
+    contact adds nothing), an LD or AND contact never conducts; a box's W1 (Fatek's FO0) is
+    off, a box without one (a Delta output) passes the rung's power on."""
+    if spec.combine in (Combine.READ, Combine.AND) or (spec.combine is Combine.NONE and spec.w1):
         return never_conducts
     return passes_input
 

@@ -27,6 +27,7 @@ class SkippedInstruction:
     line: int
     column: int
     text: str  # `DMUL D7 K1 D9` (the mnemonic alone from a binary)
+    name: str = ""  # its mnemonic as the dialect writes it: `DMUL`, `FUN 200 FOO`
 
 
 def skipped(program: Program) -> list[SkippedInstruction]:
@@ -39,14 +40,16 @@ def skipped(program: Program) -> list[SkippedInstruction]:
         for k, ins in enumerate(network.instructions):
             spec = ins.spec
             if not spec.simulated:
-                text = " ".join([spell.name(spec), *spell.params(spec, ins.params)])
-                found.append(SkippedInstruction(n, k, ins.line, ins.column, text))
+                name = spell.name(spec)
+                text = " ".join([name, *spell.params(spec, ins.params)])
+                found.append(SkippedInstruction(n, k, ins.line, ins.column, text, name))
     return found
 
 
 def skipped_ops(binary: BinaryProgram) -> list[SkippedInstruction]:
     """The ops of a binary the scan passes by (their source lines; no operands kept)."""
-    return [SkippedInstruction(-1, k, op.source.line, op.source.column, op.spec.text_name)
+    return [SkippedInstruction(-1, k, op.source.line, op.source.column, op.spec.text_name,
+                               op.spec.text_name)
             for k, op in enumerate(binary.ops) if not op.spec.simulated]
 
 
@@ -54,7 +57,7 @@ def summary(found: list[SkippedInstruction]) -> Diagnostic | None:
     """One warning naming the instructions skipped (None when there are none)."""
     if not found:
         return None
-    names = ", ".join(f"{item.text.split(' ')[0]} ({item.line})" for item in found[:20])
+    names = ", ".join(f"{item.name or item.text} ({item.line})" for item in found[:20])
     more = len(found) - 20
     return Diagnostic("run-skips", {"count": len(found),
                                     "names": names + (f" … +{more}" if more > 0 else "")},

@@ -23,7 +23,6 @@ SAMPLE = 50  # code lines looked at to find the form
 _NUMBERED = re.compile(r"^[ \t]*(\d{1,8})[ \t]*([,;\t])")
 _PLAIN = re.compile(r"^[ \t]*[A-Za-z][A-Za-z0-9=<>&|^]*[ \t]*([,;])")
 _ALONE = re.compile(r"^[ \t]*[A-Za-z][A-Za-z0-9]*[ \t]*([,;]?)[ \t]*$")  # MPS, END, ANB,
-_STEP = re.compile(r"^\d+$")
 _POINTER = re.compile(r"^[Pp]\d+:?$")
 
 
@@ -164,8 +163,3 @@ def finish(program: Program, out: list[str], fresh: set[int], joins: set[int]) -
         words = [text for text, _column in fields(body[found.end():], form.separator)]
         step = number + steps(words[0] if words else "", max(len(words) - 1, 0))
     return result
-
-
-def is_step(text: str) -> bool:
-    """True for a step number field."""
-    return _STEP.match(text) is not None

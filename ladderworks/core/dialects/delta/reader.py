@@ -29,7 +29,7 @@ from ladderworks.core.il.program import (
 from ladderworks.core.il.textform import TextForm
 from ladderworks.core.instructions import Flow, InstructionSpec, lookup
 
-_STEP = re.compile(r"^\d+$")
+_STEP = re.compile(r"^\d{1,9}$")  # a step number (a longer one is not)
 _POINTER = re.compile(r"^[Pp](\d+):?$")
 _CONSTANT = re.compile(r"^([KkHh])(-?[0-9A-Fa-f]+)$")
 _NEST = re.compile(r"^[Nn](\d)$")

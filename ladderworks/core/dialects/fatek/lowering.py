@@ -29,7 +29,13 @@ from ladderworks.core.dialects.fatek.devices import (
     word_address,
 )
 from ladderworks.core.dialects.fatek.listing import Record
-from ladderworks.core.dialects.fatek.rows import BY_FUN, NOT_SIMULATED, ROWS, operand_label
+from ladderworks.core.dialects.fatek.rows import (
+    BY_FUN,
+    NOT_SIMULATED,
+    ROWS,
+    operand_label,
+    unknown_fun,
+)
 from ladderworks.core.il.program import Instruction, ParamValue
 from ladderworks.core.instructions import InstructionSpec, ParamKind
 
@@ -171,12 +177,15 @@ class ProgramLowering(StackLowering):
     def function(self, record: Record) -> None:
         """FUN n with its operand lines."""
         spec = BY_FUN.get(record.fun or -1)
+        if spec is None and record.fun is not None and 0 <= record.fun <= MAX_FUN:
+            spec = unknown_fun(record.fun, self.depth, record.fun_name.upper())  # checks warn
         if spec is None or spec.inputs == ("IN",):
             raise refused(record, "fatek-unknown-fun", number=record.fun)
         self.inputs(record, len(spec.inputs))
         fo = self.next_fo() if any(p.name == "fo" for p in spec.params) else None
-        if spec.name in NOT_SIMULATED:
-            self.not_simulated(record)
+        if spec.name in NOT_SIMULATED or not spec.simulated:
+            if spec.simulated:
+                self.not_simulated(record)
             lines = ", ".join(f"{o.label}: {o.text}".strip() for o in record.operands)
             self.emit_box(record, spec, (record.fun or 0, fo or ALWAYS_OFF), lines)
         else:
@@ -266,6 +275,9 @@ class ProgramLowering(StackLowering):
             self.function_output(record)
         elif kind != "END":
             raise refused(record, "fatek-unknown-instruction", name=kind)
+
+
+MAX_FUN = 399  # a FUN number above is not a function (the FBs manual numbers them below 400)
 
 
 def _name(record: Record) -> str:
