@@ -145,3 +145,23 @@ def test_the_plc_control_screen_compiles_delta_text(window: MainWindow) -> None:
     control.stripe_ms = 0
     result = control.compile()
     assert result.ok and result.binary is not None
+
+
+def test_a_wplsoft_export_opens_drawn_and_names_what_it_does_not_simulate(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path) -> None:
+    """Issue 36: WPLSoft's CSV export opens as ladder; the PLC control screen lists the
+    instructions the scan passes by; the file saves back byte for byte."""
+    example = paths.EXAMPLES / "delta" / "wplsoft_outputs.csv"
+    assert window.load(example)
+    assert window.model.dialect == "delta"
+    assert all(network.listing is None for network in window.model.networks)
+    control = window.plc_docks.control
+    program, _diagnostics = window.model.program()
+    assert program is not None
+    assert window.plc_docks.session.load_program(program).ok
+    control.show()
+    qtbot.waitUntil(lambda: control.skipped.isVisible(), timeout=3000)
+    assert "TO K0 K1 D0 K1 (line 20)" in control.skipped.text()
+    other = tmp_path / "again.csv"
+    assert window.save_to(other)
+    assert other.read_bytes() == example.read_bytes()

@@ -129,6 +129,12 @@ def needs_lead(function: str) -> bool:
             and row_for(function, Combine.AND, False) is not None)
 
 
+def simulated(function: str) -> bool:
+    """False for a contact the simulator passes by (a shown-only row: it never conducts)."""
+    spec = lookup(function)
+    return spec is None or spec.simulated
+
+
 def is_edge(function: str) -> bool:
     """True for an edge contact (its one operand is a bit device)."""
     spec = lookup(function)
