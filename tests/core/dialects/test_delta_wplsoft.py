@@ -133,3 +133,10 @@ def test_a_list_of_instructions_becomes_a_program() -> None:
 ])
 def test_instruction_mode_text_is_not_an_export(text: str) -> None:
     assert csv_form.detect(text.splitlines()) is None
+
+
+def test_text_after_the_operands_is_the_elements_comment() -> None:
+    data = b"000000,LD,X0,Start button\r\n000001,OUT,Y0,Motor\r\n000002,END\r\n"
+    program = _read(data)
+    assert [ins.comment for ins in program.networks[0].instructions] == ["Start button", "Motor"]
+    assert encode_program(program) == data

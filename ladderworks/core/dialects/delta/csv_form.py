@@ -90,6 +90,18 @@ def fields(line: str, separator: str) -> list[tuple[str, int]]:
     return out
 
 
+_OPERAND = re.compile(r"^[A-Za-z]+[-+]?[0-9][0-9A-Za-z.]*$")  # X0, K-5, H0, K4M0, D0E
+
+
+def trailing_comment(words: list[str]) -> str:
+    """Take the fields after the mnemonic that are not operands (text: `Start button`,
+    `Motor`) off the end of `words`; they are the line's comment."""
+    taken: list[str] = []
+    while len(words) > 2 and words[-1] and _OPERAND.match(words[-1]) is None:
+        taken.append(words.pop())
+    return ", ".join(reversed(taken))
+
+
 def _double(mnemonic: str) -> bool:
     """A 32-bit form: D before a 16-bit mnemonic (DMOV, DADD, DLD=; not DIV, DECO, DI)."""
     rest = mnemonic[1:]

@@ -22,6 +22,13 @@ _COMMON = frozenset(("LD", "AND", "OR", "OUT", "SET", "RST", "END", "CALL", "MOV
 SAMPLE_LINES = 400
 
 
+def _words(line: str, separator: str) -> str:
+    """An export line's fields as an instruction mode line (its comment fields left out)."""
+    words = [field for field, _ in csv_form.fields(line, separator)]
+    csv_form.trailing_comment(words)
+    return " ".join(words)
+
+
 def score(text: str) -> int:
     """0..100: the share of the first code lines that read as Delta instructions, 0 when none
     is a Delta-only mnemonic, an `LD` with a Delta operand, or a comparison contact."""
@@ -32,9 +39,7 @@ def score(text: str) -> int:
     lines = split_lines(text[:65536])[:SAMPLE_LINES * 2]
     form = csv_form.detect(lines[:csv_form.SAMPLE * 2])
     if form is not None:  # WPLSoft's export: its fields as an instruction mode line
-        lines = [line if form.comment(line) else
-                 " ".join(field for field, _ in csv_form.fields(line, form.separator))
-                 for line in lines]
+        lines = [line if form.comment(line) else _words(line, form.separator) for line in lines]
     for line in lines:
         if not line.strip() or _COMMENT.match(line):
             continue
