@@ -73,7 +73,7 @@ def _box_lines(ins: Instruction) -> list[str]:
         "P" if isinstance(mode, int) and mode & 1 else "")
     head = _line(f"FUN {fun}{forms}", spec.text_name)
     lines = [head]
-    if spec.cnc:  # not simulated: its operand lines were kept as the comment
+    if spec.cnc or not spec.simulated:  # not simulated: its operand lines kept as the comment
         lines.extend(f"    {text.strip()}" for text in ins.comment.split(", ") if text.strip())
         return lines
     for param in spec.params:

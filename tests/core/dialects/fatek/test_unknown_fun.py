@@ -4,6 +4,7 @@ runs as a box whose FO stay 0; the run names it (issue #36: the same as for Delt
 from __future__ import annotations
 
 from ladderworks.core.compiler import compile_program
+from ladderworks.core.il import Network
 from ladderworks.core.il.printer import encode_program
 from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.ladder.layout import layout_network
@@ -37,3 +38,10 @@ def test_it_runs_with_its_fo_off_and_is_named() -> None:
     put(engine, "X1", 1, "fatek")
     engine.scan()
     assert get(engine, "Y0", "fatek") == 0 and get(engine, "Y1", "fatek") == 1
+
+
+def test_a_changed_network_writes_its_operand_lines_back() -> None:
+    program = parse_bytes(TEXT, "fatek").program
+    program.networks[0] = Network(list(program.networks[0].instructions), ["changed"])
+    lines = [line.split() for line in encode_program(program).decode().splitlines()]
+    assert lines[:4] == [["ORG", "X0"], ["FUN", "200", "FOO"], ["S:", "R0"], ["D:", "R1"]]
