@@ -952,271 +952,326 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
+        <translation>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
+        <translation>the .pdw file is cut short: its record at byte {offset} runs past the end</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
+        <translation>the .pdw file is damaged: the record at byte {offset} fails its checksum</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
+        <translation>the .pdw file is damaged: the record at byte {offset} is malformed</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <source>the .pdw file holds no program (checked up to byte {offset})</source>
+        <translation>the .pdw file holds no program (checked up to byte {offset})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
+        <translation>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
+        <translation>the .pdw file is damaged: its program image is wrong at byte {offset}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
+        <translation>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
+        <translation>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
+        <translation>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <source>the program ends inside an instruction at byte {offset}</source>
+        <translation>the program ends inside an instruction at byte {offset}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; is not a device (use {letters} with a number)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; is out of range ({first} to {last})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; is not a bit device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; is not a word device</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; is not listed in this table (use {letters})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; is not a K or H constant</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name} is a {dialect} instruction the simulator does not run</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>{name} is kept and drawn but not simulated: the scan passes it by</source>
         <translation>{name} is kept and drawn but not simulated: the scan passes it by</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>{count} instructions are not simulated, the scan passes them by (line): {names}</source>
         <translation>{count} instructions are not simulated, the scan passes them by (line): {names}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
         <source>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</source>
         <translation>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
         <source>{name}: operand {index} is missing</source>
         <translation>{name}: operand {index} is missing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>step {step} is not after step {previous}: the step numbers must grow</source>
         <translation>step {step} is not after step {previous}: the step numbers must grow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>subroutine without its SRET (before the next pointer or END)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>no pointer P{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>no subroutine P{program} after FEND for this CALL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} without a logic result before it (start with LD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
         <source>this pointer P number is used twice</source>
         <translation>this pointer P number is used twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>a second PROGRAM line (the one on line {first} counts)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>the program &apos;{path}&apos; cannot be loaded: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="347"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="351"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="360"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{count} addresses from {start} run past Modbus address 65535</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="335"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} cannot be written over Modbus: the access must be r</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} are bits: a width is for registers only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="341"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end} overlap the row on line {other}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
         <source>the map has no row</source>
         <translation>the map has no row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
@@ -1932,143 +1987,155 @@
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="430"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
         <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="111"/>
         <source>{0} was changed by another program</source>
         <translation>{0} was changed by another program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>The program has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="152"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="170"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="460"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="157"/>
         <source>PMC parameters</source>
         <translation>PMC parameters</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="157"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} lines not understood (kept as they are); line {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
         <source>The file has errors: it is shown as text</source>
         <translation>The file has errors: it is shown as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="209"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
-        <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="292"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="342"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="292"/>
+        <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
+        <translation>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="342"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="404"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="409"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="357"/>
+        <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
+        <translation>Fatek WinProladder listings (*.lst *.LST);;All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="459"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="316"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="325"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="321"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="212"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
+        <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="330"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="361"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="369"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="370"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="387"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="404"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="412"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>

@@ -952,271 +952,326 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="240"/>
+        <source>not a WinProladder project: no &apos;Fatek WinProladder, File Format 1&apos; header</source>
+        <translation>WinProladder projesi değil: &apos;Fatek WinProladder, File Format 1&apos; başlığı yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <source>the .pdw file is cut short: its record at byte {offset} runs past the end</source>
+        <translation>.pdw dosyası eksik: {offset}. bayttaki kaydı dosyanın sonunu aşıyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <source>the .pdw file is damaged: the record at byte {offset} fails its checksum</source>
+        <translation>.pdw dosyası bozuk: {offset}. bayttaki kaydın sağlama toplamı tutmuyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <source>the .pdw file is damaged: the record at byte {offset} is malformed</source>
+        <translation>.pdw dosyası bozuk: {offset}. bayttaki kayıt hatalı biçimde</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="248"/>
+        <source>the .pdw file holds no program (checked up to byte {offset})</source>
+        <translation>.pdw dosyasında program yok ({offset}. bayta kadar bakıldı)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="250"/>
+        <source>the program at byte {offset} cannot be unmasked: it has no erased memory block to recover the mask from</source>
+        <translation>{offset}. bayttaki programın maskesi kaldırılamıyor: maskenin çıkarılabileceği silinmiş bir bellek bloğu yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <source>the .pdw file is damaged: its program image is wrong at byte {offset}</source>
+        <translation>.pdw dosyası bozuk: program görüntüsü {offset}. baytta hatalı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <source>the .pdw file is damaged: the program&apos;s code does not match its checksum (byte {offset})</source>
+        <translation>.pdw dosyası bozuk: programın kodu sağlama toplamıyla uyuşmuyor ({offset}. bayt)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="260"/>
+        <source>instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the program is read up to it</source>
+        <translation>{offset}. bayttaki {word} komut kodunu LadderWorks henüz çözemiyor: program o noktaya kadar okundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <source>operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the program is read up to it</source>
+        <translation>{offset}. bayttaki {word} operand kodu LadderWorks&apos;ün henüz çözebildiği bir cihaz değil: program o noktaya kadar okundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="268"/>
+        <source>the program ends inside an instruction at byte {offset}</source>
+        <translation>program {offset}. baytta bir komutun ortasında bitiyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
         <source>&apos;{text}&apos; is not a device (use {letters} with a number)</source>
         <translation>&apos;{text}&apos; bir aygıt değil ({letters} harflerinden biri ve bir numara kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="242"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
         <source>&apos;{text}&apos;: {letter} is numbered in octal (digits 0 to 7)</source>
         <translation>&apos;{text}&apos;: {letter} sekizli (oktal) numaralanır (0 ile 7 arası rakamlar)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="244"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
         <source>&apos;{text}&apos; is out of range ({first} to {last})</source>
         <translation>&apos;{text}&apos; aralık dışında ({first} ile {last} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="245"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="276"/>
         <source>&apos;{text}&apos; is not a bit device</source>
         <translation>&apos;{text}&apos; bir bit aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="246"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
         <source>&apos;{text}&apos; is not a word device</source>
         <translation>&apos;{text}&apos; bir kelime (word) aygıtı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="247"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="278"/>
         <source>&apos;{text}&apos; is not listed in this table (use {letters})</source>
         <translation>&apos;{text}&apos; bu tabloda listelenmez ({letters} kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="249"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="280"/>
         <source>&apos;{text}&apos;: give a device or a range FIRST-LAST of at most {most} devices</source>
         <translation>&apos;{text}&apos;: bir aygıt ya da en çok {most} aygıtlık bir İLK-SON aralığı verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="251"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="282"/>
         <source>{name}: operand {index} must be one of {expected}, found &apos;{text}&apos;</source>
         <translation>{name}: {index}. operand şunlardan biri olmalı: {expected}; &apos;{text}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="253"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="284"/>
         <source>&apos;{text}&apos; is not a K or H constant</source>
         <translation>&apos;{text}&apos; bir K ya da H sabiti değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="254"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="285"/>
         <source>{name} is a {dialect} instruction the simulator does not run</source>
         <translation>{name}, simülatörün çalıştırmadığı bir {dialect} komutu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="256"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
         <source>{name} is kept and drawn but not simulated: the scan passes it by</source>
         <translation>{name} korunur ve çizilir ama benzetilmez: tarama onu atlar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="258"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
         <source>{count} instructions are not simulated, the scan passes them by (line): {names}</source>
         <translation>{count} komut benzetilmez, tarama onları atlar (satır): {names}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="261"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
         <source>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</source>
         <translation>INV kendinden önceki tüm enerjiyi tersler: onu baradan ya da bir dallanma noktasından gelen bir hatta çizin, paralel bir bloğun içine değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="264"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
         <source>{name}: operand {index} is missing</source>
         <translation>{name}: {index}. işlenen eksik</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="265"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
         <source>step {step} is not after step {previous}: the step numbers must grow</source>
         <translation>{step} adımı {previous} adımından sonra gelmiyor: adım numaraları artmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="267"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="298"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="269"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="300"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="271"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="302"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="273"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="304"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="275"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="306"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="277"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="308"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="279"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="310"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="281"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="312"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="283"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="314"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="287"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="288"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="289"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="290"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="292"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="293"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="295"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="296"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="299"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="301"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="303"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="307"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="311"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="313"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="316"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="347"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} byte: bir değer 1, 2 veya 4 byte olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="318"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="351"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="358"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="360"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="333"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="335"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="339"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="341"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1932,143 +1987,155 @@
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="430"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
         <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="120"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="110"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="111"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="121"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="168"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="151"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="169"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="152"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="170"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="460"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="157"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="156"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="157"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="201"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="202"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="209"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="210"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
-        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Tüm dosyalar (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="292"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="342"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="292"/>
+        <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
+        <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="342"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="404"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="409"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="357"/>
+        <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
+        <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="459"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="316"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="325"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="321"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="212"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
+        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projeleri (*.pdw *.PDW);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="330"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="361"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="369"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="370"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="387"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="404"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="388"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="412"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>

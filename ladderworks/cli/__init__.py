@@ -15,7 +15,7 @@ from ladderworks import version
 # not load the PLC engine); tests/core/test_cli_commands.py keeps this true to the modules.
 COMMANDS: dict[str, str] = {
     "alarms": "alarms", "check": "text", "compile": "plc", "disasm": "plc", "format": "text",
-    "ladder": "ladder", "mnemonic": "ladder", "run": "plc", "serve": "serve",
+    "ladder": "ladder", "mnemonic": "ladder", "pdw": "pdw", "run": "plc", "serve": "serve",
     "signals": "signals", "test": "scenario", "xref": "xref",
 }
 

@@ -236,6 +236,37 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "FO {text}: no function output here (FO0-FO7 after a box)"),
     "fatek-ascii-section": QT_TRANSLATE_NOOP(
         "Diagnostic", "ASCII files: '{text}' is not a section header such as [R1000]"),
+    # WinProladder projects (.pdw; docs/dialects.md, ".pdw projects"): byte offsets in the file
+    "pdw-header": QT_TRANSLATE_NOOP(
+        "Diagnostic", "not a WinProladder project: no 'Fatek WinProladder, File Format 1' header"),
+    "pdw-truncated": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .pdw file is cut short: its record at byte {offset} runs past the end"),
+    "pdw-checksum": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .pdw file is damaged: the record at byte {offset} fails its checksum"),
+    "pdw-record": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .pdw file is damaged: the record at byte {offset} is malformed"),
+    "pdw-no-program": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .pdw file holds no program (checked up to byte {offset})"),
+    "pdw-key": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "the program at byte {offset} cannot be unmasked: it has no erased memory block to"
+        " recover the mask from"),
+    "pdw-image": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the .pdw file is damaged: its program image is wrong at byte {offset}"),
+    "pdw-program-checksum": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "the .pdw file is damaged: the program's code does not match its checksum (byte"
+        " {offset})"),
+    "pdw-code": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "instruction code {word} at byte {offset} is not one LadderWorks decodes yet: the"
+        " program is read up to it"),
+    "pdw-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic",
+        "operand code {word} at byte {offset} is not a device LadderWorks decodes yet: the"
+        " program is read up to it"),
+    "pdw-cut": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the program ends inside an instruction at byte {offset}"),
     # dialects (docs/dialects.md): devices and operands of a Delta or Fatek program
     "device-unknown": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' is not a device (use {letters} with a number)"),

@@ -11,6 +11,7 @@ from PySide6.QtCore import QCoreApplication, QDateTime, QLocale
 from PySide6.QtWidgets import QMessageBox
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
+from ladderworks.core.dialects.fatek.pdw_file import is_pdw_path
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import EncodeError
@@ -211,11 +212,12 @@ class FileActions(_Window):
             translate(
                 "MainWindow",
                 "Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT"
-                " *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS)"
+                " *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS *.pdw *.PDW)"
                 ";;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC)"
                 ";;LADDER-III exports (*.txt *.TXT *.mnc *.MNC)"
                 ";;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV)"
                 ";;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT)"
+                ";;Fatek WinProladder projects (*.pdw *.PDW)"
                 ";;All files (*)"))
         if name:
             self.load(name)
@@ -286,6 +288,13 @@ class FileActions(_Window):
                 "{0} did not parse and is not overwritten. Fix the errors and use "
                 "Show as ladder, or save under another name.").format(path.name))
             return False
+        if is_pdw_path(path):
+            self.warn(translate("MainWindow", "Save"), translate(
+                "MainWindow",
+                "{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write"
+                " it, since what it does not decode would be lost. Save the program as a"
+                " WinProladder listing (.lst) instead.").format(path.name))
+            return self.save_as_dialog()
         self._last_save_result = False
         go_on = self._may_write(path)
         if not go_on:
@@ -342,6 +351,11 @@ class FileActions(_Window):
 
     def save_as_dialog(self) -> bool:
         """File > Save As."""
+        if self.path is not None and is_pdw_path(self.path):  # its listing (a .pdw: never)
+            name = file_dialogs.save_file_name(
+                self, translate("MainWindow", "Save program"), str(self.path.with_suffix(".lst")),
+                translate("MainWindow", "Fatek WinProladder listings (*.lst *.LST);;All files (*)"))
+            return bool(name) and self.save_to(name)
         name = file_dialogs.save_file_name(
             self, translate("MainWindow", "Save program"), str(self.path or "program.LAD"),
             translate("MainWindow", "Ladder programs (*.LAD *.lad);;All files (*)"))

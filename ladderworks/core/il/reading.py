@@ -2,7 +2,9 @@
 
 `parse_bytes`, `parse_file` and `parse_for_check` here sniff the text (core/dialects) and hand
 it to the dialect's reader, else to the PMC parser (il/parser.py). `dialect` names a reader and
-skips the sniffing (`--dialect NAME` on the command line); "pmc" forces the PMC parser.
+skips the sniffing (`--dialect NAME` on the command line); "pmc" forces the PMC parser. A
+WinProladder project (`.pdw`, recognised by its header) is read by the Fatek dialect's
+`pdw_reader` whatever is named.
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ from typing import TYPE_CHECKING
 from ladderworks.core import dialects
 from ladderworks.core.collector import collector_paused
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects.fatek.pdw_file import is_pdw
 from ladderworks.core.il import parser
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.textform import TextForm, decode_lines, dominant_newline, split_with_ends
@@ -49,8 +52,19 @@ def read_dialect(data: bytes, dialect: dialects.Dialect) -> ParseResult:
     return ParseResult(program, every, form.encoding)
 
 
+def read_pdw(data: bytes) -> ParseResult:
+    """A WinProladder project's program (core/dialects/fatek/pdw_reader.py)."""
+    from ladderworks.core.dialects.fatek import pdw_reader
+    with collector_paused(promote=True):
+        program, diagnostics = pdw_reader.read(data)
+    return ParseResult(program, sorted(diagnostics, key=lambda d: (d.line, d.column)),
+                       program.form.encoding)
+
+
 def parse_bytes(data: bytes, dialect: str | None = None) -> ParseResult:
     """Parse file contents in whichever dialect they are written (or `dialect`)."""
+    if is_pdw(data):
+        return read_pdw(data)
     found = choose(data, dialect)
     return parser.parse_bytes(data) if found is None else read_dialect(data, found)
 
@@ -65,6 +79,8 @@ def parse_for_check(path: str | Path, dialect: str | None = None) -> ParseResult
     """parser.parse_for_check, or a dialect's reader for a file of another dialect."""
     with open(path, "rb") as file:
         data = file.read()
+    if is_pdw(data):
+        return read_pdw(data)
     found = choose(data, dialect)
     return parser.parse_for_check(path) if found is None else read_dialect(data, found)
 
