@@ -7,7 +7,7 @@ from itertools import pairwise
 
 import pytest
 
-from ladderworks.core.compiler import compile
+from ladderworks.core.compiler import compile, compile_program
 from ladderworks.core.dialects.delta import csv_form
 from ladderworks.core.dialects.delta.reader import read_instructions
 from ladderworks.core.il import Network
@@ -140,3 +140,31 @@ def test_text_after_the_operands_is_the_elements_comment() -> None:
     program = _read(data)
     assert [ins.comment for ins in program.networks[0].instructions] == ["Start button", "Motor"]
     assert encode_program(program) == data
+
+
+def test_quoted_fields_read_and_a_changed_network_is_quoted_too() -> None:
+    data = b'"000000","LD","X0"\r\n"000001","OUT","Y0"\r\n"000002","END"\r\n'
+    program = _read(data)
+    assert encode_program(program) == data
+    more = delta("LD X0\nANI X1\nOUT Y0\nEND\n").networks[0]
+    program.networks[0] = Network(list(more.instructions))
+    assert encode_program(program).decode().splitlines() == [
+        '"000000","LD","X0"', '"000001","ANI","X1"', '"000002","OUT","Y0"', '"000003","END"']
+
+
+def test_operands_the_simulator_has_no_device_for_keep_the_instruction_shown() -> None:
+    """K4M0 (a bit group), D0E0 / E1 (index registers): kept, warned, passed by."""
+    text = ("000000,LD,X0\n000001,MOV,K4M0,D0\n000006,OUT,Y0\n"
+            "000007,LD,M0E0\n000008,OUT,Y1\n000009,END\n")
+    program = _read(text.encode())
+    names = [ins.spec.text_name for n in program.networks for ins in n.instructions]
+    assert names == ["RD", "MOV", "WRT", "LD", "WRT", "END"]
+    compiled = compile_program(program)
+    assert compiled.binary is not None
+    assert [(d.code, d.line) for d in compiled.diagnostics] == [("not-simulated", 2),
+                                                                ("not-simulated", 4)]
+    plc = ScanEngine(compiled.binary)
+    put(plc, "X0", 1)
+    plc.scan()
+    assert (get(plc, "Y0"), get(plc, "Y1")) == (1, 0)  # MOV passes on, the LD never conducts
+    assert encode_program(program) == text.encode()

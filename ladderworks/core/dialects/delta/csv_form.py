@@ -20,8 +20,8 @@ if TYPE_CHECKING:
     from ladderworks.core.il.program import Program
 
 SAMPLE = 50  # code lines looked at to find the form
-_NUMBERED = re.compile(r"^[ \t]*(\d{1,8})[ \t]*([,;\t])")
-_PLAIN = re.compile(r"^[ \t]*[A-Za-z][A-Za-z0-9=<>&|^]*[ \t]*([,;])")
+_NUMBERED = re.compile(r'^[ \t]*"?(\d{1,8})"?[ \t]*([,;\t])')
+_PLAIN = re.compile(r'^[ \t]*"?[A-Za-z][A-Za-z0-9=<>&|^]*"?[ \t]*([,;])')
 _ALONE = re.compile(r"^[ \t]*[A-Za-z][A-Za-z0-9]*[ \t]*([,;]?)[ \t]*$")  # MPS, END, ANB,
 _POINTER = re.compile(r"^[Pp]\d+:?$")
 
@@ -34,6 +34,7 @@ class CsvForm:
     numbered: bool  # a step number first
     digits: int = 6  # the step number's width
     trailing: bool = False  # a separator at the end of each line
+    quoted: bool = False  # each field in double quotes (`"000012","MPS"`)
 
     def comment(self, text: str) -> bool:
         """True if the line is a comment line (`// text`; `; text` unless `;` separates)."""
@@ -44,7 +45,7 @@ class CsvForm:
 def detect(lines: list[str]) -> CsvForm | None:
     """The export form of a text's lines, None for WPLSoft's instruction mode text (spaces)."""
     separators: dict[str, int] = {}
-    numbered = plain = trailing = seen = 0
+    numbered = plain = trailing = seen = quoted = 0
     digits = 6
     for line in lines:
         if not line.strip() or line.lstrip()[:2] == "//":
@@ -64,6 +65,7 @@ def detect(lines: list[str]) -> CsvForm | None:
             plain += 1
             separator = found.group(1)
         separators[separator] = separators.get(separator, 0) + 1
+        quoted += line.lstrip().startswith('"')
         trailing += line.rstrip(" \r").endswith(separator)
         if seen >= SAMPLE:
             break
@@ -72,7 +74,8 @@ def detect(lines: list[str]) -> CsvForm | None:
     separator = max(separators, key=lambda key: separators[key])
     if separator == "\t" and not numbered:
         return None  # tabs without step numbers: the instruction mode text reads it
-    return CsvForm(separator, numbered * 2 >= seen, digits, trailing * 2 >= numbered + plain)
+    return CsvForm(separator, numbered * 2 >= seen, digits, trailing * 2 >= numbered + plain,
+                   quoted * 2 >= numbered + plain)
 
 
 def fields(line: str, separator: str) -> list[tuple[str, int]]:
@@ -83,6 +86,8 @@ def fields(line: str, separator: str) -> list[tuple[str, int]]:
     for part in line.split(separator):
         text = part.strip()
         column = at + len(part) - len(part.lstrip()) + 1
+        if len(text) >= 2 and text[0] == text[-1] == '"':  # a quoted field
+            text, column = text[1:-1].strip(), column + 1
         out.append((text, column))
         at += len(part) + len(separator)
     while out and not out[-1][0]:
@@ -155,9 +160,10 @@ def finish(program: Program, out: list[str], fresh: set[int], joins: set[int]) -
                 result.append(f"// {text}{end}" if stripped else line)
                 continue
             words = stripped.split(";")[0].split()  # an element's comment is not kept here
-            text = form.separator.join(words) + (form.separator if form.trailing else "")
-            if form.numbered:
-                text = f"{step:0{form.digits}d}{form.separator}{text}"
+            fields_out = [f"{step:0{form.digits}d}"] * form.numbered + words
+            if form.quoted:
+                fields_out = [f'"{field}"' for field in fields_out]
+            text = form.separator.join(fields_out) + (form.separator if form.trailing else "")
             result.append(text + end)
             step += steps(words[0], len(words) - 1)
             moved = True

@@ -33,6 +33,10 @@ _STEP = re.compile(r"^\d{1,9}$")  # a step number (a longer one is not)
 _POINTER = re.compile(r"^[Pp](\d+):?$")
 _CONSTANT = re.compile(r"^([KkHh])(-?[0-9A-Fa-f]+)$")
 _NEST = re.compile(r"^[Nn](\d)$")
+# operands the simulator has no device for: bit groups (K4M0), index registers (E0, F1, D0E0),
+# floating-point constants (F1.5): the instruction is kept, not simulated (docs/dialects.md)
+_NOT_SIMULATED_OPERAND = re.compile(
+    r"^(K[1-8][XYMS]\d+|[EF][0-7]|[A-Z]+\d+[EF][0-7]|F-?\d+\.\d*)$", re.IGNORECASE)
 _MNEMONIC = re.compile(r"^[A-Z][A-Z0-9]*[=<>&|^]*$")  # what may be kept as a shown instruction
 
 _BIT_LETTERS = {rows.BIT_IN: "XYMSTC", rows.BIT_OUT: "YMS"}
@@ -159,6 +163,12 @@ class _Reader:
             return
         spelling = rows.SPELLINGS.get(mnemonic)
         rung = self.rung
+        if spelling is not None and any(_NOT_SIMULATED_OPERAND.match(text)
+                                        for text in words[1:]):  # K4M0, D0E0: kept as is
+            contact = spelling.role in ("load", "contact")
+            self.shown(index, number, column,
+                       shown.spelling(mnemonic, words[1:], rung.depth > 0, contact), comment)
+            return
         if spelling is None:  # kept, drawn and saved, not simulated (the checks warn)
             if not _MNEMONIC.match(mnemonic) or any(" " in text for text in words[1:]):
                 self.error("unknown-instruction", number, column, name=words[0][:20])

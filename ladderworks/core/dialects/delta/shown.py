@@ -27,6 +27,7 @@ from ladderworks.core.instructions import (
 _SUB = SUB_BASE + 1900  # their SUB numbers: 11900.. (a binary names the base row)
 # a contact's spelling: LD, AND or OR (a D before it: 32-bit), then a comparison or logic sign
 _CONTACT = re.compile(r"^D?(LD|AND|OR)[=<>&|^]+$")
+_KNOWN_CONTACT = re.compile(r"^D?(LD|AND|AN|OR)")  # LDI, ANI, ORP, AND= …
 
 
 def _row(suffix: str, sub: int, combine: Combine, title: str, title_tr: str,
@@ -53,12 +54,14 @@ ALONE = _row(".ALONE", _SUB + 5, Combine.NONE, "Not simulated (shown only)",
 ROWS: tuple[InstructionSpec, ...] = (BOX, LOAD, LOAD_STK, SERIES, PARALLEL, ALONE)
 
 
-def spelling(mnemonic: str, operands: list[str], logic: bool) -> Spelling:
+def spelling(mnemonic: str, operands: list[str], logic: bool, contact: bool = False
+             ) -> Spelling:
     """How a mnemonic that is not simulated is read: a contact's part in the rung (`load`,
-    `contact`) when it is spelled as one, else a box (`output`), or a network of its own when
-    no logic comes before it (`alone`: NOP, STL, EI ...); its rows named for it."""
+    `contact`) when it is spelled as one (or `contact`: a simulated contact with an operand
+    the simulator does not have, `LD M0E0`), else a box (`output`), or a network of its own
+    when no logic comes before it (`alone`: NOP, STL, EI ...); its rows named for it."""
     texts = tuple(operands)
-    found = _CONTACT.match(mnemonic)
+    found = (_KNOWN_CONTACT if contact else _CONTACT).match(mnemonic)
     if found is None:
         if not logic:
             return Spelling("alone", shown_name(ALONE, mnemonic, texts))
@@ -66,5 +69,5 @@ def spelling(mnemonic: str, operands: list[str], logic: bool) -> Spelling:
     if found.group(1) == "LD":
         return Spelling("load", shown_name(LOAD, mnemonic, texts),
                         shown_name(LOAD_STK, mnemonic, texts))
-    row = SERIES if found.group(1) == "AND" else PARALLEL
+    row = SERIES if found.group(1) in ("AND", "AN") else PARALLEL
     return Spelling("contact", shown_name(row, mnemonic, texts))
