@@ -168,3 +168,11 @@ def test_operands_the_simulator_has_no_device_for_keep_the_instruction_shown() -
     plc.scan()
     assert (get(plc, "Y0"), get(plc, "Y1")) == (1, 0)  # MOV passes on, the LD never conducts
     assert encode_program(program) == text.encode()
+
+
+def test_a_column_header_line_is_a_comment() -> None:
+    data = b"Step,Instruction,Operand\n000000,LD,X0\n000001,OUT,Y0\n000002,END\n"
+    program = _read(data)
+    assert program.networks[0].comments == ["Step, Instruction, Operand"]
+    assert [ins.spec.text_name for ins in program.networks[0].instructions] == ["RD", "WRT"]
+    assert encode_program(program) == data

@@ -98,6 +98,13 @@ def fields(line: str, separator: str) -> list[tuple[str, int]]:
 _OPERAND = re.compile(r"^[A-Za-z]+[-+]?[0-9][0-9A-Za-z.]*$")  # X0, K-5, H0, K4M0, D0E
 
 
+def is_header(form: CsvForm, words: list[str]) -> bool:
+    """True for a column header line of a numbered export (`Step,Instruction,Operand`): words
+    only, no step number, no digit anywhere."""
+    return form.numbered and len(words) > 1 and not any(
+        char.isdigit() for word in words for char in word)
+
+
 def trailing_comment(words: list[str]) -> str:
     """Take the fields after the mnemonic that are not operands (text: `Start button`,
     `Motor`) off the end of `words`; they are the line's comment."""

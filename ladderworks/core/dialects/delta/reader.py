@@ -118,6 +118,9 @@ class _Reader:
                 found = csv_form.fields(raw, self.form.separator)
                 words = [text for text, _ in found]
                 column = found[0][1] if found else 1
+                if csv_form.is_header(self.form, words) and last == 0:  # `Step,Instruction`
+                    self.pending.append(", ".join(words))
+                    continue
                 comment = csv_form.trailing_comment(words)
                 if len(found) > 1 and _STEP.match(words[0]):
                     self.step_number(int(words[0]), number, column)
