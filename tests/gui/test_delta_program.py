@@ -165,3 +165,17 @@ def test_a_wplsoft_export_opens_drawn_and_names_what_it_does_not_simulate(
     other = tmp_path / "again.csv"
     assert window.save_to(other)
     assert other.read_bytes() == example.read_bytes()
+
+
+def test_the_real_lathe_export_opens_as_ladder_and_saves_as_it_was(
+        window: MainWindow, tmp_path: Path) -> None:
+    """The WPLSoft export of a real machine (read from ../shared, never copied)."""
+    from tests.real_programs import real_programs_dir
+
+    path = real_programs_dir() / "delta" / "METALURGICA_c91257f_proejto_clp.csv"
+    assert window.load(path)
+    assert window.model.dialect == "delta" and len(window.model.networks) == 71
+    assert all(network.listing is None for network in window.model.networks)
+    other = tmp_path / "again.csv"
+    assert window.save_to(other)
+    assert other.read_bytes() == path.read_bytes()
