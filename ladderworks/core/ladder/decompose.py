@@ -9,7 +9,7 @@ from itertools import pairwise
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il.program import Instruction
-from ladderworks.core.instructions import Kind, StackOp, lookup
+from ladderworks.core.instructions import Kind, StackOp
 from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.ladder.logic import (
     MAX_PUSHES,
@@ -20,10 +20,11 @@ from ladderworks.core.ladder.logic import (
     Output,
     Parallel,
     Rung,
-    Series,
     Undrawable,
     code_rung,
     first_cell,
+    inverted_inside,
+    outputs_first,
     parallel,
     read_rung,
     series,
@@ -148,7 +149,7 @@ def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "
     as an output chain too (a branch whose coils hang on the branch point)."""
     rung, diags = _read_grid(network, index, dialect, branches)
     if rung is not None:
-        inner = _inverted_inside(rung)
+        inner = inverted_inside(rung)
         if inner is not None:  # INV in a block: its code would invert the block only
             diags.append(Diagnostic("inv-place", {}, network=index, cell=inner))
             return None, diags
@@ -159,41 +160,6 @@ def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "
                                     cell=place.cell or (0, 0)))
             return None, diags
     return rung, diags
-
-
-def _inverts(logic: Logic) -> bool:
-    """True for a stack operation drawn as a contact (Delta's INV)."""
-    if not isinstance(logic, Leaf) or not logic.contact.function:
-        return False
-    spec = lookup(logic.contact.function)
-    return spec is not None and spec.stack is StackOp.INVERT
-
-
-def _inverted_inside(rung: Rung) -> Cell | None:
-    """The cell of an INV drawn inside a parallel block (not on a line from the rail or the
-    branch point, where it inverts all the power before it), or None."""
-    blocks: list[Logic | None] = [rung.logic, *rung.inputs,
-                                  *(block for block, _ in rung.chain)]
-    todo = list(rung.branches)
-    while todo:
-        block, _outputs, inner = todo.pop()
-        blocks.append(block)
-        todo.extend(inner)
-
-    def inside(logic: Logic, top: bool) -> Cell | None:
-        if isinstance(logic, Leaf):
-            return None if top or not _inverts(logic) else (logic.cell or (0, 0))
-        for item in logic.items:
-            found = inside(item, top and isinstance(logic, Series))
-            if found is not None:
-                return found
-        return None
-
-    for block in blocks:
-        found = None if block is None else inside(block, True)
-        if found is not None:
-            return found
-    return None
 
 
 def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
@@ -482,15 +448,6 @@ def _check_depth(rung: Rung, report: Callable[..., None]) -> None:
             depth = 0
 
 
-def _outputs_first(rung: Rung) -> Rung:
-    """The rung with a first branch on the branch point (`MPS / OUT y / MRD …`) coded as the
-    outputs before the MPS (`OUT y / MPS …`): the same drawing, the same logic."""
-    if rung.coils or len(rung.branches) < 3 or rung.branches[0][0] is not None \
-            or rung.branches[0][2]:
-        return rung
-    return Rung(logic=rung.logic, coils=list(rung.branches[0][1]), branches=rung.branches[1:])
-
-
 def network_to_instructions(network: LadderNetwork, index: int | None = None,
                             dialect: str = "seed"
                             ) -> tuple[list[Instruction] | None, list[Diagnostic]]:
@@ -522,7 +479,7 @@ def network_to_instructions(network: LadderNetwork, index: int | None = None,
             branched, _ = read_grid(network, index, dialect, branches=True)
             if branched is not None:
                 again = code_rung(branched)
-                same = again == original or code_rung(_outputs_first(branched)) == original
+                same = again == original or code_rung(outputs_first(branched)) == original
                 return (list(network.source) if same else again), diags
     return code, diags
 

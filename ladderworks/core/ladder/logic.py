@@ -429,3 +429,47 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
     if rung.box is not None and not rung.box.spec.w1 and rung.coils:
         raise Undrawable("coils")
     return rung
+
+
+def inverts(logic: Logic) -> bool:
+    """True for a stack operation drawn as a contact (Delta's INV)."""
+    if not isinstance(logic, Leaf) or not logic.contact.function:
+        return False
+    spec = lookup(logic.contact.function)
+    return spec is not None and spec.stack is StackOp.INVERT
+
+
+def inverted_inside(rung: Rung) -> Cell | None:
+    """The cell of an INV drawn inside a parallel block (not on a line from the rail or the
+    branch point, where it inverts all the power before it), or None."""
+    blocks: list[Logic | None] = [rung.logic, *rung.inputs,
+                                  *(block for block, _ in rung.chain)]
+    todo = list(rung.branches)
+    while todo:
+        block, _outputs, inner = todo.pop()
+        blocks.append(block)
+        todo.extend(inner)
+
+    def inside(logic: Logic, top: bool) -> Cell | None:
+        if isinstance(logic, Leaf):
+            return None if top or not inverts(logic) else (logic.cell or (0, 0))
+        for item in logic.items:
+            found = inside(item, top and isinstance(logic, Series))
+            if found is not None:
+                return found
+        return None
+
+    for block in blocks:
+        found = None if block is None else inside(block, True)
+        if found is not None:
+            return found
+    return None
+
+
+def outputs_first(rung: Rung) -> Rung:
+    """The rung with a first branch on the branch point (`MPS / OUT y / MRD …`) coded as the
+    outputs before the MPS (`OUT y / MPS …`): the same drawing, the same logic."""
+    if rung.coils or len(rung.branches) < 3 or rung.branches[0][0] is not None \
+            or rung.branches[0][2]:
+        return rung
+    return Rung(logic=rung.logic, coils=list(rung.branches[0][1]), branches=rung.branches[1:])
