@@ -1102,301 +1102,326 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <source>{name} is kept and drawn but not simulated: the scan passes it by</source>
+        <translation>{name} is kept and drawn but not simulated: the scan passes it by</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <source>{count} instructions are not simulated, the scan passes them by (line): {names}</source>
+        <translation>{count} instructions are not simulated, the scan passes them by (line): {names}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
+        <source>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</source>
+        <translation>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
+        <source>{name}: operand {index} is missing</source>
+        <translation>{name}: operand {index} is missing</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <source>step {step} is not after step {previous}: the step numbers must grow</source>
+        <translation>step {step} is not after step {previous}: the step numbers must grow</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>subroutine without its SRET (before the next pointer or END)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>SRET without a subroutine pointer (P n after FEND) before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>after FEND only subroutines (P n ... SRET) and END may follow</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>no pointer P{label} where this jump can reach it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>no subroutine P{program} after FEND for this CALL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} without a logic result before it (start with LD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>this pointer P number is used twice</source>
         <translation>this pointer P number is used twice</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="351"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="354"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="357"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="360"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="363"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>byte {offset}: the program does not end with END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="357"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>byte {offset} (step {step}): instructions after END: the file is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="360"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="371"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>byte {offset}: a text section of the .dvp project is damaged</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>byte {offset}: a device comment line is not DEVICE$&amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>the project holds no program: no compiled instruction list and an empty ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>the project was saved without compiling: its program is read from its ladder drawing</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="381"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="385"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="388"/>
         <source>NEXT without a FOR before it</source>
         <translation>NEXT without a FOR before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="389"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MC or STL without its MCR or RET after it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>MCR or RET without its MC or STL before it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
         <source>FOR without its NEXT</source>
         <translation>FOR without its NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>the first line must be &apos;PMC SIGNAL DATA&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="401"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; is not a wait in ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
         <source>negative wait {text} ms</source>
         <translation>negative wait {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="403"/>
         <source>{command} needs {expected}</source>
         <translation>{command} needs {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; is neither an address nor a symbol of the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos; is not a value for {target}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="396"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="409"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: only bits can be forced</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="413"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>a second PROGRAM line (the one on line {first} counts)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="415"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>the program &apos;{path}&apos; cannot be loaded: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="417"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="425"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="416"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="427"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos; is not a value for {width} byte(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="429"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; is not a number</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="430"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} is out of range ({low} to {high})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="420"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="431"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bytes: a value has 1, 2 or 4 bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="423"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: its preset is fixed in the program and cannot be changed here</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="427"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="430"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="441"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="443"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos; is not a number from {lo} to {hi}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="445"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{count} addresses from {start} run past Modbus address 65535</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="449"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} cannot be written over Modbus: the access must be r</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="440"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="451"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} are bits: a width is for registers only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="442"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="453"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{count} elements from {device} run past the end of area {area} ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="444"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="455"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end} overlap the row on line {other}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="446"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="457"/>
         <source>the map has no row</source>
         <translation>the map has no row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="458"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
@@ -1897,7 +1922,7 @@
         <translation>open circuit here: draw a wire or an element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="73"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="74"/>
         <source>N{0}</source>
         <translation>N{0}</translation>
     </message>
@@ -2213,6 +2238,11 @@
         <translation>Open program</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../ladderworks/gui/file_actions.py" line="333"/>
         <location filename="../ladderworks/gui/file_actions.py" line="339"/>
         <location filename="../ladderworks/gui/file_actions.py" line="347"/>
@@ -2262,11 +2292,6 @@
         <location filename="../ladderworks/gui/file_actions.py" line="376"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
-        <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="381"/>
@@ -2918,153 +2943,173 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="162"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC CONTROL SCREEN</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="164"/>
         <source>Open .MOD…</source>
         <translation>Open .MOD…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="165"/>
         <source>Show the console&apos;s program as text</source>
         <translation>Show the console&apos;s program as text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="167"/>
         <source>Compile</source>
         <translation>Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="158"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="355"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="169"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="165"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="175"/>
         <source>Shows the console&apos;s program here as mnemonic text, to read or change before Compile on this screen. F9 (PLC › Compile) loads the console&apos;s program into the PLC directly.</source>
         <translation>Shows the console&apos;s program here as mnemonic text, to read or change before Compile on this screen. F9 (PLC › Compile) loads the console&apos;s program into the PLC directly.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="195"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
         <source>Program loaded from the console</source>
         <translation>Program loaded from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="226"/>
         <source>In the PLC: {0}</source>
         <translation>In the PLC: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="241"/>
         <source>Opened {0}</source>
         <translation>Opened {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="247"/>
         <source>Open mnemonic program</source>
         <translation>Open mnemonic program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="248"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="256"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>The console&apos;s program cannot be coded: see the error list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="260"/>
         <source>Program taken from the console</source>
         <translation>Program taken from the console</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="284"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="295"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Compile failed: {0} error(s). {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="296"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="307"/>
         <source>Converting…</source>
         <translation>Converting…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="322"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="333"/>
         <source>Not loaded: the PLC keeps the program it has</source>
         <translation>Not loaded: the PLC keeps the program it has</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="338"/>
         <source>the program on this screen</source>
         <translation>the program on this screen</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="331"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="342"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Compile finished — {0} networks, {1} bytes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="334"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="345"/>
         <source>({0} warning(s))</source>
         <translation>({0} warning(s))</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="345"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="356"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="352"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="363"/>
         <source>Compile a program first</source>
         <translation>Compile a program first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="376"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="387"/>
         <source>scans in a process of their own</source>
         <translation>scans in a process of their own</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="378"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="389"/>
         <source>scans in the IDE&apos;s process</source>
         <translation>scans in the IDE&apos;s process</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="391"/>
         <source>scan process: {0}</source>
         <translation>scan process: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="404"/>
+        <source>{0} (line {1})</source>
+        <translation>{0} (line {1})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="407"/>
+        <source>… and {0} more</source>
+        <translation>… and {0} more</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="409"/>
+        <source>Not simulated, passed by in the scan ({0}): {1}</source>
+        <translation>Not simulated, passed by in the scan ({0}): {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="412"/>
+        <source>These instructions are kept, drawn and saved, but the simulator does not run them: a box passes its input on, a contact never conducts.</source>
+        <translation>These instructions are kept, drawn and saved, but the simulator does not run them: a box passes its input on, a contact never conducts.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="419"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="422"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="425"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="394"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="428"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>

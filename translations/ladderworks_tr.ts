@@ -1102,301 +1102,326 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="315"/>
+        <source>{name} is kept and drawn but not simulated: the scan passes it by</source>
+        <translation>{name} korunur ve çizilir ama benzetilmez: tarama onu atlar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <source>{count} instructions are not simulated, the scan passes them by (line): {names}</source>
+        <translation>{count} komut benzetilmez, tarama onları atlar (satır): {names}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="320"/>
+        <source>INV inverts all the power before it: draw it on a line from the rail or a branch point, not inside a parallel block</source>
+        <translation>INV kendinden önceki tüm enerjiyi tersler: onu baradan ya da bir dallanma noktasından gelen bir hatta çizin, paralel bir bloğun içine değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
+        <source>{name}: operand {index} is missing</source>
+        <translation>{name}: {index}. işlenen eksik</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="324"/>
+        <source>step {step} is not after step {previous}: the step numbers must grow</source>
+        <translation>{step} adımı {previous} adımından sonra gelmiyor: adım numaraları artmalı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="326"/>
         <source>subroutine without its SRET (before the next pointer or END)</source>
         <translation>SRET&apos;i olmayan alt program (sonraki işaretçiden ya da END&apos;den önce)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="317"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="328"/>
         <source>SRET without a subroutine pointer (P n after FEND) before it</source>
         <translation>önünde alt program işaretçisi (FEND&apos;den sonra P n) olmayan SRET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="319"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="330"/>
         <source>after FEND only subroutines (P n ... SRET) and END may follow</source>
         <translation>FEND&apos;den sonra yalnızca alt programlar (P n ... SRET) ve END gelebilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="321"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="332"/>
         <source>no pointer P{label} where this jump can reach it</source>
         <translation>bu atlamanın ulaşabileceği yerde P{label} işaretçisi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="323"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
         <source>no subroutine P{program} after FEND for this CALL</source>
         <translation>bu CALL için FEND&apos;den sonra P{program} alt programı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="325"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
         <source>{name} without a logic result before it (start with LD)</source>
         <translation>{name} önünde mantık sonucu yok (LD ile başlayın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="327"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>this pointer P number is used twice</source>
         <translation>bu işaretçi P numarası iki kez kullanılmış</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="329"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>not a WPLSoft .dvp project: it does not start with the bytes 57 01 01 00</source>
         <translation>WPLSoft .dvp projesi değil: 57 01 01 00 baytlarıyla başlamıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="331"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>the .dvp file is cut short at byte {offset}: it does not end with the line &lt;PrjectEnd&gt; WPLSoft writes last</source>
         <translation>.dvp dosyası {offset}. baytta kesilmiş: WPLSoft&apos;un en sona yazdığı &lt;PrjectEnd&gt; satırıyla bitmiyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="334"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="345"/>
         <source>byte {offset}: .dvp format version {version} is not one LadderWorks reads (214, 215 and 216 are)</source>
         <translation>bayt {offset}: .dvp biçim sürümü {version} LadderWorks&apos;ün okuduğu sürümlerden değil (214, 215 ve 216 okunur)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="337"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="348"/>
         <source>byte {offset}: the program memory of this .dvp project is not where WPLSoft puts it: the file is damaged</source>
         <translation>bayt {offset}: bu .dvp projesinin program belleği WPLSoft&apos;un koyduğu yerde değil: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="351"/>
         <source>byte {offset} (step {step}): instruction code {word} is not known to LadderWorks: kept as ?{word} with its operands</source>
         <translation>bayt {offset} (adım {step}): {word} komut kodu LadderWorks tarafından bilinmiyor: operandlarıyla ?{word} olarak korundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="343"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="354"/>
         <source>byte {offset} (step {step}): the word {word} names no device LadderWorks knows: the file is damaged or uses a device not decoded yet</source>
         <translation>bayt {offset} (adım {step}): {word} sözcüğü LadderWorks&apos;ün bildiği bir cihazı göstermiyor: dosya bozuk ya da henüz çözülmemiş bir cihaz kullanıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="346"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="357"/>
         <source>byte {offset} (step {step}): the operand word {word} is neither a device nor a constant: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğü ne cihaz ne sabit: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="360"/>
         <source>byte {offset} (step {step}): the operand words after {word} do not fit the instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} sonrasındaki operand sözcükleri komuta uymuyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="352"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="363"/>
         <source>byte {offset} (step {step}): the operand word {word} follows no instruction: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): {word} operand sözcüğünden önce komut yok: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
         <source>byte {offset}: the program does not end with END: the file is damaged</source>
         <translation>bayt {offset}: program END ile bitmiyor: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="357"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="368"/>
         <source>byte {offset} (step {step}): instructions after END: the file is damaged</source>
         <translation>bayt {offset} (adım {step}): END sonrasında komutlar var: dosya bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="360"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="371"/>
         <source>byte {offset}: a text section of the .dvp project is damaged</source>
         <translation>bayt {offset}: .dvp projesinin bir metin bölümü bozuk</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
         <source>byte {offset}: a device comment line is not DEVICE$&amp;text</source>
         <translation>bayt {offset}: bir cihaz açıklama satırı CİHAZ$&amp;metin biçiminde değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>the project holds no program: no compiled instruction list and an empty ladder drawing</source>
         <translation>projede program yok: derlenmiş komut listesi yok ve ladder çizimi boş</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
         <source>the project was saved without compiling: its program is read from its ladder drawing</source>
         <translation>proje derlenmeden kaydedilmiş: programı ladder çiziminden okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="381"/>
         <source>the project holds no compiled instruction list, and its ladder drawing has a cell LadderWorks does not read yet (byte {offset}: a branch, an edge contact ...): compile it in WPLSoft and save it again</source>
         <translation>proje derlenmiş bir komut listesi içermiyor ve ladder çiziminde LadderWorks&apos;ün henüz okumadığı bir hücre var (bayt {offset}: bir kol, bir kenar kontağı ...): WPLSoft&apos;ta derleyip yeniden kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="374"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="385"/>
         <source>LadderWorks does not write .dvp projects (the format is only partly known): save the program as a Delta instruction list (.il) instead</source>
         <translation>LadderWorks .dvp projesi yazmaz (biçim yalnızca kısmen biliniyor): programı bunun yerine Delta komut listesi (.il) olarak kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="377"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="388"/>
         <source>NEXT without a FOR before it</source>
         <translation>Öncesinde FOR olmayan NEXT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="389"/>
         <source>MC or STL without its MCR or RET after it</source>
         <translation>MCR veya RET&apos;i olmayan MC veya STL</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="380"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
         <source>MCR or RET without its MC or STL before it</source>
         <translation>Öncesinde MC veya STL olmayan MCR veya RET</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="382"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
         <source>FOR without its NEXT</source>
         <translation>NEXT&apos;i olmayan FOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
         <source>the first line must be &apos;PMC SIGNAL DATA&apos;</source>
         <translation>ilk satır &apos;PMC SIGNAL DATA&apos; olmalıdır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="386"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="397"/>
         <source>unknown command &apos;{text}&apos; (use REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE or RELEASE)</source>
         <translation>bilinmeyen komut &apos;{text}&apos; (REMARK, PROGRAM, SET, EXPECT, WAITFOR, FORCE veya RELEASE kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="401"/>
         <source>&apos;{text}&apos; is not a wait in ms</source>
         <translation>&apos;{text}&apos; ms cinsinden bir bekleme değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="391"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
         <source>negative wait {text} ms</source>
         <translation>negatif bekleme {text} ms</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="392"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="403"/>
         <source>{command} needs {expected}</source>
         <translation>{command} için gereken: {expected}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
         <source>&apos;{text}&apos; is neither an address nor a symbol of the program</source>
         <translation>&apos;{text}&apos; ne bir adres ne de programın bir sembolü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="395"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
         <source>&apos;{text}&apos; is not a value for {target}</source>
         <translation>&apos;{text}&apos;, {target} için bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="396"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="407"/>
         <source>unknown type &apos;{text}&apos; (use BIT, BYTE, WORD or DWORD)</source>
         <translation>bilinmeyen tip &apos;{text}&apos; (BIT, BYTE, WORD veya DWORD kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="398"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="409"/>
         <source>&apos;{text}&apos;: only bits can be forced</source>
         <translation>&apos;{text}&apos;: yalnızca bitler zorlanabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="399"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
         <source>the scenario names no program: add a line PROGRAM,path (relative to the scenario file) or give the program on the command line</source>
         <translation>senaryo bir program belirtmiyor: PROGRAM,yol satırı ekleyin (yol senaryo dosyasına göre) ya da programı komut satırında verin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="402"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="413"/>
         <source>a second PROGRAM line (the one on line {first} counts)</source>
         <translation>ikinci bir PROGRAM satırı ({first}. satırdaki geçerlidir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="404"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="415"/>
         <source>the program &apos;{path}&apos; cannot be loaded: {reason}</source>
         <translation>&apos;{path}&apos; programı yüklenemiyor: {reason}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="406"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="417"/>
         <source>the scenario names the program &apos;{path}&apos;; it runs on the one loaded in the PLC</source>
         <translation>senaryo &apos;{path}&apos; programını belirtiyor; PLC&apos;ye yüklenmiş olan programda çalışır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="410"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
         <source>not a parameter line: &apos;{text}&apos; (expected ADDRESS = VALUE, e.g. T0:4 = 1000)</source>
         <translation>parametre satırı değil: &apos;{text}&apos; (ADRES = DEĞER bekleniyor, ör. T0:4 = 1000)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="414"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="425"/>
         <source>&apos;{text}&apos;: PMC parameters are in the T, C, K and D areas only</source>
         <translation>&apos;{text}&apos;: PMC parametreleri yalnızca T, C, K ve D alanlarındadır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="416"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="427"/>
         <source>&apos;{text}&apos; is not a value for {width} byte(s)</source>
         <translation>&apos;{text}&apos;, {width} baytlık bir değer değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="418"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="429"/>
         <source>&apos;{text}&apos; is not a number</source>
         <translation>&apos;{text}&apos; bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="419"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="430"/>
         <source>{value} is out of range ({low} to {high})</source>
         <translation>{value} sınır dışı ({low} ile {high} arası)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="420"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="431"/>
         <source>{value} bytes: a value has 1, 2 or 4 bytes</source>
         <translation>{value} bayt: bir değer 1, 2 veya 4 bayt olur</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="421"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
         <source>&apos;{text}&apos;: type up to 8 binary digits (0 and 1), bit 7 first</source>
         <translation>&apos;{text}&apos;: en çok 8 ikili rakam (0 ve 1) yazın, önce bit 7</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="423"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
         <source>TMRB {number}: its preset is fixed in the program and cannot be changed here</source>
         <translation>TMRB {number}: ayar değeri programda sabittir, buradan değiştirilemez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="427"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
         <source>expected TABLE,START,COUNT,PLC ADDRESS,ACCESS[,WIDTH], found {count} column(s)</source>
         <translation>TABLO,BAŞLANGIÇ,ADET,PLC ADRESİ,ERİŞİM[,GENİŞLİK] bekleniyor, {count} sütun bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="430"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="441"/>
         <source>&apos;{text}&apos; is not a Modbus table (use coils, discrete, holding or input)</source>
         <translation>&apos;{text}&apos; bir Modbus tablosu değil (coils, discrete, holding ya da input kullanın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="432"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="443"/>
         <source>&apos;{text}&apos; is not a number from {lo} to {hi}</source>
         <translation>&apos;{text}&apos;, {lo} ile {hi} arasında bir sayı değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="434"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="445"/>
         <source>{count} addresses from {start} run past Modbus address 65535</source>
         <translation>{start} adresinden başlayan {count} adres 65535 Modbus adresini aşıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="436"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
         <source>&apos;{text}&apos;: the access must be r (read) or rw (read and write)</source>
         <translation>&apos;{text}&apos;: erişim r (okuma) ya da rw (okuma ve yazma) olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="438"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="449"/>
         <source>{table} cannot be written over Modbus: the access must be r</source>
         <translation>{table} Modbus üzerinden yazılamaz: erişim r olmalı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="440"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="451"/>
         <source>{table} are bits: a width is for registers only</source>
         <translation>{table} bittir: genişlik yalnızca yazmaçlar içindir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="442"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="453"/>
         <source>{count} elements from {device} run past the end of area {area} ({ranges})</source>
         <translation>{device} adresinden başlayan {count} eleman {area} alanının sonunu aşıyor ({ranges})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="444"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="455"/>
         <source>{table} {start}-{end} overlap the row on line {other}</source>
         <translation>{table} {start}-{end}, {other}. satırdaki satırla çakışıyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="446"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="457"/>
         <source>the map has no row</source>
         <translation>haritada hiç satır yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="447"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="458"/>
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
@@ -1897,7 +1922,7 @@
         <translation>devre burada açık: bir çizgi veya bir eleman çizin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="73"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="74"/>
         <source>N{0}</source>
         <translation>D{0}</translation>
     </message>
@@ -2213,6 +2238,11 @@
         <translation>Program aç</translation>
     </message>
     <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../ladderworks/gui/file_actions.py" line="333"/>
         <location filename="../ladderworks/gui/file_actions.py" line="339"/>
         <location filename="../ladderworks/gui/file_actions.py" line="347"/>
@@ -2262,11 +2292,6 @@
         <location filename="../ladderworks/gui/file_actions.py" line="376"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
-        <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;WPLSoft projeleri (*.dvp *.DVP);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projeleri (*.pdw *.PDW);;Tüm dosyalar (*)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="381"/>
@@ -2918,153 +2943,173 @@
 <context>
     <name>PlcControl</name>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="152"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="162"/>
         <source>PLC CONTROL SCREEN</source>
         <translation>PLC KONTROL EKRANI</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="164"/>
         <source>Open .MOD…</source>
         <translation>.MOD aç…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="155"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="165"/>
         <source>Show the console&apos;s program as text</source>
         <translation>Konsolun programını metin olarak göster</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="157"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="167"/>
         <source>Compile</source>
         <translation>Derle</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="158"/>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="344"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="168"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="355"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="159"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="169"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="165"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="175"/>
         <source>Shows the console&apos;s program here as mnemonic text, to read or change before Compile on this screen. F9 (PLC › Compile) loads the console&apos;s program into the PLC directly.</source>
         <translation>Konsolun programını burada mnemonic metin olarak gösterir; bu ekranda Derle&apos;den önce okumak veya değiştirmek için. F9 (PLC › Derle) konsolun programını doğrudan PLC&apos;ye yükler.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="195"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="206"/>
         <source>Program loaded from the console</source>
         <translation>Program konsoldan yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="215"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="226"/>
         <source>In the PLC: {0}</source>
         <translation>PLC&apos;deki program: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="225"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="230"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="241"/>
         <source>Opened {0}</source>
         <translation>{0} açıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="236"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="247"/>
         <source>Open mnemonic program</source>
         <translation>Mnemonik program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="237"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="248"/>
         <source>Mnemonic programs (*.MOD *.mod *.LAD *.lad);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod *.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="245"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="256"/>
         <source>The console&apos;s program cannot be coded: see the error list</source>
         <translation>Konsoldaki program kodlanamıyor: hata listesine bakın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="249"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="260"/>
         <source>Program taken from the console</source>
         <translation>Program konsoldan alındı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="284"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="295"/>
         <source>Compile failed: {0} error(s). {1}</source>
         <translation>Derleme başarısız: {0} hata. {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="296"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="307"/>
         <source>Converting…</source>
         <translation>Çevriliyor…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="322"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="333"/>
         <source>Not loaded: the PLC keeps the program it has</source>
         <translation>Yüklenmedi: PLC mevcut programını tutuyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="327"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="338"/>
         <source>the program on this screen</source>
         <translation>bu ekrandaki program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="331"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="342"/>
         <source>Compile finished — {0} networks, {1} bytes</source>
         <translation>Derleme bitti — {0} devre, {1} bayt</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="334"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="345"/>
         <source>({0} warning(s))</source>
         <translation>({0} uyarı)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="345"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="356"/>
         <source>{0} signal(s) are forced or element(s) passive. Start the PLC with them?</source>
         <translation>{0} sinyal zorlanmış veya eleman pasif. PLC bunlarla başlatılsın mı?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="352"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="363"/>
         <source>Compile a program first</source>
         <translation>Önce bir program derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="376"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="387"/>
         <source>scans in a process of their own</source>
         <translation>taramalar kendi süreçlerinde</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="378"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="389"/>
         <source>scans in the IDE&apos;s process</source>
         <translation>taramalar IDE&apos;nin sürecinde</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="380"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="391"/>
         <source>scan process: {0}</source>
         <translation>tarama süreci: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="385"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="404"/>
+        <source>{0} (line {1})</source>
+        <translation>{0} (satır {1})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="407"/>
+        <source>… and {0} more</source>
+        <translation>… ve {0} tane daha</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="409"/>
+        <source>Not simulated, passed by in the scan ({0}): {1}</source>
+        <translation>Benzetilmeyen, taramada atlanan komutlar ({0}): {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="412"/>
+        <source>These instructions are kept, drawn and saved, but the simulator does not run them: a box passes its input on, a contact never conducts.</source>
+        <translation>Bu komutlar korunur, çizilir ve kaydedilir, ama benzetici onları çalıştırmaz: bir kutu girişini aynen geçirir, bir kontak hiç iletmez.</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="419"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="422"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="391"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="425"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="394"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="428"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>

@@ -12,9 +12,10 @@ from ladderworks.cli._programs import add_dialect_option, add_every_scan_option,
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.compiler import compile_program, disassemble
 from ladderworks.core.compiler.binary import MAGIC, decode
+from ladderworks.core.compiler.skipped import summary
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.dialects import typed_target
-from ladderworks.core.il import print_program
+from ladderworks.core.il import Program, print_program
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS, ScanEngine
 from ladderworks.core.plc.parameters import ParameterFile, parameters_beside, read_parameter_file
 from ladderworks.core.plc.session import PlcRun
@@ -75,16 +76,21 @@ def _report(name: str, diagnostics: list[Diagnostic]) -> None:
 
 def _load_program_binary(name: str) -> bytes | None:
     """The binary of FILE: read as is when it is one, else parsed and compiled (None on error)."""
+    return _load_program(name)[0]
+
+
+def _load_program(name: str) -> tuple[bytes | None, Program | None]:
+    """The binary of FILE and the program it was compiled from (None for a binary file)."""
     data = Path(name).read_bytes()
     if data.startswith(MAGIC):
-        return data
+        return data, None
     result = parsed(name)
     if not result.ok:
         _report(name, result.diagnostics)
-        return None
+        return None, None
     compiled = compile_program(result.program)
     _report(name, compiled.diagnostics)
-    return compiled.binary
+    return compiled.binary, result.program
 
 
 def _compile(args: argparse.Namespace) -> int:
@@ -182,7 +188,7 @@ def _run(args: argparse.Namespace) -> int:
             raise ValueError("--divisions must be at least 1")
     except ValueError as error:
         return _error(str(error))
-    binary = _load_program_binary(args.file)
+    binary, program = _load_program(args.file)
     if binary is None:
         return 1
     parameters = _parameters(args.file, args.params)
@@ -192,10 +198,13 @@ def _run(args: argparse.Namespace) -> int:
                  every_scan=args.every_scan)
     plc.set_parameters(parameters.parameters)
     _use_ascii_files(plc, args.file)
-    problems = plc.load(binary)
+    problems = plc.load(binary, program)
     if problems or plc.engine is None:
         _report(args.file, problems)
         return 1
+    skips = summary(plc.skipped)  # the instructions the scan passes by, named once more
+    if skips is not None:
+        _report(args.file, [skips])
     engine = plc.engine
     for number, value in timers:  # options win over the parameter file
         plc.set_timer_preset(number, value)

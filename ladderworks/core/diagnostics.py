@@ -312,6 +312,17 @@ MESSAGES: dict[str, str] = {
     "dialect-constant": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not a K or H constant"),
     "dialect-not-simulated": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} is a {dialect} instruction the simulator does not run"),
+    "not-simulated": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{name} is kept and drawn but not simulated: the scan passes it by"),
+    "run-skips": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{count} instructions are not simulated, the scan passes them by "
+        "(line): {names}"),
+    "inv-place": QT_TRANSLATE_NOOP(
+        "Diagnostic", "INV inverts all the power before it: draw it on a line from the rail "
+        "or a branch point, not inside a parallel block"),
+    "dvp-missing-operand": QT_TRANSLATE_NOOP("Diagnostic", "{name}: operand {index} is missing"),
+    "dvp-step-order": QT_TRANSLATE_NOOP(
+        "Diagnostic", "step {step} is not after step {previous}: the step numbers must grow"),
     "dvp-missing-sret": QT_TRANSLATE_NOOP(
         "Diagnostic", "subroutine without its SRET (before the next pointer or END)"),
     "dvp-sret-alone": QT_TRANSLATE_NOOP(

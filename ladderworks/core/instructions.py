@@ -75,6 +75,13 @@ class InstructionSpec:
     stack: StackOp = StackOp.NONE  # basic without operand: a dialect's stack operation
     dialect: str = ""  # the dialect whose row it is (core/dialects), "" for the PMC's
     gates_boxes: bool = False  # COMMON: while off, boxes in its range see their input off too
+    # False: shown only, an instruction kept, drawn and saved but not run (a warning; the scan
+    # passes its input on, a contact never conducts): a dialect's "shown" rows (shown_row)
+    simulated: bool = True
+    # a box that is an output, as a coil is: drawn among the coils, its input flows on to the
+    # outputs after it (Delta's applied instructions: `LD X2 / OUT Y1 / MOV K5 D0`)
+    output: bool = False
+    operand_texts: tuple[str, ...] = ()  # a shown-only instruction's operands as written
 
     @property
     def help_key(self) -> str:
@@ -493,9 +500,33 @@ def add_rows(rows: tuple[InstructionSpec, ...]) -> None:
             BY_SUB[spec.sub] = spec
 
 
+SHOWN_MARK = "?"  # `DVP.SHOWN?DMUL D7 K1 D9`: a shown-only row, its mnemonic and operands
+
+
 def lookup(name: str) -> InstructionSpec | None:
     """The row for a mnemonic (case-insensitive), or None."""
-    return BY_NAME.get(name) or BY_NAME.get(name.upper())
+    found = BY_NAME.get(name) or BY_NAME.get(name.upper())
+    if found is None and SHOWN_MARK in name:
+        return shown_row(name.upper())
+    return found
+
+
+def shown_name(base: InstructionSpec, mnemonic: str, operands: tuple[str, ...]) -> str:
+    """The name of an instruction kept but not simulated: its dialect's shown row `base`, the
+    mnemonic and the operands as written (`DVP.SHOWN?DMUL D7 K1 D9`)."""
+    return " ".join((f"{base.name}{SHOWN_MARK}{mnemonic}", *operands)).upper()
+
+
+@cache
+def shown_row(name: str) -> InstructionSpec | None:
+    """The row of a shown-only instruction named by `shown_name`: its base row (a dialect's
+    row with `simulated` False) with the mnemonic and operand texts; None if it is not one."""
+    head, _, rest = name.partition(SHOWN_MARK)
+    base = BY_NAME.get(head)
+    words = rest.split(" ")
+    if base is None or base.simulated or not words[0]:
+        return None
+    return replace(base, name=name, mnemonic=words[0], operand_texts=tuple(words[1:]))
 
 
 @cache

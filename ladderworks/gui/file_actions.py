@@ -258,10 +258,10 @@ class FileActions(_Window):
             translate(
                 "MainWindow",
                 "Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT"
-                " *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.pdw *.PDW)"
+                " *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS *.pdw *.PDW)"
                 ";;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC)"
                 ";;LADDER-III exports (*.txt *.TXT *.mnc *.MNC)"
-                ";;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL)"
+                ";;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV)"
                 ";;WPLSoft projects (*.dvp *.DVP)"
                 ";;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT)"
                 ";;Fatek WinProladder projects (*.pdw *.PDW)"

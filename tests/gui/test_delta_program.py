@@ -147,6 +147,41 @@ def test_the_plc_control_screen_compiles_delta_text(window: MainWindow) -> None:
     assert result.ok and result.binary is not None
 
 
+def test_a_wplsoft_export_opens_drawn_and_names_what_it_does_not_simulate(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path) -> None:
+    """Issue 36: WPLSoft's CSV export opens as ladder; the PLC control screen lists the
+    instructions the scan passes by; the file saves back byte for byte."""
+    example = paths.EXAMPLES / "delta" / "wplsoft_outputs.csv"
+    assert window.load(example)
+    assert window.model.dialect == "delta"
+    assert all(network.listing is None for network in window.model.networks)
+    control = window.plc_docks.control
+    program, _diagnostics = window.model.program()
+    assert program is not None
+    assert window.plc_docks.session.load_program(program).ok
+    control.show()
+    qtbot.waitUntil(lambda: control.skipped.isVisible(), timeout=3000)
+    assert "TO K0 K1 D0 K1 (line 20)" in control.skipped.text()
+    other = tmp_path / "again.csv"
+    assert window.save_to(other)
+    assert other.read_bytes() == example.read_bytes()
+
+
+def test_the_real_lathe_export_opens_as_ladder_and_saves_as_it_was(
+        window: MainWindow, tmp_path: Path) -> None:
+    """The WPLSoft export of a real machine (read from ../shared, never copied)."""
+    from tests.real_programs import real_programs_dir
+
+    path = real_programs_dir() / "delta" / "METALURGICA_c91257f_proejto_clp.csv"
+    assert window.load(path)
+    assert window.model.dialect == "delta"
+    assert sum(1 for network in window.model.networks if network.cells) == 71  # + a new one
+    assert all(network.listing is None for network in window.model.networks)
+    other = tmp_path / "again.csv"
+    assert window.save_to(other)
+    assert other.read_bytes() == path.read_bytes()
+
+
 def test_an_example_scenario_names_its_program_in_the_ide(qtbot: QtBot,
                                                           window: MainWindow) -> None:
     """Issue 38 item 10: PLC › Run scenario of a Delta example names its PROGRAM: run on

@@ -418,6 +418,8 @@ class _Checker:
             if spec.flow is _NO_FLOW:
                 if not spec.known:
                     found.append(("unknown-sub", {"number": spec.sub}, True))
+                elif not spec.simulated:  # kept, drawn and saved; the scan passes it by
+                    found.append(("not-simulated", {"name": spec.text_name}, True))
                 elif spec.name not in IMPLEMENTED:  # names only: `check` loads no functions
                     found.append(("not-implemented", {"name": spec.name}, False))
             found += self.params(spec, ins.params)

@@ -64,6 +64,10 @@ class Dialect:
     # "module:function": (row, params, the program's other boxes as (row, params)) -> the
     # params of a box placed in the editor (Fatek: an FO byte no other box has)
     placed: str = ""
+    # "module:function": (program, the faithful Save's lines with their ends, the indices of the
+    # lines printed fresh, the indices where the file's own lines follow a change) -> the lines
+    # in the file's own form (Delta: WPLSoft's export, its separators and step numbers)
+    finish: str = ""
     # (area, first byte, last byte): bits each network uses afresh (Fatek's TR points); their
     # coils in several networks are not "written twice"
     local_bits: tuple[tuple[Area, int, int], ...] = ()
@@ -79,6 +83,16 @@ class Dialect:
         """Read a text of this dialect: the program and its diagnostics."""
         reader: Reader = _function(self.reader)  # type: ignore[assignment]
         return reader(text, form, lines, ends)
+
+    def finish_lines(self, program: Program, out: list[str], fresh: set[int],
+                     joins: set[int]) -> list[str]:
+        """The faithful Save's lines in the file's own form (`finish`), as they are without."""
+        if not self.finish:
+            return out
+        finish = _function(self.finish)
+        lines = finish(program, out, fresh, joins)
+        assert isinstance(lines, list)
+        return lines
 
     def network_lines(self, network: Network, first: bool, style: object = None) -> list[str]:
         """A new or changed network as this dialect's text (Save, format), in `style` (what

@@ -58,7 +58,8 @@ def _offered(spec: InstructionSpec, found: dialects.Dialect) -> bool:
 def _rows(dialect: str) -> list[InstructionSpec]:
     seen: dict[str, InstructionSpec] = {}
     for spec in list(BY_NAME.values()):
-        if spec.dialect == dialect and spec.kind in (Kind.FUNCTION, Kind.END):
+        if spec.dialect == dialect and spec.kind in (Kind.FUNCTION, Kind.END) \
+                and spec.simulated:  # a shown-only row is read from a file, never placed
             seen.setdefault(spec.name, spec)
     return list(seen.values())
 

@@ -173,11 +173,19 @@ def print_faithful(program: Program) -> str:
     other = dialects.of(program)
     style = other.style_of(lines) if other is not None else None
     out: list[str] = []
+    fresh_at: set[int] = set()  # the lines printed fresh, and where the file's own follow a
+    joins: set[int] = set()  # change (a dialect's `finish` writes them in the file's form)
+    last_stop = source.ladder_start
 
     def verbatim(start: int, stop: int) -> None:
+        nonlocal last_stop
+        if start != last_stop and start < stop:
+            joins.add(len(out))
+        last_stop = stop
         out.extend(lines[i] + ends[i] for i in range(start, stop))
 
     def fresh(texts: list[str]) -> None:
+        fresh_at.update(range(len(out), len(out) + len(texts)))
         out.extend(text + newline for text in texts)
 
     # the lines before the ladder as read; the PMC model's marker as the program says
@@ -210,6 +218,8 @@ def print_faithful(program: Program) -> str:
         fresh(_comment_lines(program.trailer, ";" if fanuc or other else "//"))
         last_fresh = True
     verbatim(source.ladder_stop, len(lines))
+    if other is not None:
+        out = other.finish_lines(program, out, fresh_at, joins)
     text = "".join(out)
     if last_fresh and source.ladder_stop == len(lines) and not source.form.final_newline:
         text = text[:-len(newline)] if text.endswith(newline) else text

@@ -10,17 +10,21 @@ from itertools import pairwise
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.instructions import Kind, StackOp
+from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.ladder.logic import (
     MAX_PUSHES,
     Branch,
     ContactPlace,
     Leaf,
     Logic,
+    Output,
     Parallel,
     Rung,
     Undrawable,
     code_rung,
     first_cell,
+    inverted_inside,
+    outputs_first,
     parallel,
     read_rung,
     series,
@@ -145,6 +149,10 @@ def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "
     as an output chain too (a branch whose coils hang on the branch point)."""
     rung, diags = _read_grid(network, index, dialect, branches)
     if rung is not None:
+        inner = inverted_inside(rung)
+        if inner is not None:  # INV in a block: its code would invert the block only
+            diags.append(Diagnostic("inv-place", {}, network=index, cell=inner))
+            return None, diags
         try:
             code_rung(rung)
         except ContactPlace as place:  # an edge/comparison contact its dialect cannot code
@@ -165,7 +173,7 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
     nets = NodeNets(network)
     left = nets.net((0, 0))
     edges: list[_Edge] = []
-    coils: list[tuple[Cell, Coil, int]] = []
+    coils: list[tuple[Cell, Output, int]] = []
     boxes: list[tuple[Cell, FunctionBox]] = []
     for (r, c), element in network.elements():
         if isinstance(element, Contact | Coil) and element.address is None \
@@ -183,6 +191,12 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
             coils.append(((r, c), element, nets.net((r, c))))
         elif isinstance(element, FunctionBox):
             boxes.append(((r, c), element))
+    if boxes and all(item.spec.output for _, item in boxes) and (coils or len(boxes) > 1):
+        for (r, c), item in boxes:  # a dialect's output boxes among its coils: outputs too
+            if c + item.width != network.columns:
+                report("coil-not-right", (r, c))
+            coils.append(((r, c), item, nets.net((r + (item.pins[0] if item.pins else 0), c))))
+        boxes = []
     if not coils and not boxes:
         if network.cells:
             report("empty-network", min(network.cells))
@@ -285,7 +299,7 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
 
 
 def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
-                coils: list[tuple[Cell, Coil, int]], report: Callable[..., None],
+                coils: list[tuple[Cell, Output, int]], report: Callable[..., None],
                 diags: list[Diagnostic]) -> tuple[Rung | None, list[Diagnostic]]:
     """Coil logic: one output net, or an output chain where each next output is reached only
     through the one before it (`WRT y / AND b / WRT z`)."""
@@ -325,7 +339,7 @@ def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
 
 
 def _read_branches(left: int, outputs: list[int], useful: list[_Edge],
-                   coils: list[tuple[Cell, Coil, int]]) -> Rung | None:
+                   coils: list[tuple[Cell, Output, int]]) -> Rung | None:
     """Coils on several branches from one point (a dialect with MPS/MRD/MPP): the logic from
     the rail to that point, then each branch's block and coils, top to bottom; outputs whose
     paths from the point share an edge are one branch with branches of its own (nested MPS),
@@ -443,6 +457,10 @@ def network_to_instructions(network: LadderNetwork, index: int | None = None,
     means exactly the same gives its original coding back."""
     if network.listing is not None:
         return list(network.listing), []
+    if network.source is not None:
+        drawn = layout_network(network.source, network.comments)
+        if drawn.source is not None and drawn == network:  # still as drawn from its coding
+            return list(network.source), []
     rung, diags = read_grid(network, index, dialect)
     if rung is None:
         return None, diags
@@ -461,6 +479,7 @@ def network_to_instructions(network: LadderNetwork, index: int | None = None,
             branched, _ = read_grid(network, index, dialect, branches=True)
             if branched is not None:
                 again = code_rung(branched)
-                return (list(network.source) if again == original else again), diags
+                same = again == original or code_rung(outputs_first(branched)) == original
+                return (list(network.source) if same else again), diags
     return code, diags
 

@@ -7,6 +7,7 @@ from ladderworks.core.ladder.logic import (
     Branch,
     Leaf,
     Logic,
+    Output,
     Rung,
     Series,
     Undrawable,
@@ -20,7 +21,6 @@ from ladderworks.core.ladder.model import (
     MAX_COLUMNS,
     MAX_ROWS,
     WIRE,
-    Coil,
     FunctionBox,
     LadderNetwork,
 )
@@ -99,12 +99,37 @@ def draw_rung(rung: Rung, columns: int = DEFAULT_COLUMNS) -> LadderNetwork:
     return net
 
 
-def _draw_coils(net: LadderNetwork, row: int, coils: list[Coil]) -> None:
+def _draw_coils(net: LadderNetwork, row: int, coils: list[Output]) -> None:
+    """Parallel outputs from node (row, their column): coils in the coil column, a dialect's
+    output boxes right-aligned before it (then every output hangs on the box's input node)."""
+    column = net.columns - BOX_WIDTH if _has_box(coils) else net.coil_column
     for index, coil in enumerate(coils):
-        net.cells[(row + index, net.coil_column)] = coil
+        if isinstance(coil, FunctionBox):
+            for c in range(column, net.columns):
+                net.cells.pop((row + index, c), None)
+            net.cells[(row + index, column)] = coil
+        else:
+            for c in range(column, net.coil_column):
+                net.cells[(row + index, c)] = WIRE
+            net.cells[(row + index, net.coil_column)] = coil
         if index:
-            net.links.add((row + index - 1, net.coil_column))
+            net.links.add((row + index - 1, column))
     net.rows = max(net.rows, row + len(coils), 1)
+
+
+def _has_box(coils: list[Output]) -> bool:
+    return any(isinstance(coil, FunctionBox) for coil in coils)
+
+
+def _outputs_width(rung: Rung) -> int:
+    """Columns the output boxes need before the coil column (0 with coils only)."""
+    groups = [rung.coils, *(coils for _block, coils in rung.chain)]
+    todo = list(rung.branches)
+    while todo:
+        _block, coils, inner = todo.pop()
+        groups.append(coils)
+        todo.extend(inner)
+    return BOX_WIDTH if any(_has_box(group) for group in groups) else 0
 
 
 def _draw_chain(rung: Rung, columns: int) -> LadderNetwork:
@@ -121,7 +146,8 @@ def _draw_chain(rung: Rung, columns: int) -> LadderNetwork:
             below = row + max(h, len(coils))
             col += w
             row = below
-    net = LadderNetwork(max(columns, places[-1][2]), 1)
+    extra = _outputs_width(rung)
+    net = LadderNetwork(max(columns, max(place[2] for place in places) + extra), 1)
     for index, ((block, coils), (row, entry, exit_)) in enumerate(
             zip(segments, places, strict=True)):
         place_logic(net, block, row, entry)
@@ -153,7 +179,8 @@ def layout_network(instructions: list[Instruction] | tuple[Instruction, ...],
     if net.columns > MAX_COLUMNS or net.rows > MAX_ROWS:
         return LadderNetwork(columns, 1, comments=comments, listing=tuple(instructions))
     net.comments = comments
-    if code_rung(rung) != list(instructions) or has_bare_branch(rung.branches):
+    if code_rung(rung) != list(instructions) or has_bare_branch(rung.branches) \
+            or (rung.coils and rung.branches):
         net.source = tuple(instructions)  # a branch on its branch point reads as a chain too
     return net
 
@@ -164,9 +191,12 @@ def _draw_branches(rung: Rung, columns: int) -> LadderNetwork:
     branches (nested MPS) from the end of its block, the same way."""
     assert rung.logic is not None
     common_w, common_h = size(rung.logic)
-    net = LadderNetwork(max(columns, common_w + _branches_width(rung.branches)), 1)
+    net = LadderNetwork(max(columns, common_w + _branches_width(rung.branches)
+                            + _outputs_width(rung)), 1)
     place_logic(net, rung.logic, 0, 0)
-    rows = _place_branches(net, rung.branches, 0, common_w)
+    # outputs before the MPS hang on the branch point, above the branches
+    branches = [(None, rung.coils, []), *rung.branches] if rung.coils else rung.branches
+    rows = _place_branches(net, branches, 0, common_w)
     net.rows = max(net.rows, rows, common_h)
     return net
 

@@ -60,8 +60,10 @@ def parallel(a: Logic, b: Logic) -> Parallel:
     return Parallel(top + bottom)
 
 
-# A stack branch: its block (None: on the branch point), its coils, its own branches.
-Branch = tuple["Logic | None", list[Coil], list["Branch"]]
+# What a rung's outputs are: coils, and a dialect's output boxes (Delta's MOV among its coils)
+Output = Coil | FunctionBox
+# A stack branch: its block (None: on the branch point), its outputs, its own branches.
+Branch = tuple["Logic | None", list[Output], list["Branch"]]
 
 
 @dataclass(slots=True)
@@ -69,12 +71,14 @@ class Rung:
     """What a network means: logic feeding coils, or control inputs feeding a function box."""
 
     logic: Logic | None = None  # the coils' logic (None for a box network)
-    coils: list[Coil] = field(default_factory=list)  # parallel coils, top to bottom (box: on W1)
+    # parallel outputs, top to bottom (box: its coils on W1); a dialect's output boxes among
+    # them (`spec.output`); before `branches`: the outputs on their branch point (MPS after them)
+    coils: list[Output] = field(default_factory=list)
     box: FunctionBox | None = None
     inputs: list[Logic] = field(default_factory=list)  # box control inputs, first to last
     # an output chain (coil networks): after the coils, each block is put in series with the
     # result so far and its own coils written (`WRT y / AND b / WRT z`)
-    chain: list[tuple[Logic, list[Coil]]] = field(default_factory=list)
+    chain: list[tuple[Logic, list[Output]]] = field(default_factory=list)
     # where the box and the coils are drawn (coils in coding order: `coils`, then the chain's);
     # empty when the rung was read from text
     # a dialect's stack branches (Delta MPS / MRD / MPP): after `logic`, each branch's block
@@ -179,8 +183,10 @@ def coil_spec(coil: Coil) -> InstructionSpec:
     return _basic(Combine.NONE, coil.write, coil.negated and coil.write is Write.OUT, 0, True)
 
 
-def coil_instruction(coil: Coil) -> Instruction:
-    """WRT / WRT.NOT / SET / RST of a coil, with its comments."""
+def coil_instruction(coil: Output) -> Instruction:
+    """WRT / WRT.NOT / SET / RST of a coil, or an output box's instruction, with comments."""
+    if isinstance(coil, FunctionBox):
+        return box_instruction(coil)
     return Instruction(coil_spec(coil).name, coil.address, comment=coil.comment, lead=coil.lead)
 
 
@@ -199,7 +205,7 @@ def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
     coil_cells = iter(rung.coil_cells)
     out: list[Instruction] = []
 
-    def write(coils: list[Coil]) -> None:
+    def write(coils: list[Output]) -> None:
         for coil in coils:
             out.append(coil_instruction(coil))
             cells.append(next(coil_cells, None))
@@ -310,6 +316,10 @@ def _branch_op(op: StackOp, phase: str, levels: list[_Level], stack: list[Logic]
         rung.logic = stack[0]
         levels.append(_Level(rung.branches))
         return
+    if op is StackOp.DUP and phase == "coils" and not levels and rung.box is None \
+            and not rung.chain and not rung.branches:  # MPS after the rung's first outputs
+        levels.append(_Level(rung.branches))
+        return
     if op is StackOp.DUP and phase == "branch" and levels:
         block = _branch_block(stack, name)
         if block is None:
@@ -339,9 +349,18 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
     for ins in instructions:
         spec = ins.spec
         name = ins.name
+        if phase == "closed" and rung.box is not None and rung.box.spec.output:
+            # an output box with more after it: its logic feeds outputs, the box the first
+            rung.logic, rung.coils, rung.box, rung.inputs = rung.inputs[0], [rung.box], None, []
+            phase = "coils"
         # a dialect's edge or comparison contact
         joins = contact_combine(spec) if spec.kind is Kind.FUNCTION else None
-        if spec.is_coil:
+        if spec.kind is Kind.BASIC and spec.stack is StackOp.INVERT:
+            if phase not in ("logic", "chain", "branch") or len(stack) != 1:
+                raise Undrawable(name)  # INV inside a block: not the power at its place
+            stack[0] = series(stack[0], Leaf(Contact(None, False, ins.comment, ins.lead, name)))
+            continue
+        if spec.is_coil or (spec.output and phase != "logic"):
             if phase == "logic":
                 if rung.box is None and len(stack) != 1:
                     raise Undrawable(name)
@@ -357,10 +376,14 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
                 rest = top.items[1:]
                 rung.chain.append((rest[0] if len(rest) == 1 else Series(rest), []))
             phase = "coils"
-            if ins.operand is None:
+            coil: Output
+            if spec.output:
+                coil = FunctionBox.new(name, ins.params, ins.comment, ins.lead)
+            elif ins.operand is None:
                 raise Undrawable(name)
-            coil = Coil(ins.operand, spec.negated, ins.comment, ins.lead, spec.write,
-                        name if spec.dialect else "")  # a dialect's own coil row: kept
+            else:
+                coil = Coil(ins.operand, spec.negated, ins.comment, ins.lead, spec.write,
+                            name if spec.dialect else "")  # a dialect's own coil row: kept
             (levels[-1].branches[-1][1] if levels else rung.chain[-1][1] if rung.chain
              else rung.coils).append(coil)
             continue
@@ -406,3 +429,47 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
     if rung.box is not None and not rung.box.spec.w1 and rung.coils:
         raise Undrawable("coils")
     return rung
+
+
+def inverts(logic: Logic) -> bool:
+    """True for a stack operation drawn as a contact (Delta's INV)."""
+    if not isinstance(logic, Leaf) or not logic.contact.function:
+        return False
+    spec = lookup(logic.contact.function)
+    return spec is not None and spec.stack is StackOp.INVERT
+
+
+def inverted_inside(rung: Rung) -> Cell | None:
+    """The cell of an INV drawn inside a parallel block (not on a line from the rail or the
+    branch point, where it inverts all the power before it), or None."""
+    blocks: list[Logic | None] = [rung.logic, *rung.inputs,
+                                  *(block for block, _ in rung.chain)]
+    todo = list(rung.branches)
+    while todo:
+        block, _outputs, inner = todo.pop()
+        blocks.append(block)
+        todo.extend(inner)
+
+    def inside(logic: Logic, top: bool) -> Cell | None:
+        if isinstance(logic, Leaf):
+            return None if top or not inverts(logic) else (logic.cell or (0, 0))
+        for item in logic.items:
+            found = inside(item, top and isinstance(logic, Series))
+            if found is not None:
+                return found
+        return None
+
+    for block in blocks:
+        found = None if block is None else inside(block, True)
+        if found is not None:
+            return found
+    return None
+
+
+def outputs_first(rung: Rung) -> Rung:
+    """The rung with a first branch on the branch point (`MPS / OUT y / MRD …`) coded as the
+    outputs before the MPS (`OUT y / MPS …`): the same drawing, the same logic."""
+    if rung.coils or len(rung.branches) < 3 or rung.branches[0][0] is not None \
+            or rung.branches[0][2]:
+        return rung
+    return Rung(logic=rung.logic, coils=list(rung.branches[0][1]), branches=rung.branches[1:])

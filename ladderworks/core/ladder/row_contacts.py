@@ -10,7 +10,15 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ladderworks.core.address import Address, Area
-from ladderworks.core.instructions import BY_NAME, Combine, InstructionSpec, Kind, Operation, lookup
+from ladderworks.core.instructions import (
+    BY_NAME,
+    Combine,
+    InstructionSpec,
+    Kind,
+    Operation,
+    lookup,
+    shown_name,
+)
 
 if TYPE_CHECKING:
     from ladderworks.core.dialects.spelling import Spelling
@@ -28,7 +36,11 @@ def contact_combine(spec: InstructionSpec) -> Combine | None:
 
     A row with `combine` (Delta) joins so; a one-input row with W1 that tests an edge or a
     comparison (Fatek's TU/TD/FUN 170–175: IN AND the test) is a series (AND) contact."""
-    if spec.kind is not Kind.FUNCTION or spec.operation not in _TESTS:
+    if spec.kind is not Kind.FUNCTION:
+        return None
+    if spec.combine is not Combine.NONE and not spec.simulated:  # shown only (never conducts)
+        return spec.combine
+    if spec.operation not in _TESTS:
         return None
     if spec.combine is not Combine.NONE:
         return spec.combine
@@ -62,6 +74,15 @@ def _rows(dialect: str, operation: Operation, combine: Combine, pushes: int, wid
     return _FOUND[key]
 
 
+def _shown_base(dialect: str, combine: Combine, pushes: int) -> InstructionSpec | None:
+    """A dialect's shown-only contact row (no mnemonic of its own) joining by `combine`."""
+    for spec in list(BY_NAME.values()):
+        if (spec.kind is Kind.FUNCTION and spec.dialect == dialect and not spec.simulated
+                and spec.combine is combine and spec.pushes == pushes):
+            return spec
+    return None
+
+
 def row_for(function: str, combine: Combine, push: bool) -> InstructionSpec | None:
     """The row that codes a contact made of row `function` at a place that joins by `combine`
     (`push`: an RD.STK place), or None when the dialect has no such row (Fatek's TU has only
@@ -69,6 +90,10 @@ def row_for(function: str, combine: Combine, push: bool) -> InstructionSpec | No
     spec = lookup(function)
     if spec is None:
         return None
+    if not spec.simulated:  # a shown-only contact: its dialect's shown row for the place
+        base = _shown_base(spec.dialect, combine, 1 if push else 0)
+        return None if base is None else lookup(shown_name(base, spec.text_name,
+                                                            spec.operand_texts))
     if spec.combine is Combine.NONE:  # the one-input form joins only in series
         return spec if combine is Combine.AND and not push else None
     return _rows(spec.dialect, spec.operation, combine, 1 if push else 0, operand_width(spec))
@@ -79,6 +104,8 @@ def mark(function: str) -> str:
     spec = lookup(function)
     if spec is None:
         return "?"
+    if spec.operation not in _TESTS:  # INV, a contact not simulated: its mnemonic
+        return spec.text_name
     return MARKS.get(spec.operation, spec.operation.value)
 
 
@@ -107,6 +134,12 @@ def needs_lead(function: str) -> bool:
     rail it needs a contact before it, as its reader reads `ORG TU X2` (SHORT, then TU)."""
     return (row_for(function, Combine.READ, False) is None
             and row_for(function, Combine.AND, False) is not None)
+
+
+def simulated(function: str) -> bool:
+    """False for a contact the simulator passes by (a shown-only row: it never conducts)."""
+    spec = lookup(function)
+    return spec is None or spec.simulated
 
 
 def is_edge(function: str) -> bool:

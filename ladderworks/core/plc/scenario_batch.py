@@ -18,6 +18,7 @@ from pathlib import Path
 from ladderworks.core import dialects
 from ladderworks.core.compiler import compile_program
 from ladderworks.core.compiler.binary import MAGIC, decode
+from ladderworks.core.compiler.skipped import skipped, summary
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.il import parse_file
 from ladderworks.core.il.textform import split_lines
@@ -108,6 +109,8 @@ def _load(path: str, params: str | None, dialect: str | None) -> LoadedProgram:
                              reason="it does not parse")
     compiled = compile_program(parsed.program)
     messages += _located(path, compiled.diagnostics)
+    skips = summary(skipped(parsed.program))  # the instructions the scan passes by
+    messages += _located(path, [skips] if skips is not None else [])
     if compiled.binary is None:
         return LoadedProgram(path, None, messages=messages, reason="it does not compile")
     return LoadedProgram(path, compiled.binary, parsed.program.symbols, found.parameters,

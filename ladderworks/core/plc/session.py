@@ -24,6 +24,7 @@ from ladderworks.core.address import Address, Area
 from ladderworks.core.alarms import ActiveAlarm, ActiveAlarms, AlarmTable
 from ladderworks.core.compiler import CompileResult, compile_program
 from ladderworks.core.compiler.binary import BinaryProgram
+from ladderworks.core.compiler.skipped import SkippedInstruction, skipped, skipped_ops
 from ladderworks.core.diagnostics import Diagnostic, DiagnosticError
 from ladderworks.core.dialects.fatek.ascii_format import AsciiFormat
 from ladderworks.core.dialects.fatek.terminal import AsciiTerminal
@@ -85,6 +86,7 @@ class PlcRun:
         self.engine: ScanEngine | None = None
         self.binary: BinaryProgram | None = None
         self.program: Program | None = None  # the source of the binary, when known
+        self.skipped: list[SkippedInstruction] = []  # the loaded program's, not simulated
         self.parameters = PmcParameters()
         self.alarm_table = AlarmTable()
         self.ascii_terminal = AsciiTerminal()  # what a Fatek FUN 94 ASCWR sends to Port 1
@@ -130,6 +132,9 @@ class PlcRun:
         self._data = binary if isinstance(binary, bytes) else None
         self.binary = engine.program
         self.program = program
+        # the instructions the scan passes by (not simulated): the IDE marks them, the PLC
+        # control screen and the CLI list them
+        self.skipped = skipped(program) if program is not None else skipped_ops(engine.program)
         engine.extra[ASCII_TERMINAL] = self.ascii_terminal  # a Fatek program's FUN 94 output
         engine.extra[ASCII_FILES] = self.ascii_files
         engine.cold_start()

@@ -47,6 +47,9 @@ STOPPED_STYLE = ("background: #c62828; color: white; font-weight: bold; padding:
 IDLE_STYLE = ("background: #9e9e9e; color: white; font-weight: bold; padding: 4px 10px;"
               " border-radius: 4px;")
 
+SKIPPED_STYLE = "color: #8d6e00;"  # amber text: kept but not run
+SKIPPED_SHOWN = 12  # instructions named on the screen; the rest counted
+
 
 def network_end_lines(program: Program) -> list[int]:
     """The last source line of each network (where its stripe ends)."""
@@ -120,6 +123,13 @@ class PlcControlDock(Retranslating, QDockWidget):
         self.loaded.setObjectName("plcLoadedProgram")
         self.loaded_name = ""  # the name of the program in the PLC, "" when none
         layout.addWidget(self.loaded)
+        # the loaded program's instructions the simulator passes by (not simulated)
+        self.skipped = QLabel(body)
+        self.skipped.setObjectName("plcSkippedInstructions")
+        self.skipped.setWordWrap(True)
+        self.skipped.setStyleSheet(SKIPPED_STYLE)
+        self._skipped_of: object = None  # the list shown (PlcRun.skipped), to redo on change
+        layout.addWidget(self.skipped)
         self.editor = MnemonicEditor(body)
         self.editor.textChanged.connect(self._text_changed)
         layout.addWidget(self.editor, 1)
@@ -167,6 +177,7 @@ class PlcControlDock(Retranslating, QDockWidget):
             "change before Compile on this screen. F9 (PLC › Compile) loads the console's "
             "program into the PLC directly."))
         self._show_loaded()
+        self._show_skipped(force=True)
         self._show_status(self.session.run.status())
 
     # -- the program text ------------------------------------------------------------------
@@ -380,7 +391,30 @@ class PlcControlDock(Retranslating, QDockWidget):
             text += " · " + translate("PlcControl", "scan process: {0}").format(status.problem)
         return text
 
+    def _show_skipped(self, force: bool = False) -> None:
+        """The instructions of the program in the PLC that the scan passes by, with lines."""
+        found = self.session.run.skipped if self.session.run.engine is not None else []
+        if found is self._skipped_of and not force:
+            return
+        self._skipped_of = found
+        self.skipped.setVisible(bool(found))
+        if not found:
+            self.skipped.setText("")
+            return
+        shown = [translate("PlcControl", "{0} (line {1})").format(item.text, item.line)
+                 for item in found[:SKIPPED_SHOWN]]
+        if len(found) > SKIPPED_SHOWN:
+            shown.append(translate("PlcControl", "… and {0} more").format(
+                len(found) - SKIPPED_SHOWN))
+        self.skipped.setText(translate(
+            "PlcControl", "Not simulated, passed by in the scan ({0}): {1}").format(
+                len(found), ", ".join(shown)))
+        self.skipped.setToolTip(translate(
+            "PlcControl", "These instructions are kept, drawn and saved, but the simulator "
+            "does not run them: a box passes its input on, a contact never conducts."))
+
     def _show_status(self, status: PlcStatus) -> None:
+        self._show_skipped()
         if not status.loaded:
             self.indicator.setText(translate("PlcControl", "NO PROGRAM"))
             self.indicator.setStyleSheet(IDLE_STYLE)

@@ -44,6 +44,7 @@ COMMENT = QColor("#2e7d32")
 NAME = QColor("#5b5b5b")
 ERROR = QColor("#d32f2f")
 BOX_FILL = QColor("#eef3fb")
+NOT_SIMULATED = QColor("#b58900")  # the frame of an element kept but not simulated
 EMPTY_HINT = QColor("#9e9e9e")
 COMMENT_LINE_H = 12.0  # a wrapped comment line under an element
 
@@ -268,6 +269,11 @@ class NetworkItem(QGraphicsItem):
             painter.setFont(small_font)
             painter.drawText(QRectF(left - 6, mid - 9, right - left + 12, 18),
                              Qt.AlignmentFlag.AlignCenter, row_contacts.mark(element.function))
+            if not row_contacts.simulated(element.function):  # kept, not run: amber frame
+                pen = painter.pen()
+                painter.setPen(QPen(NOT_SIMULATED, 1.5, Qt.PenStyle.DashLine))
+                painter.drawRect(QRectF(left - 4, mid - 14, right - left + 8, 28))
+                painter.setPen(pen)
         self._labels(painter, element, x, y, label_font, small_font)
 
     def _paint_coil(self, painter: QPainter, element: Coil, x: float, y: float, col: int,
@@ -295,7 +301,13 @@ class NetworkItem(QGraphicsItem):
         height = box.height * rows.height
         rect = QRectF(x + 10, y + 6, width - 20, height - 12)
         painter.setBrush(BOX_FILL)
-        painter.drawRect(rect)
+        if box.spec.simulated:
+            painter.drawRect(rect)
+        else:  # kept and drawn, not run by the simulator: a dashed amber frame
+            pen = painter.pen()
+            painter.setPen(QPen(NOT_SIMULATED, 1.5, Qt.PenStyle.DashLine))
+            painter.drawRect(rect)
+            painter.setPen(pen)
         painter.setBrush(Qt.BrushStyle.NoBrush)
         painter.setFont(small_font)
         for index, name in enumerate(box.inputs):

@@ -41,10 +41,15 @@ def _diagnostics(text: str) -> list[tuple[int, int, str]]:
     ("AND X0\nOUT Y0\nEND\n", (1, 1, "dvp-no-logic")),
     ("LD X0\nANB\nOUT Y0\nEND\n", (2, 1, "stack-underflow")),
     ("LD X0\nMRD\nOUT Y0\nEND\n", (2, 1, "stack-underflow")),
-    # instructions
-    ("LD X0\nFOO Y0\nEND\n", (2, 1, "unknown-instruction")),
-    ("LD X0\nPID D0 D1 D2 D3\nEND\n", (2, 1, "dialect-not-simulated")),
-    ("LD X0\n  0003  SORT D0 K4 K2 D10 K1\nEND\n", (2, 9, "dialect-not-simulated")),
+    # instructions not simulated, or not known: kept and drawn, a warning at their line
+    ("LD X0\nFOO Y0\nEND\n", (2, 1, "not-simulated")),
+    ("LD X0\nPID D0 D1 D2 D3\nEND\n", (2, 1, "not-simulated")),
+    ("LD X0\n  0003  SORT D0 K4 K2 D10 K1\nEND\n", (2, 9, "not-simulated")),
+    ("LD X0\nF$O Y0\nEND\n", (2, 1, "unknown-instruction")),
+    # WPLSoft's export: a missing operand, a step out of order
+    ("000000,LD,X0\n000001,OUT,\n000002,END\n", (2, 8, "param-count")),
+    ("000000,LD,X0\n000001,MOV,,D0\n000006,END\n", (2, 8, "dvp-missing-operand")),
+    ("000000,LD,X0\n000001,OUT,Y0\n000001,END\n", (3, 1, "dvp-step-order")),
 ])
 def test_one_diagnostic_at_its_line(text: str, expected: tuple[int, int, str]) -> None:
     assert _diagnostics(text) == [expected]

@@ -19,10 +19,11 @@ DRAWN = [
     "LD X0\nMPS\nAND X1\nOUT Y0\nMRD\nAND X2\nOUT Y1\nMPP\nANI X3\nOUT Y2\nEND\n",
     "LD X0\nOR X5\nMPS\nAND X1\nOUT Y0\nOUT Y3\nMPP\nANI X2\nOUT Y2\nEND\n",
     "LD X0\nMPS\nLD X1\nOR X2\nANB\nOUT Y0\nMPP\nAND= D0 K1\nOUT Y2\nEND\n",
+    "LD X0\nINV\nOUT Y0\nEND\n",  # INV: a contact inverting the power before it
 ]
 LISTS = [
     "LD X0\nMPS\nAND X1\nOUT Y0\nEND\n",  # no MPP
-    "LD X0\nINV\nOUT Y0\nEND\n",
+    "LD X0\nLD X1\nINV\nORB\nOUT Y0\nEND\n",  # INV inside a block: inverts it alone
 ]
 
 

@@ -17,9 +17,11 @@ from ladderworks.core.plc.memory import Memory
 REGISTRY = load_all()
 # structure (jumps, common lines, subprograms, labels): done by the code generator
 ENGINE_ONLY = {"JMP", "JMPE", "COM", "COME", "CALL", "CALLU", "SP", "SPE", "LBL", "JMPB", "JMPC"}
-# a dialect's functional rows that run as functions (its structure rows are the engine's)
+# a dialect's functional rows that run as functions (its structure rows are the engine's;
+# its shown-only rows, `simulated` False, the generic no-op of compiler/implementations.py)
 DIALECT_FUNCTIONS = {row.name for dialect in dialects.every() for row in dialect.rows
-                     if row.kind is it.Kind.FUNCTION and row.flow is it.Flow.NONE}
+                     if row.kind is it.Kind.FUNCTION and row.flow is it.Flow.NONE
+                     and row.simulated}
 DOC = Path(__file__).resolve().parents[3] / "docs" / "instructions.md"
 
 

@@ -5,11 +5,15 @@ docs/dialects.md says what it covers and where each choice comes from.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from ladderworks.core.address import Address, Area
 from ladderworks.core.dialects.base import Dialect
 from ladderworks.core.dialects.delta.instructions import FAMILIES, ROWS
+from ladderworks.core.dialects.delta.shown import ROWS as SHOWN_ROWS
 from ladderworks.core.dialects.delta.sniff import score
 from ladderworks.core.dialects.devices import Device, DeviceMap
+from ladderworks.core.instructions import Combine, InstructionSpec, Kind
 
 NAME = "delta"
 
@@ -65,16 +69,26 @@ def relays(areas: dict[Area, bytearray], now_ms: int, first: bool) -> None:
         data[byte] = data[byte] | mask if on else data[byte] & ~mask & 0xFF
 
 
+def _outputs(rows: tuple[InstructionSpec, ...]) -> tuple[InstructionSpec, ...]:
+    """Delta's boxes of one input (ACT) and no W1 are outputs, as WPLSoft draws them: among
+    the coils, the rung's result flowing on past them (`LD X2 / OUT Y1 / MOV K5 D0 / OUT Y2`)."""
+    return tuple(replace(row, output=True) if row.kind is Kind.FUNCTION and not row.w1
+                 and row.inputs == ("ACT",) and row.combine is Combine.NONE else row
+                 for row in rows)
+
+
 DIALECT = Dialect(
-    name=NAME, title="Delta DVP", title_tr="Delta DVP", code=2, devices=DEVICES, rows=ROWS,
+    name=NAME, title="Delta DVP", title_tr="Delta DVP", code=2, devices=DEVICES,
+    rows=_outputs(ROWS + SHOWN_ROWS),
     sniff=score, reader="ladderworks.core.dialects.delta.reader:read",
     printer="ladderworks.core.dialects.delta.printer:network_lines", relays=relays,
     clocks=CLOCKS,
-    period_ms=10, extensions=(".dvp", ".il", ".txt"),
+    period_ms=10, extensions=(".dvp", ".il", ".txt", ".csv"),
     namer="ladderworks.core.dialects.delta.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.delta.printer:spelling",
     tables="ladderworks.core.dialects.delta.tables:TABLES", families=FAMILIES,
     probe="ladderworks.core.dialects.delta.editing:probe_lines",
+    finish="ladderworks.core.dialects.delta.csv_form:finish",
     codes={"sp-without-spe": "dvp-missing-sret", "spe-without-sp": "dvp-sret-alone",
            "outside-subprogram": "dvp-outside-subroutine", "label-missing": "dvp-pointer-missing",
            "call-missing": "dvp-call-missing", "no-logic": "dvp-no-logic",

@@ -74,7 +74,10 @@ def instruction_lines(instruction: Instruction) -> list[str]:
 
 
 def params_text(spec: InstructionSpec, values: tuple[object, ...]) -> list[str]:
-    """A functional instruction's operands as Delta writes them (MC's `coils` 0 left out)."""
+    """A functional instruction's operands as Delta writes them (MC's `coils` 0 left out; a
+    shown-only instruction's as it was written)."""
+    if spec.operand_texts:
+        return list(spec.operand_texts)
     params = list(values)
     if spec.flow is Flow.COMMON:
         params = params[1:]

@@ -10,11 +10,12 @@ unchanged network is saved from its own lines (il/printer.py's faithful save).
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, AddressError, Area
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects.delta import DEVICES, NAME, S_BITS, WIDE_COUNTERS
+from ladderworks.core.dialects.delta import DEVICES, NAME, S_BITS, WIDE_COUNTERS, csv_form, shown
 from ladderworks.core.dialects.delta import instructions as rows
 from ladderworks.core.dialects.delta import rows_extra as extra
 from ladderworks.core.il.program import (
@@ -29,10 +30,15 @@ from ladderworks.core.il.program import (
 from ladderworks.core.il.textform import TextForm
 from ladderworks.core.instructions import Flow, InstructionSpec, lookup
 
-_STEP = re.compile(r"^\d+$")
+_STEP = re.compile(r"^\d{1,9}$")  # a step number (a longer one is not)
 _POINTER = re.compile(r"^[Pp](\d+):?$")
 _CONSTANT = re.compile(r"^([KkHh])(-?[0-9A-Fa-f]+)$")
 _NEST = re.compile(r"^[Nn](\d)$")
+# operands the simulator has no device for: bit groups (K4M0), index registers (E0, F1, D0E0),
+# floating-point constants (F1.5): the instruction is kept, not simulated (docs/dialects.md)
+_NOT_SIMULATED_OPERAND = re.compile(
+    r"^(K[1-8][XYMS]\d+|[EF][0-7]|[A-Z]+\d+[EF][0-7]|F-?\d+\.\d*)$", re.IGNORECASE)
+_MNEMONIC = re.compile(r"^[A-Z][A-Z0-9]*[=<>&|^]*$")  # what may be kept as a shown instruction
 
 _BIT_LETTERS = {rows.BIT_IN: "XYMSTC", rows.BIT_OUT: "YMS"}
 _WORD_LETTERS = {rows.WORD_IN: "TCD", rows.WORD_OUT: "TCD", rows.TIMER: "T",
@@ -79,6 +85,8 @@ class _Rung:
 class _Reader:
     def __init__(self, lines: list[str]) -> None:
         self.lines = lines
+        self.form = csv_form.detect(lines[:csv_form.SAMPLE * 2])
+        self.step_no = -1  # the last step number read
         self.networks: list[Network] = []
         self.spans: list[tuple[int, int]] = []
         self.heads: list[int] = []
@@ -115,23 +123,44 @@ class _Reader:
         """Read every line; the networks and the index of the line after the last one."""
         last = 0
         for index, raw in enumerate(self.lines):
-            code, comment, comment_column = _split_comment(raw)
-            words = code.split()
             number = index + 1
-            if not words:
-                if (comment_column and not self.rung.instructions) or comment_column:
-                    self.pending.append(comment)
-                continue
-            column = len(code) - len(code.lstrip()) + 1
-            if len(words) > 1 and _STEP.match(words[0]):
-                column = code.index(words[1], column - 1 + len(words[0])) + 1
-                words = words[1:]
+            if self.form is not None and not self.form.comment(raw):
+                found = csv_form.fields(raw, self.form.separator)
+                words = [text for text, _ in found]
+                column = found[0][1] if found else 1
+                if csv_form.is_header(self.form, words) and last == 0:  # `Step,Instruction`
+                    self.pending.append(", ".join(words))
+                    continue
+                comment = csv_form.trailing_comment(words)
+                if len(found) > 1 and _STEP.match(words[0]):
+                    self.step_number(int(words[0]), number, column)
+                    words, column = words[1:], found[1][1]
+                if not words:
+                    continue
+            else:
+                code, comment, comment_column = _split_comment(raw)
+                words = code.split()
+                if not words:
+                    if comment_column:
+                        self.pending.append(comment)
+                    continue
+                column = len(code) - len(code.lstrip()) + 1
+                if len(words) > 1 and _STEP.match(words[0]):
+                    self.step_number(int(words[0]), number, column)
+                    column = code.index(words[1], column - 1 + len(words[0])) + 1
+                    words = words[1:]
             self.line(index, number, column, words, comment)
             last = index + 1
         self.close(last)
         for _label, _count, number, column in self.loops:
             self.error("dvp-for-without-next", number, column)
         return self.networks, last
+
+    def step_number(self, step: int, line: int, column: int) -> None:
+        """A line's step number: each after the one before (WPLSoft numbers them so)."""
+        if step <= self.step_no:
+            self.error("dvp-step-order", line, column, step=step, previous=self.step_no)
+        self.step_no = step
 
     def line(self, index: int, number: int, column: int, words: list[str], comment: str) -> None:
         pointer = _POINTER.match(words[0])
@@ -143,13 +172,24 @@ class _Reader:
             self.close(index + 1)
             return
         mnemonic = words[0].upper()
+        if "" in words:  # an empty field of WPLSoft's export between two others
+            self.error("dvp-missing-operand", number, column, name=mnemonic,
+                       index=words.index(""))
+            return
         spelling = rows.SPELLINGS.get(mnemonic)
-        if spelling is None:  # reported; the line stays in the file (faithful save)
-            if mnemonic in rows.NOT_SIMULATED:
-                self.error("dialect-not-simulated", number, column, name=mnemonic,
-                           dialect="Delta")
-            else:
-                self.error("unknown-instruction", number, column, name=mnemonic)
+        rung = self.rung
+        if spelling is not None and any(_NOT_SIMULATED_OPERAND.match(text)
+                                        for text in words[1:]):  # K4M0, D0E0: kept as is
+            contact = spelling.role in ("load", "contact")
+            self.shown(index, number, column,
+                       shown.spelling(mnemonic, words[1:], rung.depth > 0, contact), comment)
+            return
+        if spelling is None:  # kept, drawn and saved, not simulated (the checks warn)
+            if not _MNEMONIC.match(mnemonic) or any(" " in text for text in words[1:]):
+                self.error("unknown-instruction", number, column, name=words[0][:20])
+                return
+            spelling = shown.spelling(mnemonic, words[1:], rung.depth > 0)
+            self.shown(index, number, column, spelling, comment)
             return
         if spelling.role == "step":
             self.step_line(index, number, column, words, comment)
@@ -160,7 +200,6 @@ class _Reader:
         if spelling.role in ("output", "contact", "filler"):
             self.after_step(index, number, column)
         self.step_read = None
-        rung = self.rung
         role = spelling.role
         if role == "alone" or (role == "load" and rung.output and rung.pushed == 0):
             self.close(index)
@@ -279,6 +318,21 @@ class _Reader:
                                         number, column))
         self.close(index + 1)
 
+    def shown(self, index: int, number: int, column: int, spelling: rows.Spelling,
+              comment: str) -> None:
+        """An instruction the simulator does not run, kept with its operands as written."""
+        rung = self.rung
+        role = spelling.role
+        if role == "alone" or (role == "load" and rung.output and rung.pushed == 0):
+            self.close(index)
+            rung = self.rung
+        name = spelling.stk_row if role == "load" and rung.depth > 0 else spelling.row
+        self.add(index, Instruction(name, None, (), comment, (), number, column))
+        rung.depth += role == "load"
+        rung.output = role == "output"
+        if role == "alone":
+            self.close(index + 1)
+
     def build(self, spec: InstructionSpec, mnemonic: str, kinds: tuple[str, ...],
               operands: list[str], number: int, column: int, comment: str) -> Instruction:
         """The instruction of row `spec` with its operands read (a diagnostic for each bad one:
@@ -396,3 +450,14 @@ def read(text: str, form: TextForm, lines: list[str],
         form, lines, ends, 0, len(lines), [network.key() for network in networks],
         reader.spans, reader.heads, tuple(program.trailer), (last, len(lines)))
     return program, reader.diagnostics
+
+
+def read_instructions(instructions: Iterable[tuple[int | None, str, Sequence[str]]]
+                      ) -> tuple[Program, list[Diagnostic]]:
+    """A program from a list of instructions, each (step or None, mnemonic, operand texts): as
+    WPLSoft exports them (`000012,MPS`), read by `read` (the .dvp reader's entry). A
+    diagnostic's line is the instruction's place in the list (1-based)."""
+    lines = [",".join([*(() if step is None else (f"{step:06d}",)), mnemonic, *operands])
+             for step, mnemonic, operands in instructions]
+    text = "".join(line + "\n" for line in lines)
+    return read(text, TextForm(), lines, ["\n"] * len(lines))

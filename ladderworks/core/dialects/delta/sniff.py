@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+from ladderworks.core.dialects.delta import csv_form
 from ladderworks.core.dialects.delta.instructions import NOT_SIMULATED, SPELLINGS
 from ladderworks.core.il.textform import split_lines
 
@@ -24,6 +25,13 @@ _KNOWN = frozenset(SPELLINGS) | NOT_SIMULATED
 SAMPLE_LINES = 400
 
 
+def _words(line: str, separator: str) -> str:
+    """An export line's fields as an instruction mode line (its comment fields left out)."""
+    words = [field for field, _ in csv_form.fields(line, separator)]
+    csv_form.trailing_comment(words)
+    return " ".join(words)
+
+
 def score(text: str) -> int:
     """0..100: the share of the first code lines that read as Delta instructions, 0 when none
     is a Delta-only mnemonic, an `LD` with a Delta operand, or a comparison contact."""
@@ -31,7 +39,11 @@ def score(text: str) -> int:
         return 0  # a PMC (LadderWorks / LADDER-III) file
     total = matched = 0
     distinctive = False
-    for line in split_lines(text)[:SAMPLE_LINES * 2]:
+    lines = split_lines(text[:65536])[:SAMPLE_LINES * 2]
+    form = csv_form.detect(lines[:csv_form.SAMPLE * 2])
+    if form is not None:  # WPLSoft's export: its fields as an instruction mode line
+        lines = [line if form.comment(line) else _words(line, form.separator) for line in lines]
+    for line in lines:
         if not line.strip() or _COMMENT.match(line):
             continue
         total += 1

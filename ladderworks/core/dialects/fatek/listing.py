@@ -14,6 +14,8 @@ COILS = ("OUT", "OUTS", "OUTR")  # OUT / OUT NOT / OUT L; OUTS set, OUTR reset
 BOXES = ("TMR", "CTR", "RST", "SET")  # timers, counters, SET / RST of a relay (RST of T/C)
 MODIFIERS = ("NOT", "TU", "TD")
 
+MAX_STEP_DIGITS = 9  # a longer "step number" is not one (int() refuses thousands of digits)
+
 
 @dataclass(frozen=True, slots=True)
 class OperandLine:
@@ -217,7 +219,8 @@ def read_listing(lines: list[str], first_line: int = 1) -> tuple[Listing, list[D
         step_match = _STEP_RE.match(raw)
         step: int | None = None
         unit = ""
-        if step_match is not None and not raw.lstrip()[0].isalpha():
+        if step_match is not None and not raw.lstrip()[0].isalpha() \
+                and len(step_match.group(1)) <= MAX_STEP_DIGITS:  # int() refuses 4300 digits
             step = int(step_match.group(1))
             unit = step_match.group(2).upper()
             text = _strip_note(step_match.group(3))

@@ -89,7 +89,7 @@ def _box_lines(ins: Instruction) -> list[str]:
     name, kept_forms, kept = unknown_parts(ins)
     head = _line(f"FUN {fun}{forms or kept_forms}", name)
     lines = [head]
-    if spec.cnc:  # not simulated: its operand lines were kept as the comment
+    if spec.cnc or not spec.simulated:  # not simulated: its operand lines kept as the comment
         lines.extend(f"    {text.strip()}" for text in kept.split(", ") if text.strip())
         return lines
     for param in spec.params:
