@@ -15,12 +15,12 @@ from ladderworks.core.plc.engine import ScanEngine
 
 from .conftest import delta, get, put
 
-TEXT = ("NOP\n"  # no logic before it: a network of its own
-        "LD X0\nDMUL D0 K2 D2\nOUT Y0\n"  # a box: the rung's power flows on past it
-        "LD X0\nDAND< D0 K5\nOUT Y1\n"  # a contact: never conducts
-        "LD X0\nDOR>= D0 K5\nOUT Y2\n"  # in parallel: adds nothing
+TEXT = ("EI\n"  # no logic before it: a network of its own
+        "LD X0\nPID D0 K2 D100 D2\nOUT Y0\n"  # a box: the rung's power flows on past it
+        "LD X0\nAND& D0 K5\nOUT Y1\n"  # a contact: never conducts
+        "LD X0\nOR| D0 K5\nOUT Y2\n"  # in parallel: adds nothing
         "LD X1\nBLINK K7 D9\nOUT Y3\n"  # a mnemonic nobody knows: kept as a box
-        "STL S0\nLD X2\nOUT Y4\nEND\n")
+        "DI\nLD X2\nOUT Y4\nEND\n")
 
 
 @pytest.mark.parametrize("monitored", [False, True])
@@ -35,7 +35,7 @@ def test_they_are_passed_by_in_the_scan(monitored: bool) -> None:
         put(plc, name, 1)
     plc.scan()
     assert [get(plc, f"Y{n}") for n in range(5)] == [1, 0, 1, 1, 1]
-    assert get(plc, "D2") == 0  # DMUL did nothing
+    assert get(plc, "D2") == 0  # PID did nothing
 
 
 def test_they_are_drawn_with_their_operands_and_saved_unchanged() -> None:
@@ -45,7 +45,7 @@ def test_they_are_drawn_with_their_operands_and_saved_unchanged() -> None:
         assert layout_network(network.instructions).listing is None
     art = "\n".join("\n".join(draw_network(layout_network(n.instructions), spell=spell))
                     for n in program.networks)
-    assert "DMUL" in art and "D0 K2 D2" in art and "BLINK" in art and "DAND<" in art
+    assert "PID" in art and "D100" in art and "BLINK" in art and "AND&" in art
     assert encode_program(program) == TEXT.encode()
     assert [item.text for item in skipped(program)] == [
-        "NOP", "DMUL D0 K2 D2", "DAND< D0 K5", "DOR>= D0 K5", "BLINK K7 D9", "STL S0"]
+        "EI", "PID D0 K2 D100 D2", "AND& D0 K5", "OR| D0 K5", "BLINK K7 D9", "DI"]

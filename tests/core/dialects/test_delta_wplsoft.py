@@ -118,12 +118,13 @@ def test_a_list_of_instructions_becomes_a_program() -> None:
     """The .dvp reader's entry: (step, mnemonic, operands) in, a Program out."""
     program, diagnostics = read_instructions(
         [(0, "LD", ("X0",)), (1, "MOV", ("K5", "D0")), (6, "DMUL", ("D0", "K2", "D2")),
-         (19, "OUT", ("Y0",)), (20, "END", ())])
+         (19, "PID", ("D0", "K2", "D100", "D2")), (28, "OUT", ("Y0",)), (29, "END", ())])
     assert [d.code for d in diagnostics] == []
     assert program.dialect == "delta"
-    assert [ins.spec.text_name for ins in program.networks[0].instructions] == \
-        ["RD", "MOV", "DMUL", "WRT"]
-    assert program.networks[0].instructions[2].spec.simulated is False
+    assert [ins.spec.text_name for ins in program.networks[0].instructions][:3] == \
+        ["RD", "MOV", "DMUL"]
+    assert program.networks[0].instructions[2].spec.simulated is True
+    assert program.networks[0].instructions[3].spec.simulated is False  # PID: shown only
     assert encode_program(program).decode().splitlines()[:2] == ["000000,LD,X0", "000001,MOV,K5,D0"]
 
 

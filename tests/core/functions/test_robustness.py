@@ -21,7 +21,7 @@ ENGINE_ONLY = {"JMP", "JMPE", "COM", "COME", "CALL", "CALLU", "SP", "SPE", "LBL"
 # its shown-only rows, `simulated` False, the generic no-op of compiler/implementations.py)
 DIALECT_FUNCTIONS = {row.name for dialect in dialects.every() for row in dialect.rows
                      if row.kind is it.Kind.FUNCTION and row.flow is it.Flow.NONE
-                     and row.simulated}
+                     and (row.simulated or row.cnc)}  # Fatek FUN stubs: registered no-ops
 DOC = Path(__file__).resolve().parents[3] / "docs" / "instructions.md"
 
 

@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 from dataclasses import replace
-from functools import cache
 
 from ladderworks.core.instruction_fields import Operation
 from ladderworks.core.instructions import (
@@ -16,7 +15,6 @@ from ladderworks.core.instructions import (
     ParamAccess,
     ParamKind,
     Write,
-    add_rows,
 )
 
 SUB_BASE = 20_000  # a Fatek row's SUB number: 20000 + FUN n (21000.. for the others)
@@ -168,23 +166,14 @@ SERIES_OF: dict[str, InstructionSpec] = {  # a placed row's series row (its FUN 
 
 BY_FUN: dict[int, InstructionSpec] = {
     spec.sub - SUB_BASE: spec for spec in ROWS if spec.sub is not None and spec.sub < OTHER}
+# the FUNs run as nothing (their FO stay 0): `simulated` False, so the checks warn and a run
+# names them (core/compiler/skipped.py), as for Delta's shown-only rows
+ROWS = tuple(replace(spec, simulated=False) if spec.cnc else spec for spec in ROWS)
+BY_FUN = {number: replace(spec, simulated=False) if spec.cnc else spec
+          for number, spec in BY_FUN.items()}
 NOT_SIMULATED: frozenset[str] = frozenset(spec.name for spec in ROWS if spec.cnc)
-_INPUTS = ("EN", "PAU", "ABT")
 
 
-@cache
-def unknown_fun(number: int, inputs: int, name: str = "") -> InstructionSpec:
-    """A FUN n the table does not know, with `inputs` (1-3) control inputs and the name the
-    listing gives it: kept and drawn (its operand lines as the box's comment), not simulated
-    (`simulated` False: a warning, its FO stay 0); joined to the instruction table when first
-    met (docs/dialects.md)."""
-    mnemonic = name if name.isalnum() else f"FUN{number}"
-    spec = replace(_row(f"FBS.FUN{number}.{inputs}.{mnemonic}", SUB_BASE + number, mnemonic,
-                        f"FUN {number}", f"FUN {number}",
-                        inputs=_INPUTS[:max(1, min(inputs, len(_INPUTS)))],
-                        params=(_number("fun", 0, 999), FO)), simulated=False)
-    add_rows((spec,))
-    return spec
 COMPARISON_FUNS = range(170, 176)
 
 # The modules of core/plc/functions that run these rows (merged into core/plc/families.py)
