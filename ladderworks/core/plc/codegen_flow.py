@@ -96,3 +96,8 @@ class GeneratedScan:
     def flow_into(self, out: bytearray) -> None:
         """Write the last scan's power flow into `out` (one byte for each of `count` ops)."""
         flow_into(self.blocks, out)
+
+    def clear_flow(self) -> None:
+        """Every op's power flow 0 (a cold start)."""
+        for block in self.blocks:
+            block[:] = [0] * len(block)

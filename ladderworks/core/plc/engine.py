@@ -19,11 +19,14 @@ from ladderworks.core.plc.forcing import ForceEntry, ForceTable
 from ladderworks.core.plc.functions import FunctionContext, load_all
 from ladderworks.core.plc.history import ScanHistory
 from ladderworks.core.plc.memory import Memory
+from ladderworks.core.plc.native import unavailable as native_unavailable
+from ladderworks.core.plc.native.scan import NativeScan, native_variant
 from ladderworks.core.plc.scan_state import ScanSetup, ScanState
 from ladderworks.core.plc.skipping import ClockRelay, CycleSkipper, clocks_read
 from ladderworks.core.plc.trace import DEFAULT_CAPACITY, TraceSampler
 
 DEFAULT_PERIOD_MS = 8  # FANUC level-1 period
+BACKENDS = ("python", "native")  # the scan's code: generated Python, or native (llvmlite)
 ALARM_LOG_CAPACITY = 4096  # A-area changes kept until a view takes them
 
 # Kept on a cold start (and across stop): keep relays, data table, timer and counter tables.
@@ -68,7 +71,7 @@ class ScanEngine:
 
     def __init__(self, binary: bytes | BinaryProgram, *, period_ms: int = DEFAULT_PERIOD_MS,
                  memory: Memory | None = None, divisions: int = 1,
-                 monitored: bool = False) -> None:
+                 monitored: bool = False, backend: str = "python") -> None:
         if period_ms <= 0:
             raise ValueError("the scan period must be at least 1 ms")
         if divisions < 1:
@@ -96,7 +99,12 @@ class ScanEngine:
         self._monitored = monitored  # the first variant made is the one to run
         self._registry = load_all()
         self._states: list[dict[str, Any]] = [{} for _ in self.program.ops]
-        self._variants: dict[tuple[bool, frozenset[int]], GeneratedScan] = {}
+        self._variants: dict[tuple[bool, frozenset[int]], GeneratedScan | NativeScan] = {}
+        if backend not in BACKENDS:
+            raise ValueError(f"unknown scan backend {backend!r}")
+        self.backend = backend  # the one asked for: "python" or "native"
+        # why the Python scan runs although the native one was asked for (None: it runs)
+        self.backend_reason: str | None = None
         self._ctx = _context(self.memory, period_ms, self.program.dialect)
         found = dialects.get(self.program.dialect)
         self._dialect_relays = found.relays if found is not None else None
@@ -131,10 +139,33 @@ class ScanEngine:
         if variant is None:
             if len(self._variants) > 16:
                 self._variants.clear()
-            variant = generate(self.program.ops, self.memory.areas, self._registry,
-                               self._states, disabled=key[1], monitored=key[0])
+            variant = self._native(key) if self.backend_used == "native" else None
+            if variant is None:
+                variant = generate(self.program.ops, self.memory.areas, self._registry,
+                                   self._states, disabled=key[1], monitored=key[0])
             self._variants[key] = variant
         return variant
+
+    @property
+    def backend_used(self) -> str:
+        """The backend that scans: "native" when asked for and it could be built."""
+        return "native" if self.backend == "native" and self.backend_reason is None \
+            else "python"
+
+    def _native(self, key: tuple[bool, frozenset[int]]) -> NativeScan | None:
+        """The native variant of `key`, or None (the reason in `backend_reason`: the Python
+        scan runs from then on)."""
+        reason = native_unavailable()
+        if reason is None:
+            try:
+                return native_variant(self.program.ops, self.program.dialect,
+                                      self.memory.areas, self._registry, self._states,
+                                      disabled=key[1], monitored=key[0])
+            except Exception as error:  # an IR or LLVM failure: the Python scan runs
+                reason = f"the native compile failed: {error}"
+        self.backend_reason = reason
+        self._variants.clear()  # every variant of one engine comes from one backend
+        return None
 
     def _choose(self) -> None:
         """Use the variant of the monitoring and disabled ops now (parked: at the next scan)."""
@@ -260,8 +291,7 @@ class ScanEngine:
             self._first_scan = True
             self._power_flow[:] = bytes(len(self._power_flow))
             for variant in self._variants.values():
-                for block in variant.blocks:
-                    block[:] = [0] * len(block)
+                variant.clear_flow()
             self._flow_stale = None
 
     # -- moving to and from a scan process (core/plc/scan_process.py) ----------------------

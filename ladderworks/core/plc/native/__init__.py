@@ -1,0 +1,13 @@
+"""The native scan backend: the loaded binary compiled to machine code with llvmlite (see
+docs/engine.md, "The native scan"). `unavailable()` says why it cannot run, if it cannot."""
+
+from __future__ import annotations
+
+
+def unavailable() -> str | None:
+    """Why the native backend cannot run here (llvmlite missing or unusable), or None."""
+    try:
+        import llvmlite.binding  # noqa: F401
+    except Exception as error:  # ImportError, or a broken wheel's OSError
+        return f"llvmlite is not available ({error})"
+    return None

@@ -1,0 +1,96 @@
+"""Compiling the native scan's IR with llvmlite's MCJIT, and the compiled programs kept by the
+hash of the binary (so a program loaded again, F9 of an unchanged program, a second engine or
+a `-j` worker's next scenario, does not compile again)."""
+
+from __future__ import annotations
+
+import hashlib
+import threading
+import time
+from collections import OrderedDict
+from collections.abc import Collection
+from dataclasses import dataclass
+from typing import Any
+
+from ladderworks.core.compiler.binary import Op, encode
+from ladderworks.core.plc.functions import FunctionImpl
+from ladderworks.core.plc.native.generator import NativeProgram, generate_ir
+
+OPT_LEVEL = 1  # LLVM's speed level: 1 keeps the real programs' compile time low
+CACHED = 8  # compiled variants kept in memory
+_lock = threading.Lock()
+_cache: OrderedDict[tuple[str, bool, frozenset[int]], Compiled] = OrderedDict()
+_target: list[Any] = []
+
+
+@dataclass
+class Compiled:
+    """A compiled scan: the execution engine that owns the code, the entry's address, the
+    program's IR facts, and the seconds it took (IR, LLVM)."""
+
+    engine: Any
+    address: int
+    program: NativeProgram
+    ir_seconds: float
+    llvm_seconds: float
+
+
+def _machine() -> Any:
+    import llvmlite.binding as llvm
+
+    if not _target:
+        llvm.initialize_native_target()
+        llvm.initialize_native_asmprinter()
+        llvm.initialize_native_asmparser()
+        target = llvm.Target.from_default_triple()
+        _target.append(target.create_target_machine(opt=OPT_LEVEL, jit=True))
+    return _target[0]
+
+
+def program_hash(ops: tuple[Op, ...], dialect: str) -> str:
+    """The key of a binary: the SHA-256 of its encoding."""
+    return hashlib.sha256(encode(ops, dialect)).hexdigest()
+
+
+def compile_ir(text: str) -> tuple[Any, int, float]:
+    """JIT-compile a module's IR; (engine, address of `scan`, seconds)."""
+    import llvmlite.binding as llvm
+
+    started = time.perf_counter()
+    machine = _machine()
+    module = llvm.parse_assembly(text)
+    module.verify()
+    options = llvm.create_pipeline_tuning_options(speed_level=OPT_LEVEL)
+    builder = llvm.create_pass_builder(machine, options)
+    builder.getModulePassManager().run(module, builder)
+    engine = llvm.create_mcjit_compiler(module, machine)
+    engine.finalize_object()
+    address = engine.get_function_address("scan")
+    return engine, address, time.perf_counter() - started
+
+
+def compiled_scan(ops: tuple[Op, ...], dialect: str, registry: dict[str, FunctionImpl],
+                  disabled: Collection[int], monitored: bool) -> tuple[Compiled, bool]:
+    """The compiled variant of a program (from the cache when it holds it); (it, from cache)."""
+    key = (program_hash(ops, dialect), monitored, frozenset(disabled))
+    with _lock:
+        found = _cache.get(key)
+        if found is not None:
+            _cache.move_to_end(key)
+            return found, True
+    started = time.perf_counter()
+    program = generate_ir(ops, registry, disabled=disabled, monitored=monitored)
+    ir_seconds = time.perf_counter() - started
+    engine, address, llvm_seconds = compile_ir(program.text)
+    result = Compiled(engine, address, program, ir_seconds, llvm_seconds)
+    with _lock:
+        _cache[key] = result
+        while len(_cache) > CACHED:
+            _cache.popitem(last=False)
+    return result, False
+
+
+def clear_cache() -> None:
+    """Forget every compiled program (tests, benchmarks measuring a cold compile)."""
+    with _lock:
+        _cache.clear()

@@ -1,0 +1,123 @@
+"""The native scan at run time: the compiled code called on the engine's own memory (the areas'
+bytearrays, by address: no copies), with the engine's call-site states."""
+
+from __future__ import annotations
+
+import ctypes
+from collections.abc import Collection
+from typing import Any
+
+from ladderworks.core.address import Area
+from ladderworks.core.compiler.binary import Op
+from ladderworks.core.compiler.checks import implementation_of
+from ladderworks.core.plc.codegen_plan import JumpToMain, loop_stop
+from ladderworks.core.plc.functions import FunctionImpl
+from ladderworks.core.plc.native import layout
+from ladderworks.core.plc.native.ir_text import AREA_ORDER
+from ladderworks.core.plc.native.jit import Compiled, compiled_scan
+
+_ENTRY = ctypes.CFUNCTYPE(ctypes.c_int32, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p,
+                          ctypes.c_void_p, ctypes.c_int32)
+_CALLBACK = ctypes.CFUNCTYPE(ctypes.c_int32, ctypes.c_int32, ctypes.c_int32)
+_INPUTS = [[tuple((bits >> k) & 1 for k in range(n)) for bits in range(1 << n)]
+           for n in range(9)]
+
+
+class NativeScan:
+    """A compiled variant with the interface of GeneratedScan: `scan(ctx, M, full)`, the
+    call sites' `states`, the power flow (`flow_into`), `source` (the IR)."""
+
+    def __init__(self, compiled: Compiled, from_cache: bool, ops: tuple[Op, ...],
+                 areas: dict[Area, bytearray], registry: dict[str, FunctionImpl],
+                 states: list[dict[str, Any]]) -> None:
+        program = compiled.program
+        self.compiled = compiled
+        self.from_cache = from_cache
+        self.source = program.text
+        self.count = len(ops)
+        self.blocks = ()
+        self._entry = _ENTRY(compiled.address)
+        self._words = (ctypes.c_int32 * max(1, program.layout.words))()
+        self._flow = bytearray(max(1, len(ops)))
+        self._flow_view = (ctypes.c_char * len(self._flow)).from_buffer(self._flow)
+        self._areas = areas
+        self._bound: tuple[object, ...] = ()
+        self._bases = (ctypes.c_void_p * len(AREA_ORDER))()
+        self._views: list[object] = []
+        self._bind()
+        while len(states) < len(ops):
+            states.append({})
+        self.states = tuple(states[index] for index in program.calls)
+        self._sites: list[tuple[FunctionImpl, dict[str, Any], tuple, list[tuple[int, ...]]]] = []
+        for site, inputs in program.callbacks:
+            index = program.calls[site]
+            impl = implementation_of(ops[index].spec, registry)
+            assert impl is not None
+            self._sites.append((impl, self.states[site], ops[index].params, _INPUTS[inputs]))
+        self.callbacks = [ops[program.calls[site]].spec.name for site, _ in program.callbacks]
+        self._callback = _CALLBACK(self._call)
+        self._ctx: Any = None
+        self._error: BaseException | None = None
+        self._loop = loop_stop(ops, program.units)
+        self._labels = program.labels
+
+    def _bind(self) -> None:
+        """Take the areas' addresses (again when a buffer was replaced)."""
+        buffers = tuple(self._areas[area] for area in AREA_ORDER)
+        views = [(ctypes.c_char * len(data)).from_buffer(data) for data in buffers]
+        for k, view in enumerate(views):
+            self._bases[k] = ctypes.addressof(view)
+        self._views = views  # they pin the buffers: an area cannot be resized under the code
+        self._bound = buffers
+
+    def _call(self, number: int, bits: int) -> int:
+        try:
+            impl, state, params, inputs = self._sites[number]
+            return 1 if impl(self._ctx, state, inputs[bits], params) else 0
+        except BaseException as error:  # re-raised by scan() once the native code returned
+            self._error = error
+            self._words[layout.ABORT] = layout.FAILED
+            return 2
+
+    def scan(self, ctx: Any, M: object = None, full: bool = True) -> None:
+        """One run of the program (level 1, and levels 2 and 3 when `full`)."""
+        areas = self._areas
+        bound = self._bound
+        for k, area in enumerate(AREA_ORDER):
+            if areas[area] is not bound[k]:
+                self._bind()
+                break
+        self._ctx = ctx
+        code = self._entry(self._bases, self._words, self._flow_view, self._callback,
+                           1 if full else 0)
+        if code:
+            self._raise(code)
+
+    def _raise(self, code: int) -> None:
+        words = self._words
+        if code == layout.JUMP_MAIN:
+            raise JumpToMain(words[layout.JUMP_LABEL])
+        if code == layout.LOOPED:
+            unit = words[layout.LOOP_UNIT]
+            self._loop(unit, words[layout.LOOP_CHUNK], self._labels[unit])
+        error, self._error = self._error, None
+        if error is not None:
+            raise error
+        raise RuntimeError(f"native scan stopped with code {code}")
+
+    def flow(self) -> bytes:
+        return bytes(self._flow[:self.count])
+
+    def flow_into(self, out: bytearray) -> None:
+        out[:] = self._flow[:len(out)]
+
+    def clear_flow(self) -> None:
+        self._flow[:] = bytes(len(self._flow))
+
+
+def native_variant(ops: tuple[Op, ...], dialect: str, areas: dict[Area, bytearray],
+                   registry: dict[str, FunctionImpl], states: list[dict[str, Any]], *,
+                   disabled: Collection[int] = (), monitored: bool = False) -> NativeScan:
+    """The native scan of `ops` over `areas` and `states` (compiled, or from the cache)."""
+    compiled, cached = compiled_scan(ops, dialect, registry, disabled, monitored)
+    return NativeScan(compiled, cached, ops, areas, registry, states)
