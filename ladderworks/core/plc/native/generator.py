@@ -2,9 +2,10 @@
 
 Each level and subprogram is a function `U<n>` calling its chunk functions `c<k>` (a chunk
 starts at a network when the last one reached CHUNK_OPS ops, at every label, and anywhere after
-MAX_CHUNK_OPS ops, the stack values then carried in state words). Stack levels are slots, JMP
-ranges a guard on the unit's jump id (as the Python scan's `sk`), COM gates a local per chunk
-loaded from its state word, a unit with labels a dispatch loop over its chunks. A functional
+MAX_CHUNK_OPS ops, the stack values then carried in state words). Stack levels and COM gates
+are SSA values (`slots`: the generator does mem2reg itself, with a phi where a guarded run of
+ops ends), JMP ranges a guard on the unit's jump id (as the Python scan's `sk`), COM gates a
+value per chunk loaded from its state word, a unit with labels a dispatch loop over its chunks. A functional
 instruction is native code when builtins.py has it, else a call-back into its Python
 implementation with the same call-site state.
 """
@@ -99,15 +100,31 @@ class _Generator:
         """Code that follows runs only while no JMP of the unit is being taken."""
         if self.jumps and not self.guarded:
             sk = self.f.load_word(self.layout.jump_base + self.unit_number)
-            idle = self.f.value(f"icmp eq i32 {sk}, 0")
-            _, after = self.f.branch(self.f.value(f"zext i1 {idle} to i32"))
+            self.guard_from = self.f.block
+            self.guard_slots = dict(self.slots)
+            _, after = self.f.branch_if(self.f.value(f"icmp eq i32 {sk}, 0"))
             self.guard_end = after
             self.guarded = True
 
     def unguard(self) -> None:
+        """End a guarded run of ops: each slot it changed is a phi of before and after."""
         if self.guarded:
-            self.f.join(self.guard_end)
+            f = self.f
+            end = f.block
+            f.join(self.guard_end)
+            before = self.guard_slots
+            for key, value in self.slots.items():
+                old = before.get(key, "1" if key.startswith("cm") else "0")
+                if value != old:
+                    self.slots[key] = f.value(
+                        f"phi i8 [{value}, %{end}], [{old}, %{self.guard_from}]")
             self.guarded = False
+
+    def get(self, depth: int) -> str:
+        return self.slots[f"s{depth}"]
+
+    def put(self, depth: int, value: str) -> None:
+        self.slots[f"s{depth}"] = value
 
     def start_chunk(self, carried: int) -> None:
         self.f = FunctionText(f"c{self.chunk_count}")
@@ -115,33 +132,27 @@ class _Generator:
         self.guarded = False
         self.carried = carried
         self.depth = carried or 1
-        self.cm_local: dict[int, bool] = {r.ident: False for r in self.commons}  # opened here?
+        self.slots = {f"s{d}": f"%carried{d}" if d < carried else "0" for d in range(10)}
+        self.loaded = [r.ident for r in self.commons]  # the gates loaded at the chunk's start
+        for ident in self.loaded:
+            self.slots[f"cm{ident}"] = f"%cmi{ident}"
 
     def cm(self, ident: int) -> str:
-        if ident not in self.cm_local:
-            self.cm_local[ident] = False
-        return self.f.value(f"load i32, ptr %cm{ident}")
+        return self.slots[f"cm{ident}"]
 
     def end_chunk(self, mid_network: bool, result: str) -> str:
         f = self.f
         self.unguard()
         if mid_network:
             for d in range(self.depth):
-                f.store_word(layout.CARRIED + d, f.get(d))
+                f.store_word(layout.CARRIED + d, f.value(f"zext i8 {self.get(d)} to i32"))
         prelude: list[str] = []
-        for d in range(self.carried):
+        words = [(f"%carried{d}", layout.CARRIED + d) for d in range(self.carried)]
+        words += [(f"%cmi{ident}", self.layout.common_base + ident) for ident in self.loaded]
+        for name, word in words:
             ptr, value = f.tmp(), f.tmp()
-            prelude += [f"{ptr} = getelementptr i32, ptr %st, i64 {layout.CARRIED + d}",
-                        f"{value} = load i32, ptr {ptr}", f"store i32 {value}, ptr %v{d}"]
-        for ident, opened in sorted(self.cm_local.items()):
-            prelude.append(f"%cm{ident} = alloca i32")
-            if opened:
-                prelude.append(f"store i32 1, ptr %cm{ident}")
-            else:
-                ptr, value = f.tmp(), f.tmp()
-                prelude += [f"{ptr} = getelementptr i32, ptr %st, i64 "
-                            f"{self.layout.common_base + ident}",
-                            f"{value} = load i32, ptr {ptr}", f"store i32 {value}, ptr %cm{ident}"]
+            prelude += [f"{ptr} = getelementptr i32, ptr %st, i64 {word}",
+                        f"{value} = load i32, ptr {ptr}", f"{name} = trunc i32 {value} to i8"]
         self.out.append(f.finish(prelude, result))
         return f.name
 
@@ -149,7 +160,7 @@ class _Generator:
         """After a call: leave the chunk when the scan is unwinding (JMPC, an error)."""
         f = self.f
         state = f.load_word(layout.ABORT)
-        then, after = f.branch(state)
+        then, after = f.branch(state, "i32")
         f.add("ret i32 -1")
         f.start(after)
 
@@ -166,7 +177,7 @@ class _Generator:
         for level in sorted(levels):
             after = ""
             if level > 1:
-                _, after = f.branch("%full")
+                _, after = f.branch("%full", "i32")
             relay = f.byte_ptr(*_relay())
             old = f.value(f"load i8, ptr {relay}")
             new = f.value(f"and i8 {old}, 227")
@@ -174,7 +185,7 @@ class _Generator:
             f.add(f"store i8 {new}, ptr {relay}")
             f.add(f"call void @U{units[self.unit_numbers[levels[level].name]]}({PASS})")
             state = f.load_word(layout.ABORT)
-            then, cont = f.branch(state)
+            then, cont = f.branch(state, "i32")
             f.add(f"ret i32 {state}")
             f.start(cont)
             if after:
@@ -195,7 +206,7 @@ class _Generator:
             f.add(f"call void @llvm.memset.p0.i64(ptr %fl, i8 0, i64 {count}, i1 false)")
             return
         start, end = level1
-        _, other = f.branch("%full")
+        _, other = f.branch("%full", "i32")
         f.add(f"call void @llvm.memset.p0.i64(ptr %fl, i8 0, i64 {count}, i1 false)")
         done = f.label()
         f.add(f"br label %{done}")
@@ -230,7 +241,7 @@ class _Generator:
                 self.start_chunk(depth)
             if new_network and not at_label:
                 self.depth = 1
-                self.f.put(0, "0")
+                self.put(0, "0")
             self.op(index, op, labelled)
         result = str(len(chunks) + 1) if labelled else "0"
         chunks.append(self.end_chunk(False, result))
@@ -239,7 +250,7 @@ class _Generator:
 
     def unit_function(self, number: int, unit: Unit, chunks: list[str], first_common: int,
                       labelled: bool) -> None:
-        f = FunctionText(f"U{number}", "void")
+        f = FunctionText(f"U{number}", "void", slots=2)
         if self.jump_ids:
             f.store_word(self.layout.jump_base + number, "0")
         for ident in range(first_common, self.common_count):
@@ -326,17 +337,18 @@ class _Generator:
         return not (spec.combine is Combine.READ and spec.pushes == 0 and spec.operand)
 
     def close_jumps(self, ended: list[Range], index: int, live: bool) -> None:
+        """End JMP ranges: the taken one stops skipping; after a counted range ending inside a
+        network, its stack values read 0 if it was taken."""
         self.unguard()
         f = self.f
         low = min(r.ident for r in ended)
-        sk = f.load_word(self.layout.jump_base + self.unit_number)
+        word = self.layout.jump_base + self.unit_number
+        sk = f.load_word(word)
         test = f.value(f"icmp {'eq' if len(ended) == 1 else 'sge'} i32 {sk}, {low}")
-        _, after = f.branch(f.value(f"zext i1 {test} to i32"))
-        f.store_word(self.layout.jump_base + self.unit_number, "0")
+        f.store_word(word, f.value(f"select i1 {test}, i32 0, i32 {sk}"))
         if live:
             for d in range(self.depth):
-                f.put(d, "0")
-        f.join(after)
+                self.put(d, f.value(f"select i1 {test}, i8 0, i8 {self.get(d)}"))
 
     def op(self, index: int, op: Op, labelled: bool) -> None:
         spec = self.specs[index]
@@ -352,19 +364,19 @@ class _Generator:
             ended = self.function(index, op, off, labelled)
         if self.monitored and spec.flow not in _FLOW_ACT:
             self.guard()
-            self.flow(index, self.f.get(self.depth - 1))
+            self.flow(index, self.get(self.depth - 1))
         if ended:
             self.close_jumps(ended, index, self.live_after(index))
 
     def flow(self, index: int, value: str) -> None:
         f = self.f
         ptr = f.value(f"getelementptr i8, ptr %fl, i64 {index}")
-        f.add(f"store i8 {f.value(f'trunc i32 {value} to i8')}, ptr {ptr}")
+        f.add(f"store i8 {value}, ptr {ptr}")
 
     def push(self, index: int, value: str) -> None:
         if self.depth > MAX_PUSHES:
             raise BinaryFormatError(f"stack deeper than ST8 at op {index}")
-        self.f.put(self.depth, value)
+        self.put(self.depth, value)
         self.depth += 1
 
     def logic(self, index: int, op: Op, off: bool) -> None:
@@ -380,11 +392,11 @@ class _Generator:
             if spec.pushes > 0:
                 self.push(index, term)
             elif spec.combine is Combine.READ:
-                f.put(self.depth - 1, term)
+                self.put(self.depth - 1, term)
             else:
                 operator = "and" if spec.combine is Combine.AND else "or"
                 top = self.depth - 1
-                f.put(top, f.value(f"{operator} i32 {f.get(top)}, {term}"))
+                self.put(top, f.value(f"{operator} i8 {self.get(top)}, {term}"))
             return
         if spec.stack is not StackOp.NONE:
             self.stack_op(index, spec.stack)
@@ -395,20 +407,20 @@ class _Generator:
         operator = "and" if spec.combine is Combine.AND else "or"
         self.depth -= 1
         top = self.depth - 1
-        f.put(top, f.value(f"{operator} i32 {f.get(top)}, {f.get(self.depth)}"))
+        self.put(top, f.value(f"{operator} i8 {self.get(top)}, {self.get(self.depth)}"))
 
     def stack_op(self, index: int, op: StackOp) -> None:
         f = self.f
         top = self.depth - 1
         self.guard()
         if op is StackOp.INVERT:
-            f.put(top, f.value(f"xor i32 {f.get(top)}, 1"))
+            self.put(top, f.value(f"xor i8 {self.get(top)}, 1"))
         elif op is StackOp.DUP:
-            self.push(index, f.get(top))
+            self.push(index, self.get(top))
         elif top < 1:
             raise BinaryFormatError(f"stack operation with nothing pushed at op {index}")
         elif op is StackOp.OVER:
-            f.put(top, f.get(top - 1))
+            self.put(top, self.get(top - 1))
         else:
             self.depth -= 1
 
@@ -424,13 +436,13 @@ class _Generator:
         assert address.bit is not None
         f = self.f
         self.guard()
-        condition = f.get(self.depth - 1)
+        condition = self.get(self.depth - 1)
         if self.commons:
             if inverted:
-                condition = f.value(f"xor i32 {condition}, 1")
-            condition = f.value(f"and i32 {self.cm(self.commons[-1].ident)}, {condition}")
+                condition = f.value(f"xor i8 {condition}, 1")
+            condition = f.value(f"and i8 {self.cm(self.commons[-1].ident)}, {condition}")
             inverted = False
-        test = f.value(f"icmp ne i32 {condition}, 0")
+        test = f.truth(condition)
         ptr = f.byte_ptr(address.area, address.byte)
         old = f.value(f"load i8, ptr {ptr}")
         mask = 1 << address.bit
@@ -454,10 +466,10 @@ class _Generator:
         if spec.pushes > 0:
             self.push(index, "0")
         first = self.depth - count if count else self.depth - 1
-        inputs = [f.get(d) for d in range(first, self.depth)]
+        inputs = [self.get(d) for d in range(first, self.depth)]
         gating = next((r for r in reversed(self.commons) if r.gates_boxes), None)
         if gating is not None and count and spec.flow is Flow.NONE:
-            inputs[-1] = f.value(f"and i32 {self.cm(gating.ident)}, {inputs[-1]}")
+            inputs[-1] = f.value(f"and i8 {self.cm(gating.ident)}, {inputs[-1]}")
         act = inputs[-1] if inputs else "1"
         flow = spec.flow
         ended: list[Range] = []
@@ -468,9 +480,10 @@ class _Generator:
         if flow is Flow.JUMP:
             self.jump_ids += 1
             if not off:
-                _, after = f.branch(act)
-                f.store_word(self.layout.jump_base + self.unit_number, str(self.jump_ids))
-                f.join(after)
+                word = self.layout.jump_base + self.unit_number
+                sk = f.load_word(word)
+                taken = f.value(f"select i1 {f.truth(act)}, i32 {self.jump_ids}, i32 {sk}")
+                f.store_word(word, taken)
             self.unguard()
             self.jumps.append(Range(self.jump_ids, counted(op.params[0] if op.params else 0)))
         elif flow is Flow.JUMP_END:
@@ -482,12 +495,11 @@ class _Generator:
         elif flow is Flow.COMMON:
             ident = self.common_count
             self.common_count += 1
-            self.cm_local[ident] = True
             gate = "1" if off else act
             if self.commons:
-                gate = f.value(f"and i32 {gate}, {self.cm(self.commons[-1].ident)}")
-            f.add(f"store i32 {gate}, ptr %cm{ident}")
-            f.store_word(self.layout.common_base + ident, gate)
+                gate = f.value(f"and i8 {gate}, {self.cm(self.commons[-1].ident)}")
+            self.slots[f"cm{ident}"] = gate
+            f.store_word(self.layout.common_base + ident, f.value(f"zext i8 {gate} to i32"))
             self.commons.append(Range(ident, counted(op.params[0] if op.params else 0),
                                       spec.gates_boxes))
         elif flow is Flow.COMMON_END:
@@ -520,7 +532,7 @@ class _Generator:
         elif flow is Flow.NONE:
             result = self.call(index, op, off, inputs)
         self.depth = first + 1
-        f.put(first, result)
+        self.put(first, result)
         return ended
 
     def call(self, index: int, op: Op, off: bool, inputs: list[str]) -> str:
@@ -541,7 +553,8 @@ class _Generator:
         self.callbacks.append((site, len(inputs)))
         bits = "0"
         for k, value in enumerate(inputs):
-            shifted = f.value(f"shl i32 {value}, {k}") if k else value
+            wide = f.value(f"zext i8 {value} to i32")
+            shifted = f.value(f"shl i32 {wide}, {k}") if k else wide
             bits = f.value(f"or i32 {bits}, {shifted}")
         result = f.value(f"call i32 %cb(i32 {number}, i32 {bits})")
         failed = f.value(f"icmp ugt i32 {result}, 1")
@@ -550,7 +563,7 @@ class _Generator:
         f.start(leave)
         f.add("ret i32 -1")
         f.start(going)
-        return result
+        return f.value(f"trunc i32 {result} to i8")
 
 
 def _relay() -> tuple:

@@ -3,7 +3,7 @@
 Every function of the native scan has the same four arguments: `%b` (the areas' base
 addresses, one pointer per area in `AREA_ORDER`), `%st` (the scan's state words: layout.py),
 `%fl` (the power flow, one byte per op) and `%cb` (the call-back into Python). Stack levels
-live in `alloca` slots `%v0`..`%v9` that LLVM's mem2reg turns into registers.
+are SSA values tracked by the generator (i8 0/1); the dispatch loops keep two `alloca` slots.
 """
 
 from __future__ import annotations
@@ -14,15 +14,16 @@ AREA_ORDER: tuple[Area, ...] = tuple(Area)
 AREA_INDEX: dict[Area, int] = {area: k for k, area in enumerate(AREA_ORDER)}
 ARGS = "ptr noalias %b, ptr noalias %st, ptr noalias %fl, ptr %cb"
 PASS = "ptr %b, ptr %st, ptr %fl, ptr %cb"
-SLOTS = 10  # stack levels ST0..ST8 and one spare
 
 
 class FunctionText:
     """The text of one IR function being written; `finish()` gives it whole."""
 
-    def __init__(self, name: str, returns: str = "i32") -> None:
+    def __init__(self, name: str, returns: str = "i32", slots: int = 0) -> None:
         self.name = name
         self.returns = returns
+        self.slots = slots  # i32 alloca slots %v0.. (the dispatch loops')
+        self.block = "body"  # the block being written
         self.body: list[str] = []
         self.count = 0
         self.bases: set[int] = set()
@@ -41,6 +42,7 @@ class FunctionText:
 
     def start(self, label: str) -> None:
         self.body.append(f"{label}:")
+        self.block = label
 
     def value(self, line: str) -> str:
         """A new temporary `= line`; its name."""
@@ -71,18 +73,24 @@ class FunctionText:
         return self.value(f"getelementptr i8, ptr %a{index}, i64 {byte}")
 
     def bit(self, area: Area, byte: int, bit: int, inverted: bool) -> str:
-        """0/1 (i32) of a memory bit, or of its inverse."""
+        """0/1 (i8) of a memory bit, or of its inverse."""
         raw = self.value(f"load i8, ptr {self.byte_ptr(area, byte)}")
         if bit:
             raw = self.value(f"lshr i8 {raw}, {bit}")
-        one = self.value(f"and i8 {raw}, 1")
-        value = self.value(f"zext i8 {one} to i32")
-        return self.value(f"xor i32 {value}, 1") if inverted else value
+        value = self.value(f"and i8 {raw}, 1")
+        return self.value(f"xor i8 {value}, 1") if inverted else value
 
-    def branch(self, condition: str) -> tuple[str, str]:
-        """`br` on an i32 0/1 value: the labels (then, after); the then-block is started."""
+    def truth(self, value: str, kind: str = "i8") -> str:
+        """An i1 of a 0/1 value."""
+        return self.value(f"icmp ne {kind} {value}, 0")
+
+    def branch(self, condition: str, kind: str = "i8") -> tuple[str, str]:
+        """`br` on a 0/1 value: the labels (then, after); the then-block is started."""
+        return self.branch_if(self.truth(condition, kind))
+
+    def branch_if(self, test: str) -> tuple[str, str]:
+        """`br` on an i1: the labels (then, after); the then-block is started."""
         then, after = self.label(), self.label()
-        test = self.value(f"icmp ne i32 {condition}, 0")
         self.add(f"br i1 {test}, label %{then}, label %{after}")
         self.start(then)
         return then, after
@@ -97,8 +105,8 @@ class FunctionText:
         linkage = "" if extra else "internal "
         args = f"{ARGS}, {extra}" if extra else ARGS
         head = [f"define {linkage}{self.returns} @{self.name}({args}) {{", "entry:"]
-        head += [f"  %v{k} = alloca i32" for k in range(SLOTS)]
-        head += [f"  store i32 0, ptr %v{k}" for k in range(SLOTS)]
+        head += [f"  %v{k} = alloca i32" for k in range(self.slots)]
+        head += [f"  store i32 0, ptr %v{k}" for k in range(self.slots)]
         for index in sorted(self.bases):
             head.append(f"  %ap{index} = getelementptr ptr, ptr %b, i64 {index}")
             head.append(f"  %a{index} = load ptr, ptr %ap{index}")
