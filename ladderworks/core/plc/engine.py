@@ -178,6 +178,7 @@ class ScanEngine:
         if self._pending:
             self._pending = False
             self._current = self._variant()
+            self._current.states_changed()
 
     @property
     def source(self) -> str:
@@ -292,6 +293,7 @@ class ScanEngine:
             self._power_flow[:] = bytes(len(self._power_flow))
             for variant in self._variants.values():
                 variant.clear_flow()
+                variant.states_changed()
             self._flow_stale = None
 
     # -- moving to and from a scan process (core/plc/scan_process.py) ----------------------
@@ -314,6 +316,8 @@ class ScanEngine:
             self._ctx.edges.clear()
             self._ctx.edges.update(state.edges)
             self._alarm_bits = state.alarm_bits
+            for variant in self._variants.values():
+                variant.states_changed()
 
     def setup(self) -> ScanSetup:
         """The forces, disabled elements and trace now (a scan process monitors the scans a
@@ -328,6 +332,7 @@ class ScanEngine:
         with self.lock:
             self.force_table = setup.force_table()
             self._current = self._variant()
+            self._current.states_changed()
             spec = setup.trace
             if spec is None:
                 self.trace = None

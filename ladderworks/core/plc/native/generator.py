@@ -80,7 +80,7 @@ class _Generator:
         commons = sum(1 for spec in self.specs if spec.flow is Flow.COMMON)
         self.edge_words: dict[tuple[str, int], int] = {}
         for spec, op in zip(self.specs, ops, strict=True):
-            key = builtins.edge_key(spec, op.params)
+            key = builtins.edge_key(spec, implementation_of(spec, registry), op.params)
             if key is not None and key not in self.edge_words:
                 self.edge_words[key] = len(self.edge_words)
         self.layout = Layout(len(self.unit_list), commons, len(self.edge_words))
@@ -538,14 +538,15 @@ class _Generator:
     def call(self, index: int, op: Op, off: bool, inputs: list[str]) -> str:
         """A functional instruction's W1: native code, or the call-back into Python."""
         spec = self.specs[index]
-        if implementation_of(spec, self.registry) is None:
+        impl = implementation_of(spec, self.registry)
+        if impl is None:
             raise BinaryFormatError(f"{spec.name} at op {index} is not implemented")
         site = len(self.calls)
         self.calls.append(index)
         if off:
             return "0"
         f = self.f
-        native = builtins.emit(f, spec, op.params, inputs, self.edge_words,
+        native = builtins.emit(f, spec, impl, op.params, inputs, self.edge_words,
                                self.layout.edge_base)
         if native is not None:
             return native

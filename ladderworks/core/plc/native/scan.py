@@ -60,6 +60,8 @@ class NativeScan:
         self._error: BaseException | None = None
         self._loop = loop_stop(ops, program.units)
         self._labels = program.labels
+        self._edge_keys = list(enumerate(program.edges, program.layout.edge_base))
+        self.stale = True  # the edge memories are to be read from `ctx.edges` before a scan
 
     def _bind(self) -> None:
         """Take the areas' addresses (again when a buffer was replaced)."""
@@ -88,8 +90,20 @@ class NativeScan:
                 self._bind()
                 break
         self._ctx = ctx
-        code = self._entry(self._bases, self._words, self._flow_view, self._callback,
+        words = self._words
+        if self.stale:
+            self.stale = False
+            edges = ctx.edges
+            for word, key in self._edge_keys:
+                words[word] = (2 | bool(edges[key])) if key in edges else 0
+        code = self._entry(self._bases, words, self._flow_view, self._callback,
                            1 if full else 0)
+        if self._edge_keys:
+            edges = ctx.edges
+            for word, key in self._edge_keys:
+                value = words[word]
+                if value:
+                    edges[key] = value == 3
         if code:
             self._raise(code)
 
@@ -113,6 +127,10 @@ class NativeScan:
 
     def clear_flow(self) -> None:
         self._flow[:] = bytes(len(self._flow))
+
+    def states_changed(self) -> None:
+        """The call sites' states or edge memories were changed outside a scan."""
+        self.stale = True
 
 
 def native_variant(ops: tuple[Op, ...], dialect: str, areas: dict[Area, bytearray],
