@@ -24,7 +24,7 @@ PASSES = ("sroa", "simplify_cfg")
 CACHED = 8  # compiled variants kept in memory
 _lock = threading.Lock()
 _cache: OrderedDict[tuple[str, bool, frozenset[int]], Compiled] = OrderedDict()
-_target: list[Any] = []
+_ready: list[bool] = []
 
 
 @dataclass
@@ -40,15 +40,16 @@ class Compiled:
 
 
 def _machine() -> Any:
+    """A new target machine for the host (an execution engine owns and frees its own)."""
     import llvmlite.binding as llvm
 
-    if not _target:
+    if not _ready:
         llvm.initialize_native_target()
         llvm.initialize_native_asmprinter()
         llvm.initialize_native_asmparser()
-        target = llvm.Target.from_default_triple()
-        _target.append(target.create_target_machine(opt=CODEGEN_LEVEL, jit=True))
-    return _target[0]
+        _ready.append(True)
+    target = llvm.Target.from_default_triple()
+    return target.create_target_machine(opt=CODEGEN_LEVEL, jit=True)
 
 
 def program_hash(ops: tuple[Op, ...], dialect: str) -> str:
