@@ -91,7 +91,7 @@ class ScanEngine:
         # a scan process is sent the new setup (PlcRun)
         self.on_setup: Callable[[], None] | None = None
         self._power_flow = bytearray(len(self.program.ops))
-        self._flow_stale: GeneratedScan | None = None  # the variant whose last scan's power
+        self._flow_stale: GeneratedScan | NativeScan | None = None  # the variant whose power
         # flow is not in the bytes yet
         # every change of the A area, with the time of the scan that made it (newest last)
         self.alarm_log: deque[tuple[int, bytes]] = deque(maxlen=ALARM_LOG_CAPACITY)
@@ -133,7 +133,7 @@ class ScanEngine:
 
     # -- the scan ------------------------------------------------------------------------
 
-    def _variant(self) -> GeneratedScan:
+    def _variant(self) -> GeneratedScan | NativeScan:
         key = (self._monitored, self.force_table.disabled)
         variant = self._variants.get(key)
         if variant is None:

@@ -238,3 +238,31 @@ def test_real_programs_run_the_same_on_the_native_scan(
     driver = Driver(engines, random.Random(name), inputs, used[:200], coils[:20])
     driver.run(300, rate=0.2, longest=20)
     driver.run(600, rate=0.02, longest=600)
+
+
+# -- the command line --------------------------------------------------------------------------
+
+EXAMPLES = Path(__file__).resolve().parents[3] / "resources" / "examples"
+
+
+def test_cli_run_and_test_take_the_backend(capsys: pytest.CaptureFixture[str],
+                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    from ladderworks.cli import main
+
+    program = str(EXAMPLES / "timer_relay.LAD")
+    scenario = str(EXAMPLES / "timer_relay.scenario.csv")
+    outputs = []
+    for backend in ("python", "native"):
+        assert main(["run", program, "--ms", "3000", "--set", "X0.0=1", "--print", "Y0.0,R0",
+                     "--backend", backend]) == 0
+        assert main(["test", program, scenario, "--backend", backend]) == 0
+        captured = capsys.readouterr()
+        outputs.append(captured.out.splitlines()[0])
+        assert captured.err == ""
+    assert outputs[0] == outputs[1]
+    monkeypatch.setattr(engine_module, "native_unavailable", lambda: "llvmlite is not here")
+    assert main(["run", program, "--backend", "native"]) == 0
+    assert main(["test", program, scenario, "--backend", "native"]) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert err == ["ladderworks-cli: the Python scan runs: llvmlite is not here",
+                   f"ladderworks-cli: {program}: the Python scan runs: llvmlite is not here"]

@@ -5,9 +5,9 @@ starts at a network when the last one reached CHUNK_OPS ops, at every label, and
 MAX_CHUNK_OPS ops, the stack values then carried in state words). Stack levels and COM gates
 are SSA values (`slots`: the generator does mem2reg itself, with a phi where a guarded run of
 ops ends), JMP ranges a guard on the unit's jump id (as the Python scan's `sk`), COM gates a
-value per chunk loaded from its state word, a unit with labels a dispatch loop over its chunks. A functional
-instruction is native code when builtins.py has it, else a call-back into its Python
-implementation with the same call-site state.
+value per chunk loaded from its state word, a unit with labels a dispatch loop over its
+chunks. A functional instruction is native code when builtins.py has it, else a call-back into
+its Python implementation with the same call-site state.
 """
 
 from __future__ import annotations
@@ -91,6 +91,8 @@ class _Generator:
         self.chunk_count = 0
         self.labels: list[dict[int, int]] = []
         self.depth = 1  # len(values) of the Python generator: stack levels in use
+        self.guarded = False  # inside a run of ops guarded by the unit's jump id
+        self.slots: dict[str, str] = {}  # stack levels s0.. and COM gates cm<k>: SSA values
         self.jumps: list[Range] = []
         self.commons: list[Range] = []
 
@@ -160,7 +162,7 @@ class _Generator:
         """After a call: leave the chunk when the scan is unwinding (JMPC, an error)."""
         f = self.f
         state = f.load_word(layout.ABORT)
-        then, after = f.branch(state, "i32")
+        _, after = f.branch(state, "i32")
         f.add("ret i32 -1")
         f.start(after)
 
@@ -185,7 +187,7 @@ class _Generator:
             f.add(f"store i8 {new}, ptr {relay}")
             f.add(f"call void @U{units[self.unit_numbers[levels[level].name]]}({PASS})")
             state = f.load_word(layout.ABORT)
-            then, cont = f.branch(state, "i32")
+            _, cont = f.branch(state, "i32")
             f.add(f"ret i32 {state}")
             f.start(cont)
             if after:

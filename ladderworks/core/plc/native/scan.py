@@ -43,7 +43,7 @@ class NativeScan:
         self._areas = areas
         self._bound: tuple[object, ...] = ()
         self._bases = (ctypes.c_void_p * len(AREA_ORDER))()
-        self._views: list[object] = []
+        self._views: list[ctypes.Array[ctypes.c_char]] = []
         self._bind()
         while len(states) < len(ops):
             states.append({})
@@ -75,7 +75,7 @@ class NativeScan:
     def _call(self, number: int, bits: int) -> int:
         try:
             impl, state, params, inputs = self._sites[number]
-            return 1 if impl(self._ctx, state, inputs[bits], params) else 0
+            return 1 if impl(self._ctx, state, inputs[bits], params) else 0  # type: ignore[arg-type]
         except BaseException as error:  # re-raised by scan() once the native code returned
             self._error = error
             self._words[layout.ABORT] = layout.FAILED
