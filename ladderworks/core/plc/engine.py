@@ -258,6 +258,7 @@ class ScanEngine:
                         self.scan_count += skipped
                         self.skipped += skipped
                         count += skipped
+                        self._current.states_changed()  # the skipper moved the timers on
                         self._relays(self.now_ms - self.period_ms)  # the last skipped scan's
                         self.force_table.apply(self.memory)  # forces win, as after a scan
             return count

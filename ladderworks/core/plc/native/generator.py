@@ -22,7 +22,7 @@ from ladderworks.core.compiler.structure import LOOP_LIMIT, Unit, analyse, numbe
 from ladderworks.core.instructions import Combine, Flow, Kind, StackOp, Write
 from ladderworks.core.plc.codegen_values import Range, count_in_innermost, counted
 from ladderworks.core.plc.functions import FunctionImpl
-from ladderworks.core.plc.native import builtins, layout
+from ladderworks.core.plc.native import builtins, layout, stateful
 from ladderworks.core.plc.native.ir_text import PASS, FunctionText
 from ladderworks.core.plc.native.layout import Layout
 
@@ -42,6 +42,7 @@ class NativeProgram:
     calls: list[int] = field(default_factory=list)  # op index of each function call site
     callbacks: list[tuple[int, int]] = field(default_factory=list)  # (call site, inputs)
     edges: list[tuple[str, int]] = field(default_factory=list)  # DIFU/DIFD memories, by word
+    blocks: list[tuple[int, int]] = field(default_factory=list)  # (call site, first word)
     units: list[Unit] = field(default_factory=list)
     labels: list[dict[int, int]] = field(default_factory=list)  # per unit: label -> chunk
 
@@ -83,7 +84,10 @@ class _Generator:
             key = builtins.edge_key(spec, implementation_of(spec, registry), op.params)
             if key is not None and key not in self.edge_words:
                 self.edge_words[key] = len(self.edge_words)
-        self.layout = Layout(len(self.unit_list), commons, len(self.edge_words))
+        candidates = sum(1 for spec in self.specs if spec.kind is Kind.FUNCTION and stateful.kind(
+            spec, implementation_of(spec, registry)) is not None)
+        self.layout = Layout(len(self.unit_list), commons, len(self.edge_words), candidates)
+        self.blocks: list[tuple[int, int]] = []  # (call site, first word) of each state block
         self.out: list[str] = []
         self.calls: list[int] = []
         self.callbacks: list[tuple[int, int]] = []
@@ -200,7 +204,7 @@ class _Generator:
         body = "\n".join([head, *builtins.declarations(), *self.out, text])
         edges = sorted(self.edge_words, key=self.edge_words.__getitem__)
         return NativeProgram(body, self.layout, self.calls, self.callbacks, edges,
-                             self.unit_list, self.labels)
+                             self.blocks, self.unit_list, self.labels)
 
     def flow_reset(self, f: FunctionText, level1: tuple[int, int] | None) -> None:
         count = len(self.ops)
@@ -552,6 +556,13 @@ class _Generator:
                                self.layout.edge_base)
         if native is not None:
             return native
+        if stateful.kind(spec, impl) is not None:
+            base = self.layout.block_base + stateful.BLOCK * len(self.blocks)
+            native = stateful.emit(f, spec, impl, op.params, inputs, base, len(self.blocks),
+                                   self.layout.dirty)
+            if native is not None:
+                self.blocks.append((site, base))
+                return native
         number = len(self.callbacks)
         self.callbacks.append((site, len(inputs)))
         bits = "0"

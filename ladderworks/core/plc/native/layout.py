@@ -9,7 +9,11 @@ JUMP_LABEL = 1  # JMPC: the label to go on at in the level's main program
 LOOP_UNIT = 2  # the endless-loop stop: the unit and the chunk jumped to
 LOOP_CHUNK = 3
 CARRIED = 4  # 9 words: the stack values a giant network's next chunk goes on with
-FIRST_FREE = CARRIED + 9
+NOW = 14  # i64: the scan's time (ctx.now_ms)
+SCAN_MS = 16  # i64: the time since the last scan (ctx.scan_ms)
+WAKE = 18  # i64: the earliest wake a timer said in this scan (ctx.wake_ms)
+DIRTY = 20  # the number of state blocks changed in this scan (their sites follow `dirty`)
+FIRST_FREE = 22
 
 JUMP_MAIN = 1  # ABORT: a JMPC is leaving the subprograms
 FAILED = 2  # ABORT: a call-back raised (the exception is re-raised) or the loop guard stopped
@@ -23,6 +27,7 @@ class Layout:
     units: int
     commons: int
     edges: int
+    stateful: int = 0  # sites whose state lives in a block of state words (stateful.py)
 
     @property
     def jump_base(self) -> int:
@@ -37,5 +42,14 @@ class Layout:
         return FIRST_FREE + self.units + self.commons
 
     @property
-    def words(self) -> int:
+    def block_base(self) -> int:
         return self.edge_base + self.edges
+
+    @property
+    def dirty(self) -> int:
+        """The list of changed sites (one spare: the list is written one past its end)."""
+        return self.block_base + 8 * self.stateful
+
+    @property
+    def words(self) -> int:
+        return self.dirty + self.stateful + 1

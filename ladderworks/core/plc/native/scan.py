@@ -12,7 +12,7 @@ from ladderworks.core.compiler.binary import Op
 from ladderworks.core.compiler.checks import implementation_of
 from ladderworks.core.plc.codegen_plan import JumpToMain, loop_stop
 from ladderworks.core.plc.functions import FunctionImpl
-from ladderworks.core.plc.native import layout
+from ladderworks.core.plc.native import layout, stateful
 from ladderworks.core.plc.native.ir_text import AREA_ORDER
 from ladderworks.core.plc.native.jit import Compiled, compiled_scan
 
@@ -61,6 +61,12 @@ class NativeScan:
         self._loop = loop_stop(ops, program.units)
         self._labels = program.labels
         self._edge_keys = list(enumerate(program.edges, program.layout.edge_base))
+        self._blocks = [(self.states[site], base) for site, base in program.blocks]
+        self._dirty = program.layout.dirty
+        words = self._words
+        self._now, self._scan_ms, self._wake = (ctypes.c_int64.from_buffer(words, 4 * word)
+                                                for word in (layout.NOW, layout.SCAN_MS,
+                                                             layout.WAKE))
         self.stale = True  # the edge memories are to be read from `ctx.edges` before a scan
 
     def _bind(self) -> None:
@@ -96,8 +102,26 @@ class NativeScan:
             edges = ctx.edges
             for word, key in self._edge_keys:
                 words[word] = (2 | bool(edges[key])) if key in edges else 0
+            for state, base in self._blocks:
+                stateful.push(words, base, state)
+            words[layout.DIRTY] = 0
+        blocks = self._blocks
+        if blocks:
+            self._now.value = ctx.now_ms
+            self._scan_ms.value = ctx.scan_ms
+            self._wake.value = ctx.wake_ms
         code = self._entry(self._bases, words, self._flow_view, self._callback,
                            1 if full else 0)
+        if blocks:
+            if self._wake.value < ctx.wake_ms:  # a call-back's timer may have said earlier
+                ctx.wake_ms = self._wake.value
+            changed = words[layout.DIRTY]
+            if changed:
+                dirty = self._dirty
+                for k in range(changed):
+                    state, base = blocks[words[dirty + k]]
+                    stateful.pull(words, base, state)
+                words[layout.DIRTY] = 0
         if self._edge_keys:
             edges = ctx.edges
             for word, key in self._edge_keys:

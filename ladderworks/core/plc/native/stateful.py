@@ -1,0 +1,357 @@
+"""Functional instructions with a call-site state, as native code: TMRB, TMRBF and the signed
+binary arithmetic (ADDB, SUBB, MULB, DIVB).
+
+A site's state dict lives in a block of state words while the native code runs: a flags word
+(which keys the dict has, the booleans' values, and a "changed" bit) and three 64-bit values
+(`elapsed`, `at`, `wake`). A site whose state changed in a scan puts its number in the changed
+list once; after the scan those dicts are written from the words (`pull`), and before a scan
+after anything else changed the dicts (a cold start, a skip, another variant's scans) all the
+blocks are written from them (`push`). So the dicts are the Python scan's after every scan.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from typing import Any
+
+from ladderworks.core.address import Address
+from ladderworks.core.instructions import FUNCTIONS, InstructionSpec, Operation
+from ladderworks.core.plc.functions import (
+    FLAG_NEGATIVE,
+    FLAG_OVERFLOW,
+    FLAG_ZERO,
+    NEVER,
+    REGISTRY,
+    REMAINDER_REGISTER,
+    RESULT_REGISTER,
+    FunctionImpl,
+    load_all,
+    signed_range,
+    timers,
+)
+from ladderworks.core.plc.native import layout
+from ladderworks.core.plc.native.ir_text import FunctionText
+
+BLOCK = 8  # words per site: flags, pad, elapsed (i64), at (i64), wake (i64)
+ELAPSED, AT, WAKE = 2, 4, 6
+# flags: key present (and not None / its value)
+HAS_ELAPSED, ELAPSED_SET, HAS_AT, HAS_WAKE, HAS_ON, ON, HAS_W1, W1 = (
+    1, 2, 4, 8, 16, 32, 256, 512)
+CHANGED = 1 << 15
+_I32 = (-(1 << 31), (1 << 31) - 1)
+
+
+def _binary_code() -> object:
+    load_all()
+    spec = next(s for s in FUNCTIONS if s.binary and s.operation is not Operation.NONE)
+    return REGISTRY[spec.name].__code__
+
+
+_ARITHMETIC = _binary_code()  # the code every signed binary arithmetic implementation shares
+
+
+def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
+    """"tmrb", "tmrbf" or "arithmetic" for an op done here natively, else None."""
+    if impl is timers.tmrb:
+        return "tmrb"
+    if impl is timers.tmrbf:
+        return "tmrbf"
+    if getattr(impl, "__code__", None) is _ARITHMETIC and spec.operation is not Operation.NONE:
+        return "arithmetic"
+    return None
+
+
+class Block:
+    """The IR of one site's state block (`base`: its first word)."""
+
+    def __init__(self, f: FunctionText, base: int, number: int, dirty_list: int) -> None:
+        self.f, self.base, self.number, self.dirty_list = f, base, number, dirty_list
+
+    def ptr(self, offset: int) -> str:
+        return self.f.word_ptr(self.base + offset)
+
+    def flags(self) -> str:
+        return self.f.value(f"load i32, ptr {self.ptr(0)}")
+
+    def load64(self, offset: int) -> str:
+        return self.f.value(f"load i64, ptr {self.ptr(offset)}, align 4")
+
+    def store64(self, offset: int, value: str) -> None:
+        self.f.add(f"store i64 {value}, ptr {self.ptr(offset)}, align 4")
+
+    def set_flags(self, old: str, new: str) -> None:
+        """Store the flags; a block whose flags or values changed (`new` has CHANGED set by
+        the caller when values changed) joins the changed list once."""
+        f = self.f
+        differs = f.value(f"icmp ne i32 {old}, {new}")
+        marked = f.value(f"and i32 {old}, {CHANGED}")
+        first = f.value(f"and i1 {differs}, {f.value(f'icmp eq i32 {marked}, 0')}")
+        marked_new = f.value(f"or i32 {new}, {CHANGED}")
+        f.add(f"store i32 {f.value(f'select i1 {differs}, i32 {marked_new}, i32 {old}')}, "
+              f"ptr {self.ptr(0)}")
+        count_ptr = f.word_ptr(layout.DIRTY)
+        count = f.value(f"load i32, ptr {count_ptr}")
+        slot = f.value(f"getelementptr i32, ptr %st, i64 {self.dirty_list}")
+        entry = f.value(f"getelementptr i32, ptr {slot}, i32 {count}")
+        f.add(f"store i32 {self.number}, ptr {entry}")
+        step = f.value(f"zext i1 {first} to i32")
+        f.add(f"store i32 {f.value(f'add i32 {count}, {step}')}, ptr {count_ptr}")
+
+
+def _time(f: FunctionText, word: int) -> str:
+    return f.value(f"load i64, ptr {f.word_ptr(word)}, align 4")
+
+
+def _elapsed(b: Block, flags: str) -> tuple[str, str]:
+    """The running timer's elapsed ms (elapsed_ms with running = 1): (value, new flags)."""
+    f = b.f
+    now = _time(f, layout.NOW)
+    has_at = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HAS_AT}')}, 0")
+    same = f.value(f"icmp eq i64 {b.load64(AT)}, {now}")
+    counting = f.value(f"xor i1 {f.value(f'and i1 {has_at}, {same}')}, true")
+    b.store64(AT, now)  # the same value when not counting
+    was_set = f.value(f"icmp eq i32 {f.value(f'and i32 {flags}, {HAS_ELAPSED | ELAPSED_SET}')},"
+                      f" {HAS_ELAPSED | ELAPSED_SET}")
+    old = b.load64(ELAPSED)
+    step = f.value(f"select i1 {counting}, i64 {_time(f, layout.SCAN_MS)}, i64 0")
+    grown = f.value(f"add i64 {old}, {step}")
+    elapsed = f.value(f"select i1 {was_set}, i64 {grown}, i64 0")
+    b.store64(ELAPSED, elapsed)
+    new = f.value(f"or i32 {flags}, {HAS_AT | HAS_ELAPSED | ELAPSED_SET}")
+    return elapsed, new
+
+
+def _reached(b: Block, elapsed: str, preset: int, flags: str) -> tuple[str, str]:
+    """`timers.reached`: (i1 reached, new flags); the wake in the block and the scan's."""
+    f = b.f
+    done = f.value(f"icmp sge i64 {elapsed}, {preset}")
+    later = f.value(f"sub i64 {f.value(f'add i64 {_time(f, layout.NOW)}, {preset}')}, {elapsed}")
+    wake = f.value(f"select i1 {done}, i64 {NEVER}, i64 {later}")
+    b.store64(WAKE, wake)
+    scan_wake = _time(f, layout.WAKE)
+    earlier = f.value(f"icmp slt i64 {wake}, {scan_wake}")
+    f.add(f"store i64 {f.value(f'select i1 {earlier}, i64 {wake}, i64 {scan_wake}')}, "
+          f"ptr {f.word_ptr(layout.WAKE)}, align 4")
+    return done, f.value(f"or i32 {flags}, {HAS_WAKE}")
+
+
+def _tmrb(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
+    _number, preset = params
+    if not isinstance(preset, int):
+        return None
+    preset = timers.effective_preset(preset, timers.FAST_TICK_MS)
+    f = b.f
+    flags = b.flags()
+    on, off = f.label(), f.label()
+    joined = f.label()
+    f.add(f"br i1 {f.truth(inputs[-1])}, label %{on}, label %{off}")
+    f.start(off)
+    stopped = f.value(f"and i32 {f.value(f'or i32 {flags}, {HAS_ELAPSED}')}, {~ELAPSED_SET}")
+    b.set_flags(flags, stopped)
+    off_end = f.block
+    f.add(f"br label %{joined}")
+    f.start(on)
+    elapsed, new = _elapsed(b, flags)
+    done, new = _reached(b, elapsed, preset, new)
+    b.set_flags(flags, f.value(f"or i32 {new}, {CHANGED}"))
+    on_end = f.block
+    f.add(f"br label %{joined}")
+    f.start(joined)
+    w1 = f.value(f"phi i1 [false, %{off_end}], [{done}, %{on_end}]")
+    return f.value(f"zext i1 {w1} to i8")
+
+
+def _tmrbf(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
+    _number, preset = params
+    if not isinstance(preset, int):
+        return None
+    preset = timers.effective_preset(preset, timers.FAST_TICK_MS)
+    f = b.f
+    flags = b.flags()
+    act, idle, run, joined = f.label(), f.label(), f.label(), f.label()
+    f.add(f"br i1 {f.truth(inputs[-1])}, label %{act}, label %{idle}")
+    f.start(act)  # on = True, elapsed = None; W1 = 1
+    held = f.value(f"and i32 {f.value(f'or i32 {flags}, {HAS_ON | ON | HAS_ELAPSED}')}, "
+                   f"{~ELAPSED_SET}")
+    b.set_flags(flags, held)
+    act_end = f.block
+    f.add(f"br label %{joined}")
+    f.start(idle)  # not on: W1 = 0, nothing written
+    is_on = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {ON}')}, 0")
+    f.add(f"br i1 {is_on}, label %{run}, label %{joined}")
+    f.start(run)
+    elapsed, new = _elapsed(b, flags)
+    done, new = _reached(b, elapsed, preset, new)
+    ended = f.value(f"and i32 {new}, {~(ON | ELAPSED_SET)}")  # on = False, elapsed = None
+    b.set_flags(flags, f.value(f"or i32 {f.value(f'select i1 {done}, i32 {ended}, i32 {new}')}"
+                               f", {CHANGED}"))
+    still_on = f.value(f"xor i1 {done}, true")  # W1 = state["on"] after the run
+    run_end = f.block
+    f.add(f"br label %{joined}")
+    f.start(joined)
+    w1 = f.value(f"phi i1 [true, %{act_end}], [false, %{idle}], [{still_on}, %{run_end}]")
+    return f.value(f"zext i1 {w1} to i8")
+
+
+def _arithmetic(operation: Operation) -> Callable[[Block, Sequence[object], list[str]],
+                                                  str | None]:
+    """ADDB/SUBB/MULB/DIVB: RST clears W1, ACT = 0 keeps it, else compute with R9000 flags."""
+
+    def emit(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
+        fmt, first_at, second, result_at = params
+        if not isinstance(fmt, int) or len(inputs) != 2:
+            return None
+        width = fmt % 10
+        if width not in (1, 2, 4) or not all(_fits(a, width) for a in (first_at, result_at)):
+            return None
+        if isinstance(second, Address):
+            if not _fits(second, width):
+                return None
+        elif not (isinstance(second, int) and _I32[0] <= second <= _I32[1]):
+            return None
+        if operation is Operation.DIVIDE and not _fits(REMAINDER_REGISTER, width):
+            return None
+        assert isinstance(first_at, Address) and isinstance(result_at, Address)
+        f = b.f
+        bits = 8 * width
+        lo, hi = signed_range(width)
+        flags = b.flags()
+        reset, running, compute, joined = f.label(), f.label(), f.label(), f.label()
+        f.add(f"br i1 {f.truth(inputs[0])}, label %{reset}, label %{running}")
+        f.start(reset)
+        b.set_flags(flags, f.value(f"and i32 {f.value(f'or i32 {flags}, {HAS_W1}')}, {~W1}"))
+        reset_end = f.block
+        f.add(f"br label %{joined}")
+        f.start(running)
+        kept = f.value(f"icmp eq i32 {f.value(f'and i32 {flags}, {HAS_W1 | W1}')}, "
+                       f"{HAS_W1 | W1}")
+        f.add(f"br i1 {f.truth(inputs[1])}, label %{compute}, label %{joined}")
+        f.start(compute)
+        a = f.value(f"sext i{bits} {_load(f, first_at, width)} to i64")
+        c = (f.value(f"sext i{bits} {_load(f, second, width)} to i64")
+             if isinstance(second, Address) else str(second))
+        error = "false"
+        if operation is Operation.DIVIDE:
+            zero = f.value(f"icmp eq i64 {c}, 0")
+            safe = f.value(f"select i1 {zero}, i64 1, i64 {c}")
+            result = f.value(f"sdiv i64 {a}, {safe}")
+            remainder = f.value(f"srem i64 {a}, {safe}")
+            error = zero
+        else:
+            result = f.value(f"{_OPS[operation]} i64 {a}, {c}")
+        outside = f.value(f"or i1 {f.value(f'icmp slt i64 {result}, {lo}')}, "
+                          f"{f.value(f'icmp sgt i64 {result}, {hi}')}")
+        failed = f.value(f"or i1 {error}, {outside}")
+        bad, good, done = f.label(), f.label(), f.label()
+        f.add(f"br i1 {failed}, label %{bad}, label %{good}")
+        f.start(bad)
+        _store(f, RESULT_REGISTER, 1, str(FLAG_OVERFLOW))
+        f.add(f"br label %{done}")
+        f.start(good)
+        _store(f, result_at, width, f.value(f"trunc i64 {result} to i{bits}"))
+        is_zero = f.value(f"zext i1 {f.value(f'icmp eq i64 {result}, 0')} to i8")
+        negative = f.value(f"zext i1 {f.value(f'icmp slt i64 {result}, 0')} to i8")
+        _store(f, RESULT_REGISTER, 1, f.value(
+            f"or i8 {f.value(f'mul i8 {is_zero}, {FLAG_ZERO}')}, "
+            f"{f.value(f'mul i8 {negative}, {FLAG_NEGATIVE}')}"))
+        if operation is Operation.DIVIDE:
+            _store(f, REMAINDER_REGISTER, width, f.value(f"trunc i64 {remainder} to i{bits}"))
+        f.add(f"br label %{done}")
+        f.start(done)
+        now = f.value(f"or i32 {f.value(f'and i32 {flags}, {~W1}')}, {HAS_W1}")
+        with_error = f.value(f"or i32 {now}, {W1}")
+        b.set_flags(flags, f.value(f"select i1 {failed}, i32 {with_error}, i32 {now}"))
+        compute_end = f.block
+        f.add(f"br label %{joined}")
+        f.start(joined)
+        w1 = f.value(f"phi i1 [false, %{reset_end}], [{kept}, %{running}], "
+                     f"[{failed}, %{compute_end}]")
+        return f.value(f"zext i1 {w1} to i8")
+
+    return emit
+
+
+_OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
+
+
+def _fits(address: object, width: int) -> bool:
+    from ladderworks.core.plc.native.builtins import _fits as fits
+
+    return fits(address, width)
+
+
+def _load(f: FunctionText, address: Address, width: int) -> str:
+    from ladderworks.core.plc.native.builtins import _load as load
+
+    return load(f, address, width)
+
+
+def _store(f: FunctionText, address: Address, width: int, value: str) -> None:
+    from ladderworks.core.plc.native.builtins import _store as store
+
+    store(f, address, width, value)
+
+
+def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Sequence[object],
+         inputs: list[str], base: int, number: int, dirty_list: int) -> str | None:
+    """The op's native code with its state in block `number` (at word `base`); None: not
+    native (nothing emitted)."""
+    found = kind(spec, impl)
+    block = Block(f, base, number, dirty_list)
+    try:
+        if found == "tmrb":
+            return _tmrb(block, params, inputs)
+        if found == "tmrbf":
+            return _tmrbf(block, params, inputs)
+        if found == "arithmetic":
+            return _arithmetic(spec.operation)(block, params, inputs)
+    except (ValueError, TypeError):
+        return None
+    return None
+
+
+# -- the dicts and the blocks ------------------------------------------------------------------
+
+_VALUES = (("elapsed", HAS_ELAPSED, ELAPSED), ("at", HAS_AT, AT), ("wake", HAS_WAKE, WAKE))
+
+
+def pull(words: Any, base: int, state: dict[str, Any]) -> None:
+    """Write a site's dict from its block (and clear its changed bit)."""
+    flags = words[base]
+    words[base] = flags & ~CHANGED
+    if flags & HAS_ELAPSED:
+        state["elapsed"] = _get64(words, base + ELAPSED) if flags & ELAPSED_SET else None
+    if flags & HAS_AT:
+        state["at"] = _get64(words, base + AT)
+    if flags & HAS_WAKE:
+        state["wake"] = _get64(words, base + WAKE)
+    if flags & HAS_ON:
+        state["on"] = bool(flags & ON)
+    if flags & HAS_W1:
+        state["w1"] = bool(flags & W1)
+
+
+def push(words: Any, base: int, state: dict[str, Any]) -> None:
+    """Write a site's block from its dict."""
+    flags = 0
+    for key, bit, offset in _VALUES:
+        if key in state:
+            flags |= bit
+            value = state[key]
+            if value is not None:
+                _set64(words, base + offset, int(value))
+                if key == "elapsed":
+                    flags |= ELAPSED_SET
+    for key, has, value_bit in (("on", HAS_ON, ON), ("w1", HAS_W1, W1)):
+        if key in state:
+            flags |= has | (value_bit if state[key] else 0)
+    words[base] = flags
+
+
+def _get64(words: Any, word: int) -> int:
+    return (words[word] & 0xFFFFFFFF) | (words[word + 1] << 32)
+
+
+def _set64(words: Any, word: int, value: int) -> None:
+    words[word] = ((value & 0xFFFFFFFF) ^ 0x80000000) - 0x80000000
+    words[word + 1] = value >> 32
