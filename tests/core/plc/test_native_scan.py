@@ -266,3 +266,16 @@ def test_cli_run_and_test_take_the_backend(capsys: pytest.CaptureFixture[str],
     err = capsys.readouterr().err.splitlines()
     assert err == ["ladderworks-cli: the Python scan runs: llvmlite is not here",
                    f"ladderworks-cli: {program}: the Python scan runs: llvmlite is not here"]
+
+
+@pytest.mark.parametrize("header", ["%@3\n", ""], ids=["fanuc", "seed"])
+def test_tmr_reads_its_preset_and_precision_as_the_python_scan_does(header: str) -> None:
+    text = "RD X0.0\nTMR 1\nWRT Y0.0\nRD X0.1\nTMR 9\nWRT Y0.1\nRD X0.2\nTMR 3\nWRT Y0.2\n"
+    binary = binary_of(header + text + ("%\n" if header else ""))
+    engines = pair(binary)
+    assert engines[1]._current.callbacks == []
+    presets = [Address(Area.T, byte) for byte in (0, 1, 4, 16, 17, 32, 33)]
+    precision = [Address(Area.T, 9000 + byte) for byte in (0, 4, 16)]
+    driver = Driver(engines, random.Random(header), bytes_of(Area.X, 1), presets + precision,
+                    [])
+    driver.run(2000, rate=0.3, longest=40)

@@ -68,8 +68,9 @@ def chunk_plan(ops: tuple[Op, ...], unit: Unit) -> tuple[set[int], dict[int, int
 
 class _Generator:
     def __init__(self, ops: tuple[Op, ...], registry: dict[str, FunctionImpl],
-                 disabled: Collection[int], monitored: bool) -> None:
+                 disabled: Collection[int], monitored: bool, dialect: str) -> None:
         self.ops = ops
+        self.dialect = dialect  # the program's (ctx.dialect): TMR reads its preset by it
         self.registry = registry
         self.disabled = disabled
         self.monitored = monitored
@@ -559,7 +560,7 @@ class _Generator:
         if stateful.kind(spec, impl) is not None:
             base = self.layout.block_base + stateful.BLOCK * len(self.blocks)
             native = stateful.emit(f, spec, impl, op.params, inputs, base, len(self.blocks),
-                                   self.layout.dirty)
+                                   self.layout.dirty, self.dialect)
             if native is not None:
                 self.blocks.append((site, base))
                 return native
@@ -587,6 +588,7 @@ def _relay() -> tuple:
 
 
 def generate_ir(ops: tuple[Op, ...], registry: dict[str, FunctionImpl], *,
-                disabled: Collection[int] = (), monitored: bool = False) -> NativeProgram:
+                disabled: Collection[int] = (), monitored: bool = False,
+                dialect: str = "seed") -> NativeProgram:
     """The native scan's IR text for `ops` (the variant of `disabled` ops and monitoring)."""
-    return _Generator(ops, registry, frozenset(disabled), monitored).run()
+    return _Generator(ops, registry, frozenset(disabled), monitored, dialect).run()

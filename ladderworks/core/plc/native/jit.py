@@ -89,7 +89,8 @@ def compiled_scan(ops: tuple[Op, ...], dialect: str, registry: dict[str, Functio
             _cache.move_to_end(key)
             return found, True
     started = time.perf_counter()
-    program = generate_ir(ops, registry, disabled=disabled, monitored=monitored)
+    program = generate_ir(ops, registry, disabled=disabled, monitored=monitored,
+                          dialect=dialect)
     ir_seconds = time.perf_counter() - started
     engine, address, llvm_seconds = compile_ir(program.text)
     result = Compiled(engine, address, program, ir_seconds, llvm_seconds)

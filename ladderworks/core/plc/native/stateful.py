@@ -1,5 +1,5 @@
-"""Functional instructions with a call-site state, as native code: TMRB, TMRBF and the signed
-binary arithmetic (ADDB, SUBB, MULB, DIVB).
+"""Functional instructions with a call-site state, as native code: TMR, TMRB, TMRBF and the
+signed binary arithmetic (ADDB, SUBB, MULB, DIVB).
 
 A site's state dict lives in a block of state words while the native code runs: a flags word
 (which keys the dict has, the booleans' values, and a "changed" bit) and three 64-bit values
@@ -51,7 +51,9 @@ _ARITHMETIC = _binary_code()  # the code every signed binary arithmetic implemen
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
-    """"tmrb", "tmrbf" or "arithmetic" for an op done here natively, else None."""
+    """"tmr", "tmrb", "tmrbf" or "arithmetic" for an op done here natively, else None."""
+    if impl is timers.tmr:
+        return "tmr"
     if impl is timers.tmrb:
         return "tmrb"
     if impl is timers.tmrbf:
@@ -121,7 +123,7 @@ def _elapsed(b: Block, flags: str) -> tuple[str, str]:
     return elapsed, new
 
 
-def _reached(b: Block, elapsed: str, preset: int, flags: str) -> tuple[str, str]:
+def _reached(b: Block, elapsed: str, preset: int | str, flags: str) -> tuple[str, str]:
     """`timers.reached`: (i1 reached, new flags); the wake in the block and the scan's."""
     f = b.f
     done = f.value(f"icmp sge i64 {elapsed}, {preset}")
@@ -135,11 +137,49 @@ def _reached(b: Block, elapsed: str, preset: int, flags: str) -> tuple[str, str]
     return done, f.value(f"or i32 {flags}, {HAS_WAKE}")
 
 
+def _tmr(b: Block, params: Sequence[object], inputs: list[str], dialect: str) -> str | None:
+    """TMR n: the preset read from the T area in each scan that runs the timer."""
+    (number,) = params
+    if not isinstance(number, int) or number < 1:
+        return None
+    return _timer(b, inputs, lambda: _tmr_preset(b.f, number, dialect))
+
+
+def _read(f: FunctionText, address: Address, width: int) -> str:
+    """`timers._read` as an i64: unsigned data, 0 past the end of the area."""
+    if not _fits(address, width):
+        return "0"
+    return f.value(f"zext i{8 * width} {_load(f, address, width)} to i64")
+
+
+def _tmr_preset(f: FunctionText, number: int, dialect: str) -> str:
+    """The preset in ms of TMR `number` (timers.tmr's, by dialect)."""
+    default_tick = timers.timer_tick(number)
+    if dialect != "fanuc":
+        raw = _read(f, timers.timer_preset_address(number), timers.TIMER_BYTES)
+        ticks = f.value(f"udiv i64 {raw}, {default_tick}")
+        return f.value(f"mul i64 {ticks}, {default_tick}")
+    raw = _read(f, timers.timer_preset_address(number, "fanuc"), timers.FANUC_TIMER_BYTES)
+    over = f.value(f"icmp ugt i64 {raw}, {timers.FANUC_MAX_TICKS}")
+    ticks = f.value(f"select i1 {over}, i64 {timers.FANUC_MAX_TICKS}, i64 {raw}")
+    code = _read(f, timers.timer_precision_address(number), 1)
+    tick = str(default_tick)
+    for value, ms in sorted(timers.TMR_PRECISION_MS.items()):
+        tick = f.value(f"select i1 {f.value(f'icmp eq i64 {code}, {value}')}, i64 {ms}, "
+                       f"i64 {tick}")
+    return f.value(f"mul i64 {ticks}, {tick}")
+
+
 def _tmrb(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
     _number, preset = params
     if not isinstance(preset, int):
         return None
-    preset = timers.effective_preset(preset, timers.FAST_TICK_MS)
+    ms = str(timers.effective_preset(preset, timers.FAST_TICK_MS))
+    return _timer(b, inputs, lambda: ms)
+
+
+def _timer(b: Block, inputs: list[str], preset_of: Callable[[], str]) -> str:
+    """An on-delay timer (TMR, TMRB): `preset_of()` gives the preset (read when it runs)."""
     f = b.f
     flags = b.flags()
     on, off = f.label(), f.label()
@@ -152,7 +192,7 @@ def _tmrb(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
     f.add(f"br label %{joined}")
     f.start(on)
     elapsed, new = _elapsed(b, flags)
-    done, new = _reached(b, elapsed, preset, new)
+    done, new = _reached(b, elapsed, preset_of(), new)
     b.set_flags(flags, f.value(f"or i32 {new}, {CHANGED}"))
     on_end = f.block
     f.add(f"br label %{joined}")
@@ -293,12 +333,15 @@ def _store(f: FunctionText, address: Address, width: int, value: str) -> None:
 
 
 def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Sequence[object],
-         inputs: list[str], base: int, number: int, dirty_list: int) -> str | None:
+         inputs: list[str], base: int, number: int, dirty_list: int,
+         dialect: str) -> str | None:
     """The op's native code with its state in block `number` (at word `base`); None: not
     native (nothing emitted)."""
     found = kind(spec, impl)
     block = Block(f, base, number, dirty_list)
     try:
+        if found == "tmr":
+            return _tmr(block, params, inputs, dialect)
         if found == "tmrb":
             return _tmrb(block, params, inputs)
         if found == "tmrbf":
