@@ -97,6 +97,9 @@ class GeneratedScan:
         """Write the last scan's power flow into `out` (one byte for each of `count` ops)."""
         flow_into(self.blocks, out)
 
+    def sync(self) -> None:
+        """The call sites' states are in their dicts (always: the scan writes them there)."""
+
     def states_changed(self) -> None:
         """The call sites' states were changed outside a scan (nothing to do: it reads them)."""
 

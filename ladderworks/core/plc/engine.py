@@ -177,6 +177,7 @@ class ScanEngine:
         """Make the variant a change asked for while parked, if any."""
         if self._pending:
             self._pending = False
+            self._current.sync()
             self._current = self._variant()
             self._current.states_changed()
 
@@ -217,6 +218,13 @@ class ScanEngine:
             self.scan_count += 1
             self.now_ms = now + self.period_ms
 
+    def call_states(self) -> list[dict[str, Any]]:
+        """Every op's call-site state (timers, counters: a dict per op, empty for the others)
+        as the last scan left it; with the DIFU/DIFD memories in `ctx.edges`."""
+        with self.lock:
+            self._current.sync()
+            return self._states
+
     def run_scans(self, count: int) -> None:
         """Run `count` scans."""
         for _ in range(count):
@@ -238,6 +246,7 @@ class ScanEngine:
         """
         with self.lock:
             skipper = None
+            self._current.sync()
             if not self.every_scan and self.trace is None and self.history is None:
                 if self._clocks_split is None:
                     read = clocks_read(self.program.ops, self._clocks, self.program.dialect)
@@ -252,6 +261,7 @@ class ScanEngine:
                 if until is not None and until():
                     break
                 if skipper is not None:
+                    self._current.sync()  # the skipper reads the call sites' states
                     skipped = skipper.after_scan(self.now_ms, limit_ms, self.alarm_changes)
                     if skipped:
                         self.now_ms += skipped * self.period_ms
@@ -261,6 +271,7 @@ class ScanEngine:
                         self._current.states_changed()  # the skipper moved the timers on
                         self._relays(self.now_ms - self.period_ms)  # the last skipped scan's
                         self.force_table.apply(self.memory)  # forces win, as after a scan
+            self._current.sync()
             return count
 
     def _relays(self, now: int) -> None:
@@ -302,6 +313,7 @@ class ScanEngine:
     def export_state(self) -> ScanState:
         """What the next scan depends on besides memory and the setup (a copy)."""
         with self.lock:
+            self._current.sync()
             return ScanState(self.now_ms, self.scan_count, self._first_scan,
                              [dict(state) for state in self._states], dict(self._ctx.edges),
                              self._alarm_bits)
@@ -332,6 +344,7 @@ class ScanEngine:
         """Take another engine's setup; a trace of another ident starts sampling afresh."""
         with self.lock:
             self.force_table = setup.force_table()
+            self._current.sync()
             self._current = self._variant()
             self._current.states_changed()
             spec = setup.trace

@@ -43,10 +43,13 @@ from tests.real_programs import WHOLE, real_programs_dir
 
 def pair(binary: BinaryProgram, divisions: int = 1,
          monitored: bool = False) -> tuple[ScanEngine, ScanEngine]:
-    """A Python engine running every scan and a native one of the same program."""
+    """A Python engine running every scan and a native one of the same program (skipping
+    scans when not monitored: the skipper reads the native scan's states after every scan;
+    every scan when monitored: they are written back only when `advance` returns)."""
     python = ScanEngine(binary, divisions=divisions, monitored=monitored)
     native = ScanEngine(binary, divisions=divisions, monitored=monitored, backend="native")
     python.every_scan = True
+    native.every_scan = monitored
     assert native.backend_used == "native", native.backend_reason
     return python, native
 
@@ -158,10 +161,10 @@ def test_an_endless_loop_stops_the_native_scan_as_it_stops_the_python_one() -> N
 
 def test_an_error_in_a_called_back_function_reaches_the_caller(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    binary = binary_of("%@3\nRD X0.0\nTMR 1\nWRT Y0.0\n%\n")
+    binary = binary_of("RD X0.0\nSUB.250 R0 7\nWRT Y0.0\n")  # the CNC stub: called back
     engine = ScanEngine(binary, backend="native")
     assert engine.backend_used == "native"
-    assert engine._current.callbacks == ["TMR"]  # not native yet: called back
+    assert len(engine._current.callbacks) == 1
 
     def broken(*args: object) -> bool:
         raise ZeroDivisionError("broken timer")
@@ -279,3 +282,22 @@ def test_tmr_reads_its_preset_and_precision_as_the_python_scan_does(header: str)
     driver = Driver(engines, random.Random(header), bytes_of(Area.X, 1), presets + precision,
                     [])
     driver.run(2000, rate=0.3, longest=40)
+
+
+def test_scans_one_by_one_give_the_states_when_asked() -> None:
+    """`scan()` (the real-time runner's) leaves the native states in their words; they reach
+    the dicts when read: call_states(), export_state(), a variant switch, `advance`."""
+    text = "%@3\nRD X0.0\nTMRB 1 40\nWRT Y0.0\nRD X0.0\nDIFU 3\nWRT Y0.1\n" \
+           "RD X0.1\nRD.STK X0.0\nADDB 2 D0 1 D0\nWRT Y0.2\n%\n"
+    python, native = pair(binary_of(text))
+    for step in range(40):
+        for engine in (python, native):
+            engine.memory.areas[Area.X][0] = (step // 7) % 4
+            engine.scan()
+        assert native.call_states() == python._states
+        assert native._ctx.edges == python._ctx.edges
+        if step % 10 == 9:
+            assert native.export_state() == python.export_state()
+            for engine in (python, native):
+                engine.monitored = not engine.monitored  # another variant from the next scan
+    assert python.memory.areas == native.memory.areas

@@ -68,6 +68,7 @@ class NativeScan:
                                                 for word in (layout.NOW, layout.SCAN_MS,
                                                              layout.WAKE))
         self.stale = True  # the edge memories are to be read from `ctx.edges` before a scan
+        self._unsynced = False  # scans changed state words not yet in the dicts (`sync`)
 
     def _bind(self) -> None:
         """Take the areas' addresses (again when a buffer was replaced)."""
@@ -112,22 +113,9 @@ class NativeScan:
             self._wake.value = ctx.wake_ms
         code = self._entry(self._bases, words, self._flow_view, self._callback,
                            1 if full else 0)
-        if blocks:
-            if self._wake.value < ctx.wake_ms:  # a call-back's timer may have said earlier
-                ctx.wake_ms = self._wake.value
-            changed = words[layout.DIRTY]
-            if changed:
-                dirty = self._dirty
-                for k in range(changed):
-                    state, base = blocks[words[dirty + k]]
-                    stateful.pull(words, base, state)
-                words[layout.DIRTY] = 0
-        if self._edge_keys:
-            edges = ctx.edges
-            for word, key in self._edge_keys:
-                value = words[word]
-                if value:
-                    edges[key] = value == 3
+        self._unsynced = self._unsynced or bool(self._edge_keys) or words[layout.DIRTY] > 0
+        if blocks and self._wake.value < ctx.wake_ms:  # a call-back's timer may say earlier
+            ctx.wake_ms = self._wake.value
         if code:
             self._raise(code)
 
@@ -153,8 +141,30 @@ class NativeScan:
         self._flow[:] = bytes(len(self._flow))
 
     def states_changed(self) -> None:
-        """The call sites' states or edge memories were changed outside a scan."""
+        """The call sites' states or edge memories were changed outside a scan (what the
+        scans changed since the last `sync` is dropped: the dicts now say)."""
         self.stale = True
+        self._unsynced = False
+
+    def sync(self) -> None:
+        """Write the call sites' states and the edge memories the scans changed since the last
+        sync into their dicts (`ctx.edges`): the dicts are then the Python scan's."""
+        if not self._unsynced or self._ctx is None:
+            return
+        self._unsynced = False
+        words = self._words
+        edges = self._ctx.edges
+        for word, key in self._edge_keys:
+            value = words[word]
+            if value:
+                edges[key] = value == 3
+        changed = words[layout.DIRTY]
+        if changed:
+            blocks, dirty = self._blocks, self._dirty
+            for k in range(changed):
+                state, base = blocks[words[dirty + k]]
+                stateful.pull(words, base, state)
+            words[layout.DIRTY] = 0
 
 
 def native_variant(ops: tuple[Op, ...], dialect: str, areas: dict[Area, bytearray],
