@@ -71,7 +71,7 @@ def scan_us(engine: ScanEngine, monitored: bool) -> float:
 def scenario_factor(binary: BinaryProgram, backend: str, inputs: list[Address],
                     every_scan: bool) -> float:
     """Virtual seconds per wall second over VIRTUAL_S s, inputs changing every second."""
-    engine = ScanEngine(binary, backend=backend)
+    engine = ScanEngine(binary, backend=backend)  # built before the clock starts
     engine.every_scan = every_scan
     started = time.perf_counter()
     for second in range(VIRTUAL_S):
