@@ -28,7 +28,7 @@ from ladderworks.core.il import parse, parse_file
 from ladderworks.core.plc import engine as engine_module
 from ladderworks.core.plc.codegen import ScanLoopError
 from ladderworks.core.plc.engine import ScanEngine
-from ladderworks.core.plc.native import jit
+from ladderworks.core.plc.native import disk_cache, jit
 from tests.core.plc.test_skipping import (
     EXAMPLE_FILES,
     Driver,
@@ -39,6 +39,12 @@ from tests.core.plc.test_skipping import (
 )
 from tests.hypothesis_profiles import examples
 from tests.real_programs import WHOLE, real_programs_dir
+
+
+@pytest.fixture(autouse=True)
+def disk_cache_in_tmp(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Compiled programs go to a directory of the test's, not the user's cache."""
+    monkeypatch.setenv(disk_cache.ENV, str(tmp_path / "native-cache"))
 
 
 def pair(binary: BinaryProgram, divisions: int = 1,
@@ -215,6 +221,25 @@ def test_a_program_loaded_again_comes_from_the_cache() -> None:
     assert second.memory.bit(Address(Area.Y, 0, 0)) == 1
     first.scan()
     assert first.memory.bit(Address(Area.Y, 0, 0)) == 0
+
+
+def test_a_new_process_loads_the_compiled_program_from_disk(tmp_path: Path) -> None:
+    binary = binary_of("%@3\nRD X0.0\nTMRB 1 40\nWRT Y0.0\nRD X0.1\nDIFU 2\nWRT Y0.1\n%\n")
+    jit.clear_cache()
+    compiled = ScanEngine(binary, backend="native")
+    assert not compiled._current.compiled.from_disk
+    files = sorted(p.suffix for p in (tmp_path / "native-cache").iterdir())
+    assert files == [".facts", ".o"]
+    jit.clear_cache()  # as in a new process
+    python, loaded = ScanEngine(binary), ScanEngine(binary, backend="native")
+    assert loaded._current.compiled.from_disk
+    driver = Driver((python, loaded), random.Random(3), bytes_of(Area.X, 1), [], [])
+    driver.run(300, rate=0.3, longest=10)
+    for path in (tmp_path / "native-cache").glob("*.o"):
+        path.write_bytes(path.read_bytes()[:100])  # cut short: its hash differs
+    jit.clear_cache()
+    again = ScanEngine(binary, backend="native")  # a damaged file: compiled again
+    assert again.backend_used == "native" and not again._current.compiled.from_disk
 
 
 # -- the real programs ----------------------------------------------------------------------

@@ -14,6 +14,7 @@ from typing import Any
 
 from ladderworks.core.compiler.binary import Op
 from ladderworks.core.plc.functions import FunctionImpl
+from ladderworks.core.plc.native import disk_cache
 from ladderworks.core.plc.native.generator import NativeProgram, generate_ir
 
 # LLVM's code generator at level 0 (FastISel): for X22's 35k ops 1.5 s, against 12 s at level 1
@@ -37,6 +38,7 @@ class Compiled:
     program: NativeProgram
     ir_seconds: float
     llvm_seconds: float
+    from_disk: bool = False  # loaded from the disk cache (no IR text then)
 
 
 def _machine() -> Any:
@@ -63,8 +65,9 @@ def program_hash(ops: tuple[Op, ...], dialect: str) -> str:
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()
 
 
-def compile_ir(text: str) -> tuple[Any, int, float]:
-    """JIT-compile a module's IR; (engine, address of `scan`, seconds)."""
+def compile_ir(text: str, keep: list[bytes] | None = None) -> tuple[Any, int, float]:
+    """JIT-compile a module's IR; (engine, address of `scan`, seconds). `keep` gets the
+    object code (for the disk cache)."""
     import llvmlite.binding as llvm
 
     started = time.perf_counter()
@@ -80,9 +83,32 @@ def compile_ir(text: str) -> tuple[Any, int, float]:
         if not function.is_declaration:
             passes.run(function, builder)
     engine = llvm.create_mcjit_compiler(module, machine)
+    if keep is not None:
+        engine.set_object_cache(lambda _module, code: keep.append(bytes(code)), lambda _: None)
     engine.finalize_object()
     address = engine.get_function_address("scan")
     return engine, address, time.perf_counter() - started
+
+
+def load_object(code: bytes) -> tuple[Any, int]:
+    """An execution engine running stored object code; (engine, address of `scan`)."""
+    import llvmlite.binding as llvm
+
+    engine = llvm.create_mcjit_compiler(llvm.parse_assembly(""), _machine())
+    engine.add_object_file(llvm.ObjectFileRef.from_data(code))
+    engine.finalize_object()
+    address = engine.get_function_address("scan")
+    if not address:
+        raise RuntimeError("the stored object has no scan function")
+    return engine, address
+
+
+def _host() -> tuple[str, str]:
+    import llvmlite
+    import llvmlite.binding as llvm
+
+    _machine()
+    return llvm.get_process_triple(), llvmlite.__version__
 
 
 def compiled_scan(ops: tuple[Op, ...], dialect: str, registry: dict[str, FunctionImpl],
@@ -94,12 +120,27 @@ def compiled_scan(ops: tuple[Op, ...], dialect: str, registry: dict[str, Functio
         if found is not None:
             _cache.move_to_end(key)
             return found, True
-    started = time.perf_counter()
-    program = generate_ir(ops, registry, disabled=disabled, monitored=monitored,
-                          dialect=dialect)
-    ir_seconds = time.perf_counter() - started
-    engine, address, llvm_seconds = compile_ir(program.text)
-    result = Compiled(engine, address, program, ir_seconds, llvm_seconds)
+    name = disk_cache.file_key(key, *_host())
+    stored = disk_cache.load(name)
+    result: Compiled | None = None
+    if stored is not None:
+        started = time.perf_counter()
+        try:
+            engine, address = load_object(stored[0])
+            result = Compiled(engine, address, stored[1], 0.0, time.perf_counter() - started,
+                              from_disk=True)
+        except Exception:  # a damaged file: compile
+            result = None
+    if result is None:
+        started = time.perf_counter()
+        program = generate_ir(ops, registry, disabled=disabled, monitored=monitored,
+                              dialect=dialect)
+        ir_seconds = time.perf_counter() - started
+        code: list[bytes] = []
+        engine, address, llvm_seconds = compile_ir(program.text, code)
+        result = Compiled(engine, address, program, ir_seconds, llvm_seconds)
+        if code:
+            disk_cache.store(name, code[0], program)
     with _lock:
         _cache[key] = result
         while len(_cache) > CACHED:
