@@ -3,12 +3,12 @@
 For each program: the Python variant's build time; the native backend's cold compile (IR made
 in Python, then LLVM: parse, passes, code generation), a load from the in-memory cache (a
 second engine of the same binary) and from the disk cache (as a new process would; the disk
-cache is a fresh temporary directory for the run); µs per scan and ns per step of both backends, fast
-and monitored (thread CPU time, best of ROUNDS rounds of SCANS scans from the same state, the
-inputs set as a running machine might have them); a scenario-like run (`advance` over
-VIRTUAL_S seconds of virtual time, inputs changing every second, scans skipped where the state
-repeats, and every scan) as a factor of real time; and the instructions that still call back
-into Python (by name, with their call sites). Prints figures; asserts nothing.
+cache is a fresh temporary directory for the run); µs per scan and ns per step of both
+backends, fast and monitored (thread CPU time, best of ROUNDS rounds of SCANS scans from the
+same state, the inputs set as a running machine might have them); a scenario-like run
+(`advance` over VIRTUAL_S seconds of virtual time, inputs changing every second, scans skipped
+where the state repeats, and every scan) as a factor of real time; and the instructions that
+still call back into Python (by name, with their call sites). Prints figures; asserts nothing.
 """
 
 from __future__ import annotations
@@ -16,8 +16,8 @@ from __future__ import annotations
 import collections
 import os
 import random
-import tempfile
 import sys
+import tempfile
 import time
 from pathlib import Path
 
