@@ -326,3 +326,14 @@ def test_scans_one_by_one_give_the_states_when_asked() -> None:
             for engine in (python, native):
                 engine.monitored = not engine.monitored  # another variant from the next scan
     assert python.memory.areas == native.memory.areas
+
+
+def test_decb_codb_and_arithmetic_errors_run_the_same() -> None:
+    text = ("RD X0.0\nDECB 1 R10 3 R20\nRD X0.1\nRD.STK X0.2\nCODB 2 4 R11 D8 1000 -5 32767 "
+            "70000 9\nWRT Y0.0\nRD X0.3\nRD.STK X0.4\nDIVB 2 D0 D2 D4\nWRT Y0.1\n"
+            "RD X0.5\nRD.STK X0.6\nMULB 1 D6 D7 D6\nWRT Y0.2\n")
+    engines = pair(binary_of(text))
+    assert engines[1]._current.callbacks == []
+    driver = Driver(engines, random.Random(11), bytes_of(Area.X, 1),
+                    [Address(Area.R, 10), Address(Area.R, 11), *bytes_of(Area.D, 8)], [])
+    driver.run(2000, rate=0.5, longest=5)

@@ -19,6 +19,7 @@ from ladderworks.core.plc.functions import (
     RESULT_REGISTER,
     FunctionImpl,
     compare,
+    decode,
     edges,
     logic,
     transfer,
@@ -226,6 +227,22 @@ def _range(width: int) -> Emitter:
     return emit
 
 
+def _decb(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
+    """DECB: result bit i = (code = first + i); ACT = 0 clears the result byte."""
+    width, code, first, result = params
+    if not (isinstance(width, int) and width in (1, 2, 4) and isinstance(first, int)
+            and _I64[0] <= first <= _I64[1] and _fits(code, width) and _fits(result, 1)):
+        return None
+    assert isinstance(code, Address) and isinstance(result, Address)
+    value = f.value(f"zext i{8 * width} {_load(f, code, width)} to i64")
+    offset = f.value(f"sub i64 {value}, {first}")
+    inside = f.value(f"icmp ult i64 {offset}, 8")  # 0 <= offset < 8
+    bit = f.value(f"trunc i64 {f.value(f'shl i64 1, {offset}')} to i8")
+    decoded = f.value(f"select i1 {inside}, i8 {bit}, i8 0")
+    _store(f, result, 1, f.value(f"select i1 {f.truth(inputs[-1])}, i8 {decoded}, i8 0"))
+    return "0"
+
+
 def _edge(rising: bool) -> Callable[..., str | None]:
     """DIFU/DIFD: the edge memory in a state word (bit 0 its value, bit 1 set once written:
     a key of `ctx.edges`), synchronised with `ctx.edges` around the scans (scan.py)."""
@@ -260,6 +277,7 @@ EMITTERS: dict[FunctionImpl, Emitter] = {
     logic.logor: _logic("or"),
     logic.eor: _logic("xor"),
     logic.lognot: _not,
+    decode.decb: _decb,
 }
 EDGES: dict[FunctionImpl, Callable[..., str | None]] = {
     edges.difu: _edge(True),

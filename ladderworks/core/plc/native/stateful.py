@@ -1,5 +1,5 @@
-"""Functional instructions with a call-site state, as native code: TMR, TMRB, TMRBF and the
-signed binary arithmetic (ADDB, SUBB, MULB, DIVB).
+"""Functional instructions with a call-site state, as native code: TMR, TMRB, TMRBF, the
+signed binary arithmetic (ADDB, SUBB, MULB, DIVB) and CODB.
 
 A site's state dict lives in a block of state words while the native code runs: a flags word
 (which keys the dict has, the booleans' values, and a "changed" bit) and three 64-bit values
@@ -25,6 +25,7 @@ from ladderworks.core.plc.functions import (
     REMAINDER_REGISTER,
     RESULT_REGISTER,
     FunctionImpl,
+    convert,
     load_all,
     signed_range,
     timers,
@@ -51,9 +52,12 @@ _ARITHMETIC = _binary_code()  # the code every signed binary arithmetic implemen
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
-    """"tmr", "tmrb", "tmrbf" or "arithmetic" for an op done here natively, else None."""
+    """"tmr", "tmrb", "tmrbf", "codb" or "arithmetic" for an op done here natively, else
+    None."""
     if impl is timers.tmr:
         return "tmr"
+    if impl is convert.codb:
+        return "codb"
     if impl is timers.tmrb:
         return "tmrb"
     if impl is timers.tmrbf:
@@ -255,60 +259,115 @@ def _arithmetic(operation: Operation) -> Callable[[Block, Sequence[object], list
         f = b.f
         bits = 8 * width
         lo, hi = signed_range(width)
-        flags = b.flags()
-        reset, running, compute, joined = f.label(), f.label(), f.label(), f.label()
-        f.add(f"br i1 {f.truth(inputs[0])}, label %{reset}, label %{running}")
-        f.start(reset)
-        b.set_flags(flags, f.value(f"and i32 {f.value(f'or i32 {flags}, {HAS_W1}')}, {~W1}"))
-        reset_end = f.block
-        f.add(f"br label %{joined}")
-        f.start(running)
-        kept = f.value(f"icmp eq i32 {f.value(f'and i32 {flags}, {HAS_W1 | W1}')}, "
-                       f"{HAS_W1 | W1}")
-        f.add(f"br i1 {f.truth(inputs[1])}, label %{compute}, label %{joined}")
-        f.start(compute)
-        a = f.value(f"sext i{bits} {_load(f, first_at, width)} to i64")
-        c = (f.value(f"sext i{bits} {_load(f, second, width)} to i64")
-             if isinstance(second, Address) else str(second))
-        error = "false"
-        if operation is Operation.DIVIDE:
-            zero = f.value(f"icmp eq i64 {c}, 0")
-            safe = f.value(f"select i1 {zero}, i64 1, i64 {c}")
-            result = f.value(f"sdiv i64 {a}, {safe}")
-            remainder = f.value(f"srem i64 {a}, {safe}")
-            error = zero
-        else:
-            result = f.value(f"{_OPS[operation]} i64 {a}, {c}")
-        outside = f.value(f"or i1 {f.value(f'icmp slt i64 {result}, {lo}')}, "
-                          f"{f.value(f'icmp sgt i64 {result}, {hi}')}")
-        failed = f.value(f"or i1 {error}, {outside}")
-        bad, good, done = f.label(), f.label(), f.label()
-        f.add(f"br i1 {failed}, label %{bad}, label %{good}")
-        f.start(bad)
-        _store(f, RESULT_REGISTER, 1, str(FLAG_OVERFLOW))
-        f.add(f"br label %{done}")
-        f.start(good)
-        _store(f, result_at, width, f.value(f"trunc i64 {result} to i{bits}"))
-        is_zero = f.value(f"zext i1 {f.value(f'icmp eq i64 {result}, 0')} to i8")
-        negative = f.value(f"zext i1 {f.value(f'icmp slt i64 {result}, 0')} to i8")
-        _store(f, RESULT_REGISTER, 1, f.value(
-            f"or i8 {f.value(f'mul i8 {is_zero}, {FLAG_ZERO}')}, "
-            f"{f.value(f'mul i8 {negative}, {FLAG_NEGATIVE}')}"))
-        if operation is Operation.DIVIDE:
-            _store(f, REMAINDER_REGISTER, width, f.value(f"trunc i64 {remainder} to i{bits}"))
-        f.add(f"br label %{done}")
-        f.start(done)
-        now = f.value(f"or i32 {f.value(f'and i32 {flags}, {~W1}')}, {HAS_W1}")
-        with_error = f.value(f"or i32 {now}, {W1}")
-        b.set_flags(flags, f.value(f"select i1 {failed}, i32 {with_error}, i32 {now}"))
-        compute_end = f.block
-        f.add(f"br label %{joined}")
-        f.start(joined)
-        w1 = f.value(f"phi i1 [false, %{reset_end}], [{kept}, %{running}], "
-                     f"[{failed}, %{compute_end}]")
-        return f.value(f"zext i1 {w1} to i8")
+
+        def compute() -> str:
+            a = f.value(f"sext i{bits} {_load(f, first_at, width)} to i64")
+            c = (f.value(f"sext i{bits} {_load(f, second, width)} to i64")
+                 if isinstance(second, Address) else str(second))
+            error = "false"
+            remainder = ""
+            if operation is Operation.DIVIDE:
+                zero = f.value(f"icmp eq i64 {c}, 0")
+                safe = f.value(f"select i1 {zero}, i64 1, i64 {c}")
+                result = f.value(f"sdiv i64 {a}, {safe}")
+                remainder = f.value(f"srem i64 {a}, {safe}")
+                error = zero
+            else:
+                result = f.value(f"{_OPS[operation]} i64 {a}, {c}")
+            outside = f.value(f"or i1 {f.value(f'icmp slt i64 {result}, {lo}')}, "
+                              f"{f.value(f'icmp sgt i64 {result}, {hi}')}")
+            failed = f.value(f"or i1 {error}, {outside}")
+            bad, good, done = f.label(), f.label(), f.label()
+            f.add(f"br i1 {failed}, label %{bad}, label %{good}")
+            f.start(bad)
+            _store(f, RESULT_REGISTER, 1, str(FLAG_OVERFLOW))
+            f.add(f"br label %{done}")
+            f.start(good)
+            _store(f, result_at, width, f.value(f"trunc i64 {result} to i{bits}"))
+            is_zero = f.value(f"zext i1 {f.value(f'icmp eq i64 {result}, 0')} to i8")
+            negative = f.value(f"zext i1 {f.value(f'icmp slt i64 {result}, 0')} to i8")
+            _store(f, RESULT_REGISTER, 1, f.value(
+                f"or i8 {f.value(f'mul i8 {is_zero}, {FLAG_ZERO}')}, "
+                f"{f.value(f'mul i8 {negative}, {FLAG_NEGATIVE}')}"))
+            if remainder:
+                _store(f, REMAINDER_REGISTER, width,
+                       f.value(f"trunc i64 {remainder} to i{bits}"))
+            f.add(f"br label %{done}")
+            f.start(done)
+            return failed
+
+        return _held(b, inputs[0], inputs[1], compute)
 
     return emit
+
+
+def _held(b: Block, rst: str, act: str, compute: Callable[[], str]) -> str:
+    """An instruction with an error output (`held_output`): RST = 1 clears W1, ACT = 0 keeps
+    the last one, else `compute()` (emitting in its own blocks) gives the i1 error, W1."""
+    f = b.f
+    flags = b.flags()
+    reset, running, computing, joined = f.label(), f.label(), f.label(), f.label()
+    f.add(f"br i1 {f.truth(rst)}, label %{reset}, label %{running}")
+    f.start(reset)
+    b.set_flags(flags, f.value(f"and i32 {f.value(f'or i32 {flags}, {HAS_W1}')}, {~W1}"))
+    reset_end = f.block
+    f.add(f"br label %{joined}")
+    f.start(running)
+    kept = f.value(f"icmp eq i32 {f.value(f'and i32 {flags}, {HAS_W1 | W1}')}, "
+                   f"{HAS_W1 | W1}")
+    f.add(f"br i1 {f.truth(act)}, label %{computing}, label %{joined}")
+    f.start(computing)
+    failed = compute()
+    now = f.value(f"or i32 {f.value(f'and i32 {flags}, {~W1}')}, {HAS_W1}")
+    with_error = f.value(f"or i32 {now}, {W1}")
+    b.set_flags(flags, f.value(f"select i1 {failed}, i32 {with_error}, i32 {now}"))
+    computed = f.block
+    f.add(f"br label %{joined}")
+    f.start(joined)
+    w1 = f.value(f"phi i1 [false, %{reset_end}], [{kept}, %{running}], "
+                 f"[{failed}, %{computed}]")
+    return f.value(f"zext i1 {w1} to i8")
+
+
+def _codb(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
+    """CODB: output = table[index] (binary, 1/2/4 bytes); W1 = 1 past the table."""
+    width, size, index, out = params[:4]
+    table = params[4:]
+    if len(inputs) != 2 or not (isinstance(width, int) and isinstance(size, int)):
+        return None
+    if width not in (1, 2, 4) or not (_fits(index, 1) and _fits(out, width)):
+        return None
+    if not all(isinstance(entry, int) for entry in table):
+        return None
+    assert isinstance(index, Address) and isinstance(out, Address)
+    f = b.f
+    rows = [(row, entry) for row, entry in enumerate(table[:max(0, min(size, len(table), 256))])
+            if isinstance(entry, int) and -(1 << (8 * width - 1)) <= entry < 1 << (8 * width)]
+
+    def compute() -> str:
+        row = _load(f, index, 1)
+        cases = [(number, entry, f.label()) for number, entry in rows]
+        bad, done = f.label(), f.label()
+        f.add(f"switch i8 {row}, label %{bad} [" +
+              " ".join(f"i8 {_signed8(number)}, label %{label}" for number, _, label in cases)
+              + "]")
+        for _, entry, label in cases:
+            f.start(label)
+            raw = entry & ((1 << (8 * width)) - 1)
+            _store(f, out, width, str(raw - (1 << (8 * width)) if raw >> (8 * width - 1)
+                                      else raw))
+            f.add(f"br label %{done}")
+        f.start(bad)
+        f.add(f"br label %{done}")
+        f.start(done)
+        return f.value("phi i1 " + ", ".join(
+            [f"[false, %{label}]" for _, _, label in cases] + [f"[true, %{bad}]"]))
+
+    return _held(b, inputs[0], inputs[1], compute)
+
+
+def _signed8(value: int) -> int:
+    return value - 256 if value >= 128 else value
 
 
 _OPS = {Operation.ADD: "add", Operation.SUBTRACT: "sub", Operation.MULTIPLY: "mul"}
@@ -346,6 +405,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _tmrb(block, params, inputs)
         if found == "tmrbf":
             return _tmrbf(block, params, inputs)
+        if found == "codb":
+            return _codb(block, params, inputs)
         if found == "arithmetic":
             return _arithmetic(spec.operation)(block, params, inputs)
     except (ValueError, TypeError):
