@@ -337,3 +337,29 @@ def test_decb_codb_and_arithmetic_errors_run_the_same() -> None:
     driver = Driver(engines, random.Random(11), bytes_of(Area.X, 1),
                     [Address(Area.R, 10), Address(Area.R, 11), *bytes_of(Area.D, 8)], [])
     driver.run(2000, rate=0.5, longest=5)
+
+
+def test_the_scan_process_scans_natively_as_the_python_scan_here() -> None:
+    from ladderworks.core.plc.session import PlcRun
+    from tests.core.plc.test_scan_process import PRESET, PROGRAM, in_process, same, wait_until
+
+    def make(realtime: bool, backend: str) -> PlcRun:
+        run = PlcRun(realtime=realtime, period_ms=1, scan_process=realtime, backend=backend)
+        assert run.load_program(parse(PROGRAM).program).binary is not None
+        run.set_timer_preset(1, PRESET)
+        return run
+
+    live = make(True, "native")
+    assert live.engine is not None and live.engine.backend_used == "native"
+    try:
+        assert live.start()
+        assert in_process(live), live.process_error
+        assert wait_until(lambda: live.status().scan_count >= 200)
+        live.stop()
+        reference = make(False, "python")
+        reference.start()
+        reference.run_scans(live.engine.scan_count)
+        reference.stop()
+        same(live, reference)
+    finally:
+        live.close()
