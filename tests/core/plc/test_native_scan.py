@@ -363,3 +363,16 @@ def test_the_scan_process_scans_natively_as_the_python_scan_here() -> None:
         same(live, reference)
     finally:
         live.close()
+
+
+def test_xmovb_reads_and_writes_its_table_as_the_python_scan_does() -> None:
+    text = "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nXMOVB 2 6 D100 D20 D30\nWRT Y0.0\n" \
+           "RD X0.3\nRD.STK X0.4\nRD.STK X0.5\nXMOVB 1 D40 D9990 D22 D30\nWRT Y0.1\n"
+    engines = pair(binary_of(text))
+    assert engines[1]._current.callbacks == []
+    indices = [Address(Area.X, 0), Address(Area.D, 30), Address(Area.D, 40)]  # small values
+    changed = [Address(Area.D, b) for b in (20, 21, 22, 31, 41, 100, 101, 104, 9995)]
+    driver = Driver(engines, random.Random(12), indices, changed, [])
+    for engine in engines:
+        engine.memory.write(Address(Area.D, 40), 20, 2)
+    driver.run(2000, rate=0.6, longest=4)

@@ -1,5 +1,5 @@
 """Functional instructions with a call-site state, as native code: TMR, TMRB, TMRBF, the
-signed binary arithmetic (ADDB, SUBB, MULB, DIVB) and CODB.
+signed binary arithmetic (ADDB, SUBB, MULB, DIVB), CODB and XMOVB.
 
 A site's state dict lives in a block of state words while the native code runs: a flags word
 (which keys the dict has, the booleans' values, and a "changed" bit) and three 64-bit values
@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from ladderworks.core.address import Address
+from ladderworks.core.address import AREA_SIZES, Address
 from ladderworks.core.instructions import FUNCTIONS, InstructionSpec, Operation
 from ladderworks.core.plc.functions import (
     FLAG_NEGATIVE,
@@ -29,6 +29,7 @@ from ladderworks.core.plc.functions import (
     load_all,
     signed_range,
     timers,
+    transfer,
 )
 from ladderworks.core.plc.native import layout
 from ladderworks.core.plc.native.ir_text import FunctionText
@@ -52,12 +53,14 @@ _ARITHMETIC = _binary_code()  # the code every signed binary arithmetic implemen
 
 
 def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
-    """"tmr", "tmrb", "tmrbf", "codb" or "arithmetic" for an op done here natively, else
-    None."""
+    """"tmr", "tmrb", "tmrbf", "codb", "xmovb" or "arithmetic" for an op done here natively,
+    else None."""
     if impl is timers.tmr:
         return "tmr"
     if impl is convert.codb:
         return "codb"
+    if impl is transfer.xmovb:
+        return "xmovb"
     if impl is timers.tmrb:
         return "tmrb"
     if impl is timers.tmrbf:
@@ -366,6 +369,51 @@ def _codb(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
     return _held(b, inputs[0], inputs[1], compute)
 
 
+def _xmovb(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
+    """XMOVB: RW = 0 data = table[index], RW = 1 table[index] = data (1/2/4-byte entries,
+    the index 4 bytes signed, the size a constant or 2 bytes signed at an address)."""
+    width, size, table, data, index = params
+    if len(inputs) != 3 or not (isinstance(width, int) and width in (1, 2, 4)):
+        return None
+    if not (isinstance(table, Address) and _fits(data, width) and _fits(index, 4)):
+        return None
+    if (isinstance(size, Address) and not _fits(size, 2)) or \
+            not isinstance(size, Address | int) or isinstance(size, bool):
+        return None
+    if isinstance(size, int) and not _I32[0] <= size <= _I32[1]:
+        return None
+    assert isinstance(data, Address) and isinstance(index, Address)
+    f = b.f
+    bits = 8 * width
+    limit = AREA_SIZES[table.area]
+
+    def compute() -> str:
+        count = (f.value(f"sext i16 {_load(f, size, 2)} to i64")
+                 if isinstance(size, Address) else str(size))
+        row = f.value(f"sext i32 {_load(f, index, 4)} to i64")
+        inside = f.value(f"and i1 {f.value(f'icmp sge i64 {row}, 0')}, "
+                         f"{f.value(f'icmp slt i64 {row}, {count}')}")
+        byte = f.value(f"add i64 {f.value(f'mul i64 {row}, {width}')}, {table.byte}")
+        fits = f.value(f"icmp sle i64 {f.value(f'add i64 {byte}, {width}')}, {limit}")
+        good = f.value(f"and i1 {inside}, {fits}")
+        move, done = f.label(), f.label()
+        start = f.block
+        f.add(f"br i1 {good}, label %{move}, label %{done}")
+        f.start(move)
+        entry = f.value(f"getelementptr i8, ptr {f.byte_ptr(table.area, 0)}, i64 {byte}")
+        there = f.byte_ptr(data.area, data.byte)
+        writes = f.truth(inputs[0])
+        source = f.value(f"select i1 {writes}, ptr {there}, ptr {entry}")
+        target = f.value(f"select i1 {writes}, ptr {entry}, ptr {there}")
+        value = f.value(f"load i{bits}, ptr {source}, align 1")
+        f.add(f"store i{bits} {value}, ptr {target}, align 1")
+        f.add(f"br label %{done}")
+        f.start(done)
+        return f.value(f"phi i1 [true, %{start}], [false, %{move}]")
+
+    return _held(b, inputs[1], inputs[2], compute)
+
+
 def _signed8(value: int) -> int:
     return value - 256 if value >= 128 else value
 
@@ -405,6 +453,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _tmrb(block, params, inputs)
         if found == "tmrbf":
             return _tmrbf(block, params, inputs)
+        if found == "xmovb":
+            return _xmovb(block, params, inputs)
         if found == "codb":
             return _codb(block, params, inputs)
         if found == "arithmetic":
