@@ -97,6 +97,9 @@ class GeneratedScan:
         """Write the last scan's power flow into `out` (one byte for each of `count` ops)."""
         flow_into(self.blocks, out)
 
+    def adopt(self, previous: object) -> None:
+        """Go on from the states `previous` left (the dicts: nothing to do)."""
+
     def sync(self) -> None:
         """The call sites' states are in their dicts (always: the scan writes them there)."""
 

@@ -140,6 +140,8 @@ class ScanEngine:
             if len(self._variants) > 16:
                 self._variants.clear()
             variant = self._native(key) if self.backend_used == "native" else None
+            if variant is not None:  # the variants of one program layout share state words
+                variant.share_words(list(self._variants.values()))
             if variant is None:
                 variant = generate(self.program.ops, self.memory.areas, self._registry,
                                    self._states, disabled=key[1], monitored=key[0])
@@ -177,9 +179,13 @@ class ScanEngine:
         """Make the variant a change asked for while parked, if any."""
         if self._pending:
             self._pending = False
-            self._current.sync()
-            self._current = self._variant()
-            self._current.states_changed()
+            self._switch()
+
+    def _switch(self) -> None:
+        """Run the variant of the setup now, going on from the states the last one left."""
+        variant = self._variant()
+        variant.adopt(self._current)
+        self._current = variant
 
     @property
     def source(self) -> str:
@@ -344,9 +350,7 @@ class ScanEngine:
         """Take another engine's setup; a trace of another ident starts sampling afresh."""
         with self.lock:
             self.force_table = setup.force_table()
-            self._current.sync()
-            self._current = self._variant()
-            self._current.states_changed()
+            self._switch()
             spec = setup.trace
             if spec is None:
                 self.trace = None

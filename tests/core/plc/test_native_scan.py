@@ -376,3 +376,25 @@ def test_xmovb_reads_and_writes_its_table_as_the_python_scan_does() -> None:
     for engine in engines:
         engine.memory.write(Address(Area.D, 40), 20, 2)
     driver.run(2000, rate=0.6, longest=4)
+
+
+def test_fast_and_monitored_variants_share_their_state_words() -> None:
+    binary = binary_of("%@3\nRD X0.0\nTMRB 1 40\nWRT Y0.0\nRD X0.0\nDIFU 3\nWRT Y0.1\n%\n")
+    python, native = pair(binary)
+    fast = native._current
+    native.monitored = True
+    native.scan()
+    python.monitored = True
+    python.scan()
+    assert native._current is not fast and native._current._words is fast._words
+    for step in range(60):
+        for engine in (python, native):
+            engine.memory.areas[Area.X][0] = (step // 5) % 2
+            if step % 3 == 0:
+                engine.monitored = not engine.monitored
+            if step == 30:
+                engine.disable(5)  # a variant of another layout: states through the dicts
+            engine.scan()
+        assert native.call_states() == python._states
+        assert native._ctx.edges == python._ctx.edges
+    assert python.memory.areas == native.memory.areas

@@ -140,6 +140,30 @@ class NativeScan:
     def clear_flow(self) -> None:
         self._flow[:] = bytes(len(self._flow))
 
+    def share_words(self, others: list[Any]) -> None:
+        """Use the state words of another variant of the same layout (fast and monitored):
+        switching between them then moves no state through the dicts."""
+        program = self.compiled.program
+        for other in others:
+            if isinstance(other, NativeScan) and other is not self and \
+                    other.compiled.program.layout == program.layout and \
+                    other.compiled.program.blocks == program.blocks and \
+                    other.compiled.program.edges == program.edges:
+                self._words = other._words
+                self._now, self._scan_ms, self._wake = other._now, other._scan_ms, other._wake
+                return
+
+    def adopt(self, previous: Any) -> None:
+        """Go on from the states `previous` (the variant run before) left."""
+        if previous is self:
+            return
+        if isinstance(previous, NativeScan) and previous._words is self._words:
+            self.stale, self._unsynced = previous.stale, previous._unsynced
+            self._ctx = previous._ctx
+            return
+        previous.sync()
+        self.states_changed()
+
     def states_changed(self) -> None:
         """The call sites' states or edge memories were changed outside a scan (what the
         scans changed since the last `sync` is dropped: the dicts now say)."""
