@@ -554,7 +554,7 @@ class _Generator:
             return "0"
         f = self.f
         native = builtins.emit(f, spec, impl, op.params, inputs, self.edge_words,
-                               self.layout.edge_base)
+                               self.layout.edge_base, self.layout.dirty)
         if native is not None:
             return native
         if stateful.kind(spec, impl) is not None:

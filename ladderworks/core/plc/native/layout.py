@@ -12,7 +12,7 @@ CARRIED = 4  # 9 words: the stack values a giant network's next chunk goes on wi
 NOW = 14  # i64: the scan's time (ctx.now_ms)
 SCAN_MS = 16  # i64: the time since the last scan (ctx.scan_ms)
 WAKE = 18  # i64: the earliest wake a timer said in this scan (ctx.wake_ms)
-DIRTY = 20  # the number of state blocks changed in this scan (their sites follow `dirty`)
+DIRTY = 20  # the entries of the changed list: state blocks (k >= 0), edge memories (-1 - k)
 FIRST_FREE = 22
 
 JUMP_MAIN = 1  # ABORT: a JMPC is leaving the subprograms
@@ -47,9 +47,10 @@ class Layout:
 
     @property
     def dirty(self) -> int:
-        """The list of changed sites (one spare: the list is written one past its end)."""
+        """The list of changed blocks and edge memories (one spare: the list is written one
+        past its end)."""
         return self.block_base + 8 * self.stateful
 
     @property
     def words(self) -> int:
-        return self.dirty + self.stateful + 1
+        return self.dirty + self.stateful + self.edges + 1

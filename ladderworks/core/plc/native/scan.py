@@ -113,7 +113,7 @@ class NativeScan:
             self._wake.value = ctx.wake_ms
         code = self._entry(self._bases, words, self._flow_view, self._callback,
                            1 if full else 0)
-        self._unsynced = self._unsynced or bool(self._edge_keys) or words[layout.DIRTY] > 0
+        self._unsynced = self._unsynced or words[layout.DIRTY] > 0
         if blocks and self._wake.value < ctx.wake_ms:  # a call-back's timer may say earlier
             ctx.wake_ms = self._wake.value
         if code:
@@ -178,17 +178,19 @@ class NativeScan:
         self._unsynced = False
         words = self._words
         edges = self._ctx.edges
-        for word, key in self._edge_keys:
-            value = words[word]
-            if value:
-                edges[key] = value == 3
         changed = words[layout.DIRTY]
-        if changed:
-            blocks, dirty = self._blocks, self._dirty
-            for k in range(changed):
-                state, base = blocks[words[dirty + k]]
+        blocks, dirty, edge_keys = self._blocks, self._dirty, self._edge_keys
+        for k in range(changed):
+            entry = words[dirty + k]
+            if entry >= 0:
+                state, base = blocks[entry]
                 stateful.pull(words, base, state)
-            words[layout.DIRTY] = 0
+            else:
+                word, key = edge_keys[-1 - entry]
+                value = words[word]
+                words[word] = value & 3
+                edges[key] = bool(value & 1)
+        words[layout.DIRTY] = 0
 
 
 def native_variant(ops: tuple[Op, ...], dialect: str, areas: dict[Area, bytearray],
