@@ -398,3 +398,19 @@ def test_fast_and_monitored_variants_share_their_state_words() -> None:
         assert native.call_states() == python._states
         assert native._ctx.edges == python._ctx.edges
     assert python.memory.areas == native.memory.areas
+
+
+@pytest.mark.parametrize("header", ["%@3\n", ""], ids=["fanuc", "seed"])
+def test_counters_count_as_the_python_scan_counts(header: str) -> None:
+    text = ("RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.3\nCTR 2\nWRT Y0.0\n"
+            "RD X0.4\nRD.STK X0.1\nRD.STK X0.5\nRD.STK X0.3\nCTRC D10 D20\nWRT Y0.1\n"
+            "RD X0.6\nRD.STK X0.7\nRD.STK X0.2\nRD.STK X0.3\nCTRB 3 5\nWRT Y0.2\n")
+    engines = pair(binary_of(header + text + ("%\n" if header else "")))
+    assert engines[1]._current.callbacks == []
+    presets = [Address(Area.C, 4), Address(Area.C, 5), Address(Area.D, 10), Address(Area.D, 11)]
+    driver = Driver(engines, random.Random(header + "counters"), bytes_of(Area.X, 1), presets,
+                    [])
+    for engine in engines:
+        engine.memory.write(Address(Area.C, 4), 3, 2)
+        engine.memory.write(Address(Area.D, 10), 4, 2)
+    driver.run(3000, rate=0.6, longest=3)

@@ -26,6 +26,7 @@ from ladderworks.core.plc.functions import (
     RESULT_REGISTER,
     FunctionImpl,
     convert,
+    counters,
     load_all,
     signed_range,
     timers,
@@ -39,6 +40,7 @@ ELAPSED, AT, WAKE = 2, 4, 6
 # flags: key present (and not None / its value)
 HAS_ELAPSED, ELAPSED_SET, HAS_AT, HAS_WAKE, HAS_ON, ON, HAS_W1, W1 = (
     1, 2, 4, 8, 16, 32, 256, 512)
+HAS_ACT, ACT, HAS_VALUE = 1024, 2048, 4096  # counters: the last ACT; CTRB's value (at ELAPSED)
 CHANGED = 1 << 15
 _I32 = (-(1 << 31), (1 << 31) - 1)
 
@@ -59,6 +61,8 @@ def kind(spec: InstructionSpec, impl: FunctionImpl | None) -> str | None:
         return "tmr"
     if impl is convert.codb:
         return "codb"
+    if impl in (counters.ctr, counters.ctrc, counters.ctrb):
+        return "counter"
     if impl is transfer.xmovb:
         return "xmovb"
     if impl is timers.tmrb:
@@ -414,6 +418,78 @@ def _xmovb(b: Block, params: Sequence[object], inputs: list[str]) -> str | None:
     return _held(b, inputs[1], inputs[2], compute)
 
 
+def _counter(b: Block, impl: FunctionImpl, params: Sequence[object],
+             inputs: list[str]) -> str | None:
+    """CTR, CTRC, CTRB: `counters.ring_count` on the value where each keeps it."""
+    if len(inputs) != 4:
+        return None
+    f = b.f
+    stored_at: Address | None
+    if impl is counters.ctr:
+        (number,) = params
+        if not isinstance(number, int):
+            return None
+        preset_at, stored_at = (counters.counter_preset_address(number),
+                                counters.counter_value_address(number))
+        if not (_fits(preset_at, 2) and _fits(stored_at, 2)):
+            return None
+        preset = f.value(f"zext i16 {_load(f, preset_at, 2)} to i64")
+    elif impl is counters.ctrc:
+        preset_param, register = params
+        if not (_fits(preset_param, 2) and _fits(register, 2)):
+            return None
+        assert isinstance(preset_param, Address) and isinstance(register, Address)
+        stored_at = register
+        raw = f.value(f"zext i16 {_load(f, preset_param, 2)} to i64")
+        over = f.value(f"icmp sgt i64 {raw}, {counters.MAX_PRESET}")
+        preset = f.value(f"select i1 {over}, i64 {counters.MAX_PRESET}, i64 {raw}")
+    else:
+        number, fixed = params
+        if not (isinstance(number, int) and isinstance(fixed, int)
+                and _I32[0] <= fixed <= _I32[1]):
+            return None
+        where = counters.ctrb_value_address(number)
+        stored_at = where if _fits(where, 2) else None
+        preset = str(min(fixed, counters.MAX_PRESET))
+    flags = b.flags()
+    cn0, down, rst, act = (f.truth(value) for value in inputs)
+    if stored_at is not None:
+        current = f.value(f"zext i16 {_load(f, stored_at, 2)} to i64")
+    else:  # CTRB past the C area: the value kept in the call site ("value", else 0)
+        has = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HAS_VALUE}')}, 0")
+        current = f.value(f"select i1 {has}, i64 {b.load64(ELAPSED)}, i64 0")
+    low = f.value(f"zext i1 {cn0} to i64")
+    top = f.value(f"select i1 {f.value(f'icmp slt i64 {preset}, {low}')}, i64 {low}, "
+                  f"i64 {preset}")
+    before = f.value(f"icmp eq i32 {f.value(f'and i32 {flags}, {HAS_ACT | ACT}')}, "
+                     f"{HAS_ACT | ACT}")
+    rising = f.value(f"and i1 {act}, {f.value(f'xor i1 {before}, true')}")
+    down_value = f.value(f"select i1 {f.value(f'icmp sle i64 {current}, {low}')}, i64 {top}, "
+                         f"i64 {f.value(f'sub i64 {current}, 1')}")
+    up_value = f.value(f"select i1 {f.value(f'icmp sge i64 {current}, {top}')}, i64 {low}, "
+                       f"i64 {f.value(f'add i64 {current}, 1')}")
+    counted = f.value(f"select i1 {down}, i64 {down_value}, i64 {up_value}")
+    counted = f.value(f"select i1 {rising}, i64 {counted}, i64 {current}")
+    start = f.value(f"select i1 {down}, i64 {top}, i64 {low}")
+    value = f.value(f"select i1 {rst}, i64 {start}, i64 {counted}")
+    at_end = f.value(f"select i1 {down}, i1 {f.value(f'icmp sle i64 {value}, {low}')}, "
+                     f"i1 {f.value(f'icmp sge i64 {value}, {top}')}")
+    w1 = f.value(f"and i1 {f.value(f'xor i1 {rst}, true')}, {at_end}")
+    if stored_at is not None:
+        _store(f, stored_at, 2, f.value(f"trunc i64 {value} to i16"))
+    new = f.value(f"or i32 {f.value(f'and i32 {flags}, {~ACT}')}, {HAS_ACT}")
+    new = f.value(f"select i1 {act}, i32 {f.value(f'or i32 {new}, {ACT}')}, i32 {new}")
+    if impl is counters.ctrb:  # state["value"] = value
+        old = b.load64(ELAPSED)
+        b.store64(ELAPSED, value)
+        kept = f.value(f"icmp ne i32 {f.value(f'and i32 {flags}, {HAS_VALUE}')}, 0")
+        same = f.value(f"and i1 {kept}, {f.value(f'icmp eq i64 {old}, {value}')}")
+        new = f.value(f"or i32 {new}, {HAS_VALUE}")
+        new = f.value(f"select i1 {same}, i32 {new}, i32 {f.value(f'or i32 {new}, {CHANGED}')}")
+    b.set_flags(flags, new)
+    return f.value(f"zext i1 {w1} to i8")
+
+
 def _signed8(value: int) -> int:
     return value - 256 if value >= 128 else value
 
@@ -455,6 +531,8 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
             return _tmrbf(block, params, inputs)
         if found == "xmovb":
             return _xmovb(block, params, inputs)
+        if found == "counter":
+            return _counter(block, impl, params, inputs)
         if found == "codb":
             return _codb(block, params, inputs)
         if found == "arithmetic":
@@ -483,6 +561,10 @@ def pull(words: Any, base: int, state: dict[str, Any]) -> None:
         state["on"] = bool(flags & ON)
     if flags & HAS_W1:
         state["w1"] = bool(flags & W1)
+    if flags & HAS_ACT:
+        state["act"] = bool(flags & ACT)
+    if flags & HAS_VALUE:
+        state["value"] = _get64(words, base + ELAPSED)
 
 
 def push(words: Any, base: int, state: dict[str, Any]) -> None:
@@ -496,9 +578,12 @@ def push(words: Any, base: int, state: dict[str, Any]) -> None:
                 _set64(words, base + offset, int(value))
                 if key == "elapsed":
                     flags |= ELAPSED_SET
-    for key, has, value_bit in (("on", HAS_ON, ON), ("w1", HAS_W1, W1)):
+    for key, has, value_bit in (("on", HAS_ON, ON), ("w1", HAS_W1, W1), ("act", HAS_ACT, ACT)):
         if key in state:
             flags |= has | (value_bit if state[key] else 0)
+    if "value" in state:
+        flags |= HAS_VALUE
+        _set64(words, base + ELAPSED, int(state["value"]))
     words[base] = flags
 
 
