@@ -167,7 +167,7 @@ def test_an_endless_loop_stops_the_native_scan_as_it_stops_the_python_one() -> N
 
 def test_an_error_in_a_called_back_function_reaches_the_caller(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    binary = binary_of("RD X0.0\nSUB.250 R0 7\nWRT Y0.0\n")  # the CNC stub: called back
+    binary = binary_of("RD X0.0\nTMRC 0 D0 D4\nWRT Y0.0\n")  # TMRC: called back
     engine = ScanEngine(binary, backend="native")
     assert engine.backend_used == "native"
     assert len(engine._current.callbacks) == 1
@@ -414,3 +414,10 @@ def test_counters_count_as_the_python_scan_counts(header: str) -> None:
         engine.memory.write(Address(Area.C, 4), 3, 2)
         engine.memory.write(Address(Area.D, 10), 4, 2)
     driver.run(3000, rate=0.6, longest=3)
+
+
+def test_an_unknown_sub_is_the_cnc_stub_natively() -> None:
+    engines = pair(binary_of("RD X0.0\nSUB.250 R0 7\nWRT Y0.0\nRD X0.1\nSUB.251\nWRT Y0.1\n"))
+    assert engines[1]._current.callbacks == []
+    driver = Driver(engines, random.Random(4), bytes_of(Area.X, 1), [], [])
+    driver.run(200, rate=0.5, longest=3)

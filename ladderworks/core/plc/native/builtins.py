@@ -18,6 +18,7 @@ from ladderworks.core.plc.functions import (
     FLAG_ZERO,
     RESULT_REGISTER,
     FunctionImpl,
+    cnc,
     compare,
     decode,
     edges,
@@ -244,6 +245,33 @@ def _decb(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str |
     return "0"
 
 
+def _axctl(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
+    """AXCTL without a CNC: W1 = ACT and not RST."""
+    if len(inputs) != 2:
+        return None
+    return f.value(f"and i8 {inputs[1]}, {f.value(f'xor i8 {inputs[0]}, 1')}")
+
+
+def _act(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
+    """EXIN (and a `SUB n` the table does not know) without a CNC: W1 = ACT."""
+    return inputs[-1] if inputs else "0"
+
+
+def _nothing(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
+    """DISPB: no W1, nothing written."""
+    return "0"
+
+
+def _window(f: FunctionText, params: Sequence[object], inputs: list[str]) -> str | None:
+    """WINDR/WINDW without a CNC: ACT = 1 writes completion code 0; W1 = ACT."""
+    if not params or not isinstance(params[0], Address):
+        return None
+    completion = params[0].offset(cnc.COMPLETION_OFFSET)
+    if _fits(completion, 2):
+        _when(f, inputs[-1], lambda: _store(f, completion, 2, "0"))
+    return inputs[-1]
+
+
 def _edge(rising: bool) -> Callable[..., str | None]:
     """DIFU/DIFD: the edge memory in a state word (bit 0 its value, bit 1 set once written:
     a key of `ctx.edges`, bit 2 set while it is in the changed list), written back into
@@ -291,6 +319,12 @@ EMITTERS: dict[FunctionImpl, Emitter] = {
     logic.eor: _logic("xor"),
     logic.lognot: _not,
     decode.decb: _decb,
+    cnc.axctl: _axctl,
+    cnc.windr: _window,
+    cnc.windw: _window,
+    cnc.exin: _act,
+    cnc.dispb: _nothing,
+    cnc.unknown_sub: _act,
 }
 EDGES: dict[FunctionImpl, Callable[..., str | None]] = {
     edges.difu: _edge(True),
@@ -315,9 +349,9 @@ def emit(f: FunctionText, spec: InstructionSpec, impl: FunctionImpl, params: Seq
         number = edge_words[key]
         return EDGES[impl](f, edge_base + number, number, dirty, inputs)
     emitter = EMITTERS.get(impl)
-    if emitter is None or len(params) < 1:
+    if emitter is None:
         return None
     try:
         return emitter(f, params, inputs)
-    except (ValueError, TypeError):  # parameters of another shape: the Python code decides
+    except (ValueError, TypeError, IndexError):  # parameters of another shape: call back
         return None
