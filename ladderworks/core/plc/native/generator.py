@@ -18,11 +18,11 @@ from dataclasses import dataclass, field
 from ladderworks.core.address import Address
 from ladderworks.core.compiler.binary import BinaryFormatError, Op
 from ladderworks.core.compiler.checks import MAX_PUSHES, implementation_of
-from ladderworks.core.compiler.structure import LOOP_LIMIT, Unit, analyse, number_of
+from ladderworks.core.compiler.structure import Unit, analyse, number_of
 from ladderworks.core.instructions import Combine, Flow, Kind, StackOp, Write
 from ladderworks.core.plc.codegen_values import Range, count_in_innermost, counted
 from ladderworks.core.plc.functions import FunctionImpl
-from ladderworks.core.plc.native import builtins, layout, stateful
+from ladderworks.core.plc.native import builtins, layout, state_block, stateful, units
 from ladderworks.core.plc.native.ir_text import PASS, FunctionText
 from ladderworks.core.plc.native.layout import Layout
 
@@ -174,13 +174,13 @@ class _Generator:
     # -- the program -------------------------------------------------------------------------
 
     def run(self) -> NativeProgram:
-        units = [self.unit(unit) for unit in self.unit_list]
+        numbers = [self.unit(unit) for unit in self.unit_list]
         f = FunctionText("scan")
         f.add(f"store i32 0, ptr {f.word_ptr(layout.ABORT)}")
         levels = self.structure.levels
         first = levels.get(1)
         if self.monitored:
-            self.flow_reset(f, (first.start, first.end) if first else None)
+            units.flow_reset(f, (first.start, first.end) if first else None, len(self.ops))
         for level in sorted(levels):
             after = ""
             if level > 1:
@@ -190,7 +190,7 @@ class _Generator:
             new = f.value(f"and i8 {old}, 227")
             new = f.value(f"or i8 {new}, {_LEVEL_BITS.get(level, 0)}")
             f.add(f"store i8 {new}, ptr {relay}")
-            f.add(f"call void @U{units[self.unit_numbers[levels[level].name]]}({PASS})")
+            f.add(f"call void @U{numbers[self.unit_numbers[levels[level].name]]}({PASS})")
             state = f.load_word(layout.ABORT)
             _, cont = f.branch(state, "i32")
             f.add(f"ret i32 {state}")
@@ -206,21 +206,6 @@ class _Generator:
         edges = sorted(self.edge_words, key=self.edge_words.__getitem__)
         return NativeProgram(body, self.layout, self.calls, self.callbacks, edges,
                              self.blocks, self.unit_list, self.labels)
-
-    def flow_reset(self, f: FunctionText, level1: tuple[int, int] | None) -> None:
-        count = len(self.ops)
-        if level1 is None:
-            f.add(f"call void @llvm.memset.p0.i64(ptr %fl, i8 0, i64 {count}, i1 false)")
-            return
-        start, end = level1
-        _, other = f.branch("%full", "i32")
-        f.add(f"call void @llvm.memset.p0.i64(ptr %fl, i8 0, i64 {count}, i1 false)")
-        done = f.label()
-        f.add(f"br label %{done}")
-        f.start(other)
-        ptr = f.value(f"getelementptr i8, ptr %fl, i64 {start}")
-        f.add(f"call void @llvm.memset.p0.i64(ptr {ptr}, i8 0, i64 {end - start}, i1 false)")
-        f.join(done)
 
     def unit(self, unit: Unit) -> int:
         number = self.unit_numbers[unit.name]
@@ -252,87 +237,10 @@ class _Generator:
             self.op(index, op, labelled)
         result = str(len(chunks) + 1) if labelled else "0"
         chunks.append(self.end_chunk(False, result))
-        self.unit_function(number, unit, chunks, first_common, labelled)
+        self.out.append(units.unit_function(
+            number, unit, chunks, range(first_common, self.common_count), self.jump_ids > 0,
+            labelled, self.layout, self.chunk_of_label))
         return number
-
-    def unit_function(self, number: int, unit: Unit, chunks: list[str], first_common: int,
-                      labelled: bool) -> None:
-        f = FunctionText(f"U{number}", "void", slots=2)
-        if self.jump_ids:
-            f.store_word(self.layout.jump_base + number, "0")
-        for ident in range(first_common, self.common_count):
-            f.store_word(self.layout.common_base + ident, "1")
-        if not labelled:
-            for name in chunks:
-                result = f.value(f"call i32 @{name}({PASS})")
-                stop = f.value(f"icmp slt i32 {result}, 0")
-                go = f.label()
-                f.add(f"br i1 {stop}, label %leave, label %{go}")
-                f.start(go)
-            f.add("br label %leave")
-            f.start("leave")
-            self.out.append(f.finish([], ""))
-            return
-        # the dispatch loop: pc in %v0, backward jumps counted in %v1
-        loop, body, done = f.label(), f.label(), "leave"
-        f.add(f"br label %{loop}")
-        f.start(loop)
-        pc = f.get(0)
-        more = f.value(f"icmp slt i32 {pc}, {len(chunks)}")
-        f.add(f"br i1 {more}, label %{body}, label %{done}")
-        f.start(body)
-        cases = [f.label() for _ in chunks]
-        joined = f.label()
-        f.add(f"switch i32 {pc}, label %{done} [" +
-              " ".join(f"i32 {k}, label %{case}" for k, case in enumerate(cases)) + "]")
-        results = []
-        for case, name in zip(cases, chunks, strict=True):
-            f.start(case)
-            results.append((f.value(f"call i32 @{name}({PASS})"), case))
-            f.add(f"br label %{joined}")
-        f.start(joined)
-        nxt = f.value("phi i32 " + ", ".join(f"[{v}, %{c}]" for v, c in results))
-        stop = f.value(f"icmp slt i32 {nxt}, 0")
-        unwinding, going = f.label(), f.label()
-        f.add(f"br i1 {stop}, label %{unwinding}, label %{going}")
-        f.start(unwinding)
-        if unit.level > 0 and self.chunk_of_label:
-            state = f.load_word(layout.ABORT)
-            is_jump = f.value(f"icmp eq i32 {state}, {layout.JUMP_MAIN}")
-            catch = f.label()
-            f.add(f"br i1 {is_jump}, label %{catch}, label %{done}")
-            f.start(catch)
-            label = f.load_word(layout.JUMP_LABEL)
-            targets = [(lb, ch, f.label()) for lb, ch in sorted(self.chunk_of_label.items())]
-            f.add(f"switch i32 {label}, label %{done} [" +
-                  " ".join(f"i32 {lb}, label %{blk}" for lb, _, blk in targets) + "]")
-            for _, chunk, blk in targets:
-                f.start(blk)
-                f.store_word(layout.ABORT, "0")
-                f.put(0, str(chunk))
-                f.add(f"br label %{loop}")
-        else:
-            f.add(f"br label %{done}")
-        f.start(going)
-        back = f.value(f"icmp sle i32 {nxt}, {pc}")
-        count, on = f.label(), f.label()
-        f.add(f"br i1 {back}, label %{count}, label %{on}")
-        f.start(count)
-        n = f.value(f"add i32 {f.get(1)}, 1")
-        f.put(1, n)
-        over = f.value(f"icmp sgt i32 {n}, {LOOP_LIMIT}")
-        stop_loop = f.label()
-        f.add(f"br i1 {over}, label %{stop_loop}, label %{on}")
-        f.start(stop_loop)
-        f.store_word(layout.ABORT, str(layout.LOOPED))
-        f.store_word(layout.LOOP_UNIT, str(number))
-        f.store_word(layout.LOOP_CHUNK, nxt)
-        f.add(f"br label %{done}")
-        f.start(on)
-        f.put(0, nxt)
-        f.add(f"br label %{loop}")
-        f.start(done)
-        self.out.append(f.finish([], ""))
 
     # -- ops -------------------------------------------------------------------------------
 
@@ -558,7 +466,7 @@ class _Generator:
         if native is not None:
             return native
         if stateful.kind(spec, impl) is not None:
-            base = self.layout.block_base + stateful.BLOCK * len(self.blocks)
+            base = self.layout.block_base + state_block.BLOCK * len(self.blocks)
             native = stateful.emit(f, spec, impl, op.params, inputs, base, len(self.blocks),
                                    self.layout.dirty, self.dialect)
             if native is not None:

@@ -12,7 +12,7 @@ from ladderworks.core.compiler.binary import Op
 from ladderworks.core.compiler.checks import implementation_of
 from ladderworks.core.plc.codegen_plan import JumpToMain, loop_stop
 from ladderworks.core.plc.functions import FunctionImpl
-from ladderworks.core.plc.native import layout, stateful
+from ladderworks.core.plc.native import layout, state_block
 from ladderworks.core.plc.native.ir_text import AREA_ORDER
 from ladderworks.core.plc.native.jit import Compiled, compiled_scan
 
@@ -104,7 +104,7 @@ class NativeScan:
             for word, key in self._edge_keys:
                 words[word] = (2 | bool(edges[key])) if key in edges else 0
             for state, base in self._blocks:
-                stateful.push(words, base, state)
+                state_block.push(words, base, state)
             words[layout.DIRTY] = 0
         blocks = self._blocks
         if blocks:
@@ -184,7 +184,7 @@ class NativeScan:
             entry = words[dirty + k]
             if entry >= 0:
                 state, base = blocks[entry]
-                stateful.pull(words, base, state)
+                state_block.pull(words, base, state)
             else:
                 word, key = edge_keys[-1 - entry]
                 value = words[word]
