@@ -30,6 +30,8 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     parser.addini("ladderworks_every_scan", "run every scan of the scenario tests (default: "
                   "false: the scans of a state that repeats are skipped, with the same results)",
                   type="bool", default=False)
+    parser.addini("ladderworks_backend", "the scan's code: python (default) or native "
+                  "(llvmlite; Python runs where it cannot)", default="python")
 
 
 def pytest_collect_file(file_path: Path, parent: pytest.Collector) -> pytest.Collector | None:
@@ -64,12 +66,17 @@ class ScenarioItem(pytest.Item):
     def runtest(self) -> None:
         """Run it; raise ScenarioFailed with the failures' messages."""
         period = int(self.config.getini("ladderworks_scan_period"))
+        backend = str(self.config.getini("ladderworks_backend")).strip() or "python"
         outcome = run_job(ScenarioJob(str(self.path), period_ms=period,
-                                      every_scan=self.config.getini("ladderworks_every_scan")))
+                                      every_scan=self.config.getini("ladderworks_every_scan"),
+                                      backend=backend))
         result = self.result = outcome.result
         result.scenario.name = self._shown_name()
         if outcome.messages:
             self.add_report_section("call", "program", "\n".join(outcome.messages))
+        if backend == "native" and outcome.backend_reason:
+            self.add_report_section("call", "backend",
+                                    f"the Python scan ran: {outcome.backend_reason}")
         name = result.scenario.name
         checks = "\n".join(check.message(name) for check in result.checks)
         if checks:

@@ -33,6 +33,22 @@ def add_every_scan_option(parser: argparse.ArgumentParser) -> None:
                              "are skipped, with the same results (docs/engine.md)")
 
 
+def add_backend_option(parser: argparse.ArgumentParser) -> None:
+    """Add `--backend python|native` to a command that runs a program."""
+    parser.add_argument("--backend", choices=("python", "native"), default="python",
+                        help="the scan's code: generated Python (default) or native machine "
+                             "code compiled with llvmlite; where native cannot run, Python "
+                             "runs and the reason is printed (docs/engine.md)")
+
+
+def backend_note(engine: object, asked: str) -> str | None:
+    """What to print when `asked` was native and the Python scan runs instead, or None."""
+    reason = getattr(engine, "backend_reason", None)
+    if asked == "native" and reason:
+        return f"ladderworks-cli: the Python scan runs: {reason}"
+    return None
+
+
 def use_dialect(args: argparse.Namespace) -> None:
     """Take the command's --dialect for the programs it reads (cli.main, before the command)."""
     _forced[0] = getattr(args, "dialect", None)

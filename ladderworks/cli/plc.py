@@ -8,7 +8,13 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from ladderworks.cli._programs import add_dialect_option, add_every_scan_option, parsed
+from ladderworks.cli._programs import (
+    add_backend_option,
+    add_dialect_option,
+    add_every_scan_option,
+    backend_note,
+    parsed,
+)
 from ladderworks.core.address import Address, AddressError
 from ladderworks.core.compiler import compile_program, disassemble
 from ladderworks.core.compiler.binary import MAGIC, decode
@@ -57,6 +63,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                      dest="print_", help="print ADDR = VALUE lines at the end (repeatable)")
     run.add_argument("--trace", metavar="ADDR,...", help="print a CSV trace of these")
     add_every_scan_option(run)
+    add_backend_option(run)
     run.add_argument("--ascii-out", metavar="FILE",
                      help="write what a Fatek FUN 94 ASCWR sent to the terminal (UTF-8)")
     run.add_argument("--period", type=int, default=DEFAULT_PERIOD_MS, metavar="MS",
@@ -195,7 +202,7 @@ def _run(args: argparse.Namespace) -> int:
     if parameters is None:
         return 2
     plc = PlcRun(period_ms=args.scan_period, divisions=args.divisions,
-                 every_scan=args.every_scan)
+                 every_scan=args.every_scan, backend=args.backend)
     plc.set_parameters(parameters.parameters)
     _use_ascii_files(plc, args.file)
     problems = plc.load(binary, program)
@@ -206,6 +213,9 @@ def _run(args: argparse.Namespace) -> int:
     if skips is not None:
         _report(args.file, [skips])
     engine = plc.engine
+    note = backend_note(engine, args.backend)
+    if note:
+        print(note, file=sys.stderr)
     for number, value in timers:  # options win over the parameter file
         plc.set_timer_preset(number, value)
     for number, preset in counters:

@@ -7,7 +7,12 @@ import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-from ladderworks.cli._programs import add_dialect_option, add_every_scan_option, forced_dialect
+from ladderworks.cli._programs import (
+    add_backend_option,
+    add_dialect_option,
+    add_every_scan_option,
+    forced_dialect,
+)
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS
 from ladderworks.core.plc.scenario import ScenarioResult
 from ladderworks.core.plc.scenario_batch import (
@@ -39,6 +44,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                            "are printed in the order given")
     test.add_argument("-v", "--verbose", action="store_true", help="print every check")
     add_every_scan_option(test)
+    add_backend_option(test)
     test.set_defaults(handler=_test)
 
 
@@ -74,8 +80,9 @@ def _test(args: argparse.Namespace) -> int:
                 print(f"ladderworks-cli: {program}: {loaded.reason}", file=sys.stderr)
             return 1
     jobs = [ScenarioJob(name, program, args.params, args.scan_period, forced_dialect(),
-                        args.every_scan) for name in files]
+                        args.every_scan, args.backend) for name in files]
     told = {program}
+    fallen_back: set[str | None] = set()  # programs whose native scan could not run
     outcomes: list[ScenarioOutcome] = []
     for outcome in run_jobs(jobs, args.jobs):
         outcomes.append(outcome)
@@ -83,6 +90,11 @@ def _test(args: argparse.Namespace) -> int:
             told.add(outcome.program)
             for text in outcome.messages:
                 print(text, file=sys.stderr)
+        if outcome.job.backend == "native" and outcome.backend_reason \
+                and outcome.program not in fallen_back:
+            fallen_back.add(outcome.program)
+            print(f"ladderworks-cli: {outcome.program}: the Python scan runs: "
+                  f"{outcome.backend_reason}", file=sys.stderr)
         _print_result(outcome.job.scenario, outcome.result, args.verbose)
     if args.junit:
         write_junit(Path(args.junit), [(o.program, o.result) for o in outcomes])

@@ -96,3 +96,17 @@ class GeneratedScan:
     def flow_into(self, out: bytearray) -> None:
         """Write the last scan's power flow into `out` (one byte for each of `count` ops)."""
         flow_into(self.blocks, out)
+
+    def adopt(self, previous: object) -> None:
+        """Go on from the states `previous` left (the dicts: nothing to do)."""
+
+    def sync(self) -> None:
+        """The call sites' states are in their dicts (always: the scan writes them there)."""
+
+    def states_changed(self) -> None:
+        """The call sites' states were changed outside a scan (nothing to do: it reads them)."""
+
+    def clear_flow(self) -> None:
+        """Every op's power flow 0 (a cold start)."""
+        for block in self.blocks:
+            block[:] = [0] * len(block)

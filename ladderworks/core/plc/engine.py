@@ -19,11 +19,14 @@ from ladderworks.core.plc.forcing import ForceEntry, ForceTable
 from ladderworks.core.plc.functions import FunctionContext, load_all
 from ladderworks.core.plc.history import ScanHistory
 from ladderworks.core.plc.memory import Memory
+from ladderworks.core.plc.native import unavailable as native_unavailable
+from ladderworks.core.plc.native.scan import NativeScan, native_variant
 from ladderworks.core.plc.scan_state import ScanSetup, ScanState
 from ladderworks.core.plc.skipping import ClockRelay, CycleSkipper, clocks_read
 from ladderworks.core.plc.trace import DEFAULT_CAPACITY, TraceSampler
 
 DEFAULT_PERIOD_MS = 8  # FANUC level-1 period
+BACKENDS = ("python", "native")  # the scan's code: generated Python, or native (llvmlite)
 ALARM_LOG_CAPACITY = 4096  # A-area changes kept until a view takes them
 
 # Kept on a cold start (and across stop): keep relays, data table, timer and counter tables.
@@ -68,7 +71,7 @@ class ScanEngine:
 
     def __init__(self, binary: bytes | BinaryProgram, *, period_ms: int = DEFAULT_PERIOD_MS,
                  memory: Memory | None = None, divisions: int = 1,
-                 monitored: bool = False) -> None:
+                 monitored: bool = False, backend: str = "python") -> None:
         if period_ms <= 0:
             raise ValueError("the scan period must be at least 1 ms")
         if divisions < 1:
@@ -88,7 +91,7 @@ class ScanEngine:
         # a scan process is sent the new setup (PlcRun)
         self.on_setup: Callable[[], None] | None = None
         self._power_flow = bytearray(len(self.program.ops))
-        self._flow_stale: GeneratedScan | None = None  # the variant whose last scan's power
+        self._flow_stale: GeneratedScan | NativeScan | None = None  # the variant whose power
         # flow is not in the bytes yet
         # every change of the A area, with the time of the scan that made it (newest last)
         self.alarm_log: deque[tuple[int, bytes]] = deque(maxlen=ALARM_LOG_CAPACITY)
@@ -96,7 +99,12 @@ class ScanEngine:
         self._monitored = monitored  # the first variant made is the one to run
         self._registry = load_all()
         self._states: list[dict[str, Any]] = [{} for _ in self.program.ops]
-        self._variants: dict[tuple[bool, frozenset[int]], GeneratedScan] = {}
+        self._variants: dict[tuple[bool, frozenset[int]], GeneratedScan | NativeScan] = {}
+        if backend not in BACKENDS:
+            raise ValueError(f"unknown scan backend {backend!r}")
+        self.backend = backend  # the one asked for: "python" or "native"
+        # why the Python scan runs although the native one was asked for (None: it runs)
+        self.backend_reason: str | None = None
         self._ctx = _context(self.memory, period_ms, self.program.dialect)
         found = dialects.get(self.program.dialect)
         self._dialect_relays = found.relays if found is not None else None
@@ -125,16 +133,41 @@ class ScanEngine:
 
     # -- the scan ------------------------------------------------------------------------
 
-    def _variant(self) -> GeneratedScan:
+    def _variant(self) -> GeneratedScan | NativeScan:
         key = (self._monitored, self.force_table.disabled)
         variant = self._variants.get(key)
         if variant is None:
             if len(self._variants) > 16:
                 self._variants.clear()
-            variant = generate(self.program.ops, self.memory.areas, self._registry,
-                               self._states, disabled=key[1], monitored=key[0])
+            variant = self._native(key) if self.backend_used == "native" else None
+            if variant is not None:  # the variants of one program layout share state words
+                variant.share_words(list(self._variants.values()))
+            if variant is None:
+                variant = generate(self.program.ops, self.memory.areas, self._registry,
+                                   self._states, disabled=key[1], monitored=key[0])
             self._variants[key] = variant
         return variant
+
+    @property
+    def backend_used(self) -> str:
+        """The backend that scans: "native" when asked for and it could be built."""
+        return "native" if self.backend == "native" and self.backend_reason is None \
+            else "python"
+
+    def _native(self, key: tuple[bool, frozenset[int]]) -> NativeScan | None:
+        """The native variant of `key`, or None (the reason in `backend_reason`: the Python
+        scan runs from then on)."""
+        reason = native_unavailable()
+        if reason is None:
+            try:
+                return native_variant(self.program.ops, self.program.dialect,
+                                      self.memory.areas, self._registry, self._states,
+                                      disabled=key[1], monitored=key[0])
+            except Exception as error:  # an IR or LLVM failure: the Python scan runs
+                reason = f"the native compile failed: {error}"
+        self.backend_reason = reason
+        self._variants.clear()  # every variant of one engine comes from one backend
+        return None
 
     def _choose(self) -> None:
         """Use the variant of the monitoring and disabled ops now (parked: at the next scan)."""
@@ -146,7 +179,13 @@ class ScanEngine:
         """Make the variant a change asked for while parked, if any."""
         if self._pending:
             self._pending = False
-            self._current = self._variant()
+            self._switch()
+
+    def _switch(self) -> None:
+        """Run the variant of the setup now, going on from the states the last one left."""
+        variant = self._variant()
+        variant.adopt(self._current)
+        self._current = variant
 
     @property
     def source(self) -> str:
@@ -185,6 +224,13 @@ class ScanEngine:
             self.scan_count += 1
             self.now_ms = now + self.period_ms
 
+    def call_states(self) -> list[dict[str, Any]]:
+        """Every op's call-site state (timers, counters: a dict per op, empty for the others)
+        as the last scan left it; with the DIFU/DIFD memories in `ctx.edges`."""
+        with self.lock:
+            self._current.sync()
+            return self._states
+
     def run_scans(self, count: int) -> None:
         """Run `count` scans."""
         for _ in range(count):
@@ -206,6 +252,7 @@ class ScanEngine:
         """
         with self.lock:
             skipper = None
+            self._current.sync()
             if not self.every_scan and self.trace is None and self.history is None:
                 if self._clocks_split is None:
                     read = clocks_read(self.program.ops, self._clocks, self.program.dialect)
@@ -220,14 +267,17 @@ class ScanEngine:
                 if until is not None and until():
                     break
                 if skipper is not None:
+                    self._current.sync()  # the skipper reads the call sites' states
                     skipped = skipper.after_scan(self.now_ms, limit_ms, self.alarm_changes)
                     if skipped:
                         self.now_ms += skipped * self.period_ms
                         self.scan_count += skipped
                         self.skipped += skipped
                         count += skipped
+                        self._current.states_changed()  # the skipper moved the timers on
                         self._relays(self.now_ms - self.period_ms)  # the last skipped scan's
                         self.force_table.apply(self.memory)  # forces win, as after a scan
+            self._current.sync()
             return count
 
     def _relays(self, now: int) -> None:
@@ -260,8 +310,8 @@ class ScanEngine:
             self._first_scan = True
             self._power_flow[:] = bytes(len(self._power_flow))
             for variant in self._variants.values():
-                for block in variant.blocks:
-                    block[:] = [0] * len(block)
+                variant.clear_flow()
+                variant.states_changed()
             self._flow_stale = None
 
     # -- moving to and from a scan process (core/plc/scan_process.py) ----------------------
@@ -269,6 +319,7 @@ class ScanEngine:
     def export_state(self) -> ScanState:
         """What the next scan depends on besides memory and the setup (a copy)."""
         with self.lock:
+            self._current.sync()
             return ScanState(self.now_ms, self.scan_count, self._first_scan,
                              [dict(state) for state in self._states], dict(self._ctx.edges),
                              self._alarm_bits)
@@ -284,6 +335,8 @@ class ScanEngine:
             self._ctx.edges.clear()
             self._ctx.edges.update(state.edges)
             self._alarm_bits = state.alarm_bits
+            for variant in self._variants.values():
+                variant.states_changed()
 
     def setup(self) -> ScanSetup:
         """The forces, disabled elements and trace now (a scan process monitors the scans a
@@ -297,7 +350,7 @@ class ScanEngine:
         """Take another engine's setup; a trace of another ident starts sampling afresh."""
         with self.lock:
             self.force_table = setup.force_table()
-            self._current = self._variant()
+            self._switch()
             spec = setup.trace
             if spec is None:
                 self.trace = None

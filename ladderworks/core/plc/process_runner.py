@@ -123,7 +123,7 @@ class ScanProcess:
         self._ready = None
         self.built = engine
         self._commands.send(("build", self._ident, data, engine.period_ms, engine.divisions,
-                             dict(files), self._flow.name))
+                             dict(files), self._flow.name, engine.backend_used))
 
     def wait_ready(self) -> None:
         """Wait until the last program sent is built; ScanProcessError if it was not."""

@@ -8,7 +8,7 @@ the power flow. What else a scan makes (A-area changes, trace samples, FUN 94 te
 back on a pipe. `serve` is the process's main; `core/plc/process_runner.py` is the IDE's end.
 
 Messages to the process: ("build", ident, binary, period, divisions, ASCII files, flow block
-name), ("run", ScanState, ScanSetup), then while running ("setup", ScanSetup), ("reset",)
+name, backend), ("run", ScanState, ScanSetup), then while running ("setup", ScanSetup), ("reset",)
 and ("stop",); ("files", ASCII files) at any time; ("quit",). From it: ("ready", ident,
 error or ""), ("out", alarm changes, trace ident, samples, texts) and ("stopped", ScanState,
 trace position).
@@ -131,11 +131,13 @@ class Scanner:
         self.block.close()
 
     def build(self, ident: int, data: bytes, period_ms: int, divisions: int,
-              files: dict[Any, Any], flow_name: str) -> None:
-        """Make the engine of a program (both variants: monitoring never waits for one)."""
+              files: dict[Any, Any], flow_name: str, backend: str = "python") -> None:
+        """Make the engine of a program (both variants: monitoring never waits for one), with
+        the IDE engine's backend (native: from the disk cache when the IDE compiled it)."""
         self.engine = None
         try:
-            engine = ScanEngine(decode(data), period_ms=period_ms, divisions=divisions)
+            engine = ScanEngine(decode(data), period_ms=period_ms, divisions=divisions,
+                                backend=backend)
             engine.monitored = True
             engine.monitored = False
         except Exception as error:

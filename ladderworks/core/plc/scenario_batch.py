@@ -44,6 +44,7 @@ class ScenarioJob:
     period_ms: int = DEFAULT_PERIOD_MS
     dialect: str | None = None  # read programs as this dialect (--dialect), else by content
     every_scan: bool = False  # run every scan (--every-scan), else skip a repeating state's
+    backend: str = "python"  # the scan's code: "python" or "native" (--backend)
 
 
 @dataclass(slots=True)
@@ -67,6 +68,7 @@ class ScenarioOutcome:
     program: str | None
     result: ScenarioResult
     messages: list[str] = field(default_factory=list)
+    backend_reason: str | None = None  # why the Python scan ran when native was asked for
 
 
 _PROGRAMS: dict[tuple[str, str | None, str | None, int, int], LoadedProgram] = {}
@@ -125,10 +127,10 @@ def is_scenario_file(path: str) -> bool:
     return first.strip().strip(",").upper() == HEADER
 
 
-def cold_run(loaded: LoadedProgram, period_ms: int,
-             every_scan: bool = False) -> tuple[PlcRun, list[Diagnostic]]:
+def cold_run(loaded: LoadedProgram, period_ms: int, every_scan: bool = False,
+             backend: str = "python") -> tuple[PlcRun, list[Diagnostic]]:
     """A fresh PLC with the program loaded from a cold start, its PMC parameters applied."""
-    plc = PlcRun(period_ms=period_ms, every_scan=every_scan)
+    plc = PlcRun(period_ms=period_ms, every_scan=every_scan, backend=backend)
     plc.set_parameters(loaded.parameters)
     assert loaded.binary is not None
     return plc, plc.load(loaded.binary)
@@ -152,13 +154,14 @@ def run_job(job: ScenarioJob) -> ScenarioOutcome:
             "scenario-program", {"path": program, "reason": loaded.reason},
             scenario.program_line, column))
         return ScenarioOutcome(job, program, ScenarioResult(scenario), loaded.messages)
-    plc, problems = cold_run(loaded, job.period_ms, job.every_scan)
+    plc, problems = cold_run(loaded, job.period_ms, job.every_scan, job.backend)
     if problems:
         scenario.diagnostics.append(Diagnostic(
             "scenario-program", {"path": program, "reason": problems[0].message()},
             scenario.program_line, column))
         return ScenarioOutcome(job, program, ScenarioResult(scenario), loaded.messages)
-    return ScenarioOutcome(job, program, run_scenario(plc, scenario), loaded.messages)
+    reason = plc.engine.backend_reason if plc.engine is not None else None
+    return ScenarioOutcome(job, program, run_scenario(plc, scenario), loaded.messages, reason)
 
 
 def default_jobs() -> int:

@@ -69,7 +69,7 @@ class PlcRun:
 
     def __init__(self, *, realtime: bool = False, period_ms: int = DEFAULT_PERIOD_MS,
                  divisions: int = 1, every_scan: bool = False,
-                 scan_process: bool = False) -> None:
+                 scan_process: bool = False, backend: str = "python") -> None:
         self.realtime = realtime  # start() runs a wall-clock thread; else the virtual clock
         # real-time scans run in a process of their own (core/plc/scan_process.py), unless
         # time travel keeps the history; else on a thread of this process
@@ -80,6 +80,9 @@ class PlcRun:
         self._data: bytes | None = None  # the loaded binary as given (the process builds it)
         self._lock = ScanLock()  # every engine's lock: a scan process's lock joins it
         self.every_scan = every_scan  # `advance` skips no scan (ScanEngine.every_scan)
+        # the scan's code, "python" or "native" (llvmlite; docs/engine.md): each engine loaded
+        # asks for it, and says in `backend_reason` why the Python scan runs if it does
+        self.backend = backend
         self.period_ms = period_ms
         self.divisions = divisions  # level 2 and 3 run every `divisions` scans (docs/engine.md)
         self.memory = Memory()
@@ -124,7 +127,8 @@ class PlcRun:
         self.stop()
         # monitored from the start when a view monitors: one variant generated, not two
         engine = ScanEngine(decoded, period_ms=self.period_ms, memory=self.memory,
-                            divisions=self.divisions, monitored=self._monitors > 0)
+                            divisions=self.divisions, monitored=self._monitors > 0,
+                            backend=self.backend)
         old = self.engine
         self.engine = engine
         engine.lock = self._lock

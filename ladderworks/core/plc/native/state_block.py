@@ -1,0 +1,145 @@
+"""A call site's state in a block of state words while the native scan runs (stateful.py):
+the block's layout, its IR (`Block`), an error output held as `held_output` holds it, and the
+dicts written from the words (`pull`) and the words from the dicts (`push`).
+
+The flags word says which keys the dict has and holds the booleans and a "changed" bit; three
+64-bit values follow (`elapsed`, `at`, `wake`; CTRB's `value` at `elapsed`). A block that
+changed in a scan puts its number in the changed list once (layout.DIRTY).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from ladderworks.core.plc.native import layout
+from ladderworks.core.plc.native.builtins import _fits as _fits
+from ladderworks.core.plc.native.builtins import _load as _load
+from ladderworks.core.plc.native.builtins import _store as _store
+from ladderworks.core.plc.native.ir_text import FunctionText
+
+BLOCK = 8  # words per site: flags, pad, elapsed (i64), at (i64), wake (i64)
+ELAPSED, AT, WAKE = 2, 4, 6
+# flags: key present (and not None / its value)
+HAS_ELAPSED, ELAPSED_SET, HAS_AT, HAS_WAKE, HAS_ON, ON, HAS_W1, W1 = (
+    1, 2, 4, 8, 16, 32, 256, 512)
+HAS_ACT, ACT, HAS_VALUE = 1024, 2048, 4096  # counters: the last ACT; CTRB's value (at ELAPSED)
+CHANGED = 1 << 15
+_I32 = (-(1 << 31), (1 << 31) - 1)
+
+class Block:
+    """The IR of one site's state block (`base`: its first word)."""
+
+    def __init__(self, f: FunctionText, base: int, number: int, dirty_list: int) -> None:
+        self.f, self.base, self.number, self.dirty_list = f, base, number, dirty_list
+
+    def ptr(self, offset: int) -> str:
+        return self.f.word_ptr(self.base + offset)
+
+    def flags(self) -> str:
+        return self.f.value(f"load i32, ptr {self.ptr(0)}")
+
+    def load64(self, offset: int) -> str:
+        return self.f.value(f"load i64, ptr {self.ptr(offset)}, align 4")
+
+    def store64(self, offset: int, value: str) -> None:
+        self.f.add(f"store i64 {value}, ptr {self.ptr(offset)}, align 4")
+
+    def set_flags(self, old: str, new: str) -> None:
+        """Store the flags; a block whose flags or values changed (`new` has CHANGED set by
+        the caller when values changed) joins the changed list once."""
+        f = self.f
+        differs = f.value(f"icmp ne i32 {old}, {new}")
+        marked = f.value(f"and i32 {old}, {CHANGED}")
+        first = f.value(f"and i1 {differs}, {f.value(f'icmp eq i32 {marked}, 0')}")
+        marked_new = f.value(f"or i32 {new}, {CHANGED}")
+        f.add(f"store i32 {f.value(f'select i1 {differs}, i32 {marked_new}, i32 {old}')}, "
+              f"ptr {self.ptr(0)}")
+        count_ptr = f.word_ptr(layout.DIRTY)
+        count = f.value(f"load i32, ptr {count_ptr}")
+        slot = f.value(f"getelementptr i32, ptr %st, i64 {self.dirty_list}")
+        entry = f.value(f"getelementptr i32, ptr {slot}, i32 {count}")
+        f.add(f"store i32 {self.number}, ptr {entry}")
+        step = f.value(f"zext i1 {first} to i32")
+        f.add(f"store i32 {f.value(f'add i32 {count}, {step}')}, ptr {count_ptr}")
+
+
+def _held(b: Block, rst: str, act: str, compute: Callable[[], str]) -> str:
+    """An instruction with an error output (`held_output`): RST = 1 clears W1, ACT = 0 keeps
+    the last one, else `compute()` (emitting in its own blocks) gives the i1 error, W1."""
+    f = b.f
+    flags = b.flags()
+    reset, running, computing, joined = f.label(), f.label(), f.label(), f.label()
+    f.add(f"br i1 {f.truth(rst)}, label %{reset}, label %{running}")
+    f.start(reset)
+    b.set_flags(flags, f.value(f"and i32 {f.value(f'or i32 {flags}, {HAS_W1}')}, {~W1}"))
+    reset_end = f.block
+    f.add(f"br label %{joined}")
+    f.start(running)
+    kept = f.value(f"icmp eq i32 {f.value(f'and i32 {flags}, {HAS_W1 | W1}')}, "
+                   f"{HAS_W1 | W1}")
+    f.add(f"br i1 {f.truth(act)}, label %{computing}, label %{joined}")
+    f.start(computing)
+    failed = compute()
+    now = f.value(f"or i32 {f.value(f'and i32 {flags}, {~W1}')}, {HAS_W1}")
+    with_error = f.value(f"or i32 {now}, {W1}")
+    b.set_flags(flags, f.value(f"select i1 {failed}, i32 {with_error}, i32 {now}"))
+    computed = f.block
+    f.add(f"br label %{joined}")
+    f.start(joined)
+    w1 = f.value(f"phi i1 [false, %{reset_end}], [{kept}, %{running}], "
+                 f"[{failed}, %{computed}]")
+    return f.value(f"zext i1 {w1} to i8")
+
+
+_VALUES = (("elapsed", HAS_ELAPSED, ELAPSED), ("at", HAS_AT, AT), ("wake", HAS_WAKE, WAKE))
+
+
+def pull(words: Any, base: int, state: dict[str, Any]) -> None:
+    """Write a site's dict from its block (and clear its changed bit)."""
+    flags = words[base]
+    words[base] = flags & ~CHANGED
+    if flags & HAS_ELAPSED:
+        state["elapsed"] = _get64(words, base + ELAPSED) if flags & ELAPSED_SET else None
+    if flags & HAS_AT:
+        state["at"] = _get64(words, base + AT)
+    if flags & HAS_WAKE:
+        state["wake"] = _get64(words, base + WAKE)
+    if flags & HAS_ON:
+        state["on"] = bool(flags & ON)
+    if flags & HAS_W1:
+        state["w1"] = bool(flags & W1)
+    if flags & HAS_ACT:
+        state["act"] = bool(flags & ACT)
+    if flags & HAS_VALUE:
+        state["value"] = _get64(words, base + ELAPSED)
+
+
+def push(words: Any, base: int, state: dict[str, Any]) -> None:
+    """Write a site's block from its dict."""
+    flags = 0
+    for key, bit, offset in _VALUES:
+        if key in state:
+            flags |= bit
+            value = state[key]
+            if value is not None:
+                _set64(words, base + offset, int(value))
+                if key == "elapsed":
+                    flags |= ELAPSED_SET
+    for key, has, value_bit in (("on", HAS_ON, ON), ("w1", HAS_W1, W1), ("act", HAS_ACT, ACT)):
+        if key in state:
+            flags |= has | (value_bit if state[key] else 0)
+    if "value" in state:
+        flags |= HAS_VALUE
+        _set64(words, base + ELAPSED, int(state["value"]))
+    words[base] = flags
+
+
+def _get64(words: Any, word: int) -> int:
+    return (words[word] & 0xFFFFFFFF) | (words[word + 1] << 32)
+
+
+def _set64(words: Any, word: int, value: int) -> None:
+    words[word] = ((value & 0xFFFFFFFF) ^ 0x80000000) - 0x80000000
+    words[word + 1] = value >> 32
+
