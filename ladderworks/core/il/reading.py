@@ -7,7 +7,7 @@ skips the sniffing (`--dialect NAME` on the command line); "pmc" forces the PMC 
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from pathlib import Path
 
 from ladderworks.core import dialects
 from ladderworks.core.collector import collector_paused
@@ -15,9 +15,6 @@ from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il import parser
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.textform import TextForm, decode_lines, dominant_newline, split_with_ends
-
-if TYPE_CHECKING:
-    from pathlib import Path
 
 PMC = "pmc"  # `--dialect pmc`: the PMC parser, whatever the text looks like
 
@@ -55,17 +52,46 @@ def parse_bytes(data: bytes, dialect: str | None = None) -> ParseResult:
     return parser.parse_bytes(data) if found is None else read_dialect(data, found)
 
 
+def open_with(path: Path, data: bytes | None, found: dialects.Dialect) -> ParseResult:
+    """A file with its companions, or a folder, opened by its dialect's `opener` (S7)."""
+    with collector_paused(promote=True):
+        program, diagnostics, encoding = found.open_path(path, data)
+    return ParseResult(program, sorted(diagnostics, key=lambda d: (d.line, d.column)), encoding)
+
+
+def _folder(path: Path, dialect: str | None) -> ParseResult:
+    """A folder of exports: the first dialect that opens folders (or `dialect`) opens it."""
+    named = dialects.get(dialect) if dialect else None
+    found = named or next((d for d in dialects.every() if d.opener), None)
+    if found is None or not found.opener:
+        raise IsADirectoryError(str(path))
+    return open_with(path, None, found)
+
+
 def parse_file(path: str | Path, dialect: str | None = None) -> ParseResult:
-    """Parse a program file in whichever dialect it is written (or `dialect`)."""
+    """Parse a program file in whichever dialect it is written (or `dialect`); a folder of a
+    dialect's exports (S7) as one program."""
+    target = Path(path)
+    if target.is_dir():
+        return _folder(target, dialect)
     with open(path, "rb") as file:
-        return parse_bytes(file.read(), dialect)
+        data = file.read()
+    found = choose(data, dialect)
+    if found is not None and found.opener:
+        return open_with(target, data, found)
+    return parser.parse_bytes(data) if found is None else read_dialect(data, found)
 
 
 def parse_for_check(path: str | Path, dialect: str | None = None) -> ParseResult:
     """parser.parse_for_check, or a dialect's reader for a file of another dialect."""
+    target = Path(path)
+    if target.is_dir():
+        return _folder(target, dialect)
     with open(path, "rb") as file:
         data = file.read()
     found = choose(data, dialect)
+    if found is not None and found.opener:
+        return open_with(target, data, found)
     return parser.parse_for_check(path) if found is None else read_dialect(data, found)
 
 

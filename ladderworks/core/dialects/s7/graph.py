@@ -19,7 +19,7 @@ PART_NAMES: frozenset[str] = frozenset({
     "Eq", "Ne", "Gt", "Lt", "Ge", "Le", "InRange", "OutRange", "Ok", "NotOk",
     "Move", "Add", "Sub", "Mul", "Div", "Inc", "Dec", "Convert",
     "Jump", "JumpN", "Label", "JumpList", "Switch", "Return", "PTCoil", "RTCoil",
-    "Call", "A", "X", "Not",
+    "Call", "A", "X", "Not", "PTrig", "NTrig",
 })
 
 
