@@ -58,7 +58,7 @@ class BlockLowering:
     networks: list[Network] = field(default_factory=list)
     labels: dict[str, int] = field(default_factory=dict)
     end_label: int = 0
-    scratch: int = 0
+    scratch: int = 0  # LadderWorks relays used so far (each written by one network only)
 
     def run(self) -> list[Network]:
         """Every network of the block, then the label RET jumps to."""
@@ -67,6 +67,12 @@ class BlockLowering:
                 if part.name == "Label" and part.label:
                     self.labels.setdefault(part.label.lower(), len(self.labels) + 1)
         self.end_label = len(self.labels) + 1
+        for network in self.block.networks:  # instances first: their members are read anywhere
+            for part in network.parts:
+                kind = "IEC_TIMER" if part.name in TIMERS else "IEC_COUNTER" \
+                    if part.name in COUNTERS else ""
+                if kind and part.instance is not None:
+                    self.layout.resolve(self.block, part.instance, kind)
         for index, network in enumerate(self.block.networks, start=1):
             before = len(self.networks)
             try:
@@ -94,7 +100,6 @@ class BlockLowering:
                 "network": index, "language": network.language}, network.line, 1,
                 Severity.WARNING))
             return
-        self.scratch = 0
         graph = _Graph(network)
         graph.index = index
         if graph.missing:
