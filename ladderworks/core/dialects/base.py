@@ -53,6 +53,9 @@ class Dialect:
     # "module:function": (path, bytes or None) -> (Program, diagnostics, encoding): opens a
     # file with its companions or a folder of them as one program (S7 exports); "" for none
     opener: str = ""
+    # a diagnostic code: Save refuses a changed program of this dialect with it (S7: writing
+    # its blocks is not done yet); "" when changed networks are written by `printer`
+    refuse_changes: str = ""
     namer: str = ""  # "module:function": a row's name in the dialect's text (LD for RD)
     spelling: str = ""  # "module:function" making its dialects.spelling.Spelling (display)
     # the rows each module of core/plc/functions implements for it (plc/families.py merges them)

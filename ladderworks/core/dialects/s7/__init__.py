@@ -39,4 +39,5 @@ DIALECT = Dialect(
                  for bit, period in enumerate(CLOCK_PERIODS)),
     period_ms=10, extensions=(".s7dcl",), families=FAMILIES, byteorder="big",
     namer="ladderworks.core.dialects.s7.printer:mnemonic_of",
-    opener="ladderworks.core.dialects.s7.reader:open_path")
+    spelling="ladderworks.core.dialects.s7.printer:spelling",
+    opener="ladderworks.core.dialects.s7.reader:open_path", refuse_changes="s7-save-changed")

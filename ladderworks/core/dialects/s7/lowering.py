@@ -90,9 +90,9 @@ class BlockLowering:
         return self.networks
 
     # -- one network ----------------------------------------------------------------------
-    def fail(self, index: int, part: Part | None, code: str, **args: object) -> LoweringError:
+    def fail(self, index: int, where: Part | None, code: str, **args: object) -> LoweringError:
         return LoweringError(Diagnostic(code, {"network": index, **args},
-                                        part.line if part is not None else 0, 1))
+                                        where.line if where is not None else 0, 1))
 
     def network(self, index: int, network: S7Network) -> None:
         if network.language.upper() not in ("LAD", "FBD"):

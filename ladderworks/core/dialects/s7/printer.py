@@ -3,9 +3,11 @@ changed network cannot be written as SIMATIC SD yet, so Save refuses it with a m
 
 from __future__ import annotations
 
+from ladderworks.core.address import Address, Area
 from ladderworks.core.diagnostics import Refused
-from ladderworks.core.dialects.s7.devices import format_absolute
-from ladderworks.core.il.program import Network
+from ladderworks.core.dialects.s7.devices import M_BYTES, format_absolute
+from ladderworks.core.dialects.spelling import Spelling
+from ladderworks.core.il.program import Instruction, Network
 from ladderworks.core.instructions import InstructionSpec
 
 
@@ -19,4 +21,41 @@ def mnemonic_of(spec: InstructionSpec) -> str:
     return spec.mnemonic if spec.dialect == "s7" and spec.mnemonic else spec.text_name
 
 
-__all__ = ["format_absolute", "mnemonic_of", "network_lines"]
+
+
+_ALWAYS = {Address(Area.R, 9091, 1): "TRUE", Address(Area.R, 9091, 0): "FALSE"}
+
+
+def address_text(address: Address) -> str:
+    """An address as S7 writes it (`%I0.0`, `%MB2`); the engine's own for the others."""
+    if address in _ALWAYS:
+        return _ALWAYS[address]
+    if address.area is Area.R and address.byte >= M_BYTES:
+        return str(address)  # a LadderWorks relay linking the parts of a network
+    return format_absolute(address) or str(address)
+
+
+def params_text(spec: InstructionSpec, params: tuple) -> list[str]:
+    """A box's operands: addresses in S7's spelling, labels as `L n`, the rest as numbers."""
+    texts: list[str] = []
+    for value in params:
+        if isinstance(value, Address):
+            texts.append(address_text(value))
+        else:
+            texts.append(str(value))
+    return texts
+
+
+def instruction_text(instruction: Instruction) -> str:
+    """One instruction on one line in S7's spelling (`RD %I0.0`, `TON D0 10000 %MB0`)."""
+    spec = instruction.spec
+    parts = [mnemonic_of(spec)]
+    if instruction.operand is not None:
+        parts.append(address_text(instruction.operand))
+    parts += params_text(spec, instruction.params)
+    return " ".join(parts)
+
+
+def spelling() -> Spelling:
+    """S7's display texts (core/dialects/spelling.py)."""
+    return Spelling("s7", address_text, params_text, instruction_text, mnemonic_of)

@@ -105,8 +105,9 @@ class _Link:
 class _Parser:
     """Recursive descent over the tokens."""
 
-    def __init__(self, toks: list[Token]) -> None:
+    def __init__(self, toks: list[Token], lines: list[str]) -> None:
         self.toks = toks
+        self.lines = lines  # the text's lines (an SCL network keeps its own)
         self.pos = 0
 
     # -- tokens ---------------------------------------------------------------------------
@@ -247,13 +248,13 @@ class _Parser:
         block.networks.append(network)
         inside = f"network {len(block.networks)}"
         if network.language.upper() not in ("LAD", "FBD"):
-            texts: list[str] = []
             while not self.word("END_NETWORK"):
                 if self.tok.kind == "end":
                     raise self.fail("END_NETWORK", inside)
-                texts.append(self.next().text)
-            network.source = " ".join(texts)
+                self.next()
             network.end_line = self.next().line
+            body = self.lines[start.line:network.end_line - 1]
+            network.source = "\n".join(line.rstrip() for line in body).strip("\n")
             return
         links: list[_Link] = []
         named: set[str] = set()
@@ -532,6 +533,6 @@ def parse_sd(text: str) -> Parsed:
         toks = tokens(text)
     except LexError as error:
         raise ParseError(error.diagnostic) from None
-    parser = _Parser(toks)
+    parser = _Parser(toks, text.split("\n"))
     parsed = parser.block()
     return parsed

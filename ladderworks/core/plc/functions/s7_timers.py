@@ -149,9 +149,9 @@ def tonr(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tu
         timer.start(now)
         return _finish(ctx, state, timer, False, 0, et_out, False)
     et = timer.get(4)
+    if was:  # the time since its last run counts while IN was 1 (computed when it runs)
+        et = min(et + timer.elapsed(now), pt)
     if signal:
-        if was:
-            et = min(et + timer.elapsed(now), pt)
         timer.start(now)
     return _finish(ctx, state, timer, et >= pt, et, et_out, signal and et < pt)
 

@@ -1,0 +1,54 @@
+"""The S7 example programs (seeds 001 and 003 in SIMATIC SD) pass their scenarios, with the
+engine skipping scans and running every scan alike; the CLI takes their tag names."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ladderworks.cli import main
+from ladderworks.core.il.printer import encode_program
+from ladderworks.core.il.reading import parse_file
+
+EXAMPLES = Path(__file__).resolve().parents[4] / "resources" / "examples" / "s7"
+NAMES = ("timers", "counters", "compare", "jumps", "jump_list", "switch")
+
+
+@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("every", [False, True])
+def test_the_example_passes_its_scenario(name: str, every: bool,
+                                         capsys: pytest.CaptureFixture[str]) -> None:
+    folder = EXAMPLES / name
+    args = ["test", *(["--every-scan"] if every else []), str(folder / "Main.s7dcl"),
+            str(folder / "Main.scenario.csv")]
+    assert main(args) == 0, capsys.readouterr().out
+    assert "1 passed, 0 failed" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_the_example_reads_without_diagnostics_and_saves_byte_for_byte(name: str) -> None:
+    path = EXAMPLES / name / "Main.s7dcl"
+    result = parse_file(path)
+    assert result.diagnostics == []
+    assert result.program.dialect == "s7"
+    assert encode_program(result.program) == path.read_bytes()
+
+
+def test_run_sets_and_prints_by_tag_name(capsys: pytest.CaptureFixture[str]) -> None:
+    path = EXAMPLES / "timers" / "Main.s7dcl"
+    assert main(["run", str(path), "--set", "Start=1", "--ms", "5010", "--scan-period", "10",
+                 "--print", "Lamba 1,Lamba 2,%MD0:4,Geçen Süre:4"]) == 0
+    assert capsys.readouterr().out.splitlines() == [
+        "Lamba 1 = 0", "Lamba 2 = 1", "%MD0:4 = 5000", "Geçen Süre:4 = 5000"]
+
+
+def test_check_of_a_folder_opens_it_as_one_program(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["check", str(EXAMPLES / "counters")]) == 0
+
+
+def test_network_titles_come_from_the_s7res_texts() -> None:
+    program = parse_file(EXAMPLES / "jumps" / "Main.s7dcl").program
+    titles = [net.comments[0] for net in program.networks if net.comments]
+    assert titles[:2] == ["Jump condition: skip network 2",
+                          "Skipped when jumping (keeps its output)"]
