@@ -81,8 +81,9 @@ class Dialect:
     def open_path(self, path: object, data: bytes | None
                   ) -> tuple[Program, list[Diagnostic], str]:
         """A file with its companion files, or a folder, as one program (`opener`)."""
-        opener = _function(self.opener)
-        return opener(path, data)  # type: ignore[no-any-return]
+        opener: Callable[[object, bytes | None], tuple[Program, list[Diagnostic], str]] = \
+            _function(self.opener)  # type: ignore[assignment]
+        return opener(path, data)
 
     def network_lines(self, network: Network, first: bool) -> list[str]:
         """A new or changed network as this dialect's text (Save, format)."""

@@ -88,7 +88,7 @@ def time_ms(text: str) -> int | None:
             return None
         total += float(match.group(1)) * _UNIT_MS[match.group(2).lower()]
         at = match.end()
-    return sign * int(round(total)) if at == len(body) and body else None
+    return sign * round(total) if at == len(body) and body else None
 
 
 def constant_type(text: str) -> typed.ValueType | None:

@@ -14,7 +14,6 @@ from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.diagnostics import Diagnostic, Severity
-from ladderworks.core.dialects.s7 import rows
 from ladderworks.core.dialects.s7.graph import Block, End, Operand, OperandKind, Part, S7Network
 from ladderworks.core.dialects.s7.layout import Layout, Place, constant_type, constant_value
 from ladderworks.core.il.program import Instruction, LabelRef, Network, ParamValue
@@ -228,10 +227,10 @@ class BlockLowering:
             if operand is None:
                 raise self.fail(index, part, "s7-pin-missing", part=name, pin="operand")
             other = self.power(graph, part, second, outputs) or ("bit", ALWAYS_OFF, False)
-            params = (self.bit_expr(operand, False, index, part)[1],)
+            flip_flop = (self.bit_expr(operand, False, index, part)[1],)
             first_power = self.power(graph, part, first, outputs) or ("bit", ALWAYS_OFF, False)
             return self.statement(part, [first_power, other], [Instruction(
-                "S7." + name.upper(), None, params, line=line)], self.keep(graph, part))
+                "S7." + name.upper(), None, flip_flop, line=line)], self.keep(graph, part))
         if name in ("PTrig", "NTrig"):
             memory = graph.operand_in.get((part.uid, "bit"))
             if memory is None:
@@ -253,7 +252,8 @@ class BlockLowering:
             tail.append(Instruction("S7.JMP", None, (LabelRef(target),), line=line))
             return self.statement(part, [power], tail, None)
         if name in ("JumpList", "Switch"):
-            return self.jump_table(index, graph, part, power)
+            self.jump_table(index, graph, part, power)
+            return None
         if name == "Call":
             raise self.fail(index, part, "s7-call-unknown", block=part.call)
         raise self.fail(index, part, "s7-part-unknown", part=name)
@@ -427,9 +427,9 @@ class BlockLowering:
             for (uid, pin), targets in graph.operand_out.items():
                 if uid == part.uid and pin.startswith("out"):
                     for operand in targets:
-                        target = self.place(index, part, operand)
-                        code.append(Instruction("S7.MOVE", None, (int(vtype), source,
-                                                                  target.address), line=line))
+                        code.append(Instruction("S7.MOVE", None, (
+                            int(vtype), source, self.place(index, part, operand).address),
+                            line=line))
             if not code:
                 raise self.fail(index, part, "s7-pin-missing", part=name, pin="OUT1")
             return self.statement(part, [power], code, self.keep(graph, part))
@@ -440,13 +440,13 @@ class BlockLowering:
             outs = graph.operand_out.get((part.uid, "out"), [])
             if not outs:
                 raise self.fail(index, part, "s7-pin-missing", part=name, pin="OUT")
-            target = self.place(index, part, outs[0])
+            place = self.place(index, part, outs[0])
             target_type = typed.type_of(keys.get("outtype", keys.get("desttype", ""))) or \
-                target.vtype or typed.ValueType.INT
+                place.vtype or typed.ValueType.INT
             source = self.value(index, part, graph.operand_in.get((part.uid, "in")), source_type,
                                 "in")
             code = [Instruction("S7.CONVERT", None, (int(source_type), int(target_type), source,
-                                                     target.address), line=line)]
+                                                     place.address), line=line)]
             return self.statement(part, [power], code, self.keep(graph, part))
         vtype = self.vtype(index, graph, part, ("in1", "in2", "out"))
         first = self.value(index, part, graph.operand_in.get((part.uid, "in1")), vtype, "in1")
@@ -490,7 +490,6 @@ class BlockLowering:
                 raise self.fail(index, part, "s7-label-unknown", label=otherwise)
             self.emit([Instruction("RD", keep, line=line),
                        Instruction("S7.JMP", None, (LabelRef(target),), line=line)])
-        return None
 
     def new_relay(self, index: int, part: Part) -> Address:
         byte, bit = divmod(self.scratch, 8)

@@ -14,10 +14,10 @@ from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.dialects.s7.graph import Block, S7Program
 from ladderworks.core.dialects.s7.layout import Layout
 from ladderworks.core.dialects.s7.lowering import lower_block
-from ladderworks.core.dialects.s7.sd_parser import ParseError, Parsed, parse_sd
+from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd
 from ladderworks.core.dialects.s7.tags import is_tag_table, read_tag_table
 from ladderworks.core.dialects.s7.texts import pick, read_texts
-from ladderworks.core.il.program import FileSource, Program
+from ladderworks.core.il.program import FileSource, Network, Program
 from ladderworks.core.il.textform import TextForm, decode_lines
 from ladderworks.core.symbols import Symbol, SymbolTable
 
@@ -57,8 +57,9 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
     for key, place in list(layout.places.items()):
         if key[0].startswith("#") or len(key) < 1:
             continue
-        member = layout.members.get(key)
-        name = ".".join([f'"{member.name if len(key) == 1 and member else key[0]}"', *key[1:]])
+        found = layout.members.get(key)
+        head = found.name if len(key) == 1 and found is not None else key[0]
+        name = ".".join([f'"{head}"', *key[1:]])
         if name not in table.by_symbol:
             table.by_symbol[name] = place.address
     # the instances' members (`"T1".Q`, `#Timer.ET`) resolve on demand in scenarios
@@ -74,7 +75,7 @@ def build(blocks: list[Parsed], tags: list, texts: dict[str, dict[str, str]],
     layout = Layout(program)
     code = [b for b in program.blocks if b.kind in ("OB", "FC", "FB")]
     entry = code[0] if code else None  # the file opened, or a folder's OB (put first)
-    networks = []
+    networks: list[Network] = []
     if entry is not None:
         networks, found = lower_block(entry, layout)
         diagnostics += found

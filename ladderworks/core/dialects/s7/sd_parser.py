@@ -55,7 +55,8 @@ _SIMPLE: dict[str, tuple[str, frozenset[str], str, str]] = {
     "eq_contact": ("Eq", frozenset(), "in", "out"), "ne_contact": ("Ne", frozenset(), "in", "out"),
     "gt_contact": ("Gt", frozenset(), "in", "out"), "lt_contact": ("Lt", frozenset(), "in", "out"),
     "ge_contact": ("Ge", frozenset(), "in", "out"), "le_contact": ("Le", frozenset(), "in", "out"),
-    "in_range": ("InRange", frozenset(), "in", "out"), "inrange": ("InRange", frozenset(), "in", "out"),
+    "in_range": ("InRange", frozenset(), "in", "out"),
+    "inrange": ("InRange", frozenset(), "in", "out"),
     "out_range": ("OutRange", frozenset(), "in", "out"),
     "outrange": ("OutRange", frozenset(), "in", "out"),
     "not": ("Not", frozenset(), "in", "out"),
@@ -187,7 +188,7 @@ class _Parser:
         depth = 0
         while not (depth == 0 and (self.op(";", ":=") or self.tok.kind == "end")):
             tok = self.next()
-            depth += tok.text == "[" and 1 or tok.text == "]" and -1 or 0
+            depth += {"[": 1, "]": -1}.get(tok.text, 0)
             parts.append(tok.text)
             if self.word("END_VAR") or self.tok.kind == "pragma":
                 break
@@ -390,7 +391,9 @@ class _Parser:
             if not pin:
                 pin = _SINGLE.get(part.name, "operand")
             if pin == "label" or (part.name == "Label"):
-                part.label = _unquote(value.path[0] if value.path else value.text)
+                name = value if isinstance(value, str) else value.path[0] if value.path \
+                    else value.text
+                part.label = _unquote(name)
                 continue
             if isinstance(value, str):  # a wire as a pin's power
                 wires.append(Wire(End(part="@" + value), [End(part=part.uid, pin=pin)],

@@ -6,16 +6,17 @@ from __future__ import annotations
 
 import operator
 from collections.abc import Callable
+from typing import Any
 
 from ladderworks.core.plc import typed
 from ladderworks.core.plc.functions import FunctionContext, FunctionImpl, function
 
-_TESTS: dict[str, Callable[[object, object], bool]] = {
+_TESTS: dict[str, Callable[[Any, Any], Any]] = {
     "S7.EQ": operator.eq, "S7.NE": operator.ne, "S7.GT": operator.gt, "S7.LT": operator.lt,
     "S7.GE": operator.ge, "S7.LE": operator.le}
 
 
-def _comparison(name: str, test: Callable[[object, object], bool]) -> FunctionImpl:
+def _comparison(name: str, test: Callable[[Any, Any], Any]) -> FunctionImpl:
     def compare(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
                 params: tuple) -> bool:
         vtype = typed.ValueType(params[0])
@@ -36,7 +37,7 @@ for _name, _test in _TESTS.items():
 def _range(ctx: FunctionContext, params: tuple) -> bool:
     vtype = typed.ValueType(params[0])
     low, value, high = (typed.read(ctx.memory, p, vtype) for p in params[1:4])
-    return bool(low <= value <= high)  # type: ignore[operator]
+    return bool(low <= value <= high)
 
 
 @function("S7.IN_RANGE")
