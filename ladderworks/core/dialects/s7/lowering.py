@@ -236,7 +236,7 @@ class BlockLowering:
             return self.counter(index, graph, part, power, outputs)
         if name in ("Sr", "Rs"):
             first, second = ("s", "r1") if name == "Sr" else ("r", "s1")
-            operand = graph.operand_in.get((part.uid, "operand"))
+            operand = graph.operand_in.get((part.uid, "operand")) or part.instance
             if operand is None:
                 raise self.fail(index, part, "s7-pin-missing", part=name, pin="operand")
             other = self.power(graph, part, second, outputs) or ("bit", ALWAYS_OFF, False)

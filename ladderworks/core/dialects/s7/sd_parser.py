@@ -459,6 +459,8 @@ def _unquote(text: str) -> str:
 
 def _operand_of(path: list[Token]) -> Operand:
     head = path[0]
+    if head.kind == "absolute":
+        return Operand(OperandKind.ABSOLUTE, (head.text,), head.text)
     names = tuple(_unquote(t.text.lstrip("#")) for t in path)
     kind = OperandKind.LOCAL if head.kind == "local" else OperandKind.GLOBAL
     if head.kind == "word":  # a bare name: the lowering looks it up as a local first
