@@ -175,6 +175,8 @@ class BlockLowering:
 
     def place(self, index: int, part: Part, operand: Operand, instance: str = "") -> Place:
         found = self.layout.resolve(self.block, operand, instance, self.scope)
+        if found is None and self.layout.full:
+            raise self.fail(index, part, "s7-memory-full", text=operand.display())
         if found is None:
             raise self.fail(index, part, "s7-operand-unknown", text=operand.display())
         return found

@@ -187,3 +187,14 @@ def test_a_changed_s7_program_is_refused_at_save_and_the_file_kept(tmp_path: Pat
     with pytest.raises(DiagnosticError) as caught:
         encode_program(program)
     assert caught.value.diagnostic.code == "s7-save-changed"
+
+
+def test_too_many_instances_for_the_d_area_is_a_diagnostic_not_a_crash() -> None:
+    networks = "".join(
+        f' NETWORK\n  RUNG wire#powerrail\n   Contact( %I0.0 )\n   "T{n}".TON( pt := T#1s )\n'
+        f'   Coil( %Q0.0 )\n  END_RUNG\n END_NETWORK\n' for n in range(700))
+    text = f'ORGANIZATION_BLOCK "Main"\n{networks}END_ORGANIZATION_BLOCK\n'
+    result = parse_bytes(text.encode("utf-8"))
+    codes = {d.code for d in result.diagnostics}
+    assert codes == {"s7-memory-full"}
+    assert result.diagnostics[0].args["network"] == 626  # 625 timers of 16 bytes fit
