@@ -1257,11 +1257,16 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
+        <translation>the file has {size} MB: S7 exports over {limit} MB are not read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>tag table: {why}</source>
         <translation>tag table: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
         <source>a changed S7 block cannot be written yet: save it in TIA Portal</source>
         <translation>a changed S7 block cannot be written yet: save it in TIA Portal</translation>
     </message>
@@ -1977,7 +1982,7 @@
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="431"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
         <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Untitled</source>
@@ -2007,7 +2012,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="151"/>
         <location filename="../ladderworks/gui/file_actions.py" line="169"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="455"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
@@ -2037,83 +2042,84 @@
         <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.s7dcl *.S7DCL);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Siemens S7-1200 SIMATIC SD blocks (*.s7dcl *.S7DCL);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="285"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="279"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="341"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="285"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="342"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="317"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="320"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="322"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="325"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="350"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="351"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="359"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="357"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="377"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="375"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="378"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="402"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>

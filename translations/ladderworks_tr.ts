@@ -1257,11 +1257,16 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="362"/>
+        <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
+        <translation>dosya {size} MB: {limit} MB üzerindeki S7 dışa aktarımları okunmaz</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>tag table: {why}</source>
         <translation>etiket tablosu: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="366"/>
         <source>a changed S7 block cannot be written yet: save it in TIA Portal</source>
         <translation>değiştirilmiş bir S7 bloğu henüz yazılamıyor: TIA Portal&apos;da kaydedin</translation>
     </message>
@@ -1977,7 +1982,7 @@
         <translation>Derleme bitti: {0} byte, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="431"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
         <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Untitled</source>
@@ -2007,7 +2012,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="151"/>
         <location filename="../ladderworks/gui/file_actions.py" line="169"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="455"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
@@ -2037,83 +2042,84 @@
         <translation>Ladder ve mnemonik programlar (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.s7dcl *.S7DCL);;Ladder programları (*.LAD *.lad);;Mnemonik programlar (*.MOD *.mod *.mnc *.MNC);;LADDER-III dışa aktarımları (*.txt *.TXT *.mnc *.MNC);;Delta DVP komut listeleri (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listeleri (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Siemens S7-1200 SIMATIC SD blokları (*.s7dcl *.S7DCL);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="285"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="279"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="341"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="285"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="288"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Ladder olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="342"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="317"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="320"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="322"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="325"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="350"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="351"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programları (*.LAD *.lad);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="359"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="357"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="377"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="375"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="378"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="402"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>

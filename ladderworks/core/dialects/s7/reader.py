@@ -102,6 +102,10 @@ def _source(program: Program, form: TextForm, lines: list[str], ends: list[str])
 
 
 def _parse(text: str, diagnostics: list[Diagnostic]) -> Parsed | None:
+    if len(text) > MAX_BYTES:
+        diagnostics.append(Diagnostic("s7-too-large", {"size": len(text) >> 20,
+                                                       "limit": MAX_BYTES >> 20}, 1, 1))
+        return None
     try:
         return parse_sd(text)
     except ParseError as error:
@@ -122,8 +126,8 @@ def read(text: str, form: TextForm, lines: list[str],
 def _read_text(path: Path, diagnostics: list[Diagnostic]) -> str | None:
     try:
         if path.stat().st_size > MAX_BYTES:
-            diagnostics.append(Diagnostic("s7-syntax", {"expected": "a file under 64 MB",
-                                                        "found": path.name}, 0, 0))
+            diagnostics.append(Diagnostic("s7-too-large", {
+                "size": path.stat().st_size >> 20, "limit": MAX_BYTES >> 20}, 0, 0))
             return None
         return path.read_bytes().decode("utf-8-sig", "replace")
     except OSError:

@@ -228,3 +228,14 @@ def test_start_values_are_written_in_the_first_scan() -> None:
     engine.memory.write(at, 9, 2)
     engine.scan()
     assert engine.memory.read(at, 2) == 9  # only in the first scan
+
+
+def test_a_huge_file_is_refused_not_parsed(tmp_path: Path) -> None:
+    path = tmp_path / "Huge.s7dcl"
+    head = b'ORGANIZATION_BLOCK "Main"\n NETWORK\n  RUNG wire#powerrail\n'
+    with path.open("wb") as file:
+        file.write(head)
+        file.write(b"   Contact( %I0.0 )\n" * (65 * 1024 * 1024 // 20))
+    result = parse_file(path)
+    assert [d.code for d in result.diagnostics] == ["s7-too-large"]
+    assert result.program.networks == []
