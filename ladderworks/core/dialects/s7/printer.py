@@ -1,10 +1,10 @@
-"""Writing S7 programs: an unchanged block is saved byte for byte by the faithful save; a new or
-changed network cannot be written as SIMATIC SD yet, so Save refuses it with a message."""
+"""S7 programs as text: the S7 spelling of the engine's networks (display, `format`). An unchanged
+block is saved byte for byte by the faithful save; a changed one cannot be written as SIMATIC
+SD yet, so Save refuses it (`Dialect.refuse_changes`)."""
 
 from __future__ import annotations
 
 from ladderworks.core.address import Address, Area
-from ladderworks.core.diagnostics import Refused
 from ladderworks.core.dialects.s7.devices import M_BYTES, format_absolute
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, Network
@@ -12,8 +12,12 @@ from ladderworks.core.instructions import InstructionSpec
 
 
 def network_lines(network: Network, first: bool) -> list[str]:
-    """Refused: a changed S7 block is saved from TIA Portal (docs/dialects.md, S7-1200)."""
-    raise Refused("s7-save-changed")
+    """An engine network as LadderWorks' listing in S7 spelling, each line a `//` comment (the
+    CLI's `format` and `mnemonic`): not SIMATIC SD. Save never writes these: a changed S7
+    program is refused first (`Dialect.refuse_changes`, docs/dialects.md)."""
+    lines = [f"// {comment}" for comment in network.comments]
+    lines += [f"//   {instruction_text(instruction)}" for instruction in network.instructions]
+    return lines
 
 
 def mnemonic_of(spec: InstructionSpec) -> str:

@@ -96,3 +96,10 @@ def test_the_pytest_plugin_runs_an_fc_alone(pytester: pytest.Pytester) -> None:
             (pytester.path / path.name).write_bytes(path.read_bytes())
     result = pytester.runpytest_inprocess("-p", "ladderworks.pytest_plugin", "-q")
     result.assert_outcomes(passed=1)
+
+
+@pytest.mark.parametrize("command", ["check", "ladder", "mnemonic", "xref", "format"])
+def test_every_listing_command_reads_an_s7_folder(command: str,
+                                                  capsys: pytest.CaptureFixture[str]) -> None:
+    assert main([command, str(EXAMPLES / "calls" / "Main.s7dcl")]) == 0
+    assert capsys.readouterr().out
