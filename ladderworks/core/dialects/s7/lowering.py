@@ -215,11 +215,8 @@ class BlockLowering:
         name = part.name
         if name == "Label":
             return None
-        if name == "O":
-            pins = sorted((pin for (uid, pin) in graph.power_in if uid == part.uid),
-                          key=lambda p: (len(p), p))
-            terms = [t for t in (self.power(graph, part, pin, outputs) for pin in pins) if t]
-            return ("or", terms) if len(terms) > 1 else terms[0] if terms else None
+        if name in ("O", "A", "X"):  # LAD's OR of branches; FBD's & / >=1 / X boxes
+            return self.gate(graph, part, outputs)
         power = self.main_power(graph, part, outputs)
         line = part.line
         if name in ("Contact", "PContact", "NContact"):
@@ -283,6 +280,25 @@ class BlockLowering:
         if name == "Call":
             return calls.lower_call(self, index, graph, part, power, outputs)
         raise self.fail(index, part, "s7-part-unknown", part=name)
+
+    def gate(self, graph: PinGraph, part: Part, outputs: dict[str, Expr | None]) -> Expr | None:
+        """O (OR), A (AND), X (XOR of two) of the inputs in1 … inN, a negated pin inverted; an
+        input wired to nothing is 0 (an operand wired to it is read)."""
+        pins = sorted({pin for (uid, pin) in (*graph.power_in, *graph.operand_in)
+                       if uid == part.uid and pin.startswith("in")}, key=lambda p: (len(p), p))
+        terms: list[Expr] = []
+        for pin in pins:
+            term = self.power(graph, part, pin, outputs) or ("bit", ALWAYS_OFF, False)
+            terms.append(("not", term) if pin in part.negated else term)
+        if not terms:
+            return None
+        if part.name == "O" and len(terms) > 1:
+            return ("or", terms)
+        result = terms[0]
+        for term in terms[1:]:
+            result = ("and", result, term) if part.name == "A" else (
+                "or", [("and", result, ("not", term)), ("and", ("not", result), term)])
+        return result
 
     def value(self, index: int, part: Part, operand: Operand | None, vtype: typed.ValueType,
               pin: str) -> ParamValue:

@@ -174,3 +174,72 @@ def test_ret_in_a_called_fc_leaves_only_the_fc(tmp_path: Path) -> None:
     assert outputs(1, 1) == (1, 1, 1)  # RET: the FC's last network skipped, OB1 goes on
     assert outputs(1, 0) == (0, 1, 1)  # the FC runs to its end: q reset
     assert outputs(0, 1) == (0, 0, 1)  # EN 0: the FC does not run, its output kept
+
+
+def test_fbd_and_xor_boxes_with_a_negated_input() -> None:
+    """A graph as the XML reader builds it for FBD: & and X boxes, in2 of the & negated."""
+    from ladderworks.core.dialects.s7.graph import (
+        Block,
+        End,
+        Operand,
+        OperandKind,
+        Part,
+        S7Network,
+        S7Program,
+        Wire,
+    )
+    from ladderworks.core.dialects.s7.layout import Layout
+    from ladderworks.core.dialects.s7.lowering import lower_block
+    from ladderworks.core.il.program import Program
+
+    def bit(text: str) -> Operand:
+        return Operand(OperandKind.ABSOLUTE, (text,), text)
+
+    network = S7Network(language="FBD", parts=[
+        Part("1", "A", negated=frozenset({"in2"})), Part("2", "X"), Part("3", "Coil"),
+        Part("4", "Coil")])
+    network.wires = [
+        Wire(End(operand=bit("%I0.0")), [End(part="1", pin="in1")]),
+        Wire(End(operand=bit("%I0.1")), [End(part="1", pin="in2")]),
+        Wire(End(part="1", pin="out"), [End(part="3", pin="in"), End(part="2", pin="in1")]),
+        Wire(End(operand=bit("%Q0.0")), [End(part="3", pin="operand")]),
+        Wire(End(operand=bit("%I0.2")), [End(part="2", pin="in2")]),
+        Wire(End(part="2", pin="out"), [End(part="4", pin="in")]),
+        Wire(End(operand=bit("%Q0.1")), [End(part="4", pin="operand")])]
+    block = Block("OB", "Main", networks=[network])
+    networks, diagnostics = lower_block(block, Layout(S7Program([block])))
+    assert diagnostics == []
+    compiled = compile_program(Program(networks=networks, dialect="s7"))
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    memory = engine.memory
+    for a, b, c in product((0, 1), repeat=3):
+        for name, value in (("%I0.0", a), ("%I0.1", b), ("%I0.2", c)):
+            memory.set_bit(parse_absolute(name)[0], value)
+        engine.scan()
+        both = int(a and not b)
+        assert memory.bit(parse_absolute("%Q0.0")[0]) == both
+        assert memory.bit(parse_absolute("%Q0.1")[0]) == both ^ c
+
+
+@pytest.mark.parametrize("monitored", [False, True])
+def test_an_inversion_after_a_joined_block_keeps_the_block(monitored: bool) -> None:
+    """The code generator: NOT on a pushed value must not change a joined value below it
+    (it named the same stack variable: fixed in codegen.stack_op, every dialect's INV/MPS)."""
+    from ladderworks.core.address import Address, Area
+    from ladderworks.core.il.program import Instruction, Network, Program
+
+    def x(n: int) -> Address:
+        return Address(Area.X, 0, n)
+
+    code = [Instruction("RD", x(0)), Instruction("RD.STK", x(1)), Instruction("S7.NOT"),
+            Instruction("AND.STK"), Instruction("RD.STK", x(2)), Instruction("S7.NOT"),
+            Instruction("AND.STK"), Instruction("WRT", Address(Area.Y, 0, 0))]
+    compiled = compile_program(Program(networks=[Network(code)], dialect="s7"))
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary, monitored=monitored)
+    for a, b, c in product((0, 1), repeat=3):
+        for n, value in enumerate((a, b, c)):
+            engine.memory.set_bit(x(n), value)
+        engine.scan()
+        assert engine.memory.bit(Address(Area.Y, 0, 0)) == int(a and not b and not c)
