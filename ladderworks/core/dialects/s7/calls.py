@@ -10,41 +10,12 @@ same place a scenario or another network names) or a multi-instance in the calle
 
 from __future__ import annotations
 
-from typing import Protocol
-
-from ladderworks.core.address import Address
-from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, Part
-from ladderworks.core.dialects.s7.layout import Layout, Place
+from ladderworks.core.dialects.s7.layout import Place
+from ladderworks.core.dialects.s7.lowerer import BlockLowering
 from ladderworks.core.dialects.s7.stack import ALWAYS_ON, Expr, PinGraph
-from ladderworks.core.il.program import Instruction, LabelRef, Network, ParamValue
+from ladderworks.core.il.program import Instruction, LabelRef
 from ladderworks.core.plc import typed
-
-
-class BlockLowering(Protocol):
-    """What a call needs of the lowering of the block that calls (lowering.BlockLowering)."""
-
-    block: Block
-    layout: Layout
-    scope: tuple[str, ...]
-    depth: int
-    networks: list[Network]
-    diagnostics: list[Diagnostic]
-
-    def fail(self, index: int, where: Part | None, code: str, **args: object) -> Exception: ...
-    def new_relay(self, index: int, part: Part) -> Address: ...
-    def new_label(self) -> int: ...
-    def emit(self, instructions: list[Instruction]) -> None: ...
-    def statement(self, part: Part, inputs: list[Expr], tail: list[Instruction],
-                  keep: Address | None) -> Expr | None: ...
-    def bit_expr(self, operand: Operand, negated: bool, index: int, part: Part) -> Expr: ...
-    def value(self, index: int, part: Part, operand: Operand | None,
-              vtype: typed.ValueType, pin: str) -> ParamValue: ...
-    def place(self, index: int, part: Part, operand: Operand, instance: str = "") -> Place: ...
-    def power(self, graph: PinGraph, part: Part, pin: str,
-              outputs: dict[str, Expr | None]) -> Expr | None: ...
-    def lower_callee(self, callee: Block, scope: tuple[str, ...]
-                     ) -> tuple[list[Network], list[Diagnostic]]: ...
 
 MAX_DEPTH = 8
 _IN, _OUT = ("Input", "InOut"), ("Output", "InOut")

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.diagnostics import Diagnostic, Severity
-from ladderworks.core.dialects.s7 import calls
+from ladderworks.core.dialects.s7 import boxes, calls
 from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, Part, S7Network
 from ladderworks.core.dialects.s7.layout import Layout, Place, constant_type, constant_value
 from ladderworks.core.dialects.s7.stack import ALWAYS_OFF, ALWAYS_ON, Expr, PinGraph, emit_expr
@@ -28,7 +28,6 @@ PURE = {"Eq": "S7.EQ", "Ne": "S7.NE", "Gt": "S7.GT", "Lt": "S7.LT", "Ge": "S7.GE
         "NotOk": "S7.NOT_OK"}
 TIMERS = {"TP": "S7.TP", "TON": "S7.TON", "TOF": "S7.TOF", "TONR": "S7.TONR"}
 COUNTERS = {"CTU": "S7.CTU", "CTD": "S7.CTD", "CTUD": "S7.CTUD"}
-MATH = {"Add": "S7.ADD", "Sub": "S7.SUB", "Mul": "S7.MUL", "Div": "S7.DIV"}
 COILS = {"Coil": "WRT", "SCoil": "SET", "RCoil": "RST"}
 _TEMPLATE_KEYS = ("srctype", "src_type", "time_type", "timetype", "counttype", "count_type",
                   "value_type", "valuetype", "type")
@@ -262,8 +261,8 @@ class BlockLowering:
             return self.statement(part, [power], [Instruction(
                 row, None, (self.bit_expr(memory, False, index, part)[1],), line=line)],
                 self.keep(graph, part))
-        if name in ("Move", "Convert", "Inc", "Dec") or name in MATH:
-            return self.box(index, graph, part, power)
+        if name in ("Move", "Convert", "Inc", "Dec") or name in boxes.MATH:
+            return boxes.box(self, index, graph, part, power)
         if name in ("Jump", "JumpN", "Return"):
             if name == "Return":
                 target = self.end_label
@@ -275,7 +274,7 @@ class BlockLowering:
             tail.append(Instruction("S7.JMP", None, (LabelRef(target),), line=line))
             return self.statement(part, [power], tail, None)
         if name in ("JumpList", "Switch"):
-            self.jump_table(index, graph, part, power)
+            boxes.jump_table(self, index, graph, part, power)
             return None
         if name == "Call":
             return calls.lower_call(self, index, graph, part, power, outputs)
@@ -448,88 +447,6 @@ class BlockLowering:
                                 self.keep(graph, part) or self.q_keep(graph, part))
         self.q_operands(index, graph, part, result, "qu" if part.name == "CTUD" else "q")
         return result
-
-    def box(self, index: int, graph: PinGraph, part: Part, power: Expr) -> Expr | None:
-        name, line = part.name, part.line
-        if name in ("Inc", "Dec"):
-            operand = graph.operand_in.get((part.uid, "operand")) or graph.operand_in.get(
-                (part.uid, "inout")) or graph.operand_in.get((part.uid, "in_out"))
-            if operand is None:
-                raise self.fail(index, part, "s7-pin-missing", part=name, pin="IN/OUT")
-            vtype = self.vtype(index, graph, part, ("operand", "inout", "in_out"))
-            target = self.place(index, part, operand).address
-            code = [Instruction("S7." + name.upper(), None, (int(vtype), target), line=line)]
-            return self.statement(part, [power], code, self.keep(graph, part))
-        if name == "Move":
-            vtype = self.vtype(index, graph, part, ("in", "out1"))
-            source = self.value(index, part, graph.operand_in.get((part.uid, "in")), vtype, "in")
-            code = []
-            for (uid, pin), targets in graph.operand_out.items():
-                if uid == part.uid and pin.startswith("out"):
-                    for operand in targets:
-                        code.append(Instruction("S7.MOVE", None, (
-                            int(vtype), source, self.place(index, part, operand).address),
-                            line=line))
-            if not code:
-                raise self.fail(index, part, "s7-pin-missing", part=name, pin="OUT1")
-            return self.statement(part, [power], code, self.keep(graph, part))
-        if name == "Convert":
-            keys = {k.lower(): v for k, v in part.template.items()}
-            source_type = typed.type_of(keys.get("intype", keys.get("srctype", ""))) or \
-                self.vtype(index, graph, part, ("in",))
-            outs = graph.operand_out.get((part.uid, "out"), [])
-            if not outs:
-                raise self.fail(index, part, "s7-pin-missing", part=name, pin="OUT")
-            place = self.place(index, part, outs[0])
-            target_type = typed.type_of(keys.get("outtype", keys.get("desttype", ""))) or \
-                place.vtype or typed.ValueType.INT
-            source = self.value(index, part, graph.operand_in.get((part.uid, "in")), source_type,
-                                "in")
-            code = [Instruction("S7.CONVERT", None, (int(source_type), int(target_type), source,
-                                                     place.address), line=line)]
-            return self.statement(part, [power], code, self.keep(graph, part))
-        vtype = self.vtype(index, graph, part, ("in1", "in2", "out"))
-        first = self.value(index, part, graph.operand_in.get((part.uid, "in1")), vtype, "in1")
-        second = self.value(index, part, graph.operand_in.get((part.uid, "in2")), vtype, "in2")
-        outs = graph.operand_out.get((part.uid, "out"), [])
-        if not outs:
-            raise self.fail(index, part, "s7-pin-missing", part=name, pin="OUT")
-        code = [Instruction(MATH[name], None, (int(vtype), first, second,
-                                               self.place(index, part, outs[0]).address),
-                            line=line)]
-        return self.statement(part, [power], code, self.keep(graph, part))
-
-    def jump_table(self, index: int, graph: PinGraph, part: Part, power: Expr) -> None:
-        """JMP_LIST: K = n jumps to DEST n, beyond them the next network (003:552-578). SWITCH:
-        the first comparison that holds jumps to its DEST, none: ELSE (003:653-677)."""
-        vtype = self.vtype(index, graph, part, ("k",))
-        k = self.value(index, part, graph.operand_in.get((part.uid, "k")), vtype, "k")
-        keep = self.new_relay(index, part)
-        self.statement(part, [power], [], keep)
-        line = part.line
-        cases: list[tuple[str, ParamValue, str]] = []
-        if part.name == "JumpList":
-            cases = [("S7.EQ", n, dest) for n, dest in enumerate(part.dests)]
-        else:
-            for n, dest in enumerate(part.dests, start=1):
-                relation = part.template.get(f"op{n}", "EQ").upper()
-                operand = graph.operand_in.get((part.uid, f"{relation.lower()}{n}"))
-                cases.append(("S7." + relation, self.value(index, part, operand, vtype,
-                                                           relation), dest))
-        for row, value, dest in cases:
-            target = self.labels.get(dest.lower())
-            if target is None:
-                raise self.fail(index, part, "s7-label-unknown", label=dest)
-            self.emit([Instruction("RD", keep, line=line),
-                       Instruction(row, None, (int(vtype), k, value), line=line),
-                       Instruction("S7.JMP", None, (LabelRef(target),), line=line)])
-        otherwise = part.template.get("else", "")
-        if otherwise:
-            target = self.labels.get(otherwise.lower())
-            if target is None:
-                raise self.fail(index, part, "s7-label-unknown", label=otherwise)
-            self.emit([Instruction("RD", keep, line=line),
-                       Instruction("S7.JMP", None, (LabelRef(target),), line=line)])
 
     def new_relay(self, index: int, part: Part) -> Address:
         """A LadderWorks relay of its own for a link inside a network."""

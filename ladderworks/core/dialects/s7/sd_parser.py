@@ -25,58 +25,21 @@ from ladderworks.core.dialects.s7.graph import (
     Wire,
 )
 from ladderworks.core.dialects.s7.sd_lexer import LexError, Token, pragma_items, templates, tokens
+from ladderworks.core.dialects.s7.sd_rungs import (
+    CMP,
+    INSTANCE,
+    SIMPLE,
+    SINGLE,
+    Link,
+    pins,
+    resolve_links,
+    wire_ref,
+)
 
 _BLOCKS = {"ORGANIZATION_BLOCK": "OB", "FUNCTION": "FC", "FUNCTION_BLOCK": "FB",
            "DATA_BLOCK": "GlobalDB"}
 _SECTIONS = {"VAR_INPUT": "Input", "VAR_OUTPUT": "Output", "VAR_IN_OUT": "InOut",
              "VAR": "Static", "VAR_STAT": "Static", "VAR_TEMP": "Temp"}
-# SD element → (graph part name, negated pins, main input pin, main output pin)
-_SIMPLE: dict[str, tuple[str, frozenset[str], str, str]] = {
-    "contact": ("Contact", frozenset(), "in", "out"),
-    "i_contact": ("Contact", frozenset({"operand"}), "in", "out"),
-    "p_contact": ("PContact", frozenset(), "in", "out"),
-    "n_contact": ("NContact", frozenset(), "in", "out"),
-    "coil": ("Coil", frozenset(), "in", "out"),
-    "i_coil": ("Coil", frozenset({"operand"}), "in", "out"),
-    "s_coil": ("SCoil", frozenset(), "in", "out"),
-    "r_coil": ("RCoil", frozenset(), "in", "out"),
-    "p_coil": ("PCoil", frozenset(), "in", "out"),
-    "n_coil": ("NCoil", frozenset(), "in", "out"),
-    "pt_coil": ("PTCoil", frozenset(), "in", "out"),
-    "rt_coil": ("RTCoil", frozenset(), "in", "out"),
-    "jumpcoil": ("Jump", frozenset(), "en", ""),
-    "i_jumpcoil": ("JumpN", frozenset(), "en", ""),
-    "return": ("Return", frozenset(), "en", ""),
-    "returntrue": ("Return", frozenset(), "en", ""),
-    "returnfalse": ("Return", frozenset(), "en", ""),
-    "returncoil": ("Return", frozenset(), "en", ""),
-    "isvalidcontact": ("Ok", frozenset(), "in", "out"),
-    "isnotvalidcontact": ("NotOk", frozenset(), "in", "out"),
-    "eq_contact": ("Eq", frozenset(), "in", "out"), "ne_contact": ("Ne", frozenset(), "in", "out"),
-    "gt_contact": ("Gt", frozenset(), "in", "out"), "lt_contact": ("Lt", frozenset(), "in", "out"),
-    "ge_contact": ("Ge", frozenset(), "in", "out"), "le_contact": ("Le", frozenset(), "in", "out"),
-    "in_range": ("InRange", frozenset(), "in", "out"),
-    "inrange": ("InRange", frozenset(), "in", "out"),
-    "out_range": ("OutRange", frozenset(), "in", "out"),
-    "outrange": ("OutRange", frozenset(), "in", "out"),
-    "not": ("Not", frozenset(), "in", "out"),
-    "p_trig": ("PTrig", frozenset(), "in", "out"), "n_trig": ("NTrig", frozenset(), "in", "out"),
-    "move": ("Move", frozenset(), "en", "eno"), "add": ("Add", frozenset(), "en", "eno"),
-    "sub": ("Sub", frozenset(), "en", "eno"), "mul": ("Mul", frozenset(), "en", "eno"),
-    "div": ("Div", frozenset(), "en", "eno"), "inc": ("Inc", frozenset(), "en", "eno"),
-    "dec": ("Dec", frozenset(), "en", "eno"), "convert": ("Convert", frozenset(), "en", "eno"),
-    "jumplist": ("JumpList", frozenset(), "en", ""), "switch": ("Switch", frozenset(), "en", ""),
-}
-_CMP = {"==": "Eq", "<>": "Ne", ">": "Gt", "<": "Lt", ">=": "Ge", "<=": "Le"}
-# `<instance>.TON(…)` and the counters: part name, main input, main output
-_INSTANCE = {"tp": ("TP", "in", "q"), "ton": ("TON", "in", "q"), "tof": ("TOF", "in", "q"),
-             "tonr": ("TONR", "in", "q"), "ctu": ("CTU", "cu", "q"), "ctd": ("CTD", "cd", "q"),
-             "ctud": ("CTUD", "cu", "qu"), "s_sr": ("Sr", "s", "q"), "s_rs": ("Rs", "r", "q")}
-# the pin a single argument `Name( x )` goes to, by part name
-_SINGLE = {"Jump": "label", "JumpN": "label", "Label": "label", "Sr": "r1", "Rs": "s1",
-           "PTrig": "bit", "NTrig": "bit", "Return": "operand"}
-
-
 class ParseError(Exception):
     """The SD text cannot be read on; `diagnostic` says where."""
 
@@ -92,15 +55,6 @@ class Parsed:
     block: Block
     title_ids: list[tuple[str, str]] = field(default_factory=list)  # per network (title, comment)
     block_ids: tuple[str, str] = ("", "")
-
-
-@dataclass(slots=True)
-class _Link:
-    """A connection before named wires are resolved: ("wire", name) / ("end", End) → End."""
-
-    source: tuple[str, object]
-    target: End
-    line: int
 
 
 class _Parser:
@@ -275,7 +229,7 @@ class _Parser:
             body = self.lines[start.line:network.end_line - 1]
             network.source = "\n".join(line.rstrip() for line in body).strip("\n")
             return
-        links: list[_Link] = []
+        links: list[Link] = []
         named: set[str] = set()
         while not self.word("END_NETWORK"):
             if self.tok.kind == "end":
@@ -289,14 +243,14 @@ class _Parser:
                 raise self.fail("RUNG or END_NETWORK", inside)
             self.rung(network, links, named, f"a rung of {inside}")
         network.end_line = self.next().line
-        _resolve(network, links)
+        resolve_links(network, links)
 
-    def rung(self, network: S7Network, links: list[_Link], named: set[str], inside: str) -> None:
+    def rung(self, network: S7Network, links: list[Link], named: set[str], inside: str) -> None:
         self.next()
         if self.tok.kind != "wire":
             raise self.fail("wire#powerrail or wire#name", inside)
         first = self.next()
-        current: tuple[str, object] = _wire_ref(first.text)
+        current: tuple[str, object] = wire_ref(first.text)
         pending: dict[str, str] = {}
         while not self.word("END_RUNG"):
             tok = self.tok
@@ -309,8 +263,8 @@ class _Parser:
                 continue
             if tok.kind == "wire":
                 self.next()
-                ref = _wire_ref(tok.text)
-                links.append(_Link(current, End(part="@" + str(ref[1])), tok.line))
+                ref = wire_ref(tok.text)
+                links.append(Link(current, End(part="@" + str(ref[1])), tok.line))
                 named.add(str(ref[1]))
                 current = ref
                 continue
@@ -318,15 +272,15 @@ class _Parser:
             pending = {}
             if part is None:
                 continue
-            main_in, main_out = _pins(part)
+            main_in, main_out = pins(part)
             if main_in:
-                links.append(_Link(current, End(part=part.uid, pin=main_in), tok.line))
+                links.append(Link(current, End(part=part.uid, pin=main_in), tok.line))
             current = ("end", End(part=part.uid, pin=main_out)) if main_out else ("none", None)
         self.next()
         if self.tok.kind == "wire":
             tok = self.next()
-            ref = _wire_ref(tok.text)
-            links.append(_Link(current, End(part="@" + str(ref[1])), tok.line))
+            ref = wire_ref(tok.text)
+            links.append(Link(current, End(part="@" + str(ref[1])), tok.line))
 
     def element(self, network: S7Network, inside: str,
                 pending: dict[str, str]) -> Part | None:
@@ -335,7 +289,7 @@ class _Parser:
         path: list[Token] = [self.next()]
         if start.kind == "word" and start.text.upper() == "CMP" and self.tok.kind == "op":
             symbol = self.next().text
-            part = Part(str(len(network.parts) + 1), _CMP.get(symbol, "CMP " + symbol),
+            part = Part(str(len(network.parts) + 1), CMP.get(symbol, "CMP " + symbol),
                         line=start.line)
         else:
             while self.op("."):
@@ -351,14 +305,14 @@ class _Parser:
     def make_part(self, network: S7Network, path: list[Token], start: Token) -> Part:
         uid = str(len(network.parts) + 1)
         last = path[-1].text.lower()
-        if len(path) == 1 and path[0].kind == "word" and last in _SIMPLE:
-            name, negated, _in, _out = _SIMPLE[last]
+        if len(path) == 1 and path[0].kind == "word" and last in SIMPLE:
+            name, negated, _in, _out = SIMPLE[last]
             return Part(uid, name, negated=negated, line=start.line)
         if len(path) == 1 and last == "label":
             return Part(uid, "Label", line=start.line)
-        if len(path) > 1 and last in _INSTANCE and path[-1].kind == "word":
+        if len(path) > 1 and last in INSTANCE and path[-1].kind == "word":
             instance = _operand_of(path[:-1])
-            return Part(uid, _INSTANCE[last][0], instance=instance, line=start.line)
+            return Part(uid, INSTANCE[last][0], instance=instance, line=start.line)
         if path[0].kind in ("name", "local"):  # a call: "FC"( … ) or an FB instance #inst( … )
             callee = _operand_of(path)
             kind = "FB" if path[0].kind == "local" or len(path) > 1 else ""
@@ -407,7 +361,7 @@ class _Parser:
             if value is None:
                 continue
             if not pin:
-                pin = _SINGLE.get(part.name, "operand")
+                pin = SINGLE.get(part.name, "operand")
             if pin == "label" or (part.name == "Label"):
                 name = value if isinstance(value, str) else value.path[0] if value.path \
                     else value.text
@@ -475,79 +429,6 @@ def _operand_of(path: list[Token]) -> Operand:
     if head.kind == "word":  # a bare name: the lowering looks it up as a local first
         kind = OperandKind.LOCAL
     return Operand(kind, names, "".join(t.text for t in path))
-
-
-def _wire_ref(text: str) -> tuple[str, object]:
-    name = text.split("#", 1)[1]
-    return ("rail", None) if name.lower() == "powerrail" else ("wire", name)
-
-
-def _pins(part: Part) -> tuple[str, str]:
-    """A part's main input and output pins (its power in and out)."""
-    for key, (name, _neg, main_in, main_out) in _SIMPLE.items():
-        if name == part.name and not key.startswith("return"):
-            return main_in, main_out
-    for name, main_in, main_out in _INSTANCE.values():
-        if name == part.name:
-            return main_in, main_out
-    if part.name == "Return":
-        return "en", ""
-    if part.name == "Label":
-        return "", ""
-    return "en", "eno"  # calls, CMP boxes by name, an unknown part
-
-
-def _resolve(network: S7Network, links: list[_Link]) -> None:
-    """Turn the rungs' links into wires: a named wire with several sources becomes an `O` part
-    (in1 … inN → out) and every use of the name takes its output."""
-    sources: dict[str, list[tuple[tuple[str, object], int]]] = {}
-    for link in links:
-        if link.target.part.startswith("@"):
-            sources.setdefault(link.target.part[1:], []).append((link.source, link.line))
-    points: dict[str, End | None] = {}
-
-    def point(ref: tuple[str, object], seen: frozenset[str] = frozenset()) -> End | None:
-        kind, value = ref
-        if kind == "rail":
-            return End(powerrail=True)
-        if kind == "end":
-            return value  # type: ignore[return-value]
-        if kind != "wire":
-            return None
-        name = str(value)
-        if name in points:
-            return points[name]
-        if name in seen:  # a loop of named wires: no power
-            return None
-        found = sources.get(name, [])
-        if len(found) == 1:
-            end = point(found[0][0], seen | {name})
-        elif found:
-            uid = f"O_{name}"
-            network.parts.append(Part(uid, "O", line=found[0][1]))
-            for n, (ref_n, line) in enumerate(found, start=1):
-                source = point(ref_n, seen | {name})
-                if source is not None:
-                    network.wires.append(Wire(source, [End(part=uid, pin=f"in{n}")], line))
-            end = End(part=uid, pin="out")
-        else:
-            end = None
-        points[name] = end
-        return end
-
-    for link in links:
-        if link.target.part.startswith("@"):
-            continue
-        source = point(link.source)
-        if source is not None:
-            network.wires.append(Wire(source, [link.target], link.line))
-    # pins fed by a wire name (`c.S_RS( wire#w1 )`)
-    for wire in list(network.wires):
-        if wire.source.part.startswith("@"):
-            source = point(("wire", wire.source.part[1:]))
-            network.wires.remove(wire)
-            if source is not None:
-                network.wires.append(Wire(source, wire.targets, wire.line))
 
 
 def parse_sd(text: str) -> Parsed:
