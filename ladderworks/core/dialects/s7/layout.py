@@ -25,9 +25,9 @@ TIMER_TYPES = frozenset({"iec_timer", "ton_time", "tof_time", "tp_time", "tonr_t
 COUNTER_TYPES = frozenset({"iec_counter", "iec_ucounter", "iec_dcounter", "iec_udcounter",
                            "iec_scounter", "iec_uscounter", "ctu_int", "ctd_int", "ctud_int",
                            "ctu_dint", "ctd_dint", "ctud_dint", "ctu_uint", "ctu_sint"})
-_TIMER_MEMBERS = {"pt": (0, None, "Time"), "et": (4, None, "Time"), "in": (8, 0, "Bool"),
+TIMER_MEMBERS = {"pt": (0, None, "Time"), "et": (4, None, "Time"), "in": (8, 0, "Bool"),
                   "q": (8, 1, "Bool")}
-_COUNTER_MEMBERS = {"cv": (0, None, "DInt"), "pv": (4, None, "DInt"), "cu": (8, 0, "Bool"),
+COUNTER_MEMBERS = {"cv": (0, None, "DInt"), "pv": (4, None, "DInt"), "cu": (8, 0, "Bool"),
                     "cd": (8, 1, "Bool"), "r": (8, 2, "Bool"), "ld": (8, 3, "Bool"),
                     "q": (8, 4, "Bool"), "qu": (8, 4, "Bool"), "qd": (8, 5, "Bool")}
 _SIZES = {"bool": 1, "byte": 1, "sint": 1, "usint": 1, "char": 1, "int": 2, "uint": 2,
@@ -198,7 +198,7 @@ class Layout:
         key = (*scope, path[0].lower())
         if self._lay(key, found[1]) is None:
             return None
-        return self._sub(key, path[1:])
+        return self.sub(key, path[1:])
 
     def global_name(self, path: tuple[str, ...], as_instance: str = "") -> Place | None:
         """A tag (`"Start"`), a global DB member (`"DB".a.b`), or an instance named by use."""
@@ -226,17 +226,19 @@ class Layout:
                 self._lay(key, Member(tag.name, tag.type_name))
             else:
                 return None
-        return self._sub(key, path[1:])
+        return self.sub(key, path[1:])
 
-    def _sub(self, key: tuple[str, ...], rest: tuple[str, ...]) -> Place | None:
+    def sub(self, key: tuple[str, ...], rest: tuple[str, ...]) -> Place | None:
+        """The place of member path `rest` under the laid-out name `key` (an instance's Q,
+        a struct's member), None if there is none."""
         place = self.places.get(key)
         if place is None:
             return None
         for name in rest:
             low = name.lower()
             kind = place.type_name.lower()
-            table = _TIMER_MEMBERS if kind in TIMER_TYPES else \
-                _COUNTER_MEMBERS if kind in COUNTER_TYPES else None
+            table = TIMER_MEMBERS if kind in TIMER_TYPES else \
+                COUNTER_MEMBERS if kind in COUNTER_TYPES else None
             if table is not None:
                 if low not in table:
                     return None

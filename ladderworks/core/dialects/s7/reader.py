@@ -12,7 +12,13 @@ from pathlib import Path
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.dialects.s7.graph import Block, S7Program
-from ladderworks.core.dialects.s7.layout import Layout
+from ladderworks.core.dialects.s7.layout import (
+    COUNTER_MEMBERS,
+    COUNTER_TYPES,
+    TIMER_MEMBERS,
+    TIMER_TYPES,
+    Layout,
+)
 from ladderworks.core.dialects.s7.lowering import lower_block
 from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd
 from ladderworks.core.dialects.s7.tags import is_tag_table, read_tag_table
@@ -68,6 +74,13 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
             name = ".".join([f'"{names[0]}"', *names[1:]])
         if name not in table.by_symbol:
             table.by_symbol[name] = place.address
+        kind = place.type_name.lower()
+        members = TIMER_MEMBERS if kind in TIMER_TYPES else COUNTER_MEMBERS \
+            if kind in COUNTER_TYPES else {}
+        for pin in members:  # an instance's members: "IEC_Timer_0_DB".Q, #Zaman.ET
+            inner = layout.sub(key, (pin,))
+            if inner is not None:
+                table.by_symbol.setdefault(f"{name}.{pin.upper()}", inner.address)
     # the instances' members (`"T1".Q`, `#Timer.ET`) resolve on demand in scenarios
     return table
 
