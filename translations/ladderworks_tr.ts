@@ -1425,6 +1425,81 @@
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: bir aygıtın yazmacı 16 bittir: genişlik 2 olmalı</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="461"/>
+        <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
+        <translation>&apos;{text}&apos; bir S7 adresi (ör. %I0.0, %MW2, %DB1.DBW4) ya da etiket değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="463"/>
+        <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
+        <translation>SIMATIC SD: {expected} bekleniyordu, &apos;{found}&apos; bulundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="465"/>
+        <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
+        <translation>SIMATIC SD: metin {what} içinde bitiyor (kesilmiş mi?)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="467"/>
+        <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
+        <translation>network {network}: &apos;{part}&apos; LadderWorks&apos;ün benzettiği bir komut değil</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="469"/>
+        <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
+        <translation>network {network}: &apos;{text}&apos; ne bir etiket, ne bloğun bir üyesi, ne de bir adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="472"/>
+        <source>network {network}: {part} needs its pin {pin}</source>
+        <translation>network {network}: {part} için {pin} ucu gerekli</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
+        <translation>network {network}: {part} bağlantıları izlenemiyor ({why})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="476"/>
+        <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
+        <translation>network {network}: bu blokta &apos;{label}&apos; etiketi yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="478"/>
+        <source>network {network}: a {language} network is shown, not simulated</source>
+        <translation>network {network}: {language} network&apos;ü gösterilir, benzetilmez</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
+        <translation>network {network}: çağrılan &apos;{block}&apos; bloğu programda yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
+        <translation>network {network}: &apos;{type}&apos; tipinde {part} benzetilmez</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
+        <translation>network {network}: &apos;{text}&apos; için yer kalmadı (DB üyeleri ve örnekler 10000 baytı paylaşır)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
+        <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
+        <translation>dosya {size} MB: {limit} MB üzerindeki S7 dışa aktarımları okunmaz</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
+        <source>tag table: {why}</source>
+        <translation>etiket tablosu: {why}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
+        <source>a changed S7 block cannot be written yet: save it in TIA Portal</source>
+        <translation>değiştirilmiş bir S7 bloğu henüz yazılamıyor: TIA Portal&apos;da kaydedin</translation>
+    </message>
 </context>
 <context>
     <name>ErrorList</name>
@@ -2177,163 +2252,199 @@
         <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="506"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="531"/>
         <location filename="../ladderworks/gui/main_window.py" line="277"/>
         <location filename="../ladderworks/gui/main_window.py" line="447"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="132"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="159"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="122"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="71"/>
+        <source>Ladder programs</source>
+        <translation>Ladder programları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="72"/>
+        <source>Mnemonic programs</source>
+        <translation>Mnemonik programlar</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="73"/>
+        <source>LADDER-III exports</source>
+        <translation>LADDER-III dışa aktarımları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="74"/>
+        <source>Delta DVP instruction lists</source>
+        <translation>Delta DVP komut listeleri</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="76"/>
+        <source>WPLSoft projects</source>
+        <translation>WPLSoft projeleri</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="77"/>
+        <source>Fatek WinProladder listings</source>
+        <translation>Fatek WinProladder listeleri</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="79"/>
+        <source>Fatek WinProladder projects</source>
+        <translation>Fatek WinProladder projeleri</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="80"/>
+        <source>Siemens S7-1200 SIMATIC SD blocks</source>
+        <translation>Siemens S7-1200 SIMATIC SD blokları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="149"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="133"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="160"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="179"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="206"/>
         <source>PLC family</source>
         <translation>PLC ailesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="197"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="215"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="224"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="242"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="198"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="216"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="522"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="225"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="243"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="547"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="230"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="203"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="230"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="248"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="275"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="256"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="258"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV *.lst *.LST *.fbs *.FBS *.pdw *.PDW);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL *.csv *.CSV);;WPLSoft projects (*.dvp *.DVP);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Fatek WinProladder projects (*.pdw *.PDW);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="359"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="367"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="413"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="417"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="359"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="393"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="466"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="413"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="486"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="521"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="546"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="538"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="563"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="376"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="381"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="401"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="407"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="412"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="432"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="438"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="413"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="433"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="449"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="466"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="470"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="469"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="486"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="490"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="450"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="470"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="474"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="494"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>

@@ -457,6 +457,39 @@ MESSAGES: dict[str, str] = {
     "modbus-map-empty": QT_TRANSLATE_NOOP("Diagnostic", "the map has no row"),
     "modbus-map-width": QT_TRANSLATE_NOOP(
         "Diagnostic", "{device}: a device's register is 16 bits: the width must be 2"),
+    # Siemens S7-1200 (docs/dialects.md, S7-1200)
+    "s7-address": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag"),
+    "s7-syntax": QT_TRANSLATE_NOOP(
+        "Diagnostic", "SIMATIC SD: expected {expected}, found '{found}'"),
+    "s7-cut": QT_TRANSLATE_NOOP(
+        "Diagnostic", "SIMATIC SD: the text ends inside {what} (cut off?)"),
+    "s7-part-unknown": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: '{part}' is not an instruction LadderWorks simulates"),
+    "s7-operand-unknown": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: '{text}' is neither a tag, a member of the block "
+        "nor an address"),
+    "s7-pin-missing": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: {part} needs its pin {pin}"),
+    "s7-wire": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: the wiring of {part} cannot be followed ({why})"),
+    "s7-label-unknown": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: there is no label '{label}' in this block"),
+    "s7-not-simulated": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: a {language} network is shown, not simulated"),
+    "s7-call-unknown": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: the block '{block}' it calls is not in the program"),
+    "s7-type": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: {part} on the type '{type}' is not simulated"),
+    "s7-memory-full": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: no room left for '{text}' (DB members and "
+        "instances share 10000 bytes)"),
+    "s7-too-large": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the file has {size} MB: S7 exports over {limit} MB are not read"),
+    "s7-tags": QT_TRANSLATE_NOOP(
+        "Diagnostic", "tag table: {why}"),
+    "s7-save-changed": QT_TRANSLATE_NOOP(
+        "Diagnostic", "a changed S7 block cannot be written yet: save it in TIA Portal"),
 }
 
 

@@ -11,11 +11,12 @@ from PySide6.QtCore import QFileSystemWatcher, QObject, Signal
 from PySide6.QtGui import QTextDocument
 
 from ladderworks.core.collector import release_frozen
+from ladderworks.core.diagnostics import DiagnosticError
 from ladderworks.core.dialects.delta.dvp_file import is_dvp
 from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.printer import encode_program, print_faithful
-from ladderworks.core.il.reading import attach_companions, parse_bytes, parse_text
+from ladderworks.core.il.reading import attach_companions, parse_read, parse_text
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text, split_lines
 from ladderworks.core.ladder.convert import adopt_origin, damaged_drafts
 from ladderworks.gui.editor.ladder_model import LadderModel
@@ -82,7 +83,10 @@ def bad_bytes_back(text: str) -> str:
 def view_text(program: Program) -> str:
     """The text the text view shows: the file's own lines (as Save writes them, so a line
     number of a diagnostic is the view's line), each ended by LF."""
-    lines = split_lines(print_faithful(program))
+    try:
+        lines = split_lines(print_faithful(program))
+    except DiagnosticError:  # a change its dialect cannot write (S7): the file's lines
+        lines = list(program.source.lines) if program.source is not None else []
     return "\n".join(lines) + "\n" if lines else ""
 
 
@@ -161,7 +165,7 @@ class ProgramDocument(QObject):
         """Read and parse `path` (OSError); it becomes the document's file."""
         data = path.read_bytes()
         release_frozen()  # the program shown so far is dropped: its objects walked again
-        result = parse_bytes(data)
+        result = parse_read(path, data)
         attach_companions(path, result.program)  # Fatek's comment export beside it: symbols
         if result.program.source is not None:
             result.diagnostics = sorted(

@@ -24,6 +24,7 @@ __all__ = ["Dialect", "by_code", "every", "format_address", "get", "memory_sizes
 BUILTIN: tuple[str, ...] = (
     "ladderworks.core.dialects.delta",
     "ladderworks.core.dialects.fatek",
+    "ladderworks.core.dialects.s7",
 )
 
 SNIFF_THRESHOLD = 50  # a text scoring this much for a dialect is read as that dialect
@@ -144,5 +145,14 @@ def typed_target(text: str, address_of: Callable[[str], Address | None] | None =
     if get(dialect) is None:
         return parse_pmc_target(text, address_of)
     typed = text.strip()
-    address, size = parse_target(typed, dialect)
+    try:
+        address, size = parse_target(typed, dialect)
+    except AddressError:  # a symbol of the program (an S7 tag): `NAME[:W]`
+        spelled, width_text = typed, ""
+        if typed[-2:] in (":1", ":2", ":4"):
+            spelled, width_text = typed[:-2], typed[-1]
+        found = address_of(spelled.strip()) if address_of is not None else None
+        if found is None:
+            raise
+        address, size = found, int(width_text or 1)
     return Target(typed, address, size)

@@ -49,6 +49,13 @@ class Dialect:
     clocks: tuple[tuple[Address, int, int], ...] = ()
     period_ms: int = 10  # its usual scan period (the CLI's and the session's default)
     extensions: tuple[str, ...] = ()  # file name endings its files use (".dvp")
+    byteorder: str = "little"  # its multi-byte values in memory ("big": S7); plc/memory.py
+    # "module:function": (path, bytes or None) -> (Program, diagnostics, encoding): opens a
+    # file with its companions or a folder of them as one program (S7 exports); "" for none
+    opener: str = ""
+    # a diagnostic code: Save refuses a changed program of this dialect with it (S7: writing
+    # its blocks is not done yet); "" when changed networks are written by `printer`
+    refuse_changes: str = ""
     namer: str = ""  # "module:function": a row's name in the dialect's text (LD for RD)
     spelling: str = ""  # "module:function" making its dialects.spelling.Spelling (display)
     # the rows each module of core/plc/functions implements for it (plc/families.py merges them)
@@ -83,6 +90,13 @@ class Dialect:
         """Read a text of this dialect: the program and its diagnostics."""
         reader: Reader = _function(self.reader)  # type: ignore[assignment]
         return reader(text, form, lines, ends)
+
+    def open_path(self, path: object, data: bytes | None
+                  ) -> tuple[Program, list[Diagnostic], str]:
+        """A file with its companion files, or a folder, as one program (`opener`)."""
+        opener: Callable[[object, bytes | None], tuple[Program, list[Diagnostic], str]] = \
+            _function(self.opener)  # type: ignore[assignment]
+        return opener(path, data)
 
     def finish_lines(self, program: Program, out: list[str], fresh: set[int],
                      joins: set[int]) -> list[str]:

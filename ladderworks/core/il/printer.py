@@ -6,6 +6,7 @@ from difflib import SequenceMatcher
 from typing import TYPE_CHECKING
 
 from ladderworks.core import dialects
+from ladderworks.core.diagnostics import Refused
 from ladderworks.core.il.model_marker import head_lines, header_texts
 from ladderworks.core.il.program import FANUC, Instruction, Network, ParamValue, Program, Section
 from ladderworks.core.il.textform import encode_text
@@ -192,6 +193,9 @@ def print_faithful(program: Program) -> str:
     out.extend(head_lines(program, lines[:source.ladder_start], ends[:source.ladder_start],
                           newline))
     new_keys = [network.key() for network in program.networks]
+    if other is not None and other.refuse_changes and (
+            new_keys != source.keys or tuple(program.trailer) != source.trailer):
+        raise Refused(other.refuse_changes)
     last_fresh = False
     for tag, i1, i2, j1, j2 in _align(source.keys, new_keys):
         if tag == "equal":

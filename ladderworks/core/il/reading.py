@@ -87,10 +87,45 @@ def parse_bytes(data: bytes, dialect: str | None = None) -> ParseResult:
     return parser.parse_bytes(data) if found is None else read_dialect(data, found)
 
 
+def open_with(path: Path, data: bytes | None, found: dialects.Dialect) -> ParseResult:
+    """A file with its companions, or a folder, opened by its dialect's `opener` (S7)."""
+    with collector_paused(promote=True):
+        program, diagnostics, encoding = found.open_path(path, data)
+    return ParseResult(program, sorted(diagnostics, key=lambda d: (d.line, d.column)), encoding)
+
+
+def _folder(path: Path, dialect: str | None) -> ParseResult:
+    """A folder of exports: the first dialect that opens folders (or `dialect`) opens it."""
+    named = dialects.get(dialect) if dialect else None
+    found = named or next((d for d in dialects.every() if d.opener), None)
+    if found is None or not found.opener:
+        raise IsADirectoryError(str(path))
+    return open_with(path, None, found)
+
+
+def parse_read(path: Path, data: bytes, dialect: str | None = None) -> ParseResult:
+    """`data` read from the file `path`: a dialect that opens companion files (S7's tag
+    tables and texts beside a block) gets the path too; else parse_bytes."""
+    found = choose(data, dialect)
+    if found is not None and found.opener:
+        return open_with(path, data, found)
+    result = parse_bytes(data, dialect)
+    attach_companions(path, result.program)
+    return result
+
+
 def parse_file(path: str | Path, dialect: str | None = None) -> ParseResult:
-    """Parse a program file in whichever dialect it is written (or `dialect`)."""
+    """Parse a program file in whichever dialect it is written (or `dialect`); a folder of a
+    dialect's exports (S7) as one program."""
+    target = Path(path)
+    if target.is_dir():
+        return _folder(target, dialect)
     with open(path, "rb") as file:
-        result = parse_bytes(file.read(), dialect)
+        data = file.read()
+    found = choose(data, dialect)
+    if found is not None and found.opener:
+        return open_with(target, data, found)
+    result = parse_bytes(data, dialect)
     attach_companions(path, result.program)
     return result
 
@@ -104,6 +139,9 @@ def attach_companions(path: str | Path, program: Program) -> None:
 
 def parse_for_check(path: str | Path, dialect: str | None = None) -> ParseResult:
     """parser.parse_for_check, or a dialect's reader for a file of another dialect."""
+    target = Path(path)
+    if target.is_dir():
+        return _folder(target, dialect)
     with open(path, "rb") as file:
         data = file.read()
     if is_pdw(data):
@@ -112,6 +150,8 @@ def parse_for_check(path: str | Path, dialect: str | None = None) -> ParseResult
     if binary is not None:
         return binary
     found = choose(data, dialect)
+    if found is not None and found.opener:
+        return open_with(target, data, found)
     return parser.parse_for_check(path) if found is None else read_dialect(data, found)
 
 

@@ -318,6 +318,8 @@ class _Generator:
     def stack_op(self, index: int, op: StackOp) -> None:
         """A dialect's stack operation (Delta MPS, MRD, MPP, INV) on the stack values."""
         top = len(self.values) - 1
+        for depth in range(top):  # a lower level may name s<top>, which is assigned below
+            self.store(depth)
         if op is StackOp.INVERT:
             self.values[top] = Value(f"(1 ^ {self.store(top)})")
         elif op is StackOp.DUP:

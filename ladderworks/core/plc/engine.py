@@ -107,6 +107,8 @@ class ScanEngine:
         self.backend_reason: str | None = None
         self._ctx = _context(self.memory, period_ms, self.program.dialect)
         found = dialects.get(self.program.dialect)
+        self.memory.byteorder = "big" if found is not None and found.byteorder == "big" \
+            else "little"
         self._dialect_relays = found.relays if found is not None else None
         self._first_scan = True  # the first scan since the engine was made or cold-started
         self._clocks = SYSTEM_CLOCKS + (found.clocks if found is not None else ())

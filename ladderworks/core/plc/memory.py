@@ -1,6 +1,9 @@
-"""The PLC memory image: one bytearray per area, little-endian multi-byte values."""
+"""The PLC memory image: one bytearray per area; multi-byte values in the program's byte order
+(little-endian for the PMC, Delta and Fatek; big-endian for S7: `Dialect.byteorder`)."""
 
 from __future__ import annotations
+
+from typing import Literal
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.dialects import memory_sizes
@@ -13,7 +16,9 @@ class Memory:
     Each area holds the PMC's map and whatever a dialect's devices need beyond it (the 20000
     bytes of Delta's D0-D9999 words): core/dialects.memory_sizes."""
 
-    def __init__(self) -> None:
+    def __init__(self, byteorder: str = "little") -> None:
+        # the one place a value's byte order is decided: the engine sets it from the dialect
+        self.byteorder: Literal["little", "big"] = "big" if byteorder == "big" else "little"
         self.areas: dict[Area, bytearray] = {
             area: bytearray(size) for area, size in memory_sizes().items()
         }
@@ -36,14 +41,15 @@ class Memory:
     def read(self, address: Address, width: int = 1, *, signed: bool = False) -> int:
         """The `width`-byte value starting at a byte address."""
         data = self.areas[address.area]
-        return int.from_bytes(data[address.byte:address.byte + width], "little", signed=signed)
+        return int.from_bytes(data[address.byte:address.byte + width], self.byteorder,
+                              signed=signed)
 
     def write(self, address: Address, value: int, width: int = 1) -> None:
         """Store `value` (wrapped to `width` bytes, two's complement) at a byte address."""
         data = self.areas[address.area]
         bits = 8 * width
         value &= (1 << bits) - 1
-        data[address.byte:address.byte + width] = value.to_bytes(width, "little")
+        data[address.byte:address.byte + width] = value.to_bytes(width, self.byteorder)
 
     def read_bcd(self, address: Address, width: int) -> int | None:
         """The BCD value of `width` bytes (2 digits a byte); None on an invalid digit."""

@@ -178,7 +178,8 @@ class _Reader:
         try:
             if dialects.get(self.dialect) is not None:
                 want = None if width is None else "bit" if width == 0 else "word"
-                address, size = dialects.parse_target(text.strip(), self.dialect, want)
+                address, size = _dialect_target(text.strip(), self.dialect, want,
+                                                self.symbols)
                 width = width or size
             else:
                 address = resolve(text.strip(), self.symbols, width=width or 1)
@@ -226,6 +227,19 @@ class _Reader:
             items.append((target, value))
             index += used
         return items
+
+
+def _dialect_target(text: str, dialect: str | None, want: str | None,
+                    symbols: SymbolTable | None) -> tuple[Address, int]:
+    """A device of the program's dialect, else one of its symbols (an S7 tag `Start`, a DB
+    member `"DB".Wert`: 1 byte unless the line's TYPE says); AddressError."""
+    try:
+        return dialects.parse_target(text, dialect, want)
+    except AddressError:
+        found = symbols.address_of(text) if symbols is not None else None
+        if found is None:
+            raise
+        return found, 1
 
 
 _NEEDS = {"SET": "a wait and at least one ADDR,VALUE", "FORCE": "a wait, a bit and 0 or 1",

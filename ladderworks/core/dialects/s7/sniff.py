@@ -1,0 +1,17 @@
+"""Recognise a SIMATIC SD block from its content."""
+
+from __future__ import annotations
+
+import re
+
+_HEAD_RE = re.compile(r"^\s*(ORGANIZATION_BLOCK|FUNCTION_BLOCK|FUNCTION|DATA_BLOCK)\s+\"", re.M)
+
+
+def score(text: str) -> int:
+    """100 for an SD block with a LAD rung or an S7 pragma; 60 for an SD block head alone."""
+    head = text[:20000]
+    if _HEAD_RE.search(head) is None:
+        return 0
+    if "wire#powerrail" in head or "S7_" in head:
+        return 100
+    return 60
