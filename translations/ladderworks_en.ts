@@ -1195,6 +1195,126 @@
         <source>{device}: a device&apos;s register is 16 bits: the width must be 2</source>
         <translation>{device}: a device&apos;s register is 16 bits: the width must be 2</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="336"/>
+        <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="338"/>
+        <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="340"/>
+        <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="342"/>
+        <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="344"/>
+        <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="347"/>
+        <source>network {network}: {part} needs its pin {pin}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="349"/>
+        <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="351"/>
+        <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="353"/>
+        <source>network {network}: a {language} network is shown, not simulated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="355"/>
+        <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="357"/>
+        <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="359"/>
+        <source>tag table: {why}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="361"/>
+        <source>a changed S7 block cannot be written yet: save it in TIA Portal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
+        <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
+        <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
+        <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
+        <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="369"/>
+        <source>SimaticML: not well-formed XML ({why})</source>
+        <translation>SimaticML: not well-formed XML ({why})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
+        <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
+        <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
+        <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
+        <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
+        <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
+        <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
+        <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="381"/>
+        <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
+        <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
+        <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
+        <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
+        <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
+        <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
+        <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
+    </message>
 </context>
 <context>
     <name>ErrorList</name>
@@ -1907,7 +2027,7 @@
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="430"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="431"/>
         <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Untitled</source>
@@ -1937,7 +2057,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="151"/>
         <location filename="../ladderworks/gui/file_actions.py" line="169"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
@@ -1962,88 +2082,88 @@
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="337"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.s7dcl *.xml *.XML);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Siemens TIA Portal exports (*.s7dcl *.xml *.XML);;All files (*)</source>
+        <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.s7dcl *.xml *.XML);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Siemens TIA Portal exports (*.s7dcl *.xml *.XML);;All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="285"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="285"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="333"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="462"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="316"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="317"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</source>
-        <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;All files (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="321"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="322"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="346"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="355"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="357"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="373"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="390"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="394"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="375"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="398"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
