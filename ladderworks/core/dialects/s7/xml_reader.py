@@ -88,6 +88,7 @@ class _Reader:
     def __init__(self, root: Element) -> None:
         self.root = root
         self.out = XmlRead()
+        self.dests: dict[str, dict[int, str]] = {}  # a network's JumpList/Switch DEST n
 
     def warn(self, code: str, line: int, **args: object) -> None:
         self.out.diagnostics.append(Diagnostic(code, dict(args), line, 1, Severity.WARNING))
@@ -207,6 +208,7 @@ class _Reader:
 
     def flgnet(self, block: Block, index: int, network: S7Network, net: Element) -> None:
         where = {"block": block.name, "network": index}
+        self.dests = {}
         accesses: dict[str, tuple[Operand | None, str, int]] = {}  # uid → (operand, label, line)
         labels = net.child("Labels")
         for declaration in labels.all("LabelDeclaration") if labels is not None else []:
@@ -333,14 +335,13 @@ class _Reader:
         if targets:
             network.wires.append(Wire(source, targets, node.line))
 
-    @staticmethod
-    def label_pin(part: Part | None, pin: str, label: str) -> None:
+    def label_pin(self, part: Part | None, pin: str, label: str) -> None:
         """A label wired to a pin: a Jump's target, a JumpList/Switch destination or ELSE."""
         if part is None:
             return
         if part.name in ("JumpList", "Switch") and pin.startswith("dest"):
             number = pin[4:]
-            dests = dict(enumerate(part.dests))
+            dests = self.dests.setdefault(part.uid, {})
             dests[int(number) if number.isdigit() else len(dests)] = label
             part.dests = tuple(dests[k] for k in sorted(dests))
         elif part.name == "Switch" and pin == "else":
