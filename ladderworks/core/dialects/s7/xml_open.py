@@ -14,7 +14,12 @@ from ladderworks.core.dialects.s7 import reader
 from ladderworks.core.dialects.s7.graph import Block, Tag
 from ladderworks.core.dialects.s7.sd_parser import Parsed
 from ladderworks.core.dialects.s7.texts import read_texts
-from ladderworks.core.dialects.s7.xml_reader import XmlRead, check_calls, is_simaticml, read_document
+from ladderworks.core.dialects.s7.xml_reader import (
+    XmlRead,
+    check_calls,
+    is_simaticml,
+    read_document,
+)
 from ladderworks.core.dialects.s7.xml_safe import MAX_BYTES
 from ladderworks.core.il.program import Program
 from ladderworks.core.il.textform import TextForm, decode_lines

@@ -240,10 +240,11 @@ class _Reader:
             self.wire(node, network, uids, accesses, where)
         for wire in network.wires:  # SWITCH: the comparison of each case is in its pin's name
             for target in wire.targets:
-                part = uids.get(target.part)
-                found = _SWITCH_PIN.match(target.pin) if part and part.name == "Switch" else None
-                if part is not None and found is not None:
-                    part.template[f"op{found.group(2)}"] = found.group(1).upper()
+                switch = uids.get(target.part)
+                found = _SWITCH_PIN.match(target.pin) if switch and switch.name == "Switch" \
+                    else None
+                if switch is not None and found is not None:
+                    switch.template[f"op{found.group(2)}"] = found.group(1).upper()
         self.find_loop(network, where)
 
     def part(self, node: Element, where: dict[str, object]) -> Part:
@@ -412,9 +413,7 @@ def _source_text(body: Element) -> str:
                         not out[-1].endswith(("(", " ", "\n")) else "") + node.attrs["Name"])
         elif name == "Access" and node.attrs.get("Scope") == "LocalVariable":
             out.append("#")
-        elif name == "ConstantValue":
-            out.append(node.text.strip())
-        elif name == "Text" and node.text.strip():
+        elif name == "ConstantValue" or (name == "Text" and node.text.strip()):
             out.append(node.text.strip())
         elif name == "StlStatement" and out and not out[-1].endswith("\n"):
             out.append("\n")

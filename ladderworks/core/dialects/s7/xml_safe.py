@@ -69,7 +69,7 @@ class XmlRefused(Exception):
 def parse(data: bytes | str) -> Element:
     """The root element of `data`; XmlRefused when it is too large, declares a DTD or an entity,
     or is not well-formed XML."""
-    raw = data.encode("utf-8") if isinstance(data, str) else data
+    raw = data.encode("utf-8", "replace") if isinstance(data, str) else data
     if len(raw) > MAX_BYTES:
         raise XmlRefused(Diagnostic("s7xml-too-large", {"size": len(raw) // (1024 * 1024),
                                                         "limit": MAX_BYTES // (1024 * 1024)},
@@ -113,7 +113,7 @@ def parse(data: bytes | str) -> Element:
     parser.EntityDeclHandler = lambda *_a: refuse("ENTITY")
     parser.UnparsedEntityDeclHandler = lambda *_a: refuse("ENTITY")
     parser.NotationDeclHandler = lambda *_a: refuse("NOTATION")
-    parser.ExternalEntityRefHandler = lambda *_a: refuse("an external entity")  # type: ignore[assignment,return-value]
+    parser.ExternalEntityRefHandler = lambda *_a: refuse("an external entity")  # type: ignore[assignment]
     parser.SkippedEntityHandler = lambda *_a: refuse("an undeclared entity")
     try:
         parser.Parse(raw, True)
@@ -121,6 +121,9 @@ def parse(data: bytes | str) -> Element:
         raise XmlRefused(Diagnostic("s7xml-malformed", {"why": expat.errors.messages[error.code]
                                                         if error.code else str(error)},
                                     error.lineno, error.offset + 1)) from None
+    except (LookupError, ValueError) as error:  # an unknown encoding in the declaration
+        raise XmlRefused(Diagnostic("s7xml-malformed", {"why": str(error)},
+                                    parser.CurrentLineNumber, 1)) from None
     except RecursionError:  # pragma: no cover - MAX_DEPTH keeps the stack small
         raise XmlRefused(Diagnostic("s7xml-malformed", {"why": "elements nested too deep"},
                                     0, 0)) from None

@@ -105,7 +105,7 @@ def _part(part: Part, uid: str, ids: dict[str, str], pad: str) -> list[str]:
     if part.instance is not None:
         inner += _instance(part.instance, ids, pad + "  ")
     for key, value in part.template.items():
-        if key == "else" or key.startswith("op") and part.name == "Switch":
+        if key == "else" or (key.startswith("op") and part.name == "Switch"):
             continue
         kind = "Cardinality" if key == "Card" else "Type"
         inner.append(f"{pad}  <TemplateValue Name={quoteattr(key)} Type=\"{kind}\">"
@@ -194,7 +194,8 @@ def write_block(block: Block, version: int = 5, texts: Texts | None = None) -> s
         for member in members:
             lines += _member(member, "            ")
         lines.append("          </Section>")
-    lines += ["        </Sections>", "      </Interface>", "      <MemoryLayout>Optimized</MemoryLayout>",
+    lines += ["        </Sections>", "      </Interface>",
+              "      <MemoryLayout>Optimized</MemoryLayout>",
               f"      <Name>{escape(block.name)}</Name>"]
     if block.number:
         lines.append(f"      <Number>{block.number}</Number>")

@@ -16,14 +16,16 @@ def document(networks: list[str], *, interface: str = "", kind: str = "OB",
              interface_ns: str = INTERFACE, head: str = "") -> str:
     """A block export: `networks` are the inner XML of each FlgNet (Parts, Wires …)."""
     units = []
+    scl = "SCL"
     for n, body in enumerate(networks, start=1):
         source = body if body.lstrip().startswith("<StructuredText") else \
             f'<FlgNet xmlns="{flgnet}">{body}</FlgNet>'
+        kind_of = scl if "StructuredText" in source else language
         units.append(f"""
       <SW.Blocks.CompileUnit ID="{n + 10:X}" CompositionName="CompileUnits">
         <AttributeList>
           <NetworkSource>{source}</NetworkSource>
-          <ProgrammingLanguage>{"SCL" if "StructuredText" in source else language}</ProgrammingLanguage>
+          <ProgrammingLanguage>{kind_of}</ProgrammingLanguage>
         </AttributeList>
         <ObjectList>
           <MultilingualText ID="{n + 40:X}" CompositionName="Title">
@@ -32,7 +34,8 @@ def document(networks: list[str], *, interface: str = "", kind: str = "OB",
                 <AttributeList><Culture>de-DE</Culture><Text>Netzwerk {n}</Text></AttributeList>
               </MultilingualTextItem>
               <MultilingualTextItem ID="{n + 80:X}" CompositionName="Items">
-                <AttributeList><Culture>tr-TR</Culture><Text>Network {n} başlığı</Text></AttributeList>
+                <AttributeList><Culture>tr-TR</Culture>
+                <Text>Network {n} başlığı</Text></AttributeList>
               </MultilingualTextItem>
             </ObjectList>
           </MultilingualText>
