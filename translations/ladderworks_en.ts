@@ -1198,67 +1198,67 @@
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="336"/>
         <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="338"/>
         <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="340"/>
         <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
-        <translation type="unfinished"></translation>
+        <translation>SIMATIC SD: the text ends inside {what} (cut off?)</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="342"/>
         <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
-        <translation type="unfinished"></translation>
+        <translation>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="344"/>
         <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
-        <translation type="unfinished"></translation>
+        <translation>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="347"/>
         <source>network {network}: {part} needs its pin {pin}</source>
-        <translation type="unfinished"></translation>
+        <translation>network {network}: {part} needs its pin {pin}</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="349"/>
         <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
-        <translation type="unfinished"></translation>
+        <translation>network {network}: the wiring of {part} cannot be followed ({why})</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="351"/>
         <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
-        <translation type="unfinished"></translation>
+        <translation>network {network}: there is no label &apos;{label}&apos; in this block</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="353"/>
         <source>network {network}: a {language} network is shown, not simulated</source>
-        <translation type="unfinished"></translation>
+        <translation>network {network}: a {language} network is shown, not simulated</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="355"/>
         <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
-        <translation type="unfinished"></translation>
+        <translation>network {network}: the block &apos;{block}&apos; it calls is not in the program</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="357"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
-        <translation type="unfinished"></translation>
+        <translation>network {network}: {part} on the type &apos;{type}&apos; is not simulated</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="359"/>
         <source>tag table: {why}</source>
-        <translation type="unfinished"></translation>
+        <translation>tag table: {why}</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="361"/>
         <source>a changed S7 block cannot be written yet: save it in TIA Portal</source>
-        <translation type="unfinished"></translation>
+        <translation>a changed S7 block cannot be written yet: save it in TIA Portal</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="364"/>
@@ -2027,7 +2027,7 @@
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="431"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="432"/>
         <location filename="../ladderworks/gui/main_window.py" line="270"/>
         <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Untitled</source>
@@ -2057,7 +2057,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="151"/>
         <location filename="../ladderworks/gui/file_actions.py" line="169"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="448"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
     </message>
@@ -2082,88 +2082,88 @@
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
-        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.s7dcl *.xml *.XML);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Siemens TIA Portal exports (*.s7dcl *.xml *.XML);;All files (*)</source>
-        <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.s7dcl *.xml *.XML);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Siemens TIA Portal exports (*.s7dcl *.xml *.XML);;All files (*)</translation>
-    </message>
-    <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="285"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="338"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="335"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="285"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="286"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="334"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="335"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="339"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="340"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="463"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="464"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="317"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="318"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="322"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="211"/>
+        <source>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.s7dcl *.S7DCL *.xml *.XML);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Siemens S7-1200 SIMATIC SD blocks (*.s7dcl *.S7DCL);;Siemens S7-1200 SimaticML exports (*.xml *.XML);;All files (*)</source>
+        <translation>Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.s7dcl *.S7DCL *.xml *.XML);;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC);;LADDER-III exports (*.txt *.TXT *.mnc *.MNC);;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL);;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT);;Siemens S7-1200 SIMATIC SD blocks (*.s7dcl *.S7DCL);;Siemens S7-1200 SimaticML exports (*.xml *.XML);;All files (*)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="323"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="347"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="348"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="349"/>
         <source>Ladder programs (*.LAD *.lad);;All files (*)</source>
         <translation>Ladder programs (*.LAD *.lad);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="357"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="357"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="374"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="391"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="395"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="375"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="392"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="375"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="376"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="399"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="400"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>

@@ -14,7 +14,7 @@ from ladderworks.core.collector import release_frozen
 from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.printer import encode_program, print_faithful
-from ladderworks.core.il.reading import parse_bytes, parse_text
+from ladderworks.core.il.reading import parse_read, parse_text
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text, split_lines
 from ladderworks.core.ladder.convert import adopt_origin, damaged_drafts
 from ladderworks.gui.editor.ladder_model import LadderModel
@@ -158,7 +158,7 @@ class ProgramDocument(QObject):
         """Read and parse `path` (OSError); it becomes the document's file."""
         data = path.read_bytes()
         release_frozen()  # the program shown so far is dropped: its objects walked again
-        result = parse_bytes(data)
+        result = parse_read(path, data)
         if result.program.source is not None:
             result.diagnostics = sorted(
                 result.diagnostics + damaged_drafts(result.program.source.lines),

@@ -211,12 +211,13 @@ class FileActions(_Window):
             translate(
                 "MainWindow",
                 "Ladder and mnemonic programs (*.LAD *.lad *.MOD *.mod *.mnc *.MNC *.txt *.TXT"
-                " *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.s7dcl *.xml *.XML)"
+                " *.dvp *.DVP *.il *.IL *.lst *.LST *.fbs *.FBS *.s7dcl *.S7DCL *.xml *.XML)"
                 ";;Ladder programs (*.LAD *.lad);;Mnemonic programs (*.MOD *.mod *.mnc *.MNC)"
                 ";;LADDER-III exports (*.txt *.TXT *.mnc *.MNC)"
                 ";;Delta DVP instruction lists (*.txt *.TXT *.dvp *.DVP *.il *.IL)"
                 ";;Fatek WinProladder listings (*.lst *.LST *.fbs *.FBS *.txt *.TXT)"
-                ";;Siemens TIA Portal exports (*.s7dcl *.xml *.XML)"
+                ";;Siemens S7-1200 SIMATIC SD blocks (*.s7dcl *.S7DCL)"
+                ";;Siemens S7-1200 SimaticML exports (*.xml *.XML)"
                 ";;All files (*)"))
         if name:
             self.load(name)

@@ -68,6 +68,15 @@ def _folder(path: Path, dialect: str | None) -> ParseResult:
     return open_with(path, None, found)
 
 
+def parse_read(path: Path, data: bytes, dialect: str | None = None) -> ParseResult:
+    """`data` read from the file `path`: a dialect that opens companion files (S7's tag
+    tables and texts beside a block) gets the path too; else parse_bytes."""
+    found = choose(data, dialect)
+    if found is not None and found.opener:
+        return open_with(path, data, found)
+    return parser.parse_bytes(data) if found is None else read_dialect(data, found)
+
+
 def parse_file(path: str | Path, dialect: str | None = None) -> ParseResult:
     """Parse a program file in whichever dialect it is written (or `dialect`); a folder of a
     dialect's exports (S7) as one program."""

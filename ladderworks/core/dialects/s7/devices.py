@@ -121,6 +121,12 @@ class S7DeviceMap(DeviceMap):
             <= limit
 
 
+    def bytes_needed(self) -> dict[Area, int]:
+        """The bytes S7 uses of each area: all inside the PMC's sizes."""
+        return {Area.X: IO_BYTES, Area.Y: IO_BYTES, Area.R: M_BYTES,
+                Area.E: DB_LAST * DB_BYTES, Area.D: 10_000}
+
+
 DEVICES = S7DeviceMap((
     _device("I", Area.X, IO_BYTES, "input (process image)", read_only=True),
     _device("Q", Area.Y, IO_BYTES, "output (process image)"),

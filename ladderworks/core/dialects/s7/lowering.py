@@ -14,13 +14,12 @@ from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.diagnostics import Diagnostic, Severity
-from ladderworks.core.dialects.s7.graph import Block, End, Operand, OperandKind, Part, S7Network
+from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, Part, S7Network
 from ladderworks.core.dialects.s7.layout import Layout, Place, constant_type, constant_value
+from ladderworks.core.dialects.s7.stack import ALWAYS_OFF, ALWAYS_ON, Expr, PinGraph, emit_expr
 from ladderworks.core.il.program import Instruction, LabelRef, Network, ParamValue
 from ladderworks.core.plc import typed
 
-ALWAYS_OFF = Address(Area.R, 9091, 0)
-ALWAYS_ON = Address(Area.R, 9091, 1)
 SCRATCH_FIRST, SCRATCH_LAST = 8192, 8999  # R bytes LadderWorks keeps for a network's links
 PURE = {"Eq": "S7.EQ", "Ne": "S7.NE", "Gt": "S7.GT", "Lt": "S7.LT", "Ge": "S7.GE", "Le": "S7.LE",
         "InRange": "S7.IN_RANGE", "OutRange": "S7.OUT_RANGE", "Ok": "S7.OK",
@@ -42,9 +41,6 @@ class LoweringError(Exception):
         self.diagnostic = diagnostic
 
 
-# an expression of power: ("on",) | ("bit", Address, negated) | ("and", a, b) | ("or", [..])
-# | ("box", name, params, a) a one-input pure box | ("not", a)
-Expr = tuple
 
 
 @dataclass(slots=True)
@@ -99,7 +95,7 @@ class BlockLowering:
                 "network": index, "language": network.language}, network.line, 1,
                 Severity.WARNING))
             return
-        graph = _Graph(network)
+        graph = PinGraph(network)
         graph.index = index
         if graph.missing:
             uid = graph.missing[0]
@@ -119,7 +115,7 @@ class BlockLowering:
     def emit(self, instructions: list[Instruction]) -> None:
         self.networks.append(Network(instructions))
 
-    def power(self, graph: _Graph, part: Part, pin: str, outputs: dict[str, Expr | None]
+    def power(self, graph: PinGraph, part: Part, pin: str, outputs: dict[str, Expr | None]
               ) -> Expr | None:
         """The power a part's input pin gets (None: no wire, no power)."""
         sources = graph.power_in.get((part.uid, pin), [])
@@ -141,7 +137,7 @@ class BlockLowering:
             return None
         return terms[0] if len(terms) == 1 else ("or", terms)
 
-    def main_power(self, graph: _Graph, part: Part, outputs: dict[str, Expr | None]) -> Expr:
+    def main_power(self, graph: PinGraph, part: Part, outputs: dict[str, Expr | None]) -> Expr:
         for pin in _MAIN_IN:
             if (part.uid, pin) in graph.power_in:
                 return self.power(graph, part, pin, outputs) or ("bit", ALWAYS_OFF, False)
@@ -162,7 +158,7 @@ class BlockLowering:
             raise self.fail(index, part, "s7-operand-unknown", text=operand.display())
         return found
 
-    def keep(self, graph: _Graph, part: Part) -> Address | None:
+    def keep(self, graph: PinGraph, part: Part) -> Address | None:
         """A relay for the part's output when other parts read it."""
         if not graph.used(part.uid):
             return None
@@ -176,7 +172,7 @@ class BlockLowering:
                   keep: Address | None) -> Expr | None:
         code: list[Instruction] = []
         for n, expr in enumerate(inputs):
-            _emit(expr, n > 0, code, part.line)
+            emit_expr(expr, n > 0, code, part.line)
         code += tail
         if keep is not None:
             code.append(Instruction("WRT", keep, line=part.line))
@@ -184,7 +180,7 @@ class BlockLowering:
         return ("bit", keep, False) if keep is not None else None
 
     # -- parts ----------------------------------------------------------------------------
-    def part(self, index: int, graph: _Graph, part: Part, outputs: dict[str, Expr | None]
+    def part(self, index: int, graph: PinGraph, part: Part, outputs: dict[str, Expr | None]
              ) -> Expr | None:
         name = part.name
         if name == "Label":
@@ -269,7 +265,7 @@ class BlockLowering:
             return found
         return self.place(index, part, operand).address
 
-    def vtype(self, index: int, graph: _Graph, part: Part, pins: tuple[str, ...]
+    def vtype(self, index: int, graph: PinGraph, part: Part, pins: tuple[str, ...]
               ) -> typed.ValueType:
         """The type a box works on: its template, else its operands' declared types, else
         a constant's spelling, else the width of an absolute address."""
@@ -298,7 +294,7 @@ class BlockLowering:
                 return guesses[0]
         return typed.ValueType.INT
 
-    def pure_params(self, index: int, graph: _Graph, part: Part) -> tuple[ParamValue, ...]:
+    def pure_params(self, index: int, graph: PinGraph, part: Part) -> tuple[ParamValue, ...]:
         if part.name in ("Ok", "NotOk"):
             operand = graph.operand_in.get((part.uid, "operand")) or graph.operand_in.get(
                 (part.uid, "in"))
@@ -313,7 +309,7 @@ class BlockLowering:
             values.append(self.value(index, part, operand, vtype, pin))
         return (int(vtype), *values)
 
-    def coil(self, index: int, graph: _Graph, part: Part, power: Expr) -> Expr | None:
+    def coil(self, index: int, graph: PinGraph, part: Part, power: Expr) -> Expr | None:
         operand = graph.operand_in.get((part.uid, "operand")) or next(
             iter(graph.operand_out.get((part.uid, "operand"), [])), None)
         if operand is None:
@@ -336,7 +332,7 @@ class BlockLowering:
         self.statement(part, [("bit", keep, False)], tail, None)
         return ("bit", keep, False)
 
-    def timer(self, index: int, graph: _Graph, part: Part, power: Expr,
+    def timer(self, index: int, graph: PinGraph, part: Part, power: Expr,
               outputs: dict[str, Expr | None]) -> Expr | None:
         instance = part.instance or graph.operand_in.get((part.uid, "timer")) or \
             graph.operand_in.get((part.uid, "operand"))
@@ -364,7 +360,7 @@ class BlockLowering:
         self.q_operands(index, graph, part, result, "q")
         return result
 
-    def q_keep(self, graph: _Graph, part: Part) -> Address | None:
+    def q_keep(self, graph: PinGraph, part: Part) -> Address | None:
         """A relay for a box's Q when it is wired to operands only."""
         if not any(graph.operand_out.get((part.uid, pin)) for pin in ("q", "qu", "qd")):
             return None
@@ -372,7 +368,7 @@ class BlockLowering:
         self.scratch += 1
         return Address(Area.R, SCRATCH_FIRST + byte, bit)
 
-    def q_operands(self, index: int, graph: _Graph, part: Part, result: Expr | None,
+    def q_operands(self, index: int, graph: PinGraph, part: Part, result: Expr | None,
                    pin: str) -> None:
         for operand in graph.operand_out.get((part.uid, pin), []):
             if result is None:
@@ -380,7 +376,7 @@ class BlockLowering:
             target = self.bit_expr(operand, False, index, part)[1]
             self.statement(part, [result], [Instruction("WRT", target, line=part.line)], None)
 
-    def counter(self, index: int, graph: _Graph, part: Part, power: Expr,
+    def counter(self, index: int, graph: PinGraph, part: Part, power: Expr,
                 outputs: dict[str, Expr | None]) -> Expr | None:
         if part.instance is None:
             raise self.fail(index, part, "s7-pin-missing", part=part.name, pin="instance")
@@ -409,7 +405,7 @@ class BlockLowering:
         self.q_operands(index, graph, part, result, "qu" if part.name == "CTUD" else "q")
         return result
 
-    def box(self, index: int, graph: _Graph, part: Part, power: Expr) -> Expr | None:
+    def box(self, index: int, graph: PinGraph, part: Part, power: Expr) -> Expr | None:
         name, line = part.name, part.line
         if name in ("Inc", "Dec"):
             operand = graph.operand_in.get((part.uid, "operand")) or graph.operand_in.get(
@@ -459,7 +455,7 @@ class BlockLowering:
                             line=line)]
         return self.statement(part, [power], code, self.keep(graph, part))
 
-    def jump_table(self, index: int, graph: _Graph, part: Part, power: Expr) -> None:
+    def jump_table(self, index: int, graph: PinGraph, part: Part, power: Expr) -> None:
         """JMP_LIST: K = n jumps to DEST n, beyond them the next network (003:552-578). SWITCH:
         the first comparison that holds jumps to its DEST, none: ELSE (003:653-677)."""
         vtype = self.vtype(index, graph, part, ("k",))
@@ -495,98 +491,6 @@ class BlockLowering:
         byte, bit = divmod(self.scratch, 8)
         self.scratch += 1
         return Address(Area.R, SCRATCH_FIRST + byte, bit)
-
-
-def _emit(expr: Expr, push: bool, code: list[Instruction], line: int) -> None:
-    """Code leaving `expr` on the stack: as a new value (RD) or pushed on the one before."""
-    kind = expr[0]
-    if kind == "on":
-        code.append(Instruction("RD.STK" if push else "RD", ALWAYS_ON, line=line))
-    elif kind == "bit":
-        name = ("RD.NOT" if expr[2] else "RD") + (".STK" if push else "")
-        code.append(Instruction(name, expr[1], line=line))
-    elif kind == "and" and expr[1][0] == "on":
-        _emit(expr[2], push, code, line)
-    elif kind == "and":
-        left, right = expr[1], expr[2]
-        _emit(left, push, code, line)
-        if right[0] == "bit":
-            code.append(Instruction("AND.NOT" if right[2] else "AND", right[1], line=line))
-        elif right[0] != "on":
-            _emit(right, True, code, line)
-            code.append(Instruction("AND.STK", line=line))
-    elif kind == "or":
-        terms = expr[1]
-        _emit(terms[0], push, code, line)
-        for term in terms[1:]:
-            if term[0] == "bit":
-                code.append(Instruction("OR.NOT" if term[2] else "OR", term[1], line=line))
-            else:
-                _emit(term, True, code, line)
-                code.append(Instruction("OR.STK", line=line))
-    elif kind == "box":
-        _emit(expr[3], push, code, line)
-        code.append(Instruction(expr[1], None, expr[2], line=line))
-    elif kind == "not":
-        _emit(expr[1], push, code, line)
-        code.append(Instruction("S7.NOT", line=line))
-
-
-class _Graph:
-    """A network's wires by pin: where power comes from, which operand a pin reads/writes."""
-
-    def __init__(self, network: S7Network) -> None:
-        self.network = network
-        self.index = 0
-        self.parts: dict[str, Part] = {p.uid: p for p in network.parts}
-        self.power_in: dict[tuple[str, str], list[End]] = {}
-        self.operand_in: dict[tuple[str, str], Operand] = {}
-        self.operand_out: dict[tuple[str, str], list[Operand]] = {}
-        self.extra_out: dict[tuple[str, str], Expr] = {}
-        self.readers: dict[str, int] = {}
-        self.missing = [end.part for wire in network.wires for end in (wire.source, *wire.targets)
-                        if end.part and end.part not in self.parts]
-        for wire in network.wires:
-            source = wire.source
-            for target in wire.targets:
-                if source.operand is not None and target.part:
-                    self.operand_in[(target.part, target.pin.lower())] = source.operand
-                elif target.operand is not None and source.part:
-                    self.operand_out.setdefault((source.part, source.pin.lower()), []).append(
-                        target.operand)
-                elif target.part:
-                    end = End(source.powerrail, source.part, source.pin.lower())
-                    self.power_in.setdefault((target.part, target.pin.lower()), []).append(end)
-                    if source.part:
-                        self.readers[source.part] = self.readers.get(source.part, 0) + 1
-
-    def used(self, uid: str) -> bool:
-        """True when other parts take power from this part."""
-        return self.readers.get(uid, 0) > 0
-
-    def order(self, loop: object) -> list[Part]:
-        """The parts, each after every part it takes power from; a loop raises `loop(uid)`."""
-        done: list[Part] = []
-        state: dict[str, int] = {}
-
-        def visit(uid: str) -> None:
-            mark = state.get(uid, 0)
-            if mark == 2:
-                return
-            if mark == 1:
-                raise loop(uid)  # type: ignore[operator]
-            state[uid] = 1
-            for (target, _pin), ends in self.power_in.items():
-                if target == uid:
-                    for end in ends:
-                        if end.part in self.parts:
-                            visit(end.part)
-            state[uid] = 2
-            done.append(self.parts[uid])
-
-        for part in self.network.parts:
-            visit(part.uid)
-        return done
 
 
 def lower_block(block: Block, layout: Layout) -> tuple[list[Network], list[Diagnostic]]:

@@ -52,3 +52,19 @@ def test_network_titles_come_from_the_s7res_texts() -> None:
     titles = [net.comments[0] for net in program.networks if net.comments]
     assert titles[:2] == ["Jump condition: skip network 2",
                           "Skipped when jumping (keeps its output)"]
+
+
+def test_first_scan_always_true_and_the_clock_memory(tmp_path: Path,
+                                                     capsys: pytest.CaptureFixture[str]) -> None:
+    path = tmp_path / "Main.s7dcl"
+    path.write_text('ORGANIZATION_BLOCK "Main"\n NETWORK\n  RUNG wire#powerrail\n'
+                    '   Contact( %M1.0 )\n   Move( in := 7, out1 => %MW10 )\n  END_RUNG\n'
+                    ' END_NETWORK\n NETWORK\n  RUNG wire#powerrail\n   Contact( %M1.2 )\n'
+                    '   I_Contact( %M1.3 )\n   Inc( %MW12 )\n  END_RUNG\n END_NETWORK\n'
+                    ' NETWORK\n  RUNG wire#powerrail\n   Contact( %M0.5 )\n   Coil( %Q0.0 )\n'
+                    '  END_RUNG\n END_NETWORK\nEND_ORGANIZATION_BLOCK\n', encoding="utf-8")
+    assert main(["run", str(path), "--ms", "490", "--scan-period", "10", "--every-scan",
+                 "--set", "%MW10:2=0@20", "--print", "%MW10:2,%MW12:2,%Q0.0"]) == 0
+    # FirstScan only in the first scan (MW10 cleared at 20 stays 0); AlwaysTRUE counts 49
+    # scans; %M0.5 (1 Hz) is on for the first half second
+    assert capsys.readouterr().out.splitlines() == ["%MW10:2 = 0", "%MW12:2 = 49", "%Q0.0 = 1"]
