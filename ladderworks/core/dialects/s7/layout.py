@@ -182,12 +182,17 @@ class Layout:
                               Address(at.area, at.byte + offset))
             offset += _aligned(size)
 
-    def local(self, block: Block, path: tuple[str, ...]) -> Place | None:
-        """A `#member[.sub…]` of `block`'s interface."""
+    def local(self, block: Block, path: tuple[str, ...],
+              scope: tuple[str, ...] = ()) -> Place | None:
+        """A `#member[.sub…]` of `block`'s interface, in `scope` (an FB instance's: its
+        instance DB `("motor_db",)`; by default the block's own `("#name",)`)."""
         found = block.member(path[0])
         if found is None:
             return None
-        key = (f"#{block.name.lower()}", path[0].lower())
+        scope = scope or (f"#{block.name.lower()}",)
+        if scope not in self.places:  # the instance itself: named, its members under it
+            self.places[scope] = Place(Address(Area.D, self.next_byte), "Struct")
+        key = (*scope, path[0].lower())
         self._lay(key, found[1])
         return self._sub(key, path[1:])
 
@@ -240,7 +245,8 @@ class Layout:
             place = found
         return place
 
-    def resolve(self, block: Block, operand: Operand, as_instance: str = "") -> Place | None:
+    def resolve(self, block: Block, operand: Operand, as_instance: str = "",
+                scope: tuple[str, ...] = ()) -> Place | None:
         """The place an operand names, None when it names none (a constant included)."""
         if operand.kind is OperandKind.ABSOLUTE:
             try:
@@ -250,7 +256,7 @@ class Layout:
             names = {1: "Byte", 2: "Int", 4: "DInt"}
             return Place(address, "Bool" if address.bit is not None else names[width])
         if operand.kind is OperandKind.LOCAL:
-            found = self.local(block, operand.path)
+            found = self.local(block, operand.path, scope)
             if found is not None or operand.text.startswith("#"):
                 return found
         if operand.kind is OperandKind.CONSTANT or not operand.path:

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.diagnostics import Diagnostic, Severity
+from ladderworks.core.dialects.s7 import calls
 from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, Part, S7Network
 from ladderworks.core.dialects.s7.layout import Layout, Place, constant_type, constant_value
 from ladderworks.core.dialects.s7.stack import ALWAYS_OFF, ALWAYS_ON, Expr, PinGraph, emit_expr
@@ -44,8 +45,18 @@ class LoweringError(Exception):
 
 
 @dataclass(slots=True)
+class Counters:
+    """What every block lowered into one program shares: label numbers and relays used."""
+
+    labels: int = 0
+    relays: int = 0  # LadderWorks relays used so far (each written by one network only)
+
+
+@dataclass(slots=True)
 class BlockLowering:
-    """One block's networks lowered in order; `labels` numbers its jump labels."""
+    """One block's networks lowered in order; `labels` numbers its jump labels. `scope` is
+    where its interface members live (layout.py); a called block is lowered inline with the
+    scope of its instance (calls.py), `depth` calls deep."""
 
     block: Block
     layout: Layout
@@ -53,21 +64,31 @@ class BlockLowering:
     networks: list[Network] = field(default_factory=list)
     labels: dict[str, int] = field(default_factory=dict)
     end_label: int = 0
-    scratch: int = 0  # LadderWorks relays used so far (each written by one network only)
+    counters: Counters = field(default_factory=Counters)
+    scope: tuple[str, ...] = ()
+    depth: int = 0
+
+    def new_label(self) -> int:
+        """A label number no other block of the program uses."""
+        self.counters.labels += 1
+        return self.counters.labels
 
     def run(self) -> list[Network]:
         """Every network of the block, then the label RET jumps to."""
+        self.scope = self.scope or (f"#{self.block.name.lower()}",)
         for network in self.block.networks:
             for part in network.parts:
-                if part.name == "Label" and part.label:
-                    self.labels.setdefault(part.label.lower(), len(self.labels) + 1)
-        self.end_label = len(self.labels) + 1
+                if part.name == "Label" and part.label and part.label.lower() not in self.labels:
+                    self.labels[part.label.lower()] = self.new_label()
+        self.end_label = self.new_label()
         for network in self.block.networks:  # instances first: their members are read anywhere
             for part in network.parts:
                 kind = "IEC_TIMER" if part.name in TIMERS else "IEC_COUNTER" \
                     if part.name in COUNTERS else ""
                 if kind and part.instance is not None:
-                    self.layout.resolve(self.block, part.instance, kind)
+                    self.layout.resolve(self.block, part.instance, kind, self.scope)
+                elif part.name == "Call":
+                    calls.prepare(self, part)
         for index, network in enumerate(self.block.networks, start=1):
             before = len(self.networks)
             try:
@@ -153,7 +174,7 @@ class BlockLowering:
         return ("bit", place.address, negated)
 
     def place(self, index: int, part: Part, operand: Operand, instance: str = "") -> Place:
-        found = self.layout.resolve(self.block, operand, instance)
+        found = self.layout.resolve(self.block, operand, instance, self.scope)
         if found is None:
             raise self.fail(index, part, "s7-operand-unknown", text=operand.display())
         return found
@@ -162,11 +183,7 @@ class BlockLowering:
         """A relay for the part's output when other parts read it."""
         if not graph.used(part.uid):
             return None
-        byte, bit = divmod(self.scratch, 8)
-        self.scratch += 1
-        if SCRATCH_FIRST + byte > SCRATCH_LAST:
-            raise self.fail(graph.index, part, "s7-wire", part=part.name, why="too many branches")
-        return Address(Area.R, SCRATCH_FIRST + byte, bit)
+        return self.new_relay(graph.index, part)
 
     def statement(self, part: Part, inputs: list[Expr], tail: list[Instruction],
                   keep: Address | None) -> Expr | None:
@@ -251,7 +268,7 @@ class BlockLowering:
             self.jump_table(index, graph, part, power)
             return None
         if name == "Call":
-            raise self.fail(index, part, "s7-call-unknown", block=part.call)
+            return calls.lower_call(self, index, graph, part, power, outputs)
         raise self.fail(index, part, "s7-part-unknown", part=name)
 
     def value(self, index: int, part: Part, operand: Operand | None, vtype: typed.ValueType,
@@ -286,7 +303,7 @@ class BlockLowering:
                 if rank is OperandKind.CONSTANT:
                     found = constant_type(operand.text)
                 else:
-                    place = self.layout.resolve(self.block, operand)
+                    place = self.layout.resolve(self.block, operand, "", self.scope)
                     found = place.vtype if place is not None else None
                 if found is not None:
                     guesses.append(found)
@@ -364,9 +381,7 @@ class BlockLowering:
         """A relay for a box's Q when it is wired to operands only."""
         if not any(graph.operand_out.get((part.uid, pin)) for pin in ("q", "qu", "qd")):
             return None
-        byte, bit = divmod(self.scratch, 8)
-        self.scratch += 1
-        return Address(Area.R, SCRATCH_FIRST + byte, bit)
+        return self.new_relay(graph.index, part)
 
     def q_operands(self, index: int, graph: PinGraph, part: Part, result: Expr | None,
                    pin: str) -> None:
@@ -488,8 +503,11 @@ class BlockLowering:
                        Instruction("S7.JMP", None, (LabelRef(target),), line=line)])
 
     def new_relay(self, index: int, part: Part) -> Address:
-        byte, bit = divmod(self.scratch, 8)
-        self.scratch += 1
+        """A LadderWorks relay of its own for a link inside a network."""
+        byte, bit = divmod(self.counters.relays, 8)
+        self.counters.relays += 1
+        if SCRATCH_FIRST + byte > SCRATCH_LAST:
+            raise self.fail(index, part, "s7-wire", part=part.name, why="too many branches")
         return Address(Area.R, SCRATCH_FIRST + byte, bit)
 
 

@@ -129,9 +129,9 @@ def _read_text(path: Path, diagnostics: list[Diagnostic]) -> str | None:
 
 
 def companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic]
-               ) -> tuple[list[Parsed], list, dict[str, dict[str, str]]]:
-    """The SD blocks, tags and texts of a folder (the entry file's first)."""
-    blocks: list[Parsed] = []
+               ) -> tuple[list[tuple[Path, Parsed]], list, dict[str, dict[str, str]]]:
+    """The SD blocks (but the entry's), tags and texts of a folder."""
+    blocks: list[tuple[Path, Parsed]] = []
     tags: list = []
     texts: dict[str, dict[str, str]] = {}
     files = sorted(p for p in folder.iterdir() if p.is_file())
@@ -154,7 +154,7 @@ def companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic]
                 other: list[Diagnostic] = []
                 parsed = _parse(text, other)
                 if parsed is not None:
-                    blocks.append(parsed)
+                    blocks.append((path, parsed))
     return blocks, tags, texts
 
 
@@ -168,12 +168,13 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     diagnostics: list[Diagnostic] = []
     entry: Path | None = path if path.is_file() else None
     folder = path.parent if entry is not None else path
-    blocks, tags, texts = companions(folder, entry, diagnostics)
-    if entry is None:
-        sd = [p for p in sorted(folder.iterdir()) if p.suffix.lower() in SD_SUFFIXES]
-        ob = next((p for p, b in zip(sd, blocks, strict=False) if b.block.kind == "OB"), None)
-        entry = ob or (sd[0] if sd else None)
-        blocks = [b for p, b in zip(sd, blocks, strict=False) if p != entry]
+    found, tags, texts = companions(folder, entry, diagnostics)
+    if entry is None:  # a folder: its OB, else its first code block, else its first file
+        code = [p for p, b in found if b.block.kind in ("OB", "FC", "FB")]
+        ob = next((p for p, b in found if b.block.kind == "OB"), None)
+        sd = sorted(p for p in folder.iterdir() if p.suffix.lower() in SD_SUFFIXES)
+        entry = ob or (code[0] if code else sd[0] if sd else None)
+    blocks = [b for p, b in found if p != entry]
     if entry is None:
         diagnostics.append(Diagnostic("s7-syntax", {"expected": "a .s7dcl block",
                                                     "found": str(path)}, 0, 0))

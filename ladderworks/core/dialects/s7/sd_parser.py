@@ -157,7 +157,12 @@ class _Parser:
         block.language = attributes.get("S7_PreferredLanguage", "LAD")
         if self.op(":"):
             self.next()
-            block.return_type = self.type_text(inside="the block's head")
+            type_tok = self.next()
+            if type_tok.kind not in ("name", "word"):
+                raise self.fail("the block's type", "the block's head")
+            block.return_type = _unquote(type_tok.text)
+            if block.kind == "GlobalDB":  # DATA_BLOCK "X" : "FB": an instance DB
+                block.kind, block.instance_of = "InstanceDB", block.return_type
         parsed = Parsed(block, block_ids=(attributes.get("S7_BlockTitle", ""),
                                           attributes.get("S7_BlockComment", "")))
         end = "END_" + keyword
@@ -176,8 +181,12 @@ class _Parser:
             elif self.word("NETWORK"):
                 self.network(block, parsed, pending)
                 pending = {}
-            elif self.word("BEGIN"):
+            elif self.word("BEGIN"):  # a DB's start values: kept in the file, not read
                 self.next()
+                while not self.word(end):
+                    if self.tok.kind == "end":
+                        raise self.fail(end, f"the block {block.name}")
+                    self.next()
             else:
                 raise self.fail(f"VAR_…, NETWORK or {end}")
         return parsed

@@ -12,7 +12,7 @@ from ladderworks.core.il.printer import encode_program
 from ladderworks.core.il.reading import parse_file
 
 EXAMPLES = Path(__file__).resolve().parents[4] / "resources" / "examples" / "s7"
-NAMES = ("timers", "counters", "compare", "jumps", "jump_list", "switch")
+NAMES = ("timers", "counters", "compare", "jumps", "jump_list", "switch", "calls")
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -68,3 +68,19 @@ def test_first_scan_always_true_and_the_clock_memory(tmp_path: Path,
     # FirstScan only in the first scan (MW10 cleared at 20 stays 0); AlwaysTRUE counts 49
     # scans; %M0.5 (1 Hz) is on for the first half second
     assert capsys.readouterr().out.splitlines() == ["%MW10:2 = 0", "%MW12:2 = 49", "%Q0.0 = 1"]
+
+
+def test_an_fc_is_tested_alone_with_its_interface(capsys: pytest.CaptureFixture[str]) -> None:
+    folder = EXAMPLES / "calls"
+    assert main(["test", str(folder / "Kilit.s7dcl"), str(folder / "Kilit.scenario.csv")]) == 0
+    assert "1 passed, 0 failed" in capsys.readouterr().out
+
+
+def test_a_call_of_a_block_that_is_not_there(tmp_path: Path) -> None:
+    path = tmp_path / "Main.s7dcl"
+    path.write_text('ORGANIZATION_BLOCK "Main"\n NETWORK\n  RUNG wire#powerrail\n'
+                    '   "Nowhere_DB"( a := 1 )\n  END_RUNG\n END_NETWORK\n'
+                    'END_ORGANIZATION_BLOCK\n', encoding="utf-8")
+    result = parse_file(path)
+    assert [(d.code, d.line, d.args["block"]) for d in result.diagnostics] == [
+        ("s7-call-unknown", 4, "Nowhere_DB")]
