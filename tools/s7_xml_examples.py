@@ -22,21 +22,24 @@ TARGET = ROOT / "resources" / "examples" / "s7-xml"
 
 
 def main() -> int:
-    """Write every example's XML twin."""
+    """Write every example's XML twin: each block file, its texts, tags and scenarios."""
     for folder in sorted(p for p in SOURCE.iterdir() if (p / "Main.s7dcl").is_file()):
-        parsed = parse_sd((folder / "Main.s7dcl").read_text("utf-8-sig"))
+        parsed = {p.stem: parse_sd(p.read_text("utf-8-sig")) for p in folder.glob("*.s7dcl")}
         texts = read_texts((folder / "Main.s7res").read_text("utf-8-sig"))
-        cultures = {}
-        for index, (title, comment) in enumerate(parsed.title_ids, start=1):
-            if title in texts:
-                cultures[(index, "title")] = texts[title]
-            if comment in texts:
-                cultures[(index, "comment")] = texts[comment]
+        blocks = [p.block for p in parsed.values()]
         out = TARGET / folder.name
         out.mkdir(parents=True, exist_ok=True)
-        (out / "Main.xml").write_text(write_block(parsed.block, 5, cultures), "utf-8")
-        for name in ("PLC tags.xml", "Main.scenario.csv"):
-            shutil.copyfile(folder / name, out / name)
+        for stem, one in sorted(parsed.items()):
+            cultures = {}
+            for index, (title, comment) in enumerate(one.title_ids, start=1):
+                if title in texts:
+                    cultures[(index, "title")] = texts[title]
+                if comment in texts:
+                    cultures[(index, "comment")] = texts[comment]
+            (out / f"{stem}.xml").write_text(write_block(one.block, 5, cultures, blocks),
+                                             "utf-8")
+        for path in [folder / "PLC tags.xml", *folder.glob("*.scenario.csv")]:
+            shutil.copyfile(path, out / path.name)
         print(out)
     return 0
 

@@ -65,9 +65,11 @@ def _read_file(path: Path, diagnostics: list[Diagnostic]) -> XmlRead | None:
         return None
 
 
-def _companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic]
+def _companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic],
+                extra: dict[str, str]
                 ) -> tuple[list[Block], list[Tag], dict[str, dict[str, str]], list[Parsed]]:
-    """The XML blocks and tags, the SD blocks and texts of a folder, the entry file left out."""
+    """The XML blocks and tags, the SD blocks and texts of a folder, the entry file left out;
+    the FBs of the instance DBs the XML calls name go into `extra`."""
     blocks: list[Block] = []
     tags: list[Tag] = []
     texts: dict[str, dict[str, str]] = {}
@@ -80,6 +82,7 @@ def _companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic]
                 continue
             blocks += found.blocks
             tags += found.tags
+            extra.update(found.instances)
             diagnostics += [Diagnostic(d.code, d.args, d.line, d.column, Severity.WARNING)
                             for d in found.diagnostics if d.code != "s7xml-empty"]
         elif suffix == ".s7res":
@@ -97,15 +100,21 @@ def read(text: str, form: TextForm, lines: list[str],
     """One SimaticML document's text (no companion files) as a Program."""
     found = read_document(text)
     diagnostics = list(found.diagnostics)
-    program = _build(found.blocks, [], found.tags, {}, diagnostics)
+    program = _build(found.blocks, [], found.tags, {}, diagnostics, None, found.instances)
     reader._source(program, form, lines, ends)
     return program, diagnostics
 
 
 def _build(entry_blocks: list[Block], others: list[Block], tags: list[Tag],
            texts: dict[str, dict[str, str]], diagnostics: list[Diagnostic],
-           sd: list[Parsed] | None = None) -> Program:
+           sd: list[Parsed] | None = None, instances: dict[str, str] | None = None) -> Program:
     every = entry_blocks + others + [p.block for p in sd or []]
+    names = {b.name.lower() for b in every}
+    for db, fb in (instances or {}).items():  # an FB call's instance DB not exported with it
+        if db.lower() not in names:
+            others = [*others, Block("InstanceDB", db, instance_of=fb)]
+            every.append(others[-1])
+            names.add(db.lower())
     check_calls(every, diagnostics)
     code = [b for b in entry_blocks if b.kind in CODE]
     rest = [b for b in entry_blocks if b.kind not in CODE] + others
@@ -120,7 +129,8 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     diagnostics: list[Diagnostic] = []
     entry: Path | None = path if path.is_file() else None
     folder = path.parent if entry is not None else path
-    blocks, tags, texts, sd = _companions(folder, entry, diagnostics)
+    extra: dict[str, str] = {}
+    blocks, tags, texts, sd = _companions(folder, entry, diagnostics, extra)
     if entry is None:
         owners = [p for p in sorted(folder.iterdir()) if _is_block_file(p)]
         entry = next((p for p in owners if "SW.Blocks.OB" in _head(p)), None) or \
@@ -150,7 +160,8 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     text, form, problems, (lines, ends) = decode_lines(raw)
     del text
     diagnostics += problems
-    program = _build(found.blocks, blocks, found.tags + tags, texts, diagnostics, sd)
+    instances = {**extra, **found.instances}
+    program = _build(found.blocks, blocks, found.tags + tags, texts, diagnostics, sd, instances)
     reader._source(program, form, lines, ends)
     return program, diagnostics, form.encoding
 

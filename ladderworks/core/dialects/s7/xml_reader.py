@@ -47,6 +47,7 @@ class XmlRead:
     texts: dict[tuple[str, int, str], dict[str, str]] = field(default_factory=dict)
     version: str = ""
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    instances: dict[str, str] = field(default_factory=dict)  # instance DB → its FB (calls)
 
 
 def is_simaticml(text: str) -> bool:
@@ -250,13 +251,7 @@ class _Reader:
     def part(self, node: Element, where: dict[str, object]) -> Part:
         uid = node.attrs.get("UId", "")
         if node.name == "Call":
-            info = node.child("CallInfo") or node
-            instance = info.child("Instance")
-            kind = info.attrs.get("BlockType", "")
-            return Part(uid, "Call", call=info.attrs.get("Name", ""),
-                        call_kind="FB" if kind in ("FB", "SFB") else kind or "FC",
-                        instance=self.operand(instance) if instance is not None else None,
-                        line=node.line)
+            return self.call(node, uid)
         name = node.attrs.get("Name", "")
         part = Part(uid, name, line=node.line)
         if name not in PART_NAMES:
@@ -269,6 +264,24 @@ class _Reader:
         for value in node.all("TemplateValue"):
             part.template[value.attrs.get("Name", "")] = value.text.strip()
         return part
+
+    def call(self, node: Element, uid: str) -> Part:
+        """A Call as the SD reader has it: an FC by its name; an FB by its instance — a global
+        instance DB by the DB's name (its FB remembered in `instances`), a multi-instance by
+        the local member."""
+        info = node.child("CallInfo") or node
+        name = info.attrs.get("Name", "")
+        kind = "FB" if info.attrs.get("BlockType", "") in ("FB", "SFB") else \
+            info.attrs.get("BlockType", "") or "FC"
+        instance = info.child("Instance") or node.child("Instance")
+        if kind != "FB" or instance is None:
+            return Part(uid, "Call", call=name, call_kind=kind, line=node.line)
+        operand = self.operand(instance)
+        path = ".".join(operand.path)
+        if operand.kind is OperandKind.LOCAL:
+            return Part(uid, "Call", call=path, call_kind="FB", instance=operand, line=node.line)
+        self.out.instances.setdefault(path, name)
+        return Part(uid, "Call", call=path, call_kind="FB", line=node.line)
 
     def operand(self, node: Element) -> Operand:
         """An `Access` (or `Instance`) as an Operand."""
@@ -433,12 +446,21 @@ def read_document(data: bytes | str) -> XmlRead:
 
 
 def check_calls(blocks: list[Block], diagnostics: list[Diagnostic]) -> None:
-    """A warning at each call of a block that is not among `blocks` (network and part UId)."""
-    names = {b.name.lower() for b in blocks}
+    """A warning at each call of a block that is not among `blocks` (network and part UId):
+    an FC or FB by its name, an FB called on an instance DB by the DB's FB."""
+    by_name = {b.name.lower(): b for b in blocks}
     for block in blocks:
         for index, network in enumerate(block.networks, start=1):
             for part in network.parts:
-                if part.name == "Call" and part.call.lower() not in names:
+                if part.name != "Call" or (part.instance is not None and
+                                           part.instance.kind is OperandKind.LOCAL):
+                    continue
+                found = by_name.get(part.call.lower())
+                callee = part.call
+                if found is not None and found.kind == "InstanceDB":
+                    callee = found.instance_of
+                    found = by_name.get(found.instance_of.lower())
+                if found is None:
                     diagnostics.append(Diagnostic("s7xml-call-missing", {
                         "block": block.name, "network": index, "uid": part.uid,
-                        "callee": part.call}, part.line, 1, Severity.WARNING))
+                        "callee": callee}, part.line, 1, Severity.WARNING))

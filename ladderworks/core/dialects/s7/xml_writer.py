@@ -91,13 +91,20 @@ def _access(uid: str, operand: Operand, pad: str) -> list[str]:
             *_components(operand.path, pad + "    "), f"{pad}  </Symbol>", f"{pad}</Access>"]
 
 
-def _part(part: Part, uid: str, ids: dict[str, str], pad: str) -> list[str]:
+def _part(part: Part, uid: str, ids: dict[str, str], pad: str,
+          blocks: dict[str, Block]) -> list[str]:
     if part.name == "Call":
+        called = blocks.get(part.call.lower())
+        name, kind, instance = part.call, part.call_kind or "FC", part.instance
+        if called is not None and called.kind == "InstanceDB":  # an FB on its instance DB
+            name, kind = called.instance_of, "FB"
+            instance = Operand(OperandKind.GLOBAL, (called.name,))
+        elif called is not None:
+            kind = called.kind
         lines = [f'{pad}<Call UId="{uid}">',
-                 f"{pad}  <CallInfo Name={quoteattr(part.call)} "
-                 f'BlockType="{part.call_kind or "FC"}">']
-        if part.instance is not None:
-            lines += _instance(part.instance, ids, pad + "    ")
+                 f'{pad}  <CallInfo Name={quoteattr(name)} BlockType="{kind}">']
+        if instance is not None:
+            lines += _instance(instance, ids, pad + "    ")
         return [*lines, f"{pad}  </CallInfo>", f"{pad}</Call>"]
     inner: list[str] = []
     for pin in sorted(part.negated):
@@ -121,7 +128,8 @@ def _instance(operand: Operand, ids: dict[str, str], pad: str) -> list[str]:
             *_components(operand.path, pad + "  "), f"{pad}</Instance>"]
 
 
-def _flgnet(network_parts: list[Part], wires: list, version: int, pad: str) -> list[str]:
+def _flgnet(network_parts: list[Part], wires: list, version: int, pad: str,
+            blocks: dict[str, Block]) -> list[str]:
     uids: dict[str, str] = {}
     counter = iter(range(21, 100000))
     accesses: list[str] = []
@@ -172,21 +180,27 @@ def _flgnet(network_parts: list[Part], wires: list, version: int, pad: str) -> l
     lines += [f"{pad}  <Parts>", *accesses]
     for part in network_parts:
         if part.name != "Label":
-            lines += _part(part, uids[part.uid], ids, pad + "    ")
+            lines += _part(part, uids[part.uid], ids, pad + "    ", blocks)
     return [*lines, f"{pad}  </Parts>", f"{pad}  <Wires>", *wire_lines, f"{pad}  </Wires>",
             f"{pad}</FlgNet>"]
 
 
-def write_block(block: Block, version: int = 5, texts: Texts | None = None) -> str:
-    """The SimaticML document of one block (CRLF-free UTF-8 text with a declaration)."""
+def write_block(block: Block, version: int = 5, texts: Texts | None = None,
+                others: list[Block] | None = None) -> str:
+    """The SimaticML document of one block (UTF-8 text with a declaration); `others`, the
+    program's other blocks, tell an FB called on its instance DB from an FC."""
     texts = texts or {}
+    blocks = {b.name.lower(): b for b in others or []}
     ids = _Ids()
     tag = _TAGS[block.kind]
     lines = ['<?xml version="1.0" encoding="utf-8"?>', "<Document>",
              f'  <Engineering version="{ENGINEERING.get(version, "V19")}" />',
              f'  <{tag} ID="{ids.take()}">', "    <AttributeList>", "      <Interface>",
              f'        <Sections xmlns="{_ns("Interface", version)}">']
-    for name, members in block.sections.items():
+    sections = dict(block.sections)
+    if block.kind == "FC":
+        sections["Return"] = [Member("Ret_Val", block.return_type or "Void")]
+    for name, members in sections.items():
         if not members:
             lines.append(f'          <Section Name="{name}" />')
             continue
@@ -197,6 +211,8 @@ def write_block(block: Block, version: int = 5, texts: Texts | None = None) -> s
     lines += ["        </Sections>", "      </Interface>",
               "      <MemoryLayout>Optimized</MemoryLayout>",
               f"      <Name>{escape(block.name)}</Name>"]
+    if block.instance_of:
+        lines.append(f"      <InstanceOfName>{escape(block.instance_of)}</InstanceOfName>")
     if block.number:
         lines.append(f"      <Number>{block.number}</Number>")
     lines += [f"      <ProgrammingLanguage>{escape(block.language)}</ProgrammingLanguage>",
@@ -206,7 +222,7 @@ def write_block(block: Block, version: int = 5, texts: Texts | None = None) -> s
     for index, network in enumerate(block.networks, start=1):
         lines += [f'      <SW.Blocks.CompileUnit ID="{ids.take()}" CompositionName="CompileUnits">',
                   "        <AttributeList>", "          <NetworkSource>"]
-        lines += _flgnet(network.parts, network.wires, version, "            ")
+        lines += _flgnet(network.parts, network.wires, version, "            ", blocks)
         lines += ["          </NetworkSource>",
                   f"          <ProgrammingLanguage>{escape(network.language)}"
                   "</ProgrammingLanguage>", "        </AttributeList>", "        <ObjectList>"]

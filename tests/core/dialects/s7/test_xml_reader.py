@@ -23,9 +23,9 @@ NAMES = ("timers", "counters", "compare", "jumps", "jump_list", "switch")
 OPENNESS = "http://www.siemens.com/automation/Openness/SW/"
 
 
-def _sd(name: str):
+def _sd(name: str, stem: str = "Main"):
     folder = ROOT / "s7" / name
-    parsed = parse_sd((folder / "Main.s7dcl").read_text("utf-8-sig"))
+    parsed = parse_sd((folder / f"{stem}.s7dcl").read_text("utf-8-sig"))
     texts = read_texts((folder / "Main.s7res").read_text("utf-8-sig"))
     for network, (title, _comment) in zip(parsed.block.networks, parsed.title_ids, strict=True):
         network.title = pick(texts, title) if title else ""
@@ -40,6 +40,35 @@ def test_the_xml_twin_gives_the_same_graph_as_the_sd_example(name: str) -> None:
     sd, xml = _sd(name), found.blocks[0]
     assert same_block(sd, xml) == []
     assert [n.title for n in xml.networks] == [n.title for n in sd.networks]
+
+
+@pytest.mark.parametrize("stem", ["Main", "Kilit", "Gecikme", "Gecikme_DB"])
+def test_every_block_of_the_calls_example_reads_alike(stem: str) -> None:
+    found = read_document((ROOT / "s7-xml" / "calls" / f"{stem}.xml").read_bytes())
+    assert found.diagnostics == []
+    assert same_block(_sd("calls", stem), found.blocks[0]) == []
+
+
+@pytest.mark.parametrize("scenario", ["Main", "Kilit"])
+def test_the_calls_example_passes_both_scenarios(scenario: str,
+                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    folder = ROOT / "s7-xml" / "calls"
+    assert main(["test", str(folder / f"{scenario}.xml"),
+                 str(folder / f"{scenario}.scenario.csv")]) == 0, capsys.readouterr().out
+
+
+def test_an_fb_call_runs_without_its_instance_db_export(tmp_path: Path,
+                                                        capsys: pytest.CaptureFixture[str]
+                                                        ) -> None:
+    folder = ROOT / "s7-xml" / "calls"
+    for name in ("Main.xml", "Kilit.xml", "Gecikme.xml", "PLC tags.xml", "Main.scenario.csv"):
+        (tmp_path / name).write_bytes((folder / name).read_bytes())
+    assert main(["test", str(tmp_path / "Main.xml"), str(tmp_path / "Main.scenario.csv")]) == 0
+    assert "1 passed, 0 failed" in capsys.readouterr().out
+    (tmp_path / "Gecikme.xml").unlink()
+    result = parse_file(tmp_path / "Main.xml")
+    missing = [d for d in result.diagnostics if d.code == "s7xml-call-missing"]
+    assert [(d.args["network"], d.args["callee"]) for d in missing] == [(2, "Gecikme")]
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -282,7 +311,8 @@ def test_calls_of_fcs_and_fbs() -> None:
         const(21, "T#1s") + tag(22, "Lamba"))
     fc, fb = network.parts
     assert (fc.name, fc.call, fc.call_kind) == ("Call", "Blink", "FC")
-    assert (fb.call, fb.call_kind, fb.instance.path) == ("Motor", "FB", ("Motor_DB",))
+    # an FB on a global instance DB is called by the DB's name, as SD writes it
+    assert (fb.call, fb.call_kind, fb.instance) == ("Motor_DB", "FB", None)
     assert reads == {"period": "T#1s"} and writes == {"run": '"Lamba"'}
     assert power == ["en", "en"]
 
