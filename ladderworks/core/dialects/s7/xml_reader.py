@@ -27,6 +27,7 @@ from ladderworks.core.dialects.s7.graph import (
     Wire,
 )
 from ladderworks.core.dialects.s7.texts import pick
+from ladderworks.core.dialects.s7.xml_fbd import to_lad
 from ladderworks.core.dialects.s7.xml_forms import KNOWN_VERSIONS, address_text, namespace, pin_in
 from ladderworks.core.dialects.s7.xml_safe import Element, XmlRefused, parse
 
@@ -199,6 +200,8 @@ class _Reader:
         if body.name == "FlgNet":
             if self.check_ns(body, "FlgNet", index, block.name):
                 self.flgnet(block, index, network, body)
+                if network.language == "FBD" and network.parts:
+                    to_lad(network)
             if network.language not in ("LAD", "FBD"):
                 network.language = "LAD"
         else:
