@@ -78,16 +78,22 @@ def test_mutated_xml_examples_through_the_cli(data: st.DataObject, tmp_path: Pat
 _PIN = st.sampled_from(["in", "out", "operand", "pre", "en", "eno", "IN", "PT", "Q", "ET", "CU",
                         "PV", "CV", "in1", "in2", "k", "dest0", "label", "bogus"])
 _PART = st.sampled_from(["Contact", "Coil", "SCoil", "O", "TON", "CTU", "Eq", "InRange", "Move",
-                         "Add", "Jump", "JumpList", "Switch", "Return", "Sr", "Nonsense"])
+                         "Add", "Jump", "JumpList", "Switch", "Return", "Sr", "Nonsense", "A",
+                         "X", "Not"])
 
 
 @_SETTINGS
 @given(parts=st.lists(_PART, min_size=1, max_size=8),
-       wires=st.lists(st.tuples(st.integers(0, 9), _PIN, st.integers(0, 9), _PIN), max_size=14))
-def test_generated_flgnets_never_raise(parts: list[str], wires: list[tuple]) -> None:
+       wires=st.lists(st.tuples(st.integers(0, 9), _PIN, st.integers(0, 9), _PIN), max_size=14),
+       language=st.sampled_from(["LAD", "FBD"]),
+       negated=st.lists(st.tuples(st.integers(0, 7), _PIN), max_size=3))
+def test_generated_flgnets_never_raise(parts: list[str], wires: list[tuple], language: str,
+                                       negated: list[tuple]) -> None:
     body = '<Access Scope="GlobalVariable" UId="9"><Symbol><Component Name="Start" /></Symbol>' \
-           "</Access>" + "".join(f'<Part Name="{name}" UId="{n}" />' for n, name in
-                                 enumerate(parts))
+           "</Access>" + "".join(
+               f'<Part Name="{name}" UId="{n}">' + "".join(
+                   f'<Negated Name="{pin}" />' for k, pin in negated if k == n) + "</Part>"
+               for n, name in enumerate(parts))
     links = "".join(
         f'<Wire UId="{100 + n}">' + ("<Powerrail />" if a == 8 else f'<IdentCon UId="{a}" />'
                                      if a == 9 else f'<NameCon UId="{a}" Name="{pa}" />') +
@@ -96,5 +102,6 @@ def test_generated_flgnets_never_raise(parts: list[str], wires: list[tuple]) -> 
             '<ObjectList><SW.Blocks.CompileUnit ID="1"><AttributeList><NetworkSource><FlgNet '
             'xmlns="http://www.siemens.com/automation/Openness/SW/NetworkSource/FlgNet/v4">'
             f"<Parts>{body}</Parts><Wires>{links}</Wires></FlgNet></NetworkSource>"
-            "</AttributeList></SW.Blocks.CompileUnit></ObjectList></SW.Blocks.OB></Document>")
+            f"<ProgrammingLanguage>{language}</ProgrammingLanguage></AttributeList>"
+            "</SW.Blocks.CompileUnit></ObjectList></SW.Blocks.OB></Document>")
     parse_bytes(text.encode(), "s7")

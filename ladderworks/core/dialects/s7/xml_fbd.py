@@ -87,8 +87,8 @@ def to_lad(network: S7Network) -> None:
 def _series(gate: Part, parts: dict[str, Part], edges: list[Edge], added: set[str]
             ) -> list[Edge]:
     """An `A` box as the series of its inputs; the edges unchanged when they do not allow it."""
-    inputs = sorted(((t.pin, s) for s, t in edges if t.part == gate.uid and s.operand is None),
-                    key=lambda item: int(item[0][2:] or 0))
+    inputs = sorted(((t.pin, s) for s, t in edges if t.part == gate.uid and s.operand is None
+                     and _GATE_PIN.match(t.pin)), key=lambda item: int(item[0][2:]))
     if not inputs:
         return edges
     plan: list[tuple[str, End]] = []  # (a later input's part, its output end)
