@@ -406,3 +406,30 @@ def test_the_cli_runs_an_xml_block_by_tag_name(capsys: pytest.CaptureFixture[str
     assert main(["run", str(path), "--set", "Start=1", "--ms", "5010", "--scan-period", "10",
                  "--print", "Lamba 1,Lamba 2"]) == 0
     assert capsys.readouterr().out.splitlines() == ["Lamba 1 = 0", "Lamba 2 = 1"]
+
+
+def test_a_folder_with_a_global_db_and_a_tag_table(tmp_path: Path,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    db = document([], kind="GlobalDB", name="Veri", interface=(
+        '<Section Name="Static"><Member Name="Bayrak" Datatype="Bool" /><Member Name="Sayi" '
+        'Datatype="Int"><StartValue>7</StartValue></Member></Section>'))
+    main_net = ("<Parts>" + tag(21, "Start") + tag(22, "Veri", "Bayrak") +
+                '<Part Name="Contact" UId="23" /><Part Name="Coil" UId="24" /></Parts><Wires>' +
+                wire(30, "rail", "23:in") + wire(31, "21", "23:operand") +
+                wire(32, "23:out", "24:in") + wire(33, "22", "24:operand") + "</Wires>")
+    second = ("<Parts>" + tag(21, "Veri", "Bayrak") + tag(22, "Lamba") + tag(25, "Veri", "Sayi") +
+              '<Access Scope="GlobalVariable" UId="26"><Address Area="Memory" Type="Int" '
+              'BitOffset="80" /></Access><Part Name="Contact" UId="23" /><Part Name="Coil" '
+              'UId="24" /><Part Name="Move" UId="27" /></Parts><Wires>' +
+              wire(30, "rail", "23:in", "27:en") + wire(31, "21", "23:operand") +
+              wire(32, "23:out", "24:in") + wire(33, "22", "24:operand") +
+              wire(34, "25", "27:in") + wire(35, "27:out1", "26") + "</Wires>")
+    (tmp_path / "Main.xml").write_text(document([main_net, second]), "utf-8")
+    (tmp_path / "Veri.xml").write_text(db, "utf-8")
+    (tmp_path / "PLC tags.xml").write_bytes((ROOT / "s7" / "jumps" / "PLC tags.xml").read_bytes())
+    result = parse_file(tmp_path)
+    assert [d.code for d in result.diagnostics] == []
+    # (DB start values are not applied by the layout yet: the scenario sets the member)
+    assert main(["run", str(tmp_path / "Main.xml"), "--set", "Start=1", "--set",
+                 '"Veri".Sayi:2=7', "--scans", "2", "--print", "Lamba,%MW10:2"]) == 0
+    assert capsys.readouterr().out.splitlines() == ["Lamba = 1", "%MW10:2 = 7"]
