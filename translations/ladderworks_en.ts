@@ -1252,11 +1252,16 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="359"/>
+        <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
+        <translation>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="362"/>
         <source>tag table: {why}</source>
         <translation>tag table: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="361"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
         <source>a changed S7 block cannot be written yet: save it in TIA Portal</source>
         <translation>a changed S7 block cannot be written yet: save it in TIA Portal</translation>
     </message>

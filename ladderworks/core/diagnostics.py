@@ -356,6 +356,9 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "network {network}: the block '{block}' it calls is not in the program"),
     "s7-type": QT_TRANSLATE_NOOP(
         "Diagnostic", "network {network}: {part} on the type '{type}' is not simulated"),
+    "s7-memory-full": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}: no room left for '{text}' (DB members and "
+        "instances share 10000 bytes)"),
     "s7-tags": QT_TRANSLATE_NOOP(
         "Diagnostic", "tag table: {why}"),
     "s7-save-changed": QT_TRANSLATE_NOOP(

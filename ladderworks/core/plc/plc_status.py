@@ -35,6 +35,7 @@ class PlcSnapshot:
     power_flow: bytes = b""  # ST0 after each op (all 0 unless monitored)
     monitored: bool = False
     disabled: frozenset[int] = frozenset()
+    byteorder: str = "little"  # the memory's (Memory.byteorder: "big" for S7)
 
     def bit(self, address: Address) -> int:
         """The bit at a bit address (0 or 1)."""
@@ -42,8 +43,10 @@ class PlcSnapshot:
         return self.areas[address.area][address.byte] >> address.bit & 1
 
     def read(self, address: Address, width: int = 1) -> int:
-        """The `width`-byte little-endian value at a byte address."""
+        """The `width`-byte value at a byte address, in the memory's byte order."""
         data = self.areas[address.area]
+        if self.byteorder == "big":
+            return int.from_bytes(data[address.byte:address.byte + width], "big")
         return int.from_bytes(data[address.byte:address.byte + width], "little")
 
 

@@ -397,9 +397,10 @@ class ProcessRunner:
                 if frame is None or engine.scan_count - frame[0] >= ASK_SCANS:
                     self.process.ask_frame()
                 if frame is not None:
-                    return PlcSnapshot(*frame, True, disabled)
+                    return PlcSnapshot(*frame, True, disabled, engine.memory.byteorder)
             return PlcSnapshot(engine.scan_count, engine.now_ms, engine.memory.snapshot(),
-                               bytes(engine.power_flow), engine.monitored, disabled)
+                               bytes(engine.power_flow), engine.monitored, disabled,
+                               engine.memory.byteorder)
 
     def _output(self, alarms: list[tuple[int, bytes]], ident: int, samples: list[Any],
                 texts: list[str]) -> None:

@@ -325,14 +325,14 @@ class PlcRun:
         """A copy of memory and power flow taken between two scans."""
         engine = self.engine
         if engine is None:
-            return PlcSnapshot(areas=self.memory.snapshot())
+            return PlcSnapshot(areas=self.memory.snapshot(), byteorder=self.memory.byteorder)
         self._hand_over()
         if isinstance(self._runner, ProcessRunner):
             return self._runner.snapshot()
         with engine.lock:
             return PlcSnapshot(engine.scan_count, engine.now_ms, self.memory.snapshot(),
                                bytes(engine.power_flow), engine.monitored,
-                               engine.force_table.disabled)
+                               engine.force_table.disabled, self.memory.byteorder)
 
     def monitor(self, on: bool) -> None:
         """A view starts (True) or stops (False) needing the power flow of every op."""

@@ -57,10 +57,11 @@ class TraceSampler:
         while self._next_ms <= now_ms:
             self._next_ms += self.period_ms
         areas = memory.areas
+        order = memory.byteorder
         values = tuple(
             (areas[area][byte] >> bit & 1) if bit is not None
             else areas[area][byte] if width == 1
-            else int.from_bytes(areas[area][byte:byte + width], "little")
+            else int.from_bytes(areas[area][byte:byte + width], order)
             for area, byte, bit, width in self._readers)
         with self._lock:
             if len(self._buffer) == self._buffer.maxlen:

@@ -138,23 +138,26 @@ class Layout:
     next_byte: int = 0
     places: dict[tuple[str, ...], Place] = field(default_factory=dict)
     members: dict[tuple[str, ...], Member] = field(default_factory=dict)
+    full: bool = False  # a name found no room in the D area (lowering: s7-memory-full)
 
-    def _allocate(self, size: int) -> Address:
-        if size > 1 and self.next_byte & 1:
-            self.next_byte += 1
-        address = Address(Area.D, self.next_byte)
-        self.next_byte += size
-        if self.next_byte > D_BYTES:
-            raise AddressError("s7-address", text="(the D area is full)")
-        return address
+    def _allocate(self, size: int) -> Address | None:
+        """Room for `size` bytes, None (and `full` set) when the D area has none left."""
+        start = self.next_byte + (1 if size > 1 and self.next_byte & 1 else 0)
+        if start + size > D_BYTES:
+            self.full = True
+            return None
+        self.next_byte = start + size
+        return Address(Area.D, start)
 
-    def _lay(self, key: tuple[str, ...], member: Member) -> Place:
-        """Place `member` (and its struct members) under `key`."""
+    def _lay(self, key: tuple[str, ...], member: Member) -> Place | None:
+        """Place `member` (and its struct members) under `key`; None when there is no room."""
         found = self.places.get(key)
         if found is not None:
             return found
         size = size_of(member.type_name, member.members)
         base = self._allocate(size)
+        if base is None:
+            return None
         place = Place(Address(base.area, base.byte, 0) if member.type_name.lower() == "bool"
                       else base, member.type_name)
         self.places[key] = place
@@ -193,7 +196,8 @@ class Layout:
         if scope not in self.places:  # the instance itself: named, its members under it
             self.places[scope] = Place(Address(Area.D, self.next_byte), "Struct")
         key = (*scope, path[0].lower())
-        self._lay(key, found[1])
+        if self._lay(key, found[1]) is None:
+            return None
         return self._sub(key, path[1:])
 
     def global_name(self, path: tuple[str, ...], as_instance: str = "") -> Place | None:
@@ -225,7 +229,9 @@ class Layout:
         return self._sub(key, path[1:])
 
     def _sub(self, key: tuple[str, ...], rest: tuple[str, ...]) -> Place | None:
-        place = self.places[key]
+        place = self.places.get(key)
+        if place is None:
+            return None
         for name in rest:
             low = name.lower()
             kind = place.type_name.lower()

@@ -175,6 +175,8 @@ class BlockLowering:
 
     def place(self, index: int, part: Part, operand: Operand, instance: str = "") -> Place:
         found = self.layout.resolve(self.block, operand, instance, self.scope)
+        if found is None and self.layout.full:
+            raise self.fail(index, part, "s7-memory-full", text=operand.display())
         if found is None:
             raise self.fail(index, part, "s7-operand-unknown", text=operand.display())
         return found
@@ -236,7 +238,7 @@ class BlockLowering:
             return self.counter(index, graph, part, power, outputs)
         if name in ("Sr", "Rs"):
             first, second = ("s", "r1") if name == "Sr" else ("r", "s1")
-            operand = graph.operand_in.get((part.uid, "operand"))
+            operand = graph.operand_in.get((part.uid, "operand")) or part.instance
             if operand is None:
                 raise self.fail(index, part, "s7-pin-missing", part=name, pin="operand")
             other = self.power(graph, part, second, outputs) or ("bit", ALWAYS_OFF, False)

@@ -55,7 +55,7 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
                 add(f"#{member.name}", place.address, member.comment)
                 table.by_symbol.setdefault(member.name, place.address)
     for key, place in list(layout.places.items()):
-        if key[0].startswith("#") or len(key) < 1:
+        if key[0].startswith("#") or place.type_name == "Struct":
             continue
         found = layout.members.get(key)
         head = found.name if len(key) == 1 and found is not None else key[0]

@@ -163,6 +163,8 @@ class _Parser:
             block.return_type = _unquote(type_tok.text)
             if block.kind == "GlobalDB":  # DATA_BLOCK "X" : "FB": an instance DB
                 block.kind, block.instance_of = "InstanceDB", block.return_type
+        if block.kind == "GlobalDB" and self.tok.kind == "name":  # DATA_BLOCK "X" "FB"
+            block.kind, block.instance_of = "InstanceDB", _unquote(self.next().text)
         parsed = Parsed(block, block_ids=(attributes.get("S7_BlockTitle", ""),
                                           attributes.get("S7_BlockComment", "")))
         end = "END_" + keyword
@@ -181,6 +183,13 @@ class _Parser:
             elif self.word("NETWORK"):
                 self.network(block, parsed, pending)
                 pending = {}
+            elif self.word("VERSION", "TITLE", "AUTHOR", "FAMILY", "NAME"):  # SCL-source heads
+                self.next()
+                if self.op(":", "="):
+                    self.next()
+                    self.next()
+            elif self.word("NON_RETAIN", "RETAIN"):
+                self.next()
             elif self.word("BEGIN"):  # a DB's start values: kept in the file, not read
                 self.next()
                 while not self.word(end):
@@ -459,6 +468,8 @@ def _unquote(text: str) -> str:
 
 def _operand_of(path: list[Token]) -> Operand:
     head = path[0]
+    if head.kind == "absolute":
+        return Operand(OperandKind.ABSOLUTE, (head.text,), head.text)
     names = tuple(_unquote(t.text.lstrip("#")) for t in path)
     kind = OperandKind.LOCAL if head.kind == "local" else OperandKind.GLOBAL
     if head.kind == "word":  # a bare name: the lowering looks it up as a local first

@@ -21,40 +21,52 @@ MASK32 = 0xFFFFFFFF
 
 
 class Timer:
-    """The places of one IEC_TIMER instance in memory."""
+    """The places of one IEC_TIMER instance in memory (made once per call site)."""
 
-    __slots__ = ("base", "memory")
+    __slots__ = ("data", "et_at", "flags", "memory", "pt_at", "start_at")
 
     def __init__(self, memory: Memory, base: Address) -> None:
         self.memory = memory
-        self.base = base
-
-    def _at(self, offset: int, bit: int | None = None) -> Address:
-        return Address(self.base.area, self.base.byte + offset, bit)
+        self.data = memory.areas[base.area]
+        self.pt_at = Address(base.area, base.byte)
+        self.et_at = Address(base.area, base.byte + 4)
+        self.start_at = Address(base.area, base.byte + 12)
+        self.flags = base.byte + 8
 
     def get(self, offset: int) -> int:
         """A 4-byte signed member (PT +0, ET +4)."""
-        return self.memory.read(self._at(offset), 4, signed=True)
+        return self.memory.read(self.pt_at if offset == 0 else self.et_at, 4, signed=True)
 
     def put(self, offset: int, value: int) -> None:
         """Store a 4-byte member."""
-        self.memory.write(self._at(offset), value, 4)
+        self.memory.write(self.pt_at if offset == 0 else self.et_at, value, 4)
 
     def flag(self, bit: int) -> bool:
         """IN, Q or running."""
-        return bool(self.memory.bit(self._at(8, bit)))
+        return bool(self.data[self.flags] >> bit & 1)
 
     def set_flag(self, bit: int, value: bool) -> None:
         """Set IN, Q or running."""
-        self.memory.set_bit(self._at(8, bit), value)
+        if value:
+            self.data[self.flags] |= 1 << bit
+        else:
+            self.data[self.flags] &= ~(1 << bit) & 0xFF
 
     def start(self, now_ms: int) -> None:
         """Remember the time timing starts."""
-        self.memory.write(self._at(12), now_ms & MASK32, 4)
+        self.memory.write(self.start_at, now_ms & MASK32, 4)
 
     def elapsed(self, now_ms: int) -> int:
         """Milliseconds since the start (the 32-bit clock's difference)."""
-        return (now_ms - self.memory.read(self._at(12), 4)) & MASK32
+        return (now_ms - self.memory.read(self.start_at, 4)) & MASK32
+
+
+def timer_of(ctx: FunctionContext, state: dict, instance: Address) -> Timer:
+    """The call site's Timer (its places found at its first run)."""
+    timer = state.get("timer")
+    if timer is None or timer.memory is not ctx.memory:
+        timer = state["timer"] = Timer(ctx.memory, instance)
+    return timer
 
 
 def _pt(ctx: FunctionContext, value: object) -> int:
@@ -76,7 +88,7 @@ def _finish(ctx: FunctionContext, state: dict, timer: Timer, q: bool, et: int, e
 def ton(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
     """On-delay: Q once IN has been 1 for PT; IN = 0 resets ET and Q (001:194-200)."""
     instance, pt_in, et_out = params
-    timer = Timer(ctx.memory, instance)
+    timer = timer_of(ctx, state, instance)
     now, signal = ctx.now_ms, bool(inputs[0])
     was = timer.flag(IN)
     timer.set_flag(IN, signal)
@@ -94,7 +106,7 @@ def ton(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tup
 def tof(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tuple) -> bool:
     """Off-delay: Q = 1 with IN; after IN drops Q stays for PT; IN back resets ET (001:306-312)."""
     instance, pt_in, et_out = params
-    timer = Timer(ctx.memory, instance)
+    timer = timer_of(ctx, state, instance)
     now, signal = ctx.now_ms, bool(inputs[0])
     was = timer.flag(IN)
     timer.set_flag(IN, signal)
@@ -115,7 +127,7 @@ def tp(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tupl
     """Pulse: IN 0 → 1 starts Q for PT; IN meanwhile has no effect (no retrigger); after the
     pulse ET stays PT while IN is 1 and is 0 once IN is 0 (001:176-186)."""
     instance, pt_in, et_out = params
-    timer = Timer(ctx.memory, instance)
+    timer = timer_of(ctx, state, instance)
     now, signal = ctx.now_ms, bool(inputs[0])
     was = timer.flag(IN)
     timer.set_flag(IN, signal)
@@ -139,7 +151,7 @@ def tonr(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tu
     """Retentive on-delay: ET adds up while IN is 1, kept while IN is 0; Q once ET reaches PT;
     R resets ET and Q whatever IN is (001:328-336; system manual p. 172)."""
     instance, pt_in, et_out = params
-    timer = Timer(ctx.memory, instance)
+    timer = timer_of(ctx, state, instance)
     now, signal, reset = ctx.now_ms, bool(inputs[0]), bool(inputs[1])
     was = timer.flag(IN)
     timer.set_flag(IN, signal)
@@ -162,7 +174,7 @@ def load_time(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
     """-(PT)-: with power, the instance's PT := the value (001:338-376)."""
     instance, pt_in = params
     if inputs[0]:
-        Timer(ctx.memory, instance).put(0, _pt(ctx, pt_in))
+        timer_of(ctx, state, instance).put(0, _pt(ctx, pt_in))
     return bool(inputs[0])
 
 
@@ -172,7 +184,7 @@ def reset_timer(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
     """-(RT)-: with power, ET := 0 and Q := 0; a running timer starts again from now."""
     (instance,) = params
     if inputs[0]:
-        timer = Timer(ctx.memory, instance)
+        timer = timer_of(ctx, state, instance)
         timer.put(4, 0)
         timer.set_flag(Q, False)
         timer.start(ctx.now_ms)

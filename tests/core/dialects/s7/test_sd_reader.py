@@ -187,3 +187,25 @@ def test_a_changed_s7_program_is_refused_at_save_and_the_file_kept(tmp_path: Pat
     with pytest.raises(DiagnosticError) as caught:
         encode_program(program)
     assert caught.value.diagnostic.code == "s7-save-changed"
+
+
+def test_too_many_instances_for_the_d_area_is_a_diagnostic_not_a_crash() -> None:
+    networks = "".join(
+        f' NETWORK\n  RUNG wire#powerrail\n   Contact( %I0.0 )\n   "T{n}".TON( pt := T#1s )\n'
+        f'   Coil( %Q0.0 )\n  END_RUNG\n END_NETWORK\n' for n in range(700))
+    text = f'ORGANIZATION_BLOCK "Main"\n{networks}END_ORGANIZATION_BLOCK\n'
+    result = parse_bytes(text.encode("utf-8"))
+    codes = {d.code for d in result.diagnostics}
+    assert codes == {"s7-memory-full"}
+    assert result.diagnostics[0].args["network"] == 626  # 625 timers of 16 bytes fit
+
+
+def test_instance_db_forms_and_scl_source_heads() -> None:
+    for text in ('DATA_BLOCK "Valve_DB"\n"Fb_Valve"\nBEGIN\nEND_DATA_BLOCK\n',
+                 'DATA_BLOCK "Valve_DB" : "Fb_Valve"\nNON_RETAIN\nBEGIN\n x := 1;\n'
+                 'END_DATA_BLOCK\n'):
+        block = parse_sd(text).block
+        assert (block.kind, block.instance_of) == ("InstanceDB", "Fb_Valve")
+    block = parse_sd('FUNCTION_BLOCK "M"\nTITLE = \'Motor\'\nVERSION : 0.1\nVAR_INPUT\n a : Bool;\n'
+                     'END_VAR\nEND_FUNCTION_BLOCK\n').block
+    assert [m.name for m in block.members("Input")] == ["a"]
