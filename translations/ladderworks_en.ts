@@ -1266,57 +1266,57 @@
         <translation>a changed S7 block cannot be written yet: save it in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="364"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="367"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="369"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="370"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="373"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="372"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="375"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="378"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="381"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="381"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="384"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="387"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="390"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="393"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>
