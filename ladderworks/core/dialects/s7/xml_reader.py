@@ -413,27 +413,57 @@ def _component(node: Element) -> str:
     return f"{name}[{','.join(texts)}]"
 
 
+def _access_text(node: Element) -> str:
+    """An `Access` inside SCL/STL text as TIA shows it: #local, "Global".member, %MW2, 5."""
+    scope = node.attrs.get("Scope", "")
+    constant = node.child("Constant")
+    if constant is not None:
+        return constant.text_of("ConstantValue") or constant.attrs.get("Name", "")
+    symbol = node.child("Symbol")
+    if symbol is None:
+        address = node.child("Address")
+        return address_text(address.attrs) if address is not None else ""
+    names = [_component(c) for c in symbol.all("Component")]
+    if scope == "LocalVariable":
+        return "#" + ".".join(names)
+    head, *rest = names or [""]
+    return ".".join([f'"{head}"', *rest])
+
+
 def _source_text(body: Element) -> str:
     """An SCL (`StructuredText`) or STL (`StatementList`) network's text from its tokens."""
     out: list[str] = []
-    for node in body.walk()[1:]:
+    stack = list(reversed(body.children))
+    while stack:
+        node = stack.pop()
         name = node.name
+        if name == "Access":
+            out.append(_access_text(node))
+            continue
         if name in ("Token", "StlToken"):
             out.append(node.attrs.get("Text", ""))
+            if name == "StlToken":
+                out.append(" ")
         elif name == "Blank":
-            out.append(" " * int(node.attrs.get("Num", "1") or 1))
+            out.append(" " * _count(node))
         elif name == "NewLine":
-            out.append("\n" * int(node.attrs.get("Num", "1") or 1))
-        elif name == "Component" and node.attrs.get("Name"):
-            out.append(("." if out and out[-1] not in ("", " ", "\n", "#", '"') and
-                        not out[-1].endswith(("(", " ", "\n")) else "") + node.attrs["Name"])
-        elif name == "Access" and node.attrs.get("Scope") == "LocalVariable":
-            out.append("#")
-        elif name == "ConstantValue" or (name == "Text" and node.text.strip()):
-            out.append(node.text.strip())
+            out.append("\n" * _count(node))
+        elif name == "LineComment":
+            out.append("//" + "".join(t.text for t in node.walk() if t.name == "Text"))
+            continue
+        elif name == "Comment":
+            out.append("(*" + "".join(t.text for t in node.walk() if t.name == "Text") + "*)")
+            continue
         elif name == "StlStatement" and out and not out[-1].endswith("\n"):
             out.append("\n")
-    return "".join(out).strip("\n")
+        stack.extend(reversed(node.children))
+    lines = "".join(out).split("\n")
+    return "\n".join(line.rstrip() for line in lines).strip("\n")
+
+
+def _count(node: Element) -> int:
+    text = node.attrs.get("Num", "1")
+    return min(int(text), 1000) if text.isdigit() else 1
 
 
 def read_document(data: bytes | str) -> XmlRead:

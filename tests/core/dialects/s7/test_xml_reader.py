@@ -4,6 +4,7 @@ interfaces, constants, addresses, labels, calls, SCL text, all cultures of the t
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import pytest
@@ -15,7 +16,7 @@ from ladderworks.core.dialects.s7.texts import pick, read_texts
 from ladderworks.core.dialects.s7.xml_reader import read_document
 from ladderworks.core.dialects.s7.xml_writer import write_block
 from ladderworks.core.il.printer import encode_program
-from ladderworks.core.il.reading import parse_file
+from ladderworks.core.il.reading import parse_bytes, parse_file
 from tests.core.dialects.s7.xml_docs import const, document, same_block, tag, wire
 
 ROOT = Path(__file__).resolve().parents[4] / "resources" / "examples"
@@ -396,8 +397,10 @@ def test_an_scl_network_keeps_its_text_and_is_not_simulated() -> None:
            'Text="END_IF" /><Token Text=";" /></StructuredText>')
     found = read_document(document([scl, _NET]))
     network = found.blocks[0].networks[0]
+    result = parse_bytes(document([scl]).encode(), "s7")
+    assert [d.code for d in result.diagnostics] == ["s7-not-simulated"]
     assert network.language == "SCL" and network.parts == []
-    assert network.source == "IF #a THEN\n  b := 1;\nEND_IF;"
+    assert network.source == 'IF #a THEN\n  "b" := 1;\nEND_IF;'
     assert found.diagnostics == []
 
 
@@ -433,3 +436,28 @@ def test_a_folder_with_a_global_db_and_a_tag_table(tmp_path: Path,
     assert main(["run", str(tmp_path / "Main.xml"), "--set", "Start=1", "--set",
                  '"Veri".Sayi:2=7', "--scans", "2", "--print", "Lamba,%MW10:2"]) == 0
     assert capsys.readouterr().out.splitlines() == ["Lamba = 1", "%MW10:2 = 7"]
+
+
+def test_an_stl_network_keeps_its_statements_as_text() -> None:
+    stl = ('<StatementList xmlns="http://www.siemens.com/automation/Openness/SW/NetworkSource/'
+           'StatementList/v4"><StlStatement><StlToken Text="A" /><Access Scope="GlobalVariable">'
+           '<Symbol><Component Name="Start" /></Symbol></Access></StlStatement><StlStatement>'
+           '<StlToken Text="=" /><Access Scope="GlobalVariable"><Address Area="Output" '
+           'Type="Bool" BitOffset="1" /></Access><LineComment><Text>lamba</Text></LineComment>'
+           "</StlStatement></StatementList>")
+    network = read_document(document([stl])).blocks[0].networks[0]
+    assert network.language == "STL"
+    assert network.source == 'A "Start"\n= %Q0.1//lamba'
+
+
+def test_utf8_bom_and_crlf_exports_save_byte_for_byte(tmp_path: Path) -> None:
+    source = (ROOT / "s7-xml" / "timers" / "Main.xml").read_bytes()
+    for name, data in (("bom", b"\xef\xbb\xbf" + source),
+                       ("crlf", source.replace(b"\n", b"\r\n"))):
+        folder = tmp_path / name
+        folder.mkdir()
+        (folder / "Main.xml").write_bytes(data)
+        shutil.copyfile(ROOT / "s7-xml" / "timers" / "PLC tags.xml", folder / "PLC tags.xml")
+        result = parse_file(folder / "Main.xml")
+        assert result.diagnostics == [] and result.program.networks
+        assert encode_program(result.program) == data

@@ -18,9 +18,9 @@ def document(networks: list[str], *, interface: str = "", kind: str = "OB",
     units = []
     scl = "SCL"
     for n, body in enumerate(networks, start=1):
-        source = body if body.lstrip().startswith("<StructuredText") else \
-            f'<FlgNet xmlns="{flgnet}">{body}</FlgNet>'
-        kind_of = scl if "StructuredText" in source else language
+        text = body.lstrip().startswith(("<StructuredText", "<StatementList"))
+        source = body if text else f'<FlgNet xmlns="{flgnet}">{body}</FlgNet>'
+        kind_of = language if not text else scl if "StructuredText" in body[:20] else "STL"
         units.append(f"""
       <SW.Blocks.CompileUnit ID="{n + 10:X}" CompositionName="CompileUnits">
         <AttributeList>
