@@ -101,7 +101,7 @@ class _Reader:
     def run(self) -> XmlRead:
         engineering = self.root.child("Engineering")
         self.out.version = engineering.attrs.get("version", "") if engineering else ""
-        for node in self.root.walk():
+        for node in self.root.children:  # blocks and tag tables are the Document's children
             kind = BLOCK_KINDS.get(node.name)
             if kind is not None:
                 self.out.blocks.append(self.block(node, kind))

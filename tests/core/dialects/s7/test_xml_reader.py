@@ -130,6 +130,15 @@ def test_a_newer_namespace_version_is_read_as_v5_with_a_warning() -> None:
     assert len(found.blocks[0].networks[0].parts) == 2
 
 
+def test_a_newer_interface_namespace_is_read_with_a_warning() -> None:
+    found = read_document(document([_NET], interface_ns=OPENNESS + "Interface/v7",
+                                   interface='<Section Name="Temp"><Member Name="x" '
+                                   'Datatype="Bool" /></Section>'))
+    assert [(d.code, d.args["kind"], d.args["version"]) for d in found.diagnostics] == [
+        ("s7xml-version", "Interface", 7)]
+    assert found.blocks[0].members("Temp")[0].name == "x"
+
+
 def test_a_foreign_namespace_is_refused_at_its_network() -> None:
     found = read_document(document([_NET], flgnet="http://example.com/FlgNet"))
     assert [d.code for d in found.diagnostics] == ["s7xml-namespace"]
