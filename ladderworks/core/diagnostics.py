@@ -359,6 +359,8 @@ MESSAGES: dict[str, str] = {
     "s7-memory-full": QT_TRANSLATE_NOOP(
         "Diagnostic", "network {network}: no room left for '{text}' (DB members and "
         "instances share 10000 bytes)"),
+    "s7-too-large": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the file has {size} MB: S7 exports over {limit} MB are not read"),
     "s7-tags": QT_TRANSLATE_NOOP(
         "Diagnostic", "tag table: {why}"),
     "s7-save-changed": QT_TRANSLATE_NOOP(

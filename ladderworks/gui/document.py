@@ -11,6 +11,7 @@ from PySide6.QtCore import QFileSystemWatcher, QObject, Signal
 from PySide6.QtGui import QTextDocument
 
 from ladderworks.core.collector import release_frozen
+from ladderworks.core.diagnostics import DiagnosticError
 from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.printer import encode_program, print_faithful
@@ -81,7 +82,10 @@ def bad_bytes_back(text: str) -> str:
 def view_text(program: Program) -> str:
     """The text the text view shows: the file's own lines (as Save writes them, so a line
     number of a diagnostic is the view's line), each ended by LF."""
-    lines = split_lines(print_faithful(program))
+    try:
+        lines = split_lines(print_faithful(program))
+    except DiagnosticError:  # a change its dialect cannot write (S7): the file's lines
+        lines = list(program.source.lines) if program.source is not None else []
     return "\n".join(lines) + "\n" if lines else ""
 
 

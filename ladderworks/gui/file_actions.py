@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QCoreApplication, QDateTime, QLocale
 from PySide6.QtWidgets import QMessageBox
 
-from ladderworks.core.diagnostics import Diagnostic, has_errors
+from ladderworks.core.diagnostics import Diagnostic, DiagnosticError, has_errors
 from ladderworks.core.il import Program, print_program
 from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import EncodeError
@@ -276,6 +276,9 @@ class FileActions(_Window):
                 return None
             self.document.use_utf8()
             return make()
+        except DiagnosticError as error:  # a dialect that cannot write a change (S7): kept
+            self.warn(translate("MainWindow", "Save"), diagnostic_text(error.diagnostic))
+            return None
 
     def save_to(self, path: str | Path) -> bool:
         """Write the program to `path` atomically, in the file's own form; a file that failed to
@@ -412,6 +415,11 @@ class FileActions(_Window):
                 data = document.encode_text(self.text_view.toPlainText())
             else:
                 data = document.encode(self._program_to_save()[0])
+        except DiagnosticError:  # a change its dialect cannot write (S7): the file as read
+            source = self.document.origin.source if self.document.origin else None
+            data = "".join(line + end for line, end in zip(source.lines, source.ends,
+                                                          strict=True)).encode(
+                "utf-8", errors="surrogateescape") if source is not None else b""
         except EncodeError:  # a character the file cannot hold: the copy is UTF-8
             text = (bad_bytes_back(self.text_view.toPlainText())
                     if self.model.showing_text

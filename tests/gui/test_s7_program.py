@@ -38,3 +38,17 @@ def test_an_s7_block_opens_runs_and_saves_as_read(qtbot: QtBot, window: MainWind
     assert session.run.bit(motor) == 1
     assert window.save()
     assert path.read_bytes() == (EXAMPLES / "jumps" / "Main.s7dcl").read_bytes()
+
+
+def test_a_changed_s7_block_is_not_saved_and_the_file_is_kept(window: MainWindow,
+                                                              tmp_path: Path) -> None:
+    folder = tmp_path / "timers"
+    shutil.copytree(EXAMPLES / "timers", folder)
+    path = folder / "Main.s7dcl"
+    assert window.load(path)
+    window.editor.move_cursor(1, 0, 0)
+    window.actions_by_name["action_delete_network"].trigger()
+    assert not window.save()
+    assert "TIA Portal" in window.last_warning
+    assert path.read_bytes() == (EXAMPLES / "timers" / "Main.s7dcl").read_bytes()
+    assert window.recovery_snapshot() is not None  # the autosave copy does not fail either

@@ -21,6 +21,7 @@ from ladderworks.core.dialects.s7.stack import ALWAYS_OFF, ALWAYS_ON, Expr, PinG
 from ladderworks.core.il.program import Instruction, LabelRef, Network, ParamValue
 from ladderworks.core.plc import typed
 
+FIRST_SCAN = Address(Area.R, 1, 0)  # %M1.0, set by the dialect's relays in the first scan
 SCRATCH_FIRST, SCRATCH_LAST = 8192, 8999  # R bytes LadderWorks keeps for a network's links
 PURE = {"Eq": "S7.EQ", "Ne": "S7.NE", "Gt": "S7.GT", "Lt": "S7.LT", "Ge": "S7.GE", "Le": "S7.LE",
         "InRange": "S7.IN_RANGE", "OutRange": "S7.OUT_RANGE", "Ok": "S7.OK",
@@ -81,6 +82,9 @@ class BlockLowering:
                 if part.name == "Label" and part.label and part.label.lower() not in self.labels:
                     self.labels[part.label.lower()] = self.new_label()
         self.end_label = self.new_label()
+        for section in ("Input", "Output", "InOut", "Static", "Temp"):  # its interface first
+            for member in self.block.members(section):
+                self.layout.local(self.block, (member.name,), self.scope)
         for network in self.block.networks:  # instances first: their members are read anywhere
             for part in network.parts:
                 kind = "IEC_TIMER" if part.name in TIMERS else "IEC_COUNTER" \
@@ -513,7 +517,27 @@ class BlockLowering:
         return Address(Area.R, SCRATCH_FIRST + byte, bit)
 
 
+def start_values(layout: Layout) -> Network | None:
+    """The start values of the members laid out (`Count : Int := 3;`), written in the first
+    scan after RUN (%M1.0, FirstScan): S7 initialises DBs and instances at start-up."""
+    code: list[Instruction] = []
+    for key, member in layout.members.items():
+        place = layout.places.get(key)
+        vtype = place.vtype if place is not None else None
+        if not member.start or place is None or vtype is None:
+            continue
+        value = constant_value(member.start, vtype)
+        if value is not None:
+            code.append(Instruction("S7.MOVE", None, (int(vtype), value, place.address)))
+    if not code:
+        return None
+    return Network([Instruction("RD", FIRST_SCAN), *code], ["Start values"])
+
+
 def lower_block(block: Block, layout: Layout) -> tuple[list[Network], list[Diagnostic]]:
-    """A block's networks for the engine and the diagnostics of the parts not lowered."""
+    """A block's networks for the engine (the start values first) and the diagnostics of the
+    parts not lowered."""
     lowering = BlockLowering(block, layout)
-    return lowering.run(), lowering.diagnostics
+    networks = lowering.run()
+    first = start_values(layout)
+    return ([first] if first is not None else []) + networks, lowering.diagnostics

@@ -54,12 +54,18 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
             if place is not None:
                 add(f"#{member.name}", place.address, member.comment)
                 table.by_symbol.setdefault(member.name, place.address)
+    own = (f"#{entry.name.lower()}",)
     for key, place in list(layout.places.items()):
-        if key[0].startswith("#") or place.type_name == "Struct":
+        if place.type_name == "Struct" or (len(key) < 2 and key[0].startswith("#")):
             continue
-        found = layout.members.get(key)
-        head = found.name if len(key) == 1 and found is not None else key[0]
-        name = ".".join([f'"{head}"', *key[1:]])
+        names = [(layout.members[key[:n]].name if key[:n] in layout.members else key[n - 1])
+                 for n in range(1, len(key) + 1)]
+        if key[:1] == own:  # the entry block's own members: #Data.Count
+            name = "#" + ".".join(names[1:])
+        elif key[0].startswith("#"):  # another block's (an FC's): its members by block
+            continue
+        else:
+            name = ".".join([f'"{names[0]}"', *names[1:]])
         if name not in table.by_symbol:
             table.by_symbol[name] = place.address
     # the instances' members (`"T1".Q`, `#Timer.ET`) resolve on demand in scenarios
@@ -96,6 +102,10 @@ def _source(program: Program, form: TextForm, lines: list[str], ends: list[str])
 
 
 def _parse(text: str, diagnostics: list[Diagnostic]) -> Parsed | None:
+    if len(text) > MAX_BYTES:
+        diagnostics.append(Diagnostic("s7-too-large", {"size": len(text) >> 20,
+                                                       "limit": MAX_BYTES >> 20}, 1, 1))
+        return None
     try:
         return parse_sd(text)
     except ParseError as error:
@@ -120,8 +130,8 @@ def read(text: str, form: TextForm, lines: list[str],
 def _read_text(path: Path, diagnostics: list[Diagnostic]) -> str | None:
     try:
         if path.stat().st_size > MAX_BYTES:
-            diagnostics.append(Diagnostic("s7-syntax", {"expected": "a file under 64 MB",
-                                                        "found": path.name}, 0, 0))
+            diagnostics.append(Diagnostic("s7-too-large", {
+                "size": path.stat().st_size >> 20, "limit": MAX_BYTES >> 20}, 0, 0))
             return None
         return path.read_bytes().decode("utf-8-sig", "replace")
     except OSError:

@@ -84,3 +84,15 @@ def test_a_call_of_a_block_that_is_not_there(tmp_path: Path) -> None:
     result = parse_file(path)
     assert [(d.code, d.line, d.args["block"]) for d in result.diagnostics] == [
         ("s7-call-unknown", 4, "Nowhere_DB")]
+
+
+pytest_plugins = ["pytester"]
+
+
+def test_the_pytest_plugin_runs_an_fc_alone(pytester: pytest.Pytester) -> None:
+    """A technician's unit test of one block: the scenario names the FC (PROGRAM line)."""
+    for path in (EXAMPLES / "calls").iterdir():
+        if path.name.startswith("Kilit") or path.suffix in (".s7res", ".xml"):
+            (pytester.path / path.name).write_bytes(path.read_bytes())
+    result = pytester.runpytest_inprocess("-p", "ladderworks.pytest_plugin", "-q")
+    result.assert_outcomes(passed=1)

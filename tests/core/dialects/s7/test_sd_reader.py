@@ -209,3 +209,33 @@ def test_instance_db_forms_and_scl_source_heads() -> None:
     block = parse_sd('FUNCTION_BLOCK "M"\nTITLE = \'Motor\'\nVERSION : 0.1\nVAR_INPUT\n a : Bool;\n'
                      'END_VAR\nEND_FUNCTION_BLOCK\n').block
     assert [m.name for m in block.members("Input")] == ["a"]
+
+
+def test_start_values_are_written_in_the_first_scan() -> None:
+    from ladderworks.core.compiler import compile_program
+    from ladderworks.core.plc.engine import ScanEngine
+
+    result = parse_bytes(FB.encode("utf-8"))
+    compiled = compile_program(result.program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    symbols = result.program.symbols
+    assert symbols is not None
+    at = symbols.address_of("#Data.Count")
+    assert at is not None
+    engine.scan()
+    assert engine.memory.read(at, 2) == 3
+    engine.memory.write(at, 9, 2)
+    engine.scan()
+    assert engine.memory.read(at, 2) == 9  # only in the first scan
+
+
+def test_a_huge_file_is_refused_not_parsed(tmp_path: Path) -> None:
+    path = tmp_path / "Huge.s7dcl"
+    head = b'ORGANIZATION_BLOCK "Main"\n NETWORK\n  RUNG wire#powerrail\n'
+    with path.open("wb") as file:
+        file.write(head)
+        file.write(b"   Contact( %I0.0 )\n" * (65 * 1024 * 1024 // 20))
+    result = parse_file(path)
+    assert [d.code for d in result.diagnostics] == ["s7-too-large"]
+    assert result.program.networks == []
