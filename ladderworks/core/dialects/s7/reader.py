@@ -115,11 +115,7 @@ def _parse(text: str, diagnostics: list[Diagnostic]) -> Parsed | None:
 
 def read(text: str, form: TextForm, lines: list[str],
          ends: list[str]) -> tuple[Program, list[Diagnostic]]:
-    """One SD block's text (no companion files) as a Program and its diagnostics; a SimaticML
-    document's by the XML reader."""
-    from ladderworks.core.dialects.s7 import xml_open, xml_reader
-    if xml_reader.is_simaticml(text):
-        return xml_open.read(text, form, lines, ends)
+    """One SD block's text (no companion files) as a Program and its diagnostics."""
     diagnostics: list[Diagnostic] = []
     parsed = _parse(text, diagnostics)
     program, _graph, _layout = build([parsed] if parsed else [], [], {}, diagnostics)
@@ -170,11 +166,7 @@ def companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic]
 
 def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic], str]:
     """An SD file with its folder's `.s7res` texts and tag tables, or a folder of exports
-    (its OB first): the Program, its diagnostics, the entry file's encoding. SimaticML
-    documents and folders of them: xml_open."""
-    from ladderworks.core.dialects.s7 import xml_open
-    if xml_open.wants(path, data):
-        return xml_open.open_path(path, data)
+    (its OB first): the Program, its diagnostics, the entry file's encoding."""
     diagnostics: list[Diagnostic] = []
     entry: Path | None = path if path.is_file() else None
     folder = path.parent if entry is not None else path
