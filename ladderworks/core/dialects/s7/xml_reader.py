@@ -165,7 +165,7 @@ class _Reader:
         sections = node.child("Sections")  # an FB/UDT-typed member's expanded interface
         if sections is not None and not inner:
             inner = tuple(self.member(m) for s in sections.all("Section") for m in s.all("Member"))
-        return Member(node.attrs.get("Name", ""), node.attrs.get("Datatype", "").strip('"'),
+        return Member(node.attrs.get("Name", ""), node.attrs.get("Datatype", ""),
                       start.text.strip() if start is not None else "", text, inner)
 
     def check_ns(self, node: Element, kind: str, network: int, block: str) -> bool:

@@ -470,3 +470,27 @@ def test_utf8_bom_and_crlf_exports_save_byte_for_byte(tmp_path: Path) -> None:
         result = parse_file(folder / "Main.xml")
         assert result.diagnostics == [] and result.program.networks
         assert encode_program(result.program) == data
+
+
+def test_a_multi_instance_call_runs_the_fb_in_the_callers_statics(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    fb = (ROOT / "s7-xml" / "calls" / "Gecikme.xml").read_text("utf-8")
+    caller = document([
+        "<Parts>" + tag(21, "Motor") + tag(22, "Fan") + const(23, "T#3s") +
+        '<Call UId="24"><CallInfo Name="Gecikme" BlockType="FB"><Instance '
+        'Scope="LocalVariable" UId="25"><Component Name="Gec" /></Instance></CallInfo></Call>'
+        "</Parts><Wires>" + wire(30, "rail", "24:en") + wire(31, "21", "24:Giris") +
+        wire(32, "23", "24:Sure") + wire(33, "24:Cikis", "22") + "</Wires>"],
+        kind="FB", name="Hat", interface='<Section Name="Static"><Member Name="Gec" '
+        'Datatype="&quot;Gecikme&quot;" /></Section>')
+    block = read_document(caller).blocks[0]
+    assert block.members("Static")[0].type_name == '"Gecikme"'  # as the SD reader keeps it
+    call = block.networks[0].parts[0]
+    assert (call.call, call.call_kind, call.instance.display()) == ("Gec", "FB", "#Gec")
+    (tmp_path / "Hat.xml").write_text(caller, "utf-8")
+    (tmp_path / "Gecikme.xml").write_text(fb, "utf-8")
+    (tmp_path / "PLC tags.xml").write_bytes(
+        (ROOT / "s7-xml" / "calls" / "PLC tags.xml").read_bytes())
+    assert main(["run", str(tmp_path / "Hat.xml"), "--set", "Motor=1", "--ms", "3100",
+                 "--scan-period", "10", "--print", "Fan"]) == 0, capsys.readouterr()
+    assert capsys.readouterr().out.splitlines() == ["Fan = 1"]
