@@ -10,16 +10,41 @@ same place a scenario or another network names) or a multi-instance in the calle
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Protocol
 
+from ladderworks.core.address import Address
+from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, Part
-from ladderworks.core.dialects.s7.layout import Place
+from ladderworks.core.dialects.s7.layout import Layout, Place
 from ladderworks.core.dialects.s7.stack import ALWAYS_ON, Expr, PinGraph
-from ladderworks.core.il.program import Instruction, LabelRef
+from ladderworks.core.il.program import Instruction, LabelRef, Network, ParamValue
 from ladderworks.core.plc import typed
 
-if TYPE_CHECKING:
-    from ladderworks.core.dialects.s7.lowering import BlockLowering, LoweringError
+
+class BlockLowering(Protocol):
+    """What a call needs of the lowering of the block that calls (lowering.BlockLowering)."""
+
+    block: Block
+    layout: Layout
+    scope: tuple[str, ...]
+    depth: int
+    networks: list[Network]
+    diagnostics: list[Diagnostic]
+
+    def fail(self, index: int, where: Part | None, code: str, **args: object) -> Exception: ...
+    def new_relay(self, index: int, part: Part) -> Address: ...
+    def new_label(self) -> int: ...
+    def emit(self, instructions: list[Instruction]) -> None: ...
+    def statement(self, part: Part, inputs: list[Expr], tail: list[Instruction],
+                  keep: Address | None) -> Expr | None: ...
+    def bit_expr(self, operand: Operand, negated: bool, index: int, part: Part) -> Expr: ...
+    def value(self, index: int, part: Part, operand: Operand | None,
+              vtype: typed.ValueType, pin: str) -> ParamValue: ...
+    def place(self, index: int, part: Part, operand: Operand, instance: str = "") -> Place: ...
+    def power(self, graph: PinGraph, part: Part, pin: str,
+              outputs: dict[str, Expr | None]) -> Expr | None: ...
+    def lower_callee(self, callee: Block, scope: tuple[str, ...]
+                     ) -> tuple[list[Network], list[Diagnostic]]: ...
 
 MAX_DEPTH = 8
 _IN, _OUT = ("Input", "InOut"), ("Output", "InOut")
@@ -47,7 +72,7 @@ def callee_of(lowering: BlockLowering, part: Part) -> tuple[Block, tuple[str, ..
 
 
 def _fail(lowering: BlockLowering, index: int, where: Part, code: str,
-          **args: object) -> LoweringError:
+          **args: object) -> Exception:
     return lowering.fail(index, where, code, **args)
 
 
@@ -86,8 +111,6 @@ def _copy_out(lowering: BlockLowering, index: int, part: Part, source: Place,
 def lower_call(lowering: BlockLowering, index: int, graph: PinGraph, part: Part, power: Expr,
                outputs: dict[str, Expr | None]) -> Expr | None:
     """A call: EN kept, parameters in, the callee's networks, parameters out."""
-    from ladderworks.core.dialects.s7.lowering import BlockLowering
-
     found = callee_of(lowering, part)
     if found is None:
         raise _fail(lowering, index, part, "s7-call-unknown", block=part.call)
@@ -116,10 +139,9 @@ def lower_call(lowering: BlockLowering, index: int, graph: PinGraph, part: Part,
                 if powered is not None:
                     lowering.statement(part, [powered], [Instruction("WRT", target.address,
                                                                      line=line)], None)
-    child = BlockLowering(callee, layout, counters=lowering.counters, scope=scope,
-                          depth=lowering.depth + 1)
-    lowering.networks.extend(child.run())
-    lowering.diagnostics.extend(child.diagnostics)
+    networks, diagnostics = lowering.lower_callee(callee, scope)
+    lowering.networks.extend(networks)
+    lowering.diagnostics.extend(diagnostics)
     for section in _OUT:
         for member in callee.members(section):
             source = layout.local(callee, (member.name,), scope)

@@ -69,6 +69,13 @@ class BlockLowering:
     scope: tuple[str, ...] = ()
     depth: int = 0
 
+    def lower_callee(self, callee: Block, scope: tuple[str, ...]
+                     ) -> tuple[list[Network], list[Diagnostic]]:
+        """A called block's networks, lowered in `scope`, one call deeper (calls.py)."""
+        child = BlockLowering(callee, self.layout, counters=self.counters, scope=scope,
+                              depth=self.depth + 1)
+        return child.run(), child.diagnostics
+
     def new_label(self) -> int:
         """A label number no other block of the program uses."""
         self.counters.labels += 1
