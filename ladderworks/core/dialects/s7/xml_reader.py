@@ -30,6 +30,7 @@ from ladderworks.core.dialects.s7.texts import pick
 from ladderworks.core.dialects.s7.xml_fbd import to_lad
 from ladderworks.core.dialects.s7.xml_forms import KNOWN_VERSIONS, address_text, namespace, pin_in
 from ladderworks.core.dialects.s7.xml_safe import Element, XmlRefused, parse
+from ladderworks.core.dialects.s7.xml_text import component, source_text
 
 BLOCK_KINDS = {"SW.Blocks.OB": "OB", "SW.Blocks.FB": "FB", "SW.Blocks.FC": "FC",
                "SW.Blocks.GlobalDB": "GlobalDB", "SW.Blocks.InstanceDB": "InstanceDB"}
@@ -205,7 +206,7 @@ class _Reader:
             if network.language not in ("LAD", "FBD"):
                 network.language = "LAD"
         else:
-            network.source = _source_text(body)
+            network.source = source_text(body)
             if network.language in ("LAD", "FBD"):
                 network.language = "SCL" if body.name == "StructuredText" else "STL"
         return network
@@ -308,7 +309,7 @@ class _Reader:
             text = address_text(address.attrs)
             return Operand(OperandKind.ABSOLUTE, (text,), text)
         components = symbol.all("Component") if symbol is not None else node.all("Component")
-        path = tuple(_component(c) for c in components)
+        path = tuple(component(c) for c in components)
         where = symbol.child("Address") if symbol is not None else None
         kind = OperandKind.LOCAL if scope in ("LocalVariable", "LocalConstant") \
             else OperandKind.GLOBAL
@@ -392,78 +393,6 @@ class _Reader:
                 elif not state.get(step):
                     state[step] = 1
                     stack.append((step, iter(follows.get(step, ()))))
-
-
-def _component(node: Element) -> str:
-    """A `Component` as the graph's path element: its name, an array index in brackets."""
-    name = node.attrs.get("Name", "")
-    indices = [a for a in node.children if a.name == "Access"]
-    if not indices:
-        return name
-    texts = []
-    for access in indices:
-        constant = access.child("Constant")
-        if constant is not None:
-            texts.append(constant.text_of("ConstantValue"))
-        else:
-            symbol = access.child("Symbol")
-            components = symbol.all("Component") if symbol is not None else []
-            prefix = "#" if access.attrs.get("Scope") == "LocalVariable" else ""
-            texts.append(prefix + ".".join(_component(c) for c in components))
-    return f"{name}[{','.join(texts)}]"
-
-
-def _access_text(node: Element) -> str:
-    """An `Access` inside SCL/STL text as TIA shows it: #local, "Global".member, %MW2, 5."""
-    scope = node.attrs.get("Scope", "")
-    constant = node.child("Constant")
-    if constant is not None:
-        return constant.text_of("ConstantValue") or constant.attrs.get("Name", "")
-    symbol = node.child("Symbol")
-    if symbol is None:
-        address = node.child("Address")
-        return address_text(address.attrs) if address is not None else ""
-    names = [_component(c) for c in symbol.all("Component")]
-    if scope == "LocalVariable":
-        return "#" + ".".join(names)
-    head, *rest = names or [""]
-    return ".".join([f'"{head}"', *rest])
-
-
-def _source_text(body: Element) -> str:
-    """An SCL (`StructuredText`) or STL (`StatementList`) network's text from its tokens."""
-    out: list[str] = []
-    stack = list(reversed(body.children))
-    while stack:
-        node = stack.pop()
-        name = node.name
-        if name == "Access":
-            out.append(_access_text(node))
-            continue
-        if name in ("Token", "StlToken"):
-            out.append(node.attrs.get("Text", ""))
-            if name == "StlToken":
-                out.append(" ")
-        elif name == "Blank":
-            out.append(" " * _count(node))
-        elif name == "NewLine":
-            out.append("\n" * _count(node))
-        elif name == "LineComment":
-            out.append("//" + "".join(t.text for t in node.walk() if t.name == "Text"))
-            continue
-        elif name == "Comment":
-            out.append("(*" + "".join(t.text for t in node.walk() if t.name == "Text") + "*)")
-            continue
-        elif name == "StlStatement" and out and not out[-1].endswith("\n"):
-            out.append("\n")
-        stack.extend(reversed(node.children))
-    lines = "".join(out).split("\n")
-    return "\n".join(line.rstrip() for line in lines).strip("\n")
-
-
-def _count(node: Element) -> int:
-    text = node.attrs.get("Num", "1")
-    return min(int(text), 1000) if text.isdigit() else 1
 
 
 def read_document(data: bytes | str) -> XmlRead:
