@@ -302,7 +302,7 @@ class _Reader:
             constant = node.child("Constant")
             name = constant.attrs.get("Name", "") if constant is not None else ""
             kind = OperandKind.LOCAL if scope == "LocalConstant" else OperandKind.GLOBAL
-            return Operand(kind, (name,), name)
+            return Operand(kind, (name,), ("#" if kind is OperandKind.LOCAL else "") + name)
         symbol = node.child("Symbol")
         address = node.child("Address")
         if symbol is None and address is not None:  # an absolute access: %I0.0, %MW2
@@ -313,7 +313,9 @@ class _Reader:
         where = symbol.child("Address") if symbol is not None else None
         kind = OperandKind.LOCAL if scope in ("LocalVariable", "LocalConstant") \
             else OperandKind.GLOBAL
-        return Operand(kind, path, "", "", address_text(where.attrs) if where else "")
+        found = Operand(kind, path, "", "", address_text(where.attrs) if where else "")
+        # the text as written (`#x` is strictly a member of the block, as in SD)
+        return Operand(kind, path, found.display(), "", found.address)
 
     def wire(self, node: Element, network: S7Network, uids: dict[str, Part],
              accesses: dict[str, tuple[Operand | None, str, int]],
