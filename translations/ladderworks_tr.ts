@@ -1500,6 +1500,61 @@
         <source>a changed S7 block cannot be written yet: save it in TIA Portal</source>
         <translation>değiştirilmiş bir S7 bloğu henüz yazılamıyor: TIA Portal&apos;da kaydedin</translation>
     </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="494"/>
+        <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
+        <translation>SimaticML: dosya {size} MB, LadderWorks&apos;ün okuduğu {limit} MB&apos;tan büyük</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="497"/>
+        <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
+        <translation>SimaticML: {what} reddedildi (varlıklar asla genişletilmez ve getirilmez)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="499"/>
+        <source>SimaticML: not well-formed XML ({why})</source>
+        <translation>SimaticML: XML düzgün biçimlendirilmemiş ({why})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="500"/>
+        <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
+        <translation>SimaticML: belgede blok (SW.Blocks.…) ve etiket tablosu yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="502"/>
+        <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
+        <translation>{block}, network {network}: &apos;{uri}&apos; ad alanı TIA Openness&apos;e ait değil; network okunmadı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
+        <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
+        <translation>{block}, network {network}: {kind} sürümü v{version}, LadderWorks&apos;ün bildiği v5&apos;ten yeni; v5 olarak okundu</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
+        <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
+        <translation>{block}, network {network}: {wire} bağlantısı UId {uid} parçasına gidiyor, bu parça networkte yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="511"/>
+        <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
+        <translation>{block}, network {network}: UId {uid} parçasından çıkan bağlantılar yine ona dönüyor</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="514"/>
+        <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
+        <translation>{block}, network {network}: UId {uid} parçası &apos;{part}&apos; LadderWorks&apos;çe bilinmiyor (saklandı, simüle edilmez)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="517"/>
+        <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
+        <translation>{block}, network {network}: {limit} parçadan fazla; network okunmadı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="520"/>
+        <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
+        <translation>{block}, network {network}: UId {uid} parçası &apos;{callee}&apos; bloğunu çağırıyor, bu blok programda yok</translation>
+    </message>
 </context>
 <context>
     <name>ErrorList</name>
@@ -2252,14 +2307,14 @@
         <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="531"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="532"/>
         <location filename="../ladderworks/gui/main_window.py" line="277"/>
         <location filename="../ladderworks/gui/main_window.py" line="447"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="159"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="160"/>
         <source>Unsaved changes</source>
         <translation>Kaydedilmemiş değişiklikler</translation>
     </message>
@@ -2304,147 +2359,152 @@
         <translation>Siemens S7-1200 SIMATIC SD blokları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="149"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="81"/>
+        <source>Siemens S7-1200 SimaticML exports</source>
+        <translation>Siemens S7-1200 SimaticML dışa aktarımları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/file_actions.py" line="150"/>
         <source>{0} was changed by another program</source>
         <translation>{0} başka bir program tarafından değiştirildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="160"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="161"/>
         <source>The program has unsaved changes. Save them?</source>
         <translation>Programda kaydedilmemiş değişiklikler var. Kaydedilsin mi?</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="206"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="207"/>
         <source>PLC family</source>
         <translation>PLC ailesi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="224"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="242"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="225"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="243"/>
         <source>Open</source>
         <translation>Aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="225"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="243"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="547"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="226"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="244"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="548"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="230"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="231"/>
         <source>PMC parameters</source>
         <translation>PMC parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="230"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="231"/>
         <source>{0}: {1} lines not understood (kept as they are); line {2}: {3}</source>
         <translation>{0}: {1} satır anlaşılamadı (olduğu gibi saklandı); satır {2}: {3}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="275"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="276"/>
         <source>The file has errors: it is shown as text</source>
         <translation>Dosyada hatalar var: metin olarak gösteriliyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="283"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="284"/>
         <source>Open program</source>
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="344"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="359"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="367"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="413"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="417"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="414"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="353"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="359"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="413"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="486"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="414"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="419"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="492"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="546"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="547"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="563"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="564"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="396"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="401"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="402"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="427"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="432"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="438"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="433"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="433"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="446"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="448"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="469"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="486"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="490"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="470"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="470"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="494"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="495"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>

@@ -490,6 +490,36 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "tag table: {why}"),
     "s7-save-changed": QT_TRANSLATE_NOOP(
         "Diagnostic", "a changed S7 block cannot be written yet: save it in TIA Portal"),
+    # SimaticML XML (docs/dialects.md, SimaticML XML)
+    "s7xml-too-large": QT_TRANSLATE_NOOP(
+        "Diagnostic", "SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks "
+        "reads"),
+    "s7xml-dtd": QT_TRANSLATE_NOOP(
+        "Diagnostic", "SimaticML: {what} is refused (entities are never expanded or fetched)"),
+    "s7xml-malformed": QT_TRANSLATE_NOOP("Diagnostic", "SimaticML: not well-formed XML ({why})"),
+    "s7xml-empty": QT_TRANSLATE_NOOP(
+        "Diagnostic", "SimaticML: the document holds no block (SW.Blocks.…) and no tag table"),
+    "s7xml-namespace": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{block}, network {network}: the namespace '{uri}' is not TIA Openness's; "
+        "the network is not read"),
+    "s7xml-version": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{block}, network {network}: {kind} version v{version} is newer than the "
+        "v5 LadderWorks knows; read as v5"),
+    "s7xml-wire": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{block}, network {network}: wire {wire} goes to the part UId {uid}, "
+        "which is not in the network"),
+    "s7xml-loop": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{block}, network {network}: the wires from part UId {uid} loop back "
+        "to it"),
+    "s7xml-part": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{block}, network {network}: part UId {uid} '{part}' is not known to "
+        "LadderWorks (kept, not simulated)"),
+    "s7xml-too-many": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{block}, network {network}: more than {limit} parts; the network is "
+        "not read"),
+    "s7xml-call-missing": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{block}, network {network}: part UId {uid} calls '{callee}', which is "
+        "not in the program"),
 }
 
 

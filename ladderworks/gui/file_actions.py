@@ -78,6 +78,7 @@ OPEN_FILTERS: tuple[tuple[str, str], ...] = (
      "*.lst *.LST *.fbs *.FBS *.txt *.TXT"),
     (QT_TRANSLATE_NOOP("MainWindow", "Fatek WinProladder projects"), "*.pdw *.PDW"),
     (QT_TRANSLATE_NOOP("MainWindow", "Siemens S7-1200 SIMATIC SD blocks"), "*.s7dcl *.S7DCL"),
+    (QT_TRANSLATE_NOOP("MainWindow", "Siemens S7-1200 SimaticML exports"), "*.xml *.XML"),
 )
 
 

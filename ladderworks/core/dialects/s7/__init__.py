@@ -33,11 +33,11 @@ def relays(areas: dict[Area, bytearray], now_ms: int, first: bool) -> None:
 
 DIALECT = Dialect(
     name=NAME, title="Siemens S7-1200", title_tr="Siemens S7-1200", code=4, devices=DEVICES,
-    rows=ROWS, sniff=score, reader="ladderworks.core.dialects.s7.reader:read",
+    rows=ROWS, sniff=score, reader="ladderworks.core.dialects.s7.opening:read",
     printer="ladderworks.core.dialects.s7.printer:network_lines", relays=relays,
     clocks=tuple((Address(Area.R, CLOCK_BYTE, bit), period, period // 2)
                  for bit, period in enumerate(CLOCK_PERIODS)),
     period_ms=10, extensions=(".s7dcl",), families=FAMILIES, byteorder="big",
     namer="ladderworks.core.dialects.s7.printer:mnemonic_of",
     spelling="ladderworks.core.dialects.s7.printer:spelling",
-    opener="ladderworks.core.dialects.s7.reader:open_path", refuse_changes="s7-save-changed")
+    opener="ladderworks.core.dialects.s7.opening:open_path", refuse_changes="s7-save-changed")
