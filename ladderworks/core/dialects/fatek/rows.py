@@ -110,15 +110,33 @@ WORD_ROWS: tuple[InstructionSpec, ...] = (
     _mover_row("FBS.SHFR", 52, "SHFR", "Shift right", "SAĞA KAYDIR", ("EN", "INB")),
     _mover_row("FBS.ROTL", 53, "ROTL", "Rotate left", "SOLA DÖNDÜR", ("EN",)),
     _mover_row("FBS.ROTR", 54, "ROTR", "Rotate right", "SAĞA DÖNDÜR", ("EN",)),
+    _row("FBS.MOVN", SUB_BASE + 9, "MOV/", "Move inverted", "TERS TAŞI",
+         params=(MODE, _value("S"), _register("output")), w1=False),
+    _row("FBS.ZNCMP", SUB_BASE + 37, "ZNCMP", "Zone compare", "BÖLGE KARŞILAŞTIR",
+         params=(MODE, _value("S"), _value("SU"), _value("SL"), FO)),
+    _row("FBS.BITRD", SUB_BASE + 40, "BITRD", "Bit read", "BİT OKU",
+         params=(MODE, _value("S"), _value("N"), FO)),
+    _row("FBS.BITWR", SUB_BASE + 41, "BITWR", "Bit write", "BİT YAZ", inputs=("EN", "INB"),
+         params=(MODE, _register("output", ParamAccess.READ_WRITE), _value("N")), w1=False),
+    _row("FBS.BITMV", SUB_BASE + 42, "BITMV", "Bit move", "BİT TAŞI",
+         params=(MODE, _value("S"), _value("Ns"), _register("output", ParamAccess.READ_WRITE),
+                 _value("Nd")), w1=False),
+    _row("FBS.XCHG", SUB_BASE + 45, "XCHG", "Exchange", "DEĞİŞ TOKUŞ",
+         params=(MODE, _register("Da", ParamAccess.READ_WRITE),
+                 _register("Db", ParamAccess.READ_WRITE)), w1=False),
+    _row("FBS.SWAP", SUB_BASE + 46, "SWAP", "Swap bytes", "BAYTLARI DEĞİŞTİR",
+         params=(MODE, _register("output", ParamAccess.READ_WRITE)), w1=False),
     _table_row("FBS.SUM", 24, "SUM", "Table sum", "TABLO TOPLAMI", "Ts", "L", "output"),
     _table_row("FBS.MEAN", 25, "MEAN", "Table mean", "TABLO ORTALAMASI", "Ts", "L", "output"),
     _table_row("FBS.BT_M", 103, "BT_M", "Table block move", "TABLO BLOK TAŞI", "Ts", "Td", "L"),
     _table_row("FBS.T_SWP", 104, "T_SWP", "Table swap", "TABLO DEĞİŞ TOKUŞ", "Ta", "Tb", "L"),
     _table_row("FBS.T_FIL", 107, "T_FIL", "Table fill", "TABLO DOLDUR", "S", "Td", "L"),
 )
-WORD_FAMILY = tuple(spec.name for spec in WORD_ROWS if spec.name.split(".")[1] not in
-                    ("SUM", "MEAN", "BT_M", "T_SWP", "T_FIL"))
-TABLE_FAMILY = tuple(spec.name for spec in WORD_ROWS if spec.name not in WORD_FAMILY)
+TABLE_FAMILY = ("FBS.SUM", "FBS.MEAN", "FBS.BT_M", "FBS.T_SWP", "FBS.T_FIL")
+BITS_FAMILY = ("FBS.MOVN", "FBS.ZNCMP", "FBS.BITRD", "FBS.BITWR", "FBS.BITMV", "FBS.XCHG",
+               "FBS.SWAP")
+WORD_FAMILY = tuple(spec.name for spec in WORD_ROWS
+                    if spec.name not in TABLE_FAMILY + BITS_FAMILY)
 
 # FUN n of the listing -> the row it becomes
 ROWS: tuple[InstructionSpec, ...] = (
@@ -238,6 +256,7 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "fatek_convert": ("FBS.BCD", "FBS.BIN"),
     "fatek_words": WORD_FAMILY,
     "fatek_tables": TABLE_FAMILY,
+    "fatek_bits": BITS_FAMILY,
     "fatek_contacts": tuple(spec.name for spec in PLACED),
     "fatek_timing": ("FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.TU", "FBS.TD"),
 }
