@@ -128,11 +128,20 @@ WORD_ROWS: tuple[InstructionSpec, ...] = (
          params=(MODE, _register("output", ParamAccess.READ_WRITE)), w1=False),
     _table_row("FBS.SUM", 24, "SUM", "Table sum", "TABLO TOPLAMI", "Ts", "L", "output"),
     _table_row("FBS.MEAN", 25, "MEAN", "Table mean", "TABLO ORTALAMASI", "Ts", "L", "output"),
+    _row("FBS.R_T", SUB_BASE + 100, "R->T", "Register to table", "YAZMAÇTAN TABLOYA",
+         inputs=("EN", "PIN", "CLR"),
+         params=(MODE, _value("Rs"), _register("Td"), _value("L"),
+                 _register("Pr", ParamAccess.READ_WRITE), FO)),
+    _row("FBS.T_R", SUB_BASE + 101, "T->R", "Table to register", "TABLODAN YAZMACA",
+         inputs=("EN", "PIN", "CLR"),
+         params=(MODE, _register("Ts", ParamAccess.READ), _value("L"),
+                 _register("Pr", ParamAccess.READ_WRITE), _register("Rd"), FO)),
     _table_row("FBS.BT_M", 103, "BT_M", "Table block move", "TABLO BLOK TAŞI", "Ts", "Td", "L"),
     _table_row("FBS.T_SWP", 104, "T_SWP", "Table swap", "TABLO DEĞİŞ TOKUŞ", "Ta", "Tb", "L"),
     _table_row("FBS.T_FIL", 107, "T_FIL", "Table fill", "TABLO DOLDUR", "S", "Td", "L"),
 )
-TABLE_FAMILY = ("FBS.SUM", "FBS.MEAN", "FBS.BT_M", "FBS.T_SWP", "FBS.T_FIL")
+TABLE_FAMILY = ("FBS.SUM", "FBS.MEAN", "FBS.R_T", "FBS.T_R", "FBS.BT_M", "FBS.T_SWP",
+                "FBS.T_FIL")
 BITS_FAMILY = ("FBS.MOVN", "FBS.ZNCMP", "FBS.BITRD", "FBS.BITWR", "FBS.BITMV", "FBS.XCHG",
                "FBS.SWAP")
 WORD_FAMILY = tuple(spec.name for spec in WORD_ROWS

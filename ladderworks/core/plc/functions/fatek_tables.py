@@ -1,6 +1,7 @@
-"""Fatek FBs table functions: FUN 24 SUM, 25 MEAN, 103 BT_M, 104 T_SWP, 107 T_FIL
-(docs/dialects.md, Fatek). A table is L consecutive registers (register pairs in the D form)
-from its first; L outside 1-256, or a table running past its area: FO0 ERR, nothing written."""
+"""Fatek FBs table functions: FUN 24 SUM, 25 MEAN, 100 R->T, 101 T->R, 103 BT_M, 104 T_SWP,
+107 T_FIL (docs/dialects.md, Fatek). A table is L consecutive registers (register pairs in the
+D form) from its first; L outside 1-256, or a table running past its area: ERR (FO0, FO1 for
+the pointer moves), nothing written."""
 
 from __future__ import annotations
 
@@ -111,3 +112,51 @@ def fatek_table_fill(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...]
     for k in range(count):
         ctx.memory.write(target.offset(k * size), value, size)
     return _error(ctx, state, fo, False)
+
+
+def _pointer_move(to_table: bool) -> FunctionImpl:
+    """FUN 100 R→T (Rs, Td, L, Pr: Td[Pr] := Rs) and 101 T→R (Ts, L, Pr, Rd: Rd := Ts[Pr]).
+    Inputs EN, PIN, CLR: CLR = 1 sets Pr to 0 and does nothing else; after a move PIN = 1 moves
+    Pr on by one, up to L - 1 where it stays. FO0 PEND: the move was at the table's last entry;
+    FO1 ERR: Pr outside 0 .. L - 1 or L outside 1-256, nothing moved."""
+
+    def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
+             params: tuple) -> bool:
+        """One pointer move when the box runs."""
+        if to_table:
+            mode, source, table, length, pointer, fo = params
+        else:
+            mode, table, length, pointer, source, fo = params
+        enable = runs(state, mode, inputs[0])
+        memory = ctx.memory
+        if len(inputs) > 2 and inputs[2]:
+            memory.write(pointer, 0, 2)
+            return _outputs(ctx, state, fo, False, False)
+        if not enable:
+            return bool(state.get("fo0", False))
+        size = width(mode)
+        count = operand_value(memory, length, 2)
+        at = memory.read(pointer, 2, signed=True)
+        if not (_fits(ctx, table, count, size) and 0 <= at < count):
+            return _outputs(ctx, state, fo, False, True)
+        assert isinstance(table, Address)
+        entry = table.offset(at * size)
+        if to_table:
+            memory.write(entry, operand_value(memory, source, size), size)
+        else:
+            memory.write(source, memory.read(entry, size), size)
+        if len(inputs) > 1 and inputs[1] and at < count - 1:
+            memory.write(pointer, at + 1, 2)
+        return _outputs(ctx, state, fo, at == count - 1, False)
+
+    return impl
+
+
+def _outputs(ctx: FunctionContext, state: dict, fo: object, *bits: bool) -> bool:
+    write_outputs(ctx.memory, fo, *bits)
+    state["fo0"] = bits[0]
+    return bits[0]
+
+
+function("FBS.R_T")(_pointer_move(True))
+function("FBS.T_R")(_pointer_move(False))

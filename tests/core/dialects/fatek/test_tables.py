@@ -64,3 +64,31 @@ def test_a_length_out_of_range_is_an_error_and_writes_nothing(monitored: bool) -
     put(engine, "R9", 256)
     scan(engine)
     assert (get(engine, "Y0"), get(engine, "D10"), get(engine, "D265")) == (0, 5, 5)
+
+
+@MODES
+def test_pointer_moves_register_to_table_and_back(monitored: bool) -> None:
+    """R->T with PIN fills a table one entry per EN 0 -> 1, PEND at the last, the pointer
+    staying there; CLR sets it to 0; T->R reads it back; a pointer out of range is ERR."""
+    engine = plc("ORG X0\nLD X1\nLD X2\nFUN 100P R->T\n Rs : R0\n Td : R10\n L : 3\n"
+                 " Pr : R20\nFO 0\nOUT Y0\nFO 1\nOUT Y1\n"
+                 "ORG X3\nLD SHORT\nLD OPEN\nFUN 101P T->R\n Ts : R10\n L : 3\n Pr : R21\n"
+                 " Rd : R22\nFO 0\nOUT Y2\nFO 1\nOUT Y3\n", monitored)
+    for value in (5, 6, 7, 8):
+        put(engine, "R0", value)
+        scan(engine, X0=1, X1=1)
+        scan(engine, X0=0)
+    assert [get(engine, f"R{n}") for n in (10, 11, 12)] == [5, 6, 8]  # 8 overwrote the last
+    assert (get(engine, "R20"), get(engine, "Y0"), get(engine, "Y1")) == (2, 1, 0)
+    scan(engine, X2=1)  # CLR
+    assert (get(engine, "R20"), get(engine, "Y0")) == (0, 0)
+    seen = []
+    for _ in range(3):
+        scan(engine, X3=1)
+        scan(engine, X3=0)
+        seen.append((get(engine, "R22"), get(engine, "Y2")))
+    assert seen == [(5, 0), (6, 0), (8, 1)] and get(engine, "R21") == 2
+    put(engine, "R21", 3)
+    put(engine, "R22", 0)
+    scan(engine, X3=1)
+    assert (get(engine, "R22"), get(engine, "Y3")) == (0, 1)

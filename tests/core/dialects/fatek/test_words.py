@@ -120,7 +120,9 @@ def test_pulse_forms_skip_scans_exactly(monitored: bool) -> None:
             "ORG X4\nFUN 27P NEG\n D : R14\n"
             "ORG X5\nFUN 24P SUM\n Ts : R0\n L : 4\n D : R15\nFO 0\nOUT Y3\n"
             "ORG X6\nFUN 104P T_SWP\n Ta : R16\n Tb : R18\n L : 2\n"
-            "ORG X7\nFUN 36P XNR\n Sa : R3\n Sb : R16\n D : R17\n")
+            "ORG X7\nFUN 36P XNR\n Sa : R3\n Sb : R16\n D : R17\n"
+            "ORG X8\nLD X9\nLD X10\nFUN 100P R->T\n Rs : R0\n Td : R30\n L : 4\n Pr : R40\n"
+            "ORG X11\nLD X12\nLD X13\nFUN 101 T->R\n Ts : R30\n L : 4\n Pr : R41\n Rd : R42\n")
     compiled = compile_program(fatek(text))
     assert compiled.binary is not None
     engines = pair(decode(compiled.binary), monitored=monitored)
