@@ -112,6 +112,8 @@ WORD_ROWS: tuple[InstructionSpec, ...] = (
     _mover_row("FBS.ROTR", 54, "ROTR", "Rotate right", "SAĞA DÖNDÜR", ("EN",)),
     _row("FBS.MOVN", SUB_BASE + 9, "MOV/", "Move inverted", "TERS TAŞI",
          params=(MODE, _value("S"), _register("output")), w1=False),
+    _row("FBS.TOGG", SUB_BASE + 10, "TOGG", "Toggle", "DEĞİŞTİR (TOGGLE)",
+         params=(MODE, Param("output", ParamKind.BIT, access=ParamAccess.READ_WRITE), FO)),
     _row("FBS.ZNCMP", SUB_BASE + 37, "ZNCMP", "Zone compare", "BÖLGE KARŞILAŞTIR",
          params=(MODE, _value("S"), _value("SU"), _value("SL"), FO)),
     _row("FBS.BITRD", SUB_BASE + 40, "BITRD", "Bit read", "BİT OKU",
@@ -142,7 +144,7 @@ WORD_ROWS: tuple[InstructionSpec, ...] = (
 )
 TABLE_FAMILY = ("FBS.SUM", "FBS.MEAN", "FBS.R_T", "FBS.T_R", "FBS.BT_M", "FBS.T_SWP",
                 "FBS.T_FIL")
-BITS_FAMILY = ("FBS.MOVN", "FBS.ZNCMP", "FBS.BITRD", "FBS.BITWR", "FBS.BITMV", "FBS.XCHG",
+BITS_FAMILY = ("FBS.MOVN", "FBS.TOGG", "FBS.ZNCMP", "FBS.BITRD", "FBS.BITWR", "FBS.BITMV", "FBS.XCHG",
                "FBS.SWAP")
 WORD_FAMILY = tuple(spec.name for spec in WORD_ROWS
                     if spec.name not in TABLE_FAMILY + BITS_FAMILY)

@@ -1,4 +1,4 @@
-"""Fatek FBs bit and word moves: FUN 9 MOV/, 37 ZNCMP, 40 BITRD, 41 BITWR, 42 BITMV, 45 XCHG,
+"""Fatek FBs bit and word moves: FUN 9 MOV/, 10 TOGG, 37 ZNCMP, 40 BITRD, 41 BITWR, 42 BITMV, 45 XCHG,
 46 SWAP (docs/dialects.md, Fatek). `mode` bit 0 the P form, bit 1 the D form (32-bit)."""
 
 from __future__ import annotations
@@ -29,6 +29,19 @@ def fatek_move_inverted(ctx: FunctionContext, state: dict, inputs: tuple[bool, .
         size = width(mode)
         ctx.memory.write(destination, ~operand_value(ctx.memory, source, size), size)
     return False
+
+
+@function("FBS.TOGG")
+def fatek_toggle(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
+                 params: tuple) -> bool:
+    """FUN 10 TOGG: the bit D inverted each time the box runs; FO0 OTP its new state."""
+    mode, device, fo = params
+    if not runs(state, mode, inputs[0]):
+        return _held(state)
+    assert isinstance(device, Address)
+    on = not ctx.memory.bit(device)
+    ctx.memory.set_bit(device, on)
+    return _out(ctx, state, fo, on)
 
 
 @function("FBS.ZNCMP")

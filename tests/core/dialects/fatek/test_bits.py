@@ -1,5 +1,5 @@
 """The bit and word-move FUNs as docs/dialects.md's FUN table gives them, from key-in listings,
-fast and monitored: FUN 9 MOV/, 37 ZNCMP (FO0 INZ, FO1 >U, FO2 <L, FO3 ERR), 40 BITRD (FO0
+fast and monitored: FUN 9 MOV/, 10 TOGG, 37 ZNCMP (FO0 INZ, FO1 >U, FO2 <L, FO3 ERR), 40 BITRD (FO0
 OTB), 41 BITWR (INB), 42 BITMV, 45 XCHG, 46 SWAP; P and D forms."""
 
 from __future__ import annotations
@@ -67,3 +67,15 @@ def test_bit_read_write_move(monitored: bool) -> None:
     put(engine, "R0", 0)
     scan(engine)
     assert get(engine, "Y0") == 1 and get(engine, "R2") & 0xFFFF == 0x8000
+
+
+@MODES
+def test_toggle(monitored: bool) -> None:
+    """TOGG inverts its bit each time it runs (P: each EN 0 -> 1); FO0 OTP follows the bit."""
+    engine = plc("ORG X0\nFUN 10P TOGG\n D : Y0\nFO 0\nOUT Y1\n"
+                 "ORG X1\nFUN 10 TOGG\n D : M5\n", monitored)
+    seen = []
+    for value in (1, 1, 0, 1):
+        scan(engine, X0=value, X1=1)
+        seen.append((get(engine, "Y0"), get(engine, "Y1"), get(engine, "M5")))
+    assert seen == [(1, 1, 1), (1, 1, 0), (1, 1, 1), (0, 0, 0)]  # M5 every scan
