@@ -144,8 +144,8 @@ WORD_ROWS: tuple[InstructionSpec, ...] = (
 )
 TABLE_FAMILY = ("FBS.SUM", "FBS.MEAN", "FBS.R_T", "FBS.T_R", "FBS.BT_M", "FBS.T_SWP",
                 "FBS.T_FIL")
-BITS_FAMILY = ("FBS.MOVN", "FBS.TOGG", "FBS.ZNCMP", "FBS.BITRD", "FBS.BITWR", "FBS.BITMV", "FBS.XCHG",
-               "FBS.SWAP")
+BITS_FAMILY = ("FBS.MOVN", "FBS.TOGG", "FBS.ZNCMP", "FBS.BITRD", "FBS.BITWR", "FBS.BITMV",
+               "FBS.XCHG", "FBS.SWAP")
 WORD_FAMILY = tuple(spec.name for spec in WORD_ROWS
                     if spec.name not in TABLE_FAMILY + BITS_FAMILY)
 

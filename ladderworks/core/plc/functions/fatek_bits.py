@@ -1,5 +1,5 @@
-"""Fatek FBs bit and word moves: FUN 9 MOV/, 10 TOGG, 37 ZNCMP, 40 BITRD, 41 BITWR, 42 BITMV, 45 XCHG,
-46 SWAP (docs/dialects.md, Fatek). `mode` bit 0 the P form, bit 1 the D form (32-bit)."""
+"""Fatek FBs bit and word moves: FUN 9 MOV/, 10 TOGG, 37 ZNCMP, 40 BITRD, 41 BITWR, 42 BITMV,
+45 XCHG, 46 SWAP (docs/dialects.md, Fatek). `mode` bit 0 the P form, bit 1 the D form."""
 
 from __future__ import annotations
 
