@@ -120,9 +120,13 @@ WORD_ROWS: tuple[InstructionSpec, ...] = (
          params=(MODE, _value("S"), _value("N"), FO)),
     _row("FBS.BITWR", SUB_BASE + 41, "BITWR", "Bit write", "BİT YAZ", inputs=("EN", "INB"),
          params=(MODE, _register("output", ParamAccess.READ_WRITE), _value("N")), w1=False),
-    _row("FBS.BITMV", SUB_BASE + 42, "BITMV", "Bit move", "BİT TAŞI",
-         params=(MODE, _value("S"), _value("Ns"), _register("output", ParamAccess.READ_WRITE),
-                 _value("Nd")), w1=False),
+    *(_row(name, SUB_BASE + fun, mnemonic, title, title_tr,
+           params=(MODE, _value("S"), _value("Ns"), _register("output", ParamAccess.READ_WRITE),
+                   _value("Nd")), w1=False)
+      for name, fun, mnemonic, title, title_tr in (
+          ("FBS.BITMV", 42, "BITMV", "Bit move", "BİT TAŞI"),
+          ("FBS.NBMV", 43, "NBMV", "Nibble move", "YARIM BAYT TAŞI"),
+          ("FBS.BYMV", 44, "BYMV", "Byte move", "BAYT TAŞI"))),
     _row("FBS.XCHG", SUB_BASE + 45, "XCHG", "Exchange", "DEĞİŞ TOKUŞ",
          params=(MODE, _register("Da", ParamAccess.READ_WRITE),
                  _register("Db", ParamAccess.READ_WRITE)), w1=False),
@@ -145,7 +149,7 @@ WORD_ROWS: tuple[InstructionSpec, ...] = (
 TABLE_FAMILY = ("FBS.SUM", "FBS.MEAN", "FBS.R_T", "FBS.T_R", "FBS.BT_M", "FBS.T_SWP",
                 "FBS.T_FIL")
 BITS_FAMILY = ("FBS.MOVN", "FBS.TOGG", "FBS.ZNCMP", "FBS.BITRD", "FBS.BITWR", "FBS.BITMV",
-               "FBS.XCHG", "FBS.SWAP")
+               "FBS.NBMV", "FBS.BYMV", "FBS.XCHG", "FBS.SWAP")
 WORD_FAMILY = tuple(spec.name for spec in WORD_ROWS
                     if spec.name not in TABLE_FAMILY + BITS_FAMILY)
 

@@ -1,10 +1,11 @@
 """Fatek FBs bit and word moves: FUN 9 MOV/, 10 TOGG, 37 ZNCMP, 40 BITRD, 41 BITWR, 42 BITMV,
-45 XCHG, 46 SWAP (docs/dialects.md, Fatek). `mode` bit 0 the P form, bit 1 the D form."""
+43 NBMV, 44 BYMV, 45 XCHG, 46 SWAP (docs/dialects.md, Fatek). `mode` bit 0 the P form, bit 1
+the D form."""
 
 from __future__ import annotations
 
 from ladderworks.core.address import Address
-from ladderworks.core.plc.functions import FunctionContext, function
+from ladderworks.core.plc.functions import FunctionContext, FunctionImpl, function
 from ladderworks.core.plc.functions.fatek_data import runs, width
 from ladderworks.core.plc.functions.fatek_timing import operand_value, write_outputs
 from ladderworks.core.plc.functions.fatek_words import signed
@@ -95,19 +96,33 @@ def fatek_bit_write(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
     return False
 
 
-@function("FBS.BITMV")
-def fatek_bit_move(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
-                   params: tuple) -> bool:
-    """FUN 42 BITMV: bit Nd of D := bit Ns of S; either number outside the width: nothing."""
-    mode, source, ns, destination, nd = params
-    if runs(state, mode, inputs[0]):
-        size = width(mode)
-        a = operand_value(ctx.memory, ns, 2)
-        b = operand_value(ctx.memory, nd, 2)
-        if _bit_in_range(a, size) and _bit_in_range(b, size):
-            bit = bool(operand_value(ctx.memory, source, size) >> a & 1)
-            _put_bit(ctx, destination, size, b, bit)
-    return False
+def _part_move(bits: int) -> FunctionImpl:
+    """FUN 42 BITMV (a bit), 43 NBMV (a nibble), 44 BYMV (a byte): part Nd of D := part Ns of
+    S, the other parts of D kept; a part number outside the width: nothing done."""
+
+    def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
+             params: tuple) -> bool:
+        """Move one part when the box runs."""
+        mode, source, ns, destination, nd = params
+        if runs(state, mode, inputs[0]):
+            size = width(mode)
+            parts = 8 * size // bits
+            a = operand_value(ctx.memory, ns, 2)
+            b = operand_value(ctx.memory, nd, 2)
+            if 0 <= a < parts and 0 <= b < parts:
+                mask = (1 << bits) - 1
+                part = operand_value(ctx.memory, source, size) >> (a * bits) & mask
+                value = ctx.memory.read(destination, size)
+                value = value & ~(mask << (b * bits)) | part << (b * bits)
+                ctx.memory.write(destination, value, size)
+        return False
+
+    return impl
+
+
+function("FBS.BITMV")(_part_move(1))
+function("FBS.NBMV")(_part_move(4))
+function("FBS.BYMV")(_part_move(8))
 
 
 @function("FBS.XCHG")

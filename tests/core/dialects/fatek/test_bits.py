@@ -1,6 +1,6 @@
 """The bit and word-move FUNs as docs/dialects.md's FUN table gives them, from key-in listings,
-fast and monitored: FUN 9 MOV/, 10 TOGG, 37 ZNCMP (FO0 INZ, FO1 >U, FO2 <L, FO3 ERR), 40 BITRD (FO0
-OTB), 41 BITWR (INB), 42 BITMV, 45 XCHG, 46 SWAP; P and D forms."""
+fast and monitored: FUN 9 MOV/, 10 TOGG, 37 ZNCMP (FO0 INZ, FO1 >U, FO2 <L, FO3 ERR), 40 BITRD
+(FO0 OTB), 41 BITWR (INB), 42 BITMV, 43 NBMV, 44 BYMV, 45 XCHG, 46 SWAP; P and D forms."""
 
 from __future__ import annotations
 
@@ -79,3 +79,22 @@ def test_toggle(monitored: bool) -> None:
         scan(engine, X0=value, X1=1)
         seen.append((get(engine, "Y0"), get(engine, "Y1"), get(engine, "M5")))
     assert seen == [(1, 1, 1), (1, 1, 0), (1, 1, 1), (0, 0, 0)]  # M5 every scan
+
+
+@MODES
+def test_nibble_and_byte_moves(monitored: bool) -> None:
+    engine = plc("ORG X0\nFUN 43 NBMV\n S : R0\n Ns : 3\n D : R1\n Nd : 0\n"
+                 "ORG X0\nFUN 44 BYMV\n S : R0\n Ns : 0\n D : R2\n Nd : R9\n"
+                 "ORG X0\nFUN 44D BYMV\n S : R0\n Ns : 1\n D : R4\n Nd : 3\n", monitored)
+    put(engine, "R0", 0x7A5C)
+    put(engine, "R1", 0x1234)
+    put(engine, "R2", 0x1234)
+    put(engine, "R9", 1)
+    scan(engine, X0=1)
+    assert get(engine, "R1") == 0x1237
+    assert get(engine, "R2") == 0x5C34
+    assert (get(engine, "R4"), get(engine, "R5")) == (0, 0x7A00)
+    put(engine, "R9", 2)  # byte 2 of a 16-bit D: nothing moved
+    put(engine, "R0", 0)
+    scan(engine)
+    assert get(engine, "R2") == 0x5C34
