@@ -237,6 +237,8 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "{name} takes no more operands, found '{text}'"),
     "fatek-operand": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' cannot be the operand {param} (a register, or a constant)"),
+    "fatek-bit-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{text}' cannot be the operand {param} (a bit device: Y0, M5 …)"),
     "fatek-not-simulated": QT_TRANSLATE_NOOP(
         "Diagnostic", "{name} is kept and drawn but not simulated: its outputs stay 0"),
     "fatek-timer-base": QT_TRANSLATE_NOOP(

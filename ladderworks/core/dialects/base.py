@@ -84,6 +84,9 @@ class Dialect:
     # "module:function": (program's path, program) -> None: files beside a program read with it
     # (Fatek's comment export as its symbols)
     companions: str = ""
+    # the lines a program not read from a file ends with, after its last network (Fatek's END:
+    # WinProladder's listing closes so; a read file keeps its own last lines)
+    closing: tuple[str, ...] = ()
 
     def read(self, text: str, form: TextForm, lines: list[str],
              ends: list[str]) -> tuple[Program, list[Diagnostic]]:

@@ -87,6 +87,7 @@ def print_program(program: Program) -> str:
         lines = [line for n, network in enumerate(program.networks)
                  for line in other.network_lines(network, n == 0)]
         lines += _comment_lines(program.trailer, ";")
+        lines += other.closing
         return "\n".join(lines) + "\n"
     out: list[str] = _comment_lines(header_texts(program))
     if program.framed:

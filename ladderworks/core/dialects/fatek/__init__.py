@@ -43,4 +43,5 @@ DIALECT = Dialect(
     placed="ladderworks.core.dialects.fatek.editing:placed_params",
     local_bits=((Area.R, 440, 444),),  # TR0-TR39 (devices.py)
     style="ladderworks.core.dialects.fatek.printed:style_of",
-    companions="ladderworks.core.dialects.fatek.comments:attach_companions")
+    companions="ladderworks.core.dialects.fatek.comments:attach_companions",
+    closing=("END",))

@@ -212,7 +212,9 @@ class ProgramLowering(StackLowering):
                 if line is None:
                     raise refused(record, "fatek-missing-operand", name=_name(record),
                                   param=label)
-                params.append(operand(line.text, line.line, label,
+                params.append(bit_operand(line.text, line.line, label, line.column)
+                              if param.kind is ParamKind.BIT else
+                              operand(line.text, line.line, label,
                                       param.kind is ParamKind.VALUE, line.column))
         extra = next(operands, None)
         if extra is not None:
@@ -455,6 +457,15 @@ def operand(text: str, line: int, param: str, constant: bool, column: int = 1) -
         raise BranchError(Diagnostic("fatek-operand", {"text": text, "param": param},
                                      line, column)) from None
     return word_address(device)[0]
+
+
+def bit_operand(text: str, line: int, param: str, column: int = 1) -> Address:
+    """A box's bit operand (FUN 10 TOGG's D: `Y0`, `M5`): its bit address."""
+    try:
+        return bit_address(parse_device(text, bit=True))
+    except DeviceError:
+        raise BranchError(Diagnostic("fatek-bit-operand", {"text": text, "param": param},
+                                     line, column)) from None
 
 
 def lower_program(records: list[Record]) -> tuple[list[Lowered], list[Diagnostic]]:

@@ -68,6 +68,91 @@ RETENTIVE = InstructionSpec("FBS.OUTL", Kind.BASIC, operand=True, writes=True, w
                             opcode=0x50, title="Retentive output", title_tr="KALICI ÇIKIŞ",
                             mnemonic="OUT L", source="fatek", dialect="fatek")
 
+def _logic_row(name: str, fun: int, mnemonic: str, title: str, title_tr: str
+               ) -> InstructionSpec:
+    return _row(name, SUB_BASE + fun, mnemonic, title, title_tr,
+                params=(MODE, _value("Sa"), _value("Sb"), _register("output"), FO))
+
+
+def _table_row(name: str, fun: int, mnemonic: str, title: str, title_tr: str,
+               *names: str) -> InstructionSpec:
+    """A table box: its operands (`Ts`, `Td`, `L`, `D` …: a table's first register, a length,
+    a value) and FO0 ERR."""
+    kinds = {"Ts": _register("Ts", ParamAccess.READ), "Td": _register("Td"),
+             "Ta": _register("Ta", ParamAccess.READ_WRITE),
+             "Tb": _register("Tb", ParamAccess.READ_WRITE),
+             "L": _value("L"), "S": _value("S"), "output": _register("output")}
+    return _row(name, SUB_BASE + fun, mnemonic, title, title_tr,
+                params=(MODE, *(kinds[n] for n in names), FO))
+
+
+def _mover_row(name: str, fun: int, mnemonic: str, title: str, title_tr: str,
+               inputs: tuple[str, ...]) -> InstructionSpec:
+    return _row(name, SUB_BASE + fun, mnemonic, title, title_tr, inputs=inputs,
+                params=(MODE, _register("output", ParamAccess.READ_WRITE), _value("N"), FO))
+
+
+# The word and table FUNs (fatek_words.py, fatek_tables.py; docs/dialects.md's FUN table)
+WORD_ROWS: tuple[InstructionSpec, ...] = (
+    _logic_row("FBS.AND", 18, "AND", "Logical AND", "MANTIKSAL VE"),
+    _logic_row("FBS.OR", 19, "OR", "Logical OR", "MANTIKSAL VEYA"),
+    _logic_row("FBS.XOR", 35, "XOR", "Exclusive OR", "ÖZEL VEYA"),
+    _logic_row("FBS.XNR", 36, "XNR", "Exclusive NOR", "ÖZEL VEYA DEĞİL"),
+    _row("FBS.SQRT", SUB_BASE + 26, "SQRT", "Square root", "KAREKÖK",
+         params=(MODE, _value("S"), _register("output"), FO)),
+    _row("FBS.NEG", SUB_BASE + 27, "NEG", "Negate", "İŞARET DEĞİŞTİR",
+         params=(MODE, _register("output", ParamAccess.READ_WRITE)), w1=False),
+    _row("FBS.ABS", SUB_BASE + 28, "ABS", "Absolute value", "MUTLAK DEĞER",
+         params=(MODE, _register("output", ParamAccess.READ_WRITE)), w1=False),
+    _row("FBS.EXT", SUB_BASE + 29, "EXT", "Sign extension", "İŞARET GENİŞLET",
+         params=(MODE, _value("S"), _register("output")), w1=False),
+    _mover_row("FBS.SHFL", 51, "SHFL", "Shift left", "SOLA KAYDIR", ("EN", "INB")),
+    _mover_row("FBS.SHFR", 52, "SHFR", "Shift right", "SAĞA KAYDIR", ("EN", "INB")),
+    _mover_row("FBS.ROTL", 53, "ROTL", "Rotate left", "SOLA DÖNDÜR", ("EN",)),
+    _mover_row("FBS.ROTR", 54, "ROTR", "Rotate right", "SAĞA DÖNDÜR", ("EN",)),
+    _row("FBS.MOVN", SUB_BASE + 9, "MOV/", "Move inverted", "TERS TAŞI",
+         params=(MODE, _value("S"), _register("output")), w1=False),
+    _row("FBS.TOGG", SUB_BASE + 10, "TOGG", "Toggle", "DEĞİŞTİR (TOGGLE)",
+         params=(MODE, Param("output", ParamKind.BIT, access=ParamAccess.READ_WRITE), FO)),
+    _row("FBS.ZNCMP", SUB_BASE + 37, "ZNCMP", "Zone compare", "BÖLGE KARŞILAŞTIR",
+         params=(MODE, _value("S"), _value("SU"), _value("SL"), FO)),
+    _row("FBS.BITRD", SUB_BASE + 40, "BITRD", "Bit read", "BİT OKU",
+         params=(MODE, _value("S"), _value("N"), FO)),
+    _row("FBS.BITWR", SUB_BASE + 41, "BITWR", "Bit write", "BİT YAZ", inputs=("EN", "INB"),
+         params=(MODE, _register("output", ParamAccess.READ_WRITE), _value("N")), w1=False),
+    *(_row(name, SUB_BASE + fun, mnemonic, title, title_tr,
+           params=(MODE, _value("S"), _value("Ns"), _register("output", ParamAccess.READ_WRITE),
+                   _value("Nd")), w1=False)
+      for name, fun, mnemonic, title, title_tr in (
+          ("FBS.BITMV", 42, "BITMV", "Bit move", "BİT TAŞI"),
+          ("FBS.NBMV", 43, "NBMV", "Nibble move", "YARIM BAYT TAŞI"),
+          ("FBS.BYMV", 44, "BYMV", "Byte move", "BAYT TAŞI"))),
+    _row("FBS.XCHG", SUB_BASE + 45, "XCHG", "Exchange", "DEĞİŞ TOKUŞ",
+         params=(MODE, _register("Da", ParamAccess.READ_WRITE),
+                 _register("Db", ParamAccess.READ_WRITE)), w1=False),
+    _row("FBS.SWAP", SUB_BASE + 46, "SWAP", "Swap bytes", "BAYTLARI DEĞİŞTİR",
+         params=(MODE, _register("output", ParamAccess.READ_WRITE)), w1=False),
+    _table_row("FBS.SUM", 24, "SUM", "Table sum", "TABLO TOPLAMI", "Ts", "L", "output"),
+    _table_row("FBS.MEAN", 25, "MEAN", "Table mean", "TABLO ORTALAMASI", "Ts", "L", "output"),
+    _row("FBS.R_T", SUB_BASE + 100, "R->T", "Register to table", "YAZMAÇTAN TABLOYA",
+         inputs=("EN", "PIN", "CLR"),
+         params=(MODE, _value("Rs"), _register("Td"), _value("L"),
+                 _register("Pr", ParamAccess.READ_WRITE), FO)),
+    _row("FBS.T_R", SUB_BASE + 101, "T->R", "Table to register", "TABLODAN YAZMACA",
+         inputs=("EN", "PIN", "CLR"),
+         params=(MODE, _register("Ts", ParamAccess.READ), _value("L"),
+                 _register("Pr", ParamAccess.READ_WRITE), _register("Rd"), FO)),
+    _table_row("FBS.BT_M", 103, "BT_M", "Table block move", "TABLO BLOK TAŞI", "Ts", "Td", "L"),
+    _table_row("FBS.T_SWP", 104, "T_SWP", "Table swap", "TABLO DEĞİŞ TOKUŞ", "Ta", "Tb", "L"),
+    _table_row("FBS.T_FIL", 107, "T_FIL", "Table fill", "TABLO DOLDUR", "S", "Td", "L"),
+)
+TABLE_FAMILY = ("FBS.SUM", "FBS.MEAN", "FBS.R_T", "FBS.T_R", "FBS.BT_M", "FBS.T_SWP",
+                "FBS.T_FIL")
+BITS_FAMILY = ("FBS.MOVN", "FBS.TOGG", "FBS.ZNCMP", "FBS.BITRD", "FBS.BITWR", "FBS.BITMV",
+               "FBS.NBMV", "FBS.BYMV", "FBS.XCHG", "FBS.SWAP")
+WORD_FAMILY = tuple(spec.name for spec in WORD_ROWS
+                    if spec.name not in TABLE_FAMILY + BITS_FAMILY)
+
 # FUN n of the listing -> the row it becomes
 ROWS: tuple[InstructionSpec, ...] = (
     RETENTIVE,
@@ -104,6 +189,7 @@ ROWS: tuple[InstructionSpec, ...] = (
          params=(MODE, _value("S"), _register("output"), FO)),
     _row("FBS.BIN", SUB_BASE + 21, "BIN", "BCD to binary", "BCD'DEN İKİLİYE",
          params=(MODE, _value("S"), _register("output"), FO)),
+    *WORD_ROWS,
     _row("FBS.ASCWR", SUB_BASE + 94, "ASCWR", "ASCII write", "ASCII YAZ",
          inputs=("EN", "PAU", "ABT"),
          params=(_number("MD", 0, 255), _register("S", ParamAccess.READ),
@@ -183,6 +269,9 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "fatek_io": ("FBS.ASCWR", "FBS.HSPSO", "FBS.MPARA", "FBS.PSOFF", "FBS.PSCNV", "FBS.176",
                  "FBS.FUN"),
     "fatek_convert": ("FBS.BCD", "FBS.BIN"),
+    "fatek_words": WORD_FAMILY,
+    "fatek_tables": TABLE_FAMILY,
+    "fatek_bits": BITS_FAMILY,
     "fatek_contacts": tuple(spec.name for spec in PLACED),
     "fatek_timing": ("FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.TU", "FBS.TD"),
 }

@@ -161,6 +161,8 @@ def test_production_report_prints_the_seed_report() -> None:
     ("ORG X0\nANDF 999 XYZ\n  Sa: R0\n  Sb: R1\nOUT Y0\n", "fatek-unknown-fun", 2, True),
     ("ORG X0\nFUN 11 (+)\n  Sa: R0\n  Sb: R1\nOUT Y0\n", "fatek-missing-operand", 2, True),
     ("ORG X0\nFUN 8 MOV\n  S : R0\n  D : 5\n", "fatek-operand", 4, True),
+    ("ORG X0\nFUN 10 TOGG\n  D : R0\n", "fatek-bit-operand", 3, True),
+    ("ORG X0\nFUN 24 SUM\n  Ts : R0\n  L : 4\n", "fatek-missing-operand", 2, True),
     ("ORG X0\nFUN 8 MOV\n  S : R0\n  D : R1\n  D : R2\n", "fatek-extra-operand", 5, True),
     ("ORG X0\nFUN 140 HSPSO\n  Ps: 0\n  SR: R0\n  WR: R100\n  : C1\nFO 0\nOUT Y0\n",
      "fatek-not-simulated", 2, False),
