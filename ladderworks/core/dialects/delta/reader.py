@@ -15,7 +15,15 @@ from dataclasses import dataclass, field
 
 from ladderworks.core.address import Address, AddressError, Area
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects.delta import DEVICES, NAME, S_BITS, WIDE_COUNTERS, csv_form, shown
+from ladderworks.core.dialects.delta import (
+    CR,
+    DEVICES,
+    NAME,
+    S_BITS,
+    WIDE_COUNTERS,
+    csv_form,
+    shown,
+)
 from ladderworks.core.dialects.delta import instructions as rows
 from ladderworks.core.dialects.delta import rows_extra as extra
 from ladderworks.core.il.program import (
@@ -372,7 +380,9 @@ class _Reader:
                 if upper[:1] in "KH" and kind in _VALUES:
                     self.error("dialect-constant", line, column, text=text)
                     return None
-                DEVICES.split(text)  # an unknown device, an 8 in octal, out of range: say so
+                device, _number = DEVICES.split(text)  # unknown, an 8 in octal, out of range
+                if device.letter == CR.letter:  # a module's register: reached by FROM/TO only
+                    return self.kind_error(name, index, kind, text, line, column)
             if kind in _EITHER and _CONSTANT.match(text) is None:
                 if upper[:1] in _EITHER[kind]:
                     return DEVICES.bit(text)
