@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from ladderworks.core.dialects.delta.instructions import NOT_SIMULATED, SPELLINGS
+from ladderworks.core.dialects.delta.table import NOT_SIMULATED, SPELLINGS
 from ladderworks.core.instructions import FUNCTIONS, lookup
 from ladderworks.core.plc.families import IMPLEMENTED
 from tests.core.dialects.conftest import delta

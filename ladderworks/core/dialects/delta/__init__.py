@@ -9,9 +9,9 @@ from dataclasses import replace
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.dialects.base import Dialect
-from ladderworks.core.dialects.delta.instructions import FAMILIES, ROWS
 from ladderworks.core.dialects.delta.shown import ROWS as SHOWN_ROWS
 from ladderworks.core.dialects.delta.sniff import score
+from ladderworks.core.dialects.delta.table import FAMILIES, ROWS
 from ladderworks.core.dialects.devices import Device, DeviceMap
 from ladderworks.core.instructions import Combine, InstructionSpec, Kind
 

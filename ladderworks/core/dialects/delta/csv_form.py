@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from ladderworks.core.dialects.delta import instructions as rows
+from ladderworks.core.dialects.delta import table
 
 if TYPE_CHECKING:
     from ladderworks.core.il.program import Program
@@ -119,7 +120,7 @@ def _double(mnemonic: str) -> bool:
     rest = mnemonic[1:]
     base = rest[:-1] if rest.endswith("P") else rest
     return mnemonic[:1] == "D" and any(
-        name in rows.SPELLINGS or name in rows.NOT_SIMULATED for name in (rest, base))
+        name in rows.SPELLINGS or name in table.NOT_SIMULATED for name in (rest, base))
 
 
 # program steps of the basic instructions that are not 1 step (WPLSoft's export of a real

@@ -254,13 +254,11 @@ _add("MCR", "alone", (NEST,), _row("MCR", _sub(), "Master control reset", "ANA K
                                     flow=Flow.COMMON_END))
 SPELLINGS["END"] = Spelling("alone", "END")  # the table's own END (end of program)
 
-# the 32-bit forms, blocks, logic, floating point, modules: their rows join the lists here
-from ladderworks.core.dialects.delta import rows_extra  # noqa: E402
+DATA_NAMES = tuple(_DATA)  # the data instructions above (their plain and P rows)
 
-ROWS: tuple[InstructionSpec, ...] = tuple(ROWS_LIST)
-
-# Delta instructions the simulator does not run: a "not simulated" error at their line.
-NOT_SIMULATED: frozenset[str] = frozenset((
+# Delta instructions first listed as not simulated (table.py adds rows_extra's list and takes
+# out every one read since: NOT_SIMULATED)
+LISTED_NOT_SIMULATED: frozenset[str] = frozenset((
     "NOP", "ALT", "ALTP", "EI", "DI", "IRET", "FOR", "NEXT", "WDT", "BMOV", "FMOV", "CML", "XCH",
     "BCD", "BIN", "WAND", "WOR", "WXOR", "NEG", "ROR", "ROL", "RCR", "RCL", "SFTR", "SFTL", "ZRST",
     "DECO", "ENCO", "SUM", "BON", "MEAN", "SQR", "FLT", "REF", "REFF", "MTR", "SPD", "PLSY",
@@ -272,17 +270,3 @@ NOT_SIMULATED: frozenset[str] = frozenset((
     "DMOVP", "DADDP", "DSUBP", "DMULP", "DDIVP", "DINCP", "DDECP", "DCMPP", "DZCPP", "STL",
     "CJP", "CALLP",
     *(f"D{start}{op}" for start in ("LD", "AND", "OR") for op in COMPARISONS)))
-
-# The functions each module of plc/functions implements for Delta (plc/families.py reads it).
-FAMILIES: dict[str, tuple[str, ...]] = {
-    "dvp_contacts": tuple(row.name for row in ROWS  # (FLD= ...: delta_float's, by ACTIONS)
-                          if row.combine is not Combine.NONE and row.kind is Kind.FUNCTION
-                          and row.name not in rows_extra.ACTIONS),
-    "dvp_timers": ("DVP.TMR",),
-    "dvp_counters": ("DVP.CNT", "DVP.DCNT", "DVP.RST.WORD"),
-    "dvp_data": (*(f"DVP.{name}{pulse}" for name in _DATA for pulse in ("", "P")),
-                 "DVP.PLS", "DVP.PLF"),
-}
-FAMILIES.update(rows_extra.FAMILIES)
-# with the rest of the manual's list; less those rows_extra simulates
-NOT_SIMULATED = (NOT_SIMULATED | rows_extra.MORE_NOT_SIMULATED) - SPELLINGS.keys()

@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 
 from ladderworks.core.dialects.delta import csv_form
-from ladderworks.core.dialects.delta.instructions import NOT_SIMULATED, SPELLINGS
+from ladderworks.core.dialects.delta.table import NOT_SIMULATED, SPELLINGS
 from ladderworks.core.il.textform import split_lines
 
 # a Delta line: optional step number, a mnemonic, operands joined to their numbers (X0, K10)

@@ -13,8 +13,8 @@ from __future__ import annotations
 import operator
 from collections.abc import Callable
 
-from ladderworks.core.dialects.delta.instructions import FAMILIES, ROWS
 from ladderworks.core.dialects.delta.rows_extra import ACTIONS
+from ladderworks.core.dialects.delta.table import FAMILIES, ROWS
 from ladderworks.core.instructions import Combine, Operation
 from ladderworks.core.plc.functions import FunctionContext, function
 from ladderworks.core.plc.functions.delta_words32 import value32

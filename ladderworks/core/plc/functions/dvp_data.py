@@ -15,7 +15,7 @@ from functools import cache
 
 from ladderworks.core.address import Address
 from ladderworks.core.dialects.delta import DEVICES, relay
-from ladderworks.core.dialects.delta.instructions import ROWS
+from ladderworks.core.dialects.delta.table import ROWS
 from ladderworks.core.instructions import Operation
 from ladderworks.core.plc.functions import FunctionContext, function
 from ladderworks.core.plc.memory import Memory
