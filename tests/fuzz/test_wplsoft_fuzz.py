@@ -79,10 +79,18 @@ def test_random_bytes_named_csv(data: bytes, tmp_path: Path) -> None:
     csv_form.detect(data.decode("latin-1").splitlines())
 
 
-def test_a_dvp_project_named_csv_is_one_clear_error(tmp_path: Path) -> None:
-    path = tmp_path / "project.csv"
-    path.write_bytes((real_programs_dir() / "delta" / "NIRMALKUMAR_timer.dvp").read_bytes())
+def test_a_binary_file_named_csv_is_one_clear_error(tmp_path: Path) -> None:
+    path = tmp_path / "picture.csv"
+    path.write_bytes(b"\x89PNG\r\n\x1a\n" + bytes(range(256)) * 8)
     code, output = run_cli("check", path, tmp_path)
     lines = output.strip().splitlines()
     assert code == 1 and 1 <= len(lines) <= 3 and "Traceback" not in output
     assert lines[0].startswith(f"{path}:1:")
+
+
+def test_a_dvp_project_named_csv_opens_as_the_project(tmp_path: Path) -> None:
+    """The content decides: WPLSoft's project header is read whatever the file's name."""
+    path = tmp_path / "project.csv"
+    path.write_bytes((real_programs_dir() / "delta" / "NIRMALKUMAR_timer.dvp").read_bytes())
+    code, output = run_cli("check", path, tmp_path)
+    assert code == 0 and "Traceback" not in output

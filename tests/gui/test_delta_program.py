@@ -161,7 +161,7 @@ def test_a_wplsoft_export_opens_drawn_and_names_what_it_does_not_simulate(
     assert window.plc_docks.session.load_program(program).ok
     control.show()
     qtbot.waitUntil(lambda: control.skipped.isVisible(), timeout=3000)
-    assert "TO K0 K1 D0 K1 (line 20)" in control.skipped.text()
+    assert "PID D0 D10 D100 D200 (line 20)" in control.skipped.text()
     other = tmp_path / "again.csv"
     assert window.save_to(other)
     assert other.read_bytes() == example.read_bytes()

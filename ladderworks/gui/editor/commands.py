@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ladderworks.core.ladder import Edit, LadderNetwork
-from ladderworks.gui.editor.ladder_model import LadderModel, ends_program, is_blank
+from ladderworks.gui.editor.ladder_model import LadderModel, is_blank
 from ladderworks.gui.editor.step_name import NamedCommand, StepName
 
 
@@ -29,7 +29,7 @@ class NetworkEditCommand(NamedCommand):
         self._edit = model.apply(self._index, self._edit)
         self._appended = None
         if self._index == blank and not is_blank(model.networks[blank]):
-            end = ends_program(model.networks[blank]) and blank == len(model.networks) - 1
+            end = model.keeps_end(model.networks[blank]) and blank == len(model.networks) - 1
             self._appended = blank if end else blank + 1
             model.insert_network(self._appended, LadderNetwork())
 

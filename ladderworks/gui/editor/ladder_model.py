@@ -104,10 +104,15 @@ class LadderModel(QObject):
         self.document = document
         self.symbols = document.origin.symbols if document.origin is not None else None
         networks = list(document.networks)
-        at = len(networks) - 1 if networks and ends_program(networks[-1]) else len(networks)
+        at = len(networks) - 1 if networks and self.keeps_end(networks[-1]) else len(networks)
         networks.insert(at, LadderNetwork())
         self.networks = networks
         self.document_reset.emit()
+
+    def keeps_end(self, network: LadderNetwork) -> bool:
+        """True for a Delta/Fatek program's END network, kept last (issue 38); a PMC program's
+        END ends its level 3 and the blank network stays after it, as before."""
+        return self.dialect not in ("seed", "fanuc") and ends_program(network)
 
     def blank_index(self) -> int:
         """The index of the blank network new networks are drawn in: the last, or the one
@@ -123,7 +128,7 @@ class LadderModel(QObject):
 
     def end_is_last(self) -> bool:
         """True when the last network is the program's END (kept last: drawn before it)."""
-        return len(self.networks) > 1 and ends_program(self.networks[-1]) \
+        return len(self.networks) > 1 and self.keeps_end(self.networks[-1]) \
             and is_blank(self.networks[-2])
 
     @property
@@ -140,7 +145,7 @@ class LadderModel(QObject):
         at = self.blank_index()
         self.networks[at:at] = networks
         self.networks_inserted.emit(at, len(networks))
-        if networks and ends_program(networks[-1]) and not self.end_is_last():
+        if networks and self.keeps_end(networks[-1]) and not self.end_is_last():
             self.insert_network(len(self.networks), self.remove_network(at + len(networks) - 1))
 
     def _laid_out(self, networks: list[LadderNetwork], trailer: list[str] | None) -> None:

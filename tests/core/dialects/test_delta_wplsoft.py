@@ -97,7 +97,7 @@ def test_the_outputs_example_is_drawn_as_ladder_and_runs() -> None:
     for x in ("X2", "X0", "X1", "X3", "X6"):
         put(plc, x, 1)
     plc.step(10)
-    # MOV among the coils, in a branch after MPS; INV after X3 X4; TO (not simulated) passes on
+    # MOV among the coils, in a branch after MPS; INV after X3 X4; PID (not simulated) passes on
     assert [get(plc, name) for name in ("Y1", "D0", "Y2", "Y3", "D1", "Y4", "Y5", "Y6")] == \
         [1, 5, 1, 1, 7, 0, 1, 1]
 
