@@ -273,21 +273,25 @@ def test_real_programs_run_the_same_on_the_native_scan(
 EXAMPLES = Path(__file__).resolve().parents[3] / "resources" / "examples"
 
 
-def test_cli_run_and_test_take_the_backend(capsys: pytest.CaptureFixture[str],
-                                           monkeypatch: pytest.MonkeyPatch) -> None:
+def test_cli_run_and_test_take_the_backend_and_say_which_ran(
+        capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
     from ladderworks.cli import main
 
     program = str(EXAMPLES / "timer_relay.LAD")
     scenario = str(EXAMPLES / "timer_relay.scenario.csv")
     outputs = []
-    for backend in ("python", "native"):
+    for backend, name in (("python", "Python"), ("native", "native")):
         assert main(["run", program, "--ms", "3000", "--set", "X0.0=1", "--print", "Y0.0,R0",
                      "--backend", backend]) == 0
         assert main(["test", program, scenario, "--backend", backend]) == 0
         captured = capsys.readouterr()
         outputs.append(captured.out.splitlines()[0])
-        assert captured.err == ""
+        assert captured.err.splitlines() == [f"ladderworks-cli: the {name} scan runs",
+                                             f"ladderworks-cli: {program}: the {name} scan runs"]
     assert outputs[0] == outputs[1]
+    assert main(["run", program, "--ms", "100"]) == 0  # no --backend: nothing said
+    assert main(["test", program, scenario]) == 0
+    assert capsys.readouterr().err == ""
     monkeypatch.setattr(engine_module, "native_unavailable", lambda: "llvmlite is not here")
     assert main(["run", program, "--backend", "native"]) == 0
     assert main(["test", program, scenario, "--backend", "native"]) == 0
