@@ -425,3 +425,20 @@ def test_an_unknown_sub_is_the_cnc_stub_natively() -> None:
     assert engines[1]._current.callbacks == []
     driver = Driver(engines, random.Random(4), bytes_of(Area.X, 1), [], [])
     driver.run(200, rate=0.5, longest=3)
+
+
+def test_a_skip_writes_back_only_the_timers_it_moved_on() -> None:
+    """After a skip the native scan writes the states the skipper moved on into their words
+    (not every block and edge memory): the timers then close at the Python scan's time."""
+    text = "%@3\nRD X0.0\nTMRB 1 4000\nWRT Y0.0\nRD X0.0\nTMRB 2 9000\nWRT Y0.1\n" \
+           "RD X0.1\nDIFU 3\nWRT Y0.2\n%\n"
+    python, native = pair(binary_of(text))
+    for until, inputs in ((1000, 1), (5000, 3), (7000, 1), (12000, 0), (13000, 1)):
+        for engine in (python, native):
+            engine.memory.areas[Area.X][0] = inputs
+            engine.advance(until)
+        assert not native._current.stale  # the moved-on timers only: nothing left to read
+        assert native.call_states() == python._states
+        assert native._ctx.edges == python._ctx.edges
+        assert native.memory.areas == python.memory.areas, until
+    assert native.skipped > 1000  # the timers ran on through skips
