@@ -29,7 +29,7 @@ busy machine do not show in the figures (the GUI and scan threads still share th
 Environment, for experiments: SETS="technician" (the dock sets to run), SHARE=0.15 (the GUI
 thread's share, `snapshot_gate.SHARE`), MODES="gate paced" (the modes to run), SWITCH_MS=1
 (the interpreter's switch interval, `sys.setswitchinterval`), PROFILE=1 (cProfile of the GUI
-thread per set).
+thread per set), BACKEND=native (the scan's code: PLC › Native scan checked; python by default).
 """
 
 from __future__ import annotations
@@ -86,6 +86,7 @@ def measure(mode: str, seconds: float) -> None:
     app = QApplication.instance() or QApplication([])
     folder = tempfile.mkdtemp()
     settings = Settings(QSettings(str(Path(folder) / "s.ini"), QSettings.Format.IniFormat))
+    settings.set_scan_backend(os.environ.get("BACKEND", "python"))  # PLC › Native scan
     language = UiLanguage()
     language.apply("en")
     window = MainWindow(settings, language)

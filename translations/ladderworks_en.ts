@@ -2292,29 +2292,29 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="203"/>
+        <location filename="../ladderworks/gui/main_window.py" line="207"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="433"/>
+        <location filename="../ladderworks/gui/main_window.py" line="438"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="445"/>
+        <location filename="../ladderworks/gui/main_window.py" line="450"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="452"/>
+        <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="532"/>
-        <location filename="../ladderworks/gui/main_window.py" line="277"/>
-        <location filename="../ladderworks/gui/main_window.py" line="447"/>
+        <location filename="../ladderworks/gui/main_window.py" line="282"/>
+        <location filename="../ladderworks/gui/main_window.py" line="452"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -2514,37 +2514,37 @@
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="403"/>
+        <location filename="../ladderworks/gui/main_window.py" line="408"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="419"/>
+        <location filename="../ladderworks/gui/main_window.py" line="424"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="439"/>
+        <location filename="../ladderworks/gui/main_window.py" line="444"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="489"/>
+        <location filename="../ladderworks/gui/main_window.py" line="494"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="492"/>
+        <location filename="../ladderworks/gui/main_window.py" line="497"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="525"/>
+        <location filename="../ladderworks/gui/main_window.py" line="530"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="526"/>
+        <location filename="../ladderworks/gui/main_window.py" line="531"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -3250,42 +3250,57 @@
         <translation>scan process: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="404"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="398"/>
+        <source>native scan (machine code)</source>
+        <translation>native scan (machine code)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="400"/>
+        <source>Python scan (native not possible: {0})</source>
+        <translation>Python scan (native not possible: {0})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="402"/>
+        <source>Python scan</source>
+        <translation>Python scan</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="414"/>
         <source>{0} (line {1})</source>
         <translation>{0} (line {1})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="407"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="417"/>
         <source>… and {0} more</source>
         <translation>… and {0} more</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="409"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="419"/>
         <source>Not simulated, passed by in the scan ({0}): {1}</source>
         <translation>Not simulated, passed by in the scan ({0}): {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="412"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="422"/>
         <source>These instructions are kept, drawn and saved, but the simulator does not run them: a box passes its input on, a contact never conducts.</source>
         <translation>These instructions are kept, drawn and saved, but the simulator does not run them: a box passes its input on, a contact never conducts.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="419"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="429"/>
         <source>NO PROGRAM</source>
         <translation>NO PROGRAM</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="422"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="432"/>
         <source>RUNNING</source>
         <translation>RUNNING</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="425"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="435"/>
         <source>STOPPED</source>
         <translation>STOPPED</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="428"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="438"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</translation>
     </message>
@@ -4253,6 +4268,19 @@
         <location filename="../ladderworks/gui/recovery.py" line="182"/>
         <source>Cannot write the recovery copy in {0}: {1}</source>
         <translation>Cannot write the recovery copy in {0}: {1}</translation>
+    </message>
+</context>
+<context>
+    <name>ScanBackend</name>
+    <message>
+        <location filename="../ladderworks/gui/scan_backend.py" line="35"/>
+        <source>Native scan (machine code)</source>
+        <translation>Native scan (machine code)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/scan_backend.py" line="36"/>
+        <source>Compile the program loaded next (F9, Compile) to machine code: it scans many times faster. Where that cannot be done, the Python scan runs and the PLC control screen says why.</source>
+        <translation>Compile the program loaded next (F9, Compile) to machine code: it scans many times faster. Where that cannot be done, the Python scan runs and the PLC control screen says why.</translation>
     </message>
 </context>
 <context>

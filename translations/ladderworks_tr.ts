@@ -2292,29 +2292,29 @@
         <translation>Ana araç çubuğu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="203"/>
+        <location filename="../ladderworks/gui/main_window.py" line="207"/>
         <source>Zoom</source>
         <translation>Yakınlaştırma</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="433"/>
+        <location filename="../ladderworks/gui/main_window.py" line="438"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Derleme bitti: {0} bayt (yüklenmedi: PLC önceki programı çalıştırıyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="445"/>
+        <location filename="../ladderworks/gui/main_window.py" line="450"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Derleme bitti, ancak PLC programı kabul etmedi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="452"/>
+        <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="532"/>
-        <location filename="../ladderworks/gui/main_window.py" line="277"/>
-        <location filename="../ladderworks/gui/main_window.py" line="447"/>
+        <location filename="../ladderworks/gui/main_window.py" line="282"/>
+        <location filename="../ladderworks/gui/main_window.py" line="452"/>
         <source>Untitled</source>
         <translation>Adsız</translation>
     </message>
@@ -2514,37 +2514,37 @@
         <translation>{0} dışa aktarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="403"/>
+        <location filename="../ladderworks/gui/main_window.py" line="408"/>
         <source>Check: {0} error(s)</source>
         <translation>Kontrol: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="419"/>
+        <location filename="../ladderworks/gui/main_window.py" line="424"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Derleme başarısız: {0} hata</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="439"/>
+        <location filename="../ladderworks/gui/main_window.py" line="444"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
         <translation>Derleme bitti: {0} bayt (yüklenmedi: PLC mevcut programını tutuyor)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="489"/>
+        <location filename="../ladderworks/gui/main_window.py" line="494"/>
         <source>Address {0} set</source>
         <translation>{0} adresi verildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="492"/>
+        <location filename="../ladderworks/gui/main_window.py" line="497"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} kopyalandı (adresini vermek için bir kontak veya bobin seçin)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="525"/>
+        <location filename="../ladderworks/gui/main_window.py" line="530"/>
         <source>About LadderWorks</source>
         <translation>LadderWorks hakkında</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="526"/>
+        <location filename="../ladderworks/gui/main_window.py" line="531"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: CNC tezgâhları için ladder (FANUC PMC tarzı) programlama.</translation>
     </message>
@@ -3250,42 +3250,57 @@
         <translation>tarama süreci: {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="404"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="398"/>
+        <source>native scan (machine code)</source>
+        <translation>yerel tarama (makine kodu)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="400"/>
+        <source>Python scan (native not possible: {0})</source>
+        <translation>Python taraması (yerel olamadı: {0})</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="402"/>
+        <source>Python scan</source>
+        <translation>Python taraması</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="414"/>
         <source>{0} (line {1})</source>
         <translation>{0} (satır {1})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="407"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="417"/>
         <source>… and {0} more</source>
         <translation>… ve {0} tane daha</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="409"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="419"/>
         <source>Not simulated, passed by in the scan ({0}): {1}</source>
         <translation>Benzetilmeyen, taramada atlanan komutlar ({0}): {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="412"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="422"/>
         <source>These instructions are kept, drawn and saved, but the simulator does not run them: a box passes its input on, a contact never conducts.</source>
         <translation>Bu komutlar korunur, çizilir ve kaydedilir, ama benzetici onları çalıştırmaz: bir kutu girişini aynen geçirir, bir kontak hiç iletmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="419"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="429"/>
         <source>NO PROGRAM</source>
         <translation>PROGRAM YOK</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="422"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="432"/>
         <source>RUNNING</source>
         <translation>ÇALIŞIYOR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="425"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="435"/>
         <source>STOPPED</source>
         <translation>DURDU</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/plc_control.py" line="428"/>
+        <location filename="../ladderworks/gui/docks/plc_control.py" line="438"/>
         <source>scans {0} · scan time {1} / {2} / {3} ms (min/avg/max) · period {4} ms · overruns {5}</source>
         <translation>tarama {0} · tarama süresi {1} / {2} / {3} ms (en az/ort./en çok) · periyot {4} ms · aşım {5}</translation>
     </message>
@@ -4253,6 +4268,19 @@
         <location filename="../ladderworks/gui/recovery.py" line="182"/>
         <source>Cannot write the recovery copy in {0}: {1}</source>
         <translation>Kurtarma kopyası {0} içine yazılamadı: {1}</translation>
+    </message>
+</context>
+<context>
+    <name>ScanBackend</name>
+    <message>
+        <location filename="../ladderworks/gui/scan_backend.py" line="35"/>
+        <source>Native scan (machine code)</source>
+        <translation>Yerel tarama (makine kodu)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/scan_backend.py" line="36"/>
+        <source>Compile the program loaded next (F9, Compile) to machine code: it scans many times faster. Where that cannot be done, the Python scan runs and the PLC control screen says why.</source>
+        <translation>Bundan sonra yüklenen programı (F9, Derle) makine koduna derle: kat kat hızlı tarar. Bu yapılamazsa Python taraması çalışır ve PLC kontrol ekranı nedenini söyler.</translation>
     </message>
 </context>
 <context>

@@ -35,18 +35,22 @@ def add_every_scan_option(parser: argparse.ArgumentParser) -> None:
 
 def add_backend_option(parser: argparse.ArgumentParser) -> None:
     """Add `--backend python|native` to a command that runs a program."""
-    parser.add_argument("--backend", choices=("python", "native"), default="python",
+    parser.add_argument("--backend", choices=("python", "native"), default=None,
                         help="the scan's code: generated Python (default) or native machine "
-                             "code compiled with llvmlite; where native cannot run, Python "
-                             "runs and the reason is printed (docs/engine.md)")
+                             "code compiled with llvmlite; given, a line on stderr says which "
+                             "ran, and why Python ran where native could not (docs/engine.md)")
 
 
-def backend_note(engine: object, asked: str) -> str | None:
-    """What to print when `asked` was native and the Python scan runs instead, or None."""
-    reason = getattr(engine, "backend_reason", None)
+def backend_note(used: str | None, reason: str | None, asked: str | None) -> str | None:
+    """The line saying which scan's code ran (`used`), when --backend was given (`asked`);
+    with the reason when native was asked for and the Python scan ran. None: say nothing."""
+    if asked is None or used is None:
+        return None
+    if used == "native":
+        return "the native scan runs"
     if asked == "native" and reason:
-        return f"ladderworks-cli: the Python scan runs: {reason}"
-    return None
+        return f"the Python scan runs: {reason}"
+    return "the Python scan runs"
 
 
 def use_dialect(args: argparse.Namespace) -> None:

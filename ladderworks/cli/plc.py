@@ -202,7 +202,7 @@ def _run(args: argparse.Namespace) -> int:
     if parameters is None:
         return 2
     plc = PlcRun(period_ms=args.scan_period, divisions=args.divisions,
-                 every_scan=args.every_scan, backend=args.backend)
+                 every_scan=args.every_scan, backend=args.backend or "python")
     plc.set_parameters(parameters.parameters)
     _use_ascii_files(plc, args.file)
     problems = plc.load(binary, program)
@@ -213,9 +213,9 @@ def _run(args: argparse.Namespace) -> int:
     if skips is not None:
         _report(args.file, [skips])
     engine = plc.engine
-    note = backend_note(engine, args.backend)
+    note = backend_note(engine.backend_used, engine.backend_reason, args.backend)
     if note:
-        print(note, file=sys.stderr)
+        print(f"ladderworks-cli: {note}", file=sys.stderr)
     for number, value in timers:  # options win over the parameter file
         plc.set_timer_preset(number, value)
     for number, preset in counters:

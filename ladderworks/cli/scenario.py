@@ -11,6 +11,7 @@ from ladderworks.cli._programs import (
     add_backend_option,
     add_dialect_option,
     add_every_scan_option,
+    backend_note,
     forced_dialect,
 )
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS
@@ -80,9 +81,9 @@ def _test(args: argparse.Namespace) -> int:
                 print(f"ladderworks-cli: {program}: {loaded.reason}", file=sys.stderr)
             return 1
     jobs = [ScenarioJob(name, program, args.params, args.scan_period, forced_dialect(),
-                        args.every_scan, args.backend) for name in files]
+                        args.every_scan, args.backend or "python") for name in files]
     told = {program}
-    fallen_back: set[str | None] = set()  # programs whose native scan could not run
+    said: set[str | None] = set()  # programs whose scan's code is said (--backend)
     outcomes: list[ScenarioOutcome] = []
     for outcome in run_jobs(jobs, args.jobs):
         outcomes.append(outcome)
@@ -90,11 +91,10 @@ def _test(args: argparse.Namespace) -> int:
             told.add(outcome.program)
             for text in outcome.messages:
                 print(text, file=sys.stderr)
-        if outcome.job.backend == "native" and outcome.backend_reason \
-                and outcome.program not in fallen_back:
-            fallen_back.add(outcome.program)
-            print(f"ladderworks-cli: {outcome.program}: the Python scan runs: "
-                  f"{outcome.backend_reason}", file=sys.stderr)
+        note = backend_note(outcome.backend_used, outcome.backend_reason, args.backend)
+        if note and outcome.program not in said:
+            said.add(outcome.program)
+            print(f"ladderworks-cli: {outcome.program}: {note}", file=sys.stderr)
         _print_result(outcome.job.scenario, outcome.result, args.verbose)
     if args.junit:
         write_junit(Path(args.junit), [(o.program, o.result) for o in outcomes])

@@ -49,6 +49,7 @@ from ladderworks.gui.parameter_document import ParameterDocument
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.print_actions import PrintActions
 from ladderworks.gui.retranslate import Retranslating
+from ladderworks.gui.scan_backend import ScanBackendChoice
 from ladderworks.gui.screen_fit import rebalance_docks
 from ladderworks.gui.settings import MAX_RECENT, Settings
 from ladderworks.gui.signal_list import SignalListDock
@@ -122,6 +123,9 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.names_menu.changed.connect(self.editor.relayout)
         self.names_menu.changed.connect(self.plc_docks.diagnostic.view.relayout)
         self.plc_docks.diagnostic.remember_zoom(self.settings)  # its zoom, saved
+        # PLC › Native scan: the scan's code of the programs loaded (kept in the settings)
+        self.scan_backend = ScanBackendChoice(self.plc_docks.session, self.settings, self)
+        self.menus.add("menu_plc", self.scan_backend.action, separator=True)
         self.cross_reference = cross_reference.install(self, self.menus, self.editor,
                                                        self.errors)
         self.printing = PrintActions(self, self, self.menus)  # File › Print, Export PDF
@@ -211,6 +215,7 @@ class MainWindow(Retranslating, FileActions, QMainWindow):
         self.dock_titles.check_soon()  # longer titles: a side group widens for its tabs
         self.menus.retranslate()
         self.plc_docks.retranslate()
+        self.scan_backend.retranslate()
         self.printing.retranslate()
         self.undo_texts.retranslate()  # after the menus: Edit › Undo names its step
         for code in ("en", "tr"):

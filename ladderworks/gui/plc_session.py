@@ -19,7 +19,8 @@ on the virtual clock and publish at once, so tests get the same signals without 
 
 from __future__ import annotations
 
-from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtCore import QObject, Qt, QTimer, Signal
+from PySide6.QtGui import QGuiApplication
 
 from ladderworks.core.address import Address
 from ladderworks.core.compiler import CompileResult
@@ -79,7 +80,15 @@ class PlcSession(QObject):
         `program` is the source it was compiled from (views use its comments), if known;
         `origin` its (dialect, file); `keep_forces` False releases the old program's forces."""
         was_running = self.run.running
-        problems = self.run.load(binary, program)
+        # a native scan's first compile of a large program takes seconds (docs/engine.md)
+        busy = self.run.backend == "native" and QGuiApplication.instance() is not None
+        if busy:
+            QGuiApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
+        try:
+            problems = self.run.load(binary, program)
+        finally:
+            if busy:
+                QGuiApplication.restoreOverrideCursor()
         if problems:
             return problems
         self.loaded_origin = origin

@@ -1,4 +1,4 @@
-"""The user's settings (language, recent files, window layout) over QSettings, with defaults."""
+"""The user's settings (language, recent files, window layout, scan code) over QSettings."""
 
 from __future__ import annotations
 
@@ -6,6 +6,7 @@ from PySide6.QtCore import QByteArray, QSettings
 
 MAX_RECENT = 8
 LANGUAGES: tuple[str, ...] = ("en", "tr")
+BACKENDS: tuple[str, ...] = ("python", "native")  # the scan's code (docs/engine.md)
 
 
 class Settings:
@@ -27,6 +28,16 @@ class Settings:
     def set_language(self, language: str) -> None:
         """Remember the UI language."""
         self._store.setValue("ui/language", language)
+        self._store.sync()
+
+    def scan_backend(self) -> str:
+        """The scan's code the PLC uses: "python" (the default) or "native"."""
+        value = self._store.value("plc/backend", "python")
+        return str(value) if value in BACKENDS else "python"
+
+    def set_scan_backend(self, backend: str) -> None:
+        """Remember the scan's code ("python" or "native")."""
+        self._store.setValue("plc/backend", backend)
         self._store.sync()
 
     def recent_files(self) -> list[str]:

@@ -103,7 +103,7 @@ class GeneratedScan:
     def sync(self) -> None:
         """The call sites' states are in their dicts (always: the scan writes them there)."""
 
-    def states_changed(self) -> None:
+    def states_changed(self, moved: list[dict[str, Any]] | None = None) -> None:
         """The call sites' states were changed outside a scan (nothing to do: it reads them)."""
 
     def clear_flow(self) -> None:

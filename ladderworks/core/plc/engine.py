@@ -276,7 +276,8 @@ class ScanEngine:
                         self.scan_count += skipped
                         self.skipped += skipped
                         count += skipped
-                        self._current.states_changed()  # the skipper moved the timers on
+                        # the skipper moved these timers on (nothing else changed since sync)
+                        self._current.states_changed(skipper.moved)
                         self._relays(self.now_ms - self.period_ms)  # the last skipped scan's
                         self.force_table.apply(self.memory)  # forces win, as after a scan
             self._current.sync()

@@ -23,6 +23,8 @@ class PlcStatus:
     overruns: int = 0
     scanner: str = ""  # "process" (the scan process), "thread" (the IDE's), "" (not real time)
     problem: str = ""  # why the scans are not in the scan process after all ("" if they are)
+    backend: str = ""  # the scan's code that runs: "native", "python" ("" with no program)
+    backend_reason: str = ""  # why the Python scan runs although native was asked for
 
 
 @dataclass(frozen=True, slots=True)

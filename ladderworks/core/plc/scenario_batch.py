@@ -69,6 +69,7 @@ class ScenarioOutcome:
     result: ScenarioResult
     messages: list[str] = field(default_factory=list)
     backend_reason: str | None = None  # why the Python scan ran when native was asked for
+    backend_used: str | None = None  # the scan's code that ran ("native", "python"), if any
 
 
 _PROGRAMS: dict[tuple[str, str | None, str | None, int, int], LoadedProgram] = {}
@@ -160,8 +161,11 @@ def run_job(job: ScenarioJob) -> ScenarioOutcome:
             "scenario-program", {"path": program, "reason": problems[0].message()},
             scenario.program_line, column))
         return ScenarioOutcome(job, program, ScenarioResult(scenario), loaded.messages)
-    reason = plc.engine.backend_reason if plc.engine is not None else None
-    return ScenarioOutcome(job, program, run_scenario(plc, scenario), loaded.messages, reason)
+    engine = plc.engine
+    reason, used = (engine.backend_reason, engine.backend_used) if engine is not None \
+        else (None, None)
+    return ScenarioOutcome(job, program, run_scenario(plc, scenario), loaded.messages, reason,
+                           used)
 
 
 def default_jobs() -> int:

@@ -328,7 +328,8 @@ class PlcRun:
                    "thread" if self._runner is not None else "")
         return PlcStatus(True, self._running, engine.scan_count, engine.now_ms,
                          engine.period_ms, low, avg, high, overruns, scanner,
-                         self.process_error)
+                         self.process_error, engine.backend_used,
+                         engine.backend_reason or "")
 
     def snapshot(self) -> PlcSnapshot:
         """A copy of memory and power flow taken between two scans."""

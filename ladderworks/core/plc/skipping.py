@@ -128,6 +128,7 @@ class CycleSkipper:
         self._track()
         self._wait = 0  # scans before the next try
         self._misses = 0  # tries in a row whose states differed
+        self.moved: list[dict[str, Any]] = []  # the states the last skip moved on
 
     def _track(self) -> None:
         """Copy only the states that hold something: a state never empties within a run (only
@@ -182,6 +183,7 @@ class CycleSkipper:
         round's marks are, too: the next round's start is no longer one round after them)."""
         for state, key, step in growth:
             state[key] += step * times
+        self.moved = [state for state, _key, _step in growth]
         self._ring.clear()
 
     def _close_round(self, seen: _Seen, limit_ms: int) -> int:

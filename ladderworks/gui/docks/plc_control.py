@@ -391,6 +391,16 @@ class PlcControlDock(Retranslating, QDockWidget):
             text += " · " + translate("PlcControl", "scan process: {0}").format(status.problem)
         return text
 
+    @staticmethod
+    def _backend_text(status: PlcStatus) -> str:
+        """Which scan's code runs, and why not the native one when it was asked for."""
+        if status.backend == "native":
+            return " · " + translate("PlcControl", "native scan (machine code)")
+        if status.backend_reason:
+            return " · " + translate("PlcControl", "Python scan (native not possible: {0})"
+                                     ).format(status.backend_reason)
+        return " · " + translate("PlcControl", "Python scan") if status.backend else ""
+
     def _show_skipped(self, force: bool = False) -> None:
         """The instructions of the program in the PLC that the scan passes by, with lines."""
         found = self.session.run.skipped if self.session.run.engine is not None else []
@@ -431,7 +441,8 @@ class PlcControlDock(Retranslating, QDockWidget):
                 "period {4} ms · overruns {5}").format(
                 status.scan_count, decimal(status.min_ms, 3), decimal(status.avg_ms, 3),
                 decimal(status.max_ms, 3),
-                status.period_ms, status.overruns) + self._scanner_text(status))
+                status.period_ms, status.overruns) + self._scanner_text(status)
+                + self._backend_text(status))
         else:
             self.figures.setText("")
         self._update_actions()

@@ -273,21 +273,25 @@ def test_real_programs_run_the_same_on_the_native_scan(
 EXAMPLES = Path(__file__).resolve().parents[3] / "resources" / "examples"
 
 
-def test_cli_run_and_test_take_the_backend(capsys: pytest.CaptureFixture[str],
-                                           monkeypatch: pytest.MonkeyPatch) -> None:
+def test_cli_run_and_test_take_the_backend_and_say_which_ran(
+        capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
     from ladderworks.cli import main
 
     program = str(EXAMPLES / "timer_relay.LAD")
     scenario = str(EXAMPLES / "timer_relay.scenario.csv")
     outputs = []
-    for backend in ("python", "native"):
+    for backend, name in (("python", "Python"), ("native", "native")):
         assert main(["run", program, "--ms", "3000", "--set", "X0.0=1", "--print", "Y0.0,R0",
                      "--backend", backend]) == 0
         assert main(["test", program, scenario, "--backend", backend]) == 0
         captured = capsys.readouterr()
         outputs.append(captured.out.splitlines()[0])
-        assert captured.err == ""
+        assert captured.err.splitlines() == [f"ladderworks-cli: the {name} scan runs",
+                                             f"ladderworks-cli: {program}: the {name} scan runs"]
     assert outputs[0] == outputs[1]
+    assert main(["run", program, "--ms", "100"]) == 0  # no --backend: nothing said
+    assert main(["test", program, scenario]) == 0
+    assert capsys.readouterr().err == ""
     monkeypatch.setattr(engine_module, "native_unavailable", lambda: "llvmlite is not here")
     assert main(["run", program, "--backend", "native"]) == 0
     assert main(["test", program, scenario, "--backend", "native"]) == 0
@@ -421,3 +425,20 @@ def test_an_unknown_sub_is_the_cnc_stub_natively() -> None:
     assert engines[1]._current.callbacks == []
     driver = Driver(engines, random.Random(4), bytes_of(Area.X, 1), [], [])
     driver.run(200, rate=0.5, longest=3)
+
+
+def test_a_skip_writes_back_only_the_timers_it_moved_on() -> None:
+    """After a skip the native scan writes the states the skipper moved on into their words
+    (not every block and edge memory): the timers then close at the Python scan's time."""
+    text = "%@3\nRD X0.0\nTMRB 1 4000\nWRT Y0.0\nRD X0.0\nTMRB 2 9000\nWRT Y0.1\n" \
+           "RD X0.1\nDIFU 3\nWRT Y0.2\n%\n"
+    python, native = pair(binary_of(text))
+    for until, inputs in ((1000, 1), (5000, 3), (7000, 1), (12000, 0), (13000, 1)):
+        for engine in (python, native):
+            engine.memory.areas[Area.X][0] = inputs
+            engine.advance(until)
+        assert not native._current.stale  # the moved-on timers only: nothing left to read
+        assert native.call_states() == python._states
+        assert native._ctx.edges == python._ctx.edges
+        assert native.memory.areas == python.memory.areas, until
+    assert native.skipped > 1000  # the timers ran on through skips

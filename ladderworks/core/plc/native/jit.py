@@ -22,6 +22,10 @@ from ladderworks.core.plc.native.generator import NativeProgram, generate_ir
 # passes (SROA for the dispatch loops' slots, CFG simplification): instcombine alone took 5 s.
 CODEGEN_LEVEL = 0
 PASSES = ("sroa", "simplify_cfg")
+# the passes run on the units' functions (U<n>: the dispatch loops' slots) only: on the chunk
+# functions they took 0.1-0.3 s of X22's cold compile and left the scan as fast (23 against
+# 24 µs, one run); True runs them on every function (benchmarks/native_compile.py, "before")
+CHUNK_PASSES = False
 CACHED = 8  # compiled variants kept in memory
 _lock = threading.Lock()
 _cache: OrderedDict[tuple[str, bool, frozenset[int]], Compiled] = OrderedDict()
@@ -80,7 +84,7 @@ def compile_ir(text: str, keep: list[bytes] | None = None) -> tuple[Any, int, fl
     for name in PASSES:
         getattr(passes, f"add_{name}_pass")()
     for function in module.functions:
-        if not function.is_declaration:
+        if not function.is_declaration and (CHUNK_PASSES or function.name.startswith("U")):
             passes.run(function, builder)
     engine = llvm.create_mcjit_compiler(module, machine)
     if keep is not None:

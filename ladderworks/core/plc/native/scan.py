@@ -62,6 +62,7 @@ class NativeScan:
         self._labels = program.labels
         self._edge_keys = list(enumerate(program.edges, program.layout.edge_base))
         self._blocks = [(self.states[site], base) for site, base in program.blocks]
+        self._block_of: dict[int, int] | None = None  # a block's base by id() of its dict
         self._dirty = program.layout.dirty
         words = self._words
         self._now, self._scan_ms, self._wake = (ctypes.c_int64.from_buffer(words, 4 * word)
@@ -164,11 +165,23 @@ class NativeScan:
         previous.sync()
         self.states_changed()
 
-    def states_changed(self) -> None:
+    def states_changed(self, moved: list[dict[str, Any]] | None = None) -> None:
         """The call sites' states or edge memories were changed outside a scan (what the
-        scans changed since the last `sync` is dropped: the dicts now say)."""
-        self.stale = True
+        scans changed since the last `sync` is dropped: the dicts now say). `moved`: only
+        these call sites' states changed, right after a `sync` (the skipper moved their
+        timers on): their blocks are written now, rather than every block and edge memory
+        before the next scan."""
         self._unsynced = False
+        if moved is None:
+            self.stale = True
+            return
+        if self._block_of is None:
+            self._block_of = {id(state): base for state, base in self._blocks}
+        words, block_of = self._words, self._block_of
+        for state in moved:
+            base = block_of.get(id(state))
+            if base is not None:  # else a call-back's state: read from its dict
+                state_block.push(words, base, state)
 
     def sync(self) -> None:
         """Write the call sites' states and the edge memories the scans changed since the last
