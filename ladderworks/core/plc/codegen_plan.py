@@ -30,11 +30,13 @@ class JumpToMain(Exception):
         self.label = label
 
 
-def chunk_plan(ops: tuple[Op, ...], unit: Unit) -> tuple[set[int], dict[int, int]]:
+def chunk_plan(ops: tuple[Op, ...], unit: Unit, most: int = CHUNK_OPS,
+               network_at: int = CHUNK_OPS * 3 // 4) -> tuple[set[int], dict[int, int]]:
     """Where a unit's chunks start (op indices), and the chunk each of its labels starts.
 
-    A chunk ends after CHUNK_OPS ops (at a network start if one comes in the last quarter);
-    in a unit with labels every LBL starts a chunk (the dispatch loop's jump targets).
+    A chunk ends after `most` ops (at a network start once it has `network_at`: by default
+    in the last quarter); in a unit with labels every LBL starts a chunk (the dispatch loop's
+    jump targets). The native scan plans its chunks here too, with its own sizes.
     """
     starts = {unit.start}
     chunk_of_label: dict[int, int] = {}
@@ -43,8 +45,8 @@ def chunk_plan(ops: tuple[Op, ...], unit: Unit) -> tuple[set[int], dict[int, int
     for index in range(unit.start, unit.end):
         network_start = index == unit.start or \
             ops[index].source.network != ops[index - 1].source.network
-        if index != unit.start and (index in by_index or size >= CHUNK_OPS or (
-                network_start and size >= CHUNK_OPS * 3 // 4)):
+        if index != unit.start and (index in by_index or size >= most or (
+                network_start and size >= network_at)):
             starts.add(index)
             size = 0
         if index in by_index:

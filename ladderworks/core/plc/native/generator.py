@@ -20,6 +20,7 @@ from ladderworks.core.compiler.binary import BinaryFormatError, Op
 from ladderworks.core.compiler.checks import MAX_PUSHES, implementation_of
 from ladderworks.core.compiler.structure import Unit, analyse, number_of
 from ladderworks.core.instructions import Combine, Flow, Kind, StackOp, Write
+from ladderworks.core.plc.codegen_plan import chunk_plan as plan_chunks
 from ladderworks.core.plc.codegen_values import Range, count_in_innermost, counted
 from ladderworks.core.plc.functions import FunctionImpl
 from ladderworks.core.plc.native import builtins, layout, state_block, stateful, units
@@ -48,22 +49,9 @@ class NativeProgram:
 
 
 def chunk_plan(ops: tuple[Op, ...], unit: Unit) -> tuple[set[int], dict[int, int]]:
-    """Where a unit's chunks start, and the chunk each of its labels starts."""
-    starts = {unit.start}
-    chunk_of_label: dict[int, int] = {}
-    by_index = {index: label for label, index in unit.labels.items()}
-    size = 0
-    for index in range(unit.start, unit.end):
-        network_start = index == unit.start or \
-            ops[index].source.network != ops[index - 1].source.network
-        if index != unit.start and (index in by_index or size >= MAX_CHUNK_OPS or (
-                network_start and size >= CHUNK_OPS)):
-            starts.add(index)
-            size = 0
-        if index in by_index:
-            chunk_of_label[by_index[index]] = len(starts) - 1
-        size += 1
-    return starts, chunk_of_label
+    """Where a unit's chunks start, and the chunk each of its labels starts (the Python
+    scan's plan with the native sizes)."""
+    return plan_chunks(ops, unit, MAX_CHUNK_OPS, CHUNK_OPS)
 
 
 class _Generator:
