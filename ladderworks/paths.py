@@ -16,7 +16,7 @@ CHECKOUT = Path(__file__).resolve().parent.parent
 PACKAGE_DATA: dict[str, str] = {"resources": "resources", "translations": "translations",
                                 "help": "docs"}
 HELP_PAGES: dict[str, str] = {"en": "instructions.md", "tr": "instructions_tr.md"}
-DIALECT_HELP = ("delta", "fatek")  # docs/instructions_<dialect>.md and its _tr.md
+DIALECT_HELP = ("delta", "fatek", "s7")  # docs/instructions_<dialect>.md and its _tr.md
 
 
 def data_dir(kind: str) -> Path:

@@ -72,6 +72,9 @@ def reference_sections(language: str = "en") -> dict[str, str]:
     return sections
 
 
+LIST_WIDTH = 340  # the widest the list's text gets, in pixels
+
+
 class Entry(NamedTuple):
     """One line of the help's list: the instruction it names ("" for a dialect's contacts and
     coils), the key of its reference entry and its text."""
@@ -147,9 +150,10 @@ class InstructionHelp(Retranslating, QDialog):
             item.setData(KEY_ROLE, entry.key)
             item.setData(SEARCH_ROLE, f"{entry.text} {entry.also}".casefold())
             self.list.addItem(item)
-        # the longest name whole: the list is as wide as its widest entry
+        # as wide as its widest entry, up to LIST_WIDTH: a longer title runs past the edge (its
+        # tooltip shows it whole) so that the entry's text keeps its room on a small screen
         scroll = self.list.verticalScrollBar().sizeHint().width()
-        self.list.setMinimumWidth(self.list.sizeHintForColumn(0) + scroll
+        self.list.setMinimumWidth(min(self.list.sizeHintForColumn(0), LIST_WIDTH) + scroll
                                   + 2 * self.list.frameWidth() + 8)
 
     def showEvent(self, event: QShowEvent) -> None:

@@ -3,6 +3,7 @@ Turkish, reached by F1 on the element, by a function dialog's Help and by the se
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -80,3 +81,22 @@ def test_help_of_a_fatek_function_dialog(qtbot: QtBot) -> None:
     qtbot.mouseClick(help_button, Qt.MouseButton.LeftButton)
     assert dialog.help_window is not None and dialog.help_window.shown_name() == "FBS.ADD"
     assert "FUN 11 (+)" in dialog.help_window.browser.toPlainText()
+
+
+@pytest.mark.parametrize("dialect", paths.DIALECT_HELP)
+def test_a_dialect_page_and_its_turkish_hold_the_same_entries(dialect: str) -> None:
+    docs = Path(__file__).resolve().parents[2] / "docs"
+    anchors = [re.findall(r'<a id="([^"]+)"></a>', (docs / f"instructions_{dialect}{suffix}.md")
+                          .read_text("utf-8")) for suffix in ("", "_tr")]
+    assert anchors[0] == anchors[1]
+    assert len(set(anchors[0])) == len(anchors[0])  # an anchor names one entry
+
+
+def test_s7_entries_use_the_seeds_terms() -> None:
+    turkish = reference_sections("tr")
+    assert turkish["instr-s7-ton"].startswith("## TON — Gecikmeli Kapatan")
+    assert "Darbe Üretme Zamanlayıcısı" in turkish["instr-s7-tp"]
+    assert "Kalıcı İçerikli Gecikmeli Kapatan" in turkish["instr-s7-tonr"]
+    english = reference_sections("en")
+    assert english["instr-s7-eq"] == english["instr-s7-le"]  # one entry, six compares
+    assert "kept, drawn, not simulated" in english["instr-dvp-shown-ld"]

@@ -35,7 +35,8 @@ def test_the_staged_package_holds_every_runtime_data_file(tmp_path: Path) -> Non
     assert missing_from(_listing(package.parent)) == []
     assert "ladderworks/translations/ladderworks_tr.qm" in required_files()
     assert "ladderworks/help/instructions_tr.md" in required_files()
-    for page in ("delta", "delta_tr", "fatek", "fatek_tr"):  # each dialect's help (issue 38)
+    # each dialect's help (issue 38)
+    for page in ("delta", "delta_tr", "fatek", "fatek_tr", "s7", "s7_tr"):
         assert f"ladderworks/help/instructions_{page}.md" in required_files()
     assert not (package / "translations" / "ladderworks_tr.ts").exists()  # only the .qm ships
 
