@@ -108,3 +108,46 @@ def test_high_speed_counters_skip_exactly(monitored: bool) -> None:
     same_when_skipping("LD X10\nDCNT C241 K5\nLD X11\nDCNT C245 K5\nLD X12\nDCNT C247 D0\n"
                        "LD X13\nDCNT C250 K3\nLD X14\nDCNT C252 K4\nLD X15\nDCNT C255 K-2\n"
                        "LD C247\nOUT Y0\nLD C252\nOUT Y1\nEND\n", 800, monitored)
+
+
+# each counter's inputs as docs/dialects.md lists them: (kind, U/D or U or A, D or B, R, S)
+INPUTS = {
+    241: ("1", "X0", None, "X1", None), 242: ("1", "X2", None, "X3", None),
+    243: ("1", "X3", None, "X4", None), 244: ("1", "X0", None, "X1", "X6"),
+    245: ("1", "X2", None, "X3", "X7"),
+    246: ("2", "X0", "X1", None, None), 247: ("2", "X0", "X1", "X2", None),
+    248: ("2", "X3", "X4", "X5", None), 249: ("2", "X0", "X1", "X2", "X6"),
+    250: ("2", "X3", "X4", "X5", "X7"),
+    251: ("AB", "X0", "X1", None, None), 252: ("AB", "X0", "X1", "X2", None),
+    253: ("AB", "X3", "X4", "X5", None), 254: ("AB", "X0", "X1", "X2", "X6"),
+    255: ("AB", "X3", "X4", "X5", "X7"),
+}
+
+
+@pytest.mark.parametrize("number", sorted(INPUTS))
+def test_each_counter_counts_its_own_inputs(number: int) -> None:
+    kind, first, second, reset, start = INPUTS[number]
+    plc = engine(f"LD M1000\nDCNT C{number} K3\nLD C{number}\nOUT Y0\nEND\n")
+    if start is not None:
+        _feed(plc, _pulses(first, 2))
+        assert get(plc, f"C{number}") == 0  # not started
+        put(plc, start, 1)
+    others = [f"X{k}" for k in range(8) if f"X{k}" not in (first, second, reset, start)]
+    _feed(plc, [step for name in others for step in _pulses(name, 1)])  # not its inputs
+    up = _pulses(first, 3) if kind != "AB" else \
+        [{first: 1}, {second: 1}, {first: 0}, {second: 0}] * 3
+    _feed(plc, up)
+    assert (get(plc, f"C{number}"), get(plc, "Y0")) == (3, 1)
+    if kind == "1":
+        put(plc, f"M{number + 1000}", 1)
+        _feed(plc, _pulses(first, 1))
+    elif kind == "2":
+        _feed(plc, _pulses(second, 1))
+    else:
+        _feed(plc, [{second: 1}, {first: 1}, {second: 0}, {first: 0}])
+    assert (get(plc, f"C{number}"), get(plc, "Y0")) == (2, 0)
+    if kind != "1":
+        assert get(plc, f"M{number + 1000}") == 1  # counted down last
+    if reset is not None:
+        _feed(plc, [{reset: 1}])
+        assert get(plc, f"C{number}") == 0
