@@ -217,3 +217,19 @@ def test_a_value_typed_into_the_cell(qtbot: QtBot, window: MainWindow) -> None:
     qtbot.waitUntil(lambda: table.state() != QAbstractItemView.State.EditingState)
     assert session.run.read(parse_target("R1", "fatek")[0], 2) == 0xFF00
     assert _row(tables, REGISTERS, "R1")[1:] == ["-256", "FF00"]
+
+
+def test_delta_from_lists_its_module_register_to_type_into(qtbot: QtBot, window: MainWindow,
+                                                           tmp_path: Path) -> None:
+    """Issue 36: FROM's CR is shown without INSERT; a value typed there is what FROM reads."""
+    program = tmp_path / "analog.txt"
+    program.write_text("LD M1000\nFROM K0 K12 D200 K1\nEND\n", encoding="utf-8")
+    session, tables = _run(qtbot, window, str(program))
+    session.run_scans(1)
+    assert [row[0] for row in tables.cell_texts(REGISTERS)] == ["D200", "CR12"]  # module 0, CR#12
+    row = [row[0] for row in tables.cell_texts(REGISTERS)].index("CR12")
+    assert tables.edit_cell(REGISTERS, row, 1, "1234") is None
+    assert session.run.read(parse_target("CR12", "delta")[0], 2) == 1234
+    session.run_scans(1)
+    assert session.run.read(parse_target("D200", "delta")[0], 2) == 1234
+    assert _row(tables, REGISTERS, "D200")[1] == "1234"

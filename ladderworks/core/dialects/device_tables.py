@@ -39,6 +39,16 @@ class Use:
 
 
 @dataclass(frozen=True, slots=True)
+class ModuleUse:
+    """Where a row reading or writing a special module's registers (Delta FROM/TO) keeps them."""
+
+    module: int  # the parameter holding the module's number (a constant)
+    first: int  # the parameter holding its first register's number
+    count: int  # the parameter holding how many it moves
+    words: int = 1  # registers a count moves (2: DFROM/DTO's pairs)
+
+
+@dataclass(frozen=True, slots=True)
 class DeviceTables:
     """A dialect's tables: data in `core/dialects/<d>/`."""
 
@@ -51,6 +61,11 @@ class DeviceTables:
     constant: str = "{0}"  # how a constant preset is written ("K{0}" for Delta)
     # timer number -> (the relay that switches its base, ms a count while it is on)
     switched_bases: Mapping[int, tuple[str, int]] = field(default_factory=dict)
+    # row name -> where its module registers are; they are listed as `module_letter`
+    # (module m's register n: number m * module_size + n) in the registers tab
+    modules: Mapping[str, ModuleUse] = field(default_factory=dict)
+    module_letter: str = ""
+    module_size: int = 0
 
 
 @dataclass(frozen=True, slots=True)
@@ -119,12 +134,35 @@ def program_devices(tables: DeviceTables, devices: DeviceMap, ops: object) -> Pr
             found[number] = (params[where.preset], width if isinstance(width, int) else 2)
             if where.up_down and found is used.counters:
                 used.up_down.add(number)
+        module = tables.modules.get(name)
+        if module is not None:
+            used.registers.update(_module_registers(tables, devices, module, params))
         for where in (op.operand, *params):
             if isinstance(where, Address) and where.bit is None:
                 device = devices.device_of(where)
                 if device is not None and device[0].letter in tables.registers:
                     used.registers.add((device[0].letter, device[1]))
     return used
+
+
+def _constant(param: object) -> int | None:
+    return param if isinstance(param, int) and not isinstance(param, bool) else None
+
+
+def _module_registers(tables: DeviceTables, devices: DeviceMap, use: ModuleUse,
+                      params: tuple) -> set[tuple[str, int]]:
+    """The module registers a FROM/TO row's constants name (a register operand: none known)."""
+    if len(params) <= max(use.module, use.first, use.count):
+        return set()
+    module, first, count = (_constant(params[k]) for k in (use.module, use.first, use.count))
+    if module is None or first is None or count is None or tables.module_size <= 0:
+        return set()
+    found = set()
+    for number in range(max(first, 0), min(first + count * use.words, tables.module_size)):
+        place = module * tables.module_size + number
+        if _device(devices, tables.module_letter, place) is not None:
+            found.add((tables.module_letter, place))
+    return found
 
 
 def _read(areas: Areas, address: Address, width: int) -> int:

@@ -134,3 +134,16 @@ def test_bad_ranges_say_why(dialect: str, table: Table, text: str, code: str) ->
     with pytest.raises(AddressError) as caught:
         device_range(table, found.device_tables(), found.devices, text)
     assert caught.value.diagnostics[0].code == code
+
+
+def test_delta_module_registers_of_from_and_to_are_listed() -> None:
+    plc = _engine("LD M1000\nFROM K0 K12 D200 K1\nDTO K1 K4 D0 K2\nFROMP K2 D5 D300 K3\n"
+                  "TO K7 K98 K5 K4\nEND\n", "delta")
+    put(plc, "CR12", 1234)
+    plc.scan()
+    rows = _rows(plc, "delta", Table.REGISTERS)
+    # DTO K1 K4 .. K2: module 1's CR#4-CR#7; FROMP's first register is a D (not known before
+    # the run): none; TO K7 K98 .. K4: CR#98, CR#99 (a module has no place past #99)
+    assert [row[0] for row in rows] == ["D0", "D5", "D200", "D300", "CR12", "CR104", "CR105",
+                                        "CR106", "CR107", "CR798", "CR799"]
+    assert [row[3] for row in rows if row[0] in ("D200", "CR12")] == [1234, 1234]

@@ -4,8 +4,8 @@ counter, where their presets are, and the timer bases (seed 001 for the DVP-14SS
 from __future__ import annotations
 
 from ladderworks.core.address import Area
-from ladderworks.core.dialects.delta import M1028
-from ladderworks.core.dialects.device_tables import Areas, DeviceTables, Use
+from ladderworks.core.dialects.delta import CR, M1028, MODULE_REGISTERS
+from ladderworks.core.dialects.device_tables import Areas, DeviceTables, ModuleUse, Use
 
 FAST_FIRST, FAST_LAST = 64, 126  # 10 ms while M1028 is on
 MS_TIMER = 127  # 1 ms
@@ -28,4 +28,9 @@ TABLES = DeviceTables(
     timers={"DVP.TMR": Use(0, 1)},
     counters={"DVP.CNT": Use(0, 1), "DVP.DCNT": Use(0, 1, up_down=True)},
     timer_base=base_now, registers=("D", "CR"), constant="K{0}",
-    switched_bases={n: ("M1028", 10) for n in range(FAST_FIRST, FAST_LAST + 1)})
+    switched_bases={n: ("M1028", 10) for n in range(FAST_FIRST, FAST_LAST + 1)},
+    # FROM/TO m1 m2 D n: module m1's CR#m2 .. (n words; the D forms n pairs), listed as CR
+    modules={**{f"DVP.{name}": ModuleUse(0, 1, 3) for name in ("FROM", "FROMP", "TO", "TOP")},
+             **{f"DVP.{name}": ModuleUse(0, 1, 3, 2)
+                for name in ("DFROM", "DFROMP", "DTO", "DTOP")}},
+    module_letter=CR.letter, module_size=MODULE_REGISTERS)

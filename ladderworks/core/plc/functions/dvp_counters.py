@@ -1,8 +1,9 @@
 """Delta DVP counters: CNT (16-bit, C0-C199), DCNT (32-bit up/down, C200-C255), and RST of a
 timer, counter or data register.
 
-High-speed counters C235-C240 (DCNT's input enables them) count the off->on changes of X0-X5
-(C235: X0 ...) seen by the scan, up or down by M1235-M1240; the preset is 32-bit (a D pair).
+High-speed counters C235-C255 (DCNT's input enables them) count the off->on changes of their X
+inputs seen by the scan (dvp_high_speed: one input, up/down inputs, A/B phases, reset and start
+inputs); the preset is 32-bit (a D pair).
 
 CNT Cn SV: +1 at each off->on of its input (a held input counts once) while value < SV; the
 contact is on while value >= SV (seed 001:474-529). DCNT Cn SV: +1 (M1200+n-200 off) or -1
@@ -13,12 +14,11 @@ docs/dialects.md.
 
 from __future__ import annotations
 
-from ladderworks.core.dialects.delta import DEVICES, M1200, WIDE_COUNTERS, C, X
+from ladderworks.core.dialects.delta import DEVICES, M1200, WIDE_COUNTERS, C
 from ladderworks.core.plc.functions import FunctionContext, function
 from ladderworks.core.plc.functions.delta_words32 import value32
 from ladderworks.core.plc.functions.dvp_data import bit_after, rising, value, wrap
-
-HIGH_SPEED, HIGH_SPEED_LAST = 235, 240  # C235-C240 count X0-X5 (one phase, one input)
+from ladderworks.core.plc.functions.dvp_high_speed import TABLE, step
 
 
 def _number(address: object) -> int:
@@ -50,13 +50,10 @@ def dcnt(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...], params: tu
     memory = ctx.memory
     number = _number(counter)
     current = memory.read(counter, 4, signed=True)
-    if HIGH_SPEED <= number <= HIGH_SPEED_LAST:  # counts its X input while the input is on
-        was = state.get("x", False)
-        state["x"] = now = bool(memory.bit(X.bit_address(number - HIGH_SPEED)))
-        counts = act and now and not was
-    else:
-        counts = rising(state, act)
-    if counts:
+    if number in TABLE:  # counts its X inputs while the input is on
+        current = step(memory, state, number, act, current)
+        memory.write(counter, current, 4)
+    elif rising(state, act):
         down = memory.bit(bit_after(M1200, number - WIDE_COUNTERS))
         current = wrap(current + (-1 if down else 1), 4)
         memory.write(counter, current, 4)
