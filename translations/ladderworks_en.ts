@@ -1933,22 +1933,22 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="98"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="101"/>
         <source>Contacts, coils and blocks</source>
         <translation>Contacts, coils and blocks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="202"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="206"/>
         <source>No reference entry for this instruction.</source>
         <translation>No reference entry for this instruction.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="214"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="218"/>
         <source>Instruction reference</source>
         <translation>Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="215"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="219"/>
         <source>Search, e.g. TMR</source>
         <translation>Search, e.g. TMR</translation>
     </message>

@@ -1933,22 +1933,22 @@
 <context>
     <name>InstructionHelp</name>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="98"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="101"/>
         <source>Contacts, coils and blocks</source>
         <translation>Kontaklar, bobinler ve bloklar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="202"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="206"/>
         <source>No reference entry for this instruction.</source>
         <translation>Bu komut için başvuru kaydı yok.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="214"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="218"/>
         <source>Instruction reference</source>
         <translation>Komut başvurusu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/help_browser.py" line="215"/>
+        <location filename="../ladderworks/gui/help_browser.py" line="219"/>
         <source>Search, e.g. TMR</source>
         <translation>Ara, örn. TMR</translation>
     </message>
@@ -2636,12 +2636,12 @@
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="128"/>
         <source>Dialect&apos;s map</source>
-        <translation>Lehçenin haritası</translation>
+        <translation>PLC ailesinin haritası</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="129"/>
         <source>Serve the program&apos;s dialect&apos;s own map (docs/modbus.md)</source>
-        <translation>Programın lehçesinin kendi haritasını sun (docs/modbus.md)</translation>
+        <translation>Programın PLC ailesinin kendi haritasını sun (docs/modbus.md)</translation>
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/modbus.py" line="131"/>
