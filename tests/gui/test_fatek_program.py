@@ -6,12 +6,12 @@ from __future__ import annotations
 from pathlib import Path
 
 from PySide6.QtCore import Qt
-from PySide6.QtGui import QAction
+from PySide6.QtGui import QAction, QImage, QPainter
 from PySide6.QtWidgets import QMenu
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.dialects.fatek import DEVICES
-from ladderworks.core.ladder.model import Coil, Contact
+from ladderworks.core.ladder.model import Coil, Contact, FunctionBox
 from ladderworks.gui.main_window import MainWindow
 from ladderworks.gui.translation import UiLanguage
 from tests.core.dialects.fatek.test_ascii_format import REPORT
@@ -81,3 +81,26 @@ def test_the_console_draws_a_fatek_program_in_fatek_spelling(window: MainWindow)
     assert first.label_lines(contact)[0] == "X0"  # Fatek's spelling, not X0.0
     coil = next(cell for cell in networks[0].cells.values() if isinstance(cell, Coil))
     assert first.label_lines(coil)[0] == "Y0"
+
+
+def test_a_box_draws_its_fo_pins_with_their_coils_in_one_network(window: MainWindow,
+                                                                  tmp_path: Path) -> None:
+    """CMP's FO0, FO1, FO2 as the box's own output pins, each with its coil, as WinProladder
+    draws them: one network, painted; saved unchanged byte for byte."""
+    path = tmp_path / "cmp.lst"
+    data = b"ORG X0\nFUN 17 CMP\n Sa: R0\n Sb: R1\nFO 0\nOUT Y0\nFO 1\nOUT Y1\nFO 2\nOUT Y2\n"
+    path.write_bytes(data)
+    assert window.load(path)
+    networks = [n for n in window.model.networks if not n.is_empty()]
+    assert len(networks) == 1
+    box = networks[0].cells[(0, 8)]
+    assert isinstance(box, FunctionBox) and [o for o, _ in box.outputs] == [1, 2]
+    window.editor.make_visible_items()
+    items = [item for _index, item in window.editor.network_items.made()]
+    assert items
+    image = QImage(800, 400, QImage.Format.Format_ARGB32)
+    painter = QPainter(image)
+    items[0].scene().render(painter)
+    painter.end()
+    assert window.save()
+    assert path.read_bytes() == data

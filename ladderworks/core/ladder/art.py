@@ -50,6 +50,7 @@ def _box_rows(box: FunctionBox, spell: Spelling) -> list[tuple[str, str]]:
     words = " ".join(spell.params(box.spec, box.params)).split()
     rows: list[tuple[str, str]] = []
     pin_names = {p: name for p, name in zip(box.pins, box.inputs, strict=False)}
+    outputs = {offset: box.output_label(contact) for offset, contact in box.outputs}
     for i in range(box.height):
         pin = pin_names.get(i, "")
         if i == 0:
@@ -60,7 +61,7 @@ def _box_rows(box: FunctionBox, spell: Spelling) -> list[tuple[str, str]]:
         param = words[i] if i < len(words) else ""
         if i == box.height - 1 and len(words) > box.height:
             param = " ".join(words[i:])
-        out = "W1" if i == 0 and box.has_output else ""
+        out = "W1" if i == 0 and box.has_output else outputs.get(i, "")
         body = (pin.ljust(7) + param).ljust(inner - len(out))[:inner - len(out)] + out
         rows.append((label, "|" + body + "|"))
     return rows

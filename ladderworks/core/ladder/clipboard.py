@@ -67,6 +67,9 @@ def _element_record(element: Element) -> dict[str, Any]:
             "kind": "box", "name": element.name,
             "params": [p if isinstance(p, int) else str(p) for p in element.params],
             "pins": list(element.pins), "height": element.height}
+        if element.outputs:  # its further output pins (Fatek's FO1 …): row and contact
+            record["outputs"] = [[offset, _element_record(contact)]
+                                 for offset, contact in element.outputs]
     else:
         record = {"kind": "contact" if isinstance(element, Contact) else "coil",
                   "address": str(element.address) if element.address else None,
@@ -121,7 +124,13 @@ def _element_from(record: dict[str, Any]) -> Element:
         if (len(pins) != len(default.pins) or any(p >= height for p in pins)
                 or not 1 <= height <= MAX_ROWS):  # a damaged draft must not fill the memory
             raise ValueError("pins")
-        return FunctionBox(default.name, params, comment, lead, pins, height)
+        outputs: list[tuple[int, Contact]] = []
+        for offset, item in record.get("outputs", []):
+            contact = _element_from(dict(item))
+            if not isinstance(contact, Contact) or not 0 < int(offset) < height:
+                raise ValueError("outputs")
+            outputs.append((int(offset), contact))
+        return FunctionBox(default.name, params, comment, lead, pins, height, tuple(outputs))
     if kind in ("contact", "coil"):
         text = record.get("address")
         address = parse_address(str(text), want_bit=True) if text else None

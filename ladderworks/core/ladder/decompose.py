@@ -216,18 +216,21 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
         targets = [nets.net((br + p, bc)) for p in box.pins]
         if box.has_output and bc + box.width <= network.columns:
             output = nets.net((br, bc + box.width))
+        pin_nets = [nets.net((br + offset, bc + box.width)) for offset, _ in box.outputs]
+        if len({output, *pin_nets}) < len(pin_nets) + 1:
+            report("coil-branch", box_anchor)  # two output pins joined
         for cell, _, net in coils:
-            if output is None:
+            if output is None and net not in pin_nets:
                 report("box-output", cell, name=box.name)
-            elif net != output:
+            elif net != output and net not in pin_nets:
                 report("coil-branch", cell)
         for i, target in enumerate(targets):
             if target == left:
                 report("short-circuit", (br + box.pins[i], bc))
             if target in targets[:i]:
                 report("short-circuit", (br + box.pins[i], bc))
-        if output is not None:
-            after = _reach({output}, edges, True)
+        if output is not None or pin_nets:
+            after = _reach({n for n in (output, *pin_nets) if n is not None}, edges, True)
             for e in edges:
                 if e.src in after:
                     report("box-output", e.cell, name=box.name)
@@ -290,8 +293,16 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
             report("bridge", result.cell)
             return None, diags
         blocks.append(result)
-    rung = Rung(box=box, inputs=blocks, coils=[coil for _, coil, _ in coils],
-                box_cell=box_anchor, coil_cells=[cell for cell, _, _ in coils])
+    pin_nets = [nets.net((box_anchor[0] + offset, box_anchor[1] + box.width))
+                for offset, _ in box.outputs]
+    own = [item for item in coils if item[2] not in pin_nets]
+    pins = [(contact, [item for item in coils if item[2] == net])
+            for (_, contact), net in zip(box.outputs, pin_nets, strict=True)]
+    rung = Rung(box=box, inputs=blocks, coils=[coil for _, coil, _ in own],
+                pins=[(contact, [coil for _, coil, _ in items]) for contact, items in pins],
+                box_cell=box_anchor,
+                coil_cells=[cell for cell, _, _ in own]
+                + [cell for _, items in pins for cell, _, _ in items])
     _check_depth(rung, report)
     if has_errors(diags):
         return None, diags

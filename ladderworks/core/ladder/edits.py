@@ -229,7 +229,10 @@ def _insert_row(work: LadderNetwork, at: int) -> None:
             cells[(r + 1, c)] = element
         elif isinstance(element, FunctionBox) and r + element.height > at:
             pins = tuple(p + 1 if r + p >= at else p for p in element.pins)
-            cells[(r, c)] = replace(element, pins=pins, height=element.height + 1)
+            outputs = tuple((p + 1 if r + p >= at else p, contact)
+                            for p, contact in element.outputs)
+            cells[(r, c)] = replace(element, pins=pins, height=element.height + 1,
+                                    outputs=outputs)
         else:
             cells[(r, c)] = element
     links: set[Cell] = set()
@@ -260,10 +263,13 @@ def delete_row(network: LadderNetwork, row: int) -> Edit:
     cells: dict[Cell, Element] = {}
     for (r, c), element in work.cells.items():
         if isinstance(element, FunctionBox) and r <= row < r + element.height:
-            if element.height == 1 or any(r + p == row for p in element.pins):
+            if element.height == 1 or any(r + p == row for p in element.pins) \
+                    or any(r + p == row for p, _ in element.outputs):
                 continue  # the box loses a pin row: it goes
             pins = tuple(p - 1 if r + p > row else p for p in element.pins)
-            element = replace(element, pins=pins, height=element.height - 1)
+            outputs = tuple((p - 1 if r + p > row else p, contact)
+                            for p, contact in element.outputs)
+            element = replace(element, pins=pins, height=element.height - 1, outputs=outputs)
             cells[(r - 1 if r > row else r, c)] = element
         elif r == row:
             continue

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.ladder.logic import (
     Branch,
@@ -96,7 +98,27 @@ def draw_rung(rung: Rung, columns: int = DEFAULT_COLUMNS) -> LadderNetwork:
     else:
         return _draw_chain(rung, columns)
     _draw_coils(net, 0, rung.coils)
+    if rung.pins:
+        _draw_pins(net, rung, box_col)
     return net
+
+
+def _draw_pins(net: LadderNetwork, rung: Rung, box_col: int) -> None:
+    """A box's further output pins on the rows below its W1 coils, each pin's coils on its
+    row and below it; the box grows to reach the last pin."""
+    row = max(1, len(rung.coils))
+    outputs = []
+    for contact, coils in rung.pins:
+        outputs.append((row, contact))
+        for c in range(box_col + BOX_WIDTH, net.columns):
+            net.cells[(row, c)] = WIRE
+        _draw_coils(net, row, coils)
+        row += max(1, len(coils))
+    box = net.cells[(0, box_col)]
+    assert isinstance(box, FunctionBox)
+    net.cells[(0, box_col)] = replace(box, outputs=tuple(outputs),
+                                      height=max(box.height, outputs[-1][0] + 1))
+    net.rows = max(net.rows, row)
 
 
 def _draw_coils(net: LadderNetwork, row: int, coils: list[Output]) -> None:

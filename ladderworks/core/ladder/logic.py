@@ -85,6 +85,9 @@ class Rung:
     # (None: its coils hang on the branch point), coils and branches of its own (a nested MPS
     # after its block: then it has no coils), first to last (at least two)
     branches: list[Branch] = field(default_factory=list)
+    # a box's further output pins (Fatek's FO1, FO2 …): the contact reading each (`RD FO.1`)
+    # and its outputs, written after the box's W1 coils
+    pins: list[tuple[Contact, list[Output]]] = field(default_factory=list)
     box_cell: Cell | None = field(default=None, compare=False)
     coil_cells: list[Cell] = field(default_factory=list, compare=False)
 
@@ -218,6 +221,10 @@ def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
     elif rung.logic is not None:
         out.extend(code_logic(rung.logic, False, cells))
     write(rung.coils)
+    for contact, coils in rung.pins:
+        out.append(_contact_instruction(contact, Combine.READ, False))
+        cells.append(rung.box_cell)
+        write(coils)
 
     def branches(each: list[Branch]) -> None:
         for index, (branch, coils, inner) in enumerate(each):
@@ -353,6 +360,13 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             # an output box with more after it: its logic feeds outputs, the box the first
             rung.logic, rung.coils, rung.box, rung.inputs = rung.inputs[0], [rung.box], None, []
             phase = "coils"
+        if rung.box is not None and phase in ("coils", "closed", "pins") \
+                and _reads_output(rung.box, ins):
+            rung.pins.append((Contact(ins.operand, False, ins.comment, ins.lead), []))
+            phase = "pins"
+            continue
+        if phase == "pins" and not spec.is_coil:
+            raise Undrawable(name)  # a box's output pin feeds coils only
         # a dialect's edge or comparison contact
         joins = contact_combine(spec) if spec.kind is Kind.FUNCTION else None
         if spec.kind is Kind.BASIC and spec.stack is StackOp.INVERT:
@@ -361,6 +375,12 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             stack[0] = series(stack[0], Leaf(Contact(None, False, ins.comment, ins.lead, name)))
             continue
         if spec.is_coil or (spec.output and phase != "logic"):
+            if phase == "pins":
+                if ins.operand is None:
+                    raise Undrawable(name)
+                rung.pins[-1][1].append(Coil(ins.operand, spec.negated, ins.comment, ins.lead,
+                                             spec.write, name if spec.dialect else ""))
+                continue
             if phase == "logic":
                 if rung.box is None and len(stack) != 1:
                     raise Undrawable(name)
@@ -429,6 +449,17 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
     if rung.box is not None and not rung.box.spec.w1 and rung.coils:
         raise Undrawable("coils")
     return rung
+
+
+def _reads_output(box: FunctionBox, ins: Instruction) -> bool:
+    """Whether `ins` reads a bit of the box's output byte on its own (`RD FO.1`): a pin."""
+    spec = ins.spec
+    byte = box.output_byte()
+    operand = ins.operand
+    return (byte is not None and operand is not None and operand.bit is not None
+            and spec.kind is Kind.BASIC and spec.combine is Combine.READ and spec.is_contact
+            and not spec.pushes and not spec.negated
+            and (operand.area, operand.byte) == (byte.area, byte.byte))
 
 
 def inverts(logic: Logic) -> bool:

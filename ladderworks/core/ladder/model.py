@@ -17,6 +17,8 @@ MAX_COLUMNS = 32
 MAX_ROWS = 64
 PAGE_ROWS = 16  # rows a console page shows; networks may be taller (they scroll)
 BOX_WIDTH = 2  # a function box is two contact columns wide
+# a box parameter naming the box's output byte (Fatek's FO: FO0 is W1, FO1, FO2 … more pins)
+OUTPUT_BYTE = "fo"
 
 Cell = tuple[int, int]  # (row, column)
 
@@ -62,7 +64,9 @@ class FunctionBox:
 
     It is BOX_WIDTH columns wide and `height` rows high. Control input i (spec order, ACT last)
     enters the box's left edge at row offset `pins[i]`; the W1 output (if the instruction has
-    one) leaves the right edge at the box's top row.
+    one) leaves the right edge at the box's top row. `outputs`: its further output pins (bits
+    of its OUTPUT_BYTE parameter, Fatek's FO1, FO2 …), each the row offset where it leaves the
+    right edge and the contact that reads it in the code (`RD` of that bit).
     """
 
     name: str
@@ -71,6 +75,7 @@ class FunctionBox:
     lead: tuple[str, ...] = ()
     pins: tuple[int, ...] = ()
     height: int = 1
+    outputs: tuple[tuple[int, Contact], ...] = ()
 
     @classmethod
     def new(cls, name: str, params: tuple[ParamValue, ...] = (), comment: str = "",
@@ -101,6 +106,18 @@ class FunctionBox:
     def width(self) -> int:
         """Columns the box covers."""
         return BOX_WIDTH
+
+    def output_byte(self) -> Address | None:
+        """The value of its OUTPUT_BYTE parameter (None when it has none)."""
+        for param, value in zip(self.spec.params, self.params, strict=False):
+            if param.name == OUTPUT_BYTE and isinstance(value, Address):
+                return value
+        return None
+
+    def output_label(self, contact: Contact) -> str:
+        """An output pin's name: the output byte's parameter and the bit (`FO1`)."""
+        bit = contact.address.bit if contact.address is not None else None
+        return f"{OUTPUT_BYTE.upper()}{bit}"
 
 
 Element = Contact | Coil | Wire | FunctionBox

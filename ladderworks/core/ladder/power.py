@@ -28,7 +28,8 @@ class PowerFlow:
 
     Power starts at the left rail and passes a contact only from its left end to its right
     end when the contact is closed; wires and vertical links join nodes. A box's W1 output is
-    not modelled (it depends on the instruction): `output_node_power` is None there."""
+    not modelled (it depends on the instruction): `output_node_power` is None there; its further
+    output pins (Fatek's FO1 …) carry the bit they read."""
 
     def __init__(self, network: LadderNetwork, value: Callable[[Address], bool]) -> None:
         self.network = network
@@ -39,6 +40,10 @@ class PowerFlow:
             if (isinstance(element, Contact) and element.address is not None
                     and value(element.address) != element.negated):
                 edges.append((self._nets.net((r, c)), self._nets.net((r, c + 1))))
+            if isinstance(element, FunctionBox):  # an output pin carries its bit (FO1 …)
+                edges.extend((left, self._nets.net((r + offset, c + element.width)))
+                             for offset, contact in element.outputs
+                             if contact.address is not None and value(contact.address))
         self._powered = powered_nets(left, edges)
 
     def node(self, row: int, node: int) -> bool:

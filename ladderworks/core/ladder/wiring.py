@@ -40,7 +40,9 @@ def _joins_right(network: LadderNetwork, row: int, col: int) -> bool | None:
         return None
     (r, c), element = found
     if isinstance(element, FunctionBox):
-        return r == row and element.has_output and c + element.width - 1 == col
+        return c + element.width - 1 == col and (
+            (r == row and element.has_output)
+            or any(r + offset == row for offset, _ in element.outputs))
     return isinstance(element, Contact | Wire)
 
 

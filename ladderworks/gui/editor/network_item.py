@@ -320,6 +320,11 @@ class NetworkItem(QGraphicsItem):
             painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
             painter.drawText(QRectF(x + width - 40, py - 7, 28, 14),
                              Qt.AlignmentFlag.AlignRight, "W1")
+        for offset, contact in box.outputs:  # its further output pins (Fatek's FO1, FO2 …)
+            py = y + offset * rows.height + rows.wire
+            painter.drawLine(QPointF(x + width - 10, py), QPointF(x + width, py))
+            painter.drawText(QRectF(x + width - 40, py - 7, 28, 14),
+                             Qt.AlignmentFlag.AlignRight, box.output_label(contact))
         painter.setFont(label_font)
         painter.drawText(QRectF(rect.left(), rect.top() + 2, rect.width(), 16),
                          Qt.AlignmentFlag.AlignHCenter,

@@ -30,6 +30,7 @@ from ladderworks.core.dialects.fatek.devices import (
     timer_base_ms,
     word_address,
 )
+from ladderworks.core.dialects.fatek.fo_pins import on_the_box
 from ladderworks.core.dialects.fatek.listing import Record
 from ladderworks.core.dialects.fatek.rows import (
     BY_FUN,
@@ -362,7 +363,9 @@ class ProgramLowering(StackLowering):
         if number == 0 and self.fresh_box:
             self.fresh_box = False
             return  # FO0 is the box's W1, already the result
-        self.new_part()
+        if not on_the_box(self.current.instructions, self.fo,
+                          itertools.islice(self.ahead, self.index + 1, None)):
+            self.new_part()  # drawn on a rung of its own
         self.emit(record, "RD", self.fo.with_bit(number))
         self.depth = 1
         self.after_output = False
