@@ -37,7 +37,7 @@ def _nodes_by_net(network: LadderNetwork, nets: NodeNets) -> dict[int, list[Cell
 def open_ends(network: LadderNetwork) -> list[OpenEnd]:
     """The breaks of a drawn network, one per broken place, in reading order.
 
-    Power comes from the left rail (and from a box's W1 output); it is wanted by coils and by
+    Power comes from the left rail (and from a box's W1 output and output pins); it is wanted by coils and by
     a box's control inputs. A chain of contacts that gets no power is marked once, left of its
     first element; a chain that leads to no coil or box input is marked once, right of its last
     element: on the empty cell there (a gap), or on the element's side when the next cell is
@@ -63,6 +63,9 @@ def open_ends(network: LadderNetwork) -> list[OpenEnd]:
                 wants.add(nets.net((row + pin, col)))
             if element.has_output and col + element.width <= network.columns:
                 sources.add(nets.net((row, col + element.width)))
+            for offset, _reads in element.outputs:  # its further output pins (Fatek's FO1 …)
+                if col + element.width <= network.columns:
+                    sources.add(nets.net((row + offset, col + element.width)))
     fed = set().union(*(powered_nets(source, edges) for source in sources))
     backwards = [(dst, src) for src, dst in edges]
     feeding = set().union(*(powered_nets(sink, backwards) for sink in sinks))

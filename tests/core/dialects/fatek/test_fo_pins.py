@@ -134,3 +134,10 @@ def test_a_pin_carries_its_bit_in_the_power_flow() -> None:
 def test_a_pin_followed_by_logic_stays_a_rung_of_its_own() -> None:
     program = fatek("ORG X0\nFUN 17 CMP\n Sa: R0\n Sb: R1\nFO 1\nAND X3\nOUT Y1\n")
     assert len(program.networks) == 2  # FO 1 AND X3 is logic: drawn on its own as before
+
+
+def test_the_pins_feed_their_coils_no_break_is_marked() -> None:
+    """A pin is a source of power for its coils, as W1 is: no open-circuit mark there."""
+    from ladderworks.core.ladder.open_circuit import open_ends
+
+    assert open_ends(layout_network(fatek(CMP).networks[0].instructions)) == []
