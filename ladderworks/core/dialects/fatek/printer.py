@@ -109,8 +109,8 @@ def instruction_lines(instructions: list[Instruction], index: int, first: bool
     following = instructions[index + 1] if index + 1 < len(instructions) else None
     if spec.kind is Kind.BASIC:
         operand = ins.operand
-        if spec.stack is not StackOp.NONE and ins.params:  # a branch point: OUT TR n, LD TR n
-            return [_line(spec.text_name, str(ins.params[0]))], index + 1
+        if spec.stack is not StackOp.NONE:  # a branch point: OUT TR n, LD TR n
+            return [_line(spec.text_name, str(ins.params[0]) if ins.params else "")], index + 1
         if spec.write is not Write.NONE:
             if spec.dialect:  # Fatek's own coil row: OUT L
                 return [_line(spec.text_name, device_text(operand))], index + 1

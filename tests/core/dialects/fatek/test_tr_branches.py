@@ -5,9 +5,11 @@ Fatek's form, running as the TR relay lowering did (DIALECTS.md §2.5, docs/dial
 from __future__ import annotations
 
 import itertools
+from pathlib import Path
 
 import pytest
 
+from ladderworks.cli import main
 from ladderworks.core.compiler import compile
 from ladderworks.core.dialects.fatek import networks
 from ladderworks.core.dialects.fatek.printer import network_lines
@@ -154,3 +156,16 @@ def test_a_branch_drawn_anew_is_coded_with_a_tr_point() -> None:
 def test_a_tr_point_read_otherwise_stays_a_relay(text: str,
                                                  monkeypatch: pytest.MonkeyPatch) -> None:
     assert fatek(text).networks == _relays(text, monkeypatch).networks
+
+
+def test_the_binary_keeps_the_tr_numbers_and_disasm_prints_them(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    source = tmp_path / "three.lst"
+    source.write_text(THREE + NESTED.replace("X", "X1"))
+    binary = tmp_path / "three.bin"
+    assert main(["compile", str(source), "--dialect", "fatek", "-o", str(binary)]) == 0
+    capsys.readouterr()
+    assert main(["disasm", str(binary)]) == 0
+    lines = [line.split() for line in capsys.readouterr().out.splitlines()]
+    assert [line[-1] for line in lines if line[:2] in (["OUT", "TR"], ["LD", "TR"])] == \
+        ["3", "3", "3", "0", "1", "1", "0"]
