@@ -104,3 +104,30 @@ def test_a_box_draws_its_fo_pins_with_their_coils_in_one_network(window: MainWin
     painter.end()
     assert window.save()
     assert path.read_bytes() == data
+
+
+def test_a_tr_branch_is_one_rung_from_its_branch_point(window: MainWindow,
+                                                       tmp_path: Path) -> None:
+    """`OUT TR 0` … `LD TR 0` as WinProladder draws it: one network, X0 then the branch point,
+    X1 → Y0 above X2 → Y1; painted; saved unchanged byte for byte."""
+    path = tmp_path / "branch.lst"
+    data = b"ORG X0\nOUT TR 0\nAND X1\nOUT Y0\nLD TR 0\nAND X2\nOUT Y1\n"
+    path.write_bytes(data)
+    assert window.load(path)
+    networks = [n for n in window.model.networks if not n.is_empty()]
+    assert len(networks) == 1
+    net = networks[0]
+    assert net.listing is None and net.links == {(0, 1)}
+    texts = {cell: DEVICES.format(e.address) for cell, e in net.cells.items()
+             if isinstance(e, Contact | Coil) and e.address is not None}
+    end = net.columns
+    assert texts == {(0, 0): "X0", (0, 1): "X1", (0, end): "Y0", (1, 1): "X2", (1, end): "Y1"}
+    window.editor.make_visible_items()
+    items = [item for _index, item in window.editor.network_items.made()]
+    assert items
+    image = QImage(800, 400, QImage.Format.Format_ARGB32)
+    painter = QPainter(image)
+    items[0].scene().render(painter)
+    painter.end()
+    assert window.save()
+    assert path.read_bytes() == data

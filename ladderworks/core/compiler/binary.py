@@ -138,7 +138,10 @@ def encode(ops: list[Op] | tuple[Op, ...], dialect: str = "seed") -> bytes:
                 area = AREA_CODES.index(op.operand.area.value)
                 byte = op.operand.byte
                 bit = op.operand.bit or 0
-            records += _OP.pack(spec.opcode, area, bit, byte, 0)
+            # a basic row's one number (Fatek's branch point TR n) in the record's last field
+            number = op.params[0] if spec.params and op.params else 0
+            records += _OP.pack(spec.opcode, area, bit, byte,
+                                number if isinstance(number, int) else 0)
         else:
             assert spec.sub is not None
             records += _OP.pack(spec.opcode, 0, spec.sub, len(op.params), len(params))
@@ -219,7 +222,7 @@ def decode(data: bytes) -> BinaryProgram:
                 if c >= _SIZES[area] or b > 7:
                     raise BinaryFormatError(f"address out of range in {where}")
                 operand = Address(area, c, b)
-            ops.append(Op(basic.name, operand, (), source))
+            ops.append(Op(basic.name, operand, (d,) if basic.params else (), source))
             continue
         if opcode != FUNCTION_OPCODE:
             raise BinaryFormatError(f"unknown opcode {opcode} in {where}")

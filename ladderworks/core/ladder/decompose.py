@@ -276,6 +276,7 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
             branched = (_read_branches(left, targets, useful, coils)
                         if chain is None or branches else None)
             if branched is not None:
+                branched.stack_dialect = dialect
                 _check_depth(branched, report)
                 return (None if has_errors(diags) else branched), diags
         return _read_chain(left, targets, useful, coils, report, diags)
@@ -489,6 +490,7 @@ def network_to_instructions(network: LadderNetwork, index: int | None = None,
             # chain too; the branches are kept (changed or not)
             branched, _ = read_grid(network, index, dialect, branches=True)
             if branched is not None:
+                branched.stack_params = was.stack_params  # its branch points' numbers kept
                 again = code_rung(branched)
                 same = again == original or code_rung(outputs_first(branched)) == original
                 return (list(network.source) if same else again), diags

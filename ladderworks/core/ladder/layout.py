@@ -202,9 +202,18 @@ def layout_network(instructions: list[Instruction] | tuple[Instruction, ...],
         return LadderNetwork(columns, 1, comments=comments, listing=tuple(instructions))
     net.comments = comments
     if code_rung(rung) != list(instructions) or has_bare_branch(rung.branches) \
-            or (rung.coils and rung.branches):
+            or (rung.coils and rung.branches) or _numbered_points(rung, instructions):
         net.source = tuple(instructions)  # a branch on its branch point reads as a chain too
     return net
+
+
+def _numbered_points(rung: Rung, instructions: list[Instruction] | tuple[Instruction, ...]
+                     ) -> bool:
+    """Whether the branch points' numbers (Fatek's TR n) are not those a drawing is coded
+    with afresh (then the coding is kept to write them again)."""
+    if not any(params for _op, params in rung.stack_params):
+        return False
+    return code_rung(replace(rung, stack_params=[])) != list(instructions)
 
 
 def _draw_branches(rung: Rung, columns: int) -> LadderNetwork:

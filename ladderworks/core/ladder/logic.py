@@ -90,6 +90,10 @@ class Rung:
     pins: list[tuple[Contact, list[Output]]] = field(default_factory=list)
     box_cell: Cell | None = field(default=None, compare=False)
     coil_cells: list[Cell] = field(default_factory=list, compare=False)
+    # the dialect whose stack rows code the branches ("" the first there is: Delta's MPS …),
+    # and the parameters of those read, in order (Fatek's TR numbers: kept when coded again)
+    stack_dialect: str = field(default="", compare=False)
+    stack_params: list[tuple[StackOp, tuple]] = field(default_factory=list, compare=False)
 
 
 def has_bare_branch(branches: list[Branch]) -> bool:
@@ -226,13 +230,23 @@ def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
         cells.append(rung.box_cell)
         write(coils)
 
+    kept = [params for op, params in rung.stack_params if op is StackOp.DUP]
+    points = iter(kept if len(kept) == _levels(rung.branches) else [])
+    fresh = iter(range(MAX_POINTS))
+
     def branches(each: list[Branch]) -> None:
+        number = 0
         for index, (branch, coils, inner) in enumerate(each):
             op = StackOp.DUP if index == 0 else (
                 StackOp.DROP if index == len(each) - 1 else StackOp.OVER)
-            row = stack_row(op)
+            row = (rung.stack_dialect and stack_row(op, rung.stack_dialect)) or stack_row(op)
             assert row is not None, op
-            out.append(Instruction(row.name))
+            params: tuple = ()
+            if row.params:  # the branch point's number (Fatek's TR n), the same on each branch
+                if index == 0:
+                    number = next(points, (next(fresh),))[0]
+                params = (number,)
+            out.append(Instruction(row.name, params=params))
             cells.append(None)
             if branch is not None:
                 _continue(branch, out, cells)
@@ -244,6 +258,14 @@ def code_rung(rung: Rung, cells: list[tuple[int, int] | None] | None = None
         _continue(block, out, cells)
         write(coils)
     return out
+
+
+MAX_POINTS = 64  # branch points numbered afresh in one network
+
+
+def _levels(each: list[Branch]) -> int:
+    """How many branch points (MPS, Fatek's OUT TR n) the branches need."""
+    return (1 if each else 0) + sum(_levels(inner) for _block, _coils, inner in each)
 
 
 def _continue(block: Logic, out: list[Instruction], cells: list[Cell | None]) -> None:
@@ -409,6 +431,8 @@ def read_rung(instructions: list[Instruction] | tuple[Instruction, ...]) -> Rung
             continue
         if spec.kind is Kind.BASIC and spec.stack is not StackOp.NONE:
             _branch_op(spec.stack, phase, levels, stack, rung, name)
+            rung.stack_dialect = spec.dialect
+            rung.stack_params.append((spec.stack, tuple(ins.params)))
             phase = "branch"
             stack = [_PREVIOUS]
             continue
@@ -503,4 +527,5 @@ def outputs_first(rung: Rung) -> Rung:
     if rung.coils or len(rung.branches) < 3 or rung.branches[0][0] is not None \
             or rung.branches[0][2]:
         return rung
-    return Rung(logic=rung.logic, coils=list(rung.branches[0][1]), branches=rung.branches[1:])
+    return Rung(logic=rung.logic, coils=list(rung.branches[0][1]), branches=rung.branches[1:],
+                stack_dialect=rung.stack_dialect, stack_params=rung.stack_params)

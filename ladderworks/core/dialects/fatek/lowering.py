@@ -8,6 +8,12 @@ import re
 
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic, Severity
+from ladderworks.core.dialects.fatek.branch_points import (
+    LAST,
+    PUSH,
+    READ,
+    NoBranch,
+)
 from ladderworks.core.dialects.fatek.branches import (
     ALWAYS_OFF,
     ALWAYS_ON,
@@ -18,7 +24,6 @@ from ladderworks.core.dialects.fatek.branches import (
     StackLowering,
     bit_device,
     refused,
-    split_networks,
 )
 from ladderworks.core.dialects.fatek.devices import (
     Device,
@@ -28,10 +33,10 @@ from ladderworks.core.dialects.fatek.devices import (
     parse_constant,
     parse_device,
     timer_base_ms,
-    word_address,
 )
 from ladderworks.core.dialects.fatek.fo_pins import on_the_box
 from ladderworks.core.dialects.fatek.listing import Record
+from ladderworks.core.dialects.fatek.operands import bit_operand, operand
 from ladderworks.core.dialects.fatek.rows import (
     BY_FUN,
     FORMS,
@@ -40,7 +45,7 @@ from ladderworks.core.dialects.fatek.rows import (
     UNKNOWN_FUN,
     operand_label,
 )
-from ladderworks.core.dialects.fatek.tr_inputs import block_start, drop_unread, pushed_copy
+from ladderworks.core.dialects.fatek.tr_inputs import block_start, pushed_copy
 from ladderworks.core.il.program import Instruction, ParamValue
 from ladderworks.core.instructions import InstructionSpec, ParamKind
 
@@ -68,9 +73,14 @@ class ProgramLowering(StackLowering):
         self.saved: dict[int, tuple[Lowered, list[Instruction]]] = {}  # TR n: part, block
         self.copied: dict[Address, int] = {}  # the TR points read as copies of their block
         self.saving = self.just_saved = -1  # the TR point this / the last record set
+        self.branch_points: dict[int, int] = {}  # TR n read as a rung's branch point: its reads
+        self.open_points: list[int] = []  # those pushed and not yet read for the last time
 
     def save_tr(self, record: Record) -> None:
         """OUT TR n, remembering the block it saved (copied where it is read as an input)."""
+        if number_ok(record) and int(record.operand[2:]) in self.branch_points:
+            self.push_point(record)
+            return
         super().save_tr(record)
         self.saving = self.tr_number(record)
         instructions = self.current.instructions[:-1]
@@ -84,6 +94,9 @@ class ProgramLowering(StackLowering):
         """LD TR n: the saved block copied when it is pushed as one more value (a box's input,
         or a block ANDLD / ORLD joins), else the point read."""
         number = self.tr_number(record) if number_ok(record) else -1
+        if number in self.branch_points:
+            self.next_branch(record, number)
+            return
         if number == self.just_saved and self.depth == 1:
             # `OUT TR n` then `LD TR n` (WinProladder never prints an empty branch): the rung
             # goes on from the point, as the lowering of a box's kept EN writes it
@@ -100,6 +113,30 @@ class ProgramLowering(StackLowering):
         self.current.records.extend([record] * len(saved[1]))
         self.copied[bit_address(Device("TR", number))] = number
         self.depth += 1
+        self.after_output = False
+
+    def push_point(self, record: Record) -> None:
+        """`OUT TR n` of a branch point: the result kept on the stack (branch_points.py)."""
+        number = self.tr_number(record)
+        if number in self.tr_points:
+            raise refused(record, "fatek-tr-reused", number=number)
+        if self.depth != 1:
+            raise NoBranch
+        self.tr_points.add(number)
+        self.open_points.append(number)
+        self.emit_box(record, ROW_OF_NAME[PUSH], (number,))
+
+    def next_branch(self, record: Record, number: int) -> None:
+        """`LD TR n` after a branch's outputs: the next branch from the point (its last read:
+        the last branch, the point taken off the stack)."""
+        if not self.after_output or self.depth != 1 or not self.open_points \
+                or self.open_points[-1] != number:
+            raise NoBranch
+        self.branch_points[number] -= 1
+        last = self.branch_points[number] == 0
+        if last:
+            self.open_points.pop()
+        self.emit_box(record, ROW_OF_NAME[LAST if last else READ], (number,))
         self.after_output = False
 
     def box_input_next(self) -> bool:
@@ -123,7 +160,8 @@ class ProgramLowering(StackLowering):
         """Bring the stack to the box's `count` control inputs: none before it is a box on the
         rail (EN always 1); an input not coded is 0 (docs/dialects.md)."""
         if self.depth > count:
-            raise refused(record, "fatek-open-block", name=_name(record), count=self.depth - count)
+            raise refused(record, "fatek-open-block", name=name_of(record),
+                          count=self.depth - count)
         if count and not self.depth:
             self.emit(record, "RD", ALWAYS_ON)
             self.depth = 1
@@ -199,7 +237,7 @@ class ProgramLowering(StackLowering):
             elif param.name == "MD":
                 line = next(operands, None)
                 if line is None:
-                    raise refused(record, "fatek-missing-operand", name=_name(record),
+                    raise refused(record, "fatek-missing-operand", name=name_of(record),
                                 param=param.name)
                 value = parse_constant(line.text)
                 if value is None or not 0 <= value <= 255:
@@ -211,7 +249,7 @@ class ProgramLowering(StackLowering):
                 label = operand_label(param.name)  # Fatek's D, PV
                 line = next(operands, None)
                 if line is None:
-                    raise refused(record, "fatek-missing-operand", name=_name(record),
+                    raise refused(record, "fatek-missing-operand", name=name_of(record),
                                   param=label)
                 params.append(bit_operand(line.text, line.line, label, line.column)
                               if param.kind is ParamKind.BIT else
@@ -220,13 +258,13 @@ class ProgramLowering(StackLowering):
         extra = next(operands, None)
         if extra is not None:
             raise BranchError(Diagnostic("fatek-extra-operand", {"text": extra.text,
-                                                                 "name": _name(record)},
+                                                                 "name": name_of(record)},
                                          extra.line, extra.column))
         return tuple(params)
 
     def not_simulated(self, record: Record) -> None:
         """The warning that the record's function is kept but not simulated."""
-        self.warnings.append(Diagnostic("fatek-not-simulated", {"name": _name(record)},
+        self.warnings.append(Diagnostic("fatek-not-simulated", {"name": name_of(record)},
                                         record.line, record.column, Severity.WARNING))
 
     def function(self, record: Record) -> None:
@@ -440,62 +478,8 @@ def kept_text(record: Record) -> str:
     return lines
 
 
-def _name(record: Record) -> str:
+def name_of(record: Record) -> str:
+    """A record's name for a message: `FUN 11 (+)`, `TMR`."""
     if record.fun is not None:
         return f"FUN {record.fun} {record.fun_name}".strip()
     return record.mnemonic
-
-
-def operand(text: str, line: int, param: str, constant: bool, column: int = 1) -> ParamValue:
-    """A box operand: a constant (where one may be) or a register's byte address."""
-    value = parse_constant(text)
-    if value is not None:
-        if not constant:
-            raise BranchError(Diagnostic("fatek-operand", {"text": text, "param": param}, line,
-                                         column))
-        return value
-    try:
-        device = parse_device(text, bit=False)
-    except DeviceError:
-        raise BranchError(Diagnostic("fatek-operand", {"text": text, "param": param},
-                                     line, column)) from None
-    return word_address(device)[0]
-
-
-def bit_operand(text: str, line: int, param: str, column: int = 1) -> Address:
-    """A box's bit operand (FUN 10 TOGG's D: `Y0`, `M5`): its bit address."""
-    try:
-        return bit_address(parse_device(text, bit=True))
-    except DeviceError:
-        raise BranchError(Diagnostic("fatek-bit-operand", {"text": text, "param": param},
-                                     line, column)) from None
-
-
-def lower_program(records: list[Record]) -> tuple[list[Lowered], list[Diagnostic]]:
-    """Every network of the listing as engine networks, and the diagnostics (one error per
-    network at most, at the record that caused it; warnings for what is not simulated)."""
-    parts: list[Lowered] = []
-    diagnostics: list[Diagnostic] = []
-    boxes = 0
-    for network in split_networks(records):
-        warnings: list[Diagnostic] = []
-        lowering = ProgramLowering(boxes, warnings)
-        lowering.used_tr = {int(r.operand[2:]) for r in network
-                            if r.modifier == "TR" and r.operand[2:].isdigit()}
-        try:
-            for index, record in enumerate(network):
-                if record.mnemonic == "END":
-                    break
-                lowering.following = network[index + 1] if index + 1 < len(network) else None
-                lowering.ahead, lowering.index = network, index
-                lowering.take_record(record)
-            if lowering.depth > 1:
-                last = network[-1]
-                raise refused(last, "fatek-open-block", name=_name(last), count=lowering.depth - 1)
-        except BranchError as error:
-            diagnostics.append(error.diagnostic)
-        drop_unread(lowering.parts, lowering.copied)
-        diagnostics.extend(warnings)
-        boxes = lowering.boxes
-        parts.extend(part for part in lowering.parts if part.instructions)
-    return parts, diagnostics

@@ -12,7 +12,7 @@ from ladderworks.core.dialects.fatek.printed import PrintedStyle, printed_lines
 from ladderworks.core.dialects.fatek.rows import SERIES_OF, SUB_BASE, UNKNOWN_FUN, operand_label
 from ladderworks.core.dialects.spelling import Spelling
 from ladderworks.core.il.program import Instruction, Network
-from ladderworks.core.instructions import Combine, InstructionSpec, Kind, Write
+from ladderworks.core.instructions import Combine, InstructionSpec, Kind, StackOp, Write
 
 WIDTH = 9  # the mnemonic column, as WinProladder prints it
 # an operand line's label where it is not the parameter's name (`D : R1`, `CV: C0`, `PV: 10`)
@@ -109,6 +109,8 @@ def instruction_lines(instructions: list[Instruction], index: int, first: bool
     following = instructions[index + 1] if index + 1 < len(instructions) else None
     if spec.kind is Kind.BASIC:
         operand = ins.operand
+        if spec.stack is not StackOp.NONE:  # a branch point: OUT TR n, LD TR n
+            return [_line(spec.text_name, str(ins.params[0]) if ins.params else "")], index + 1
         if spec.write is not Write.NONE:
             if spec.dialect:  # Fatek's own coil row: OUT L
                 return [_line(spec.text_name, device_text(operand))], index + 1
@@ -229,6 +231,8 @@ def instruction_text(instruction: Instruction) -> str:
     name = mnemonic_of(spec)
     if spec.kind is Kind.BASIC:
         operand = "" if instruction.operand is None else " " + device_text(instruction.operand)
+        if spec.stack is not StackOp.NONE and instruction.params:  # OUT TR n, LD TR n
+            operand = f" {instruction.params[0]}"
         return (name + operand).strip()
     if spec.cnc:
         fun_name, forms, kept = unknown_parts(instruction)

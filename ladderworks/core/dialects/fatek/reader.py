@@ -6,7 +6,7 @@ from __future__ import annotations
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.dialects.fatek.branches import Lowered
 from ladderworks.core.dialects.fatek.listing import read_listing
-from ladderworks.core.dialects.fatek.lowering import lower_program
+from ladderworks.core.dialects.fatek.networks import lower_program
 from ladderworks.core.il.program import FileSource, Network, Program
 from ladderworks.core.il.textform import TextForm
 

@@ -14,6 +14,7 @@ from ladderworks.core.instructions import (
     Param,
     ParamAccess,
     ParamKind,
+    StackOp,
     Write,
 )
 
@@ -153,9 +154,30 @@ BITS_FAMILY = ("FBS.MOVN", "FBS.TOGG", "FBS.ZNCMP", "FBS.BITRD", "FBS.BITWR", "F
 WORD_FAMILY = tuple(spec.name for spec in WORD_ROWS
                     if spec.name not in TABLE_FAMILY + BITS_FAMILY)
 
+
+
+def _branch_row(name: str, opcode: int, mnemonic: str, title: str, title_tr: str,
+                stack: StackOp, pushes: int) -> InstructionSpec:
+    return InstructionSpec(name, Kind.BASIC, params=(_number("tr", 0, 39),), pushes=pushes,
+                           stack=stack, opcode=opcode, title=title, title_tr=title_tr,
+                           mnemonic=mnemonic, source="fatek", dialect="fatek")
+
+
+# A TR point as a rung's branch point (`OUT TR n` … `LD TR n`, docs/dialects.md): the result
+# kept on the stack (as Delta's MPS / MRD / MPP), the point's number kept to print it again
+BRANCH_ROWS = (
+    _branch_row("FBS.TRPUSH", 0x51, "OUT TR", "Branch point (TR)", "DALLANMA NOKTASI (TR)",
+                StackOp.DUP, 1),
+    _branch_row("FBS.TRREAD", 0x52, "LD TR", "Next branch (TR)", "SONRAKİ DAL (TR)",
+                StackOp.OVER, 0),
+    _branch_row("FBS.TRLAST", 0x53, "LD TR", "Last branch (TR)", "SON DAL (TR)",
+                StackOp.DROP, -1),
+)
+
 # FUN n of the listing -> the row it becomes
 ROWS: tuple[InstructionSpec, ...] = (
     RETENTIVE,
+    *BRANCH_ROWS,
     _row("FBS.TMR", OTHER, "TMR", "Timer", "ZAMANLAYICI",
          params=(_number("timer", 0, 255), _value("preset"), FO)),
     _row("FBS.CTR", OTHER + 1, "CTR", "Counter", "SAYICI", inputs=("CK", "CLR"),
