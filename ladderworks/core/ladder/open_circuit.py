@@ -38,10 +38,10 @@ def open_ends(network: LadderNetwork) -> list[OpenEnd]:
     """The breaks of a drawn network, one per broken place, in reading order.
 
     Power comes from the left rail (and from a box's W1 output and output pins); it is wanted
-    by coils and by a box's control inputs. A chain of contacts that gets no power is marked once, left of its
-    first element; a chain that leads to no coil or box input is marked once, right of its last
-    element: on the empty cell there (a gap), or on the element's side when the next cell is
-    taken. A network kept as a listing has none."""
+    by coils and by a box's control inputs. A chain of contacts that gets no power is marked
+    once, left of its first element; a chain that leads to no coil or box input is marked once,
+    right of its last element: on the empty cell there (a gap), or on the element's side when
+    the next cell is taken. A network kept as a listing has none."""
     if network.listing is not None or not network.cells:
         return []
     nets = NodeNets(network)
