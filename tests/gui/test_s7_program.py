@@ -1,11 +1,12 @@
-"""An S7-1200 SD block in the IDE: File › Open with its folder's tag table, compiled with F9,
-run, a tag set, a coil seen; saved back byte for byte."""
+"""An S7-1200 SD block (and its SimaticML XML twin) in the IDE: File › Open with its folder's
+tag table, compiled with F9, run, a tag set, a coil seen; saved back byte for byte."""
 
 from __future__ import annotations
 
 import shutil
 from pathlib import Path
 
+import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction
 from pytestqt.qtbot import QtBot
@@ -14,13 +15,18 @@ from ladderworks.core.dialects.s7.devices import parse_absolute
 from ladderworks.gui.main_window import MainWindow
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "resources" / "examples" / "s7"
+XML_EXAMPLES = EXAMPLES.parent / "s7-xml"
 
 
+@pytest.mark.parametrize(("examples", "name"), [(EXAMPLES, "Main.s7dcl"),
+                                                (XML_EXAMPLES, "Main.xml")])
 def test_an_s7_block_opens_runs_and_saves_as_read(qtbot: QtBot, window: MainWindow,
-                                                   tmp_path: Path) -> None:
+                                                   tmp_path: Path, examples: Path,
+                                                   name: str) -> None:
+    """The same block as SIMATIC SD and as SimaticML XML."""
     folder = tmp_path / "jumps"
-    shutil.copytree(EXAMPLES / "jumps", folder)
-    path = folder / "Main.s7dcl"
+    shutil.copytree(examples / "jumps", folder)
+    path = folder / name
     assert window.load(path)
     assert window.editor.networks
     session = window.plc_docks.session
@@ -37,7 +43,7 @@ def test_an_s7_block_opens_runs_and_saves_as_read(qtbot: QtBot, window: MainWind
     session.run_scans(2)
     assert session.run.bit(motor) == 1
     assert window.save()
-    assert path.read_bytes() == (EXAMPLES / "jumps" / "Main.s7dcl").read_bytes()
+    assert path.read_bytes() == (examples / "jumps" / name).read_bytes()
 
 
 def test_a_changed_s7_block_is_not_saved_and_the_file_is_kept(window: MainWindow,
