@@ -16,7 +16,7 @@ from ladderworks.core.dialects.delta.dvp_file import is_dvp
 from ladderworks.core.il import Program
 from ladderworks.core.il.parser import ParseResult
 from ladderworks.core.il.printer import encode_program, print_faithful
-from ladderworks.core.il.reading import attach_companions, parse_read, parse_text
+from ladderworks.core.il.reading import parse_read, parse_text
 from ladderworks.core.il.textform import UTF8, TextForm, encode_text, split_lines
 from ladderworks.core.ladder.convert import adopt_origin, damaged_drafts
 from ladderworks.gui.editor.ladder_model import LadderModel
@@ -165,8 +165,7 @@ class ProgramDocument(QObject):
         """Read and parse `path` (OSError); it becomes the document's file."""
         data = path.read_bytes()
         release_frozen()  # the program shown so far is dropped: its objects walked again
-        result = parse_read(path, data)
-        attach_companions(path, result.program)  # Fatek's comment export beside it: symbols
+        result = parse_read(path, data)  # with Fatek's comment export beside it: symbols
         if result.program.source is not None:
             result.diagnostics = sorted(
                 result.diagnostics + damaged_drafts(result.program.source.lines),

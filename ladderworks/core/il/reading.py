@@ -78,12 +78,20 @@ def read_pdw(data: bytes) -> ParseResult:
 
 def parse_bytes(data: bytes, dialect: str | None = None) -> ParseResult:
     """Parse file contents in whichever dialect they are written (or `dialect`)."""
+    return _read(data, dialect, None)
+
+
+def _read(data: bytes, dialect: str | None, path: Path | None) -> ParseResult:
+    """A project file by its header, else the text by its dialect (sniffed once); with the
+    file's `path`, a dialect that opens companion files (S7's tag tables) gets it."""
     if is_pdw(data):
         return read_pdw(data)
     binary = _binary(data, dialect)
     if binary is not None:
         return binary
     found = choose(data, dialect)
+    if path is not None and found is not None and found.opener:
+        return open_with(path, data, found)
     return parser.parse_bytes(data) if found is None else read_dialect(data, found)
 
 
@@ -105,11 +113,9 @@ def _folder(path: Path, dialect: str | None) -> ParseResult:
 
 def parse_read(path: Path, data: bytes, dialect: str | None = None) -> ParseResult:
     """`data` read from the file `path`: a dialect that opens companion files (S7's tag
-    tables and texts beside a block) gets the path too; else parse_bytes."""
-    found = choose(data, dialect)
-    if found is not None and found.opener:
-        return open_with(path, data, found)
-    result = parse_bytes(data, dialect)
+    tables and texts beside a block) gets the path too; the files a dialect reads beside a
+    program (Fatek's comment export) are attached."""
+    result = _read(data, dialect, path)
     attach_companions(path, result.program)
     return result
 
@@ -122,12 +128,7 @@ def parse_file(path: str | Path, dialect: str | None = None) -> ParseResult:
         return _folder(target, dialect)
     with open(path, "rb") as file:
         data = file.read()
-    found = choose(data, dialect)
-    if found is not None and found.opener:
-        return open_with(target, data, found)
-    result = parse_bytes(data, dialect)
-    attach_companions(path, result.program)
-    return result
+    return parse_read(target, data, dialect)
 
 
 def attach_companions(path: str | Path, program: Program) -> None:
