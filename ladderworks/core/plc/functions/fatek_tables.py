@@ -5,6 +5,8 @@ the pointer moves), nothing written."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from ladderworks.core.address import Address
 from ladderworks.core.plc.functions import FunctionContext, FunctionImpl, function
 from ladderworks.core.plc.functions.fatek_data import runs, width
@@ -31,87 +33,74 @@ def _entries(ctx: FunctionContext, table: Address, length: int, size: int) -> li
     return [ctx.memory.read(table.offset(k * size), size, signed=True) for k in range(length)]
 
 
-def _statistic(mean: bool) -> FunctionImpl:
-    """FUN 24 SUM (D := the sum, wrapped to D's width) and 25 MEAN (D := the sum divided by
-    L, truncated toward 0) of the table Ts of L entries."""
+TableBody = Callable[[FunctionContext, tuple, int, int], None]
+
+
+def _table_box(length_at: int, tables: tuple[int, ...], body: TableBody) -> FunctionImpl:
+    """A table FUN: when the box runs (its mode's plain or pulse form), the parameter at
+    `length_at` gives L; every table parameter in `tables` must fit L entries, else ERR and
+    nothing written; `body(ctx, params, L, entry size)` does the work."""
 
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
-        """D := the table's sum or mean when the box runs."""
-        mode, table, length, destination, fo = params
+        """The table function when the box runs; FO0 its ERR."""
+        mode, fo = params[0], params[-1]
         if not runs(state, mode, inputs[0]):
             return bool(state.get("fo0", False))
         size = width(mode)
-        count = operand_value(ctx.memory, length, 2)
-        if not _fits(ctx, table, count, size):
+        count = operand_value(ctx.memory, params[length_at], 2)
+        if not all(_fits(ctx, params[k], count, size) for k in tables):
             return _error(ctx, state, fo, True)
-        assert isinstance(table, Address)
-        total = sum(_entries(ctx, table, count, size))
-        if mean:
-            total = abs(total) // count * (1 if total >= 0 else -1)
-        ctx.memory.write(destination, signed(total, size), size)
+        body(ctx, params, count, size)
         return _error(ctx, state, fo, False)
 
     return impl
 
 
-function("FBS.SUM")(_statistic(False))
-function("FBS.MEAN")(_statistic(True))
+def _sum(ctx: FunctionContext, params: tuple, count: int, size: int) -> None:
+    """FUN 24 SUM: D := the sum of the table Ts of L entries, wrapped to D's width."""
+    _mode, table, _length, destination, _fo = params
+    ctx.memory.write(destination, signed(sum(_entries(ctx, table, count, size)), size), size)
 
 
-@function("FBS.BT_M")
-def fatek_block_move(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
-                     params: tuple) -> bool:
+def _mean(ctx: FunctionContext, params: tuple, count: int, size: int) -> None:
+    """FUN 25 MEAN: D := the sum of the table Ts divided by L, truncated toward 0."""
+    _mode, table, _length, destination, _fo = params
+    total = sum(_entries(ctx, table, count, size))
+    total = abs(total) // count * (1 if total >= 0 else -1)
+    ctx.memory.write(destination, signed(total, size), size)
+
+
+def _block_move(ctx: FunctionContext, params: tuple, count: int, size: int) -> None:
     """FUN 103 BT_M: the L entries of Ts copied to Td (as read before any is written)."""
-    mode, source, target, length, fo = params
-    if not runs(state, mode, inputs[0]):
-        return bool(state.get("fo0", False))
-    size = width(mode)
-    count = operand_value(ctx.memory, length, 2)
-    if not (_fits(ctx, source, count, size) and _fits(ctx, target, count, size)):
-        return _error(ctx, state, fo, True)
-    assert isinstance(source, Address) and isinstance(target, Address)
+    _mode, source, target, _length, _fo = params
     for k, value in enumerate(_entries(ctx, source, count, size)):
         ctx.memory.write(target.offset(k * size), value, size)
-    return _error(ctx, state, fo, False)
 
 
-@function("FBS.T_SWP")
-def fatek_table_swap(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
-                     params: tuple) -> bool:
+def _table_swap(ctx: FunctionContext, params: tuple, count: int, size: int) -> None:
     """FUN 104 T_SWP: the L entries of Ta and Tb exchanged."""
-    mode, first, second, length, fo = params
-    if not runs(state, mode, inputs[0]):
-        return bool(state.get("fo0", False))
-    size = width(mode)
-    count = operand_value(ctx.memory, length, 2)
-    if not (_fits(ctx, first, count, size) and _fits(ctx, second, count, size)):
-        return _error(ctx, state, fo, True)
-    assert isinstance(first, Address) and isinstance(second, Address)
+    _mode, first, second, _length, _fo = params
     a = _entries(ctx, first, count, size)
     b = _entries(ctx, second, count, size)
     for k in range(count):
         ctx.memory.write(first.offset(k * size), b[k], size)
         ctx.memory.write(second.offset(k * size), a[k], size)
-    return _error(ctx, state, fo, False)
 
 
-@function("FBS.T_FIL")
-def fatek_table_fill(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
-                     params: tuple) -> bool:
+def _table_fill(ctx: FunctionContext, params: tuple, count: int, size: int) -> None:
     """FUN 107 T_FIL: every one of the L entries of Td := S."""
-    mode, source, target, length, fo = params
-    if not runs(state, mode, inputs[0]):
-        return bool(state.get("fo0", False))
-    size = width(mode)
-    count = operand_value(ctx.memory, length, 2)
-    if not _fits(ctx, target, count, size):
-        return _error(ctx, state, fo, True)
-    assert isinstance(target, Address)
+    _mode, source, target, _length, _fo = params
     value = operand_value(ctx.memory, source, size)
     for k in range(count):
         ctx.memory.write(target.offset(k * size), value, size)
-    return _error(ctx, state, fo, False)
+
+
+function("FBS.SUM")(_table_box(2, (1,), _sum))
+function("FBS.MEAN")(_table_box(2, (1,), _mean))
+function("FBS.BT_M")(_table_box(3, (1, 2), _block_move))
+function("FBS.T_SWP")(_table_box(3, (1, 2), _table_swap))
+function("FBS.T_FIL")(_table_box(3, (2,), _table_fill))
 
 
 def _pointer_move(to_table: bool) -> FunctionImpl:
