@@ -24,7 +24,7 @@ from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd
 from ladderworks.core.dialects.s7.tags import is_tag_table, read_tag_table
 from ladderworks.core.dialects.s7.texts import pick, read_texts
 from ladderworks.core.il.program import FileSource, Network, Program
-from ladderworks.core.il.textform import TextForm, decode_lines
+from ladderworks.core.il.textform import TextForm, decode_lines, encode_text
 from ladderworks.core.symbols import Symbol, SymbolTable
 
 NAME = "s7"
@@ -114,6 +114,15 @@ def _source(program: Program, form: TextForm, lines: list[str], ends: list[str])
         program.source.trailer_span = (0, len(lines))
 
 
+def attach(program: Program, graph: S7Program, data: bytes, form: str) -> None:
+    """Keep what Save needs to write a changed entry block in its own form (saving.py)."""
+    from ladderworks.core.dialects.s7.saving import S7Source
+
+    code = [b for b in graph.blocks if b.kind in ("OB", "FC", "FB")]
+    if code:
+        program.graph = S7Source.of(data, form, graph, code[0])
+
+
 def _parse(text: str, diagnostics: list[Diagnostic]) -> Parsed | None:
     if len(text) > MAX_BYTES:
         diagnostics.append(Diagnostic("s7-too-large", {"size": len(text) >> 20,
@@ -131,8 +140,10 @@ def read(text: str, form: TextForm, lines: list[str],
     """One SD block's text (no companion files) as a Program and its diagnostics."""
     diagnostics: list[Diagnostic] = []
     parsed = _parse(text, diagnostics)
-    program, _graph, _layout = build([parsed] if parsed else [], [], {}, diagnostics)
+    program, graph, _layout = build([parsed] if parsed else [], [], {}, diagnostics)
     _source(program, form, lines, ends)
+    if parsed is not None:
+        attach(program, graph, encode_text(text, form), "sd")
     return program, diagnostics
 
 
@@ -199,7 +210,9 @@ def open_path(path: Path, data: bytes | None) -> tuple[Program, list[Diagnostic]
     text, form, problems, (lines, ends) = decode_lines(raw)
     diagnostics += problems
     parsed = _parse(text, diagnostics)
-    program, _graph, _layout = build(([parsed] if parsed else []) + blocks, tags, texts,
-                                     diagnostics)
+    program, graph, _layout = build(([parsed] if parsed else []) + blocks, tags, texts,
+                                    diagnostics)
     _source(program, form, lines, ends)
+    if parsed is not None:
+        attach(program, graph, raw, "sd")
     return program, diagnostics, form.encoding
