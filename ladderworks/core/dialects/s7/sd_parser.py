@@ -399,6 +399,7 @@ class _Parser:
             path = [self.next()]
             while self.op(".") or self.op("["):
                 if self.op("["):
+                    self.next()
                     depth_text = ""
                     while not self.op("]"):
                         if self.tok.kind == "end":

@@ -88,7 +88,13 @@ def _replaced(unit: str, network: S7Network, default: str, newline: str,
     uri = found.group(1) if found is not None else default
     lines = flgnet_lines(network, _version(uri), others)
     lines[0] = re.sub(r'xmlns="[^"]*"', f'xmlns="{uri}"', lines[0], count=1)
-    fresh = newline.join(lines)
+    pad = ""
+    if found is not None:  # the old FlgNet's children: at column 0 (TIA) or indented under it
+        inner = found.group().split("\n", 2)
+        if len(inner) > 1:
+            lead = inner[1][:len(inner[1]) - len(inner[1].lstrip())]
+            pad = lead[:-2] if len(lead) > 2 else ""
+    fresh = newline.join([lines[0], *(pad + line for line in lines[1:])])
     if found is not None:
         unit = unit[:found.start()] + fresh + unit[found.end():]
     else:
