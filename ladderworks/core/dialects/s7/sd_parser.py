@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects.s7.db_source import begin_values
 from ladderworks.core.dialects.s7.graph import (
     Block,
     End,
@@ -37,7 +38,7 @@ from ladderworks.core.dialects.s7.sd_rungs import (
 )
 
 _BLOCKS = {"ORGANIZATION_BLOCK": "OB", "FUNCTION": "FC", "FUNCTION_BLOCK": "FB",
-           "DATA_BLOCK": "GlobalDB"}
+           "DATA_BLOCK": "GlobalDB", "TYPE": "Type"}
 _SECTIONS = {"VAR_INPUT": "Input", "VAR_OUTPUT": "Output", "VAR_IN_OUT": "InOut",
              "VAR": "Static", "VAR_STAT": "Static", "VAR_TEMP": "Temp"}
 class ParseError(Exception):
@@ -100,7 +101,7 @@ class _Parser:
         while self.tok.kind == "pragma":
             attributes.update(pragma_items(self.next().text))
         if not (self.tok.kind == "word" and self.tok.text.upper() in _BLOCKS):
-            raise self.fail("ORGANIZATION_BLOCK, FUNCTION, FUNCTION_BLOCK or DATA_BLOCK")
+            raise self.fail("ORGANIZATION_BLOCK, FUNCTION, FUNCTION_BLOCK, DATA_BLOCK or TYPE")
         keyword = self.next().text.upper()
         name_tok = self.next()
         if name_tok.kind not in ("name", "word"):
@@ -144,12 +145,18 @@ class _Parser:
                     self.next()
             elif self.word("NON_RETAIN", "RETAIN"):
                 self.next()
-            elif self.word("BEGIN"):  # a DB's start values: kept in the file, not read
+            elif self.word("STRUCT") and block.kind in ("GlobalDB", "Type"):  # a `.db` source
                 self.next()
-                while not self.word(end):
-                    if self.tok.kind == "end":
-                        raise self.fail(end, f"the block {block.name}")
+                members = self.members("STRUCT", "END_STRUCT")
+                self.next()
+                if self.op(";"):
                     self.next()
+                block.sections.setdefault("Static", []).extend(members)
+            elif block.kind == "GlobalDB" and tok.kind == "name":  # `"FB"` on its own line
+                block.kind, block.instance_of = "InstanceDB", _unquote(self.next().text)
+            elif self.word("BEGIN"):  # a DB's start values (`Count := 3;`)
+                self.next()
+                begin_values(self, block, end)
             else:
                 raise self.fail(f"VAR_…, NETWORK or {end}")
         return parsed
@@ -158,7 +165,7 @@ class _Parser:
         """A member's type as written up to `;` or `:=` (Struct handled by the caller)."""
         parts: list[str] = []
         depth = 0
-        while not (depth == 0 and (self.op(";", ":=") or self.tok.kind == "end")):
+        while not (depth == 0 and self.op(";", ":=")) and self.tok.kind != "end":
             tok = self.next()
             depth += {"[": 1, "]": -1}.get(tok.text, 0)
             parts.append(tok.text)
@@ -184,6 +191,8 @@ class _Parser:
                 raise ParseError(Diagnostic("s7-syntax", {"expected": "a member's name",
                                                           "found": name_tok.text},
                                             name_tok.line, name_tok.column))
+            while self.tok.kind == "pragma":  # `Timer {InstructionName := 'TON_TIME'} : …`
+                self.next()
             self.expect_op(":", inside)
             if self.word("STRUCT"):
                 self.next()
@@ -441,3 +450,17 @@ def parse_sd(text: str) -> Parsed:
     parser = _Parser(toks, text.split("\n"))
     parsed = parser.block()
     return parsed
+
+
+def parse_sources(text: str) -> list[Parsed]:
+    """Every block of a source text (a `.db` file may hold several, and TYPE blocks before
+    them); ParseError at the first that cannot be read."""
+    try:
+        toks = tokens(text)
+    except LexError as error:
+        raise ParseError(error.diagnostic) from None
+    parser = _Parser(toks, text.split("\n"))
+    found = [parser.block()]
+    while parser.tok.kind != "end":
+        found.append(parser.block())
+    return found
