@@ -493,6 +493,12 @@ MESSAGES: dict[str, str] = {
     "s7-save-changed": QT_TRANSLATE_NOOP(
         "Diagnostic", "this change cannot be written into the S7 block's file: make it in "
         "TIA Portal"),
+    "s7-db-syntax": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{file}, line {line}: expected {expected}, found '{found}': the source "
+        "is not read"),
+    "s7-db-cut": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{file}, line {line}: the text ends inside {what} (cut off?): the source "
+        "is not read"),
     "s7-save-unreadable": QT_TRANSLATE_NOOP(
         "Diagnostic", "the S7 block's file no longer reads (line {line}): nothing is written"),
     "s7-save-unwritable": QT_TRANSLATE_NOOP(

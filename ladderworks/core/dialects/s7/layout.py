@@ -142,8 +142,7 @@ def constant_value(text: str, vtype: typed.ValueType) -> int | None:
     upper = text.strip().upper()
     if upper in ("TRUE", "FALSE"):
         return int(upper == "TRUE")
-    chars = string_value(text.partition("#")[2] if upper.startswith(("CHAR#", "WCHAR#"))
-                         else text)
+    chars = string_value(text)
     if chars is not None:  # a Char constant 'A' (a String's are written by starts.py)
         return ord(chars[0]) if len(chars) == 1 and vtype is typed.ValueType.CHAR else None
     ms = time_ms(text)
@@ -172,14 +171,16 @@ def constant_value(text: str, vtype: typed.ValueType) -> int | None:
     return int(value)
 
 
+_TYPED_STRING = re.compile(r"(?i)^(?:w?string|w?char)\s*#\s*(?=')")
 _ESCAPES = {"$": "$", "'": "'", "L": "\n", "N": "\n", "P": "\f", "R": "\r", "T": "\t"}
 
 
 def string_value(text: str) -> str | None:
     """A quoted S7 string constant's characters (`'It''s'`, `'a$Nb'`, `'$41'`), else None."""
     text = text.strip()
-    if text[:1].upper() in ("S", "W") and "#'" in text[:9]:  # STRING#'…', WSTRING#'…'
-        text = text.partition("#")[2]
+    typed_prefix = _TYPED_STRING.match(text)  # STRING#'…', WSTRING#'…', CHAR#'…'
+    if typed_prefix is not None:
+        text = text[typed_prefix.end():]
     if len(text) < 2 or text[0] != "'" or text[-1] != "'":
         return None
     body, out, at = text[1:-1].replace("''", "'"), [], 0

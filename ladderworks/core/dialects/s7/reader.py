@@ -20,7 +20,7 @@ from ladderworks.core.dialects.s7.layout import (
     Layout,
 )
 from ladderworks.core.dialects.s7.lowering import lower_block
-from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd
+from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd, parse_sources
 from ladderworks.core.dialects.s7.tags import is_tag_table, read_tag_table
 from ladderworks.core.dialects.s7.texts import pick, read_texts
 from ladderworks.core.il.program import FileSource, Network, Program
@@ -29,6 +29,7 @@ from ladderworks.core.symbols import Symbol, SymbolTable
 
 NAME = "s7"
 SD_SUFFIXES = (".s7dcl",)
+SOURCE_SUFFIXES = (".db", ".udt")  # TIA's "Generate source from blocks": global DBs, types
 MAX_BYTES = 64 * 1024 * 1024  # a file larger than this is refused, not read
 
 
@@ -158,6 +159,23 @@ def _read_text(path: Path, diagnostics: list[Diagnostic]) -> str | None:
         return None
 
 
+def read_sources(path: Path, diagnostics: list[Diagnostic]) -> list[tuple[Path, Parsed]]:
+    """The blocks of a `.db`/`.udt` source beside the program; a source that does not read is
+    left out with a warning naming the file and its line."""
+    text = _read_text(path, diagnostics)
+    if text is None:
+        return []
+    try:
+        return [(path, parsed) for parsed in parse_sources(text)]
+    except ParseError as error:
+        inner = error.diagnostic
+        args: dict[str, object] = {"file": path.name, "line": inner.line}
+        code = "s7-db-cut" if inner.code == "s7-cut" else "s7-db-syntax"
+        args.update(inner.args)
+        diagnostics.append(Diagnostic(code, args, 0, 0, Severity.WARNING))
+        return []
+
+
 def companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic]
                ) -> tuple[list[tuple[Path, Parsed]], list, dict[str, dict[str, str]]]:
     """The SD blocks (but the entry's), tags and texts of a folder."""
@@ -178,6 +196,8 @@ def companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic]
                 tags += found
                 diagnostics += [Diagnostic(d.code, d.args, d.line, d.column, Severity.WARNING)
                                 for d in problems]
+        elif suffix in SOURCE_SUFFIXES:
+            blocks += read_sources(path, diagnostics)
         elif suffix in SD_SUFFIXES and path != entry:
             text = _read_text(path, diagnostics)
             if text is not None:

@@ -26,7 +26,7 @@ from ladderworks.core.il.program import Instruction, Network
 from ladderworks.core.plc import typed
 
 FIRST_SCAN = Address(Area.R, 1, 0)  # %M1.0
-_STRING_RE = re.compile(r"^(w?)string(?:\s*\[\s*(\d+)\s*\])?$", re.I)
+STRING_TYPE = re.compile(r"^(w?)string(?:\s*\[\s*(\d+)\s*\])?$", re.I)
 _REPEAT_RE = re.compile(r"^(\d+)\s*\((.*)\)$")
 STRING_CODEC = "cp1254"  # a String's characters: one byte each (docs/dialects.md)
 
@@ -46,7 +46,7 @@ def lreal_constant(layout: Layout, text: str) -> Address | None:
 
 def string_moves(place: Place, text: str | None) -> list[Instruction]:
     """The moves that make a String/WString place hold `text` (None: only its max length)."""
-    found = _STRING_RE.match(place.type_name.strip())
+    found = STRING_TYPE.match(place.type_name.strip())
     if found is None:
         return []
     wide = bool(found.group(1))
@@ -84,7 +84,7 @@ def _elements(text: str) -> list[str]:
 
 def value_moves(layout: Layout, place: Place, text: str) -> list[Instruction]:
     """The moves that put one start value's text at a place (an array: element by element)."""
-    if _STRING_RE.match(place.type_name.strip()):
+    if STRING_TYPE.match(place.type_name.strip()):
         chars = string_value(text)
         return string_moves(place, chars) if chars is not None else []
     elements = _elements(text)
@@ -143,7 +143,7 @@ def start_values(layout: Layout) -> Network | None:
             continue
         if member.start:
             code += value_moves(layout, place, member.start)
-        elif _STRING_RE.match(place.type_name.strip()):
+        elif STRING_TYPE.match(place.type_name.strip()):
             code += string_moves(place, None)
     for block in layout.program.blocks:
         if block.starts and block.kind in ("GlobalDB", "InstanceDB"):

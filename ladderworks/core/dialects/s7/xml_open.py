@@ -88,6 +88,8 @@ def _companions(folder: Path, entry: Path | None, diagnostics: list[Diagnostic],
         elif suffix == ".s7res":
             text = path.read_bytes().decode("utf-8-sig", "replace")
             texts.update(read_texts(text))
+        elif suffix in reader.SOURCE_SUFFIXES:
+            sd += [parsed for _path, parsed in reader.read_sources(path, diagnostics)]
         elif suffix in reader.SD_SUFFIXES:
             parsed = reader._parse(path.read_bytes().decode("utf-8-sig", "replace"), [])
             if parsed is not None:

@@ -1,0 +1,220 @@
+"""Global DB sources (`.db`, TIA's "Generate source from blocks") beside the blocks: members
+(STRUCT, nested structs, arrays, PLC data types, String, LReal, Char) resolve as
+`"DB".member`, their start values (declared, then the BEGIN section's) are in place after the
+first scan; MOVE of a string constant, LReal compares; a broken source is a warning naming its
+file and line, never a traceback."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ladderworks.core.compiler import compile_program
+from ladderworks.core.dialects.s7 import reader
+from ladderworks.core.dialects.s7.devices import parse_absolute
+from ladderworks.core.dialects.s7.layout import Layout, size_of, string_value
+from ladderworks.core.dialects.s7.sd_parser import ParseError, parse_sources
+from ladderworks.core.il.program import Program
+from ladderworks.core.plc import typed
+from ladderworks.core.plc.engine import ScanEngine
+
+DB = """TYPE "Motor_UDT"
+VERSION : 0.1
+   STRUCT
+      Speed : Int := 10;
+      Run : Bool;
+   END_STRUCT;
+
+END_TYPE
+
+DATA_BLOCK "Hat_DB"
+{ S7_Optimized_Access := 'TRUE' }
+VERSION : 0.1
+NON_RETAIN
+   STRUCT
+      Count : Int := 3;
+      Ratio : LReal := 0.1;
+      Limit : LReal := 2.5;
+      Name : String[10] := 'abc';
+      Wide : WString[4] := WSTRING#'Işık';
+      Letter : Char := 'A';
+      Flags : Byte := 16#0F;
+      Counts : Array[0..3] of Int := [4(1)];
+      Lamps : Array[1..3] of Bool;
+      Data : Struct
+         Speed : Int;
+         Edge { S7_SetPoint := 'True'} : Bool;
+         Deep : Struct
+            Total : DInt := 7;
+         END_STRUCT;
+      END_STRUCT;
+      M1 : "Motor_UDT";
+   END_STRUCT;
+
+
+BEGIN
+   Count := 5;
+   Counts[2] := -7;
+   Data.Speed := 100;
+   "M1".Speed := 20;
+   Lamps[3] := TRUE;
+   Name := 'Sıcak';
+END_DATA_BLOCK
+"""
+
+MAIN = """ORGANIZATION_BLOCK "Main"
+    NETWORK
+        RUNG wire#powerrail
+            Contact( "Hat_DB".Lamps[3] )
+            Move( in := 'Merhaba dünya', out1 => "Hat_DB".Name )
+        END_RUNG
+    END_NETWORK
+    NETWORK
+        RUNG wire#powerrail
+            { S7_Templates := "SrcType := LReal" }
+            GT_Contact( in1 := "Hat_DB".Ratio, in2 := 0.05 )
+            { S7_Templates := "SrcType := LReal" }
+            LT_Contact( in1 := "Hat_DB".Ratio, in2 := "Hat_DB".Limit )
+            Coil( %Q0.0 )
+        END_RUNG
+    END_NETWORK
+    NETWORK
+        RUNG wire#powerrail
+            { S7_Templates := "SrcType := LReal" }
+            EQ_Contact( in1 := "Hat_DB".Ratio, in2 := 0.1 )
+            Coil( %Q0.1 )
+        END_RUNG
+    END_NETWORK
+    NETWORK
+        RUNG wire#powerrail
+            Contact( %I0.0 )
+            { S7_Templates := "SrcType := LReal" }
+            Add( in1 := "Hat_DB".Ratio, in2 := 0.2, out => "Hat_DB".Limit )
+        END_RUNG
+    END_NETWORK
+END_ORGANIZATION_BLOCK
+"""
+
+
+class Folder:
+    """The program of a folder holding Main.s7dcl and Hat_DB.db, compiled and run."""
+
+    def __init__(self, tmp_path: Path, db: str = DB) -> None:
+        (tmp_path / "Main.s7dcl").write_text(MAIN, encoding="utf-8")
+        (tmp_path / "Hat_DB.db").write_text(db, encoding="utf-8")
+        program, self.diagnostics, _encoding = reader.open_path(tmp_path / "Main.s7dcl", None)
+        self.program: Program = program
+        compiled = compile_program(program)
+        assert compiled.binary is not None, [d.message() for d in compiled.diagnostics]
+        self.engine = ScanEngine(compiled.binary)
+
+    def at(self, name: str):
+        symbols = self.program.symbols
+        assert symbols is not None
+        address = symbols.address_of(name)
+        assert address is not None, name
+        return address
+
+    def value(self, name: str, vtype: typed.ValueType) -> int | float:
+        return typed.read(self.engine.memory, self.at(name), vtype)
+
+    def string(self, name: str) -> tuple[int, int, bytes]:
+        base = self.at(name)
+        data = self.engine.memory.areas[base.area]
+        return data[base.byte], data[base.byte + 1], bytes(
+            data[base.byte + 2:base.byte + 2 + data[base.byte + 1]])
+
+
+def test_a_db_source_parses_with_its_types_and_start_values() -> None:
+    udt, db = (p.block for p in parse_sources(DB))
+    assert (udt.kind, db.kind) == ("Type", "GlobalDB")
+    assert [m.name for m in db.members("Static")][:3] == ["Count", "Ratio", "Limit"]
+    assert db.starts[("counts[2]",)] == "-7" and db.starts[("m1", "speed")] == "20"
+    data = next(m for m in db.members("Static") if m.name == "Data")
+    assert [m.name for m in data.members] == ["Speed", "Edge", "Deep"]
+
+
+def test_db_members_resolve_and_start_values_are_applied_at_cold_start(tmp_path: Path) -> None:
+    plc = Folder(tmp_path)
+    assert plc.diagnostics == [], [d.message() for d in plc.diagnostics]
+    plc.engine.scan()
+    assert plc.value('"Hat_DB".Count', typed.ValueType.INT) == 5  # BEGIN wins
+    assert plc.value('"Hat_DB".Data.Speed', typed.ValueType.INT) == 100
+    assert plc.value('"Hat_DB".Data.Deep.Total', typed.ValueType.DINT) == 7
+    assert plc.value('"Hat_DB".M1.Speed', typed.ValueType.INT) == 20
+    assert plc.value('"Hat_DB".Ratio', typed.ValueType.LREAL) == 0.1  # exactly, not a Real
+    assert plc.value('"Hat_DB".Letter', typed.ValueType.CHAR) == ord("A")
+    assert plc.value('"Hat_DB".Flags', typed.ValueType.BYTE) == 15
+    memory = plc.engine.memory
+    layout_counts = [typed.read(memory, _element(plc, "Counts", n, 2), typed.ValueType.INT)
+                     for n in range(4)]
+    assert layout_counts == [1, 1, -7, 1]
+    # the BEGIN section's 'Sıcak' was moved over by the first network (Lamps[3] is TRUE)
+    assert plc.string('"Hat_DB".Name') == (10, 10, "Merhaba dü".encode("cp1254"))
+    base = plc.at('"Hat_DB".Wide')
+    wide = bytes(memory.areas[base.area][base.byte:base.byte + 12])
+    assert wide == bytes([0, 4, 0, 4]) + "Işık".encode("utf-16-be")
+
+
+def _element(plc: Folder, name: str, index: int, width: int):
+    base = plc.at(f'"Hat_DB".{name}')
+    return type(base)(base.area, base.byte + index * width)
+
+
+def test_lreal_compares_and_adds_in_double_precision(tmp_path: Path) -> None:
+    plc = Folder(tmp_path)
+    plc.engine.scan()
+    q0, q1 = parse_absolute("%Q0.0")[0], parse_absolute("%Q0.1")[0]
+    assert plc.engine.memory.bit(q0) == 1  # 0.05 < 0.1 < 2.5
+    assert plc.engine.memory.bit(q1) == 1  # 0.1 == 0.1 as LReals (a Real 0.1 is not)
+    plc.engine.memory.set_bit(parse_absolute("%I0.0")[0], 1)
+    plc.engine.scan()
+    plc.engine.scan()
+    assert plc.value('"Hat_DB".Limit', typed.ValueType.LREAL) == 0.1 + 0.2
+    assert plc.engine.memory.bit(q0) == 1
+
+
+def test_sizes_follow_the_s7_types() -> None:
+    assert size_of("String[10]") == 12 and size_of("String") == 256
+    assert size_of("WString[4]") == 12 and size_of("LReal") == 8 and size_of("Char") == 1
+    assert size_of("Array[0..3] of Int") == 8 and size_of("Array[1..3] of Bool") == 3
+    assert size_of("Array[0..1] of String[3]") == 12  # 5 bytes, each element at an even byte
+    assert string_value("'It''s $N$41'") == "It's \nA" and string_value("12") is None
+
+
+def test_array_elements_resolve_by_constant_index_and_refuse_out_of_bounds() -> None:
+    blocks = parse_sources(DB)
+    from ladderworks.core.dialects.s7.graph import S7Program
+
+    layout = Layout(S7Program([b.block for b in blocks]))
+    first = layout.global_name(("Hat_DB", "Counts[0]"))
+    third = layout.global_name(("Hat_DB", "Counts[3]"))
+    assert first is not None and third is not None
+    assert third.address.byte - first.address.byte == 6 and third.type_name == "Int"
+    assert layout.global_name(("Hat_DB", "Counts[4]")) is None
+    assert layout.global_name(("Hat_DB", "Counts[#i]")) is None
+    lamp = layout.global_name(("Hat_DB", "Lamps[1]"))
+    assert lamp is not None and lamp.address.bit == 0
+
+
+@pytest.mark.parametrize("bad, code", [
+    ("DATA_BLOCK \"D\"\n   STRUCT\n      a : Int;\n", "s7-db-cut"),
+    ("DATA_BLOCK \"D\"\n   STRUCT\n      a : Array[0..3 of Int", "s7-db-cut"),
+    ("DATA_BLOCK \"D\"\nSTRUCT a : Int; END_STRUCT;\nBEGIN\n   a = 3;\nEND_DATA_BLOCK\n",
+     "s7-db-syntax"),
+    ("DATA_BLOCK \"D\"\nBEGIN\n   a := 3\nEND_DATA_BLOCK\n", "s7-db-syntax"),
+    ("DATA_BLOCK \"D\"\nBEGIN\n   a[1 := 3;\n", "s7-db-cut"),
+    ("DATA_BLOCK \"D\"\n{ S7_Optimized_Access := 'TRUE'\nSTRUCT\n", "s7-db-cut"),
+])
+def test_a_broken_db_source_is_a_warning_at_its_line(tmp_path: Path, bad: str,
+                                                     code: str) -> None:
+    (tmp_path / "Main.s7dcl").write_text(MAIN, encoding="utf-8")
+    (tmp_path / "Bad.db").write_text(bad, encoding="utf-8")
+    _program, diagnostics, _encoding = reader.open_path(tmp_path / "Main.s7dcl", None)
+    found = [d for d in diagnostics if d.code.startswith("s7-db")]
+    assert [d.code for d in found] == [code]
+    assert found[0].args["file"] == "Bad.db" and int(str(found[0].args["line"])) >= 1
+    assert "Bad.db, line" in found[0].message()
+    with pytest.raises(ParseError):
+        parse_sources(bad)
