@@ -77,8 +77,8 @@ def _elements(text: str) -> list[str]:
         repeat = _REPEAT_RE.match(item)
         if repeat is not None:
             values += [repeat.group(2).strip()] * min(int(repeat.group(1)), 100_000)
-        elif item:
-            values.append(item)
+        else:
+            values.append(item)  # "" for an element without a start value
     return values
 
 
@@ -96,7 +96,8 @@ def value_moves(layout: Layout, place: Place, text: str) -> list[Instruction]:
             inner = element(place, str(low + n))
             if inner is None:
                 break
-            code += value_moves(layout, inner, item)
+            if item:
+                code += value_moves(layout, inner, item)
         return code
     vtype = place.vtype
     if vtype is None:

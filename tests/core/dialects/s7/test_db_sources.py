@@ -218,3 +218,49 @@ def test_a_broken_db_source_is_a_warning_at_its_line(tmp_path: Path, bad: str,
     assert "Bad.db, line" in found[0].message()
     with pytest.raises(ParseError):
         parse_sources(bad)
+
+
+def test_an_xml_global_db_with_array_subelements_and_a_db_source_beside_xml_blocks(
+        tmp_path: Path) -> None:
+    from ladderworks.core.dialects.s7 import xml_open
+    from ladderworks.core.dialects.s7.sd_parser import parse_sd
+    from ladderworks.core.dialects.s7.xml_writer import write_block
+    from tests.core.dialects.s7.xml_docs import document
+
+    db = document([], kind="GlobalDB", name="Veri", interface=(
+        '<Section Name="Static"><Member Name="Dizi" Datatype="Array[1..3] of Int">'
+        '<Subelement Path="1"><StartValue>4</StartValue></Subelement>'
+        '<Subelement Path="3"><StartValue>-2</StartValue></Subelement></Member>'
+        '<Member Name="Oran" Datatype="LReal"><StartValue>0.3</StartValue></Member>'
+        '<Member Name="Ad" Datatype="String[8]"><StartValue>\'Pompa\'</StartValue></Member>'
+        '<Member Name="Acik" Datatype="Bool"><StartValue>TRUE</StartValue></Member>'
+        "</Section>"))
+    main = parse_sd(MAIN.replace('"Hat_DB".Lamps[3]', '"Veri".Acik')).block
+    (tmp_path / "Main.xml").write_text(write_block(main), "utf-8")
+    (tmp_path / "Veri.xml").write_text(db, "utf-8")
+    (tmp_path / "Hat_DB.db").write_text(DB, "utf-8")
+    program, diagnostics, _encoding = xml_open.open_path(tmp_path, None)
+    assert [d.code for d in diagnostics if d.is_error] == [], [d.message() for d in diagnostics]
+    compiled = compile_program(program)
+    assert compiled.binary is not None
+    engine = ScanEngine(compiled.binary)
+    engine.scan()
+    symbols = program.symbols
+    assert symbols is not None
+    first = symbols.address_of('"Veri".Dizi')
+    assert first is not None
+    memory = engine.memory
+    values = [memory.read(type(first)(first.area, first.byte + 2 * n), 2, signed=True)
+              for n in range(3)]
+    assert values == [4, 0, -2]
+    ratio = symbols.address_of('"Veri".Oran')
+    assert ratio is not None and typed.read(memory, ratio, typed.ValueType.LREAL) == 0.3
+    name = symbols.address_of('"Veri".Ad')
+    assert name is not None
+    data = memory.areas[name.area]
+    assert bytes(data[name.byte:name.byte + 7]) == bytes([8, 5]) + b"Pompa"
+    # "Veri".Acik starts TRUE: the MOVE of 'Merhaba dünya' into "Hat_DB".Name ran, cut at 10
+    hat = symbols.address_of('"Hat_DB".Name')
+    assert hat is not None
+    assert bytes(memory.areas[hat.area][hat.byte:hat.byte + 12]) == \
+        bytes([10, 10]) + "Merhaba dü".encode("cp1254")
