@@ -264,3 +264,39 @@ def test_an_xml_global_db_with_array_subelements_and_a_db_source_beside_xml_bloc
     assert hat is not None
     assert bytes(memory.areas[hat.area][hat.byte:hat.byte + 12]) == \
         bytes([10, 10]) + "Merhaba dü".encode("cp1254")
+
+
+@pytest.mark.parametrize("type_name, text, shown", [
+    ("Bool", "TRUE", "TRUE"), ("Int", "-7", "-7"), ("DInt", "DINT#70000", "70000"),
+    ("Real", "1.5", "1.5"), ("LReal", "0.1", "0.1"), ("LReal", "LREAL#-2.25", "-2.25"),
+    ("Time", "T#1m30s", "T#1M_30S"), ("Time", "T#-250ms", "T#-250MS"),
+    ("Byte", "16#0F", "16#0F"), ("Word", "16#BEEF", "16#BEEF"), ("Char", "'A'", "'A'"),
+    ("String[5]", "'Işık $'ta''", "'Işık '"), ("String", "'a$$b'", "'a$$b'"),
+    ("WString[3]", "WSTRING#'ğüş'", "WSTRING#'ğüş'"), ("USInt", "255", "255"),
+])
+def test_values_are_shown_and_taken_as_tia_spells_them(type_name: str, text: str,
+                                                       shown: str) -> None:
+    from ladderworks.core.address import Address, Area
+    from ladderworks.core.dialects.s7.layout import Place
+    from ladderworks.core.dialects.s7.values import show, store
+    from ladderworks.core.plc.memory import Memory
+
+    memory = Memory(byteorder="big")
+    place = Place(Address(Area.D, 10, 0 if type_name == "Bool" else None), type_name)
+    store(memory, place, text)
+    assert show(memory, place) == shown
+    store(memory, place, shown)  # what is shown is taken back
+    assert show(memory, place) == shown
+
+
+@pytest.mark.parametrize("type_name, text", [
+    ("Int", "70000"), ("Int", "abc"), ("String[4]", "abc"), ("LReal", "x"), ("Struct", "1"),
+    ("USInt", "-1"), ("Time", "5")])
+def test_a_value_not_of_the_type_is_refused(type_name: str, text: str) -> None:
+    from ladderworks.core.address import Address, Area
+    from ladderworks.core.dialects.s7.layout import Place
+    from ladderworks.core.dialects.s7.values import store
+    from ladderworks.core.plc.memory import Memory
+
+    with pytest.raises(ValueError):
+        store(Memory(byteorder="big"), Place(Address(Area.D, 0), type_name), text)
