@@ -2,7 +2,9 @@
 blocks and PLC tag tables; the entry block (the OB, else the first block) is lowered.
 
 An unchanged program saves byte for byte (FileSource: the entry block's file, one span); a
-changed S7 program is refused at Save (`printer.network_lines`): writing SD is not done yet.
+changed one is written by saving.py when its change is known as a change of its graph
+(`Program.graph`), else refused (`Dialect.refuse_changes`). `.db`/`.udt` sources beside the
+blocks are read with them.
 """
 
 from __future__ import annotations
