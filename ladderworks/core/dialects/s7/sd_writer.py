@@ -336,8 +336,45 @@ def _member_lines(member: Member) -> list[str]:
     return [f"{name_text(member.name)} : {member.type_name}{start};"]
 
 
+def _start_path(members: tuple[Member, ...], path: tuple[str, ...]) -> str:
+    """A BEGIN line's member path with the members' own spelling (`Data.Counts[2]`)."""
+    names = []
+    for component in path:
+        base, bracket, index = component.partition("[")
+        found = next((m for m in members if m.name.lower() == base), None)
+        names.append(_component((found.name if found else base) + bracket + index))
+        members = found.members if found is not None else ()
+    return ".".join(names)
+
+
+def source_text(block: Block) -> str:
+    """A global DB or a PLC data type as TIA's generated source (`.db`/`.udt`): STRUCT
+    members, a DB's BEGIN start values (db_source.py reads it back)."""
+    keyword = "TYPE" if block.kind == "Type" else "DATA_BLOCK"
+    lines = [f'{keyword} "{block.name}"']
+    if block.kind != "Type":
+        lines.append("{ S7_Optimized_Access := 'TRUE' }")
+    lines += ["VERSION : 0.1"]
+    members = tuple(m for s in ("Static", "Input", "Output", "InOut") for m in block.members(s))
+    if block.kind == "InstanceDB":
+        lines += ["NON_RETAIN", f'"{block.instance_of}"']
+    else:
+        lines += [*(["NON_RETAIN"] if block.kind != "Type" else []), "   STRUCT"]
+        lines += ["      " + line.replace(STEP, "   ") for m in members
+                  for line in _member_lines(m)]
+        lines.append("   END_STRUCT;")
+    if block.kind == "Type":
+        return "\n".join([*lines, "", "END_TYPE", ""])
+    lines += ["", "", "BEGIN"]
+    lines += [f"   {_start_path(members, path)} := {value};"
+              for path, value in block.starts.items()]
+    return "\n".join([*lines, "END_DATA_BLOCK", ""])
+
+
 def block_text(block: Block, culture: str = "en-US") -> tuple[str, str]:
     """A whole block as SD text (BOM, LF line ends) and its `.s7res` texts ("" when none)."""
+    if block.kind == "Type":
+        return source_text(block), ""
     head = ['S7_Optimized := "TRUE"']
     if block.number:
         head.append(f'S7_BlockNumber := "{block.number}"')

@@ -300,3 +300,14 @@ def test_a_value_not_of_the_type_is_refused(type_name: str, text: str) -> None:
 
     with pytest.raises(ValueError):
         store(Memory(byteorder="big"), Place(Address(Area.D, 0), type_name), text)
+
+
+def test_a_db_source_is_written_back_and_reads_the_same() -> None:
+    from ladderworks.core.dialects.s7.sd_writer import source_text
+
+    first = [p.block for p in parse_sources(DB)]
+    text = "\n".join(source_text(b) for b in first)
+    again = [p.block for p in parse_sources(text)]
+    assert [(b.kind, b.name, b.sections, b.starts) for b in again] == \
+        [(b.kind, b.name, b.sections, b.starts) for b in first]
+    assert "   STRUCT\n      Count : Int := 3;" in text and "   Counts[2] := -7;" in text
