@@ -19,7 +19,7 @@ from ladderworks.core.dialects.s7.graph import Block, S7Network, S7Program
 from ladderworks.core.dialects.s7.graph_shape import Shape, shape
 from ladderworks.core.dialects.s7.sd_save import SaveRefused, save_sd
 from ladderworks.core.dialects.s7.xml_save import save_xml
-from ladderworks.core.il.program import Program
+from ladderworks.core.il.program import Network, Program
 from ladderworks.core.il.textform import decode_text
 
 FORMS = ("sd", "xml")
@@ -70,13 +70,14 @@ class S7Source:
         return not self.changed() and keys == list(self.read)
 
 
-def lowered_keys(source: S7Source) -> list[tuple[object, ...]]:
-    """The keys of the engine networks the current graph lowers to (as the reader builds)."""
+def lower_graph(source: S7Source) -> list[Network]:
+    """The engine networks the current graph lowers to, as the reader builds them (a caller
+    that changed the graph sets `Program.networks` to these)."""
     from ladderworks.core.dialects.s7.layout import Layout
     from ladderworks.core.dialects.s7.lowering import lower_block
 
     networks, _found = lower_block(source.block, Layout(source.program))
-    return [network.key() for network in networks]
+    return networks
 
 
 def write_changed(program: Program) -> str | None:
@@ -85,7 +86,7 @@ def write_changed(program: Program) -> str | None:
     source = program.graph
     if not isinstance(source, S7Source) or source.unchanged():
         return None
-    if lowered_keys(source) != [network.key() for network in program.networks]:
+    if [n.key() for n in lower_graph(source)] != [n.key() for n in program.networks]:
         return None
     others = [b for b in source.program.blocks if b is not source.block]
     try:

@@ -23,9 +23,7 @@ from ladderworks.core.dialects.s7.graph import (
     Wire,
 )
 from ladderworks.core.dialects.s7.graph_shape import shape
-from ladderworks.core.dialects.s7.layout import Layout
-from ladderworks.core.dialects.s7.lowering import lower_block
-from ladderworks.core.dialects.s7.saving import S7Source, save_block
+from ladderworks.core.dialects.s7.saving import S7Source, lower_graph, save_block
 from ladderworks.core.dialects.s7.sd_parser import parse_sd
 from ladderworks.core.dialects.s7.sd_save import SaveRefused
 from ladderworks.core.dialects.s7.xml_reader import read_document
@@ -166,11 +164,6 @@ def test_xml_networks_added_and_removed_get_fresh_ids() -> None:
     assert b"Second lamp after 5 s" in out and "Yeni ağ".encode() in out
 
 
-def _lowered(source: S7Source) -> list:
-    networks, _found = lower_block(source.block, Layout(source.program))
-    return networks
-
-
 @pytest.mark.parametrize("form", ["s7", "s7-xml"])
 def test_save_writes_a_changed_program_known_as_graph_networks(form: str,
                                                                tmp_path: Path) -> None:
@@ -184,7 +177,7 @@ def test_save_writes_a_changed_program_known_as_graph_networks(form: str,
     assert encode_program(program) == path.read_bytes()
     _rename(source.block.networks[1], "Lamba 2", "Lamba 1")
     assert source.changed() == [1]
-    program.networks = _lowered(source)  # the engine's networks as the edited graph gives them
+    program.networks = lower_graph(source)  # the engine's networks as the edited graph gives them
     out = encode_program(program)
     assert out != path.read_bytes()
     shutil.copytree(path.parent, tmp_path / "copy")
