@@ -28,7 +28,7 @@ def _change(block, draw: st.DrawFn) -> list[int]:
     """Rename some operands, drop, move or add networks; the indexes changed."""
     networks = list(block.networks)
     changed: set[int] = set()
-    for index, network in enumerate(networks):
+    for network in networks:
         if draw(st.booleans()):
             for wire in network.wires:
                 if wire.source.operand is not None and \
