@@ -61,15 +61,16 @@ def size_of(type_name: str, members: tuple[Member, ...] = ()) -> int:
         return TIMER_BYTES
     if low in COUNTER_TYPES:
         return COUNTER_BYTES
+    array = _ARRAY_RE.match(type_name.strip())
+    if array is not None:  # an array of Struct: its elements' members
+        step = _aligned(size_of("Struct", members) if members else size_of(array.group(3)))
+        return max(0, int(array.group(2)) - int(array.group(1)) + 1) * step
     if low == "struct" or members:  # a Struct, a PLC data type's or an FB's members
         total = 0
         for member in members:  # as Layout places them
             size = size_of(member.type_name, member.members)
             total += (1 if size > 1 and total & 1 else 0) + _aligned(size)
         return max(2, _aligned(total))
-    array = _ARRAY_RE.match(type_name.strip())
-    if array is not None:
-        return array_size(array)
     string = _STRING_RE.match(low)
     if string is not None:  # S7 strings: max length, actual length, the characters
         length = int(string.group(1) or 254)
@@ -77,15 +78,9 @@ def size_of(type_name: str, members: tuple[Member, ...] = ()) -> int:
     return _SIZES.get(low, 16)
 
 
-def array_size(array: re.Match[str]) -> int:
-    """The bytes of an `Array[lo..hi] of T` (each element at an even byte when wider than one
-    byte, as size_of's members)."""
-    count = int(array.group(2)) - int(array.group(1)) + 1
-    return max(0, count) * _aligned(size_of(array.group(3)))
-
-
-def element(place: Place, index_text: str) -> Place | None:
-    """The element `[i]` of an array's place (a constant index in its bounds), else None."""
+def element(place: Place, index_text: str, step: int = 0) -> Place | None:
+    """The element `[i]` of an array's place (a constant index in its bounds; `step` its
+    elements' size when they have members), else None."""
     array = _ARRAY_RE.match(place.type_name.strip())
     if array is None:
         return None
@@ -96,7 +91,7 @@ def element(place: Place, index_text: str) -> Place | None:
     low, high, of = int(array.group(1)), int(array.group(2)), array.group(3).strip()
     if not low <= index <= high:
         return None
-    step = _aligned(size_of(of))
+    step = step or _aligned(size_of(of))
     base = place.address
     byte = base.byte + (index - low) * step
     return Place(Address(base.area, byte, 0 if of.lower() == "bool" else None), of)
@@ -245,6 +240,10 @@ class Layout:
     def size(self, member: Member) -> int:
         """size_of a member, its PLC data types' members counted."""
         member = self.typed(member)
+        array = _ARRAY_RE.match(member.type_name.strip())
+        if array is not None:
+            count = int(array.group(2)) - int(array.group(1)) + 1
+            return max(0, count) * self.element_size(member)
         if not member.members or member.type_name.strip('"').lower() in TIMER_TYPES | \
                 COUNTER_TYPES:
             return size_of(member.type_name, member.members)
@@ -254,35 +253,52 @@ class Layout:
             total += (1 if size > 1 and total & 1 else 0) + _aligned(size)
         return max(2, _aligned(total))
 
+    def element_member(self, member: Member) -> Member:
+        """An array member's element as a member (its type; a Struct's or PLC data type's
+        members)."""
+        array = _ARRAY_RE.match(member.type_name.strip())
+        of = array.group(3).strip() if array is not None else member.type_name
+        return self.typed(Member(member.name, "Struct" if member.members else of,
+                                 members=member.members))
+
+    def element_size(self, member: Member) -> int:
+        """The bytes between an array member's elements."""
+        return _aligned(self.size(self.element_member(member)))
+
+    def member_at(self, place: Place, member: Member, name: str) -> tuple[Place, Member] | None:
+        """A struct's member `name` (lower case) at its offset from the struct's place (an
+        array element's members, which have no places of their own)."""
+        offset = 0
+        for inner in self.typed(member).members:
+            size = self.size(inner)
+            if size > 1 and offset & 1:
+                offset += 1
+            if inner.name.lower() == name:
+                base = place.address
+                bit = 0 if inner.type_name.lower() == "bool" else None
+                return (Place(Address(base.area, base.byte + offset, bit), inner.type_name),
+                        self.typed(inner))
+            offset += _aligned(size)
+        return None
+
     def _lay(self, key: tuple[str, ...], member: Member) -> Place | None:
         """Place `member` (and its struct members) under `key`; None when there is no room."""
         found = self.places.get(key)
         if found is not None:
             return found
-        member = self.typed(member)
-        size = self.size(member)
-        base = self._allocate(size)
+        base = self._allocate(self.size(member))
         if base is None:
             return None
-        place = Place(Address(base.area, base.byte, 0) if member.type_name.lower() == "bool"
-                      else base, member.type_name)
-        self.places[key] = place
-        self.members[key] = member
-        offset = 0
-        for inner in member.members:
-            inner_size = self.size(inner)
-            if inner_size > 1 and offset & 1:
-                offset += 1
-            self._place_inner((*key, inner.name.lower()), inner,
-                              Address(base.area, base.byte + offset))
-            offset += _aligned(inner_size)
-        return place
+        self._place_inner(key, member, base)
+        return self.places[key]
 
     def _place_inner(self, key: tuple[str, ...], member: Member, at: Address) -> None:
         member = self.typed(member)
         bit = 0 if member.type_name.lower() == "bool" else None
         self.places[key] = Place(Address(at.area, at.byte, bit), member.type_name)
         self.members[key] = member
+        if _ARRAY_RE.match(member.type_name.strip()):
+            return  # an array of Struct's members are found by offset (`sub`)
         offset = 0
         for inner in member.members:
             size = self.size(inner)
@@ -339,6 +355,8 @@ class Layout:
         """The place of member path `rest` under the laid-out name `key` (an instance's Q,
         a struct's member), None if there is none."""
         place = self.places.get(key)
+        member = self.members.get(key)
+        by_offset = False  # inside an array element: members by their offsets
         if place is None:
             return None
         for name in rest:
@@ -354,16 +372,24 @@ class Layout:
                 place = Place(Address(base.area, base.byte + offset, bit), type_name)
                 continue
             stem, bracket, index = low.partition("[")
-            key = (*key, stem)
-            found = self.places.get(key)
-            if found is None:
-                return None
-            place = found
+            if by_offset:
+                pair = self.member_at(place, member, stem) if member is not None else None
+                if pair is None:
+                    return None
+                place, member = pair
+            else:
+                key = (*key, stem)
+                found = self.places.get(key)
+                if found is None:
+                    return None
+                place, member = found, self.members.get(key)
             for each in index.rstrip("]").split("][") if bracket else ():
-                inner = element(place, each)  # Arr[2] (a constant index; Arr[1][2] nested)
+                if member is None:
+                    return None
+                inner = element(place, each, self.element_size(member))  # Arr[2], Arr[1][2]
                 if inner is None:
                     return None
-                place = inner
+                place, member, by_offset = inner, self.element_member(member), True
         return place
 
     def resolve(self, block: Block, operand: Operand, as_instance: str = "",

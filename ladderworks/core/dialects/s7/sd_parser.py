@@ -169,7 +169,8 @@ class _Parser:
             tok = self.next()
             depth += {"[": 1, "]": -1}.get(tok.text, 0)
             parts.append(tok.text)
-            if self.word("END_VAR") or self.tok.kind == "pragma":
+            if self.word("END_VAR") or self.tok.kind == "pragma" or (
+                    tok.text.upper() == "OF" and self.word("STRUCT")):  # Array[…] of Struct
                 break
         if self.tok.kind == "end":
             raise self.fail("';'", inside)
@@ -201,6 +202,12 @@ class _Parser:
                 member = Member(_unquote(name_tok.text), "Struct", members=tuple(inner))
             else:
                 member = Member(_unquote(name_tok.text), self.type_text(inside))
+                if self.word("STRUCT"):  # Array[…] of Struct … END_STRUCT
+                    self.next()
+                    inner = self.members(inside, "END_STRUCT")
+                    self.next()
+                    member = Member(member.name, member.type_name + " Struct",
+                                    members=tuple(inner))
             if self.op(":="):
                 self.next()
                 start = self.type_text(inside)

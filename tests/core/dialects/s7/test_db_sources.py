@@ -311,3 +311,35 @@ def test_a_db_source_is_written_back_and_reads_the_same() -> None:
     assert [(b.kind, b.name, b.sections, b.starts) for b in again] == \
         [(b.kind, b.name, b.sections, b.starts) for b in first]
     assert "   STRUCT\n      Count : Int := 3;" in text and "   Counts[2] := -7;" in text
+
+
+def test_arrays_of_structs_and_of_plc_data_types_resolve_by_offset() -> None:
+    from ladderworks.core.dialects.s7.graph import S7Program
+
+    text = DB.replace("      M1 : \"Motor_UDT\";", """      M1 : "Motor_UDT";
+      Motors : Array[1..3] of "Motor_UDT";
+      Cells : Array[0..1] of Struct
+         Level : Int;
+         Full : Bool;
+         Timer : TON_TIME;
+      END_STRUCT;
+      After : Int;""")
+    layout = Layout(S7Program([p.block for p in parse_sources(text)]))
+    cells = next(m for m in parse_sources(text)[1].block.members("Static") if m.name == "Cells")
+    assert cells.type_name == "Array[0..1] of Struct" and len(cells.members) == 3
+    first = layout.global_name(("Hat_DB", "Cells[0]", "Level"))
+    second = layout.global_name(("Hat_DB", "Cells[1]", "Level"))
+    full = layout.global_name(("Hat_DB", "Cells[1]", "Full"))
+    q = layout.global_name(("Hat_DB", "Cells[1]", "Timer", "Q"))
+    after = layout.global_name(("Hat_DB", "After"))
+    assert None not in (first, second, full, q, after)
+    assert second.address.byte - first.address.byte == 20  # Int 2, Bool 1 (+1), TON 16
+    assert full.address.bit == 0 and full.address.byte == second.address.byte + 2
+    assert q.address == type(q.address)(q.address.area, second.address.byte + 4 + 8, 1)
+    assert after.address.byte >= first.address.byte + 40  # the array takes its room
+    motor = layout.global_name(("Hat_DB", "Motors[3]", "Speed"))
+    run = layout.global_name(("Hat_DB", "Motors[1]", "Run"))
+    assert motor is not None and run is not None and motor.type_name == "Int"
+    assert motor.address.byte - run.address.byte == 2 * 4 - 2  # elements of 4 bytes
+    assert layout.global_name(("Hat_DB", "Cells[2]", "Level")) is None
+    assert layout.global_name(("Hat_DB", "Cells[0]", "Nothing")) is None
