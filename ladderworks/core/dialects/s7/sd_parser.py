@@ -6,7 +6,9 @@ Description" (entry 109994073) as quoted in them: a block pragma, `ORGANIZATION_
 a pragma `{ S7_Language := "LAD"; S7_NetworkTitle := "MLC_x" }`, `NETWORK`, `RUNG wire#powerrail
 … END_RUNG [wire#w1]`, `END_NETWORK`. Elements of a rung are in series; `wire#wN` names the
 point where it stands; a rung ending `END_RUNG wire#wN` joins its power there (an OR), a rung
-starting `RUNG wire#wN` branches from it. docs/dialects.md, "SIMATIC SD".
+starting `RUNG wire#wN` branches from it. A global DB's or a type's generated source (`.db`,
+`.udt`: `STRUCT … END_STRUCT;`, `BEGIN` start values, several blocks a file) is read by
+`parse_sources` (db_source.py). docs/dialects.md, "SIMATIC SD", "S7-1200: global DB sources".
 """
 
 from __future__ import annotations
