@@ -10,11 +10,14 @@ encoding and line ends are kept. docs/dialects.md, "S7-1200: saving a changed bl
 
 from __future__ import annotations
 
+import html
 import re
 from collections.abc import Collection
+from xml.sax.saxutils import escape
 
 from ladderworks.core.dialects.s7.graph import Block, S7Network
 from ladderworks.core.dialects.s7.sd_save import SaveRefused
+from ladderworks.core.dialects.s7.texts import PREFERRED
 from ladderworks.core.dialects.s7.xml_forms import namespace
 from ladderworks.core.dialects.s7.xml_reader import read_document
 from ladderworks.core.dialects.s7.xml_writer import flgnet_lines, unit_lines
@@ -103,7 +106,33 @@ def _replaced(unit: str, network: S7Network, default: str, newline: str,
             raise SaveRefused("s7-save-unwritable", {"part": network.language})
         unit = unit[:empty.start()] + f"<NetworkSource>{fresh}</NetworkSource>" + \
             unit[empty.end():]
+    unit = _with_text(unit, "Title", network.title)
+    unit = _with_text(unit, "Comment", network.comment)
     return _LANGUAGE.sub(r"\1LAD\3", unit, count=1)
+
+
+_TEXT_BLOCK = r'<MultilingualText\b[^>]*CompositionName="{kind}"[^>]*>.*?</MultilingualText\s*>'
+_ITEM = re.compile(r"<Culture>([^<]*)</Culture>\s*<Text>([^<]*)</Text>|"
+                   r"<Culture>([^<]*)</Culture>\s*<Text\s*/>", re.S)
+
+
+def _with_text(unit: str, kind: str, text: str) -> str:
+    """The unit with its title or comment in the culture the reader shows (texts.PREFERRED)
+    set to `text` when that differs (the other cultures kept); as it was when it has none."""
+    found = re.search(_TEXT_BLOCK.format(kind=kind), unit, re.S)
+    if found is None:
+        return unit
+    items = {(m.group(1) or m.group(3) or ""): m for m in _ITEM.finditer(found.group())}
+    shown = {culture: html.unescape(m.group(2) or "") for culture, m in items.items()}
+    culture = next((c for c in PREFERRED if shown.get(c)), None) or next(
+        (c for c, t in shown.items() if t), None) or next(iter(items), None)
+    if culture is None or shown[culture] == text:
+        return unit
+    item = items[culture]
+    block = found.group()
+    fresh = f"<Culture>{escape(culture)}</Culture><Text>{escape(text)}</Text>"
+    block = block[:item.start()] + fresh + block[item.end():]
+    return unit[:found.start()] + block + unit[found.end():]
 
 
 def _splice(text: str, mine: list[re.Match[str]], pieces: list[tuple[re.Match[str] | None, str]],

@@ -199,3 +199,15 @@ def test_save_refuses_a_change_the_graph_does_not_know() -> None:
     _rename(source.block.networks[0], "Start", "Stop")  # a graph edit the engine does not hold
     with pytest.raises(Refused):
         encode_program(program)
+
+
+def test_a_changed_xml_networks_title_and_comment_are_written_in_the_culture_shown() -> None:
+    data = (EXAMPLES / "s7-xml" / "timers" / "Main.xml").read_bytes()
+    block = read_document(data).blocks[0]
+    block.networks[1].title = "İkinci <lamba> & 5 s"
+    out = save_block(data, "xml", block, [1])
+    back = read_document(out)
+    assert back.blocks[0].networks[1].title == "İkinci <lamba> & 5 s"
+    assert back.texts[("Main", 2, "title")]["tr-TR"] == "5 s sonra ikinci lamba"  # kept
+    assert back.blocks[0].networks[0].title == block.networks[0].title
+    assert out.count(b"<MultilingualText ") == data.count(b"<MultilingualText ")
