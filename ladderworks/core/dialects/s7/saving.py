@@ -32,7 +32,7 @@ def save_block(original: bytes, form: str, block: Block, changed: Collection[int
     one it replaces by `line`/`end_line` as read (0: a new network); a network of the file that
     no network of `block` names is removed. SaveRefused when it cannot be written."""
     if form == "sd":
-        return save_sd(original, block, changed)
+        return save_sd(original, block, changed, others)
     if form == "xml":
         return save_xml(original, block, changed, others)
     raise SaveRefused("s7-save-unwritable", {"part": form})

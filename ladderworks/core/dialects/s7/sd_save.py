@@ -54,9 +54,11 @@ def _indent(lines: list[str], index: int) -> tuple[str, str]:
     return pad, STEP
 
 
-def save_sd(original: bytes, block: Block, changed: Collection[int]) -> bytes:
+def save_sd(original: bytes, block: Block, changed: Collection[int],
+            others: list[Block] | None = None) -> bytes:
     """The SD file's bytes with `block`'s networks at `changed` (indexes into block.networks)
-    rewritten; SaveRefused when the original does not parse or a network cannot be written."""
+    rewritten (`others`, the program's blocks, spell the calls' parameters); SaveRefused when
+    the original does not parse or a network cannot be written."""
     text, form, _problems, (lines, ends) = decode_lines(original)
     try:
         read = parse_sd(text).block
@@ -82,7 +84,7 @@ def save_sd(original: bytes, block: Block, changed: Collection[int]) -> bytes:
         if region is not None and index not in changed:
             out += [lines[i] + ends[i] for i in range(region[0], region[2])]
             continue
-        fresh = _fresh(network, region is not None, pad, step)
+        fresh = _fresh(network, region is not None, pad, step, others)
         if region is not None:
             start, net, stop = region
             out += [lines[i] + ends[i] for i in range(start, net)]
@@ -101,13 +103,14 @@ def _restep(line: str, step: str) -> str:
     return step * ((len(line) - len(body)) // len(STEP)) + body
 
 
-def _fresh(network: S7Network, body_only: bool, pad: str, step: str) -> list[str]:
+def _fresh(network: S7Network, body_only: bool, pad: str, step: str,
+           others: list[Block] | None) -> list[str]:
     try:
         if body_only:
-            inner = [STEP + line for line in body_lines(network)]
+            inner = [STEP + line for line in body_lines(network, others)]
             lines = ["NETWORK", *inner, "END_NETWORK"]
         else:
-            lines = network_lines(network)
+            lines = network_lines(network, "", others)
     except Unwritable as error:
         raise SaveRefused("s7-save-unwritable", {"part": str(error)}) from None
     return [pad + _restep(line, step) for line in lines]

@@ -93,8 +93,9 @@ def _templates(template: dict[str, str]) -> str:
 class _Rungs:
     """The rungs of one LAD network: chains of parts, named points, `O` parts as names."""
 
-    def __init__(self, network: S7Network) -> None:
+    def __init__(self, network: S7Network, blocks: list[Block] | None = None) -> None:
         self.network = network
+        self.spelling = _parameter_names(blocks or [])
         self.parts = {p.uid: p for p in network.parts}
         self.feeds: dict[tuple[str, str, bool], list[End]] = {}  # source key → targets
         self.source_of: dict[tuple[str, str], End] = {}  # (part, pin) → its source
@@ -276,8 +277,10 @@ class _Rungs:
         main_in = pins(part)[0]
         args: list[str] = []
         switch: dict[str, str] = {}
+        names = self.spelling.get(part.call.lower(), {}) if part.name == "Call" else {}
         for pin, operand, direction in self.operands.get(part.uid, []):
             text = operand_text(operand)
+            pin = names.get(pin, pin)  # a call's parameter as its block spells it
             if part.name == "Switch" and re.fullmatch(r"(eq|ne|lt|gt|le|ge)\d+", pin):
                 switch[pin] = text
             elif positional and pin == single and direction == ":=":
@@ -287,6 +290,7 @@ class _Rungs:
         for (uid, pin), source in self.source_of.items():
             if uid == part.uid and pin != main_in:
                 value = "wire#" + self.name_of(source)
+                pin = names.get(pin, pin)
                 args.append(value if positional and pin == single else f"{pin} := {value}")
         if part.name == "Switch":
             for n, dest in enumerate(part.dests, start=1):
@@ -300,28 +304,42 @@ class _Rungs:
         return args
 
 
+def _parameter_names(blocks: list[Block]) -> dict[str, dict[str, str]]:
+    """Each callable name's parameters as its interface spells them (the graph's pins are
+    lower case): FCs and FBs by name, instance DBs by their FB's."""
+    by_name = {b.name.lower(): b for b in blocks}
+    found: dict[str, dict[str, str]] = {}
+    for block in blocks:
+        callee = by_name.get(block.instance_of.lower()) if block.kind == "InstanceDB" else block
+        if callee is not None and callee.kind in ("FC", "FB"):
+            found[block.name.lower()] = {m.name.lower(): m.name for s in ("Input", "Output",
+                                         "InOut") for m in callee.members(s)}
+    return found
+
+
 def _pin_order(pin: str) -> tuple[int, str]:
     digits = "".join(c for c in pin if c.isdigit())
     return (int(digits) if digits else 0, pin)
 
 
-def network_lines(network: S7Network, network_id: str = "") -> list[str]:
+def network_lines(network: S7Network, network_id: str = "",
+                  blocks: list[Block] | None = None) -> list[str]:
     """A network as SD lines without indentation: its pragma, NETWORK … END_NETWORK.
-    `network_id` is its title's text id in the `.s7res` ("" for none). Unwritable when a part
-    cannot be said in SD."""
+    `network_id` is its title's text id in the `.s7res` ("" for none); `blocks` (the
+    program's) spell the calls' parameters. Unwritable when a part cannot be said in SD."""
     pragma = [f'S7_Language := "{network.language}"']
     if network_id:
         pragma.append(f'S7_NetworkTitle := "{network_id}"')
     lines = ["{", *[STEP + item + (";" if n < len(pragma) - 1 else "")
                     for n, item in enumerate(pragma)], "}", "NETWORK"]
-    return [*lines, *[STEP + line for line in body_lines(network)], "END_NETWORK"]
+    return [*lines, *[STEP + line for line in body_lines(network, blocks)], "END_NETWORK"]
 
 
-def body_lines(network: S7Network) -> list[str]:
+def body_lines(network: S7Network, blocks: list[Block] | None = None) -> list[str]:
     """The lines between NETWORK and END_NETWORK, unindented."""
     if network.language.upper() not in ("LAD", "FBD"):
         return textwrap.dedent(network.source).splitlines()
-    rungs = _Rungs(network)
+    rungs = _Rungs(network, blocks)
     lines = [f"Label( {name_text(p.label)} )" for p in network.parts if p.name == "Label"]
     for rung in rungs.rungs():
         lines += rung
@@ -371,8 +389,10 @@ def source_text(block: Block) -> str:
     return "\n".join([*lines, "END_DATA_BLOCK", ""])
 
 
-def block_text(block: Block, culture: str = "en-US") -> tuple[str, str]:
-    """A whole block as SD text (BOM, LF line ends) and its `.s7res` texts ("" when none)."""
+def block_text(block: Block, culture: str = "en-US",
+               blocks: list[Block] | None = None) -> tuple[str, str]:
+    """A whole block as SD text (BOM, LF line ends) and its `.s7res` texts ("" when none);
+    `blocks`, the program's, spell the calls' parameters."""
     if block.kind == "Type":
         return source_text(block), ""
     head = ['S7_Optimized := "TRUE"']
@@ -409,7 +429,7 @@ def block_text(block: Block, culture: str = "en-US") -> tuple[str, str]:
         if network.title:
             network_id = f"MLC_{n}"
             texts.append((network_id, network.title))
-        lines += [STEP + line for line in network_lines(network, network_id)]
+        lines += [STEP + line for line in network_lines(network, network_id, blocks)]
     lines += [f"END_{keyword}", ""]
     return "\n".join(lines), texts_text(texts, culture)
 

@@ -155,3 +155,15 @@ def test_texts_are_quoted_when_yaml_needs_it() -> None:
     text = texts_text([("a", "plain"), ("b", "x: y"), ("c", "'quoted'")], "tr-TR")
     assert read_texts(text) == {"a": {"tr-TR": "plain"}, "b": {"tr-TR": "x: y"},
                                 "c": {"tr-TR": "'quoted'"}}
+
+
+def test_calls_keep_their_parameters_spelled_as_the_called_blocks_interface() -> None:
+    folder = EXAMPLES / "calls"
+    blocks = [parse_sd((folder / f"{name}.s7dcl").read_text("utf-8-sig")).block
+              for name in ("Main", "Kilit", "Gecikme", "Gecikme_DB")]
+    text = (folder / "Main.s7dcl").read_text("utf-8-sig")
+    written, _texts = block_text(blocks[0], blocks=blocks)
+    for line in ("Basla := \"Start\",", "Calisiyor := \"Motor\"", "Cikis => \"Fan\","):
+        assert line in written and line in text
+    bare, _texts = block_text(blocks[0])
+    assert "basla := \"Start\"," in bare  # without the program: the graph's own pin names
