@@ -1,7 +1,7 @@
-"""Fatek FBs table functions: FUN 24 SUM, 25 MEAN, 100 R->T, 101 T->R, 103 BT_M, 104 T_SWP,
-107 T_FIL (docs/dialects.md, Fatek). A table is L consecutive registers (register pairs in the
-D form) from its first; L outside 1-256, or a table running past its area: ERR (FO0, FO1 for
-the pointer moves), nothing written."""
+"""Fatek FBs table functions: FUN 24 SUM, 25 MEAN, 100 R->T, 101 T->R, 102 T->T, 103 BT_M,
+104 T_SWP, 107 T_FIL (docs/dialects.md, Fatek). A table is L consecutive registers (register
+pairs in the D form) from its first; L outside 1-256, or a table running past its area: ERR
+(FO0, FO1 for the pointer moves), nothing written."""
 
 from __future__ import annotations
 
@@ -103,19 +103,27 @@ function("FBS.T_SWP")(_table_box(3, (1, 2), _table_swap))
 function("FBS.T_FIL")(_table_box(3, (2,), _table_fill))
 
 
-def _pointer_move(to_table: bool) -> FunctionImpl:
-    """FUN 100 R→T (Rs, Td, L, Pr: Td[Pr] := Rs) and 101 T→R (Ts, L, Pr, Rd: Rd := Ts[Pr]).
-    Inputs EN, PIN, CLR: CLR = 1 sets Pr to 0 and does nothing else; after a move PIN = 1 moves
-    Pr on by one, up to L - 1 where it stays. FO0 PEND: the move was at the table's last entry;
-    FO1 ERR: Pr outside 0 .. L - 1 or L outside 1-256, nothing moved."""
+def _pointer_move(kind: str) -> FunctionImpl:
+    """FUN 100 R→T (Rs, Td, L, Pr: Td[Pr] := Rs), 101 T→R (Ts, L, Pr, Rd: Rd := Ts[Pr]) and
+    102 T→T (Ts, Td, L, Pr: Td[Pr] := Ts[Pr]). Inputs EN, PIN, CLR: CLR = 1 sets Pr to 0 and
+    does nothing else; after a move PIN = 1 moves Pr on by one, up to L - 1 where it stays.
+    FO0 PEND: the move was at the tables' last entry; FO1 ERR: Pr outside 0 .. L - 1 or L
+    outside 1-256, nothing moved. Pr is a 16-bit register in the D form too (FBs manual 7-83)."""
 
     def impl(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
              params: tuple) -> bool:
         """One pointer move when the box runs."""
-        if to_table:
-            mode, source, table, length, pointer, fo = params
+        mode, fo = params[0], params[-1]
+        tables: tuple[object, ...]
+        if kind == "R->T":
+            _m, source, table, length, pointer, _fo = params
+            tables = (table,)
+        elif kind == "T->R":
+            _m, table, length, pointer, source, _fo = params
+            tables = (table,)
         else:
-            mode, table, length, pointer, source, fo = params
+            _m, source, table, length, pointer, _fo = params
+            tables = (source, table)
         enable = runs(state, mode, inputs[0])
         memory = ctx.memory
         if len(inputs) > 2 and inputs[2]:
@@ -126,14 +134,16 @@ def _pointer_move(to_table: bool) -> FunctionImpl:
         size = width(mode)
         count = operand_value(memory, length, 2)
         at = memory.read(pointer, 2, signed=True)
-        if not (_fits(ctx, table, count, size) and 0 <= at < count):
+        if not (all(_fits(ctx, t, count, size) for t in tables) and 0 <= at < count):
             return _outputs(ctx, state, fo, False, True)
         assert isinstance(table, Address)
         entry = table.offset(at * size)
-        if to_table:
+        if kind == "R->T":
             memory.write(entry, operand_value(memory, source, size), size)
-        else:
+        elif kind == "T->R":
             memory.write(source, memory.read(entry, size), size)
+        else:
+            memory.write(entry, memory.read(source.offset(at * size), size), size)
         if len(inputs) > 1 and inputs[1] and at < count - 1:
             memory.write(pointer, at + 1, 2)
         return _outputs(ctx, state, fo, at == count - 1, False)
@@ -147,5 +157,6 @@ def _outputs(ctx: FunctionContext, state: dict, fo: object, *bits: bool) -> bool
     return bits[0]
 
 
-function("FBS.R_T")(_pointer_move(True))
-function("FBS.T_R")(_pointer_move(False))
+function("FBS.R_T")(_pointer_move("R->T"))
+function("FBS.T_R")(_pointer_move("T->R"))
+function("FBS.T_T")(_pointer_move("T->T"))
