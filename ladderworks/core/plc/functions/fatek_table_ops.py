@@ -12,27 +12,12 @@ from collections.abc import Callable
 from ladderworks.core.address import Address
 from ladderworks.core.plc.functions import FunctionContext, FunctionImpl, function
 from ladderworks.core.plc.functions.fatek_data import runs, width
-from ladderworks.core.plc.functions.fatek_timing import operand_value, write_outputs
-
-MAX_LENGTH = 256
-
-
-def _outputs(ctx: FunctionContext, state: dict, fo: object, *bits: bool) -> bool:
-    write_outputs(ctx.memory, fo, *bits)
-    state["fo0"] = bits[0]
-    return bits[0]
+from ladderworks.core.plc.functions.fatek_tables import fits, outputs
+from ladderworks.core.plc.functions.fatek_timing import operand_value
 
 
 def _held(state: dict) -> bool:
     return bool(state.get("fo0", False))
-
-
-def _fits(ctx: FunctionContext, table: object, length: int, size: int, low: int = 1,
-          high: int = MAX_LENGTH) -> bool:
-    """Whether `table` holds `length` entries of `size` bytes inside its area and the length
-    is in low..high."""
-    return (isinstance(table, Address) and low <= length <= high
-            and table.byte + length * size <= len(ctx.memory.areas[table.area]))
 
 
 def _read(ctx: FunctionContext, table: Address, at: int, size: int) -> int:
@@ -64,17 +49,17 @@ def _search(first: int, matches: Matches, control: int) -> FunctionImpl:
         count = operand_value(ctx.memory, length, 2)
         at = ctx.memory.read(pointer, 2, signed=True)
         tables = params[first:-3]
-        if not (all(_fits(ctx, t, count, size, 2) for t in tables) and 0 <= at < count):
-            return _outputs(ctx, state, fo, False, False, True)
+        if not (all(fits(ctx, t, count, size, 2) for t in tables) and 0 <= at < count):
+            return outputs(ctx, state, fo, False, False, True)
         head = len(inputs) > 1 and inputs[1]
         start = 0 if head or at == count - 1 else at + 1
         flag = control >= 0 and len(inputs) > control and inputs[control]
         for k in range(start, count):
             if matches(ctx, params, k, size, flag):
                 ctx.memory.write(pointer, k, 2)
-                return _outputs(ctx, state, fo, True, k == count - 1, False)
+                return outputs(ctx, state, fo, True, k == count - 1, False)
         ctx.memory.write(pointer, count - 1, 2)
-        return _outputs(ctx, state, fo, False, True, False)
+        return outputs(ctx, state, fo, False, True, False)
 
     return impl
 
@@ -112,8 +97,8 @@ def _moving(shift: bool) -> FunctionImpl:
             return _held(state)
         size = width(mode)
         count = operand_value(ctx.memory, length, 2)
-        if not _fits(ctx, table, count, size, 2):
-            return _outputs(ctx, state, fo, True)
+        if not fits(ctx, table, count, size, 2):
+            return outputs(ctx, state, fo, True)
         entries = [_read(ctx, table, k, size) for k in range(count)]
         left = len(inputs) > 1 and inputs[1]
         out = entries[-1] if left else entries[0]
@@ -124,7 +109,7 @@ def _moving(shift: bool) -> FunctionImpl:
             _write(ctx, table, k, size, entry)
         if shift:
             ctx.memory.write(outgoing, out, size)
-        return _outputs(ctx, state, fo, False)
+        return outputs(ctx, state, fo, False)
 
     return impl
 
@@ -150,8 +135,8 @@ def _keeper(queue: bool) -> FunctionImpl:
         size = width(mode)
         count = operand_value(ctx.memory, length, 2)
         at = ctx.memory.read(pointer, 2, signed=True)
-        if not (_fits(ctx, table, count, size, 2) and 0 <= at <= count):
-            return _outputs(ctx, state, fo, False, False, True)
+        if not (fits(ctx, table, count, size, 2) and 0 <= at <= count):
+            return outputs(ctx, state, fo, False, False, True)
         if len(inputs) > 1 and inputs[1]:
             if at < count:
                 if queue:
@@ -164,7 +149,7 @@ def _keeper(queue: bool) -> FunctionImpl:
             ctx.memory.write(outgoing, _read(ctx, table, at - 1, size), size)
             at -= 1
         ctx.memory.write(pointer, at, 2)
-        return _outputs(ctx, state, fo, at == 0, at == count, False)
+        return outputs(ctx, state, fo, at == 0, at == count, False)
 
     return impl
 
@@ -184,11 +169,11 @@ def fatek_sort(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
         return _held(state)
     size = width(mode)
     count = operand_value(ctx.memory, length, 2)
-    if not all(_fits(ctx, t, count, size, 2, 127) for t in (source, target)):
-        return _outputs(ctx, state, fo, True)
+    if not all(fits(ctx, t, count, size, 2, 127) for t in (source, target)):
+        return outputs(ctx, state, fo, True)
     ascending = len(inputs) > 1 and inputs[1]
     entries = sorted((_read(ctx, source, k, size) for k in range(count)),
                      reverse=not ascending)
     for k, entry in enumerate(entries):
         _write(ctx, target, k, size, entry)
-    return _outputs(ctx, state, fo, False)
+    return outputs(ctx, state, fo, False)

@@ -5,6 +5,8 @@ drawn with its inputs and FO pins coded back to the same instructions."""
 
 from __future__ import annotations
 
+from ladderworks.core.dialects.functions import check_params, operand_texts
+from ladderworks.core.instructions import lookup
 from ladderworks.core.ladder.decompose import network_to_instructions
 from ladderworks.core.ladder.layout import layout_network
 from tests.core.dialects.fatek.test_families import MODES, get, plc, put, scan
@@ -215,3 +217,13 @@ def test_each_box_is_drawn_with_its_inputs_and_coded_back() -> None:
         assert net.listing is None, network.instructions
         code, problems = network_to_instructions(net, index, "fatek")
         assert code == network.instructions, problems
+
+
+def test_the_function_dialog_reads_their_operands_as_listing_lines() -> None:
+    queue, sort = lookup("FBS.QUEUE"), lookup("FBS.SORT")
+    assert queue is not None and sort is not None
+    texts = ["P", "R0", "R2", "10", "R1", "R20"]
+    params, problems = check_params(queue, texts, "fatek")
+    assert problems == [] and params is not None and operand_texts(queue, params) == texts
+    params, problems = check_params(sort, ["D", "R0", "7", "4"], "fatek")
+    assert params is None and problems[0].args["index"] == 3  # D must be a register
