@@ -1,6 +1,7 @@
-"""The Fatek table FUNs added for issue 37 (FBs-PLC manual §7, "Table Instructions", FUN
-100-113): T→T, the searches R-T_S and T-T_C, T_SHF, T_ROT, QUEUE, STACK and SORT, with their
-inputs, operands in the listing's order and FO outputs (docs/dialects.md, Fatek's FUN table).
+"""The Fatek FUNs added for issue 37's last part: the table FUNs (FBs-PLC manual §7, "Table
+Instructions", FUN 100-113) T→T, the searches R-T_S and T-T_C, T_SHF, T_ROT, QUEUE, STACK and
+SORT, and the nibble moves FUN 47 UNIT, 48 DIST, with their inputs, operands in the listing's
+order and FO outputs (docs/dialects.md, Fatek's FUN table).
 
 A control input's two states are the words above and under its slash (`L/R` 1 left, `D/S` 1
 different, `A/D` 1 ascending, `I/O` 1 in): the FB-PLC manual's §6.1 rule for `U/D`."""
@@ -44,8 +45,16 @@ TABLE_ROWS: tuple[InstructionSpec, ...] = (
     _table(113, "SORT", "SORT", "Data sort", "VERİ SIRALA", ("EN", "A/D"),
            register("S", _READ), register("output"), value("L")),
 )
+# FUN 47 UNIT (S: the first of N registers) and 48 DIST (S: a value), N, D; FO0 ERR
+NIBBLE_ROWS: tuple[InstructionSpec, ...] = (
+    _table(47, "UNIT", "UNIT", "Nibble unite", "YARIM BAYT BİRLEŞTİR", ("EN",),
+           register("S", _READ), value("N"), register("output")),
+    _table(48, "DIST", "DIST", "Nibble distribute", "YARIM BAYT DAĞIT", ("EN",),
+           value("S"), value("N"), register("output")),
+)
 # the modules of core/plc/functions that run them
 TABLE_FAMILIES: dict[str, tuple[str, ...]] = {
     "fatek_tables": ("FBS.T_T",),
     "fatek_table_ops": tuple(spec.name for spec in TABLE_ROWS if spec.name != "FBS.T_T"),
+    "fatek_bits": ("FBS.UNIT", "FBS.DIST"),
 }
