@@ -219,10 +219,11 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
         pin_nets = [nets.net((br + offset, bc + box.width)) for offset, _ in box.outputs]
         if len({output, *pin_nets}) < len(pin_nets) + 1:
             report("coil-branch", box_anchor)  # two output pins joined
+        pin_blocks, pin_ends, edges = _pin_blocks(pin_nets, edges, coils, box_anchor, report)
         for cell, _, net in coils:
-            if output is None and net not in pin_nets:
+            if output is None and net not in pin_ends:
                 report("box-output", cell, name=box.name)
-            elif net != output and net not in pin_nets:
+            elif net != output and net not in pin_ends:
                 report("coil-branch", cell)
         for i, target in enumerate(targets):
             if target == left:
@@ -294,20 +295,62 @@ def _read_grid(network: LadderNetwork, index: int | None, dialect: str,
             report("bridge", result.cell)
             return None, diags
         blocks.append(result)
-    pin_nets = [nets.net((box_anchor[0] + offset, box_anchor[1] + box.width))
-                for offset, _ in box.outputs]
-    own = [item for item in coils if item[2] not in pin_nets]
-    pins = [(contact, [item for item in coils if item[2] == net])
-            for (_, contact), net in zip(box.outputs, pin_nets, strict=True)]
+    own = [item for item in coils if item[2] not in pin_ends]
+    pins = [(contact, block, [item for item in coils if item[2] == net])
+            for (_, contact), block, net in zip(box.outputs, pin_blocks, pin_ends, strict=True)]
     rung = Rung(box=box, inputs=blocks, coils=[coil for _, coil, _ in own],
-                pins=[(contact, [coil for _, coil, _ in items]) for contact, items in pins],
+                pins=[(contact, block, [coil for _, coil, _ in items])
+                      for contact, block, items in pins],
                 box_cell=box_anchor,
                 coil_cells=[cell for cell, _, _ in own]
-                + [cell for _, items in pins for cell, _, _ in items])
+                + [cell for _, _, items in pins for cell, _, _ in items])
     _check_depth(rung, report)
     if has_errors(diags):
         return None, diags
     return rung, diags
+
+
+def _pin_blocks(pin_nets: list[int], edges: list[_Edge], coils: list, box_cell: Cell,
+                report: Callable[..., None]
+                ) -> tuple[list[Logic | None], list[int], list[_Edge]]:
+    """Each output pin's block in series after it (None: its coils hang on the pin) and the
+    net its coils hang on; the edges left for the box's inputs. A pin's contacts must all lead
+    to one net of coils, and no other path may reach them."""
+    blocks: list[Logic | None] = []
+    ends: list[int] = []
+    taken: set[int] = set()
+    for pin in pin_nets:
+        reach = _reach({pin}, edges, True)
+        own = [e for e in edges if e.src in reach]
+        taken.update(id(e) for e in own)
+        if not own:
+            blocks.append(None)
+            ends.append(pin)
+            continue
+        hung = {net for _, _, net in coils if net in reach}
+        if len(hung) != 1:
+            report("open-circuit" if not hung else "coil-branch", own[0].cell)
+            blocks.append(None)
+            ends.append(pin)
+            continue
+        end = hung.pop()
+        feeding = _reach({end}, own, False)
+        for e in own:
+            if e.dst not in feeding:
+                report("open-circuit", e.cell)
+        entering = [e for e in edges if e.dst in reach and e.src not in reach]
+        if entering:
+            report("bridge", entering[0].cell)  # other logic joins the pin's block
+        result = _reduce([e for e in own if e.dst in feeding], pin, end)
+        if isinstance(result, _Edge):
+            report("bridge", result.cell)
+            blocks.append(None)
+        else:
+            blocks.append(result)
+        ends.append(end)
+    if len(set(ends)) < len(ends):
+        report("coil-branch", box_cell)  # two pins' blocks joined
+    return blocks, ends, [e for e in edges if id(e) not in taken]
 
 
 def _read_chain(left: int, outputs: list[int], useful: list[_Edge],
