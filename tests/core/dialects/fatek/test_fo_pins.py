@@ -190,3 +190,37 @@ def test_logic_or_ed_with_a_pin_stays_a_rung_of_its_own() -> None:
     assert len(program.networks) == 2
     for network in program.networks:
         assert layout_network(network.instructions).listing is None
+
+
+def test_pins_chosen_in_the_editor_are_coded_with_their_coils() -> None:
+    """A box with only W1 gets FO2 and FO1 shown (each on a row of its own); the coils drawn
+    on them code as `RD FO.n` and the coil; FO2 taken away again keeps FO1 on its row."""
+    from ladderworks.core.ladder.edits import EditRefused
+    from ladderworks.core.ladder.output_pins import set_output_pins, shown_pins
+
+    program = fatek("ORG X0\nFUN 17 CMP\n Sa: R0\n Sb: R1\nFO 0\nOUT Y0\n")
+    net = layout_network(program.networks[0].instructions)
+    (row, col), box = next((c, e) for c, e in net.cells.items() if isinstance(e, FunctionBox))
+    set_output_pins(net, row, col + 1, (2, 1, 9))  # any cell of the box; 9 is no FO bit
+    box = net.cells[(row, col)]
+    assert isinstance(box, FunctionBox) and shown_pins(box) == (1, 2) and box.height == 3
+    coils = {1: "Y1", 2: "Y2"}
+    for offset, _contact in box.outputs:
+        for c in range(col + box.width, net.coil_column):
+            net.cells[(row + offset, c)] = WIRE
+        net.cells[(row + offset, net.coil_column)] = Coil(
+            parse_bytes(f"ORG X0\nOUT {coils[offset]}\n".encode(), "fatek").program
+            .networks[0].instructions[1].operand)
+    code, problems = network_to_instructions(net, 0, "fatek")
+    assert code is not None, problems
+    assert [(ins.name, str(ins.operand)) for ins in code[-4:]] == [
+        ("RD", "R2700.1"), ("WRT", "Y0.1"), ("RD", "R2700.2"), ("WRT", "Y0.2")]
+    set_output_pins(net, row, col, (1,))
+    box = net.cells[(row, col)]
+    assert isinstance(box, FunctionBox) and [o for o, _ in box.outputs] == [1]
+    try:
+        set_output_pins(net, row, net.coil_column, (1,))
+    except EditRefused as refused:
+        assert refused.diagnostic.code == "edit-no-pins"
+    else:
+        raise AssertionError("a coil has no pins")
