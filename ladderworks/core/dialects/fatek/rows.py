@@ -10,7 +10,12 @@ from ladderworks.core.dialects.fatek.row_parts import fun_row as _row
 from ladderworks.core.dialects.fatek.row_parts import number as _number
 from ladderworks.core.dialects.fatek.row_parts import register as _register
 from ladderworks.core.dialects.fatek.row_parts import value as _value
-from ladderworks.core.dialects.fatek.rows_tables import NIBBLE_ROWS, TABLE_FAMILIES, TABLE_ROWS
+from ladderworks.core.dialects.fatek.rows_tables import (
+    ADDED_FAMILIES,
+    NIBBLE_ROWS,
+    TABLE_ROWS,
+    WIDE_ROWS,
+)
 from ladderworks.core.instruction_fields import Operation
 from ladderworks.core.instructions import (
     FUNCTION_OPCODE,
@@ -187,6 +192,7 @@ ROWS: tuple[InstructionSpec, ...] = (
          params=(MODE, _value("S"), _register("output"), FO)),
     *WORD_ROWS,
     *NIBBLE_ROWS,
+    *WIDE_ROWS,
     *TABLE_ROWS,
     _row("FBS.ASCWR", SUB_BASE + 94, "ASCWR", "ASCII write", "ASCII YAZ",
          inputs=("EN", "PAU", "ABT"),
@@ -268,9 +274,10 @@ FAMILIES: dict[str, tuple[str, ...]] = {
                  "FBS.FUN"),
     "fatek_convert": ("FBS.BCD", "FBS.BIN"),
     "fatek_words": WORD_FAMILY,
-    "fatek_tables": (*TABLE_FAMILY, *TABLE_FAMILIES["fatek_tables"]),
-    "fatek_table_ops": TABLE_FAMILIES["fatek_table_ops"],
-    "fatek_bits": (*BITS_FAMILY, *TABLE_FAMILIES["fatek_bits"]),
+    "fatek_tables": TABLE_FAMILY,
+    "fatek_bits": BITS_FAMILY,
     "fatek_contacts": tuple(spec.name for spec in PLACED),
     "fatek_timing": ("FBS.TMR", "FBS.CTR", "FBS.UDCTR", "FBS.RST", "FBS.TU", "FBS.TD"),
 }
+for _module, _names in ADDED_FAMILIES.items():
+    FAMILIES[_module] = (*FAMILIES.get(_module, ()), *_names)

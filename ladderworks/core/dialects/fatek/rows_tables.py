@@ -1,14 +1,22 @@
 """The Fatek FUNs added for issue 37's last part: the table FUNs (FBs-PLC manual §7, "Table
 Instructions", FUN 100-113) T→T, the searches R-T_S and T-T_C, T_SHF, T_ROT, QUEUE, STACK and
-SORT, and the nibble moves FUN 47 UNIT, 48 DIST, with their inputs, operands in the listing's
-order and FO outputs (docs/dialects.md, Fatek's FUN table).
+SORT, the nibble moves FUN 47 UNIT, 48 DIST, FUN 23 DIV48 and 31 CRC16, with their inputs,
+operands in the listing's order and FO outputs (docs/dialects.md, Fatek's FUN table).
 
 A control input's two states are the words above and under its slash (`L/R` 1 left, `D/S` 1
 different, `A/D` 1 ascending, `I/O` 1 in): the FB-PLC manual's §6.1 rule for `U/D`."""
 
 from __future__ import annotations
 
-from ladderworks.core.dialects.fatek.row_parts import FO, MODE, SUB_BASE, fun_row, register, value
+from ladderworks.core.dialects.fatek.row_parts import (
+    FO,
+    MODE,
+    SUB_BASE,
+    fun_row,
+    number,
+    register,
+    value,
+)
 from ladderworks.core.instructions import InstructionSpec, Param, ParamAccess
 
 _READ, _BOTH = ParamAccess.READ, ParamAccess.READ_WRITE
@@ -52,9 +60,19 @@ NIBBLE_ROWS: tuple[InstructionSpec, ...] = (
     _table(48, "DIST", "DIST", "Nibble distribute", "YARIM BAYT DAĞIT", ("EN",),
            value("S"), value("N"), register("output")),
 )
-# the modules of core/plc/functions that run them
-TABLE_FAMILIES: dict[str, tuple[str, ...]] = {
+# FUN 23 DIV48 (EN, U/S; Sa, Sb, D: three registers each) and 31 CRC16 (MD, S, N, D); FO0
+# D=0, FO1 ERR (the FBs manual's pages 7-2 and 7-10)
+WIDE_ROWS: tuple[InstructionSpec, ...] = (
+    _table(23, "DIV48", "DIV48", "48-bit division", "48 BİTLİK BÖLME", ("EN", "U/S"),
+           register("Sa", _READ), register("Sb", _READ), register("output")),
+    _table(31, "CRC16", "CRC16", "CRC16 calculation", "CRC16 HESAPLA", ("EN",),
+           number("MD", 0, 255), register("S", _READ), value("N"), register("output")),
+)
+# the modules of core/plc/functions that run them (merged into rows.FAMILIES)
+ADDED_FAMILIES: dict[str, tuple[str, ...]] = {
     "fatek_tables": ("FBS.T_T",),
     "fatek_table_ops": tuple(spec.name for spec in TABLE_ROWS if spec.name != "FBS.T_T"),
     "fatek_bits": ("FBS.UNIT", "FBS.DIST"),
+    "fatek_data": ("FBS.DIV48",),
+    "fatek_convert": ("FBS.CRC16",),
 }
