@@ -49,6 +49,9 @@ TABLE_ROWS: tuple[InstructionSpec, ...] = (
     _table(111, "STACK", "STACK", "Stack (last in, first out)", "YIĞIN (SON GİREN İLK ÇIKAR)",
            ("EN", "I/O"), value("IW"), register("ST", _BOTH), value("L"), register("Pr", _BOTH),
            register("OW")),
+    # FO0 ERR [chosen]: Rs, the zone table Ts (L pairs lower, upper), L, the result bits D
+    _table(112, "BKCMP", "BKCMP", "Block compare", "BLOK KARŞILAŞTIR", ("EN",),
+           value("Rs"), register("Ts", _READ), value("L"), register("output")),
     # FO0 ERR
     _table(113, "SORT", "SORT", "Data sort", "VERİ SIRALA", ("EN", "A/D"),
            register("S", _READ), register("output"), value("L")),

@@ -1,5 +1,6 @@
 """Fatek FBs table functions that search, shift and keep tables: FUN 105 R-T_S, 106 T-T_C,
-108 T_SHF, 109 T_ROT, 110 QUEUE, 111 STACK, 113 SORT (docs/dialects.md, Fatek's FUN table).
+108 T_SHF, 109 T_ROT, 110 QUEUE, 111 STACK, 112 BKCMP, 113 SORT (docs/dialects.md, Fatek's
+FUN table).
 
 Entries are registers (register pairs in the D form); a pointer Pr is a 16-bit register in
 both forms (FBs manual p. 7-83). A table that does not fit its area, a length out of range or
@@ -156,6 +157,31 @@ def _keeper(queue: bool) -> FunctionImpl:
 
 function("FBS.QUEUE")(_keeper(True))
 function("FBS.STACK")(_keeper(False))
+
+
+@function("FBS.BKCMP")
+def fatek_block_compare(ctx: FunctionContext, state: dict, inputs: tuple[bool, ...],
+                        params: tuple) -> bool:
+    """FUN 112 BKCMP (Rs, Ts, L, D) [chosen]: L zones, zone k's lower limit Ts[2k] and upper
+    limit Ts[2k + 1]; bit k of the 16-bit registers from D := lower ≤ Rs ≤ upper (0 when
+    lower > upper). FO0 ERR: L outside 1-128, nothing written."""
+    mode, reference, table, length, target, fo = params
+    if not runs(state, mode, inputs[0]):
+        return _held(state)
+    size = width(mode)
+    count = operand_value(ctx.memory, length, 2)
+    registers = (count + 15) // 16
+    if not (1 <= count <= 128 and fits(ctx, table, 2 * count, size, 2)
+            and fits(ctx, target, registers, 2, 1)):
+        return outputs(ctx, state, fo, True)
+    value = operand_value(ctx.memory, reference, size)
+    words = [0] * registers
+    for k in range(count):
+        if _read(ctx, table, 2 * k, size) <= value <= _read(ctx, table, 2 * k + 1, size):
+            words[k // 16] |= 1 << (k % 16)
+    for k, word in enumerate(words):
+        ctx.memory.write(target.offset(2 * k), word, 2)
+    return outputs(ctx, state, fo, False)
 
 
 @function("FBS.SORT")

@@ -227,3 +227,22 @@ def test_the_function_dialog_reads_their_operands_as_listing_lines() -> None:
     assert problems == [] and params is not None and operand_texts(queue, params) == texts
     params, problems = check_params(sort, ["D", "R0", "7", "4"], "fatek")
     assert params is None and problems[0].args["index"] == 3  # D must be a register
+
+
+@MODES
+def test_block_compare_sets_a_bit_per_zone(monitored: bool) -> None:
+    """[chosen] BKCMP: zone k's limits at Ts[2k], Ts[2k + 1]; bit k of D on inside them."""
+    engine = plc("ORG X0\nFUN 112 BKCMP\n Rs : R20\n Ts : R0\n L : R21\n D : R10\n"
+                 "FO 0\nOUT Y0\n", monitored)
+    for k, value in enumerate((0, 10, 5, 15, 20, 30, 9, 1)):  # the last zone is upside down
+        put(engine, f"R{k}", value)
+    put(engine, "R20", 9)
+    put(engine, "R21", 4)
+    scan(engine, X0=1)
+    assert (get(engine, "R10"), get(engine, "Y0")) == (0b0011, 0)
+    put(engine, "R20", 25)
+    scan(engine)
+    assert get(engine, "R10") == 0b0100
+    put(engine, "R21", 0)
+    scan(engine)
+    assert (get(engine, "R10"), get(engine, "Y0")) == (0b0100, 1)
