@@ -246,3 +246,20 @@ def test_block_compare_sets_a_bit_per_zone(monitored: bool) -> None:
     put(engine, "R21", 0)
     scan(engine)
     assert (get(engine, "R10"), get(engine, "Y0")) == (0b0100, 1)
+
+
+def test_a_queue_with_a_pin_and_its_contact_prints_in_winproladders_form_and_reads_back() -> None:
+    from ladderworks.core.dialects.fatek.printed import style_of
+    from ladderworks.core.dialects.fatek.printer import network_lines
+    from ladderworks.core.il.reading import parse_file
+    from tests.core.dialects.fatek.test_printed import EXAMPLE, HEAD
+
+    source = parse_file(EXAMPLE).program.source
+    assert source is not None
+    style = style_of(source.lines)
+    program = fatek("ORG X0\nLD X1\nFUN 110P QUEUE\n IW : R0\n QU : R2\n L : 10\n Pr : R1\n"
+                    " OW : R20\n" + FO3.replace("FO 1\nOUT Y1", "FO 1\nAND X3\nOUT Y1"))
+    lines = network_lines(program.networks[0], True, style)
+    assert "00002M FUN 110 P.QUEUE" in lines and "00006M AND      X3" in lines
+    again = fatek(HEAD + "\n".join(lines))
+    assert again.networks[0].instructions == program.networks[0].instructions
