@@ -224,3 +224,17 @@ def test_pins_chosen_in_the_editor_are_coded_with_their_coils() -> None:
         assert refused.diagnostic.code == "edit-no-pins"
     else:
         raise AssertionError("a coil has no pins")
+
+
+def test_every_mix_of_pins_and_their_contacts_codes_back_the_same() -> None:
+    """FO1 / FO2 each with 0-2 contacts (NO or NC) before its coil: drawn, coded back equal."""
+    shapes = itertools.product((0, 1, 2), (0, 1, 2), (False, True))
+    for first, second, negated in shapes:
+        contacts = ["AND NOT X4" if negated else "AND X4", "AND X5"]
+        text = ("ORG X0\nFUN 17 CMP\n Sa: R0\n Sb: R1\nFO 0\nOUT Y0\nFO 1\n"
+                + "".join(f"{c}\n" for c in contacts[:first]) + "OUT Y1\nFO 2\n"
+                + "".join(f"{c}\n" for c in contacts[:second]) + "OUT Y2\nOUT Y3\n")
+        program = fatek(text)
+        assert len(program.networks) == 1, text
+        assert _round_trip(program).networks[0].instructions == \
+            program.networks[0].instructions, text
