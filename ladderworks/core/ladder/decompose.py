@@ -2,14 +2,17 @@
 
 from __future__ import annotations
 
-from collections import defaultdict
 from collections.abc import Callable
-from dataclasses import dataclass
 from itertools import pairwise
 
 from ladderworks.core.diagnostics import Diagnostic, has_errors
 from ladderworks.core.il.program import Instruction
 from ladderworks.core.instructions import Kind, StackOp
+from ladderworks.core.ladder.grid_graph import Edge as _Edge
+from ladderworks.core.ladder.grid_graph import cycle_edge as _cycle_edge
+from ladderworks.core.ladder.grid_graph import joined as _joined
+from ladderworks.core.ladder.grid_graph import reach as _reach
+from ladderworks.core.ladder.grid_graph import reduce_block as _reduce
 from ladderworks.core.ladder.layout import layout_network
 from ladderworks.core.ladder.logic import (
     MAX_PUSHES,
@@ -18,30 +21,16 @@ from ladderworks.core.ladder.logic import (
     Leaf,
     Logic,
     Output,
-    Parallel,
     Rung,
     Undrawable,
     code_rung,
-    first_cell,
     inverted_inside,
     outputs_first,
-    parallel,
     read_rung,
-    series,
     stack_row,
 )
 from ladderworks.core.ladder.model import Cell, Coil, Contact, FunctionBox, LadderNetwork, Wire
 from ladderworks.core.ladder.row_contacts import contact_combine
-
-
-@dataclass(slots=True)
-class _Edge:
-    """A contact (or a reduced block) between two nets, power flowing src → dst."""
-
-    src: int
-    dst: int
-    logic: Logic
-    cell: Cell
 
 
 class NodeNets:
@@ -75,69 +64,6 @@ class NodeNets:
     def net(self, node: Cell) -> int:
         """The net of node (row, k)."""
         return self._find(node[0] * self.width + node[1])
-
-
-def _reach(start: set[int], edges: list[_Edge], forward: bool) -> set[int]:
-    seen = set(start)
-    todo = list(start)
-    nxt: dict[int, list[int]] = defaultdict(list)
-    for e in edges:
-        a, b = (e.src, e.dst) if forward else (e.dst, e.src)
-        nxt[a].append(b)
-    while todo:
-        n = todo.pop()
-        for m in nxt[n]:
-            if m not in seen:
-                seen.add(m)
-                todo.append(m)
-    return seen
-
-
-def _joined(a: int, goal: set[int], edges: list[_Edge], skip: _Edge) -> bool:
-    """True when net `a` reaches `goal` through other elements in either direction."""
-    others = [e for e in edges if e is not skip]
-    both = others + [_Edge(e.dst, e.src, e.logic, e.cell) for e in others]
-    return bool(_reach({a}, both, True) & goal)
-
-
-def _reduce(edges: list[_Edge], left: int, target: int) -> Logic | _Edge:
-    """Series/parallel reduction between the rail and a target net; returns the block, or an
-    element of what is left when the circuit is not series/parallel (a bridge)."""
-    edges = list(edges)
-    changed = True
-    while changed and edges:
-        changed = False
-        groups: dict[tuple[int, int], list[_Edge]] = defaultdict(list)
-        for e in edges:
-            groups[(e.src, e.dst)].append(e)
-        for (src, dst), group in groups.items():
-            if len(group) > 1:
-                logic = group[0].logic
-                for e in group[1:]:
-                    logic = parallel(logic, e.logic)
-                assert isinstance(logic, Parallel)
-                logic = Parallel(tuple(sorted(logic.items, key=first_cell)))
-                cell = min(e.cell for e in group)
-                edges = [e for e in edges if e not in group] + [_Edge(src, dst, logic, cell)]
-                changed = True
-        ins: dict[int, list[_Edge]] = defaultdict(list)
-        outs: dict[int, list[_Edge]] = defaultdict(list)
-        for e in edges:
-            ins[e.dst].append(e)
-            outs[e.src].append(e)
-        for n in list(ins):
-            if n in (left, target) or len(ins[n]) != 1 or len(outs[n]) != 1:
-                continue
-            a, b = ins[n][0], outs[n][0]
-            if a is b or a not in edges or b not in edges:
-                continue
-            edges = [e for e in edges if e is not a and e is not b]
-            edges.append(_Edge(a.src, b.dst, series(a.logic, b.logic), min(a.cell, b.cell)))
-            changed = True
-    if len(edges) == 1 and edges[0].src == left and edges[0].dst == target:
-        return edges[0].logic
-    inner = [e for e in edges if e.src not in (left, target) and e.dst not in (left, target)]
-    return min(inner or edges, key=lambda e: e.cell)
 
 
 def read_grid(network: LadderNetwork, index: int | None = None, dialect: str = "seed",
@@ -457,33 +383,6 @@ def _box_param_problems(box: FunctionBox, dialect: str = "seed") -> list[Diagnos
 
     words = print_instruction(Instruction(box.name, params=box.params)).split()
     return function_params(box.name, words[1:], dialect)[1]
-
-
-def _cycle_edge(edges: list[_Edge]) -> _Edge | None:
-    """An element on a loop (power would have to flow back to the left), or None."""
-    outs: dict[int, list[_Edge]] = defaultdict(list)
-    for e in edges:
-        outs[e.src].append(e)
-    state: dict[int, int] = {}
-
-    def visit(n: int) -> _Edge | None:
-        state[n] = 1
-        for e in outs[n]:
-            if state.get(e.dst) == 1:
-                return e
-            if e.dst not in state:
-                found = visit(e.dst)
-                if found is not None:
-                    return found
-        state[n] = 2
-        return None
-
-    for e in sorted(edges, key=lambda e: e.cell):
-        if e.src not in state:
-            found = visit(e.src)
-            if found is not None:
-                return found
-    return None
 
 
 def _check_depth(rung: Rung, report: Callable[..., None]) -> None:
