@@ -120,6 +120,8 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "an edge or comparison contact has no normally closed form"),
     "edit-no-element": QT_TRANSLATE_NOOP(
         "Diagnostic", "there is no suitable element at cell ({row}, {col})"),
+    "edit-no-pins": QT_TRANSLATE_NOOP(
+        "Diagnostic", "no function box with FO outputs at cell ({row}, {col})"),
     "family-symbols": QT_TRANSLATE_NOOP(
         "Diagnostic", "the program's {count} symbols (%@2) have no place in that family's "
         "files: the program keeps its family"),
