@@ -287,6 +287,17 @@ class FileActions(_Window):
         if name:
             self.load(name)
 
+    def open_folder_dialog(self) -> None:
+        """File > Open folder: a folder of exports (TIA's: an OB with its blocks, DBs and
+        tag tables) as one program."""
+        if not self.maybe_save():
+            return
+        name = file_dialogs.open_folder_name(
+            self, translate("MainWindow", "Open a folder of exported blocks"),
+            str(self.path.parent if self.path else ""))
+        if name:
+            self.load(name)
+
     # -- saving --------------------------------------------------------------------------
 
     def program_text(self, *, faithful: bool = False) -> str | None:
@@ -367,6 +378,8 @@ class FileActions(_Window):
         if refused is not None:  # a .dvp project: LadderWorks writes its text forms only
             self.warn(translate("MainWindow", "Save"), diagnostic_text(refused))
             return self.save_as_dialog()
+        if path.is_dir():  # a folder of exports: nothing written unless a block changed
+            return self._save_folder(path)
         self._last_save_result = False
         go_on = self._may_write(path)
         if not go_on:
@@ -402,6 +415,18 @@ class FileActions(_Window):
             self.show_message(translate("MainWindow", "Saved {0}").format(path.name))
         self.file_saved.emit(str(path))
         return True
+
+    def _save_folder(self, path: Path) -> bool:
+        """Save of a program opened as a folder: unchanged, nothing is written; changed,
+        Save As names the file (a folder is never written over)."""
+        if not self.is_modified():
+            self.show_message(translate("MainWindow", "{0}: no changes to save").format(
+                path.name))
+            return True
+        self.warn(translate("MainWindow", "Save"), translate(
+            "MainWindow", "{0} is a folder of exported blocks: save the changed program "
+            "under a file name").format(path.name))
+        return self.save_as_dialog()
 
     def _write(self, path: Path, data: bytes) -> bool:
         """Write the program and its PMC parameters; warn and False when it fails."""

@@ -1,0 +1,141 @@
+"""Issue 39's real-window test: an exported S7 folder (SD and XML) opened with File › Open
+folder, run with START, "Start" modified to TRUE in the watch table and the coil "Motor" seen
+TRUE in the table and in the memory; the rows kept per program; other families watched too."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import QComboBox, QLineEdit, QToolBar
+from pytestqt.qtbot import QtBot
+
+from ladderworks.core.dialects.s7.devices import parse_absolute
+from ladderworks.core.watch.values import Format
+from ladderworks.gui import file_dialogs
+from ladderworks.gui.docks.watch_table import ADDRESS, FORMAT, MODIFY, MONITOR, NAME
+from ladderworks.gui.main_window import MainWindow
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "resources" / "examples"
+
+
+def _text(window: MainWindow, row: int, column: int) -> str:
+    item = window.plc_docks.watch.table.item(row, column)
+    assert item is not None
+    return item.text()
+
+
+def _type_name(qtbot: QtBot, window: MainWindow, name: str) -> int:
+    """Type a name into the table's last (empty) row, as a user adds one."""
+    table = window.plc_docks.watch.table
+    last = table.rowCount() - 1
+    item = table.item(last, NAME)
+    assert item is not None
+    table.setCurrentCell(last, NAME)
+    table.editItem(item)
+    editor = table.viewport().findChild(QLineEdit)
+    assert editor is not None
+    qtbot.keyClicks(editor, name)
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    qtbot.waitUntil(lambda: table.rowCount() == last + 2)
+    return last
+
+
+@pytest.mark.parametrize("form", ["s7", "s7-xml"])
+def test_an_exported_folder_runs_and_a_watch_table_modify_drives_the_coil(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        form: str) -> None:
+    folder = tmp_path / "jumps"
+    shutil.copytree(EXAMPLES / form / "jumps", folder)
+    before = {p.name: p.read_bytes() for p in folder.iterdir()}
+    monkeypatch.setattr(file_dialogs, "open_folder_name", lambda *_args: str(folder))
+    window.actions_by_name["action_open_folder"].trigger()
+    assert window.path == folder
+    assert window.windowTitle().startswith("jumps")
+    assert window.settings.recent_files()[0] == str(folder)
+    assert window.editor.networks
+    session = window.plc_docks.session
+    session.run.realtime = False
+    qtbot.keyClick(window, Qt.Key.Key_F9)  # compile and load, as a user does
+    start = window.findChild(QAction, "action_plc_start")
+    assert start is not None
+    start.trigger()
+    assert session.run.running
+
+    toggle = window.actions_by_name["action_dock_watch_table"]
+    toolbar = window.findChild(QToolBar, "toolbar_main")
+    assert toolbar is not None and toggle in toolbar.actions()
+    assert toggle in window.menus.menus["menu_plc"].actions()
+    toggle.trigger()
+    watch = window.plc_docks.watch
+    qtbot.waitUntil(watch.isVisible)
+    start_row = _type_name(qtbot, window, '"Start"')
+    motor_row = _type_name(qtbot, window, "Motor")
+    assert _text(window, start_row, ADDRESS) == "%I0.2"
+    assert _text(window, motor_row, ADDRESS) == "%Q0.2"
+    session.run_scans(2)
+    assert _text(window, motor_row, MONITOR) == "FALSE"
+
+    watch.set_modify(start_row, "TRUE")
+    table = watch.table
+    table.selectRow(start_row)
+    window.findChild(type(watch.modify_button), "watchModifyNow").click()
+    session.run_scans(2)
+    motor, _ = parse_absolute("%Q0.2")
+    assert session.run.bit(motor) == 1
+    assert _text(window, motor_row, MONITOR) == "TRUE"
+    assert _text(window, start_row, MONITOR) == "TRUE"
+
+    # a bad value is refused at its cell, translated; nothing else is written
+    watch.set_modify(start_row, "maybe", checked=True)
+    assert watch.modify_now() == 0
+    assert watch.cell_error.isVisible()
+    assert "TRUE or FALSE" in watch.cell_error.text()
+    assert watch.modify_errors == {start_row: watch.cell_error.text()}
+
+    # the display format follows the user's choice and is kept with the rows
+    box = table.cellWidget(motor_row, FORMAT)
+    assert isinstance(box, QComboBox) and box.currentData() == Format.BOOL.value
+    watch.set_format(motor_row, Format.DEC)
+    assert _text(window, motor_row, MONITOR) == "1"
+
+    # Save of the unchanged folder writes nothing; reopened from the recent list, the rows
+    assert window.save()
+    assert {p.name: p.read_bytes() for p in folder.iterdir()} == before
+    window.new_file()
+    assert watch.rows == []
+    window.actions_by_name["action_recent_0"].trigger()
+    assert window.path == folder
+    assert [(r.name, r.fmt, r.modify, r.checked) for r in watch.rows] == [
+        ('"Start"', "", "maybe", True), ("Motor", Format.DEC.value, "", False)]
+    assert _text(window, motor_row, NAME) == "Motor"
+    assert _text(window, start_row, MODIFY) == "maybe"
+
+
+def test_a_delta_program_is_watched_by_its_devices(qtbot: QtBot, window: MainWindow,
+                                                    tmp_path: Path) -> None:
+    path = tmp_path / "seal.txt"
+    path.write_text("LD X0\nOR Y0\nANI X1\nOUT Y0\nLD M1000\nMOV K-5 D0\nEND\n", "utf-8")
+    assert window.load(path)
+    session = window.plc_docks.session
+    session.run.realtime = False
+    qtbot.keyClick(window, Qt.Key.Key_F9)
+    window.findChild(QAction, "action_plc_start").trigger()
+    window.actions_by_name["action_dock_watch_table"].trigger()
+    watch = window.plc_docks.watch
+    qtbot.waitUntil(watch.isVisible)
+    x0 = watch.add_row("X0")
+    y0 = watch.add_row("Y0")
+    d0 = watch.add_row("D0")
+    bad = watch.add_row("Q9")
+    session.run_scans(2)
+    assert _text(window, d0, MONITOR) == "-5"
+    assert _text(window, y0, MONITOR) == "FALSE"
+    assert "neither a name" in _text(window, bad, ADDRESS)
+    watch.set_modify(x0, "1", checked=True)
+    assert watch.modify_now() == 1
+    session.run_scans(2)
+    assert _text(window, y0, MONITOR) == "TRUE"
