@@ -92,7 +92,7 @@ def test_an_exported_folder_runs_and_a_watch_table_modify_drives_the_coil(
     # a bad value is refused at its cell, translated; nothing else is written
     watch.set_modify(start_row, "maybe", checked=True)
     assert watch.modify_now() == 0
-    assert watch.cell_error.isVisible()
+    qtbot.waitUntil(watch.cell_error.isVisible)
     assert "TRUE or FALSE" in watch.cell_error.text()
     assert watch.modify_errors == {start_row: watch.cell_error.text()}
 

@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
     QHBoxLayout,
     QHeaderView,
     QLabel,
+    QMainWindow,
     QMenu,
     QPushButton,
     QTableWidget,
@@ -118,6 +119,8 @@ class WatchTableDock(Retranslating, QDockWidget):
         self.gate = SnapshotGate(self, self._show_values, session)  # shown, in budget
         session.snapshot_ready.connect(self.gate.offer)
         self.visibilityChanged.connect(lambda _shown: self.refresh())
+        self.visibilityChanged.connect(lambda shown: shown and QTimer.singleShot(
+            0, self._claim_width))
         self.retranslate()
         self._fill()
 
@@ -142,9 +145,40 @@ class WatchTableDock(Retranslating, QDockWidget):
         self._fit_columns()
 
     def _fit_columns(self) -> None:
-        """Each column at least as wide as its title (and its texts): no cut header."""
+        """Each column as wide as its title and its texts (no cut header, no cut name); a
+        refusal's long text in Address is cut at a third of the view (whole in its tooltip)."""
         self.table.resizeColumnsToContents()
+        widest = max(self.table.viewport().width() // 3, 160)
+        if self.table.columnWidth(ADDRESS) > widest:
+            self.table.setColumnWidth(ADDRESS, widest)
         fit_headers(self.table)
+
+    def _claim_width(self) -> None:
+        """Beside another dock in its row (the error list), as wide as its columns need, up
+        to two thirds of the window: the names and values whole, not behind a scroll bar."""
+        window = self.parentWidget()
+        if not isinstance(window, QMainWindow) or self.isFloating():
+            return
+        table = self.table
+        if table.horizontalHeader().length() <= table.viewport().width():
+            return
+        wanted = (table.horizontalHeader().length() + table.verticalHeader().width()
+                  + table.verticalScrollBar().sizeHint().width() + 2 * table.frameWidth()
+                  + self.width() - table.width() + 4)
+        wanted = min(wanted, window.width() * 2 // 3)
+        if self.width() >= wanted:
+            return
+        # the docks beside it in its row give the room (Qt gives a tabbed dock alone less)
+        tabbed = window.tabifiedDockWidgets(self)
+        beside = [dock for dock in window.findChildren(QDockWidget)
+                  if dock is not self and dock not in tabbed and dock.isVisible()
+                  and not dock.isFloating()
+                  and window.dockWidgetArea(dock) == window.dockWidgetArea(self)
+                  and dock.geometry().top() == self.geometry().top()]
+        room = sum(dock.width() for dock in beside) - (wanted - self.width())
+        total = sum(dock.width() for dock in beside) or 1
+        window.resizeDocks([*beside, self], [*(dock.width() * room // total for dock in beside),
+                                             wanted], Qt.Orientation.Horizontal)
 
     # -- the program and where its rows are kept -------------------------------------------
 
@@ -211,6 +245,11 @@ class WatchTableDock(Retranslating, QDockWidget):
         self._filling = True
         self.cell_error.hide()
         self.found = []
+        for index in range(self.table.rowCount()):  # the old boxes go at once, not later
+            old = self.table.cellWidget(index, FORMAT)
+            if old is not None:
+                old.hide()
+                self.table.removeCellWidget(index, FORMAT)
         self.table.setRowCount(len(self.rows) + 1)
         for index, row in enumerate(self.rows):
             try:
@@ -221,6 +260,9 @@ class WatchTableDock(Retranslating, QDockWidget):
         self._fill_new_row(len(self.rows))
         self._filling = False
         self.refresh()
+        self._fit_columns()
+        if self.isVisible():  # the columns grew: the dock too, when its row has room
+            QTimer.singleShot(0, self._claim_width)
 
     def _fill_row(self, index: int, row: WatchRow) -> None:
         found = self.found[index]
@@ -351,15 +393,24 @@ class WatchTableDock(Retranslating, QDockWidget):
         self.modify_errors = {indices[at]: diagnostic_text(why) for at, why in errors.items()}
         self._fill()
         if self.modify_errors:
-            first = min(self.modify_errors)
-            self.cell_error.show_at(self.table.model().index(first, MODIFY),
-                                    self.modify_errors[first])
+            QTimer.singleShot(0, self._show_first_error)  # once the columns are laid out
             self.message.setText(translate("WatchTable", "{0} values written, {1} refused")
                                  .format(len(indices) - len(errors), len(errors)))
         else:
             self.message.setText(translate("WatchTable", "{0} values written")
                                  .format(len(indices)))
         return len(indices) - len(errors)
+
+    def _show_first_error(self) -> None:
+        """The first refused value's reason under its cell."""
+        if self.modify_errors:
+            first = min(self.modify_errors)
+            if first < len(self.rows):
+                across = self.table.horizontalScrollBar().value()
+                self.table.scrollTo(self.table.model().index(first, MODIFY))  # its row
+                self.table.horizontalScrollBar().setValue(across)  # the names stay in view
+                self.cell_error.show_at(self.table.model().index(first, MODIFY),
+                                        self.modify_errors[first])
 
     def _set_bit(self, address: Address, value: int) -> None:
         self.session.set_bit(address, value)
@@ -385,3 +436,7 @@ class WatchTableDock(Retranslating, QDockWidget):
                 self.table.blockSignals(True)
                 item.setText(text)
                 self.table.blockSignals(False)
+                wanted = self.table.fontMetrics().horizontalAdvance(text) + 16
+                if wanted > self.table.columnWidth(MONITOR):  # a longer value: whole
+                    self.table.setColumnWidth(MONITOR, wanted)
+                    QTimer.singleShot(0, self._claim_width)
