@@ -139,3 +139,43 @@ def test_a_delta_program_is_watched_by_its_devices(qtbot: QtBot, window: MainWin
     assert watch.modify_now() == 1
     session.run_scans(2)
     assert _text(window, y0, MONITOR) == "TRUE"
+
+
+def test_live_values_while_the_plc_scans_in_real_time_and_turkish_texts(
+        qtbot: QtBot, window: MainWindow, tmp_path: Path) -> None:
+    """The PLC scanning on its own (thread, then its process): the Monitor values follow,
+    a modify reaches the scans; a language switch retitles the columns and formats."""
+    folder = tmp_path / "timers"
+    shutil.copytree(EXAMPLES / "s7" / "timers", folder)
+    assert window.load(folder)
+    session = window.plc_docks.session
+    assert session.run.realtime
+    assert window.compile() is not None
+    window.findChild(QAction, "action_plc_start").trigger()
+    window.actions_by_name["action_dock_watch_table"].trigger()
+    watch = window.plc_docks.watch
+    qtbot.waitUntil(watch.isVisible)
+    start = watch.add_row("Start")
+    elapsed = watch.add_row('"IEC_Timer_0_DB".ET')
+    lamp = watch.add_row('"Lamba 2"')
+    assert _text(window, elapsed, MONITOR) == "T#0MS"
+    watch.set_modify(start, "TRUE", checked=True)
+    assert watch.modify_now() == 1
+    qtbot.waitUntil(lambda: _text(window, elapsed, MONITOR) not in ("", "T#0MS"),
+                    timeout=10000)
+    assert _text(window, lamp, MONITOR) == "FALSE"  # [%MD0 >= T#5s]: not before 5 s
+    window.set_language("tr")
+    try:
+        header = watch.table.horizontalHeaderItem
+        assert [header(c).text() for c in range(5)] == [
+            "Ad", "Adres", "Görüntüleme biçimi", "İzleme değeri", "Değiştirme değeri"]
+        assert watch.windowTitle() == "İzleme tablosu"
+        assert watch.modify_button.text() == "Şimdi değiştir"
+        box = watch.table.cellWidget(elapsed, FORMAT)
+        assert isinstance(box, QComboBox) and box.currentText() == "Zaman"
+        for column in range(5):  # no cut title
+            assert watch.table.columnWidth(column) >= \
+                watch.table.horizontalHeader().sectionSizeHint(column) or column == MODIFY
+    finally:
+        window.set_language("en")
+    session.stop()
