@@ -222,3 +222,25 @@ def test_a_modify_in_the_watch_table_drives_the_s7_program(calls) -> None:
     plc.step(1000)
     assert show(elapsed.place, elapsed.fmt, memory).startswith("T#")
     assert show(elapsed.place, elapsed.fmt, memory) != "T#0MS"
+
+
+def test_a_block_opened_alone_is_watched_by_its_interface() -> None:
+    """An FB by itself (issue 39 item 5): `#Member`, `#Timer.ET` are its interface's places."""
+    program = parse_file(EXAMPLES / "calls" / "Gecikme.s7dcl").program
+    giris = watched(WatchRow("#Giris"), program.symbols, "s7")
+    elapsed = watched(WatchRow("#Zaman.ET"), program.symbols, "s7")
+    output = watched(WatchRow("#Cikis"), program.symbols, "s7")
+    assert (giris.fmt, elapsed.fmt, output.fmt) == (Format.BOOL, Format.TIME, Format.BOOL)
+    plc = PlcRun()
+    assert plc.load_program(program).binary is not None
+    assert plc.start()
+    writes, errors = modify([WatchRow("#Giris", modify="TRUE"),
+                             WatchRow("#Sure", modify="T#200MS")], program.symbols, "s7")
+    assert not errors
+    store(writes, plc.set_bit, plc.write)
+    memory = Memory(plc.bit, plc.read)
+    plc.step(100)
+    assert show(output.place, output.fmt, memory) == "FALSE"
+    plc.step(150)
+    assert show(output.place, output.fmt, memory) == "TRUE"
+    assert show(elapsed.place, elapsed.fmt, memory) == "T#200MS"
