@@ -179,3 +179,34 @@ def test_live_values_while_the_plc_scans_in_real_time_and_turkish_texts(
     finally:
         window.set_language("en")
     session.stop()
+
+
+def test_a_changed_folder_program_asks_for_a_file_and_writes_nothing_into_the_folder(
+        window: MainWindow, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    folder = tmp_path / "timers"
+    shutil.copytree(EXAMPLES / "s7" / "timers", folder)
+    before = {p.name: p.read_bytes() for p in folder.iterdir()}
+    assert window.load(folder)
+    window.editor.move_cursor(1, 0, 0)
+    window.actions_by_name["action_delete_network"].trigger()
+    asked: list[str] = []
+    monkeypatch.setattr(file_dialogs, "save_file_name",
+                        lambda *args: asked.append(str(args[2])) or "")  # cancelled
+    assert not window.save()
+    assert asked and "folder of exported blocks" in window.last_warning
+    assert {p.name: p.read_bytes() for p in folder.iterdir()} == before
+
+
+def test_a_folder_without_exports_is_refused_with_its_reason(window: MainWindow,
+                                                             tmp_path: Path) -> None:
+    folder = tmp_path / "empty"
+    folder.mkdir()
+    (folder / "notes.txt").write_text("not a block\n", "utf-8")
+    window.load(folder)
+    assert window.model.showing_text
+    tree = window.errors.tree
+    shown = [tree.topLevelItem(i).text(c) for i in range(tree.topLevelItemCount())
+             for c in range(tree.columnCount())]
+    assert any(".s7dcl" in text for text in shown), shown
+    window.save()
+    assert sorted(p.name for p in folder.iterdir()) == ["notes.txt"]
