@@ -54,7 +54,7 @@ class MenuSpec:
 MENUS: tuple[MenuSpec, ...] = (
     MenuSpec("menu_file", QT_TRANSLATE_NOOP("MainWindow", "&File")),
     MenuSpec("menu_recent", QT_TRANSLATE_NOOP("MainWindow", "Recent files"),
-             parent="menu_file", after="action_open"),
+             parent="menu_file", after="action_open_folder"),
     MenuSpec("menu_edit", QT_TRANSLATE_NOOP("MainWindow", "&Edit")),
     MenuSpec("menu_view", QT_TRANSLATE_NOOP("MainWindow", "&View")),
     MenuSpec("menu_plc", QT_TRANSLATE_NOOP("MainWindow", "&PLC")),
