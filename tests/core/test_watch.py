@@ -12,6 +12,7 @@ from ladderworks.core.il.program import Program
 from ladderworks.core.il.reading import parse_file, parse_text
 from ladderworks.core.plc.memory import Memory as PlcMemory
 from ladderworks.core.plc.session import PlcRun
+from ladderworks.core.symbols import SymbolTable
 from ladderworks.core.watch.places import WatchError, WatchPlace, resolve
 from ladderworks.core.watch.rows import (
     WatchRow,
@@ -244,3 +245,12 @@ def test_a_block_opened_alone_is_watched_by_its_interface() -> None:
     plc.step(150)
     assert show(output.place, output.fmt, memory) == "TRUE"
     assert show(elapsed.place, elapsed.fmt, memory) == "T#200MS"
+
+
+def test_a_64_bit_type_is_named_not_shown() -> None:
+    symbols = SymbolTable()
+    symbols.by_symbol['"Big"'] = Address(Area.D, 0)
+    symbols.types['"Big"'] = "LReal"
+    with pytest.raises(WatchError) as wide:
+        resolve('"Big"', symbols, "s7")
+    assert wide.value.code == "watch-wide"

@@ -139,6 +139,11 @@ def test_a_delta_program_is_watched_by_its_devices(qtbot: QtBot, window: MainWin
     assert watch.modify_now() == 1
     session.run_scans(2)
     assert _text(window, y0, MONITOR) == "TRUE"
+    watch.table.selectRow(bad)
+    watch.table.setFocus()
+    qtbot.keyClick(watch.table, Qt.Key.Key_Delete)  # the bad row goes
+    assert [row.name for row in watch.rows] == ["X0", "Y0", "D0"]
+    assert not window.is_modified()  # not the ladder's Delete
 
 
 def test_live_values_while_the_plc_scans_in_real_time_and_turkish_texts(

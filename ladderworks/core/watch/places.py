@@ -18,7 +18,10 @@ from ladderworks.core.symbols import SymbolTable
 
 # the bytes a value of an elementary type takes (the S7 layout's; Bool: a bit)
 TYPE_WIDTHS = {"bool": 0, "byte": 1, "sint": 1, "usint": 1, "char": 1, "int": 2, "uint": 2,
-               "word": 2, "dint": 4, "udint": 4, "dword": 4, "real": 4, "time": 4}
+               "word": 2, "dint": 4, "udint": 4, "dword": 4, "real": 4, "time": 4,
+               "date": 2, "tod": 4, "time_of_day": 4}
+# elementary types of 64 bits: named, not shown yet (the formats read at most 32 bits)
+WIDE_TYPES = frozenset({"lreal", "lint", "ulint", "lword", "ltime", "ltod", "ldt"})
 _STRING_RE = re.compile(r"^string(?:\s*\[\s*(\d+)\s*\])?$", re.I)
 
 
@@ -94,6 +97,8 @@ def resolve(text: str, symbols: SymbolTable | None, dialect: str | None) -> Watc
             name, address = found
             type_name = symbols.type_of(name)
             width = type_width(type_name) if type_name else None
+            if type_name.strip().lower() in WIDE_TYPES:
+                raise WatchError("watch-wide", text=typed, type=type_name)
             if type_name and width is None:  # a struct, an instance: its members are watched
                 raise WatchError("watch-struct", text=typed, type=type_name)
             if width is None:

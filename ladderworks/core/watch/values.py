@@ -8,15 +8,14 @@ max length, length, characters). docs/plc-utilities.md, "Watch table".
 
 from __future__ import annotations
 
-import math
 import re
-import struct
 from collections.abc import Callable
 from dataclasses import dataclass
 from enum import StrEnum
 
 from ladderworks.core import dialects
 from ladderworks.core.address import Address
+from ladderworks.core.plc import typed
 from ladderworks.core.watch.places import WatchError, WatchPlace
 
 TIME_UNITS = (("D", 86_400_000), ("H", 3_600_000), ("M", 60_000), ("S", 1000), ("MS", 1))
@@ -82,9 +81,13 @@ class Memory:
     read: Callable[[Address, int], int]
 
 
+# the integer types of a width, signed and unsigned (plc/typed.py: their limits, wrapping)
+_SIGNED = {1: typed.ValueType.SINT, 2: typed.ValueType.INT, 4: typed.ValueType.DINT}
+_UNSIGNED = {1: typed.ValueType.USINT, 2: typed.ValueType.UINT, 4: typed.ValueType.UDINT}
+
+
 def _signed(raw: int, width: int) -> int:
-    bits = 8 * width
-    return raw - (1 << bits) if raw >> (bits - 1) & 1 else raw
+    return typed.wrap(raw, _SIGNED[width])
 
 
 def time_text(ms: int) -> str:
@@ -99,9 +102,7 @@ def time_text(ms: int) -> str:
 
 
 def _real_text(value: float) -> str:
-    if math.isnan(value) or math.isinf(value):
-        return str(value)
-    return f"{value:.7g}"
+    return f"{value:.7g}" if typed.fits(value, typed.ValueType.REAL) else str(value)
 
 
 def _grouped(digits: str) -> str:
@@ -136,7 +137,7 @@ def show(place: WatchPlace, fmt: Format, memory: Memory) -> str:
     if fmt is Format.SDEC:
         return str(_signed(raw, width))
     if fmt is Format.REAL and width == 4:
-        return _real_text(struct.unpack(">f", raw.to_bytes(4, "big"))[0])
+        return _real_text(typed.bits_real(raw))
     if fmt is Format.TIME and width == 4:
         return time_text(_signed(raw, 4))
     if fmt is Format.CHAR and width == 1:
@@ -242,15 +243,14 @@ def parse(place: WatchPlace, fmt: Format, text: str) -> list[Write]:
             real = float(text.strip().replace(",", "."))
         except ValueError as error:
             raise WatchError("watch-real", text=text.strip()) from error
-        if not math.isfinite(real) or abs(real) > 3.4028234663852886e38:
+        if not typed.fits(real, typed.ValueType.REAL):
             raise WatchError("watch-real", text=text.strip())
-        raw = int.from_bytes(struct.pack(">f", real), "big")
-        return [Write(place.address, raw, width)]
+        return [Write(place.address, typed.real_bits(real) & 0xFFFFFFFF, width)]
     if fmt is Format.TIME:
         ms = time_ms(text)
         if ms is None:
             raise WatchError("watch-time", text=text.strip())
-        value = _in_range(ms, -(1 << 31), (1 << 31) - 1, text)
+        value = _in_range(ms, *typed.limits(typed.ValueType.TIME), text)
         return [Write(place.address, value & 0xFFFFFFFF, width)]
     if fmt is Format.CHAR:
         chars = _quoted(text)
@@ -260,11 +260,10 @@ def parse(place: WatchPlace, fmt: Format, text: str) -> list[Write]:
     value = _number(text)
     if value is None:
         raise WatchError("watch-number", text=text.strip())
-    if fmt is Format.SDEC:
-        low, high = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
-    elif fmt is Format.DEC:
-        low, high = 0, (1 << bits) - 1
-    else:  # Hex, Bin: any pattern of the width (a negative typed as its two's complement)
-        low, high = -(1 << (bits - 1)), (1 << bits) - 1
+    low, high = typed.limits(_SIGNED[width])
+    if fmt is Format.DEC:
+        low, high = typed.limits(_UNSIGNED[width])
+    elif fmt is not Format.SDEC:  # Hex, Bin: any pattern (a negative: its two's complement)
+        high = typed.limits(_UNSIGNED[width])[1]
     value = _in_range(value, low, high, text)
     return [Write(place.address, value & ((1 << bits) - 1), width)]

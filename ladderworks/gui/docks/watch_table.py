@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QPoint, Qt, QTimer
-from PySide6.QtGui import QAction, QBrush, QColor
+from PySide6.QtCore import QCoreApplication, QEvent, QObject, QPoint, Qt, QTimer
+from PySide6.QtGui import QAction, QBrush, QColor, QKeyEvent
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QComboBox,
@@ -112,6 +112,7 @@ class WatchTableDock(Retranslating, QDockWidget):
         self.table.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
         self.table.customContextMenuRequested.connect(self._menu)
         self.table.itemChanged.connect(self._item_changed)
+        self.table.installEventFilter(self)  # Delete: the selected rows go
         self.cell_error = CellError(self.table)
         self.cell_error.setObjectName("watchCellError")
         layout.addWidget(self.table, 1)
@@ -353,6 +354,20 @@ class WatchTableDock(Retranslating, QDockWidget):
             row.modify = item.text()
             row.checked = item.checkState() == Qt.CheckState.Checked
             self._save()
+
+    def eventFilter(self, watched_object: QObject, event: QEvent) -> bool:
+        """Delete in the table (not while a cell is edited) deletes the selected rows, not
+        what the window's Delete shortcut would (the ladder's element)."""
+        if (watched_object is self.table and isinstance(event, QKeyEvent)
+                and event.key() == Qt.Key.Key_Delete
+                and self.table.state() != QAbstractItemView.State.EditingState):
+            if event.type() == QEvent.Type.ShortcutOverride:
+                event.accept()  # the key comes here as a key press
+                return True
+            if event.type() == QEvent.Type.KeyPress:
+                self.delete_selected()
+                return True
+        return super().eventFilter(watched_object, event)
 
     def _menu(self, pos: QPoint) -> None:
         index = self.table.rowAt(pos.y())
