@@ -165,7 +165,7 @@ class WatchTableDock(Retranslating, QDockWidget):
             return
         wanted = (table.horizontalHeader().length() + table.verticalHeader().width()
                   + table.verticalScrollBar().sizeHint().width() + 2 * table.frameWidth()
-                  + self.width() - table.width() + 4)
+                  + self.width() - table.width() + 16)
         wanted = min(wanted, window.width() * 2 // 3)
         if self.width() >= wanted:
             return
