@@ -196,11 +196,11 @@ def build_plc_docks(window: QMainWindow, menus: ConsoleMenus, session: PlcSessio
     menus.register(control.control_actions["action_plc_control_compile"])
     menus.add(plc, run[0], separator=True, toolbar=True)
     menus.add(plc, run[1], toolbar=True)
-    menus.toolbar.addAction(watch.toggleViewAction())  # beside START / STOP, as in TIA
     states = (PlcStateLabel(session, lambda: control.loaded_name, window),
               PlcStateLabel(session, lambda: control.loaded_name, window))
     states[0].setObjectName("toolbar_plc_state")
     menus.toolbar.addWidget(states[0])  # beside START / STOP
+    menus.toolbar.addAction(watch.toggleViewAction())  # after the PLC's state
     states[1].setObjectName("status_plc_state")
     window.statusBar().addPermanentWidget(states[1])
     menus.add_many(plc, [online.actions[name] for name in ACTION_NAMES], separator=True)
