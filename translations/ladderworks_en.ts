@@ -2377,7 +2377,7 @@
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="557"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="538"/>
         <location filename="../ladderworks/gui/main_window.py" line="284"/>
         <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
@@ -2457,7 +2457,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="226"/>
         <location filename="../ladderworks/gui/file_actions.py" line="244"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="573"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="554"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
@@ -2483,114 +2483,114 @@
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="296"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="50"/>
         <source>Open a folder of exported blocks</source>
         <translation>Open a folder of exported blocks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="365"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="379"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="349"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="365"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="423"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="60"/>
         <source>{0}: no changes to save</source>
         <translation>{0}: no changes to save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
         <source>{0} is a folder of exported blocks: save the changed program under a file name</source>
         <translation>{0} is a folder of exported blocks: save the changed program under a file name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="512"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="517"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="498"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listings (*.lst *.LST);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="572"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="553"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="589"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="570"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="410"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="403"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="415"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="453"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="458"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="464"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="459"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="472"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="453"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="473"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="495"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="512"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="516"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="497"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="496"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="477"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="520"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="501"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
@@ -4989,88 +4989,88 @@
 <context>
     <name>WatchTable</name>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="132"/>
         <source>Watch table</source>
         <translation>Watch table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="134"/>
         <source>Watch table: tags and addresses, live, modified on request</source>
         <translation>Watch table: tags and addresses, live, modified on request</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="136"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="137"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="136"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="137"/>
         <source>Address</source>
         <translation>Address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="137"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="138"/>
         <source>Display format</source>
         <translation>Display format</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="137"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="138"/>
         <source>Monitor value</source>
         <translation>Monitor value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="138"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="139"/>
         <source>Modify value</source>
         <translation>Modify value</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="139"/>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="377"/>
         <source>Modify now</source>
         <translation>Modify now</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="141"/>
         <source>Write the modify values of the checked rows (none checked: of the selected rows) into the PLC now</source>
         <translation>Write the modify values of the checked rows (none checked: of the selected rows) into the PLC now</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="144"/>
         <source>Delete rows</source>
         <translation>Delete rows</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="290"/>
         <source>Checked: written by Modify now</source>
         <translation>Checked: written by Modify now</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="300"/>
         <source>Type a name or an address to add a row</source>
         <translation>Type a name or an address to add a row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="302"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="303"/>
         <source>&lt;Add new&gt;</source>
         <translation>&lt;Add new&gt;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="379"/>
         <source>Delete row</source>
         <translation>Delete row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="403"/>
         <source>Check the rows to modify (or select one), then Modify now</source>
         <translation>Check the rows to modify (or select one), then Modify now</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="397"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="412"/>
         <source>{0} values written, {1} refused</source>
         <translation>{0} values written, {1} refused</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="400"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="415"/>
         <source>{0} values written</source>
         <translation>{0} values written</translation>
     </message>

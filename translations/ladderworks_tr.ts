@@ -2377,7 +2377,7 @@
         <translation>Derleme bitti: {0} bayt, PLC&apos;ye yüklendi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="557"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="538"/>
         <location filename="../ladderworks/gui/main_window.py" line="284"/>
         <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
@@ -2457,7 +2457,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="226"/>
         <location filename="../ladderworks/gui/file_actions.py" line="244"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="573"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="554"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>{0} okunamıyor: {1}</translation>
@@ -2483,114 +2483,114 @@
         <translation>Program aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="296"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="50"/>
         <source>Open a folder of exported blocks</source>
         <translation>Dışa aktarılmış blokların klasörünü aç</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="356"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="365"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="379"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="443"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="349"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
         <source>Save</source>
         <translation>Kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="365"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} okunamadığı için üzerine yazılmaz. Hataları düzeltip Merdiven diyagramı olarak göster&apos;i kullanın veya başka bir adla kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="371"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} bir WinProladder projesi (.pdw): LadderWorks onu okur ama yazmaz, çünkü çözemediği kısımlar kaybolurdu. Programı bunun yerine WinProladder listesi (.lst) olarak kaydedin.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="423"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="60"/>
         <source>{0}: no changes to save</source>
         <translation>{0}: kaydedilecek değişiklik yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="426"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
         <source>{0} is a folder of exported blocks: save the changed program under a file name</source>
         <translation>{0} dışa aktarılmış blokların klasörü: değişen programı bir dosya adıyla kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="512"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} salt okunurdur ve değiştirilmez.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="444"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="517"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="498"/>
         <source>Cannot write {0}: {1}</source>
         <translation>{0} yazılamıyor: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listeleri (*.lst *.LST);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="572"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="553"/>
         <source>Recover unsaved work</source>
         <translation>Kaydedilmemiş çalışmayı kurtar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="589"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="570"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>{0} tarihli kaydedilmemiş çalışma kurtarıldı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="410"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="403"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>{0} kaydedildi; hatalı devreler çizildiği gibi saklandı (hata listesine bakın)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="415"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
         <source>Saved {0}</source>
         <translation>{0} kaydedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="453"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="458"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="464"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="439"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Save program</source>
         <translation>Programı kaydet</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="459"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP komut listeleri (*.il *.IL *.txt *.TXT);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="472"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="453"/>
         <source>Import .MOD</source>
         <translation>.MOD içe aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="473"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD *.mod);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="495"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="512"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="516"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="497"/>
         <source>Export .MOD</source>
         <translation>.MOD dışa aktar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="496"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="477"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonik programlar (*.MOD);;Tüm dosyalar (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="520"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="501"/>
         <source>Exported {0}</source>
         <translation>{0} dışa aktarıldı</translation>
     </message>
@@ -4989,88 +4989,88 @@
 <context>
     <name>WatchTable</name>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="131"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="132"/>
         <source>Watch table</source>
         <translation>İzleme tablosu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="134"/>
         <source>Watch table: tags and addresses, live, modified on request</source>
         <translation>İzleme tablosu: etiketler ve adresler, canlı; istenince değiştirilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="136"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="137"/>
         <source>Name</source>
         <translation>Ad</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="136"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="137"/>
         <source>Address</source>
         <translation>Adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="137"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="138"/>
         <source>Display format</source>
         <translation>Görüntüleme biçimi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="137"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="138"/>
         <source>Monitor value</source>
         <translation>İzleme değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="138"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="139"/>
         <source>Modify value</source>
         <translation>Değiştirme değeri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="139"/>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="362"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="377"/>
         <source>Modify now</source>
         <translation>Şimdi değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="140"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="141"/>
         <source>Write the modify values of the checked rows (none checked: of the selected rows) into the PLC now</source>
         <translation>İşaretli satırların değiştirme değerlerini (işaretli yoksa seçili satırlarınkini) şimdi PLC&apos;ye yaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="143"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="144"/>
         <source>Delete rows</source>
         <translation>Satırları sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="289"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="290"/>
         <source>Checked: written by Modify now</source>
         <translation>İşaretli: Şimdi değiştir ile yazılır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="299"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="300"/>
         <source>Type a name or an address to add a row</source>
         <translation>Satır eklemek için bir ad ya da adres yazın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="302"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="303"/>
         <source>&lt;Add new&gt;</source>
         <translation>&lt;Yeni ekle&gt;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="364"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="379"/>
         <source>Delete row</source>
         <translation>Satırı sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="388"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="403"/>
         <source>Check the rows to modify (or select one), then Modify now</source>
         <translation>Değiştirilecek satırları işaretleyin (ya da birini seçin), sonra Şimdi değiştir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="397"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="412"/>
         <source>{0} values written, {1} refused</source>
         <translation>{0} değer yazıldı, {1} değer reddedildi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/watch_table.py" line="400"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="415"/>
         <source>{0} values written</source>
         <translation>{0} değer yazıldı</translation>
     </message>

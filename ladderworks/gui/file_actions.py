@@ -19,7 +19,7 @@ from ladderworks.core.il.reading import parse_bytes
 from ladderworks.core.il.textform import EncodeError
 from ladderworks.core.plc.parameters import format_parameters, parameters_beside
 from ladderworks.core.plc.timer_table import dialect_of
-from ladderworks.gui import file_dialogs, questions
+from ladderworks.gui import file_dialogs, folder_program, questions
 from ladderworks.gui.diagnostic_texts import diagnostic_text
 from ladderworks.gui.document import (
     DiskState,
@@ -288,15 +288,8 @@ class FileActions(_Window):
             self.load(name)
 
     def open_folder_dialog(self) -> None:
-        """File > Open folder: a folder of exports (TIA's: an OB with its blocks, DBs and
-        tag tables) as one program."""
-        if not self.maybe_save():
-            return
-        name = file_dialogs.open_folder_name(
-            self, translate("MainWindow", "Open a folder of exported blocks"),
-            str(self.path.parent if self.path else ""))
-        if name:
-            self.load(name)
+        """File > Open folder: a folder of exports as one program (gui/folder_program.py)."""
+        folder_program.open_dialog(self)
 
     # -- saving --------------------------------------------------------------------------
 
@@ -379,7 +372,7 @@ class FileActions(_Window):
             self.warn(translate("MainWindow", "Save"), diagnostic_text(refused))
             return self.save_as_dialog()
         if path.is_dir():  # a folder of exports: nothing written unless a block changed
-            return self._save_folder(path)
+            return folder_program.save(self, path)
         self._last_save_result = False
         go_on = self._may_write(path)
         if not go_on:
@@ -415,18 +408,6 @@ class FileActions(_Window):
             self.show_message(translate("MainWindow", "Saved {0}").format(path.name))
         self.file_saved.emit(str(path))
         return True
-
-    def _save_folder(self, path: Path) -> bool:
-        """Save of a program opened as a folder: unchanged, nothing is written; changed,
-        Save As names the file (a folder is never written over)."""
-        if not self.is_modified():
-            self.show_message(translate("MainWindow", "{0}: no changes to save").format(
-                path.name))
-            return True
-        self.warn(translate("MainWindow", "Save"), translate(
-            "MainWindow", "{0} is a folder of exported blocks: save the changed program "
-            "under a file name").format(path.name))
-        return self.save_as_dialog()
 
     def _write(self, path: Path, data: bytes) -> bool:
         """Write the program and its PMC parameters; warn and False when it fails."""
