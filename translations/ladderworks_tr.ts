@@ -1447,176 +1447,181 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="469"/>
+        <source>the value has {length} characters: at most {limit} are read</source>
+        <translation>değer {length} karakter: en çok {limit} karakter okunur</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="471"/>
         <source>no modify value to write</source>
         <translation>yazılacak değiştirme değeri yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="470"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="472"/>
         <source>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</source>
         <translation>&apos;{text}&apos; TRUE ya da FALSE (veya 1, 0) değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="473"/>
         <source>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</source>
         <translation>&apos;{text}&apos; bir tam sayı değil (ör. 12, -3, 16#FF, 2#0101)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="473"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="475"/>
         <source>&apos;{text}&apos; is out of range: {low} to {high}</source>
         <translation>&apos;{text}&apos; aralığın dışında: {low} ile {high} arası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="475"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="477"/>
         <source>&apos;{text}&apos; is not a real number (e.g. 1.5)</source>
         <translation>&apos;{text}&apos; bir gerçel sayı değil (ör. 1.5)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="476"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="478"/>
         <source>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</source>
         <translation>&apos;{text}&apos; bir süre değil (ör. T#5S_300MS, T#1M30S ya da 1500 ms)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="478"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
         <source>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</source>
         <translation>&apos;{text}&apos; Latin-1 kümesinden tek bir karakter değil (ör. &apos;A&apos;)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
         <source>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</source>
         <translation>&apos;{text}&apos; bir dizenin tutamayacağı karakterler içeriyor (yalnızca Latin-1 kümesi)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
         <source>&apos;{text}&apos; is longer than the string&apos;s {length} characters</source>
         <translation>&apos;{text}&apos; dizenin {length} karakterinden uzun</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="485"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
         <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
         <translation>&apos;{text}&apos; bir S7 adresi (ör. %I0.0, %MW2, %DB1.DBW4) ya da etiket değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="487"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
         <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
         <translation>SIMATIC SD: {expected} bekleniyordu, &apos;{found}&apos; bulundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
         <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
         <translation>SIMATIC SD: metin {what} içinde bitiyor (kesilmiş mi?)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="493"/>
         <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
         <translation>network {network}: &apos;{part}&apos; LadderWorks&apos;ün benzettiği bir komut değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="493"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="495"/>
         <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
         <translation>network {network}: &apos;{text}&apos; ne bir etiket, ne bloğun bir üyesi, ne de bir adres</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="496"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="498"/>
         <source>network {network}: {part} needs its pin {pin}</source>
         <translation>network {network}: {part} için {pin} ucu gerekli</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="498"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="500"/>
         <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
         <translation>network {network}: {part} bağlantıları izlenemiyor ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="500"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="502"/>
         <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
         <translation>network {network}: bu blokta &apos;{label}&apos; etiketi yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="502"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="504"/>
         <source>network {network}: a {language} network is shown, not simulated</source>
         <translation>network {network}: {language} network&apos;ü gösterilir, benzetilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="504"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="506"/>
         <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
         <translation>network {network}: çağrılan &apos;{block}&apos; bloğu programda yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="506"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: &apos;{type}&apos; tipinde {part} benzetilmez</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="510"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: &apos;{text}&apos; için yer kalmadı (DB üyeleri ve örnekler 10000 baytı paylaşır)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="511"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>dosya {size} MB: {limit} MB üzerindeki S7 dışa aktarımları okunmaz</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="515"/>
         <source>tag table: {why}</source>
         <translation>etiket tablosu: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="515"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="517"/>
         <source>a changed S7 block cannot be written yet: save it in TIA Portal</source>
         <translation>değiştirilmiş bir S7 bloğu henüz yazılamıyor: TIA Portal&apos;da kaydedin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="520"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: dosya {size} MB, LadderWorks&apos;ün okuduğu {limit} MB&apos;tan büyük</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} reddedildi (varlıklar asla genişletilmez ve getirilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="523"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: XML düzgün biçimlendirilmemiş ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="524"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="526"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: belgede blok (SW.Blocks.…) ve etiket tablosu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="526"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: &apos;{uri}&apos; ad alanı TIA Openness&apos;e ait değil; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="529"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} sürümü v{version}, LadderWorks&apos;ün bildiği v5&apos;ten yeni; v5 olarak okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="532"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: {wire} bağlantısı UId {uid} parçasına gidiyor, bu parça networkte yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="535"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: UId {uid} parçasından çıkan bağlantılar yine ona dönüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="538"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{part}&apos; LadderWorks&apos;çe bilinmiyor (saklandı, simüle edilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="541"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="543"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: {limit} parçadan fazla; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="544"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="546"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{callee}&apos; bloğunu çağırıyor, bu blok programda yok</translation>
     </message>

@@ -466,6 +466,8 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "'{text}' is a {type}: watch one of its members (e.g. {text}.Q)"),
     "watch-wide": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' is a {type}: 64-bit values are not shown in the watch table yet"),
+    "watch-long": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the value has {length} characters: at most {limit} are read"),
     "watch-empty": QT_TRANSLATE_NOOP("Diagnostic", "no modify value to write"),
     "watch-bool": QT_TRANSLATE_NOOP("Diagnostic", "'{text}' is not TRUE or FALSE (or 1, 0)"),
     "watch-number": QT_TRANSLATE_NOOP(

@@ -6,6 +6,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from ladderworks.core.address import Address, Area
 from ladderworks.core.il.program import Program
@@ -22,7 +24,15 @@ from ladderworks.core.watch.rows import (
     store,
     watched,
 )
-from ladderworks.core.watch.values import Format, Memory, parse, show, time_ms, time_text
+from ladderworks.core.watch.values import (
+    Format,
+    Memory,
+    formats,
+    parse,
+    show,
+    time_ms,
+    time_text,
+)
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "resources" / "examples" / "s7"
 
@@ -254,3 +264,22 @@ def test_a_64_bit_type_is_named_not_shown() -> None:
     with pytest.raises(WatchError) as wide:
         resolve('"Big"', symbols, "s7")
     assert wide.value.code == "watch-wide"
+
+
+@given(text=st.one_of(st.text(max_size=40), st.from_regex(r"[T#0-9._smhdSMHD+-]{1,30}"),
+                      st.just("9" * 5000), st.just("T#" + "9" * 290 + "d"),
+                      st.just("9" * 299)),
+       fmt=st.sampled_from(list(Format)), width=st.sampled_from([0, 1, 2, 4]))
+def test_any_typed_value_is_stored_or_refused_never_a_crash(text: str, fmt: Format,
+                                                            width: int) -> None:
+    place = _place(Area.R, 4, width, "String[8]" if fmt is Format.STRING else "",
+                   bit=0 if width == 0 else None)
+    memory = PlcMemory("big")
+    try:
+        writes = parse(place, fmt, text)
+    except WatchError as refused:
+        assert refused.diagnostic.message()  # a message to show at the cell
+        return
+    store(writes, memory.set_bit, memory.write)
+    if fmt in formats(place):
+        assert show(place, fmt, _memory(memory))

@@ -21,6 +21,7 @@ from ladderworks.core.watch.places import WatchError, WatchPlace
 TIME_UNITS = (("D", 86_400_000), ("H", 3_600_000), ("M", 60_000), ("S", 1000), ("MS", 1))
 _TIME_RE = re.compile(r"(\d+(?:\.\d+)?)(ms|d|h|m|s)", re.I)
 _INT_RE = re.compile(r"[+-]?\d+")
+MAX_TEXT = 300  # a modify value longer than this is none (a String holds at most 254)
 
 
 class Format(StrEnum):
@@ -157,6 +158,8 @@ class Write:
 def _number(text: str) -> int | None:
     """An integer as typed: `12`, `-3`, `16#FF`, `2#0101`, `0x1F`, `0b11`, `8#17`."""
     clean = text.strip().replace("_", "")
+    if len(clean) > MAX_TEXT:
+        return None
     head, sep, digits = clean.partition("#")
     try:
         if sep and head in ("2", "8", "16"):
@@ -173,6 +176,8 @@ def _number(text: str) -> int | None:
 def time_ms(text: str) -> int | None:
     """A Time typed (`T#1m30s`, `T#5S_300MS`, `TIME#-2s`, or plain milliseconds `1500`)."""
     clean = text.strip().replace("_", "")
+    if len(clean) > MAX_TEXT:
+        return None
     if _INT_RE.fullmatch(clean):
         return int(clean)
     head, sep, body = clean.partition("#")
@@ -187,7 +192,9 @@ def time_ms(text: str) -> int | None:
             return None
         total += float(match.group(1)) * units[match.group(2).upper()]
         at = match.end()
-    return sign * round(total) if body and at == len(body) else None
+    if not body or at != len(body) or total > 1e15:  # far past any Time: not one
+        return None
+    return sign * round(total)
 
 
 def _bool(text: str) -> int:
@@ -226,9 +233,14 @@ def _string(place: WatchPlace, text: str, length: int) -> list[Write]:
 
 
 def parse(place: WatchPlace, fmt: Format, text: str) -> list[Write]:
-    """The stores a modify value typed in `fmt` makes at `place`. WatchError (at the cell)."""
+    """The stores a modify value typed in `fmt` makes at `place` (a format the place has not:
+    its first). WatchError (at the cell)."""
     if not text.strip():
         raise WatchError("watch-empty")
+    if len(text) > MAX_TEXT:
+        raise WatchError("watch-long", length=len(text), limit=MAX_TEXT)
+    if fmt not in formats(place):
+        fmt = formats(place)[0]
     if place.is_bit:
         value = _number(text) if fmt is not Format.BOOL else None
         return [Write(place.address, _bool(text) if value is None else
