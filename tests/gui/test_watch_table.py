@@ -94,7 +94,8 @@ def test_an_exported_folder_runs_and_a_watch_table_modify_drives_the_coil(
     assert watch.modify_now() == 0
     qtbot.waitUntil(watch.cell_error.isVisible)
     assert "TRUE or FALSE" in watch.cell_error.text()
-    assert watch.modify_errors == {start_row: watch.cell_error.text()}
+    assert list(watch.modify_errors) == [start_row]
+    assert watch.modify_errors[start_row].code == "watch-bool"
 
     # the display format follows the user's choice and is kept with the rows
     box = table.cellWidget(motor_row, FORMAT)
@@ -176,6 +177,7 @@ def test_live_values_while_the_plc_scans_in_real_time_and_turkish_texts(
             "Ad", "Adres", "Görüntüleme biçimi", "İzleme değeri", "Değiştirme değeri"]
         assert watch.windowTitle() == "İzleme tablosu"
         assert watch.modify_button.text() == "Şimdi değiştir"
+        assert watch.message.text() == "1 değer yazıldı"  # said again in Turkish
         box = watch.table.cellWidget(elapsed, FORMAT)
         assert isinstance(box, QComboBox) and box.currentText() == "Zaman"
         for column in range(5):  # no cut title

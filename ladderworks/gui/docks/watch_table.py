@@ -29,6 +29,7 @@ from PySide6.QtWidgets import (
 )
 
 from ladderworks.core.address import Address
+from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.il.program import Program
 from ladderworks.core.plc.session import PlcSnapshot
 from ladderworks.core.symbols import SymbolTable
@@ -48,6 +49,7 @@ from ladderworks.gui.docks.snapshot_gate import SnapshotGate
 from ladderworks.gui.docks.table_cell_error import CellError
 from ladderworks.gui.docks.watch_texts import FORMAT_NAMES, format_name
 from ladderworks.gui.header_fit import fit_headers
+from ladderworks.gui.live_text import set_live_text
 from ladderworks.gui.plc_session import PlcSession
 from ladderworks.gui.retranslate import Retranslating
 from ladderworks.gui.settings import Settings
@@ -78,7 +80,7 @@ class WatchTableDock(Retranslating, QDockWidget):
         self.dialect: str | None = None
         self.rows: list[WatchRow] = []
         self.found: list[Watched | WatchError] = []
-        self.modify_errors: dict[int, str] = {}
+        self.modify_errors: dict[int, Diagnostic] = {}  # a refused modify value's reason
         self._filling = False
         body = QWidget(self)
         layout = QVBoxLayout(body)
@@ -289,9 +291,9 @@ class WatchTableDock(Retranslating, QDockWidget):
         value.setCheckState(Qt.CheckState.Checked if row.checked else Qt.CheckState.Unchecked)
         value.setToolTip(translate("WatchTable", "Checked: written by Modify now"))
         problem = self.modify_errors.get(index)
-        if problem:
+        if problem is not None:
             value.setBackground(QBrush(_BAD_CELL))
-            value.setToolTip(problem)
+            value.setToolTip(diagnostic_text(problem))
         self.table.setItem(index, MODIFY, value)
 
     def _fill_new_row(self, index: int) -> None:
@@ -400,21 +402,22 @@ class WatchTableDock(Retranslating, QDockWidget):
             indices = sorted({index.row() for index in self.table.selectedIndexes()
                               if index.row() < len(self.rows)})
         if not indices:
-            self.message.setText(translate(
+            set_live_text(self.message, lambda: translate(
                 "WatchTable", "Check the rows to modify (or select one), then Modify now"))
             return 0
         writes, errors = modify([self.rows[i] for i in indices], self.symbols, self.dialect)
         store(writes, self._set_bit, self.session.write)
-        self.modify_errors = {indices[at]: diagnostic_text(why) for at, why in errors.items()}
+        self.modify_errors = {indices[at]: why for at, why in errors.items()}
         self._fill()
+        written, refused = len(indices) - len(errors), len(errors)
         if self.modify_errors:
             QTimer.singleShot(0, self._show_first_error)  # once the columns are laid out
-            self.message.setText(translate("WatchTable", "{0} values written, {1} refused")
-                                 .format(len(indices) - len(errors), len(errors)))
+            set_live_text(self.message, lambda: translate(
+                "WatchTable", "{0} values written, {1} refused").format(written, refused))
         else:
-            self.message.setText(translate("WatchTable", "{0} values written")
-                                 .format(len(indices)))
-        return len(indices) - len(errors)
+            set_live_text(self.message, lambda: translate(
+                "WatchTable", "{0} values written").format(written))
+        return written
 
     def _show_first_error(self) -> None:
         """The first refused value's reason under its cell."""
@@ -425,7 +428,7 @@ class WatchTableDock(Retranslating, QDockWidget):
                 self.table.scrollTo(self.table.model().index(first, MODIFY))  # its row
                 self.table.horizontalScrollBar().setValue(across)  # the names stay in view
                 self.cell_error.show_at(self.table.model().index(first, MODIFY),
-                                        self.modify_errors[first])
+                                        diagnostic_text(self.modify_errors[first]))
 
     def _set_bit(self, address: Address, value: int) -> None:
         self.session.set_bit(address, value)
