@@ -88,7 +88,7 @@ class WatchTableDock(Retranslating, QDockWidget):
         bar = QHBoxLayout()
         self.modify_button = QPushButton(body)
         self.modify_button.setObjectName("watchModifyNow")
-        self.modify_button.clicked.connect(self.modify_now)
+        self.modify_button.clicked.connect(lambda _checked=False: self.modify_now())
         self.delete_button = QPushButton(body)
         self.delete_button.setObjectName("watchDeleteRows")
         self.delete_button.clicked.connect(self.delete_selected)
