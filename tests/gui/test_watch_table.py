@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction
-from PySide6.QtWidgets import QComboBox, QLineEdit, QToolBar
+from PySide6.QtWidgets import QAbstractItemView, QComboBox, QLineEdit, QToolBar
 from pytestqt.qtbot import QtBot
 
 from ladderworks.core.dialects.s7.devices import parse_absolute
@@ -28,18 +28,27 @@ def _text(window: MainWindow, row: int, column: int) -> str:
     return item.text()
 
 
+def _type_into(qtbot: QtBot, window: MainWindow, row: int, column: int, text: str) -> None:
+    """Type `text` into a cell's editor and press Enter, as a user does."""
+    table = window.plc_docks.watch.table
+    item = table.item(row, column)
+    assert item is not None
+    table.setCurrentCell(row, column)
+    table.editItem(item)
+    editors = [e for e in table.viewport().findChildren(QLineEdit) if e.isVisible()]
+    assert len(editors) == 1
+    editor = editors[0]
+    editor.selectAll()
+    qtbot.keyClicks(editor, text)
+    qtbot.keyClick(editor, Qt.Key.Key_Return)  # Qt commits it on its next turn
+    qtbot.waitUntil(lambda: table.state() != QAbstractItemView.State.EditingState)
+
+
 def _type_name(qtbot: QtBot, window: MainWindow, name: str) -> int:
     """Type a name into the table's last (empty) row, as a user adds one."""
     table = window.plc_docks.watch.table
     last = table.rowCount() - 1
-    item = table.item(last, NAME)
-    assert item is not None
-    table.setCurrentCell(last, NAME)
-    table.editItem(item)
-    editor = table.viewport().findChild(QLineEdit)
-    assert editor is not None
-    qtbot.keyClicks(editor, name)
-    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    _type_into(qtbot, window, last, NAME, name)
     qtbot.waitUntil(lambda: table.rowCount() == last + 2)
     return last
 
@@ -79,10 +88,12 @@ def test_an_exported_folder_runs_and_a_watch_table_modify_drives_the_coil(
     session.run_scans(2)
     assert _text(window, motor_row, MONITOR) == "FALSE"
 
-    watch.set_modify(start_row, "TRUE")
+    _type_into(qtbot, window, start_row, MODIFY, "TRUE")
+    assert watch.rows[start_row].modify == "TRUE"
     table = watch.table
     table.selectRow(start_row)
-    window.findChild(type(watch.modify_button), "watchModifyNow").click()
+    qtbot.mouseClick(window.findChild(type(watch.modify_button), "watchModifyNow"),
+                     Qt.MouseButton.LeftButton)
     session.run_scans(2)
     motor, _ = parse_absolute("%Q0.2")
     assert session.run.bit(motor) == 1
