@@ -1437,151 +1437,216 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="465"/>
+        <source>&apos;{text}&apos; is neither a name of the program nor an address</source>
+        <translation>&apos;{text}&apos; is neither a name of the program nor an address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="467"/>
+        <source>&apos;{text}&apos; is a {type}: watch one of its members (e.g. {text}.Q)</source>
+        <translation>&apos;{text}&apos; is a {type}: watch one of its members (e.g. {text}.Q)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="469"/>
+        <source>&apos;{text}&apos; is a {type}: 64-bit values are not shown in the watch table yet</source>
+        <translation>&apos;{text}&apos; is a {type}: 64-bit values are not shown in the watch table yet</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <source>the value has {length} characters: at most {limit} are read</source>
+        <translation>the value has {length} characters: at most {limit} are read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="473"/>
+        <source>no modify value to write</source>
+        <translation>no modify value to write</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="474"/>
+        <source>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</source>
+        <translation>&apos;{text}&apos; is not TRUE or FALSE (or 1, 0)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="475"/>
+        <source>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</source>
+        <translation>&apos;{text}&apos; is not a whole number (e.g. 12, -3, 16#FF, 2#0101)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="477"/>
+        <source>&apos;{text}&apos; is out of range: {low} to {high}</source>
+        <translation>&apos;{text}&apos; is out of range: {low} to {high}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="479"/>
+        <source>&apos;{text}&apos; is not a real number (e.g. 1.5)</source>
+        <translation>&apos;{text}&apos; is not a real number (e.g. 1.5)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <source>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</source>
+        <translation>&apos;{text}&apos; is not a time (e.g. T#5S_300MS, T#1M30S or 1500 ms)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <source>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</source>
+        <translation>&apos;{text}&apos; is not one character of the Latin-1 set (e.g. &apos;A&apos;)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <source>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</source>
+        <translation>&apos;{text}&apos; has characters a string cannot hold (only the Latin-1 set)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="486"/>
+        <source>&apos;{text}&apos; is longer than the string&apos;s {length} characters</source>
+        <translation>&apos;{text}&apos; is longer than the string&apos;s {length} characters</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="489"/>
         <source>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</source>
         <translation>&apos;{text}&apos; is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="467"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
         <source>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</source>
         <translation>SIMATIC SD: expected {expected}, found &apos;{found}&apos;</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="469"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="493"/>
         <source>SIMATIC SD: the text ends inside {what} (cut off?)</source>
         <translation>SIMATIC SD: the text ends inside {what} (cut off?)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="471"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="495"/>
         <source>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</source>
         <translation>network {network}: &apos;{part}&apos; is not an instruction LadderWorks simulates</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="473"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="497"/>
         <source>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</source>
         <translation>network {network}: &apos;{text}&apos; is neither a tag, a member of the block nor an address</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="476"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="500"/>
         <source>network {network}: {part} needs its pin {pin}</source>
         <translation>network {network}: {part} needs its pin {pin}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="478"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="502"/>
         <source>network {network}: the wiring of {part} cannot be followed ({why})</source>
         <translation>network {network}: the wiring of {part} cannot be followed ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="480"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="504"/>
         <source>network {network}: there is no label &apos;{label}&apos; in this block</source>
         <translation>network {network}: there is no label &apos;{label}&apos; in this block</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="482"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="506"/>
         <source>network {network}: a {language} network is shown, not simulated</source>
         <translation>network {network}: a {language} network is shown, not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="484"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
         <source>network {network}: the block &apos;{block}&apos; it calls is not in the program</source>
         <translation>network {network}: the block &apos;{block}&apos; it calls is not in the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="486"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="510"/>
         <source>network {network}: {part} on the type &apos;{type}&apos; is not simulated</source>
         <translation>network {network}: {part} on the type &apos;{type}&apos; is not simulated</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="488"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="512"/>
         <source>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</source>
         <translation>network {network}: no room left for &apos;{text}&apos; (DB members and instances share 10000 bytes)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="491"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="515"/>
         <source>the file has {size} MB: S7 exports over {limit} MB are not read</source>
         <translation>the file has {size} MB: S7 exports over {limit} MB are not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="493"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="517"/>
         <source>tag table: {why}</source>
         <translation>tag table: {why}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="495"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="519"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="498"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="501"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="504"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>the S7 block&apos;s file no longer reads (line {line}): nothing is written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="506"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="530"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="510"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="515"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="539"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="518"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="521"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="524"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="548"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="527"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="530"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="533"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="536"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>
@@ -2100,32 +2165,32 @@
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="74"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="76"/>
         <source>&amp;Save</source>
         <translation>&amp;Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="76"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="78"/>
         <source>Save &amp;As...</source>
         <translation>Save &amp;As...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="78"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="80"/>
         <source>&amp;Import .MOD...</source>
         <translation>&amp;Import .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="80"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
         <source>&amp;Export .MOD...</source>
         <translation>&amp;Export .MOD...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="90"/>
         <source>Clear the list</source>
         <translation>Clear the list</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
         <source>Program &amp;properties...</source>
         <translation>Program &amp;properties...</translation>
     </message>
@@ -2135,149 +2200,154 @@
         <translation>&amp;New...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="82"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="74"/>
+        <source>Open &amp;folder...</source>
+        <translation>Open &amp;folder...</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/actions_table.py" line="84"/>
         <source>Import s&amp;ymbols...</source>
         <translation>Import s&amp;ymbols...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="86"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="88"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="90"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="92"/>
         <location filename="../ladderworks/gui/undo_texts.py" line="13"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="93"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="95"/>
         <location filename="../ladderworks/gui/undo_texts.py" line="14"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="96"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
         <source>Cu&amp;t</source>
         <translation>Cu&amp;t</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="98"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="100"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="102"/>
         <source>&amp;Paste</source>
         <translation>&amp;Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="103"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="105"/>
         <source>&amp;Delete</source>
         <translation>&amp;Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="106"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
         <source>&amp;Edit element</source>
         <translation>&amp;Edit element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="108"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="110"/>
         <source>NOT (invert)</source>
         <translation>NOT (invert)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="111"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
         <source>OR (add parallel)</source>
         <translation>OR (add parallel)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="113"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="115"/>
         <source>Output pins (FO)…</source>
         <translation>Output pins (FO)…</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="116"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="118"/>
         <source>Insert row before</source>
         <translation>Insert row before</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="119"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="121"/>
         <source>Insert row after</source>
         <translation>Insert row after</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="122"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="124"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="124"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="126"/>
         <source>&amp;Find...</source>
         <translation>&amp;Find...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="126"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="128"/>
         <source>R&amp;eplace...</source>
         <translation>R&amp;eplace...</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="128"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
         <source>Find &amp;next</source>
         <translation>Find &amp;next</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="130"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
         <source>Find pre&amp;vious</source>
         <translation>Find pre&amp;vious</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="132"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="134"/>
         <source>Zoom &amp;in</source>
         <translation>Zoom &amp;in</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="135"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="137"/>
         <source>Zoom &amp;out</source>
         <translation>Zoom &amp;out</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="138"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
         <source>&amp;Normal size</source>
         <translation>&amp;Normal size</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="140"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="142"/>
         <source>Fit &amp;width</source>
         <translation>Fit &amp;width</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="143"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="145"/>
         <source>Show as &amp;ladder</source>
         <translation>Show as &amp;ladder</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="145"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="147"/>
         <source>Show as &amp;text</source>
         <translation>Show as &amp;text</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="147"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="149"/>
         <source>C&amp;heck</source>
         <translation>C&amp;heck</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="149"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="151"/>
         <source>&amp;Compile</source>
         <translation>&amp;Compile</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="157"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="159"/>
         <source>&amp;Instruction reference</source>
         <translation>&amp;Instruction reference</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/actions_table.py" line="159"/>
+        <location filename="../ladderworks/gui/actions_table.py" line="161"/>
         <source>&amp;About LadderWorks</source>
         <translation>&amp;About LadderWorks</translation>
     </message>
@@ -2327,29 +2397,29 @@
         <translation>Main toolbar</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="207"/>
+        <location filename="../ladderworks/gui/main_window.py" line="209"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="438"/>
+        <location filename="../ladderworks/gui/main_window.py" line="443"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC runs the previous program)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="450"/>
+        <location filename="../ladderworks/gui/main_window.py" line="455"/>
         <source>Compile finished, but the PLC refused the program</source>
         <translation>Compile finished, but the PLC refused the program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="457"/>
+        <location filename="../ladderworks/gui/main_window.py" line="462"/>
         <source>Compile finished: {0} bytes, loaded into the PLC</source>
         <translation>Compile finished: {0} bytes, loaded into the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="532"/>
-        <location filename="../ladderworks/gui/main_window.py" line="282"/>
-        <location filename="../ladderworks/gui/main_window.py" line="452"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="538"/>
+        <location filename="../ladderworks/gui/main_window.py" line="284"/>
+        <location filename="../ladderworks/gui/main_window.py" line="457"/>
         <source>Untitled</source>
         <translation>Untitled</translation>
     </message>
@@ -2427,7 +2497,7 @@
     <message>
         <location filename="../ladderworks/gui/file_actions.py" line="226"/>
         <location filename="../ladderworks/gui/file_actions.py" line="244"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="548"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="554"/>
         <location filename="../ladderworks/gui/symbol_import.py" line="58"/>
         <source>Cannot read {0}: {1}</source>
         <translation>Cannot read {0}: {1}</translation>
@@ -2453,133 +2523,134 @@
         <translation>Open program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="345"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="368"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="414"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="418"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="349"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="372"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="424"/>
+        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="354"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="358"/>
         <source>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</source>
         <translation>{0} did not parse and is not overwritten. Fix the errors and use Show as ladder, or save under another name.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="360"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="364"/>
         <source>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</source>
         <translation>{0} is a WinProladder project (.pdw): LadderWorks reads it but does not write it, since what it does not decode would be lost. Save the program as a WinProladder listing (.lst) instead.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="414"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="420"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
         <source>{0} is read-only and is not replaced.</source>
         <translation>{0} is read-only and is not replaced.</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="419"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="492"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="425"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="498"/>
         <source>Cannot write {0}: {1}</source>
         <translation>Cannot write {0}: {1}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="429"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="435"/>
         <source>Fatek WinProladder listings (*.lst *.LST);;All files (*)</source>
         <translation>Fatek WinProladder listings (*.lst *.LST);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="547"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="553"/>
         <source>Recover unsaved work</source>
         <translation>Recover unsaved work</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="564"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="570"/>
         <source>Recovered unsaved work from {0}</source>
         <translation>Recovered unsaved work from {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="397"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="403"/>
         <source>Saved {0}; networks with errors are kept as drawings (see the error list)</source>
         <translation>Saved {0}; networks with errors are kept as drawings (see the error list)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="402"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="408"/>
         <source>Saved {0}</source>
         <translation>Saved {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="428"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="433"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
         <location filename="../ladderworks/gui/file_actions.py" line="439"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="445"/>
         <source>Save program</source>
         <translation>Save program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="434"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="440"/>
         <source>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</source>
         <translation>Delta DVP instruction lists (*.il *.IL *.txt *.TXT);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="447"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="453"/>
         <source>Import .MOD</source>
         <translation>Import .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="448"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="454"/>
         <source>Mnemonic programs (*.MOD *.mod);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD *.mod);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="470"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="487"/>
-        <location filename="../ladderworks/gui/file_actions.py" line="491"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="476"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="493"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="497"/>
         <source>Export .MOD</source>
         <translation>Export .MOD</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="471"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="477"/>
         <source>Mnemonic programs (*.MOD);;All files (*)</source>
         <translation>Mnemonic programs (*.MOD);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/file_actions.py" line="495"/>
+        <location filename="../ladderworks/gui/file_actions.py" line="501"/>
         <source>Exported {0}</source>
         <translation>Exported {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="408"/>
+        <location filename="../ladderworks/gui/main_window.py" line="413"/>
         <source>Check: {0} error(s)</source>
         <translation>Check: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="424"/>
+        <location filename="../ladderworks/gui/main_window.py" line="429"/>
         <source>Compile failed: {0} error(s)</source>
         <translation>Compile failed: {0} error(s)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="444"/>
+        <location filename="../ladderworks/gui/main_window.py" line="449"/>
         <source>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</source>
         <translation>Compile finished: {0} bytes (not loaded: the PLC keeps the program it has)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="494"/>
+        <location filename="../ladderworks/gui/main_window.py" line="499"/>
         <source>Address {0} set</source>
         <translation>Address {0} set</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="497"/>
+        <location filename="../ladderworks/gui/main_window.py" line="502"/>
         <source>{0} copied (select a contact or coil to set its address)</source>
         <translation>{0} copied (select a contact or coil to set its address)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="530"/>
+        <location filename="../ladderworks/gui/main_window.py" line="535"/>
         <source>About LadderWorks</source>
         <translation>About LadderWorks</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/main_window.py" line="531"/>
+        <location filename="../ladderworks/gui/main_window.py" line="536"/>
         <source>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</source>
         <translation>LadderWorks: ladder (FANUC PMC style) programming for CNC machines.</translation>
     </message>
@@ -2638,6 +2709,21 @@
         <location filename="../ladderworks/gui/new_program.py" line="65"/>
         <source>The program cannot become a {0} program: {1}</source>
         <translation>The program cannot become a {0} program: {1}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/folder_program.py" line="50"/>
+        <source>Open a folder of exported blocks</source>
+        <translation>Open a folder of exported blocks</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/folder_program.py" line="60"/>
+        <source>{0}: no changes to save</source>
+        <translation>{0}: no changes to save</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/folder_program.py" line="63"/>
+        <source>{0} is a folder of exported blocks: save the changed program under a file name</source>
+        <translation>{0} is a folder of exported blocks: save the changed program under a file name</translation>
     </message>
 </context>
 <context>
@@ -4951,6 +5037,140 @@
         <location filename="../ladderworks/gui/docks/trace_files.py" line="140"/>
         <source>Import a trace</source>
         <translation>Import a trace</translation>
+    </message>
+</context>
+<context>
+    <name>WatchTable</name>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="134"/>
+        <source>Watch table</source>
+        <translation>Watch table</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="136"/>
+        <source>Watch table: tags and addresses, live, modified on request</source>
+        <translation>Watch table: tags and addresses, live, modified on request</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="139"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="139"/>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="140"/>
+        <source>Display format</source>
+        <translation>Display format</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="140"/>
+        <source>Monitor value</source>
+        <translation>Monitor value</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="141"/>
+        <source>Modify value</source>
+        <translation>Modify value</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="142"/>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="379"/>
+        <source>Modify now</source>
+        <translation>Modify now</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="143"/>
+        <source>Write the modify values of the checked rows (none checked: of the selected rows) into the PLC now</source>
+        <translation>Write the modify values of the checked rows (none checked: of the selected rows) into the PLC now</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="146"/>
+        <source>Delete rows</source>
+        <translation>Delete rows</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="292"/>
+        <source>Checked: written by Modify now</source>
+        <translation>Checked: written by Modify now</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="302"/>
+        <source>Type a name or an address to add a row</source>
+        <translation>Type a name or an address to add a row</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="305"/>
+        <source>&lt;Add new&gt;</source>
+        <translation>&lt;Add new&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="381"/>
+        <source>Delete row</source>
+        <translation>Delete row</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="405"/>
+        <source>Check the rows to modify (or select one), then Modify now</source>
+        <translation>Check the rows to modify (or select one), then Modify now</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="415"/>
+        <source>{0} values written, {1} refused</source>
+        <translation>{0} values written, {1} refused</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_table.py" line="418"/>
+        <source>{0} values written</source>
+        <translation>{0} values written</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="11"/>
+        <source>Bool</source>
+        <translation>Bool</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="12"/>
+        <source>DEC</source>
+        <translation>DEC</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="13"/>
+        <source>DEC+/-</source>
+        <translation>DEC+/-</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="14"/>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="15"/>
+        <source>Bin</source>
+        <translation>Bin</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="16"/>
+        <source>Floating-point number</source>
+        <translation>Floating-point number</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="17"/>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="18"/>
+        <source>Character</source>
+        <translation>Character</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/watch_texts.py" line="19"/>
+        <source>String</source>
+        <translation>String</translation>
     </message>
 </context>
 </TS>

@@ -56,6 +56,8 @@ class SymbolTable:
     by_symbol: dict[str, Address] = field(default_factory=dict)
     programs: dict[int, Symbol] = field(default_factory=dict)
     program_by_symbol: dict[str, int] = field(default_factory=dict)
+    # a symbol's data type as its program states it (an S7 tag's or member's: "Int", "Time")
+    types: dict[str, str] = field(default_factory=dict)
 
     def __len__(self) -> int:
         return len(self.by_address) + len(self.programs)
@@ -90,6 +92,14 @@ class SymbolTable:
         if found is None:
             upper = symbol.upper()
             found = next((a for s, a in self.by_symbol.items() if s.upper() == upper), None)
+        return found
+
+    def type_of(self, symbol: str) -> str:
+        """The data type name a symbol's program gives it (exact, then case-insensitive), ""."""
+        found = self.types.get(symbol)
+        if found is None:
+            upper = symbol.upper()
+            found = next((t for s, t in self.types.items() if s.upper() == upper), "")
         return found
 
     def program_symbol(self, number: int) -> str:

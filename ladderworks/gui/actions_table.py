@@ -54,7 +54,7 @@ class MenuSpec:
 MENUS: tuple[MenuSpec, ...] = (
     MenuSpec("menu_file", QT_TRANSLATE_NOOP("MainWindow", "&File")),
     MenuSpec("menu_recent", QT_TRANSLATE_NOOP("MainWindow", "Recent files"),
-             parent="menu_file", after="action_open"),
+             parent="menu_file", after="action_open_folder"),
     MenuSpec("menu_edit", QT_TRANSLATE_NOOP("MainWindow", "&Edit")),
     MenuSpec("menu_view", QT_TRANSLATE_NOOP("MainWindow", "&View")),
     MenuSpec("menu_plc", QT_TRANSLATE_NOOP("MainWindow", "&PLC")),
@@ -71,6 +71,8 @@ ACTIONS: tuple[ActionSpec, ...] = (
       "new_program_dialog", shortcut=Key.New, icon="SP_FileIcon", menu="menu_file", toolbar=0),
     A("action_open", QT_TRANSLATE_NOOP("MainWindow", "&Open..."),
       "open_dialog", shortcut=Key.Open, icon="SP_DialogOpenButton", menu="menu_file", toolbar=0),
+    A("action_open_folder", QT_TRANSLATE_NOOP("MainWindow", "Open &folder..."),
+      "open_folder_dialog", icon="SP_DirOpenIcon", menu="menu_file"),
     A("action_save", QT_TRANSLATE_NOOP("MainWindow", "&Save"),
       "save", shortcut=Key.Save, icon="SP_DialogSaveButton", menu="menu_file", group=1, toolbar=0),
     A("action_save_as", QT_TRANSLATE_NOOP("MainWindow", "Save &As..."),

@@ -49,20 +49,23 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
     entry block's interface (`#Name`)."""
     table = SymbolTable()
 
-    def add(name: str, address: Address, comment: str = "") -> None:
+    def add(name: str, address: Address, comment: str = "", type_name: str = "") -> None:
         table.add(address, Symbol(name, (comment,) if comment else ()))
+        table.types.setdefault(name, type_name)
 
     for tag in program.tags:
         place = layout.global_name((tag.name,))
         if place is not None:
-            add(f'"{tag.name}"', place.address, tag.comment)
+            add(f'"{tag.name}"', place.address, tag.comment, place.type_name)
             table.by_symbol.setdefault(tag.name, place.address)
+            table.types.setdefault(tag.name, place.type_name)
     for section in ("Input", "Output", "InOut", "Static", "Temp"):
         for member in entry.members(section):
             place = layout.local(entry, (member.name,))
             if place is not None:
-                add(f"#{member.name}", place.address, member.comment)
+                add(f"#{member.name}", place.address, member.comment, place.type_name)
                 table.by_symbol.setdefault(member.name, place.address)
+                table.types.setdefault(member.name, place.type_name)
     own = (f"#{entry.name.lower()}",)
     for key, place in list(layout.places.items()):
         if place.type_name == "Struct" or (len(key) < 2 and key[0].startswith("#")):
@@ -77,13 +80,15 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
             name = ".".join([f'"{names[0]}"', *names[1:]])
         if name not in table.by_symbol:
             table.by_symbol[name] = place.address
+            table.types[name] = place.type_name
         kind = place.type_name.lower()
         members = TIMER_MEMBERS if kind in TIMER_TYPES else COUNTER_MEMBERS \
             if kind in COUNTER_TYPES else {}
         for pin in members:  # an instance's members: "IEC_Timer_0_DB".Q, #Zaman.ET
             inner = layout.sub(key, (pin,))
-            if inner is not None:
-                table.by_symbol.setdefault(f"{name}.{pin.upper()}", inner.address)
+            if inner is not None and f"{name}.{pin.upper()}" not in table.by_symbol:
+                table.by_symbol[f"{name}.{pin.upper()}"] = inner.address
+                table.types[f"{name}.{pin.upper()}"] = inner.type_name
     # the instances' members (`"T1".Q`, `#Timer.ET`) resolve on demand in scenarios
     return table
 
