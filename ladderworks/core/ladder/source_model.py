@@ -1,0 +1,40 @@
+"""A dialect's own model of its source, kept with the Program it lowered to (`Program.model`).
+
+A family whose source is not an instruction list (S7's network graph) draws its networks from
+that model, one drawn network per source network, instead of laying out the engine's
+instructions; a changed drawing is turned back into the model and lowered again. One ladder
+model serves every family: the drawn networks are LadderNetworks (named box pins, operand texts).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
+
+if TYPE_CHECKING:
+    from ladderworks.core.diagnostics import Diagnostic
+    from ladderworks.core.il.program import Program
+    from ladderworks.core.ladder.model import LadderNetwork
+
+
+@runtime_checkable
+class SourceModel(Protocol):
+    """What the console asks of a dialect's model of its source."""
+
+    def draw(self) -> list[LadderNetwork]:
+        """One drawn network per source network, in order."""
+        ...
+
+    def spans(self) -> list[range]:
+        """The program's engine networks each drawn network lowered to (same order)."""
+        ...
+
+    def rebuild(self, networks: list[LadderNetwork]) -> tuple[Program, list[Diagnostic]]:
+        """The program of a drawing (networks changed, added or removed), lowered again; its
+        `model` is the model of the new drawing."""
+        ...
+
+
+def source_model(program: Program | None) -> SourceModel | None:
+    """The program's model of its source when its dialect keeps one that draws, else None."""
+    model = program.model if program is not None else None
+    return model if isinstance(model, SourceModel) else None
