@@ -223,7 +223,7 @@ class LadderNetwork:
     def copy(self) -> LadderNetwork:
         """An independent copy (elements are immutable and shared)."""
         return LadderNetwork(self.columns, self.rows, dict(self.cells), set(self.links),
-                             list(self.comments), self.listing, self.source)
+                             list(self.comments), self.listing, self.source, self.label)
 
     def elements(self) -> Iterator[tuple[Cell, Element]]:
         """Anchor cell and element, top to bottom then left to right."""
