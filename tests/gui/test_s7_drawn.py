@@ -13,10 +13,10 @@ from pytestqt.qtbot import QtBot
 
 from ladderworks.core.dialects.s7.devices import parse_absolute
 from ladderworks.core.ladder.model import Contact, FunctionBox
+from ladderworks.gui.docks.plc_docks import PlcDocks
 from ladderworks.gui.editor import geometry
 from ladderworks.gui.editor.network_item import NetworkItem
 from ladderworks.gui.main_window import MainWindow
-from ladderworks.gui.docks.plc_docks import PlcDocks
 from tests.gui.plc_docks_help import plc_docks
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "resources" / "examples"

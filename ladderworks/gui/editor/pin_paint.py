@@ -4,7 +4,7 @@ data type inside, each pin's name at its edge and the operand wired to it outsid
 from __future__ import annotations
 
 from PySide6.QtCore import QPointF, QRectF, Qt
-from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPainter, QPen
+from PySide6.QtGui import QColor, QFont, QFontMetricsF, QPainter
 
 from ladderworks.core.ladder.model import FunctionBox, Pin
 from ladderworks.gui.editor.geometry import CELL_W, RowMetrics

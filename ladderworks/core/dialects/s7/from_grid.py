@@ -26,7 +26,8 @@ from ladderworks.core.dialects.s7.sd_lexer import LexError, tokens
 from ladderworks.core.dialects.s7.sd_parser import ParseError, _Parser
 from ladderworks.core.dialects.spelling import spelling
 from ladderworks.core.ladder.decompose import NodeNets
-from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire as Line
+from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork
+from ladderworks.core.ladder.model import Wire as Line
 
 
 class GridError(Exception):

@@ -90,9 +90,9 @@ def _wired(graph: PinGraph, part: Part) -> tuple[list[str], list[str]]:
     inputs: list[str] = []
     outputs: list[str] = []
     for wire in graph.network.wires:
-        if wire.source.part == part.uid and wire.source.pin.lower() not in ("eno", ""):
-            if wire.source.pin not in outputs:
-                outputs.append(wire.source.pin)
+        if wire.source.part == part.uid and wire.source.pin.lower() not in ("eno", "") \
+                and wire.source.pin not in outputs:
+            outputs.append(wire.source.pin)
         for end in wire.targets:
             if end.part == part.uid and end.pin.lower() != "en" and end.pin not in inputs:
                 inputs.append(end.pin)

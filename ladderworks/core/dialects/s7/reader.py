@@ -19,8 +19,8 @@ from ladderworks.core.dialects.s7.layout import (
     TIMER_TYPES,
     Layout,
 )
-from ladderworks.core.dialects.s7.source import program_of
 from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd
+from ladderworks.core.dialects.s7.source import program_of
 from ladderworks.core.dialects.s7.tags import is_tag_table, read_tag_table
 from ladderworks.core.dialects.s7.texts import pick, read_texts
 from ladderworks.core.il.program import FileSource, Program

@@ -11,8 +11,9 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 
+from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic
-from ladderworks.core.dialects.s7.drawing import Context, NotDrawn, draw_network
+from ladderworks.core.dialects.s7.drawing import Context, Emitted, NotDrawn, draw_network
 from ladderworks.core.dialects.s7.graph import Block, Operand, S7Network, S7Program
 from ladderworks.core.dialects.s7.layout import Layout
 from ladderworks.core.dialects.s7.lowering import BlockLowering, start_values
@@ -30,7 +31,7 @@ class Lowered:
     networks: list[Network]
     diagnostics: list[Diagnostic]
     spans: list[range]
-    emitted: dict = field(default_factory=dict)
+    emitted: Emitted = field(default_factory=dict)
 
 
 def lower(block: Block, layout: Layout) -> Lowered:
@@ -66,7 +67,7 @@ class S7Source:
     def scope(self) -> tuple[str, ...]:
         return (f"#{self.entry.name.lower()}",)
 
-    def resolve(self, operand: Operand):  # noqa: ANN201 - Address | None
+    def resolve(self, operand: Operand) -> Address | None:
         """The engine address of an operand in the entry block (None when it names none)."""
         place = self.layout.resolve(self.entry, operand, "", self.scope)
         return place.address if place is not None else None

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+from ladderworks.core.compiler import compile_program
 from ladderworks.core.dialects.s7 import reader, xml_open
 from ladderworks.core.dialects.s7.from_grid import network_from_grid, operand_from_text
 from ladderworks.core.dialects.s7.graph import OperandKind
@@ -19,10 +20,9 @@ from ladderworks.core.il.program import Program
 from ladderworks.core.ladder.art import draw_document
 from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
-from ladderworks.core.compiler import compile_program
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS
-from ladderworks.core.plc.session import PlcRun
 from ladderworks.core.plc.scenario import read_scenario, run_scenario
+from ladderworks.core.plc.session import PlcRun
 
 ROOT = Path(__file__).resolve().parents[4] / "resources" / "examples"
 NAMES = ("calls", "compare", "counters", "jump_list", "jumps", "switch", "timers")
