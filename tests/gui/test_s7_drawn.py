@@ -116,3 +116,23 @@ def test_an_edit_of_an_s7_network_lowers_again_and_runs(qtbot: QtBot,
     session.set_bit(parse_absolute("%I0.7")[0], 1)
     session.run_scans(2)
     assert session.run.bit(lamp) == 0
+
+
+def test_an_operand_typed_on_an_s7_contact_is_kept_as_written(qtbot: QtBot,
+                                                               window: MainWindow) -> None:
+    assert window.load(EXAMPLES / "s7" / "timers" / "Main.s7dcl")
+    editor = window.editor
+    editor.inline.open_address(0, 0, 0)
+    assert editor.inline_editor.text() == '"Start"'
+    editor.inline_editor.setText("Nowhere")
+    qtbot.keyClick(editor.inline_editor, Qt.Key.Key_Return)
+    assert "S7 address" in editor.inline_message.text()
+    editor.inline_editor.setText("%I0.7")
+    qtbot.keyClick(editor.inline_editor, Qt.Key.Key_Return)
+    contact = editor.networks[0].cells[(0, 0)]
+    assert isinstance(contact, Contact) and contact.texts == ("%I0.7",)
+    assert contact.address == parse_absolute("%I0.7")[0]
+    program, found = window.model.program()
+    assert program is not None and not found
+    assert any(ins.operand == contact.address for net in program.networks
+               for ins in net.instructions)

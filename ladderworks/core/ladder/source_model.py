@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 if TYPE_CHECKING:
+    from ladderworks.core.address import Address
     from ladderworks.core.diagnostics import Diagnostic
     from ladderworks.core.il.program import Program
     from ladderworks.core.ladder.model import LadderNetwork
@@ -31,6 +32,11 @@ class SourceModel(Protocol):
     def rebuild(self, networks: list[LadderNetwork]) -> tuple[Program, list[Diagnostic]]:
         """The program of a drawing (networks changed, added or removed), lowered again; its
         `model` is the model of the new drawing."""
+        ...
+
+    def operand(self, text: str) -> tuple[str, Address | None] | Diagnostic:
+        """A bit operand typed on a contact or coil: as the source writes it and its engine
+        address, or why it is none."""
         ...
 
 

@@ -107,6 +107,19 @@ class LadderEdits:
         return self.run_edit(index, address_and_comment,
                              editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), shown))
 
+    def set_operand(self, index: int, row: int, col: int, text: str, address: Address | None,
+                    comment: str | None = None) -> bool:
+        """The operand of a contact or coil drawn from a source's own model (S7's "Start"),
+        and its new `comment` (None: kept): one step."""
+
+        def operand_and_comment(network: LadderNetwork) -> None:
+            core.set_operand(network, row, col, text, address)
+            if comment is not None:
+                core.set_comment(network, row, col, comment)
+
+        return self.run_edit(index, operand_and_comment,
+                             editor_step(QT_TRANSLATE_NOOP("LadderEditor", "Address {0}"), text))
+
     def set_comments(self, index: int, lines: list[str]) -> bool:
         """A network's comment lines."""
         return self.run_edit(index, lambda n: core.set_network_comments(n, lines),

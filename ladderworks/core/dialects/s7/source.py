@@ -14,7 +14,7 @@ from dataclasses import dataclass, field, replace
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic
 from ladderworks.core.dialects.s7.drawing import Context, Emitted, NotDrawn, draw_network
-from ladderworks.core.dialects.s7.graph import Block, Operand, S7Network, S7Program
+from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, S7Network, S7Program
 from ladderworks.core.dialects.s7.layout import Layout
 from ladderworks.core.dialects.s7.lowering import BlockLowering, start_values
 from ladderworks.core.il.program import Network, Program
@@ -71,6 +71,19 @@ class S7Source:
         """The engine address of an operand in the entry block (None when it names none)."""
         place = self.layout.resolve(self.entry, operand, "", self.scope)
         return place.address if place is not None else None
+
+    def operand(self, text: str) -> tuple[str, Address | None] | Diagnostic:
+        """A bit operand typed on a contact or coil ("Start", Start, #Run, %I0.1, "DB".x)."""
+        from ladderworks.core.dialects.s7.from_grid import operand_from_text
+
+        operand = operand_from_text(text)
+        if operand.kind is OperandKind.LOCAL and not text.strip().startswith("#") and \
+                self.entry.member(operand.path[0]) is None:  # a bare tag name: "Start"
+            operand = Operand(OperandKind.GLOBAL, operand.path, text.strip())
+        address = self.resolve(operand)
+        if address is None or address.bit is None:
+            return Diagnostic("s7-address", {"text": text.strip()}, 0, 0)
+        return operand.display(), address
 
     def draw(self) -> list[LadderNetwork]:
         """One drawn network per S7 network of the entry block."""
