@@ -70,9 +70,12 @@ class _Reader:
         self.sources: dict[int, list[End]] = {self.rail: [End(powerrail=True)]}
         self.targets: dict[int, list[End]] = {}
 
-    def fail(self, cell: tuple[int, int], why: str) -> GridError:
-        return GridError(Diagnostic("s7-grid", {"network": self.index, "row": cell[0] + 1,
-                                                "column": cell[1] + 1, "why": why}, 0, 0))
+    def fail(self, cell: tuple[int, int], name: str = "") -> GridError:
+        """The element at `cell` is no S7 element (`name`), or has no operand (no name)."""
+        where = {"network": self.index, "row": cell[0] + 1, "column": cell[1] + 1}
+        if not name:
+            return GridError(Diagnostic("s7-grid-operand", where, 0, 0))
+        return GridError(Diagnostic("s7-grid-element", {**where, "name": name}, 0, 0))
 
     def new_part(self, name: str, **fields: object) -> Part:
         part = Part(str(len(self.parts) + 1), name, **fields)  # type: ignore[arg-type]
@@ -107,7 +110,7 @@ class _Reader:
         if not contact.function:
             operand = self.operand(contact)
             if operand is None:
-                raise self.fail(cell, "a contact without its operand")
+                raise self.fail(cell)
             part = self.new_part("Contact", negated=frozenset({"operand"} if contact.negated
                                                               else ()))
             self.operand_wire(part, "operand", operand)
@@ -115,7 +118,7 @@ class _Reader:
             name = next((n for n, row_name in CONTACT_ROWS.items()
                          if row_name == contact.function), None)
             if name is None:
-                raise self.fail(cell, "a contact S7 has not")
+                raise self.fail(cell, contact.function)
             type_name = contact.mark.partition("\n")[2]
             part = self.new_part(name, template={"SrcType": type_name} if type_name else {})
             if name in COMPARES:
@@ -133,12 +136,15 @@ class _Reader:
         mark = coil.mark
         if not mark:
             name = next(n for n, write in COILS.items() if write is coil.write)
+            operand = self.operand(coil)
+            if operand is None:
+                raise self.fail(cell)
             part = self.new_part(name, negated=frozenset({"operand"} if coil.negated else ()))
-            self.operand_wire(part, "operand", self.operand(coil))
+            self.operand_wire(part, "operand", operand)
         else:
             name = next((n for n, m in COIL_MARKS.items() if m == mark), "")
             if not name:
-                raise self.fail(cell, "a coil S7 has not")
+                raise self.fail(cell, mark)
             first = coil.texts[0] if coil.texts else ""
             part = self.new_part(name, label=first if name in ("Jump", "JumpN") else "")
             if name in ("PCoil", "NCoil"):
@@ -155,7 +161,7 @@ class _Reader:
         origin = dict(box.origin)
         name = origin.pop("part", "")
         if name not in pins.BOXES and name != "Call":
-            raise self.fail(cell, "a box S7 has not")
+            raise self.fail(cell, box.title or box.name)
         call, call_kind = origin.pop("call", ""), origin.pop("call_kind", "")
         dests = tuple(d for d in origin.pop("dests", "").split(",") if d)
         part = self.new_part(name, template=origin, call=call, call_kind=call_kind,
@@ -190,7 +196,7 @@ class _Reader:
             elif isinstance(element, FunctionBox):
                 self.box((row, col), element)
             elif not isinstance(element, Line):
-                raise self.fail((row, col), "an element S7 has not")
+                raise self.fail((row, col), type(element).__name__)
         for net, targets in self.targets.items():
             ends = self.sources.get(net, [])
             if not ends:

@@ -187,7 +187,7 @@ def test_a_box_s7_has_not_is_a_diagnostic_at_its_cell() -> None:
     doc = program_to_ladder(program)
     doc.networks[1].cells[(0, 3)] = FunctionBox.new("ADDB", (2, 0, 0, 0))
     _rebuilt, found = ladder_to_program(doc)
-    assert [d.code for d in found] == ["s7-grid"]
+    assert [d.code for d in found] == ["s7-grid-element"]
     assert found[0].args["network"] == 2 and found[0].args["column"] == 4
 
 
