@@ -1966,7 +1966,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="131"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="137"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -1976,32 +1976,37 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="38"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="43"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="146"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="168"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="174"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="39"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="285"/>
+        <source>This instruction is not placed from the palette in this program</source>
+        <translation>Bu komut bu programda paletten yerleştirilmez</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="44"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="179"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="185"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="183"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="189"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -2011,17 +2016,19 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="145"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="151"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="49"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="54"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="295"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="54"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="59"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="296"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
@@ -2032,13 +2039,13 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/editor/inline_edit.py" line="69"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="126"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="132"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="108"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="121"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="114"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="127"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
@@ -2048,17 +2055,17 @@
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="325"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="370"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="337"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="382"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="350"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="395"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -2802,6 +2809,19 @@
         <location filename="../ladderworks/gui/locale_numbers.py" line="18"/>
         <source>{0}%</source>
         <translation>%{0}</translation>
+    </message>
+</context>
+<context>
+    <name>OperandDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/operand_dialog.py" line="17"/>
+        <source>Operands of {0}</source>
+        <translation>{0} operandları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/operand_dialog.py" line="20"/>
+        <source>As TIA Portal writes them: &quot;Start&quot;, #Timer, %MW2, T#10s, 5</source>
+        <translation>TIA Portal&apos;ın yazdığı gibi: &quot;Start&quot;, #Timer, %MW2, T#10s, 5</translation>
     </message>
 </context>
 <context>
@@ -4858,12 +4878,22 @@
         <translation>Fatek FBs kontakları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="155"/>
+        <location filename="../ladderworks/gui/palette.py" line="36"/>
+        <source>Siemens S7-1200 instructions</source>
+        <translation>Siemens S7-1200 komutları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="37"/>
+        <source>S7-1200 program structure</source>
+        <translation>S7-1200 program yapısı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="157"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="156"/>
+        <location filename="../ladderworks/gui/palette.py" line="158"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>

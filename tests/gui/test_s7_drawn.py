@@ -136,3 +136,56 @@ def test_an_operand_typed_on_an_s7_contact_is_kept_as_written(qtbot: QtBot,
     assert program is not None and not found
     assert any(ins.operand == contact.address for net in program.networks
                for ins in net.instructions)
+
+
+def test_the_s7_palette_places_a_ton_with_its_operands_and_it_runs(
+        qtbot: QtBot, window: MainWindow) -> None:
+    """A new network drawn from the palette: "Start", a TON of 1 s from the function list
+    (its operands typed in the operand dialog), a coil %Q0.5."""
+    from ladderworks.core import ladder as core
+
+    assert window.load(EXAMPLES / "s7" / "timers" / "Main.s7dcl")
+    model = window.editor.model
+    index = model.blank_index()
+    edits = window.editor.edits
+    edits.open_function_dialog(index, 0, 2, "S7.TON")
+    dialog = edits.operand_dialog
+    assert dialog is not None
+    assert [e.objectName() for e in dialog.edits] == ["operand_instance", "operand_PT",
+                                                      "operand_ET"]
+    assert [e.text() for e in dialog.edits] == ["<???>", "<???>", "..."]
+    dialog.edits[0].setText('"Yeni_TON"')
+    dialog.edits[1].setText("T#1s")
+    dialog.accept()
+    network = model.networks[index]
+    ton = next(e for e in network.cells.values() if isinstance(e, FunctionBox))
+    assert ton.instance == '"Yeni_TON"' and ton.title == "TON"
+    for element, col in ((Contact(texts=('"Start"',)), 0),
+                         (core.Coil(texts=("%Q0.5",)), network.columns)):
+        model.apply(index, model.prepare(index, lambda n, e=element, c=col:
+                                         core.place_wired(n, 0, c, e)))
+    program, found = model.program()
+    assert program is not None and not found, found
+    session = _running(qtbot, window).session
+    lamp = parse_absolute("%Q0.5")[0]
+    session.set_bit(parse_absolute("%I0.0")[0], 1)  # "Start"
+    session.step(900)
+    assert session.run.bit(lamp) == 0
+    session.step(200)
+    assert session.run.bit(lamp) == 1
+
+
+def test_an_s7_comparison_from_the_palette_takes_its_two_operands(
+        qtbot: QtBot, window: MainWindow) -> None:
+    assert window.load(EXAMPLES / "s7" / "timers" / "Main.s7dcl")
+    index = window.editor.model.blank_index()
+    edits = window.editor.edits
+    edits.open_function_dialog(index, 0, 0, "S7.GT")
+    dialog = edits.operand_dialog
+    assert dialog is not None and len(dialog.edits) == 2
+    dialog.edits[0].setText('"Geçen Süre"')
+    dialog.edits[1].setText("T#3s")
+    dialog.accept()
+    contact = window.editor.networks[index].cells[(0, 0)]
+    assert isinstance(contact, Contact) and contact.texts == ('"Geçen Süre"', "T#3s")
+    assert contact.mark == ">\nInt"

@@ -14,7 +14,7 @@ if TYPE_CHECKING:
     from ladderworks.core.address import Address
     from ladderworks.core.diagnostics import Diagnostic
     from ladderworks.core.il.program import Program
-    from ladderworks.core.ladder.model import LadderNetwork
+    from ladderworks.core.ladder.model import Element, LadderNetwork
 
 
 @runtime_checkable
@@ -37,6 +37,18 @@ class SourceModel(Protocol):
     def operand(self, text: str) -> tuple[str, Address | None] | Diagnostic:
         """A bit operand typed on a contact or coil: as the source writes it and its engine
         address, or why it is none."""
+        ...
+
+    def palette(self, name: str) -> Element | None:
+        """The element a palette row places in this program (None: the row's own box)."""
+        ...
+
+    def operands(self, element: Element) -> list[tuple[str, str]]:
+        """An element's operands to edit: (name, text as written) in order."""
+        ...
+
+    def with_operands(self, element: Element, texts: list[str]) -> Element:
+        """The element with its operands (in the order of `operands`) set."""
         ...
 
 

@@ -29,6 +29,8 @@ from ladderworks.core.ladder.decompose import NodeNets
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork
 from ladderworks.core.ladder.model import Wire as Line
 
+UNWIRED = "..."  # an optional output wired to nothing, as TIA shows it
+
 
 class GridError(Exception):
     """A drawing that is no S7 network; `diagnostic` names the network's cell."""
@@ -72,7 +74,8 @@ class _Reader:
 
     def fail(self, cell: tuple[int, int], name: str = "") -> GridError:
         """The element at `cell` is no S7 element (`name`), or has no operand (no name)."""
-        where = {"network": self.index, "row": cell[0] + 1, "column": cell[1] + 1}
+        where: dict[str, object] = {"network": self.index, "row": cell[0] + 1,
+                                    "column": cell[1] + 1}
         if not name:
             return GridError(Diagnostic("s7-grid-operand", where, 0, 0))
         return GridError(Diagnostic("s7-grid-element", {**where, "name": name}, 0, 0))
@@ -175,8 +178,8 @@ class _Reader:
             self.operand_wire(part, "bit", operand_from_text(box.instance))
         ins, outs = pins.LAYOUTS.get(name, ((), ()))
         for pin in box.named:
-            if pin.output and pin.name.startswith(("DEST", "ELSE")):
-                continue  # the jump table's labels are its `dests`
+            if (pin.output and pin.name.startswith(("DEST", "ELSE"))) or pin.text == UNWIRED:
+                continue  # the jump table's labels are its `dests`; an output left unwired
             key = _key(name, pin.name, ins if not pin.output else outs, pin.row)
             if pin.negated:
                 part.negated = part.negated | {key}

@@ -13,12 +13,13 @@ from dataclasses import dataclass, field, replace
 
 from ladderworks.core.address import Address
 from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.dialects.s7 import palette
 from ladderworks.core.dialects.s7.drawing import Context, Emitted, NotDrawn, draw_network
 from ladderworks.core.dialects.s7.graph import Block, Operand, OperandKind, S7Network, S7Program
 from ladderworks.core.dialects.s7.layout import Layout
 from ladderworks.core.dialects.s7.lowering import BlockLowering, start_values
 from ladderworks.core.il.program import Network, Program
-from ladderworks.core.ladder.model import LadderNetwork
+from ladderworks.core.ladder.model import Coil, Contact, Element, LadderNetwork
 
 Finish = Callable[[Program, S7Program, Layout, Block], None]  # names the program's symbols
 
@@ -84,6 +85,27 @@ class S7Source:
         if address is None or address.bit is None:
             return Diagnostic("s7-address", {"text": text.strip()}, 0, 0)
         return operand.display(), address
+
+    def palette(self, name: str) -> Element | None:
+        """What an S7 palette row places (palette.py)."""
+        return palette.new_element(name)
+
+    def operands(self, element: Element) -> list[tuple[str, str]]:
+        """The element's operands by name, as written."""
+        return list(zip(palette.operand_names(element), palette.operand_texts(element),
+                        strict=False))
+
+    def with_operands(self, element: Element, texts: list[str]) -> Element:
+        """The element with its operands set (an operand on a contact or coil resolved)."""
+        changed = palette.with_operands(element, texts)
+        plain = isinstance(changed, Coil) or (isinstance(changed, Contact)
+                                              and not changed.function)
+        if isinstance(changed, Contact | Coil) and plain and changed.texts and not changed.mark:
+            found = self.operand(changed.texts[0])
+            if not isinstance(found, Diagnostic):
+                changed = replace(changed, texts=(found[0], *changed.texts[1:]),
+                                  address=found[1])
+        return changed
 
     def draw(self) -> list[LadderNetwork]:
         """One drawn network per S7 network of the entry block."""
