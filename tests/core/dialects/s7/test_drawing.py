@@ -12,12 +12,13 @@ from pathlib import Path
 import pytest
 
 from ladderworks.core.compiler import compile_program
-from ladderworks.core.dialects.s7 import reader, xml_open
+from ladderworks.core.dialects.s7 import palette, reader, xml_open
 from ladderworks.core.dialects.s7.from_grid import network_from_grid, operand_from_text
 from ladderworks.core.dialects.s7.graph import OperandKind
 from ladderworks.core.dialects.s7.source import S7Source
 from ladderworks.core.il.program import Program
 from ladderworks.core.ladder.art import draw_document
+from ladderworks.core.ladder.clipboard import copy_text, network_from_text
 from ladderworks.core.ladder.convert import ladder_to_program, program_to_ladder
 from ladderworks.core.ladder.model import Coil, Contact, FunctionBox, LadderNetwork, Wire
 from ladderworks.core.plc.engine import DEFAULT_PERIOD_MS
@@ -195,3 +196,25 @@ def test_networks_other_dialects_draw_are_unchanged() -> None:
     program = replace(_open("s7", "timers"), model=None)
     assert all(n.listing is not None or not _boxes(n) or not _boxes(n)[0].named
                for n in program_to_ladder(program).networks)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_drawn_networks_copy_and_paste_with_their_pins_and_operands(name: str) -> None:
+    for network in program_to_ladder(_open("s7", name)).networks:
+        assert network_from_text(copy_text(network)) == network
+
+
+def test_the_palette_places_what_the_drawing_draws() -> None:
+    ton = palette.new_element("S7.TON")
+    assert isinstance(ton, FunctionBox) and ton.origin == (("part", "TON"), ("time_type", "Time"))
+    assert [(p.name, p.text) for p in ton.named] == [
+        ("IN", ""), ("PT", "<???>"), ("Q", ""), ("ET", "...")]
+    filled = palette.with_operands(ton, ['"T1"', "T#2s", ""])
+    assert isinstance(filled, FunctionBox) and filled.instance == '"T1"'
+    assert [p.text for p in filled.named] == ["", "T#2s", "", "..."]
+    assert palette.operand_names(filled) == ["instance", "PT", "ET"]
+    compare = palette.new_element("S7.EQ")
+    assert isinstance(compare, Contact) and compare.mark == "==\nInt"
+    coil = palette.new_element("S7.P_COIL")
+    assert isinstance(coil, Coil) and coil.mark == "P" and len(coil.texts) == 2
+    assert palette.new_element("S7.LABEL") is None
