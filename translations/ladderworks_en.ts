@@ -3445,7 +3445,7 @@
         <translation>{0} of {1}: network {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="105"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
@@ -4888,12 +4888,17 @@
         <translation>S7-1200 program structure</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="157"/>
+        <location filename="../ladderworks/gui/palette.py" line="38"/>
+        <source>S7-1200 contacts</source>
+        <translation>S7-1200 contacts</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="158"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="158"/>
+        <location filename="../ladderworks/gui/palette.py" line="159"/>
         <source>Function:</source>
         <translation>Function:</translation>
     </message>

@@ -3445,7 +3445,7 @@
         <translation>{0} / {1}: devre {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="105"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
@@ -4888,12 +4888,17 @@
         <translation>S7-1200 program yapısı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="157"/>
+        <location filename="../ladderworks/gui/palette.py" line="38"/>
+        <source>S7-1200 contacts</source>
+        <translation>S7-1200 kontakları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="158"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="158"/>
+        <location filename="../ladderworks/gui/palette.py" line="159"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>

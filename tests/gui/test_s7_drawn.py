@@ -94,6 +94,8 @@ def test_the_running_block_shows_power_on_the_drawing(qtbot: QtBot, window: Main
     docks.session.step(10_000)
     power = docks.online.live.overlays[0].power
     assert anchor in power.box_out and coil in power.coils
+    compare = docks.online.live.overlays[1].power  # ["Geçen Süre" >= T#5s]
+    assert (0, 0) in compare.closed and (0, network.coil_column) in compare.coils
 
 
 def test_an_edit_of_an_s7_network_lowers_again_and_runs(qtbot: QtBot,

@@ -67,7 +67,10 @@ def spanned_ops(networks: list[LadderNetwork], binary: BinaryProgram,
 
 
 def box_values(box: FunctionBox, snapshot: PlcSnapshot) -> list[str]:
-    """`R100=12` for each address parameter of a box (its data width read little-endian)."""
+    """`R100=12` for each address parameter of a box (its data width read little-endian); a
+    box drawn from a source's model (S7) shows its operands by name, not the engine's."""
+    if box.named:
+        return []
     spec = box.spec
     names = {p.name: value for p, value in zip(spec.params, box.params, strict=False)}
     out: list[str] = []
