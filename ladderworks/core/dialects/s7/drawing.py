@@ -184,17 +184,17 @@ class Drawer:
             branches = [self.upstream(self.sources(part, pin)) for pin in pins.gate_pins(
                 part, self.graph)]
             return factor(branches)
-        if part.name == "A":
+        if part.name == "A":  # FBD's AND: its inputs in series (each chain starts at the rail)
             items: list[Item] = []
             for pin in pins.gate_pins(part, self.graph):
                 operand = self.graph.operand_in.get((part.uid, pin))
                 if operand is not None:
                     items.append(Item(Contact(self.bit(operand), pin in part.negated,
                                               texts=(operand.display(),))))
-                elif items:
-                    raise NotDrawn(part.uid)
+                elif pin in part.negated:
+                    raise NotDrawn(part.uid)  # a negated chain: no LAD picture
                 else:
-                    items = list(self.upstream(self.sources(part, pin)))
+                    items += self.upstream(self.sources(part, pin))
             return items
         return [*self.upstream(self.sources(part, pins.main_in(part, self.graph))),
                 self.item(part)]

@@ -218,3 +218,25 @@ def test_the_palette_places_what_the_drawing_draws() -> None:
     coil = palette.new_element("S7.P_COIL")
     assert isinstance(coil, Coil) and coil.mark == "P" and len(coil.texts) == 2
     assert palette.new_element("S7.LABEL") is None
+
+
+def test_fbd_networks_draw_as_the_lad_they_map_to_and_read_back_alike() -> None:
+    from ladderworks.core.il.reading import parse_bytes
+    from tests.core.dialects.s7.test_xml_fbd import _CMP, _OR_AND
+    from tests.core.dialects.s7.xml_docs import document
+
+    program = parse_bytes(document([_OR_AND, _CMP], language="FBD").encode()).program
+    doc = program_to_ladder(program)
+    first, second = doc.networks
+    assert first.listing is None and second.listing is None
+    assert (0, 1) in first.links or any(r == 0 for r, _k in first.links)  # the OR's rows
+    negated = first.cells[(0, 1)]
+    assert isinstance(negated, Contact) and negated.negated and negated.texts == ("%I0.1",)
+    compare = second.cells[(0, 1)]
+    assert isinstance(compare, Contact) and compare.texts == ("%MW2", "10")
+    for net in doc.networks:
+        net.comments = [*net.comments, "changed"]
+    rebuilt, found = ladder_to_program(doc)
+    assert not found
+    assert [n.instructions for n in rebuilt.networks] == \
+        [n.instructions for n in program.networks]
