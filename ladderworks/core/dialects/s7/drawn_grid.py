@@ -96,7 +96,9 @@ class Placer:
             self.put((row, col), WIRE)
 
     def link(self, node: int, top: int, bottom: int) -> None:
-        """A vertical link at `node` from row `top` down to row `bottom`."""
+        """A vertical link at `node` from row `top` down to row `bottom` (none on the rail)."""
+        if node == 0:
+            return
         for row in range(top, bottom):
             self.net.links.add((row, node))
 
