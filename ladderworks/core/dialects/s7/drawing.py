@@ -22,7 +22,15 @@ from ladderworks.core.dialects.s7.graph import End, Operand, Part, S7Network
 from ladderworks.core.dialects.s7.stack import PinGraph
 from ladderworks.core.il.program import Instruction, ParamValue
 from ladderworks.core.instructions import Write
-from ladderworks.core.ladder.model import Coil, Contact, Element, FunctionBox, LadderNetwork, Pin
+from ladderworks.core.ladder.model import (
+    MAX_COLUMNS,
+    Coil,
+    Contact,
+    Element,
+    FunctionBox,
+    LadderNetwork,
+    Pin,
+)
 from ladderworks.core.plc import typed
 
 Resolve = Callable[[Operand], Address | None]  # an operand's engine address (None: none)
@@ -34,6 +42,7 @@ COMPARES = {"Eq": "==", "Ne": "<>", "Gt": ">", "Lt": "<", "Ge": ">=", "Le": "<="
 CONTACT_ROWS = {"PContact": "S7.P", "NContact": "S7.N", "Ok": "S7.OK", "NotOk": "S7.NOT_OK",
                 **{name: "S7." + name.upper() for name in COMPARES}}
 STRUCTURE = ("O", "A", "Label")
+MAX_DEPTH = 2 * MAX_COLUMNS  # ends followed at once: a longer series cannot be drawn anyway
 
 
 class NotDrawn(Exception):
@@ -66,6 +75,7 @@ class Drawer:
         self.context = context
         self.graph = PinGraph(network)
         self.memo: dict[tuple[bool, str, str], list[Item]] = {}
+        self.visiting: set[tuple[bool, str, str]] = set()  # ends being followed (loops)
         self.drawn: list[str] = []
 
     # -- the record of the lowering --------------------------------------------------------
@@ -168,6 +178,9 @@ class Drawer:
         key = (end.powerrail, end.part, end.pin)
         if key in self.memo:
             return self.memo[key]
+        if key in self.visiting or len(self.visiting) > MAX_DEPTH:
+            raise NotDrawn("a loop of wires, or a series longer than a network is wide")
+        self.visiting.add(key)
         if end.powerrail:
             found: list[Item] = []
         else:
@@ -175,6 +188,7 @@ class Drawer:
             if part is None or end.pin not in pins.MAIN_OUT:
                 raise NotDrawn(end.part)
             found = self.chain(part)
+        self.visiting.discard(key)
         self.memo[key] = found
         return found
 
