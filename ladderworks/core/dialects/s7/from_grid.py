@@ -10,7 +10,7 @@ the texts the elements show ("Start", #Timer.Q, T#10s), or from the address type
 from __future__ import annotations
 
 from ladderworks.core.address import Address
-from ladderworks.core.diagnostics import Diagnostic
+from ladderworks.core.diagnostics import Diagnostic, Severity
 from ladderworks.core.dialects.s7 import pins
 from ladderworks.core.dialects.s7.drawing import COIL_MARKS, COILS, COMPARES, CONTACT_ROWS
 from ladderworks.core.dialects.s7.graph import (
@@ -76,9 +76,12 @@ class _Reader:
         """The element at `cell` is no S7 element (`name`), or has no operand (no name)."""
         where: dict[str, object] = {"network": self.index, "row": cell[0] + 1,
                                     "column": cell[1] + 1}
+        network = self.index - 1 if self.index else None  # the drawn network, its cell
         if not name:
-            return GridError(Diagnostic("s7-grid-operand", where, 0, 0))
-        return GridError(Diagnostic("s7-grid-element", {**where, "name": name}, 0, 0))
+            return GridError(Diagnostic("s7-grid-operand", where, 0, 0, Severity.ERROR, network,
+                                        cell))
+        return GridError(Diagnostic("s7-grid-element", {**where, "name": name}, 0, 0,
+                                    Severity.ERROR, network, cell))
 
     def new_part(self, name: str, **fields: object) -> Part:
         part = Part(str(len(self.parts) + 1), name, **fields)  # type: ignore[arg-type]

@@ -190,6 +190,7 @@ def test_a_box_s7_has_not_is_a_diagnostic_at_its_cell() -> None:
     _rebuilt, found = ladder_to_program(doc)
     assert [d.code for d in found] == ["s7-grid-element"]
     assert found[0].args["network"] == 2 and found[0].args["column"] == 4
+    assert (found[0].network, found[0].cell) == (1, (0, 3))  # outlined in the console
 
 
 def test_networks_other_dialects_draw_are_unchanged() -> None:
