@@ -54,7 +54,7 @@ def network_comments(network: S7Network) -> list[str]:
 
 
 @dataclass(eq=False, slots=True)
-class S7Source:
+class S7Model:
     """An S7 program's model of its source (the SourceModel of core/ladder/source_model.py)."""
 
     graph: S7Program
@@ -165,7 +165,7 @@ class S7Source:
 
 def program_of(graph: S7Program, layout: Layout, entry: Block | None,
                finish: Finish | None = None) -> tuple[Program, list[Diagnostic]]:
-    """The Program of the entry block of `graph`, with its model (S7Source) kept."""
+    """The Program of the entry block of `graph`, with its model (S7Model) kept."""
     program = Program(dialect="s7")
     if entry is None:
         return program, []
@@ -174,5 +174,5 @@ def program_of(graph: S7Program, layout: Layout, entry: Block | None,
     program.title = {1: entry.name}
     if finish is not None:
         finish(program, graph, layout, entry)
-    program.model = S7Source(graph, layout, entry, lowered, finish)
+    program.model = S7Model(graph, layout, entry, lowered, finish)
     return program, lowered.diagnostics

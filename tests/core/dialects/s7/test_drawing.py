@@ -15,7 +15,7 @@ from ladderworks.core.compiler import compile_program
 from ladderworks.core.dialects.s7 import palette, reader, xml_open
 from ladderworks.core.dialects.s7.from_grid import network_from_grid, operand_from_text
 from ladderworks.core.dialects.s7.graph import OperandKind
-from ladderworks.core.dialects.s7.source import S7Source
+from ladderworks.core.dialects.s7.source import S7Model
 from ladderworks.core.il.program import Program
 from ladderworks.core.ladder.art import draw_document
 from ladderworks.core.ladder.clipboard import copy_text, network_from_text
@@ -36,8 +36,8 @@ def _open(form: str, name: str) -> Program:
     return program
 
 
-def _model(program: Program) -> S7Source:
-    assert isinstance(program.model, S7Source)
+def _model(program: Program) -> S7Model:
+    assert isinstance(program.model, S7Model)
     return program.model
 
 
