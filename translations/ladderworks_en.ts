@@ -1512,61 +1512,81 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="499"/>
-        <source>a changed S7 block cannot be written yet: save it in TIA Portal</source>
-        <translation>a changed S7 block cannot be written yet: save it in TIA Portal</translation>
+        <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
+        <translation>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</translation>
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="502"/>
+        <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
+        <translation>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
+        <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
+        <translation>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
+        <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
+        <translation>the S7 block&apos;s file no longer reads (line {line}): nothing is written</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="510"/>
+        <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
+        <translation>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="514"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="505"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="517"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="507"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="519"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="508"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="520"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="510"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="513"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="516"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="519"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>

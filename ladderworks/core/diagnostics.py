@@ -497,7 +497,19 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "network {network}, row {row}, column {column}: '{name}' is no S7 "
         "element (use the S7 palette)"),
     "s7-save-changed": QT_TRANSLATE_NOOP(
-        "Diagnostic", "a changed S7 block cannot be written yet: save it in TIA Portal"),
+        "Diagnostic", "this change cannot be written into the S7 block's file: make it in "
+        "TIA Portal"),
+    "s7-db-syntax": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{file}, line {line}: expected {expected}, found '{found}': the source "
+        "is not read"),
+    "s7-db-cut": QT_TRANSLATE_NOOP(
+        "Diagnostic", "{file}, line {line}: the text ends inside {what} (cut off?): the source "
+        "is not read"),
+    "s7-save-unreadable": QT_TRANSLATE_NOOP(
+        "Diagnostic", "the S7 block's file no longer reads (line {line}): nothing is written"),
+    "s7-save-unwritable": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{part}' cannot be written in the S7 block's file form: make this "
+        "change in TIA Portal"),
     # SimaticML XML (docs/dialects.md, SimaticML XML)
     "s7xml-too-large": QT_TRANSLATE_NOOP(
         "Diagnostic", "SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks "

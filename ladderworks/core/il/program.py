@@ -223,6 +223,8 @@ class Program:
     # (S7: the network graph, its memory layout and each network's engine networks): the
     # console draws it and rebuilds the program from a changed drawing (ladder/source_model.py)
     model: object | None = None
+    # a dialect's own form of the program as read, kept for its writer (S7: saving.S7Source)
+    graph: object = None
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Program):
