@@ -153,9 +153,9 @@ def ladder_to_program(doc: LadderDocument,
     if model is not None and doc.origin is not None:
         rebuilt, found = model.rebuild([n for n in doc.networks
                                         if not (n.is_empty() and not n.comments)])
-        fresh = rebuilt.model
+        fresh, symbols = rebuilt.model, rebuilt.symbols  # its own: new names too
         adopt_origin(rebuilt, doc.origin)
-        rebuilt.model = fresh
+        rebuilt.model, rebuilt.symbols = fresh, symbols or rebuilt.symbols
         return rebuilt, found
     program = Program(header=list(doc.header), footer=list(doc.footer),
                       before=list(doc.before), after=list(doc.after))

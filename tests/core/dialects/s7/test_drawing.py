@@ -241,3 +241,13 @@ def test_fbd_networks_draw_as_the_lad_they_map_to_and_read_back_alike() -> None:
     assert not found
     assert [n.instructions for n in rebuilt.networks] == \
         [n.instructions for n in program.networks]
+
+
+def test_an_operand_typed_is_read_as_tia_writes_it() -> None:
+    model = _model(_open("s7", "jumps"))
+    shown, address = model.operand("Start")  # type: ignore[misc]
+    assert shown == '"Start"' and address == model.resolve(operand_from_text('"Start"'))
+    assert model.operand("#Sabit")[0] == "#Sabit"  # type: ignore[index]
+    assert model.operand("%Q0.3")[0] == "%Q0.3"  # type: ignore[index]
+    refused = model.operand("%MW2")  # a word on a contact: no bit
+    assert not isinstance(refused, tuple) and refused.code == "s7-address"
