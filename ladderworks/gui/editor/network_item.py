@@ -291,7 +291,9 @@ class NetworkItem(QGraphicsItem):
     def _paint_coil(self, painter: QPainter, element: Coil, x: float, y: float, col: int,
                     label_font: QFont, small_font: QFont) -> None:
         mid = y + self.rows.wire
-        left, right = x + CELL_W / 2 - 10, x + CELL_W / 2 + 10
+        mark = coil_mark(element)  # (S) / (R), as LADDER-III draws them; Fatek's (L)
+        half = 10 if len(mark) < 2 else 20  # a word in it (S7's JMP, RET, PT): wider
+        left, right = x + CELL_W / 2 - half, x + CELL_W / 2 + half
         painter.drawLine(QPointF(x, mid), QPointF(left, mid))
         end = x + CELL_W if col >= self.network.columns else right + 6
         painter.drawLine(QPointF(right, mid), QPointF(end, mid))
@@ -299,9 +301,9 @@ class NetworkItem(QGraphicsItem):
         painter.drawArc(QRectF(right - 14, mid - 11, 14, 22), -80 * 16, 160 * 16)
         if element.negated:
             painter.drawLine(QPointF(left, mid + 11), QPointF(right, mid - 11))
-        mark = coil_mark(element)  # (S) / (R), as LADDER-III draws them; Fatek's (L)
         if mark:
-            painter.setFont(fitted_font(label_font, mark, right - left))
+            painter.setFont(fitted_font(label_font if len(mark) < 2 else small_font, mark,
+                                        right - left - 4))
             painter.drawText(QRectF(left, mid - 9, right - left, 18), Qt.AlignmentFlag.AlignCenter,
                              mark)
         self._labels(painter, element, x, y, label_font, small_font)
