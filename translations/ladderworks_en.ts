@@ -1572,81 +1572,91 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="519"/>
+        <source>network {network}, row {row}, column {column}: the contact or coil has no operand</source>
+        <translation>network {network}, row {row}, column {column}: the contact or coil has no operand</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <source>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</source>
+        <translation>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>the S7 block&apos;s file no longer reads (line {line}): nothing is written</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="530"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="536"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="543"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} is refused (entities are never expanded or fetched)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="539"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: not well-formed XML ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="546"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="548"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="548"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: the wires from part UId {uid} loop back to it</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: more than {limit} parts; the network is not read</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</translation>
     </message>
@@ -2046,7 +2056,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="121"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
         <source>NOT</source>
         <translation>NOT</translation>
     </message>
@@ -2056,37 +2066,42 @@
         <translation>The comment tool works on an empty row only</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="40"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="45"/>
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="149"/>
         <source>Insert row</source>
         <translation>Insert row</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="158"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="177"/>
         <source>Place contact</source>
         <translation>Place contact</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="313"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="288"/>
+        <source>This instruction is not placed from the palette in this program</source>
+        <translation>This instruction is not placed from the palette in this program</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="371"/>
         <source>Output pins</source>
         <translation>Output pins</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="41"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="46"/>
         <source>Place coil</source>
         <translation>Place coil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="169"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="188"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>Select a contact or a coil for the OR tool</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="173"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="192"/>
         <source>OR</source>
         <translation>OR</translation>
     </message>
@@ -2096,48 +2111,56 @@
         <translation>Line: click the second point</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
         <source>Line</source>
         <translation>Line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="51"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="298"/>
         <source>Place {0}</source>
         <translation>Place {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="61"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="299"/>
         <source>Parameters of {0}</source>
         <translation>Parameters of {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="116"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="58"/>
+        <source>Operand, e.g. &quot;Start&quot;, %I0.1, #Run (// comment)</source>
+        <translation>Operand, e.g. &quot;Start&quot;, %I0.1, #Run (// comment)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="69"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
         <source>Comment</source>
         <translation>Comment</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="111"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
         <source>Address {0}</source>
         <translation>Address {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="59"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Address or symbol, e.g. X2.1 (// comment)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="340"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="398"/>
         <source>Cut</source>
         <translation>Cut</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="352"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="410"/>
         <source>Paste</source>
         <translation>Paste</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="365"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="423"/>
         <source>Delete network</source>
         <translation>Delete network</translation>
     </message>
@@ -2152,7 +2175,7 @@
         <translation>open circuit here: draw a wire or an element</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="74"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="75"/>
         <source>N{0}</source>
         <translation>N{0}</translation>
     </message>
@@ -2910,6 +2933,19 @@
     </message>
 </context>
 <context>
+    <name>OperandDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/operand_dialog.py" line="17"/>
+        <source>Operands of {0}</source>
+        <translation>Operands of {0}</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/operand_dialog.py" line="20"/>
+        <source>As TIA Portal writes them: &quot;Start&quot;, #Timer, %MW2, T#10s, 5</source>
+        <translation>As TIA Portal writes them: &quot;Start&quot;, #Timer, %MW2, T#10s, 5</translation>
+    </message>
+</context>
+<context>
     <name>OsError</name>
     <message>
         <location filename="../ladderworks/gui/os_errors.py" line="16"/>
@@ -3503,7 +3539,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="387"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="166"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>PAST — scan {0} at {1} ms (not live)</translation>
     </message>
@@ -3543,7 +3579,7 @@
         <translation>{0} of {1}: network {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="105"/>
         <source>PASSIVE</source>
         <translation>PASSIVE</translation>
     </message>
@@ -3551,78 +3587,78 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
         <source>On-line mode</source>
         <translation>On-line mode</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
         <source>Make passive (disable)</source>
         <translation>Make passive (disable)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
         <source>Make active again</source>
         <translation>Make active again</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="68"/>
         <source>Force to 1</source>
         <translation>Force to 1</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="69"/>
         <source>Force to 0</source>
         <translation>Force to 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="70"/>
         <source>Release the force</source>
         <translation>Release the force</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="87"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="89"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="94"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>On-line needs a compiled program in the PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="100"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>The drawing is not the program in the PLC: compile it in the PLC control screen first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="106"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="163"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="175"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>On-line: the drawing shows the running PLC</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="136"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: the drawing was changed; it is no longer the program the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="145"/>
         <source>Off-line: another program is shown; it is not the program the PLC runs</source>
         <translation>Off-line: another program is shown; it is not the program the PLC runs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="198"/>
         <source>Select a contact, coil or function first</source>
         <translation>Select a contact, coil or function first</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="202"/>
         <source>This element has no op in the PLC program</source>
         <translation>This element has no op in the PLC program</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="225"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Select a contact or coil to force its signal</translation>
     </message>
@@ -4976,12 +5012,27 @@
         <translation>Fatek FBs contacts</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="155"/>
+        <location filename="../ladderworks/gui/palette.py" line="36"/>
+        <source>Siemens S7-1200 instructions</source>
+        <translation>Siemens S7-1200 instructions</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="37"/>
+        <source>S7-1200 program structure</source>
+        <translation>S7-1200 program structure</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="38"/>
+        <source>S7-1200 contacts</source>
+        <translation>S7-1200 contacts</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="158"/>
         <source>Tools</source>
         <translation>Tools</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="156"/>
+        <location filename="../ladderworks/gui/palette.py" line="159"/>
         <source>Function:</source>
         <translation>Function:</translation>
     </message>

@@ -1572,81 +1572,91 @@
     </message>
     <message>
         <location filename="../ladderworks/core/diagnostics.py" line="519"/>
+        <source>network {network}, row {row}, column {column}: the contact or coil has no operand</source>
+        <translation>network {network}, satır {row}, sütun {column}: kontağın ya da bobinin operandı yok</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <source>network {network}, row {row}, column {column}: &apos;{name}&apos; is no S7 element (use the S7 palette)</source>
+        <translation>network {network}, satır {row}, sütun {column}: &apos;{name}&apos; bir S7 elemanı değil (S7 paletini kullanın)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
         <source>this change cannot be written into the S7 block&apos;s file: make it in TIA Portal</source>
         <translation>bu değişiklik S7 bloğunun dosyasına yazılamıyor: TIA Portal&apos;da yapın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="522"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
         <source>{file}, line {line}: expected {expected}, found &apos;{found}&apos;: the source is not read</source>
         <translation>{file}, satır {line}: {expected} bekleniyordu, &apos;{found}&apos; bulundu: kaynak okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="525"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="531"/>
         <source>{file}, line {line}: the text ends inside {what} (cut off?): the source is not read</source>
         <translation>{file}, satır {line}: metin {what} içinde bitiyor (kesilmiş mi?): kaynak okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="528"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
         <source>the S7 block&apos;s file no longer reads (line {line}): nothing is written</source>
         <translation>S7 bloğunun dosyası artık okunamıyor (satır {line}): hiçbir şey yazılmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="530"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="536"/>
         <source>&apos;{part}&apos; cannot be written in the S7 block&apos;s file form: make this change in TIA Portal</source>
         <translation>&apos;{part}&apos; S7 bloğunun dosya biçiminde yazılamıyor: bu değişikliği TIA Portal&apos;da yapın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="534"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
         <source>SimaticML: the file is {size} MB, more than the {limit} MB LadderWorks reads</source>
         <translation>SimaticML: dosya {size} MB, LadderWorks&apos;ün okuduğu {limit} MB&apos;tan büyük</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="537"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="543"/>
         <source>SimaticML: {what} is refused (entities are never expanded or fetched)</source>
         <translation>SimaticML: {what} reddedildi (varlıklar asla genişletilmez ve getirilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="539"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
         <source>SimaticML: not well-formed XML ({why})</source>
         <translation>SimaticML: XML düzgün biçimlendirilmemiş ({why})</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="540"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="546"/>
         <source>SimaticML: the document holds no block (SW.Blocks.…) and no tag table</source>
         <translation>SimaticML: belgede blok (SW.Blocks.…) ve etiket tablosu yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="542"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="548"/>
         <source>{block}, network {network}: the namespace &apos;{uri}&apos; is not TIA Openness&apos;s; the network is not read</source>
         <translation>{block}, network {network}: &apos;{uri}&apos; ad alanı TIA Openness&apos;e ait değil; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="545"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
         <source>{block}, network {network}: {kind} version v{version} is newer than the v5 LadderWorks knows; read as v5</source>
         <translation>{block}, network {network}: {kind} sürümü v{version}, LadderWorks&apos;ün bildiği v5&apos;ten yeni; v5 olarak okundu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="548"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
         <source>{block}, network {network}: wire {wire} goes to the part UId {uid}, which is not in the network</source>
         <translation>{block}, network {network}: {wire} bağlantısı UId {uid} parçasına gidiyor, bu parça networkte yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="551"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
         <source>{block}, network {network}: the wires from part UId {uid} loop back to it</source>
         <translation>{block}, network {network}: UId {uid} parçasından çıkan bağlantılar yine ona dönüyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="554"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
         <source>{block}, network {network}: part UId {uid} &apos;{part}&apos; is not known to LadderWorks (kept, not simulated)</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{part}&apos; LadderWorks&apos;çe bilinmiyor (saklandı, simüle edilmez)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="557"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="563"/>
         <source>{block}, network {network}: more than {limit} parts; the network is not read</source>
         <translation>{block}, network {network}: {limit} parçadan fazla; network okunmadı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/core/diagnostics.py" line="560"/>
+        <location filename="../ladderworks/core/diagnostics.py" line="566"/>
         <source>{block}, network {network}: part UId {uid} calls &apos;{callee}&apos;, which is not in the program</source>
         <translation>{block}, network {network}: UId {uid} parçası &apos;{callee}&apos; bloğunu çağırıyor, bu blok programda yok</translation>
     </message>
@@ -2046,7 +2056,7 @@
 <context>
     <name>LadderEditor</name>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="121"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="140"/>
         <source>NOT</source>
         <translation>DEĞİL</translation>
     </message>
@@ -2056,37 +2066,42 @@
         <translation>YORUM takımı yalnız boş bir satırda kullanılabilir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="40"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="45"/>
         <source>Delete</source>
         <translation>Sil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="149"/>
         <source>Insert row</source>
         <translation>Satır gir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="158"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="177"/>
         <source>Place contact</source>
         <translation>Kontak koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="313"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="288"/>
+        <source>This instruction is not placed from the palette in this program</source>
+        <translation>Bu komut bu programda paletten yerleştirilmez</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="371"/>
         <source>Output pins</source>
         <translation>Çıkış uçları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="41"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="46"/>
         <source>Place coil</source>
         <translation>Çıkış koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="169"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="188"/>
         <source>Select a contact or a coil for the OR tool</source>
         <translation>VEYA takımı için bir kontak veya çıkış seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="173"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="192"/>
         <source>OR</source>
         <translation>VEYA</translation>
     </message>
@@ -2096,48 +2111,56 @@
         <translation>ÇİZGİ: ikinci noktaya tıklayın</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="154"/>
         <source>Line</source>
         <translation>Çizgi</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="51"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="298"/>
         <source>Place {0}</source>
         <translation>{0} koy</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="56"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="61"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="299"/>
         <source>Parameters of {0}</source>
         <translation>{0} parametreleri</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="64"/>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="116"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="58"/>
+        <source>Operand, e.g. &quot;Start&quot;, %I0.1, #Run (// comment)</source>
+        <translation>Operand, ör. &quot;Start&quot;, %I0.1, #Run (// açıklama)</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="69"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="135"/>
         <source>Comment</source>
         <translation>Yorum</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="111"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="117"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="130"/>
         <source>Address {0}</source>
         <translation>Adres {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/inline_edit.py" line="55"/>
+        <location filename="../ladderworks/gui/editor/inline_edit.py" line="59"/>
         <source>Address or symbol, e.g. X2.1 (// comment)</source>
         <translation>Adres veya sembol, örn. X2.1 (// yorum)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="340"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="398"/>
         <source>Cut</source>
         <translation>Kes</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="352"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="410"/>
         <source>Paste</source>
         <translation>Yapıştır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="365"/>
+        <location filename="../ladderworks/gui/editor/ladder_edits.py" line="423"/>
         <source>Delete network</source>
         <translation>Devreyi sil</translation>
     </message>
@@ -2152,7 +2175,7 @@
         <translation>devre burada açık: bir çizgi veya bir eleman çizin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/editor/network_item.py" line="74"/>
+        <location filename="../ladderworks/gui/editor/network_item.py" line="75"/>
         <source>N{0}</source>
         <translation>D{0}</translation>
     </message>
@@ -2910,6 +2933,19 @@
     </message>
 </context>
 <context>
+    <name>OperandDialog</name>
+    <message>
+        <location filename="../ladderworks/gui/operand_dialog.py" line="17"/>
+        <source>Operands of {0}</source>
+        <translation>{0} operandları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/operand_dialog.py" line="20"/>
+        <source>As TIA Portal writes them: &quot;Start&quot;, #Timer, %MW2, T#10s, 5</source>
+        <translation>TIA Portal&apos;ın yazdığı gibi: &quot;Start&quot;, #Timer, %MW2, T#10s, 5</translation>
+    </message>
+</context>
+<context>
     <name>OsError</name>
     <message>
         <location filename="../ladderworks/gui/os_errors.py" line="16"/>
@@ -3503,7 +3539,7 @@
     </message>
     <message>
         <location filename="../ladderworks/gui/docks/diagnostic.py" line="387"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="154"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="166"/>
         <source>PAST — scan {0} at {1} ms (not live)</source>
         <translation>GEÇMİŞ — tarama {0}, {1} ms (canlı değil)</translation>
     </message>
@@ -3543,7 +3579,7 @@
         <translation>{0} / {1}: devre {2}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/power_overlay.py" line="104"/>
+        <location filename="../ladderworks/gui/docks/power_overlay.py" line="105"/>
         <source>PASSIVE</source>
         <translation>PASİF</translation>
     </message>
@@ -3551,78 +3587,78 @@
 <context>
     <name>PlcOnline</name>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="63"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
         <source>On-line mode</source>
         <translation>Çevrim içi mod</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="64"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
         <source>Make passive (disable)</source>
         <translation>Pasif hale getir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="65"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
         <source>Make active again</source>
         <translation>Tekrar aktif yap</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="66"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="68"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="67"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="69"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="68"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="70"/>
         <source>Release the force</source>
         <translation>Zorlamayı bırak</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="87"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="89"/>
         <source>Off-line</source>
         <translation>Off-line</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="92"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="94"/>
         <source>On-line needs a compiled program in the PLC</source>
         <translation>Çevrim içi mod için PLC&apos;de derlenmiş bir program gerekir</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="97"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="100"/>
         <source>The drawing is not the program in the PLC: compile it in the PLC control screen first</source>
         <translation>Çizim PLC&apos;deki program değil: önce PLC kontrol ekranında derleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="106"/>
-        <location filename="../ladderworks/gui/docks/online.py" line="163"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="109"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="175"/>
         <source>On-line: the drawing shows the running PLC</source>
         <translation>Çevrim içi: çizim çalışan PLC&apos;yi gösteriyor</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="124"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="136"/>
         <source>Off-line: the drawing was changed; it is no longer the program the PLC runs</source>
         <translation>Off-line: çizim değişti; artık PLC&apos;nin çalıştırdığı program değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="133"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="145"/>
         <source>Off-line: another program is shown; it is not the program the PLC runs</source>
         <translation>Off-line: başka bir program gösteriliyor; PLC&apos;nin çalıştırdığı program değil</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="186"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="198"/>
         <source>Select a contact, coil or function first</source>
         <translation>Önce bir kontak, çıkış veya fonksiyon seçin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="190"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="202"/>
         <source>This element has no op in the PLC program</source>
         <translation>Bu elemanın PLC programında karşılığı yok</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/online.py" line="213"/>
+        <location filename="../ladderworks/gui/docks/online.py" line="225"/>
         <source>Select a contact or coil to force its signal</source>
         <translation>Sinyalini zorlamak için bir kontak veya çıkış seçin</translation>
     </message>
@@ -4976,12 +5012,27 @@
         <translation>Fatek FBs kontakları</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="155"/>
+        <location filename="../ladderworks/gui/palette.py" line="36"/>
+        <source>Siemens S7-1200 instructions</source>
+        <translation>Siemens S7-1200 komutları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="37"/>
+        <source>S7-1200 program structure</source>
+        <translation>S7-1200 program yapısı</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="38"/>
+        <source>S7-1200 contacts</source>
+        <translation>S7-1200 kontakları</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/palette.py" line="158"/>
         <source>Tools</source>
         <translation>Ana takım çantası</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/palette.py" line="156"/>
+        <location filename="../ladderworks/gui/palette.py" line="159"/>
         <source>Function:</source>
         <translation>Fonksiyon:</translation>
     </message>

@@ -516,6 +516,12 @@ MESSAGES: dict[str, str] = {
         "Diagnostic", "the file has {size} MB: S7 exports over {limit} MB are not read"),
     "s7-tags": QT_TRANSLATE_NOOP(
         "Diagnostic", "tag table: {why}"),
+    "s7-grid-operand": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}, row {row}, column {column}: the contact or coil has "
+        "no operand"),
+    "s7-grid-element": QT_TRANSLATE_NOOP(
+        "Diagnostic", "network {network}, row {row}, column {column}: '{name}' is no S7 "
+        "element (use the S7 palette)"),
     "s7-save-changed": QT_TRANSLATE_NOOP(
         "Diagnostic", "this change cannot be written into the S7 block's file: make it in "
         "TIA Portal"),

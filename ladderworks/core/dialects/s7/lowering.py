@@ -67,6 +67,11 @@ class BlockLowering:
     counters: Counters = field(default_factory=Counters)
     scope: tuple[str, ...] = ()
     depth: int = 0
+    # what the drawing maps back (drawing.py): each S7 network's engine networks, and each
+    # part's result and the instructions it was lowered to, by (network index, part uid)
+    spans: list[range] = field(default_factory=list)
+    emitted: dict[tuple[int, str], tuple[Expr | None, tuple[Instruction, ...]]] = field(
+        default_factory=dict)
 
     def lower_callee(self, callee: Block, scope: tuple[str, ...]
                      ) -> tuple[list[Network], list[Diagnostic]]:
@@ -109,6 +114,7 @@ class BlockLowering:
             if len(self.networks) > before:
                 title = network.title or f"Network {index}"
                 self.networks[before].comments = [title, *network.comment.splitlines()]
+            self.spans.append(range(before, len(self.networks)))
         if any(ins.name == "S7.JMP" and ins.params == (LabelRef(self.end_label),)
                for net in self.networks for ins in net.instructions):
             self.networks.append(Network([Instruction("S7.LABEL", None,
@@ -141,7 +147,10 @@ class BlockLowering:
         outputs: dict[str, Expr | None] = {}
         for part in graph.order(lambda uid: self.fail(index, network.part(uid), "s7-wire",
                                                       part=uid, why="a loop of wires")):
+            before = len(self.networks)
             outputs[part.uid] = self.part(index, graph, part, outputs)
+            self.emitted[(index, part.uid)] = (outputs[part.uid], tuple(
+                ins for net in self.networks[before:] for ins in net.instructions))
 
     def emit(self, instructions: list[Instruction]) -> None:
         self.networks.append(Network(instructions))

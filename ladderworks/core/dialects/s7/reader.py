@@ -21,11 +21,11 @@ from ladderworks.core.dialects.s7.layout import (
     TIMER_TYPES,
     Layout,
 )
-from ladderworks.core.dialects.s7.lowering import lower_block
 from ladderworks.core.dialects.s7.sd_parser import Parsed, ParseError, parse_sd, parse_sources
+from ladderworks.core.dialects.s7.source import program_of
 from ladderworks.core.dialects.s7.tags import is_tag_table, read_tag_table
 from ladderworks.core.dialects.s7.texts import pick, read_texts
-from ladderworks.core.il.program import FileSource, Network, Program
+from ladderworks.core.il.program import FileSource, Program
 from ladderworks.core.il.textform import TextForm, decode_lines, encode_text
 from ladderworks.core.symbols import Symbol, SymbolTable
 
@@ -102,15 +102,15 @@ def build(blocks: list[Parsed], tags: list, texts: dict[str, dict[str, str]],
     layout = Layout(program)
     code = [b for b in program.blocks if b.kind in ("OB", "FC", "FB")]
     entry = code[0] if code else None  # the file opened, or a folder's OB (put first)
-    networks: list[Network] = []
-    if entry is not None:
-        networks, found = lower_block(entry, layout)
-        diagnostics += found
-    result = Program(networks=networks, dialect=NAME)
-    if entry is not None:
-        result.symbols = _symbols(program, layout, entry)
-        result.title = {1: entry.name}
+    result, found = program_of(program, layout, entry, _finish)
+    result.dialect = NAME
+    diagnostics += found
     return result, program, layout
+
+
+def _finish(result: Program, program: S7Program, layout: Layout, entry: Block) -> None:
+    """The symbols of a (re)built program."""
+    result.symbols = _symbols(program, layout, entry)
 
 
 def _source(program: Program, form: TextForm, lines: list[str], ends: list[str]) -> None:
