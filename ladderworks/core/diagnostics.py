@@ -459,6 +459,9 @@ MESSAGES: dict[str, str] = {
     "modbus-map-empty": QT_TRANSLATE_NOOP("Diagnostic", "the map has no row"),
     "modbus-map-width": QT_TRANSLATE_NOOP(
         "Diagnostic", "{device}: a device's register is 16 bits: the width must be 2"),
+    "modbus-map-db": QT_TRANSLATE_NOOP(
+        "Diagnostic", "'{name}' is neither a map file nor a global DB of the program"
+        " (its global DBs: {names})"),
     # Siemens S7-1200 (docs/dialects.md, S7-1200)
     "s7-address": QT_TRANSLATE_NOOP(
         "Diagnostic", "'{text}' is not an S7 address (e.g. %I0.0, %MW2, %DB1.DBW4) or a tag"),
