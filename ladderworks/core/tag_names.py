@@ -109,7 +109,7 @@ class TagNames:
             return found
         for name, address in symbols.by_symbol.items():
             kind = symbols.types.get(name)
-            if not name.startswith(('"', "#")) or kind is not None and kind[0] == "Struct":
+            if not name.startswith(('"', "#")) or (kind is not None and kind[0] == "Struct"):
                 continue
             held = found.get(address)
             if held is None or len(name) < len(held):
