@@ -81,9 +81,9 @@ def _symbols(program: S7Program, layout: Layout, entry: Block) -> SymbolTable:
             continue
         names = [(layout.members[key[:n]].name if key[:n] in layout.members else key[n - 1])
                  for n in range(1, len(key) + 1)]
-        block = program.block(key[0]) if key[:1] not in layout.members else None
-        if block is not None:  # an instance DB named by its scope: as TIA spells it
-            names[0] = block.name
+        db = program.block(key[0]) if key[:1] not in layout.members else None
+        if db is not None:  # an instance DB named by its scope: as TIA spells it
+            names[0] = db.name
         if key[:1] == own:  # the entry block's own members: #Data.Count
             name = "#" + ".".join(names[1:])
         elif key[0].startswith("#"):  # another block's (an FC's): its members by block
