@@ -159,6 +159,17 @@ class TagNames:
         return self.typed and not self.shown(address)
 
 
+_LAST: list[TagNames] = []
+
+
+def names_for(symbols: SymbolTable | None, dialect: str | None) -> TagNames:
+    """TagNames of a symbol table, the last one kept (a dock asks for every bit it shows)."""
+    if _LAST and _LAST[0].symbols is symbols and _LAST[0].dialect == dialect:
+        return _LAST[0]
+    _LAST[:] = [TagNames(symbols, dialect)]
+    return _LAST[0]
+
+
 def network_titles(program: Program) -> list[str]:
     """The title of the source network each of `program`'s networks comes from (an S7 network
     lowers to several: its first carries the title, `Network 3` when untitled)."""
@@ -169,3 +180,34 @@ def network_titles(program: Program) -> list[str]:
             current = network.comments[0]
         titles.append(current)
     return titles
+
+
+_TIME_UNITS = (("d", 86_400_000), ("h", 3_600_000), ("m", 60_000), ("s", 1000), ("ms", 1))
+
+
+def time_text(ms: int) -> str:
+    """A Time's milliseconds as TIA writes a constant: `T#5s`, `T#1m30s`, `T#-2s500ms`."""
+    sign, rest = ("-", -ms) if ms < 0 else ("", ms)
+    parts = []
+    for unit, size in _TIME_UNITS:
+        count, rest = divmod(rest, size)
+        if count:
+            parts.append(f"{count}{unit}")
+    return f"T#{sign}{''.join(parts) or '0ms'}"
+
+
+def typed_text(raw: int, type_name: str, width: int) -> str | None:
+    """A raw value of `width` bytes as its type shows it (a Time `T#5s`, a Real `21.5`, an
+    Int signed); None for a type shown as a plain number (a Byte, a Word, a bit)."""
+    from ladderworks.core.plc import typed
+
+    low = type_name.lower()
+    bits = 8 * width
+    signed = raw - (1 << bits) if raw >> (bits - 1) & 1 else raw
+    if low == "time" and width == 4:
+        return time_text(signed)
+    if low == "real" and width == 4:
+        return f"{typed.bits_real(raw):g}"
+    if low in ("sint", "int", "dint"):
+        return str(signed)
+    return None
