@@ -211,3 +211,33 @@ def typed_text(raw: int, type_name: str, width: int) -> str | None:
     if low in ("sint", "int", "dint"):
         return str(signed)
     return None
+
+
+def typed_value(text: str, type_name: str, width: int) -> int | None:
+    """A value typed for a place of `type_name` as the raw bits stored (`T#5s` 5000, a Real's
+    `21.5` its IEEE bits); None when it is neither (a plain number is the caller's)."""
+    from ladderworks.core.dialects.s7.layout import time_ms
+    from ladderworks.core.plc import typed
+
+    clean = text.strip()
+    ms = time_ms(clean)
+    if ms is not None:
+        return ms & ((1 << 8 * width) - 1)
+    if type_name.lower() == "real" and width == 4:
+        try:
+            return typed.real_bits(float(clean))
+        except ValueError:
+            return None
+    return None
+
+
+def meaning(raw: int, type_name: str, width: int) -> int | float:
+    """What raw bits mean for comparing: a Real's number, a Time's or an Int's signed value."""
+    from ladderworks.core.plc import typed
+
+    low = type_name.lower()
+    if low == "real" and width == 4:
+        return typed.bits_real(raw)
+    if low in ("time", "sint", "int", "dint") and raw >> (8 * width - 1) & 1:
+        return raw - (1 << 8 * width)
+    return raw
