@@ -307,7 +307,9 @@ class CrossReferenceDock(Retranslating, QDockWidget):
                                    text))
             return
         uses = [use for use in self.cross_reference().uses_of(address)
-                if not names.internal(use.address)]
+                if not names.internal(use.address) and not (  # a tag: its own bit's uses
+                    names.typed and address.bit is not None and use.address.bit is not None
+                    and use.address != address)]
         self.model.show(uses, symbols)
         self.summary.setText(self._summary_text(address, uses))
         self._fit_columns()

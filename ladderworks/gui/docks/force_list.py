@@ -98,8 +98,8 @@ class ForceListDock(Retranslating, QDockWidget):
         self.release_all_button.setText(translate("ForceList", "Release all"))
         self.target_label.setText(translate("ForceList", "&Bit:"))
         self.target.setPlaceholderText(translate("ForceList", "an address or a tag"))
-        for button, value in zip(self.force_buttons, (1, 0), strict=True):
-            button.setText(translate("ForceList", "Force to {0}").format(value))
+        self.force_buttons[0].setText(translate("ForceList", "Force to 1"))
+        self.force_buttons[1].setText(translate("ForceList", "Force to 0"))
         self.show_entries(self.entries)
 
     def typed_bit(self) -> Address | None:

@@ -74,6 +74,7 @@ class ModbusDock(Retranslating, QDockWidget):
         self.map_file = QLineEdit(body)  # empty: the dialect's own map
         self.map_file.setObjectName("modbusMapFile")
         self.map_label.setBuddy(self.map_file)
+        self.map_file.textChanged.connect(lambda _text: self.show_state())
         form.addRow(self.map_label, self.map_file)  # the whole row: its placeholder reads whole
         map_row = QHBoxLayout()
         map_row.addStretch(1)
