@@ -155,77 +155,87 @@
         <translation>{0} has {1} bytes: a box shows a byte or a word (the time chart shows any value)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="338"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="339"/>
         <source>Forced to {0}</source>
         <translation>Forced to {0}</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="341"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
         <source>Click: force to the other value; right-click: force menu</source>
         <translation>Click: force to the other value; right-click: force menu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="359"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="360"/>
         <source>Load a program to force inputs</source>
         <translation>Load a program to force inputs</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="376"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="377"/>
         <source>Force to 1</source>
         <translation>Force to 1</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="381"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="382"/>
         <source>Force to 0</source>
         <translation>Force to 0</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="387"/>
         <source>Release the force</source>
         <translation>Release the force</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="400"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="401"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="400"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="401"/>
         <source>Stopped</source>
         <translation>Stopped</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="407"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="408"/>
         <source>PLC bit display</source>
         <translation>PLC bit display</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="408"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="409"/>
         <source>START</source>
         <translation>START</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="409"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="410"/>
         <source>STOP</source>
         <translation>STOP</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="410"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="412"/>
+        <source>Tag or address</source>
+        <translation>Tag or address</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="413"/>
         <source>Byte</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="411"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="414"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="412"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="415"/>
         <source>Dec</source>
         <translation>Dec</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="414"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="417"/>
+        <source>e.g. &quot;Start&quot;, %MW2</source>
+        <translation>e.g. &quot;Start&quot;, %MW2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="418"/>
         <source>e.g. X12</source>
         <translation>e.g. X12</translation>
     </message>

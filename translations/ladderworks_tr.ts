@@ -155,77 +155,87 @@
         <translation>{0} {1} bayttır: bir kutu bir bayt ya da bir sözcük gösterir (zaman kartı her değeri gösterir)</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="338"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="339"/>
         <source>Forced to {0}</source>
         <translation>{0} değerine zorlandı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="341"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="342"/>
         <source>Click: force to the other value; right-click: force menu</source>
         <translation>Tıklama: diğer değere zorla; sağ tuş: zorlama menüsü</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="359"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="360"/>
         <source>Load a program to force inputs</source>
         <translation>Girişleri zorlamak için bir program yükleyin</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="376"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="377"/>
         <source>Force to 1</source>
         <translation>1&apos;e zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="381"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="382"/>
         <source>Force to 0</source>
         <translation>0&apos;a zorla</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="386"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="387"/>
         <source>Release the force</source>
         <translation>Zorlamayı kaldır</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="400"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="401"/>
         <source>Live</source>
         <translation>Canlı</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="400"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="401"/>
         <source>Stopped</source>
         <translation>Durduruldu</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="407"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="408"/>
         <source>PLC bit display</source>
         <translation>PLC BIT GÖSTERİMİ</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="408"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="409"/>
         <source>START</source>
         <translation>BAŞLAT</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="409"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="410"/>
         <source>STOP</source>
         <translation>DURDUR</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="410"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="412"/>
+        <source>Tag or address</source>
+        <translation>Etiket ya da adres</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="413"/>
         <source>Byte</source>
         <translation>Bayt</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="411"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="414"/>
         <source>Hex</source>
         <translation>Onaltılık</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="412"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="415"/>
         <source>Dec</source>
         <translation>Ondalık</translation>
     </message>
     <message>
-        <location filename="../ladderworks/gui/docks/bit_display.py" line="414"/>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="417"/>
+        <source>e.g. &quot;Start&quot;, %MW2</source>
+        <translation>ör. &quot;Start&quot;, %MW2</translation>
+    </message>
+    <message>
+        <location filename="../ladderworks/gui/docks/bit_display.py" line="418"/>
         <source>e.g. X12</source>
         <translation>örn. X12</translation>
     </message>

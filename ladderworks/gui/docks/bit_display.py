@@ -179,7 +179,7 @@ class BitDisplayDock(Retranslating, QDockWidget):
         session.snapshot_ready.connect(self.gate.offer)
         self.visibilityChanged.connect(lambda _shown: self.gate.flush())
         session.forces_changed.connect(self._on_forces)
-        session.symbols_changed.connect(lambda _symbols: self._refresh_tooltips())
+        session.symbols_changed.connect(lambda _symbols: self.retranslate())  # S7: tag texts
         self._on_forces(session.run.forces())
         self.retranslate()
 
@@ -274,6 +274,7 @@ class BitDisplayDock(Retranslating, QDockWidget):
         self._set_tooltips(row)
         for header in self.headers[8:]:
             header.setVisible(any(r.width == 2 for r in self.rows))
+        self._fit_width()  # a word's 8 more bits
 
     def bit_of(self, row: BitRow, bit: int) -> Address | None:
         """The address of bit `bit` of a row (of a word: its byte in the memory's order)."""
@@ -407,11 +408,14 @@ class BitDisplayDock(Retranslating, QDockWidget):
         self.setWindowTitle(translate("BitDisplay", "PLC bit display"))
         self.start_button.setText(translate("BitDisplay", "START"))
         self.stop_button.setText(translate("BitDisplay", "STOP"))
-        self.address_header.setText(translate("BitDisplay", "Byte"))
+        typed = names_for(self.session.symbols, self.session.run.program_dialect).typed
+        self.address_header.setText(translate("BitDisplay", "Tag or address") if typed
+                                    else translate("BitDisplay", "Byte"))
         self.hex_header.setText(translate("BitDisplay", "Hex"))
         self.dec_header.setText(translate("BitDisplay", "Dec"))
         for row in self.rows:
-            row.edit.setPlaceholderText(translate("BitDisplay", "e.g. X12"))
+            row.edit.setPlaceholderText(translate("BitDisplay", "e.g. \"Start\", %MW2") if typed
+                                        else translate("BitDisplay", "e.g. X12"))
             if row.edit.text().strip():
                 self._parse(row)
                 if self.live:
