@@ -47,6 +47,7 @@ def test_the_bit_display_takes_tags_and_shows_a_word_whole(s7_docks: PlcDocks) -
                                   "%M10.1", '"Sıcaklık"', '"Yok"']):
         dock.set_address(index, text)
     start, word, timer, durum, bit, real, missing = dock.rows[:7]
+    assert dock.address_header.text() == "Tag or address"
     assert start.edit.text() == '"Start"' and start.bit_texts() == "00000001"
     assert word.edit.text() == "%IW2" and word.width == 2
     assert word.bit_texts() == "1111111111111110" and word.hex_label.text() == "FFFEh"
@@ -120,6 +121,14 @@ def test_the_cross_reference_lists_tags_under_their_networks(window: MainWindow,
     assert "neither an address nor a symbol" in dock.summary.text()
 
 
+def test_the_diagnostic_view_names_elements_by_tag(s7_docks: PlcDocks) -> None:
+    view = s7_docks.diagnostic.view
+    view.symbols = s7_docks.session.symbols
+    assert view.describe_address(at("%Q0.0")) == ('"Motor"', "Motor contactor")
+    assert view.describe_address(Address(Area.D, 16)) == ('"DB_Modbus".Komut', "")
+    assert view.describe_address(Address(Area.R, 8192, 0)) is None  # an internal relay
+
+
 def test_the_modbus_dock_serves_a_global_db(s7_docks: PlcDocks) -> None:
     session, dock = s7_docks.session, s7_docks.modbus
     dock.show()
@@ -164,5 +173,6 @@ def test_turkish_texts(qtbot: QtBot, window: MainWindow, s7_docks: PlcDocks) -> 
         assert s7_docks.modbus.holding_label.text() == "&Tutma yazmaçları:"
         assert s7_docks.modbus.holding.itemText(0) == "Bit belleği (%MW)"
         assert s7_docks.force_list.force_buttons[0].text() == "1'e zorla"
+        assert s7_docks.bit_display.address_header.text() == "Etiket ya da adres"
     finally:
         language.apply("en")
