@@ -92,6 +92,7 @@ class TagNames:
             head, dot, rest = typed.partition(".")
             forms.append(f'"{head}"{dot}{rest}')
             forms.append(f'"{typed}"')
+            forms.append(f"#{typed}")  # a block's own member (a block tested alone)
         lowered = {form.lower() for form in forms}
         return forms + [name for name in self._keys if name.lower() in lowered]
 

@@ -64,6 +64,14 @@ def test_names_shown_for_addresses_and_internal_relays(names: TagNames) -> None:
     assert not TagNames(None, None).typed
 
 
+def test_a_blocks_own_members_by_hash_or_bare() -> None:
+    names = TagNames.of(parse_file(EXAMPLES / "s7" / "calls" / "Gecikme.s7dcl").program)
+    assert names.resolve("#Zaman.Q").type_name == "Bool"
+    assert names.resolve("#Zaman.ET").width == 4
+    assert names.resolve("Giris").text == "#Giris"
+    assert names.resolve("sure").type_name == "Time"
+
+
 def test_names_typed_on_one_line() -> None:
     assert split_names('"Lamba 1" %Q0.1, "Motor".Q;#Timer.Q  "Sıcaklık"') == [
         '"Lamba 1"', "%Q0.1", '"Motor".Q', "#Timer.Q", '"Sıcaklık"']
