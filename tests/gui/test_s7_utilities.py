@@ -67,6 +67,7 @@ def test_the_bit_display_takes_tags_and_shows_a_word_whole(s7_docks: PlcDocks) -
 
 def test_the_time_chart_samples_tags_with_their_types(s7_docks: PlcDocks) -> None:
     session, chart = s7_docks.session, s7_docks.time_chart
+    assert chart.signals_edit.placeholderText().startswith('e.g. "Start" %Q0.0 %MW2')
     chart.signals_edit.setText('"Start" "Hazır", "Calisma_DB".ET;"Sıcaklık" %MW10')
     chart.period_spin.setValue(10)
     assert chart.start()
