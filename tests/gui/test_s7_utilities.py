@@ -4,6 +4,7 @@ Modbus server by tag name (`"Start"`, `"Calisma_DB".Q`, `%MW10`), never an inter
 from __future__ import annotations
 
 import struct
+from pathlib import Path
 
 import pytest
 from pymodbus.client import ModbusTcpClient
@@ -177,3 +178,18 @@ def test_turkish_texts(qtbot: QtBot, window: MainWindow, s7_docks: PlcDocks) -> 
         assert s7_docks.bit_display.address_header.text() == "Etiket ya da adres"
     finally:
         language.apply("en")
+
+
+def test_the_scenario_dock_shows_typed_checks(qtbot: QtBot, tmp_path: Path,
+                                              s7_docks: PlcDocks) -> None:
+    dock = s7_docks.scenario
+    path = tmp_path / "typed.scenario.csv"
+    path.write_text('PMC SIGNAL DATA\nSET,0,"Start",1\nWAITFOR,6000,"Calisma_DB".ET,>=T#5s\n'
+                    'EXPECT,0,"Çalışma Süresi",T#4s\n', encoding="utf-8")
+    with qtbot.waitSignal(dock.finished, timeout=10_000) as blocker:
+        dock.run_file(path)
+    assert [c.passed for c in blocker.args[0].checks] == [True, False]
+    rows = [dock.checks.topLevelItem(i) for i in range(dock.checks.topLevelItemCount())]
+    assert [(r.text(1), r.text(2), r.text(3)) for r in rows] == [
+        ('WAITFOR "Calisma_DB".ET', ">=T#5s", "T#5s"),
+        ('EXPECT "Çalışma Süresi"', "T#4s", "T#5s")]
