@@ -51,10 +51,11 @@ def use_row(use: Use, symbols: SymbolTable | None, dialect: str | None = None,
     spelled = spelling(dialect)
     if names is not None and names.typed:
         spec = spec_for(use.instruction)
+        named = names.name_of(use.address, use.width)
         written = names.spelled(use.address, names.width_of(use.address, use.width)) or "-"
         name = spelled.name(spec) if spec is not None else use.instruction
         network = titles[use.network] if use.network < len(titles) else ""
-        return (written, names.name_of(use.address) or "-", network or str(use.network + 1),
+        return (written, named or "-", network or str(use.network + 1),
                 use.label or "-", use.unit or "-", str(use.line or "-"), name,
                 element_text(use), _ACCESS_TEXT[use.access])
     if spelled.dialect:

@@ -101,10 +101,10 @@ class TagNames:
         return list(self.symbols.types) if self.symbols is not None else []
 
     @cached_property
-    def _by_address(self) -> dict[Address, str]:
-        """The name to show for each named address: a tag or member (not a whole DB), the
-        shortest quoted (`"..."`) or local (`#...`) name."""
-        found: dict[Address, str] = {}
+    def _by_address(self) -> dict[Address, list[str]]:
+        """The names of each named address, the one to show first: a tag's own name, then
+        quoted (`"..."`) or local (`#...`) names, shortest first (not a whole DB's)."""
+        found: dict[Address, list[str]] = {}
         symbols = self.symbols
         if symbols is None:
             return found
@@ -112,21 +112,31 @@ class TagNames:
             kind = symbols.types.get(name)
             if not name.startswith(('"', "#")) or (kind is not None and kind[0] == "Struct"):
                 continue
-            held = found.get(address)
-            if held is None or len(name) < len(held):
-                found[address] = name
+            found.setdefault(address, []).append(name)
+        for names in found.values():
+            names.sort(key=len)
         for address, symbol in symbols.by_address.items():
-            if symbol.symbol:
-                found[address] = symbol.symbol  # a tag's own name wins
+            if symbol.symbol:  # a tag's own name first
+                found[address] = [symbol.symbol, *(n for n in found.get(address, ())
+                                                   if n != symbol.symbol)]
         return found
 
-    def name_of(self, address: Address) -> str:
-        """The name shown for `address` (`"Start"`, `"Calisma_DB".Q`), "" when it has none."""
+    def name_of(self, address: Address, width: int = 0) -> str:
+        """The name shown for `address` (`"Start"`, `"Calisma_DB".Q`), "" when it has none;
+        with a `width`, where several names share the address, the one that wide, else the
+        smallest (a timer's `"T1".PT`, not its instance `"T1"`, for a MOVE's operand)."""
         if self.symbols is None:
             return ""
         if not self.typed:
             return self.symbols.symbol(address)
-        return self._by_address.get(address, "")
+        names = self._by_address.get(address)
+        if not names:
+            return ""
+        if width and address.bit is None and len(names) > 1:  # the value that wide, else
+            sizes = {n: self.symbols.types[n][1] for n in names if n in self.symbols.types}
+            exact = [n for n in names if sizes.get(n) == width]  # the most specific one
+            return exact[0] if exact else min(names, key=lambda n: sizes.get(n, 1 << 30))
+        return names[0]
 
     def spelled(self, address: Address, width: int = 1) -> str:
         """The address in the dialect's spelling (`%MW2` for 2 bytes at R2), "" if none."""

@@ -159,3 +159,16 @@ def test_xref_of_one_block_file_takes_its_folders_tags(
         capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["xref", str(MODBUS / "Main.s7dcl"), "Hazır"]) == 0
     assert capsys.readouterr().out.splitlines()[1].split()[:2] == ["%Q0.1", '"Hazır"']
+
+
+def test_a_timers_preset_is_named_apart_from_its_instance(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """`"Karıştırma Süresi"` is a TP instance whose PT lies at its first byte: a MOVE to the
+    PT names the PT, the TP's instance parameter the instance."""
+    assert main(["xref", str(EXAMPLES / "s7" / "jumps" / "Main.s7dcl")]) == 0
+    rows = [[cell.strip() for cell in line.split("  ") if cell.strip()]
+            for line in capsys.readouterr().out.splitlines()]
+    moves = [row for row in rows if "parameter OUT1" in row]
+    instance = [row for row in rows if "parameter instance" in row]
+    assert len(moves) == 2 and all(row[1] == '"Karıştırma Süresi".PT' for row in moves)
+    assert instance[0][1] == '"Karıştırma Süresi"'

@@ -173,10 +173,10 @@ class CrossReferenceModel(QAbstractTableModel):
         if column == 0:
             return names.spelled(use.address, names.width_of(use.address, use.width))
         if column == 1:
-            return names.name_of(use.address)
-        if column == 2:
+            return names.name_of(use.address, use.width)
+        if column == 2:  # the S7 network's title (`Network 3` when it has none)
             title = self.titles[use.network] if use.network < len(self.titles) else ""
-            return f"{use.network + 1}  {title}" if title else str(use.network + 1)
+            return title or str(use.network + 1)
         found = self.symbols.lookup(use.address) if self.symbols is not None else None
         return use.comment or (found.comment if found is not None else "")
 
